@@ -1,0 +1,94 @@
+#include "app/sim/ReportJson.h"
+
+#include "core/common/Alarm.h"
+
+namespace m350::sim {
+
+namespace {
+
+nlohmann::json axes(const machine::Axes& a) {
+    nlohmann::json j = nlohmann::json::object();
+    for (int i = 0; i < machine::kAxisCount; ++i) {
+        j[std::string(1, machine::kAxisNames[static_cast<std::size_t>(i)])] = a(i);
+    }
+    return j;
+}
+
+nlohmann::json firstError(const std::vector<gcode::Diagnostic>& diagnostics) {
+    for (const gcode::Diagnostic& d : diagnostics) {
+        if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
+            return {{"code", "syntax_error"}, {"message", d.message}, {"file", d.file}, {"line", d.line},
+                    {"column", d.column}};
+        }
+    }
+    return nullptr;
+}
+
+} // namespace
+
+nlohmann::json diagnosticsJson(const std::vector<gcode::Diagnostic>& diagnostics) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const gcode::Diagnostic& d : diagnostics) {
+        const char* kind = d.kind == gcode::DiagnosticKind::Syntax ? "syntax"
+                           : d.kind == gcode::DiagnosticKind::Flow ? "flow"
+                                                                   : "lint";
+        list.push_back({{"file", d.file},
+                        {"line", d.line},
+                        {"column", d.column},
+                        {"severity", d.severity == gcode::Severity::Error ? "error" : "warning"},
+                        {"kind", kind},
+                        {"message", d.message}});
+    }
+    return list;
+}
+
+nlohmann::json reportJson(const controller::RunReport& report, controller::Controller& controller,
+                          const std::vector<int>& printVariables) {
+    nlohmann::json j;
+    switch (report.status) {
+    case controller::RunStatus::Ok: j["status"] = "ok"; break;
+    case controller::RunStatus::Alarm: j["status"] = "alarm"; break;
+    case controller::RunStatus::Error: j["status"] = "error"; break;
+    }
+    if (report.alarm) {
+        const Alarm& a = *report.alarm;
+        j["alarm"] = {{"code", std::string(alarmKey(a.code))}, {"message", a.message}, {"file", a.file},
+                      {"line", a.line}, {"column", a.column}};
+    } else if (report.status == controller::RunStatus::Error) {
+        j["alarm"] = firstError(report.diagnostics);
+    } else {
+        j["alarm"] = nullptr;
+    }
+    nlohmann::json vars = nlohmann::json::object();
+    for (int n : printVariables) {
+        macro::Value v = controller.variable(n);
+        vars[std::to_string(n)] = v.vacant ? nlohmann::json(nullptr) : nlohmann::json(v.number);
+    }
+    j["vars"] = vars;
+    j["machine"] = axes(report.machine);
+    j["work"] = axes(report.work);
+    j["tool"] = report.tool;
+    nlohmann::json pockets = nlohmann::json::object();
+    for (auto [pocket, tool] : report.pockets) {
+        pockets[std::to_string(pocket)] = tool;
+    }
+    j["pockets"] = pockets;
+    j["outputs"] = report.outputs;
+    j["messages"] = report.messages;
+    j["sim_time_s"] = report.simTime;
+    j["diagnostics"] = diagnosticsJson(report.diagnostics);
+    return j;
+}
+
+nlohmann::json errorJson(const std::string& code, const std::string& message, const std::string& file) {
+    return {{"status", "error"},
+            {"alarm", {{"code", code}, {"message", message}, {"file", file}, {"line", 0}, {"column", 0}}},
+            {"vars", nlohmann::json::object()},
+            {"messages", nlohmann::json::array()}};
+}
+
+std::string dump(const nlohmann::json& j) {
+    return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+} // namespace m350::sim

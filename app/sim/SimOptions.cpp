@@ -1,0 +1,132 @@
+#include "app/sim/SimOptions.h"
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <iostream>
+#include <stdexcept>
+
+namespace m350::sim {
+
+namespace {
+
+double parseNumber(const std::string& text, const std::string& what) {
+    double v = 0;
+    auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || ptr != text.data() + text.size()) {
+        throw CLI::ValidationError(what, "'" + text + "' is not a number");
+    }
+    return v;
+}
+
+int parseWhole(const std::string& text, const std::string& what) {
+    double v = parseNumber(text, what);
+    if (v != static_cast<int>(v)) {
+        throw CLI::ValidationError(what, "'" + text + "' is not a whole number");
+    }
+    return static_cast<int>(v);
+}
+
+std::pair<std::string, std::string> splitAssignment(const std::string& text, const std::string& what) {
+    auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
+        throw CLI::ValidationError(what, "'" + text + "' must look like N=V");
+    }
+    return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+} // namespace
+
+ParseOutcome parseCommandLine(int argc, char** argv) {
+    SimOptions o;
+    CLI::App app{"m350-sim: runs M350 / FANUC macro programs on a simulated machine, headless"};
+    app.require_subcommand(1);
+    std::vector<std::string> params, vars, inputs;
+    std::string printList;
+    bool unhomed = false;
+    std::optional<int> tool;
+
+    auto addMachineOptions = [&](CLI::App* cmd) {
+        cmd->add_option("--config", o.configDir, "machine folder (default: the bundled M350 16-pocket linear rack)");
+        cmd->add_option("--dialect", o.dialect, "m350 or fanuc")->check(CLI::IsMember({"m350", "fanuc"}));
+    };
+    auto addRunOptions = [&](CLI::App* cmd) {
+        addMachineOptions(cmd);
+        cmd->add_option("--param", params, "set parameter N to V (N=V), repeatable");
+        cmd->add_option("--var", vars, "set variable #N to V before the run (N=V), repeatable");
+        cmd->add_option("--input", inputs, "hold input INnn at 0 or 1 for the whole run (IN11=0), repeatable");
+        cmd->add_flag("--unhomed", unhomed, "start with no axis homed");
+        cmd->add_option("--tool", tool, "tool in the spindle at start");
+        cmd->add_option("--print", printList, "variables to report, e.g. 1,100,1300");
+        cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE");
+        cmd->add_option("--max-sim-time", o.settings.maxSimTime, "simulated seconds before a runaway stops")
+            ->check(CLI::PositiveNumber);
+    };
+    CLI::App* run = app.add_subcommand("run", "run a program to its end");
+    run->add_option("PROGRAM", o.program, "program file (.nc)")->required();
+    addRunOptions(run);
+    CLI::App* mdi = app.add_subcommand("mdi", "run MDI lines in order, as the MDI screen does");
+    mdi->add_option("LINES", o.mdiLines, "one or more lines")->required();
+    addRunOptions(mdi);
+    CLI::App* check = app.add_subcommand("check", "parse only and list every error");
+    check->add_option("PROGRAM", o.program, "program file (.nc)")->required();
+    addMachineOptions(check);
+
+    try {
+        app.parse(argc, argv);
+        o.command = run->parsed() ? SimOptions::Command::Run
+                    : mdi->parsed() ? SimOptions::Command::Mdi
+                                    : SimOptions::Command::Check;
+        for (const std::string& p : params) {
+            auto [n, v] = splitAssignment(p, "--param");
+            int number = parseWhole(n, "--param");
+            if (number < 0 || number > 999) {
+                throw CLI::ValidationError("--param", "parameter numbers run from 0 to 999");
+            }
+            o.settings.parameters[number] = parseNumber(v, "--param");
+        }
+        for (const std::string& p : vars) {
+            auto [n, v] = splitAssignment(p, "--var");
+            o.settings.variables[parseWhole(n, "--var")] = parseNumber(v, "--var");
+        }
+        for (const std::string& p : inputs) {
+            auto [port, level] = splitAssignment(p, "--input");
+            if (port.size() < 3 || (port.rfind("IN", 0) != 0 && port.rfind("in", 0) != 0)) {
+                throw CLI::ValidationError("--input", "'" + p + "' must look like IN11=0");
+            }
+            int k = parseWhole(port.substr(2), "--input");
+            int l = parseWhole(level, "--input");
+            if (k < 1 || k > 24 || (l != 0 && l != 1)) {
+                throw CLI::ValidationError("--input", "inputs are IN01-IN24 and levels 0 or 1");
+            }
+            o.settings.heldInputs[k] = l;
+        }
+        std::size_t start = 0;
+        while (!printList.empty() && start <= printList.size()) {
+            std::size_t comma = printList.find(',', start);
+            std::string item = printList.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+            if (!item.empty() && item[0] == '#') {
+                item.erase(0, 1);
+            }
+            o.printVariables.push_back(parseWhole(item, "--print"));
+            if (comma == std::string::npos) {
+                break;
+            }
+            start = comma + 1;
+        }
+        o.settings.homed = !unhomed;
+        o.settings.tool = tool;
+    } catch (const CLI::CallForHelp&) {
+        std::cout << app.help();
+        return {std::nullopt, 0};
+    } catch (const CLI::CallForAllHelp&) {
+        std::cout << app.help("", CLI::AppFormatMode::All);
+        return {std::nullopt, 0};
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "m350-sim: " << e.what() << "\n" << "Run 'm350-sim --help' for usage.\n";
+        return {std::nullopt, 64};
+    }
+    return {o, 0};
+}
+
+} // namespace m350::sim

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "core/controller/RunSettings.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace m350::sim {
+
+// The command line of `m350-sim`, parsed and checked.
+struct SimOptions {
+    enum class Command { Run, Mdi, Check } command = Command::Run;
+    std::string program;                 // run / check
+    std::vector<std::string> mdiLines;   // mdi
+    std::string configDir;               // empty: the bundled machine for the dialect
+    std::optional<std::string> dialect;
+    std::vector<int> printVariables;
+    std::optional<std::string> traceFile;
+    controller::RunSettings settings;
+};
+
+// Returns the options, or an exit status (0 after --help, 64 for a usage error, message printed).
+struct ParseOutcome {
+    std::optional<SimOptions> options;
+    int exitStatus = 0;
+};
+ParseOutcome parseCommandLine(int argc, char** argv);
+
+} // namespace m350::sim

@@ -1,0 +1,104 @@
+// m350-sim: the headless simulator. Exit status: 0 ok, 1 alarm, 2 error (syntax, file, config),
+// 64 usage.
+#include "app/sim/ReportJson.h"
+#include "app/sim/SimOptions.h"
+
+#include "core/config/MachineConfig.h"
+#include "core/controller/Controller.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitAlarm = 1;
+constexpr int kExitError = 2;
+
+using namespace m350;
+
+std::string machineFolder(const sim::SimOptions& o) {
+    if (!o.configDir.empty()) {
+        return o.configDir;
+    }
+    std::string name = o.dialect && *o.dialect == "fanuc" ? "fanuc-0i" : config::kDefaultMachine;
+    return config::bundledMachinesDirectory() + "/" + name;
+}
+
+void printDiagnostics(const std::vector<gcode::Diagnostic>& diagnostics) {
+    for (const gcode::Diagnostic& d : diagnostics) {
+        std::cerr << gcode::formatDiagnostic(d) << '\n';
+    }
+}
+
+int fail(const std::string& code, const std::string& message, const std::string& file) {
+    std::cerr << file << ": " << message << '\n';
+    std::cout << sim::dump(sim::errorJson(code, message, file)) << '\n';
+    return kExitError;
+}
+
+int check(controller::Controller& controller, const sim::SimOptions& o) {
+    controller.loadFile(o.program);
+    const auto& diagnostics = controller.diagnostics();
+    printDiagnostics(diagnostics);
+    bool errors = false;
+    for (const gcode::Diagnostic& d : diagnostics) {
+        errors |= d.severity == gcode::Severity::Error;
+    }
+    nlohmann::json j{{"status", errors ? "error" : "ok"}, {"diagnostics", sim::diagnosticsJson(diagnostics)}};
+    std::cout << sim::dump(j) << '\n';
+    return errors ? kExitError : kExitOk;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    auto parsed = sim::parseCommandLine(argc, argv);
+    if (!parsed.options) {
+        return parsed.exitStatus;
+    }
+    sim::SimOptions& o = *parsed.options;
+    std::string folder = machineFolder(o);
+    auto loaded = config::loadMachineFolder(folder);
+    if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
+        return fail("config_error", error->message, error->file);
+    }
+    config::MachineConfig machineConfig = std::move(std::get<config::MachineConfig>(loaded));
+    if (o.dialect) {
+        machineConfig.dialect = gcode::Dialect::byName(*o.dialect);
+    }
+    if (o.command != sim::SimOptions::Command::Mdi && !std::filesystem::is_regular_file(o.program)) {
+        return fail("file_error", "cannot open program: no such file", o.program);
+    }
+    std::ofstream trace;
+    if (o.traceFile) {
+        trace.open(*o.traceFile, std::ios::trunc);
+        if (!trace) {
+            return fail("file_error", "cannot write the trace file", *o.traceFile);
+        }
+        o.settings.trace = &trace;
+    }
+    controller::Controller controller(std::move(machineConfig), o.settings);
+    if (o.command == sim::SimOptions::Command::Check) {
+        return check(controller, o);
+    }
+    bool ready = o.command == sim::SimOptions::Command::Run ? controller.loadFile(o.program)
+                                                            : controller.loadMdi(o.mdiLines);
+    controller::RunReport report = controller.run();
+    if (!ready) {
+        report.status = controller::RunStatus::Error;
+    }
+    printDiagnostics(report.diagnostics);
+    if (report.alarm) {
+        const Alarm& a = *report.alarm;
+        std::cerr << a.file << ':' << a.line << ':' << a.column << ": alarm: " << a.message << '\n';
+    }
+    std::cout << sim::dump(sim::reportJson(report, controller, o.printVariables)) << '\n';
+    switch (report.status) {
+    case controller::RunStatus::Ok: return kExitOk;
+    case controller::RunStatus::Alarm: return kExitAlarm;
+    case controller::RunStatus::Error: return kExitError;
+    }
+    return kExitError;
+}

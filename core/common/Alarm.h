@@ -1,0 +1,41 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace m350 {
+
+// Every alarm the simulator can raise. Keys are stable, untranslated identifiers (the CLI prints
+// them, the UI translates them); the message says what happened in the operator's terms.
+enum class AlarmCode : std::uint8_t {
+    DivisionByZero,
+    InvalidArgument,      // SQRT of a negative number, ACOS of 2 ...
+    UndefinedVariable,
+    ReadOnlyVariable,
+    GotoMissingLabel,
+    EndWithoutDo,
+    WhileWithoutEnd,
+    CallNestingTooDeep,
+    UnknownProgram,
+    MissingAddress,       // M98 without P ...
+    InvalidWord,          // a G or M code the machine does not know, a bad value
+    MacroAlarm,           // FANUC #3000
+    SimulatedTimeLimit,   // runaway loop
+    NotHomed,
+    OperatorReset,
+};
+
+std::string_view alarmKey(AlarmCode code);
+
+// A raised alarm: what and where. Alarms are values; they are stored and reported, never thrown
+// across layers.
+struct Alarm {
+    AlarmCode code = AlarmCode::InvalidWord;
+    std::string message;
+    std::string file;
+    std::uint32_t line = 0;
+    std::uint32_t column = 0;
+};
+
+} // namespace m350

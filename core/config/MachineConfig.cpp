@@ -1,0 +1,195 @@
+#include "core/config/MachineConfig.h"
+
+#include <toml++/toml.h>
+
+#include <charconv>
+#include <filesystem>
+
+namespace m350::config {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Failure {
+    ConfigError error;
+};
+
+[[noreturn]] void fail(const fs::path& file, std::string message) {
+    throw Failure{{file.string(), std::move(message)}};
+}
+
+toml::table parseToml(const fs::path& file) {
+    try {
+        return toml::parse_file(file.string());
+    } catch (const toml::parse_error& e) {
+        fail(file, std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column) + ": " +
+                       std::string(e.description()));
+    }
+}
+
+int numberKey(const fs::path& file, std::string_view key, int low, int high, const char* what) {
+    int n = 0;
+    auto [ptr, ec] = std::from_chars(key.data(), key.data() + key.size(), n);
+    if (ec != std::errc() || ptr != key.data() + key.size() || n < low || n > high) {
+        fail(file, std::string(what) + " '" + std::string(key) + "' is not a number from " + std::to_string(low) +
+                       " to " + std::to_string(high));
+    }
+    return n;
+}
+
+double numberValue(const fs::path& file, const toml::node& node, std::string_view key) {
+    if (auto v = node.value<double>()) {
+        return *v;
+    }
+    fail(file, "'" + std::string(key) + "' must be a number");
+}
+
+void loadMachineToml(const fs::path& folder, MachineConfig& config) {
+    fs::path file = folder / "machine.toml";
+    if (!fs::exists(file)) {
+        fail(file, "not found: a machine folder needs machine.toml");
+    }
+    toml::table t = parseToml(file);
+    config.name = t["name"].value_or(folder.filename().string());
+    std::string dialect = t["dialect"].value_or(std::string("m350"));
+    config.dialect = gcode::Dialect::byName(dialect);
+    if (!config.dialect) {
+        fail(file, "dialect '" + dialect + "' is unknown (m350 or fanuc)");
+    }
+    auto addLibrary = [&](const toml::node& node, gcode::FileRole role) {
+        auto name = node.value<std::string>();
+        if (!name) {
+            fail(file, "library entries must be file names");
+        }
+        fs::path path = folder / *name;
+        if (!fs::exists(path)) {
+            fail(file, "library '" + *name + "' not found in " + folder.string());
+        }
+        config.libraries.push_back({path.string(), role});
+    };
+    if (auto libs = t["libraries"].as_table()) {
+        if (auto g = libs->get("g")) {
+            addLibrary(*g, gcode::FileRole::GLibrary);
+        }
+        if (auto m = libs->get("m")) {
+            addLibrary(*m, gcode::FileRole::MLibrary);
+        }
+        if (auto other = libs->get_as<toml::array>("other")) {
+            for (const toml::node& n : *other) {
+                addLibrary(n, gcode::FileRole::Library);
+            }
+        }
+    }
+    if (auto codes = t["codes"].as_table()) {
+        for (auto&& [key, value] : *codes) {
+            std::string_view k = key.str();
+            if (k.size() < 2 || (k[0] != 'M' && k[0] != 'G')) {
+                fail(file, "[codes] key '" + std::string(k) + "' must be an M or G code such as M6");
+            }
+            int code = numberKey(file, k.substr(1), 0, 9999, "code");
+            config.codePrograms[{k[0], code}] = static_cast<int>(numberValue(file, value, k));
+        }
+    }
+    if (auto links = t["io_links"].as_array()) {
+        for (const toml::node& node : *links) {
+            const toml::table* link = node.as_table();
+            if (!link) {
+                fail(file, "[[io_links]] entries must be tables");
+            }
+            machine::IoLink l;
+            l.output = (*link)["output"].value_or(0);
+            l.input = (*link)["input"].value_or(0);
+            l.delay = (*link)["delay_ms"].value_or(150.0) / 1000.0;
+            l.inverted = (*link)["inverted"].value_or(false);
+            if (l.output < 1 || l.output > machine::kOutputCount || l.input < 1 || l.input > machine::kInputCount) {
+                fail(file, "io link needs output 1-21 and input 1-24");
+            }
+            config.ioLinks.push_back(l);
+        }
+    }
+    config.magazineCapacity = t["magazine"]["capacity"].value_or(0);
+}
+
+void loadParams(const fs::path& folder, MachineConfig& config) {
+    fs::path file = folder / "params.toml";
+    if (!fs::exists(file)) {
+        return;
+    }
+    toml::table t = parseToml(file);
+    if (auto params = t["params"].as_table()) {
+        for (auto&& [key, value] : *params) {
+            int n = numberKey(file, key.str(), 0, ParameterTable::kCount - 1, "parameter");
+            config.parameters.set(n, numberValue(file, value, key.str()));
+        }
+    }
+}
+
+void loadOffsets(const fs::path& folder, MachineConfig& config) {
+    fs::path file = folder / "offsets.toml";
+    if (!fs::exists(file)) {
+        return;
+    }
+    toml::table t = parseToml(file);
+    static constexpr std::pair<const char*, int> slots[] = {{"G92", 0}, {"G54", 1}, {"G55", 2}, {"G56", 3},
+                                                            {"G57", 4}, {"G58", 5}, {"G59", 6}, {"G52", 7},
+                                                            {"common", 8}};
+    for (auto [name, slot] : slots) {
+        if (auto axes = t[name].as_array()) {
+            if (axes->size() > 5) {
+                fail(file, std::string(name) + " has more than 5 axes");
+            }
+            for (std::size_t i = 0; i < axes->size(); ++i) {
+                config.offsets[static_cast<std::size_t>(slot)][i] = numberValue(file, *axes->get(i), name);
+            }
+        }
+    }
+}
+
+void loadVariables(const fs::path& folder, MachineConfig& config) {
+    fs::path file = folder / "variables.toml";
+    if (!fs::exists(file)) {
+        return;
+    }
+    toml::table t = parseToml(file);
+    if (auto vars = t["variables"].as_table()) {
+        for (auto&& [key, value] : *vars) {
+            config.variables[numberKey(file, key.str(), 1, 9999, "variable")] = numberValue(file, value, key.str());
+        }
+    }
+}
+
+} // namespace
+
+std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& folder) {
+    MachineConfig config;
+    fs::path dir(folder);
+    config.folder = folder;
+    try {
+        if (!fs::is_directory(dir)) {
+            fail(dir, "not a machine folder (no such directory)");
+        }
+        loadMachineToml(dir, config);
+        loadParams(dir, config);
+        loadOffsets(dir, config);
+        loadVariables(dir, config);
+    } catch (const Failure& f) {
+        return f.error;
+    }
+    return config;
+}
+
+std::string bundledMachinesDirectory() {
+    fs::path installed = fs::path("/proc/self/exe");
+    std::error_code ec;
+    fs::path exe = fs::read_symlink(installed, ec);
+    if (!ec) {
+        fs::path share = exe.parent_path().parent_path() / "share" / "m350" / "machines";
+        if (fs::is_directory(share)) {
+            return share.string();
+        }
+    }
+    return std::string(M350_RESOURCE_DIR) + "/machines";
+}
+
+} // namespace m350::config

@@ -1,0 +1,52 @@
+#pragma once
+
+#include "core/config/ParameterTable.h"
+#include "core/gcode/Dialect.h"
+#include "core/gcode/Program.h"
+#include "core/machine/InstantMachine.h"
+
+#include <array>
+#include <map>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace m350::config {
+
+struct LibraryFile {
+    std::string path;
+    gcode::FileRole role = gcode::FileRole::Library;
+};
+
+// A machine folder, as loaded: which dialect it speaks, its macro libraries, its parameters and
+// offsets, and the wiring of its IO. Files:
+//   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine]
+//   params.toml    [params] N = value (parameters 0-999; the rest stay 0)
+//   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
+//   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
+struct MachineConfig {
+    std::string folder;
+    std::string name;
+    const gcode::Dialect* dialect = &gcode::Dialect::m350();
+    std::vector<LibraryFile> libraries;
+    std::map<std::pair<char, int>, int> codePrograms;
+    std::vector<machine::IoLink> ioLinks;
+    ParameterTable parameters;
+    std::array<std::array<double, 5>, 9> offsets{}; // slots as interp::WorkOffsets numbers them
+    std::map<int, double> variables;
+    int magazineCapacity = 0; // machines whose capacity is not a parameter (FANUC)
+};
+
+struct ConfigError {
+    std::string file;
+    std::string message;
+};
+
+std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& folder);
+
+// The bundled machine folders: beside the executable when installed, else in the source tree.
+std::string bundledMachinesDirectory();
+inline constexpr const char* kDefaultMachine = "m350-linear16";
+
+} // namespace m350::config

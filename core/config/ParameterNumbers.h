@@ -1,0 +1,20 @@
+#pragma once
+
+// Parameter numbers the simulator acts on, as the M350 documents them (macro variable = N + 500).
+// The full catalogue with names, units and ranges is data in resources/; these are the ones code
+// reads by meaning.
+namespace m350::config::param {
+
+inline constexpr int kDefaultFeed = 61;            // 默认进给速度, mm/min
+inline constexpr int kCurrentWorkSystem = 78;      // #578: 0 = G92, 1..6 = G54..G59
+inline constexpr int kHomePositionX = 122;         // 122-126: machine position after homing (G28 goes here)
+inline constexpr int kHomeBeforeProcessing = 220;  // 0 = not required
+inline constexpr int kCurrentTool = 800;           // #1300 当前刀具号
+inline constexpr int kMagazineCapacity = 801;      // #1301 刀库容量
+inline constexpr int kMagazineType = 802;          // #1302 刀库类型
+inline constexpr int kToolZOffsetFirst = 930;      // #1430-#1445: T1..T16 Z offset (machine Z at the setter)
+inline constexpr int kToolZOffsetCount = 16;
+inline constexpr int kVirtualToolZOffsetFirst = 973; // #1473-#1492: virtual tools 1..20
+inline constexpr int kVirtualToolZOffsetCount = 20;
+
+} // namespace m350::config::param

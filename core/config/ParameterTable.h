@@ -1,0 +1,21 @@
+#pragma once
+
+#include <array>
+
+namespace m350::config {
+
+// The controller's numbered parameters 0-999 (the M350 stores them as 1000 doubles; macros see
+// parameter N as #(N+500)). Range checking and names live in the parameter catalogue.
+class ParameterTable {
+public:
+    static constexpr int kCount = 1000;
+
+    double get(int number) const { return values_[static_cast<std::size_t>(number)]; }
+    void set(int number, double value) { values_[static_cast<std::size_t>(number)] = value; }
+    static bool valid(int number) { return number >= 0 && number < kCount; }
+
+private:
+    std::array<double, kCount> values_{};
+};
+
+} // namespace m350::config

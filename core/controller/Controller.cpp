@@ -1,0 +1,221 @@
+#include "core/controller/Controller.h"
+
+#include "core/config/ParameterNumbers.h"
+#include "core/gcode/Parser.h"
+#include "core/gcode/SourceText.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace m350::controller {
+
+namespace param = config::param;
+
+Controller::Controller(config::MachineConfig config, RunSettings settings)
+    : config_(std::move(config)), settings_(std::move(settings)), machine_(this),
+      interp_(*config_.dialect, config_.parameters, offsets_, machine_), store_(*config_.dialect, config_.parameters) {
+    if (settings_.trace) {
+        trace_ = std::make_unique<TraceWriter>(*settings_.trace);
+    }
+    for (int slot = 0; slot < interp::WorkOffsets::kSlots; ++slot) {
+        for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+            offsets_.set(slot, axis, config_.offsets[static_cast<std::size_t>(slot)][static_cast<std::size_t>(axis)]);
+        }
+    }
+    for (const machine::IoLink& link : config_.ioLinks) {
+        machine_.addLink(link);
+    }
+    applySettings();
+}
+
+Controller::~Controller() = default;
+
+void Controller::applySettings() {
+    for (auto [number, value] : settings_.parameters) {
+        config_.parameters.set(number, value);
+    }
+    for (auto [port, level] : settings_.heldInputs) {
+        machine_.forceInput(port, level);
+    }
+    if (settings_.tool) {
+        if (config_.dialect->id == gcode::DialectId::M350) {
+            config_.parameters.set(param::kCurrentTool, *settings_.tool);
+        } else {
+            fanucSpindleTool_ = *settings_.tool;
+            interp_.state().selectedTool = *settings_.tool;
+        }
+    }
+    homed_.fill(settings_.homed ? 1 : 0);
+    machine::Axes start = machine::Axes::Zero();
+    if (settings_.homed) {
+        for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+            start(axis) = config_.parameters.get(param::kHomePositionX + axis);
+        }
+    }
+    machine_.setPosition(start);
+    for (auto [number, value] : config_.variables) {
+        store_.write(store_.map().describe(number), number, macro::Value::of(value));
+    }
+}
+
+bool Controller::load(const std::string& path, std::string_view text, gcode::FileRole role,
+                      const std::string& encoding) {
+    gcode::Parser parser(*config_.dialect);
+    parser.addFile(program_, path, text, role, encoding);
+    for (const config::LibraryFile& library : config_.libraries) {
+        auto source = gcode::readSourceFile(library.path);
+        if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
+            diagnostics_.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, library.path, 0, 0,
+                                    error->message});
+            continue;
+        }
+        const auto& lib = std::get<gcode::SourceText>(source);
+        parser.addFile(program_, lib.path, lib.text, library.role, std::string(gcode::encodingName(lib.encoding)));
+    }
+    parser.finish(program_);
+    diagnostics_.insert(diagnostics_.end(), parser.diagnostics().begin(), parser.diagnostics().end());
+    if (gcode::hasBlockingError(diagnostics_)) {
+        return false;
+    }
+    macro::Executor::Options options;
+    options.codePrograms = config_.codePrograms;
+    executor_ = std::make_unique<macro::Executor>(program_, *config_.dialect, store_, *this, interp_, options);
+    for (auto [number, value] : settings_.variables) {
+        macro::VariableInfo info = store_.map().describe(number);
+        if (macro::VariableStore::ownsKind(info.kind)) {
+            store_.write(info, number, macro::Value::of(value));
+        } else {
+            writeSystem(info, number, value, {});
+        }
+    }
+    return true;
+}
+
+bool Controller::loadFile(const std::string& path) {
+    auto source = gcode::readSourceFile(path);
+    if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
+        diagnostics_.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, path, 0, 0, error->message});
+        return false;
+    }
+    const auto& text = std::get<gcode::SourceText>(source);
+    return load(text.path, text.text, gcode::FileRole::Main, std::string(gcode::encodingName(text.encoding)));
+}
+
+bool Controller::loadMdi(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& line : lines) {
+        text += line;
+        text += '\n';
+    }
+    return load("MDI", text, gcode::FileRole::Mdi, "UTF-8");
+}
+
+TraceSource Controller::source() const {
+    if (executor_) {
+        if (auto loc = executor_->location()) {
+            return {program_.fileName(*loc), loc->line};
+        }
+    }
+    return {};
+}
+
+void Controller::onMachineEvent(const machine::MachineEvent& event) {
+    if (trace_) {
+        trace_->machineEvent(event, source());
+    }
+}
+
+void Controller::postMessage(std::string text) {
+    if (trace_) {
+        trace_->message(machine_.time(), text, source());
+    }
+    messages_.push_back(std::move(text));
+}
+
+// Alarms stop motion and drive every output to its safe (off) state, as the real controller does.
+void Controller::enterSafeState() {
+    machine_.spindle(machine::SpindleState::Stop, 0.0);
+    machine_.coolant(false);
+    for (int port = 1; port <= machine::kOutputCount; ++port) {
+        machine_.setOutput(port, 0);
+    }
+}
+
+RunReport Controller::run() {
+    RunReport out;
+    if (!executor_) {
+        out.status = RunStatus::Error;
+        out.diagnostics = diagnostics_;
+        report(out);
+        return out;
+    }
+    auto unit = program_.mainUnit();
+    if (!unit || !executor_->start(*unit)) {
+        out.status = RunStatus::Ok;
+        report(out);
+        return out;
+    }
+    while (executor_->state() == macro::Executor::State::Running) {
+        if (machine_.time() > settings_.maxSimTime) {
+            std::ostringstream why;
+            why << "the program ran " << settings_.maxSimTime
+                << " s of simulated time without ending (a loop waiting for an input that never comes?)";
+            executor_->raise(AlarmCode::SimulatedTimeLimit, why.str());
+            break;
+        }
+        int toolBefore = spindleTool();
+        executor_->step();
+        machine_.blockTime(settings_.blockTime);
+        for (std::string& notice : interp_.takeNotices()) {
+            postMessage(std::move(notice));
+        }
+        if (int toolAfter = spindleTool(); toolAfter != toolBefore && trace_) {
+            trace_->toolChange(machine_.time(), toolBefore, toolAfter, source());
+        }
+    }
+    if (executor_->state() == macro::Executor::State::Alarmed) {
+        out.status = RunStatus::Alarm;
+        out.alarm = executor_->alarm();
+        enterSafeState();
+        if (trace_) {
+            trace_->alarm(machine_.time(), *out.alarm);
+        }
+    }
+    out.diagnostics = diagnostics_;
+    report(out);
+    return out;
+}
+
+int Controller::spindleTool() const {
+    return config_.dialect->id == gcode::DialectId::M350 ? static_cast<int>(config_.parameters.get(param::kCurrentTool))
+                                                         : fanucSpindleTool_;
+}
+
+void Controller::report(RunReport& out) const {
+    out.machine = machine_.position();
+    out.work = interp_.workPosition();
+    out.tool = spindleTool();
+    int capacity = config_.dialect->id == gcode::DialectId::M350
+                       ? static_cast<int>(config_.parameters.get(param::kMagazineCapacity))
+                       : config_.magazineCapacity;
+    // Fixed pockets: every tool has its own pocket, empty while that tool is in the spindle.
+    for (int pocket = 1; pocket <= capacity; ++pocket) {
+        out.pockets[pocket] = pocket == out.tool ? 0 : pocket;
+    }
+    for (int port = 1; port <= machine::kOutputCount; ++port) {
+        out.outputs[static_cast<std::size_t>(port - 1)] = machine_.output(port);
+    }
+    out.messages = messages_;
+    out.simTime = machine_.time();
+    out.blocks = executor_ ? executor_->blocksExecuted() : 0;
+}
+
+macro::Value Controller::variable(int number) {
+    macro::VariableInfo info = store_.map().describe(number);
+    if (info.kind == macro::VariableKind::Undefined) {
+        return macro::Value::empty();
+    }
+    return macro::VariableStore::ownsKind(info.kind) ? store_.read(info, number) : readSystem(info, number);
+}
+
+} // namespace m350::controller

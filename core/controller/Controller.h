@@ -1,0 +1,76 @@
+#pragma once
+
+#include "core/config/MachineConfig.h"
+#include "core/controller/RunReport.h"
+#include "core/controller/RunSettings.h"
+#include "core/controller/TraceWriter.h"
+#include "core/gcode/Program.h"
+#include "core/interp/ModalInterpreter.h"
+#include "core/interp/WorkOffsets.h"
+#include "core/machine/InstantMachine.h"
+#include "core/macro/Executor.h"
+#include "core/macro/MachineAccess.h"
+#include "core/macro/VariableStore.h"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace m350::controller {
+
+// The one façade the CLI (and later the panel) uses: load a program with the machine's macro
+// libraries, run it in virtual time, inspect the result. Owns the machine, the interpreter, the
+// variables and the executor; implements the machine-side variables for the macro layer.
+class Controller : public macro::MachineAccess, public machine::MachineObserver {
+public:
+    Controller(config::MachineConfig config, RunSettings settings);
+    ~Controller() override;
+
+    // Parses the program and the machine's libraries. False when a syntax error prevents running;
+    // diagnostics() then says why (and lists flow/lint findings in any case).
+    bool loadFile(const std::string& path);
+    bool loadMdi(const std::vector<std::string>& lines);
+    const std::vector<gcode::Diagnostic>& diagnostics() const { return diagnostics_; }
+
+    RunReport run();
+
+    // Reads any variable as a macro would, for --print and the panel.
+    macro::Value variable(int number);
+    const gcode::Dialect& dialect() const { return *config_.dialect; }
+    const config::MachineConfig& config() const { return config_; }
+
+    // macro::MachineAccess
+    macro::Value readSystem(const macro::VariableInfo& info, int number) override;
+    std::optional<std::string> writeSystem(const macro::VariableInfo& info, int number, double value,
+                                           std::string_view text) override;
+    // machine::MachineObserver
+    void onMachineEvent(const machine::MachineEvent& event) override;
+
+private:
+    bool load(const std::string& path, std::string_view text, gcode::FileRole role, const std::string& encoding);
+    void applySettings();
+    void enterSafeState();
+    void report(RunReport& out) const;
+    int spindleTool() const;
+    TraceSource source() const;
+    void postMessage(std::string text);
+
+    config::MachineConfig config_;
+    RunSettings settings_;
+    interp::WorkOffsets offsets_;
+    machine::InstantMachine machine_;
+    interp::ModalInterpreter interp_;
+    macro::VariableStore store_;
+    gcode::Program program_;
+    std::vector<gcode::Diagnostic> diagnostics_;
+    std::unique_ptr<macro::Executor> executor_;
+    std::unique_ptr<TraceWriter> trace_;
+    std::array<int, machine::kAxisCount> homed_{};
+    int fanucSpindleTool_ = 0;
+    double dialogAnswer_ = 0.0;
+    std::vector<std::string> messages_;
+};
+
+} // namespace m350::controller

@@ -1,0 +1,98 @@
+// The variables that belong to the machine: what macros read and write through #-numbers
+// beyond their own storage.
+#include "core/controller/Controller.h"
+
+#include "core/config/ParameterNumbers.h"
+
+#include <cmath>
+
+namespace m350::controller {
+
+using macro::Value;
+using macro::VariableInfo;
+using macro::VariableKind;
+
+namespace {
+
+constexpr double kClearMessage = 1000; // `#1503 = 1000` clears the status line
+
+} // namespace
+
+Value Controller::readSystem(const VariableInfo& info, int number) {
+    const int axis = info.index & 7;
+    switch (info.kind) {
+    case VariableKind::WorkOffset: return Value::of(offsets_.get(info.index >> 3, axis));
+    case VariableKind::MachinePosition: return Value::of(machine_.position()(info.index));
+    case VariableKind::WorkPosition: {
+        if (info.index < 0 || (info.index >> 3) == interp_.activeSlot()) {
+            return Value::of(interp_.workPosition()(info.index < 0 ? info.index + 8 : axis));
+        }
+        double tool = axis == 2 ? interp_.toolZOffset() : 0.0;
+        return Value::of(machine_.position()(axis) - offsets_.get(info.index >> 3, axis) - tool);
+    }
+    case VariableKind::BlockEnd: return Value::of(interp_.workPosition()(info.index));
+    case VariableKind::SkipPosition:
+    case VariableKind::ProbeResult: return Value::of(0); // written by G31 once probing is modelled
+    case VariableKind::Input: return Value::of(machine_.input(info.index));
+    case VariableKind::Output: return Value::of(machine_.output(info.index));
+    case VariableKind::Homed: return Value::of(homed_[static_cast<std::size_t>(info.index)]);
+    case VariableKind::Dialog: return Value::of(dialogAnswer_);
+    case VariableKind::Message: return Value::of(0);
+    case VariableKind::PmcSignal: {
+        // The umbrella-magazine interface of the FANUC seed: G54.0 .. G54.2
+        int commanded = interp_.state().selectedTool;
+        switch (info.index) {
+        case 0: return Value::of(commanded == fanucSpindleTool_ ? 1 : 0); // T already in the spindle
+        case 1: return Value::of(fanucSpindleTool_ == 0 ? 1 : 0);         // spindle holds no tool
+        case 2: return Value::of(commanded == 0 ? 1 : 0);                 // T0 commanded
+        default: return Value::of(0);
+        }
+    }
+    case VariableKind::ModalGroup: return Value::of(interp_.state().groups[static_cast<std::size_t>(info.index)]);
+    case VariableKind::ModalWord: {
+        const interp::ModalState& s = interp_.state();
+        switch (info.index) {
+        case 107: return Value::of(s.radiusOffset);
+        case 109: return Value::of(s.feed);
+        case 111: return Value::of(s.lengthOffset);
+        case 113: return Value::of(s.lastM);
+        case 119: return Value::of(s.spindleSpeed);
+        case 120: return Value::of(s.selectedTool);
+        default: return Value::empty();
+        }
+    }
+    case VariableKind::Alarm:
+    case VariableKind::StopMessage: return Value::of(0);
+    default: return Value::empty();
+    }
+    (void)number;
+}
+
+std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int number, double value,
+                                                   std::string_view text) {
+    switch (info.kind) {
+    case VariableKind::WorkOffset: offsets_.set(info.index >> 3, info.index & 7, value); return std::nullopt;
+    case VariableKind::Output: machine_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
+    case VariableKind::Homed: homed_[static_cast<std::size_t>(info.index)] = value != 0.0 ? 1 : 0; return std::nullopt;
+    case VariableKind::Message:
+        if (value != kClearMessage && !text.empty()) {
+            postMessage(std::string(text));
+        }
+        return std::nullopt;
+    case VariableKind::Dialog:
+        // A headless run answers every dialog with Enter (1), and says so.
+        postMessage(std::string(text) + " [dialog answered: Enter]");
+        dialogAnswer_ = 1;
+        return std::nullopt;
+    case VariableKind::Alarm: {
+        auto n = static_cast<long long>(std::lround(value));
+        return "macro alarm " + std::to_string(3000 + n) + (text.empty() ? "" : ": " + std::string(text));
+    }
+    case VariableKind::StopMessage:
+        postMessage(std::string(text) + " (#3006 stop: continued in a headless run)");
+        return std::nullopt;
+    default: return "cannot write " + store_.map().describeText(number);
+    }
+}
+
+} // namespace m350::controller

@@ -1,0 +1,33 @@
+#pragma once
+
+#include "core/common/Alarm.h"
+#include "core/gcode/Diagnostic.h"
+#include "core/machine/MachineTypes.h"
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace m350::controller {
+
+enum class RunStatus { Ok, Alarm, Error };
+
+// What a run leaves behind, as `m350-sim` reports it.
+struct RunReport {
+    RunStatus status = RunStatus::Ok;
+    std::optional<Alarm> alarm;
+    std::vector<gcode::Diagnostic> diagnostics;
+    machine::Axes machine = machine::Axes::Zero();
+    machine::Axes work = machine::Axes::Zero();
+    int tool = 0;
+    std::map<int, int> pockets; // pocket -> tool (0 = empty)
+    std::array<int, machine::kOutputCount> outputs{};
+    std::vector<std::string> messages;
+    double simTime = 0.0;
+    std::uint64_t blocks = 0;
+};
+
+} // namespace m350::controller

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <map>
+#include <optional>
+#include <ostream>
+
+namespace m350::controller {
+
+// How one run is set up, beyond the machine folder (the `m350-sim` options).
+struct RunSettings {
+    double maxSimTime = 3600.0; // virtual seconds before a runaway program is stopped
+    double blockTime = 1e-4;    // virtual seconds one block costs to prepare (macro statements too)
+    bool homed = true;
+    std::optional<int> tool;    // tool in the spindle at start
+    std::map<int, int> heldInputs;     // port -> level for the whole run
+    std::map<int, double> parameters;  // overrides of the machine folder's parameters
+    std::map<int, double> variables;   // set before the run starts
+    std::ostream* trace = nullptr;     // JSON Lines events
+};
+
+} // namespace m350::controller

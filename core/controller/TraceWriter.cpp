@@ -1,0 +1,84 @@
+#include "core/controller/TraceWriter.h"
+
+#include <nlohmann/json.hpp>
+
+namespace m350::controller {
+
+namespace {
+
+nlohmann::json axes(const machine::Axes& a) {
+    nlohmann::json j = nlohmann::json::object();
+    for (int i = 0; i < machine::kAxisCount; ++i) {
+        j[std::string(1, machine::kAxisNames[static_cast<std::size_t>(i)])] = a(i);
+    }
+    return j;
+}
+
+void withSource(nlohmann::json& j, const TraceSource& source) {
+    j["file"] = source.file;
+    j["line"] = source.line;
+}
+
+} // namespace
+
+void TraceWriter::machineEvent(const machine::MachineEvent& e, const TraceSource& source) {
+    using Type = machine::MachineEvent::Type;
+    nlohmann::json j;
+    j["t"] = e.start;
+    switch (e.type) {
+    case Type::Rapid:
+    case Type::Feed:
+    case Type::Arc:
+        j["type"] = "move";
+        j["kind"] = e.type == Type::Rapid ? "rapid" : e.type == Type::Feed ? "feed" : "arc";
+        j["from"] = axes(e.from);
+        j["to"] = axes(e.to);
+        j["feed"] = e.feed;
+        j["start"] = e.start;
+        j["end"] = e.end;
+        break;
+    case Type::Dwell:
+        j["type"] = "dwell";
+        j["start"] = e.start;
+        j["end"] = e.end;
+        break;
+    case Type::Io:
+        j["type"] = "io";
+        j["port"] = (e.port > 0 ? "OUT" : "IN") + std::string(std::abs(e.port) < 10 ? "0" : "") +
+                    std::to_string(std::abs(e.port));
+        j["level"] = e.level;
+        break;
+    case Type::Spindle:
+        j["type"] = "spindle";
+        j["state"] = std::string(machine::spindleStateName(e.spindle));
+        j["rpm"] = e.rpm;
+        break;
+    case Type::Coolant:
+        j["type"] = "coolant";
+        j["on"] = e.level != 0;
+        break;
+    }
+    withSource(j, source);
+    out_ << j.dump() << '\n';
+}
+
+void TraceWriter::message(double time, std::string_view text, const TraceSource& source) {
+    nlohmann::json j{{"t", time}, {"type", "message"}, {"text", std::string(text)}};
+    withSource(j, source);
+    out_ << j.dump() << '\n';
+}
+
+void TraceWriter::toolChange(double time, int from, int to, const TraceSource& source) {
+    nlohmann::json j{{"t", time}, {"type", "toolchange"}, {"from", from}, {"to", to}};
+    withSource(j, source);
+    out_ << j.dump() << '\n';
+}
+
+void TraceWriter::alarm(double time, const Alarm& alarm) {
+    nlohmann::json j{{"t", time},          {"type", "alarm"},      {"code", std::string(alarmKey(alarm.code))},
+                     {"message", alarm.message}, {"file", alarm.file}, {"line", alarm.line},
+                     {"column", alarm.column}};
+    out_ << j.dump() << '\n';
+}
+
+} // namespace m350::controller

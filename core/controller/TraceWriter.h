@@ -1,0 +1,33 @@
+#pragma once
+
+#include "core/common/Alarm.h"
+#include "core/machine/MachineTypes.h"
+
+#include <ostream>
+#include <string>
+#include <string_view>
+
+namespace m350::controller {
+
+// Where an event came from in the program.
+struct TraceSource {
+    std::string file;
+    std::uint32_t line = 0;
+};
+
+// Writes one JSON object per line (JSON Lines) for each event, with its virtual time and the
+// source line that caused it: move, io, spindle, coolant, dwell, toolchange, message, alarm.
+class TraceWriter {
+public:
+    explicit TraceWriter(std::ostream& out) : out_(out) {}
+
+    void machineEvent(const machine::MachineEvent& event, const TraceSource& source);
+    void message(double time, std::string_view text, const TraceSource& source);
+    void toolChange(double time, int from, int to, const TraceSource& source);
+    void alarm(double time, const Alarm& alarm);
+
+private:
+    std::ostream& out_;
+};
+
+} // namespace m350::controller

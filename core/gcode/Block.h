@@ -1,0 +1,49 @@
+#pragma once
+
+#include "core/gcode/Diagnostic.h"
+#include "core/gcode/Expression.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace m350::gcode {
+
+// An address word: `X-#2`, `G#199`, `P#[1045+#1*3]`.
+struct Word {
+    char letter = 0;
+    ExprId value = kNoExpr;
+    std::uint32_t column = 0;
+};
+
+// `#index = value`, with the comment that follows it kept as text: `#1503 = 1(T[%.0f])`.
+struct Assignment {
+    ExprId index = kNoExpr;
+    ExprId value = kNoExpr;
+    std::string text;
+    bool hasText = false;
+    std::uint32_t column = 0;
+};
+
+enum class Control : std::uint8_t { None, IfGoto, IfThen, Goto, While, End };
+
+// One line of a program. Control statements stand alone after the N label; ordinary blocks hold
+// assignments and words, executed as one unit.
+struct Block {
+    SourceLocation location;
+    std::int32_t label = -1;         // N number, -1 when none
+    std::int32_t programNumber = -1; // the O number on an O line
+    bool blockDelete = false;        // leading '/'
+    bool programEnd = false;         // holds M30 or M02 (ends the main program's scope)
+    Control control = Control::None;
+    ExprId condition = kNoExpr;      // IF / WHILE
+    ExprId target = kNoExpr;         // GOTO label expression
+    std::int32_t loopId = 0;         // m of DOm / ENDm
+    std::int32_t partner = -1;       // WHILE <-> END block index, -1 when unmatched
+    std::uint32_t controlColumn = 0; // where the control keyword starts
+    std::vector<Assignment> assignments;
+    std::vector<Word> words;
+    std::string comment;             // text of the first comment on the line
+};
+
+} // namespace m350::gcode

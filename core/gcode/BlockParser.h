@@ -1,0 +1,84 @@
+#pragma once
+
+#include "core/gcode/Block.h"
+#include "core/gcode/Dialect.h"
+#include "core/gcode/Diagnostic.h"
+#include "core/gcode/Expression.h"
+#include "core/gcode/Token.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace m350::gcode {
+
+// Parses the tokens of one line into a Block. One method per precedence level:
+//   comparison  (== != < > <= >= EQ NE LT GT LE GE)
+//   additive    (+ - OR XOR)
+//   term        (* / AND MOD)
+//   unary       (- +)
+//   primary     (number, #var, #[expr], [expr], FUNC[...])
+// On the first error the line is abandoned (recovery is per block), so `check` still reports the
+// errors of every other line.
+class BlockParser {
+public:
+    BlockParser(const Dialect& dialect, ExpressionPool& pool, std::vector<Diagnostic>& diagnostics,
+                std::string fileName, std::uint32_t fileIndex);
+
+    // Returns nothing for a line without content (blank, comment only, `%`) or with a syntax error.
+    std::optional<Block> parse(std::string_view line, std::uint32_t lineNumber);
+
+private:
+    struct Failure {};
+
+    const Token& peek(std::size_t ahead = 0) const;
+    const Token& next();
+    bool atKeyword(Keyword k) const;
+    [[noreturn]] void fail(const Token& at, std::string message);
+    [[noreturn]] void fail(std::uint32_t column, std::string message);
+    void lint(std::uint32_t column, std::string message);
+
+    void parseStatement(Block& block);
+    void parseIf(Block& block);
+    void parseWhile(Block& block);
+    void parseItems(Block& block);
+    Assignment parseAssignment();
+    Word parseWord();
+    ExprId parseCondition(const char* statement);
+    int parseLoopId(const char* keyword);
+
+    ExprId parseExpression();
+    ExprId parseAdditive();
+    ExprId parseTerm();
+    ExprId parseUnary();
+    ExprId parsePrimary();
+    ExprId parseVariable();
+    ExprId parseFunction();
+    ExprId parseBracketed();
+    ExprId binary(BinaryOp op, ExprId lhs, ExprId rhs, std::uint32_t column);
+
+    std::optional<BinaryOp> comparisonAhead();
+    std::optional<BinaryOp> additiveAhead();
+    std::optional<BinaryOp> termAhead();
+
+    [[noreturn]] void failStrayBracket(const Token& at, const char* context);
+    std::string hashBracketHint(std::size_t fromToken, std::size_t toToken) const;
+    void lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken);
+    std::optional<Block> brokenLoopBlock(Block block) const;
+    std::string describe(const Token& token) const;
+    std::string source(const Token& token) const;
+
+    const Dialect& dialect_;
+    ExpressionPool& pool_;
+    std::vector<Diagnostic>& diagnostics_;
+    std::string fileName_;
+    std::uint32_t fileIndex_;
+
+    std::string_view line_;
+    std::uint32_t lineNumber_ = 0;
+    std::vector<Token> tokens_;
+    std::size_t pos_ = 0;
+};
+
+} // namespace m350::gcode

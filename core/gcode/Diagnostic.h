@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace m350::gcode {
+
+// Where a token or block comes from. `file` indexes Program::files; line and column are 1-based,
+// the column counted in characters (code points) of the UTF-8 text.
+struct SourceLocation {
+    std::uint32_t file = 0;
+    std::uint32_t line = 0;
+    std::uint32_t column = 0;
+};
+
+enum class Severity { Error, Warning };
+
+// Syntax errors stop a program from running at all. Flow and lint findings (a GOTO with no label,
+// a pocket table added instead of indexed) are errors for `check` but, as on the real controller,
+// only become alarms when `run` reaches them.
+enum class DiagnosticKind { Syntax, Flow, Lint };
+
+struct Diagnostic {
+    Severity severity = Severity::Error;
+    DiagnosticKind kind = DiagnosticKind::Syntax;
+    std::string file;
+    std::uint32_t line = 0;
+    std::uint32_t column = 0;
+    std::string message;
+};
+
+// "file:line:col: message", the form compilers use, so editors can jump to it.
+std::string formatDiagnostic(const Diagnostic& diagnostic);
+
+bool hasBlockingError(const std::vector<Diagnostic>& diagnostics);
+
+} // namespace m350::gcode

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace m350::gcode {
+
+enum class DialectId : std::uint8_t { M350, Fanuc };
+
+// A table of parameter-backed variables that macros index as #[base + k - 1].
+struct IndexedTable {
+    int base = 0;
+    std::string_view what; // "pocket X (params 830-845)"
+};
+
+// Everything that differs between the M350 firmware's macro language and FANUC Custom Macro B.
+// One parser and one evaluator read this table; there are no dialect if-chains elsewhere.
+struct Dialect {
+    DialectId id = DialectId::M350;
+    std::string_view name;
+
+    // Lexical rules
+    bool spacesInsignificant = false;  // FANUC: `GO TO 290` == `GOTO290`
+    bool slashSlashComments = false;   // M350: `// ...`
+    bool semicolonComments = false;    // M350: `; ...`
+    bool cStyleComparisons = false;    // == != < > <= >=
+    bool bitwiseKeywords = false;      // AND OR XOR MOD
+    bool unbracketedConditions = false; // M350: `IF#1300 != 0 GOTO56`, `WHILE#13>0DO13`
+    bool atanComma = false;            // ATAN[y,x]
+    bool atanSlash = false;            // ATAN[a]/[b]
+    bool extendedFunctions = false;    // ASIN ACOS LN EXP BIN BCD
+    int maxLoopId = 3;                 // DO1..DOm
+
+    // Variables and calls
+    bool hasVacant = false;            // FANUC's <vacant>; M350 variables start at 0
+    int localFirst = 1;                // first local variable number (#0 on the M350, #1 on FANUC)
+    int localCount = 33;               // locals per level (#0-#49 => 50, #1-#33 => 33)
+    bool m98OpensLocalLevel = false;   // M350: every call opens one; FANUC: only G65
+    int maxCallDepth = 15;
+    std::array<std::int8_t, 26> callArguments{};    // G65/M98 address letter -> local number, -1 none
+    std::array<std::int8_t, 26> handlerArguments{}; // arguments of G-code handlers (M350: X#0 Y#1 ...)
+    int tCodeProgram = -1;             // M350: `T5` runs O20000 with #1 = 5
+    int gHandlerBase = -1;             // `Gxx` runs O(9000+xx) from the G library
+    int mHandlerBase = -1;             // `Mn` runs O(10000+n) from the M library
+    double dwellPScale = 0.001;        // G04 P units to seconds (both: milliseconds)
+    bool dwellXSeconds = false;        // FANUC: G04 X<seconds>
+
+    std::vector<IndexedTable> indexedTables; // for the `X[#1330+#1300-1]` lint
+
+    static const Dialect& m350();
+    static const Dialect& fanuc();
+    static const Dialect* byName(std::string_view name);
+
+    std::optional<int> callArgument(char letter) const;
+    std::optional<int> handlerArgument(char letter) const;
+};
+
+} // namespace m350::gcode

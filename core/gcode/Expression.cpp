@@ -1,0 +1,9 @@
+#include "core/gcode/Expression.h"
+
+namespace m350::gcode {
+
+bool isComparison(BinaryOp op) {
+    return op >= BinaryOp::Eq;
+}
+
+} // namespace m350::gcode

@@ -1,0 +1,25 @@
+#pragma once
+
+#include "core/gcode/Dialect.h"
+#include "core/gcode/Token.h"
+
+#include <string_view>
+#include <vector>
+
+namespace m350::gcode {
+
+// Splits one line of program text into tokens. Words may be packed without spaces
+// (`G91G31X-#2Y#3`): a run of letters is one keyword (`GOTO`, `WHILE`, `EQ`) or, when it is a single
+// letter, an address. On FANUC, spaces are insignificant outside comments (`GO TO 290`).
+class Lexer {
+public:
+    explicit Lexer(const Dialect& dialect) : dialect_(dialect) {}
+
+    // The last token is always End.
+    std::vector<Token> tokenize(std::string_view line) const;
+
+private:
+    const Dialect& dialect_;
+};
+
+} // namespace m350::gcode

@@ -1,0 +1,182 @@
+#include "core/gcode/Parser.h"
+
+#include "core/gcode/BlockParser.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <tuple>
+
+namespace m350::gcode {
+
+void Parser::addFile(Program& program, const std::string& path, std::string_view text, FileRole role,
+                     std::string encoding) {
+    auto fileIndex = static_cast<std::uint32_t>(program.files.size());
+    std::string name = std::filesystem::path(path).filename().string();
+    program.files.push_back({path, name.empty() ? path : name, role, std::move(encoding)});
+    BlockParser blockParser(dialect_, program.expressions, diagnostics_, program.files.back().name, fileIndex);
+
+    bool unitOpen = false;
+    std::uint32_t lineNumber = 0;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) {
+            end = text.size();
+        }
+        ++lineNumber;
+        auto block = blockParser.parse(text.substr(start, end - start), lineNumber);
+        start = end + 1;
+        if (!block) {
+            continue;
+        }
+        if (block->programNumber >= 0 || !unitOpen) {
+            if (unitOpen) {
+                closeUnit(program, static_cast<std::uint32_t>(program.units.size() - 1));
+            }
+            ProgramUnit unit;
+            unit.number = block->programNumber;
+            unit.file = fileIndex;
+            unit.begin = static_cast<std::uint32_t>(program.blocks.size());
+            program.units.push_back(std::move(unit));
+            unitOpen = true;
+        }
+        program.blocks.push_back(std::move(*block));
+    }
+    if (unitOpen) {
+        closeUnit(program, static_cast<std::uint32_t>(program.units.size() - 1));
+    }
+}
+
+void Parser::closeUnit(Program& program, std::uint32_t unitIndex) {
+    ProgramUnit& unit = program.units[unitIndex];
+    unit.end = static_cast<std::uint32_t>(program.blocks.size());
+    if (unit.number >= 0) {
+        if (auto existing = program.findUnit(unit.number);
+            existing && program.units[*existing].file == unit.file) {
+            report(program, program.blocks[unit.begin], 1, DiagnosticKind::Flow,
+                   "O" + std::to_string(unit.number) + " is defined twice in this file (first at line " +
+                       std::to_string(program.blocks[program.units[*existing].begin].location.line) + ")");
+        }
+    }
+    for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
+        if (program.blocks[b].label >= 0) {
+            unit.labels[program.blocks[b].label].push_back(b);
+        }
+    }
+    program.indexUnit(unitIndex);
+    pairLoops(program, unit);
+    checkGotos(program, unit);
+}
+
+void Parser::report(const Program& program, const Block& block, std::uint32_t column, DiagnosticKind kind,
+                    std::string message) {
+    diagnostics_.push_back({Severity::Error, kind, program.files[block.location.file].name, block.location.line,
+                            column, std::move(message)});
+}
+
+// WHILE ... DOm and ENDm pair by nesting, as on FANUC: the innermost open DO must carry the same m.
+void Parser::pairLoops(Program& program, const ProgramUnit& unit) {
+    std::vector<std::uint32_t> open;
+    for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
+        Block& block = program.blocks[b];
+        if (block.control == Control::While) {
+            for (std::uint32_t outer : open) {
+                if (program.blocks[outer].loopId == block.loopId) {
+                    report(program, block, block.controlColumn, DiagnosticKind::Flow,
+                           "DO" + std::to_string(block.loopId) + " is already open (line " +
+                               std::to_string(program.blocks[outer].location.line) +
+                               "): nested loops need different numbers");
+                }
+            }
+            open.push_back(b);
+        } else if (block.control == Control::End) {
+            if (open.empty()) {
+                report(program, block, block.controlColumn, DiagnosticKind::Flow,
+                       "END" + std::to_string(block.loopId) + " without WHILE ... DO" + std::to_string(block.loopId));
+                continue;
+            }
+            Block& opener = program.blocks[open.back()];
+            if (opener.loopId != block.loopId) {
+                report(program, block, block.controlColumn, DiagnosticKind::Flow,
+                       "END" + std::to_string(block.loopId) + " closes the loop WHILE ... DO" +
+                           std::to_string(opener.loopId) + " opened at line " +
+                           std::to_string(opener.location.line) + " (expected END" +
+                           std::to_string(opener.loopId) + ")");
+                continue;
+            }
+            opener.partner = static_cast<std::int32_t>(b);
+            block.partner = static_cast<std::int32_t>(open.back());
+            open.pop_back();
+        }
+    }
+    for (std::uint32_t b : open) {
+        const Block& block = program.blocks[b];
+        report(program, block, block.controlColumn, DiagnosticKind::Flow,
+               "WHILE ... DO" + std::to_string(block.loopId) + " has no END" + std::to_string(block.loopId));
+    }
+}
+
+void Parser::checkGotos(const Program& program, const ProgramUnit& unit) {
+    for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
+        const Block& block = program.blocks[b];
+        if ((block.control != Control::Goto && block.control != Control::IfGoto) || block.target == kNoExpr) {
+            continue;
+        }
+        const ExprNode& target = program.expressions[block.target];
+        if (target.kind != ExprKind::Number) {
+            continue;
+        }
+        auto label = static_cast<std::int32_t>(target.number);
+        if (unit.labels.find(label) == unit.labels.end()) {
+            std::string where = unit.number >= 0 ? "O" + std::to_string(unit.number) : std::string("this program");
+            report(program, block, target.column, DiagnosticKind::Flow,
+                   "GOTO" + std::to_string(label) + ": there is no N" + std::to_string(label) + " in " + where);
+        }
+    }
+}
+
+void Parser::finish(const Program& program) {
+    checkCalls(program);
+    // Report in reading order: by file as parsed, then line and column.
+    std::stable_sort(diagnostics_.begin(), diagnostics_.end(), [&program](const Diagnostic& a, const Diagnostic& b) {
+        auto fileOrder = [&program](const std::string& name) {
+            for (std::size_t i = 0; i < program.files.size(); ++i) {
+                if (program.files[i].name == name) {
+                    return i;
+                }
+            }
+            return program.files.size();
+        };
+        auto ka = std::make_tuple(fileOrder(a.file), a.line, a.column);
+        auto kb = std::make_tuple(fileOrder(b.file), b.line, b.column);
+        return ka < kb;
+    });
+}
+
+void Parser::checkCalls(const Program& program) {
+    for (const ProgramUnit& unit : program.units) {
+        if (program.files[unit.file].role != FileRole::Main && program.files[unit.file].role != FileRole::Mdi) {
+            continue;
+        }
+        for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
+            const Block& block = program.blocks[b];
+            bool calls = false;
+            for (const Word& w : block.words) {
+                const ExprNode& v = program.expressions[w.value];
+                calls |= (w.letter == 'M' && v.kind == ExprKind::Number && v.number == 98) ||
+                         (w.letter == 'G' && v.kind == ExprKind::Number && v.number == 65);
+            }
+            for (const Word& w : block.words) {
+                const ExprNode& v = program.expressions[w.value];
+                if (calls && w.letter == 'P' && v.kind == ExprKind::Number &&
+                    !program.findUnit(static_cast<std::int32_t>(v.number))) {
+                    report(program, block, w.column, DiagnosticKind::Flow,
+                           "no O" + std::to_string(static_cast<long long>(v.number)) +
+                               " in this file or the machine's macro libraries");
+                }
+            }
+        }
+    }
+}
+
+} // namespace m350::gcode

@@ -1,0 +1,40 @@
+#pragma once
+
+#include "core/gcode/Dialect.h"
+#include "core/gcode/Diagnostic.h"
+#include "core/gcode/Program.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace m350::gcode {
+
+// Builds a Program from any number of files (the program to run plus the machine's macro
+// libraries). Every file is parsed whole; errors are collected, never thrown, so `check` can list
+// them all.
+class Parser {
+public:
+    explicit Parser(const Dialect& dialect) : dialect_(dialect) {}
+
+    void addFile(Program& program, const std::string& path, std::string_view utf8Text, FileRole role,
+                 std::string encoding = "UTF-8");
+
+    // Checks that need every file: calls to O programs that exist nowhere.
+    void finish(const Program& program);
+
+    const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+private:
+    void closeUnit(Program& program, std::uint32_t unitIndex);
+    void pairLoops(Program& program, const ProgramUnit& unit);
+    void checkGotos(const Program& program, const ProgramUnit& unit);
+    void checkCalls(const Program& program);
+    void report(const Program& program, const Block& block, std::uint32_t column, DiagnosticKind kind,
+                std::string message);
+
+    const Dialect& dialect_;
+    std::vector<Diagnostic> diagnostics_;
+};
+
+} // namespace m350::gcode

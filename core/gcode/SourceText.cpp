@@ -1,0 +1,142 @@
+#include "core/gcode/SourceText.h"
+
+#include <iconv.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <system_error>
+
+namespace m350::gcode {
+namespace {
+
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
+// Offset of the first byte that does not start a well-formed UTF-8 sequence
+// (Unicode table 3-7: rejects overlongs, surrogates and code points > U+10FFFF).
+std::optional<std::size_t> firstInvalidUtf8(std::string_view s) {
+    std::size_t i = 0;
+    while (i < s.size()) {
+        const auto lead = static_cast<unsigned char>(s[i]);
+        if (lead < 0x80) {
+            ++i;
+            continue;
+        }
+        std::size_t len = 0;
+        unsigned char lo = 0x80;
+        unsigned char hi = 0xBF;
+        if (lead >= 0xC2 && lead <= 0xDF) {
+            len = 2;
+        } else if (lead >= 0xE0 && lead <= 0xEF) {
+            len = 3;
+            if (lead == 0xE0) lo = 0xA0;
+            if (lead == 0xED) hi = 0x9F;
+        } else if (lead >= 0xF0 && lead <= 0xF4) {
+            len = 4;
+            if (lead == 0xF0) lo = 0x90;
+            if (lead == 0xF4) hi = 0x8F;
+        } else {
+            return i;
+        }
+        if (s.size() - i < len) return i;
+        for (std::size_t k = 1; k < len; ++k) {
+            const auto c = static_cast<unsigned char>(s[i + k]);
+            if (c < lo || c > hi) return i;
+            lo = 0x80;
+            hi = 0xBF;
+        }
+        i += len;
+    }
+    return std::nullopt;
+}
+
+class Iconv {
+public:
+    Iconv(const char* to, const char* from) : cd_(iconv_open(to, from)) {}
+    ~Iconv() {
+        if (ok()) iconv_close(cd_);
+    }
+    Iconv(const Iconv&) = delete;
+    Iconv& operator=(const Iconv&) = delete;
+
+    bool ok() const { return cd_ != reinterpret_cast<iconv_t>(static_cast<std::intptr_t>(-1)); }
+    iconv_t get() const { return cd_; }
+
+private:
+    iconv_t cd_;
+};
+
+// The decoded UTF-8 text, or the offset of the first byte iconv rejected.
+std::variant<std::string, std::size_t> decodeGbk(const Iconv& cd, std::string_view bytes) {
+    // A GB18030 sequence never grows by more than 1.5x in UTF-8, so 2x never hits E2BIG.
+    std::string out(bytes.size() * 2, '\0');
+    // iconv's input parameter is char** for historical reasons; it does not write through it.
+    char* in = const_cast<char*>(bytes.data());
+    std::size_t inLeft = bytes.size();
+    char* outPtr = out.data();
+    std::size_t outLeft = out.size();
+    if (iconv(cd.get(), &in, &inLeft, &outPtr, &outLeft) == static_cast<std::size_t>(-1)) {
+        return static_cast<std::size_t>(in - bytes.data());
+    }
+    out.resize(out.size() - outLeft);
+    return out;
+}
+
+std::string position(std::string_view bytes, std::size_t offset) {
+    const std::string_view before = bytes.substr(0, offset);
+    const auto line = std::count(before.begin(), before.end(), '\n') + 1;
+    const std::size_t lastNewline = before.rfind('\n');
+    const std::size_t lineStart = lastNewline == std::string_view::npos ? 0 : lastNewline + 1;
+    return "line " + std::to_string(line) + ", column " + std::to_string(offset - lineStart + 1);
+}
+
+std::string errnoMessage(int err) { return std::error_code(err, std::generic_category()).message(); }
+
+struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+}  // namespace
+
+std::string_view encodingName(TextEncoding encoding) {
+    return encoding == TextEncoding::Gbk ? "GBK" : "UTF-8";
+}
+
+std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::string_view bytes) {
+    const std::size_t bomSize = bytes.starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0;
+    const std::string_view body = bytes.substr(bomSize);
+    const auto utf8Bad = firstInvalidUtf8(body);
+    if (!utf8Bad) return SourceText{std::move(path), std::string(body), TextEncoding::Utf8};
+
+    const Iconv cd("UTF-8", "GB18030");
+    if (!cd.ok()) {
+        return SourceReadError{std::move(path),
+                               "file is not valid UTF-8 and GBK decoding is unavailable: " + errnoMessage(errno)};
+    }
+    auto gbk = decodeGbk(cd, body);
+    if (auto* text = std::get_if<std::string>(&gbk)) {
+        return SourceText{std::move(path), std::move(*text), TextEncoding::Gbk};
+    }
+
+    // The encoding that got further is most likely the intended one, so its
+    // failure point is the byte worth showing to the user.
+    const std::size_t bad = bomSize + std::max(*utf8Bad, std::get<std::size_t>(gbk));
+    return SourceReadError{std::move(path), "file is neither valid UTF-8 nor GBK (first bad byte at " +
+                                                position(bytes, bad) + ")"};
+}
+
+std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path) {
+    const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+    if (!file) return SourceReadError{path, "cannot open file: " + errnoMessage(errno)};
+    std::string bytes;
+    char buffer[16384];
+    std::size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) bytes.append(buffer, n);
+    if (std::ferror(file.get())) return SourceReadError{path, "cannot read file: " + errnoMessage(errno)};
+    return decodeSource(path, bytes);
+}
+
+}  // namespace m350::gcode

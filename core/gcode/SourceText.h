@@ -1,0 +1,33 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace m350::gcode {
+
+enum class TextEncoding { Utf8, Gbk };
+
+std::string_view encodingName(TextEncoding encoding);
+
+// A program file as the parser sees it.
+struct SourceText {
+    std::string path;
+    std::string text;  // UTF-8, BOM removed, CRLF kept as is
+    TextEncoding encoding = TextEncoding::Utf8;
+};
+
+struct SourceReadError {
+    std::string path;
+    std::string message;
+};
+
+// Reads the file's bytes and passes them to decodeSource.
+std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path);
+
+// Strips a UTF-8 BOM, accepts strictly valid UTF-8 (pure ASCII included) as
+// Utf8, otherwise decodes as GBK (via GB18030, a superset). If neither fits,
+// the error names the 1-based line and byte column of the first bad byte.
+std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::string_view bytes);
+
+}  // namespace m350::gcode

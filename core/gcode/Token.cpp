@@ -1,0 +1,20 @@
+#include "core/gcode/Token.h"
+
+namespace m350::gcode {
+
+bool isFunctionKeyword(Keyword k) {
+    return k >= Keyword::Abs;
+}
+
+Function functionOf(Keyword k) {
+    return static_cast<Function>(static_cast<int>(k) - static_cast<int>(Keyword::Abs));
+}
+
+const char* keywordSpelling(Keyword k) {
+    static constexpr const char* spellings[] = {
+        "IF", "GOTO", "THEN", "WHILE", "DO", "END", "EQ", "NE", "LT", "GT", "LE", "GE", "AND", "OR", "XOR", "MOD",
+        "ABS", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ROUND", "FIX", "FUP", "LN", "EXP", "BIN", "BCD"};
+    return spellings[static_cast<int>(k)];
+}
+
+} // namespace m350::gcode

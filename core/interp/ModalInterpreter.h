@@ -1,0 +1,59 @@
+#pragma once
+
+#include "core/config/ParameterTable.h"
+#include "core/gcode/Dialect.h"
+#include "core/interp/ModalState.h"
+#include "core/interp/WorkOffsets.h"
+#include "core/machine/MachineInterface.h"
+#include "core/macro/BlockSink.h"
+
+#include <string>
+#include <vector>
+
+namespace m350::interp {
+
+// Turns evaluated blocks into machine commands, keeping the modal state.
+//
+// Order of execution within one block (written once, followed by execute()):
+//   1. F, S, T, H, D words          5. work system (G54-G59)
+//   2. spindle M3/M4/M5/M19, M8/M9  6. non-modal G4, G28, G53, G92
+//   3. plane, units, distance,      7. motion (G0 G1 G2 G3) with the axis words
+//      feed mode, return level      8. M0, M1, M2, M30
+//   4. (reserved: compensation)
+class ModalInterpreter : public macro::BlockSink {
+public:
+    ModalInterpreter(const gcode::Dialect& dialect, config::ParameterTable& parameters, WorkOffsets& offsets,
+                     machine::MachineInterface& machine);
+
+    macro::BlockOutcome execute(const macro::EvaluatedBlock& block) override;
+
+    const ModalState& state() const { return state_; }
+    ModalState& state() { return state_; }
+
+    // The active system's slot in WorkOffsets (1..6 for G54..G59; 0 for the M350's G92 system).
+    int activeSlot() const;
+    // Total offset between machine and work coordinates for each axis, tool Z offset included.
+    machine::Axes workOffset() const;
+    machine::Axes workPosition() const;
+    // The Z offset of the tool in the spindle (M350: params 930-945, virtual tools 973-992).
+    double toolZOffset() const;
+    int currentTool() const;
+
+    // Texts of operator stops (M0, G04 P-1) met in a headless run.
+    std::vector<std::string> takeNotices();
+
+private:
+    struct Words;
+    void applyGCodes(const Words& words);
+    void moveAxes(const Words& words);
+    machine::Axes targetFor(const Words& words, bool machineCoordinates) const;
+
+    const gcode::Dialect& dialect_;
+    config::ParameterTable& parameters_;
+    WorkOffsets& offsets_;
+    machine::MachineInterface& machine_;
+    ModalState state_;
+    std::vector<std::string> notices_;
+};
+
+} // namespace m350::interp

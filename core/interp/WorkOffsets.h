@@ -1,0 +1,28 @@
+#pragma once
+
+#include "core/machine/MachineTypes.h"
+
+#include <array>
+
+namespace m350::interp {
+
+// Coordinate-system offsets, in the slot order both dialects' variables use:
+// 0 = G92 (M350: its own system, #800-#804), 1..6 = G54..G59, 7 = G52 local, 8 = common / EXT.
+class WorkOffsets {
+public:
+    static constexpr int kSlots = 9;
+    static constexpr int kG92 = 0;
+    static constexpr int kG52 = 7;
+    static constexpr int kCommon = 8;
+
+    double get(int slot, int axis) const { return offsets_[static_cast<std::size_t>(slot)](axis); }
+    void set(int slot, int axis, double value) { offsets_[static_cast<std::size_t>(slot)](axis) = value; }
+    const machine::Axes& slot(int s) const { return offsets_[static_cast<std::size_t>(s)]; }
+
+private:
+    std::array<machine::Axes, kSlots> offsets_{machine::Axes::Zero(), machine::Axes::Zero(), machine::Axes::Zero(),
+                                               machine::Axes::Zero(), machine::Axes::Zero(), machine::Axes::Zero(),
+                                               machine::Axes::Zero(), machine::Axes::Zero(), machine::Axes::Zero()};
+};
+
+} // namespace m350::interp

@@ -1,0 +1,185 @@
+#include "core/macro/Evaluator.h"
+
+#include "core/macro/MacroError.h"
+#include "core/macro/MessageText.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace m350::macro {
+
+using gcode::BinaryOp;
+using gcode::ExprKind;
+using gcode::ExprNode;
+using gcode::Function;
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+std::int64_t toInteger(double v) {
+    return static_cast<std::int64_t>(std::llround(v));
+}
+
+std::int64_t bcdToBinary(std::int64_t bcd) {
+    std::int64_t result = 0;
+    std::int64_t scale = 1;
+    for (; bcd > 0; bcd >>= 4, scale *= 10) {
+        result += (bcd & 0xF) * scale;
+    }
+    return result;
+}
+
+std::int64_t binaryToBcd(std::int64_t value) {
+    std::int64_t result = 0;
+    for (int shift = 0; value > 0; value /= 10, shift += 4) {
+        result |= (value % 10) << shift;
+    }
+    return result;
+}
+
+} // namespace
+
+Value Evaluator::evaluate(gcode::ExprId id) {
+    const ExprNode& node = pool_[id];
+    switch (node.kind) {
+    case ExprKind::Number: return Value::of(node.number);
+    case ExprKind::Variable: return readVariable(variableNumber(id), node.column);
+    case ExprKind::Unary: {
+        double v = number(node.lhs);
+        return Value::of(node.op == static_cast<std::uint8_t>(gcode::UnaryOp::Negate) ? -v : v);
+    }
+    case ExprKind::Binary: return binary(node);
+    case ExprKind::Function: return Value::of(function(node));
+    }
+    return Value::of(0);
+}
+
+int Evaluator::variableNumber(gcode::ExprId variableNode) {
+    const ExprNode& node = pool_[variableNode];
+    double n = node.lhs == gcode::kNoExpr ? node.number : number(node.lhs);
+    double rounded = std::round(n);
+    if (std::abs(n - rounded) > 1e-6 || rounded < 0 || rounded > VariableMap::kMaxVariable) {
+        throw MacroError{AlarmCode::UndefinedVariable,
+                         "#[" + std::to_string(n) + "]: variable numbers are whole numbers from 0 to " +
+                             std::to_string(VariableMap::kMaxVariable),
+                         node.column};
+    }
+    return static_cast<int>(rounded);
+}
+
+Value Evaluator::readVariable(int number, std::uint32_t column) {
+    VariableInfo info = store_.map().describe(number);
+    if (info.kind == VariableKind::Undefined) {
+        throw MacroError{AlarmCode::UndefinedVariable,
+                         "#" + std::to_string(number) + " does not exist in the " + std::string(dialect_.name) +
+                             " dialect",
+                         column};
+    }
+    return VariableStore::ownsKind(info.kind) ? store_.read(info, number) : machine_.readSystem(info, number);
+}
+
+void Evaluator::writeVariable(int number, Value value, std::string_view text, std::uint32_t column) {
+    VariableInfo info = store_.map().describe(number);
+    if (info.kind == VariableKind::Undefined) {
+        throw MacroError{AlarmCode::UndefinedVariable,
+                         "#" + std::to_string(number) + " does not exist in the " + std::string(dialect_.name) +
+                             " dialect",
+                         column};
+    }
+    if (info.readOnly) {
+        throw MacroError{AlarmCode::ReadOnlyVariable,
+                         "cannot write " + store_.map().describeText(number) + ": it is read-only", column};
+    }
+    if (VariableStore::ownsKind(info.kind)) {
+        store_.write(info, number, value);
+        return;
+    }
+    std::string formatted;
+    if (info.kind == VariableKind::Message || info.kind == VariableKind::Dialog) {
+        double values[4];
+        for (int i = 0; i < 4; ++i) {
+            values[i] = readVariable(kMessageValueFirst + i, column).asNumber();
+        }
+        formatted = formatMessageText(text, values);
+    } else {
+        formatted = std::string(text);
+    }
+    if (auto refused = machine_.writeSystem(info, number, value.asNumber(), formatted)) {
+        throw MacroError{info.kind == VariableKind::Alarm ? AlarmCode::MacroAlarm : AlarmCode::InvalidArgument,
+                         *refused, column};
+    }
+}
+
+Value Evaluator::binary(const ExprNode& node) {
+    auto op = static_cast<BinaryOp>(node.op);
+    Value lhs = evaluate(node.lhs);
+    Value rhs = evaluate(node.rhs);
+    if (op == BinaryOp::Eq || op == BinaryOp::Ne) {
+        bool equal = (lhs.vacant || rhs.vacant) ? (lhs.vacant && rhs.vacant) : lhs.number == rhs.number;
+        return Value::of((op == BinaryOp::Eq) == equal ? 1.0 : 0.0);
+    }
+    double a = lhs.asNumber();
+    double b = rhs.asNumber();
+    switch (op) {
+    case BinaryOp::Add: return Value::of(a + b);
+    case BinaryOp::Sub: return Value::of(a - b);
+    case BinaryOp::Mul: return Value::of(a * b);
+    case BinaryOp::Div:
+        if (b == 0.0) {
+            throw MacroError{AlarmCode::DivisionByZero, "division by zero", node.column};
+        }
+        return Value::of(a / b);
+    case BinaryOp::Mod: {
+        std::int64_t divisor = toInteger(b);
+        if (divisor == 0) {
+            throw MacroError{AlarmCode::DivisionByZero, "MOD by zero", node.column};
+        }
+        return Value::of(static_cast<double>(toInteger(a) % divisor));
+    }
+    case BinaryOp::And: return Value::of(static_cast<double>(toInteger(a) & toInteger(b)));
+    case BinaryOp::Or: return Value::of(static_cast<double>(toInteger(a) | toInteger(b)));
+    case BinaryOp::Xor: return Value::of(static_cast<double>(toInteger(a) ^ toInteger(b)));
+    case BinaryOp::Lt: return Value::of(a < b ? 1.0 : 0.0);
+    case BinaryOp::Gt: return Value::of(a > b ? 1.0 : 0.0);
+    case BinaryOp::Le: return Value::of(a <= b ? 1.0 : 0.0);
+    case BinaryOp::Ge: return Value::of(a >= b ? 1.0 : 0.0);
+    default: return Value::of(0);
+    }
+}
+
+double Evaluator::function(const ExprNode& node) {
+    auto f = static_cast<Function>(node.op);
+    double x = number(node.lhs);
+    auto domain = [&](bool ok, const char* what) {
+        if (!ok) {
+            throw MacroError{AlarmCode::InvalidArgument, std::string(what) + " of " + std::to_string(x) +
+                                                             " is not defined",
+                             node.column};
+        }
+    };
+    switch (f) {
+    case Function::Abs: return std::abs(x);
+    case Function::Sin: return std::sin(x * kDegree);
+    case Function::Cos: return std::cos(x * kDegree);
+    case Function::Tan: return std::tan(x * kDegree);
+    case Function::Asin: domain(x >= -1 && x <= 1, "ASIN"); return std::asin(x) / kDegree;
+    case Function::Acos: domain(x >= -1 && x <= 1, "ACOS"); return std::acos(x) / kDegree;
+    case Function::Atan: {
+        double angle = std::atan2(x, number(node.rhs)) / kDegree;
+        // FANUC answers 0..360 degrees; the M350 follows atan2's -180..180.
+        return (dialect_.id == gcode::DialectId::Fanuc && angle < 0) ? angle + 360.0 : angle;
+    }
+    case Function::Sqrt: domain(x >= 0, "SQRT"); return std::sqrt(x);
+    case Function::Round: return std::round(x); // half away from zero
+    case Function::Fix: return std::trunc(x);
+    case Function::Fup: return x >= 0 ? std::ceil(x) : std::floor(x);
+    case Function::Ln: domain(x > 0, "LN"); return std::log(x);
+    case Function::Exp: return std::exp(x);
+    case Function::Bin: return static_cast<double>(bcdToBinary(toInteger(x)));
+    case Function::Bcd: return static_cast<double>(binaryToBcd(toInteger(x)));
+    }
+    return 0.0;
+}
+
+} // namespace m350::macro

@@ -1,0 +1,202 @@
+#include "core/macro/Executor.h"
+
+#include <cmath>
+
+namespace m350::macro {
+
+Executor::Executor(const gcode::Program& program, const gcode::Dialect& dialect, VariableStore& store,
+                   MachineAccess& machine, BlockSink& sink, Options options)
+    : program_(program), dialect_(dialect), store_(store), machine_(machine), sink_(sink),
+      options_(std::move(options)), evaluator_(program.expressions, dialect, store, machine) {}
+
+bool Executor::start(std::uint32_t unit) {
+    if (unit >= program_.units.size()) {
+        return false;
+    }
+    while (store_.localDepth() > 1) {
+        store_.popLocals();
+    }
+    frames_.clear();
+    frames_.push_back({unit, program_.units[unit].begin, 1, false, -1});
+    alarm_.reset();
+    hasCurrent_ = false;
+    state_ = State::Running;
+    return true;
+}
+
+std::optional<gcode::SourceLocation> Executor::location() const {
+    if (!hasCurrent_) {
+        return std::nullopt;
+    }
+    return program_.blocks[current_].location;
+}
+
+void Executor::raise(AlarmCode code, std::string message) {
+    Alarm alarm;
+    alarm.code = code;
+    alarm.message = std::move(message);
+    if (hasCurrent_) {
+        const gcode::Block& block = program_.blocks[current_];
+        alarm.file = program_.fileName(block.location);
+        alarm.line = block.location.line;
+        alarm.column = block.location.column;
+    }
+    alarm_ = std::move(alarm);
+    state_ = State::Alarmed;
+}
+
+Executor::State Executor::step() {
+    if (state_ != State::Running) {
+        return state_;
+    }
+    if (frames_.empty()) {
+        state_ = State::Finished;
+        return state_;
+    }
+    std::size_t frameIndex = frames_.size() - 1;
+    Frame& frame = frames_[frameIndex];
+    if (frame.pc >= program_.units[frame.unit].end) {
+        returnFromFrame(std::nullopt, 0); // the end of an O program returns as M99 does
+        return state_;
+    }
+    current_ = frame.pc;
+    hasCurrent_ = true;
+    const gcode::Block& block = program_.blocks[current_];
+    ++blocksExecuted_;
+    try {
+        executeBlock(block, frameIndex);
+    } catch (const MacroError& error) {
+        raise(error.code, error.message);
+        if (error.column != 0) {
+            alarm_->column = error.column;
+        }
+    }
+    return state_;
+}
+
+void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
+    using gcode::Control;
+    Frame& frame = frames_[frameIndex];
+    if ((block.blockDelete && options_.blockDelete) || block.programNumber >= 0) {
+        ++frame.pc;
+        return;
+    }
+    switch (block.control) {
+    case Control::None: executeOrdinary(block, frameIndex); return;
+    case Control::Goto:
+        jumpToLabel(frameIndex, evaluator_.number(block.target), program_.expressions[block.target].column);
+        return;
+    case Control::IfGoto:
+        if (evaluator_.condition(block.condition)) {
+            jumpToLabel(frameIndex, evaluator_.number(block.target), program_.expressions[block.target].column);
+        } else {
+            ++frame.pc;
+        }
+        return;
+    case Control::IfThen:
+        if (evaluator_.condition(block.condition)) {
+            const gcode::Assignment& a = block.assignments.front();
+            int number = evaluator_.variableNumber(a.index);
+            evaluator_.writeVariable(number, evaluator_.evaluate(a.value), a.text, a.column);
+        }
+        ++frames_[frameIndex].pc;
+        return;
+    case Control::While:
+        if (block.partner < 0) {
+            throw MacroError{AlarmCode::WhileWithoutEnd,
+                             "WHILE ... DO" + std::to_string(block.loopId) + " has no matching END" +
+                                 std::to_string(block.loopId),
+                             block.controlColumn};
+        }
+        if (evaluator_.condition(block.condition)) {
+            ++frame.pc;
+        } else {
+            frame.pc = static_cast<std::uint32_t>(block.partner) + 1;
+        }
+        return;
+    case Control::End:
+        if (block.partner < 0) {
+            throw MacroError{AlarmCode::EndWithoutDo,
+                             "END" + std::to_string(block.loopId) + " without a matching WHILE ... DO" +
+                                 std::to_string(block.loopId),
+                             block.controlColumn};
+        }
+        frame.pc = static_cast<std::uint32_t>(block.partner);
+        return;
+    }
+}
+
+void Executor::jumpToLabel(std::size_t frameIndex, double label, std::uint32_t column) {
+    Frame& frame = frames_[frameIndex];
+    const gcode::ProgramUnit& unit = program_.units[frame.unit];
+    auto n = static_cast<std::int32_t>(std::lround(label));
+    if (auto target = program_.findLabel(frame.unit, n, frame.pc)) {
+        frame.pc = *target;
+        return;
+    }
+    std::string where = unit.number >= 0 ? "O" + std::to_string(unit.number) : std::string("this program");
+    throw MacroError{AlarmCode::GotoMissingLabel,
+                     "GOTO" + std::to_string(n) + ": there is no N" + std::to_string(n) + " in " + where, column};
+}
+
+void Executor::returnFromFrame(std::optional<double> label, std::uint32_t column) {
+    Frame& frame = frames_.back();
+    if (frame.repeatsLeft > 1) {
+        --frame.repeatsLeft;
+        frame.pc = program_.units[frame.unit].begin;
+        return;
+    }
+    if (frame.ownsLocals) {
+        store_.popLocals();
+    }
+    frames_.pop_back();
+    if (frames_.empty()) {
+        state_ = State::Finished;
+        return;
+    }
+    if (label) {
+        // M99 P<n>: back to label n of the caller instead of the block after the call
+        jumpToLabel(frames_.size() - 1, *label, column);
+    }
+}
+
+bool Executor::handlingCode(std::int32_t code) const {
+    for (const Frame& f : frames_) {
+        if (f.handledCode == code) {
+            return true;
+        }
+    }
+    return false;
+}
+
+std::uint32_t Executor::programUnit(double number, const char* how, std::uint32_t column) const {
+    auto n = static_cast<std::int32_t>(std::lround(number));
+    if (auto unit = program_.findUnit(n)) {
+        return *unit;
+    }
+    throw MacroError{AlarmCode::UnknownProgram,
+                     std::string(how) + ": there is no O" + std::to_string(n) +
+                         " in this file or the machine's macro libraries",
+                     column};
+}
+
+void Executor::pushCall(const Call& call, std::uint32_t column) {
+    if (frames_.size() > static_cast<std::size_t>(dialect_.maxCallDepth)) {
+        throw MacroError{AlarmCode::CallNestingTooDeep,
+                         "call nesting too deep: more than " + std::to_string(dialect_.maxCallDepth) +
+                             " levels (does a program call itself?)",
+                         column};
+    }
+    if (call.repeats <= 0) {
+        return;
+    }
+    if (call.opensLocals) {
+        store_.pushLocals();
+        for (auto [variable, value] : call.arguments) {
+            store_.write(store_.map().describe(variable), variable, Value::of(value));
+        }
+    }
+    frames_.push_back({call.unit, program_.units[call.unit].begin, call.repeats, call.opensLocals, call.handledCode});
+}
+
+} // namespace m350::macro

@@ -1,0 +1,88 @@
+#pragma once
+
+#include "core/common/Alarm.h"
+#include "core/gcode/Dialect.h"
+#include "core/gcode/Program.h"
+#include "core/macro/BlockSink.h"
+#include "core/macro/Evaluator.h"
+#include "core/macro/MachineAccess.h"
+#include "core/macro/VariableStore.h"
+
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace m350::macro {
+
+// Executes a parsed Program one block at a time: assignments, IF/GOTO/WHILE, calls and returns.
+// Ordinary words go to the BlockSink (the modal interpreter). A run-time error becomes an Alarm
+// that names file, line and column; the variables stay as they were for inspection.
+class Executor {
+public:
+    struct Options {
+        // Codes the machine maps to programs beyond the dialect's own rules, e.g. {'M', 6} -> 9001.
+        std::map<std::pair<char, int>, int> codePrograms;
+        bool blockDelete = false; // optional block skip switch: skip '/' blocks when on
+    };
+
+    enum class State { Idle, Running, Finished, Alarmed };
+
+    Executor(const gcode::Program& program, const gcode::Dialect& dialect, VariableStore& store,
+             MachineAccess& machine, BlockSink& sink, Options options);
+
+    // Starts the unit (the main program, or an MDI line set); false when there is none.
+    bool start(std::uint32_t unit);
+    State step();
+
+    State state() const { return state_; }
+    const std::optional<Alarm>& alarm() const { return alarm_; }
+    // The block being executed (or last executed).
+    std::optional<gcode::SourceLocation> location() const;
+    std::size_t callDepth() const { return frames_.size(); }
+    std::uint64_t blocksExecuted() const { return blocksExecuted_; }
+
+    // Stops at once with an alarm raised from outside (sim-time limit, E-stop, a device).
+    void raise(AlarmCode code, std::string message);
+
+private:
+    struct Frame {
+        std::uint32_t unit = 0;
+        std::uint32_t pc = 0;
+        std::int64_t repeatsLeft = 1;
+        bool ownsLocals = false;
+        std::int32_t handledCode = -1; // 'T', 'M' or 'G' code this frame handles, to avoid recursion
+    };
+    struct Call {
+        std::uint32_t unit = 0;
+        std::int64_t repeats = 1;
+        bool opensLocals = true;
+        std::int32_t handledCode = -1;
+        std::vector<std::pair<int, double>> arguments; // local number, value
+    };
+
+    void executeBlock(const gcode::Block& block, std::size_t frameIndex);
+    void executeOrdinary(const gcode::Block& block, std::size_t frameIndex);
+    void jumpToLabel(std::size_t frameIndex, double label, std::uint32_t column);
+    void returnFromFrame(std::optional<double> label, std::uint32_t column);
+    void pushCall(const Call& call, std::uint32_t column);
+    bool handlingCode(std::int32_t code) const;
+    std::uint32_t programUnit(double number, const char* how, std::uint32_t column) const;
+
+    const gcode::Program& program_;
+    const gcode::Dialect& dialect_;
+    VariableStore& store_;
+    MachineAccess& machine_;
+    BlockSink& sink_;
+    Options options_;
+    Evaluator evaluator_;
+
+    std::vector<Frame> frames_;
+    State state_ = State::Idle;
+    std::optional<Alarm> alarm_;
+    std::uint32_t current_ = 0;
+    bool hasCurrent_ = false;
+    std::uint64_t blocksExecuted_ = 0;
+};
+
+} // namespace m350::macro

@@ -1,0 +1,173 @@
+// The part of the Executor that runs ordinary blocks: assignments, then the block's words, of which
+// calls (M98, G65, M99, T, and codes that have handler programs) are taken out first.
+#include "core/macro/Executor.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace m350::macro {
+
+namespace {
+
+constexpr std::int32_t codeKey(char letter, int number) {
+    return (static_cast<std::int32_t>(letter) << 16) | (number & 0xFFFF);
+}
+
+bool isCode(const WordValue& w, char letter, int number) {
+    return w.letter == letter && std::abs(w.value - number) < 1e-9;
+}
+
+bool wholeNumber(double v) {
+    return std::abs(v - std::round(v)) < 1e-9 && v >= 0 && v < 65536;
+}
+
+} // namespace
+
+void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex) {
+    for (const gcode::Assignment& a : block.assignments) {
+        int number = evaluator_.variableNumber(a.index);
+        evaluator_.writeVariable(number, evaluator_.evaluate(a.value), a.text, a.column);
+    }
+    if (block.words.empty()) {
+        ++frames_[frameIndex].pc;
+        return;
+    }
+    EvaluatedBlock evaluated{&block, {}};
+    evaluated.words.reserve(block.words.size());
+    for (const gcode::Word& w : block.words) {
+        Value v = evaluator_.evaluate(w.value);
+        if (!v.vacant) { // FANUC: an address whose value is vacant is as if not written
+            evaluated.words.push_back({w.letter, v.number, w.column});
+        }
+    }
+    auto& words = evaluated.words;
+    auto take = [&words](auto predicate) -> std::optional<WordValue> {
+        auto it = std::find_if(words.begin(), words.end(), predicate);
+        if (it == words.end()) {
+            return std::nullopt;
+        }
+        WordValue w = *it;
+        words.erase(it);
+        return w;
+    };
+    auto takeLetter = [&take](char letter) { return take([letter](const WordValue& w) { return w.letter == letter; }); };
+    auto takeArguments = [&words](const std::array<std::int8_t, 26>& map, std::vector<std::pair<int, double>>& out) {
+        std::vector<WordValue> kept;
+        for (const WordValue& w : words) {
+            int variable = map[static_cast<std::size_t>(w.letter - 'A')];
+            if (variable >= 0 && w.letter != 'G' && w.letter != 'M' && w.letter != 'T' && w.letter != 'N') {
+                out.emplace_back(variable, w.value);
+            } else {
+                kept.push_back(w);
+            }
+        }
+        words = std::move(kept);
+    };
+    auto needP = [&](const WordValue& code, const char* name) {
+        auto p = takeLetter('P');
+        if (!p) {
+            throw MacroError{AlarmCode::MissingAddress, std::string(name) + " needs P<program number>", code.column};
+        }
+        return *p;
+    };
+
+    std::vector<Call> calls;
+    std::optional<WordValue> m99;
+    std::optional<WordValue> m99Label;
+    std::uint32_t callColumn = block.location.column;
+
+    if (auto g65 = take([](const WordValue& w) { return isCode(w, 'G', 65); })) {
+        WordValue p = needP(*g65, "G65");
+        auto l = takeLetter('L');
+        Call call{programUnit(p.value, "G65", p.column), l ? std::llround(l->value) : 1, true, -1, {}};
+        takeArguments(dialect_.callArguments, call.arguments);
+        calls.push_back(std::move(call));
+        callColumn = g65->column;
+    }
+    if (auto m98 = take([](const WordValue& w) { return isCode(w, 'M', 98); })) {
+        WordValue p = needP(*m98, "M98");
+        auto l = takeLetter('L');
+        Call call{programUnit(p.value, "M98", p.column), l ? std::llround(l->value) : 1,
+                  dialect_.m98OpensLocalLevel, -1, {}};
+        if (dialect_.m98OpensLocalLevel) {
+            takeArguments(dialect_.callArguments, call.arguments);
+        }
+        calls.push_back(std::move(call));
+        callColumn = m98->column;
+    }
+    if ((m99 = take([](const WordValue& w) { return isCode(w, 'M', 99); }))) {
+        m99Label = takeLetter('P');
+    }
+    if (dialect_.tCodeProgram >= 0 && !handlingCode(codeKey('T', 0))) {
+        if (auto unit = program_.findUnit(dialect_.tCodeProgram)) {
+            if (auto t = takeLetter('T')) {
+                // `T5` runs O20000 as `M98 P20000 X5` does; #1504 holds the target tool
+                evaluator_.writeVariable(1504, Value::of(t->value), {}, t->column);
+                Call call{*unit, 1, true, codeKey('T', 0), {}};
+                if (auto x = dialect_.callArgument('X')) {
+                    call.arguments.emplace_back(*x, t->value);
+                }
+                calls.push_back(std::move(call));
+                callColumn = t->column;
+            }
+        }
+    }
+    for (std::size_t i = 0; i < words.size();) {
+        const WordValue w = words[i];
+        bool isM = w.letter == 'M';
+        if ((!isM && w.letter != 'G') || !wholeNumber(w.value)) {
+            ++i;
+            continue;
+        }
+        int n = static_cast<int>(std::lround(w.value));
+        std::int32_t key = codeKey(w.letter, n);
+        std::optional<std::uint32_t> unit;
+        bool mapped = false;
+        if (auto it = options_.codePrograms.find({w.letter, n}); it != options_.codePrograms.end()) {
+            unit = programUnit(it->second, isM ? "M code program" : "G code program", w.column);
+            mapped = true;
+        } else if (isM && dialect_.mHandlerBase >= 0) {
+            unit = program_.findHandler(dialect_.mHandlerBase + n, gcode::FileRole::MLibrary);
+        } else if (!isM && dialect_.gHandlerBase >= 0) {
+            unit = program_.findHandler(dialect_.gHandlerBase + n, gcode::FileRole::GLibrary);
+        }
+        if (!unit || handlingCode(key)) {
+            ++i;
+            continue;
+        }
+        words.erase(words.begin() + static_cast<std::ptrdiff_t>(i));
+        // A code mapped by the machine (M6 -> O9001) is a subprogram call; a handler gets arguments.
+        Call call{*unit, 1, mapped ? dialect_.m98OpensLocalLevel : true, key, {}};
+        if (!mapped) {
+            takeArguments(isM ? dialect_.callArguments : dialect_.handlerArguments, call.arguments);
+        }
+        calls.push_back(std::move(call));
+        callColumn = w.column;
+    }
+
+    if (!words.empty()) {
+        BlockOutcome outcome = sink_.execute(evaluated);
+        if (outcome.error) {
+            throw *outcome.error;
+        }
+        if (outcome.endProgram) {
+            while (store_.localDepth() > 1) {
+                store_.popLocals();
+            }
+            frames_.clear();
+            state_ = State::Finished;
+            return;
+        }
+    }
+    ++frames_[frameIndex].pc;
+    if (m99) {
+        returnFromFrame(m99Label ? std::optional<double>(m99Label->value) : std::nullopt,
+                        m99Label ? m99Label->column : m99->column);
+        return;
+    }
+    for (auto it = calls.rbegin(); it != calls.rend(); ++it) {
+        pushCall(*it, callColumn);
+    }
+}
+
+} // namespace m350::macro

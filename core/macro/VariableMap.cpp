@@ -1,0 +1,127 @@
+#include "core/macro/VariableMap.h"
+
+namespace m350::macro {
+
+namespace {
+
+// Work-offset slots shared by both dialects' numbering.
+constexpr int kSlotG92 = 0;  // M350 #800-#804 (FANUC: none)
+constexpr int kSlotCommon = 8; // M350 #840-#844, FANUC EXT #5201-#5205
+
+} // namespace
+
+VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable + 1, 0) {
+    using K = VariableKind;
+    auto add = [this](int first, int last, K kind, bool readOnly = false, int indexBase = 0) {
+        ranges_.push_back({first, last, kind, readOnly, indexBase});
+        for (int n = first; n <= last; ++n) {
+            lookup_[static_cast<std::size_t>(n)] = static_cast<std::uint16_t>(ranges_.size());
+        }
+    };
+    // Later entries override earlier ones where they overlap.
+    if (dialect.id == gcode::DialectId::M350) {
+        add(0, 49, K::Local);
+        add(50, 499, K::Common);
+        add(500, 1499, K::Parameter, false, 0); // parameter N is #(N+500)
+        for (int slot = 0; slot <= kSlotCommon; ++slot) {
+            add(800 + slot * 5, 804 + slot * 5, K::WorkOffset, false, slot * 8);
+        }
+        for (int slot = 1; slot <= 6; ++slot) {
+            add(850 + (slot - 1) * 5, 854 + (slot - 1) * 5, K::WorkPosition, true, slot * 8);
+        }
+        add(880, 884, K::MachinePosition, true);
+        add(885, 889, K::WorkPosition, true, kSlotG92 * 8);
+        add(1500, 2999, K::System);
+        add(1503, 1503, K::Message);
+        add(1505, 1505, K::Dialog);
+        add(1515, 1519, K::Homed, false, 0);
+        add(1520, 1543, K::Input, true, 1);
+        add(1552, 1572, K::Output, false, 1);
+        add(1920, 1929, K::ProbeResult, true, 0);
+    } else {
+        add(0, 0, K::Null, true);
+        add(1, 33, K::Local);
+        add(100, 199, K::Common);
+        add(500, 999, K::Retained);
+        add(1000, 1015, K::PmcSignal, true, 0);
+        add(1100, 1115, K::System);
+        add(2001, 2400, K::System); // tool offset memory
+        add(3000, 3000, K::Alarm);
+        add(3001, 3002, K::System);
+        add(3006, 3006, K::StopMessage);
+        add(3011, 3012, K::System);
+        add(3901, 3902, K::System);
+        add(4001, 4022, K::ModalGroup, true, 1);
+        add(4102, 4130, K::ModalWord, true, 102);
+        add(5001, 5005, K::BlockEnd, true);
+        add(5021, 5025, K::MachinePosition, true);
+        add(5041, 5045, K::WorkPosition, true, -1); // -1: the active system
+        add(5061, 5065, K::SkipPosition, true);
+        add(5201, 5205, K::WorkOffset, false, kSlotCommon * 8);
+        for (int slot = 1; slot <= 6; ++slot) {
+            add(5201 + slot * 20, 5205 + slot * 20, K::WorkOffset, false, slot * 8);
+        }
+    }
+}
+
+VariableInfo VariableMap::describe(int number) const {
+    if (number < 0 || number > kMaxVariable) {
+        return {};
+    }
+    std::uint16_t r = lookup_[static_cast<std::size_t>(number)];
+    if (r == 0) {
+        return {};
+    }
+    const Range& range = ranges_[r - 1u];
+    int index = range.indexBase;
+    if (range.kind == VariableKind::WorkPosition && range.indexBase < 0) {
+        index = -8 + (number - range.first); // active system, axis
+    } else {
+        index += number - range.first;
+    }
+    return {range.kind, range.readOnly, index};
+}
+
+std::string_view kindName(VariableKind kind) {
+    switch (kind) {
+    case VariableKind::Undefined: return "undefined";
+    case VariableKind::Null: return "null (#0, always vacant)";
+    case VariableKind::Local: return "local";
+    case VariableKind::Common: return "common";
+    case VariableKind::Retained: return "retained common";
+    case VariableKind::Parameter: return "parameter";
+    case VariableKind::WorkOffset: return "work offset";
+    case VariableKind::MachinePosition: return "machine position";
+    case VariableKind::WorkPosition: return "work position";
+    case VariableKind::BlockEnd: return "block end position";
+    case VariableKind::SkipPosition: return "skip position";
+    case VariableKind::ProbeResult: return "G31 result";
+    case VariableKind::ActiveWorkSystem: return "active work system";
+    case VariableKind::Message: return "status-line message";
+    case VariableKind::Dialog: return "operator dialog";
+    case VariableKind::Input: return "input";
+    case VariableKind::Output: return "output";
+    case VariableKind::Homed: return "homed flag";
+    case VariableKind::PmcSignal: return "PMC interface signal";
+    case VariableKind::Alarm: return "alarm";
+    case VariableKind::StopMessage: return "stop with message";
+    case VariableKind::ModalGroup: return "modal group";
+    case VariableKind::ModalWord: return "modal word";
+    case VariableKind::System: return "system";
+    }
+    return "undefined";
+}
+
+std::string VariableMap::describeText(int number) const {
+    VariableInfo info = describe(number);
+    std::string text = "#" + std::to_string(number) + " (" + std::string(kindName(info.kind));
+    switch (info.kind) {
+    case VariableKind::Parameter: text += " " + std::to_string(info.index); break;
+    case VariableKind::Input: text += " IN" + std::string(info.index < 10 ? "0" : "") + std::to_string(info.index); break;
+    case VariableKind::Output: text += " OUT" + std::string(info.index < 10 ? "0" : "") + std::to_string(info.index); break;
+    default: break;
+    }
+    return text + ")";
+}
+
+} // namespace m350::macro

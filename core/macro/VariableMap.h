@@ -1,0 +1,70 @@
+#pragma once
+
+#include "core/gcode/Dialect.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace m350::macro {
+
+// What a variable number is, in one dialect. The catalogue of every range either dialect defines;
+// the executor dispatches on the kind, the UI and the CLI describe variables from it.
+enum class VariableKind : std::uint8_t {
+    Undefined,       // no such variable: reading or writing it is an alarm
+    Null,            // FANUC #0: always vacant, read-only
+    Local,           // per call level
+    Common,          // FANUC #100-#199 (cleared at reset), M350 #50-#499 user/system area 1
+    Retained,        // FANUC #500-#999, kept in the machine folder
+    Parameter,       // M350 #500-#1499: parameter (n - 500)
+    WorkOffset,      // M350 #800-#844, FANUC #5221..: coordinate system offsets
+    MachinePosition, // M350 #880-#884, FANUC #5021-#5025 (waits for motion)
+    WorkPosition,    // M350 #850-#879, FANUC #5041-#5045 (waits for motion)
+    BlockEnd,        // FANUC #5001-#5005: end point of the last block, in work coordinates
+    SkipPosition,    // FANUC #5061-#5065
+    ProbeResult,     // M350 #1920-#1929 (G31 result and trigger position)
+    ActiveWorkSystem,// M350 #578 (0 = G92, 1..6 = G54..G59)
+    Message,         // M350 #1503 status-line message
+    Dialog,          // M350 #1505 operator dialog
+    Input,           // M350 #1520+k-1 = INk (read-only)
+    Output,          // M350 #1552+k-1 = OUTk
+    Homed,           // M350 #1515-#1519
+    PmcSignal,       // FANUC #1000-#1002 (umbrella magazine interface, read-only)
+    Alarm,           // FANUC #3000: writing raises an alarm with the comment as message
+    StopMessage,     // FANUC #3006: stop with a message
+    ModalGroup,      // FANUC #4001-#4022
+    ModalWord,       // FANUC #4107-#4120 (D E F H M N O S T ...)
+    System           // other system values, kept as plain storage
+};
+
+struct VariableInfo {
+    VariableKind kind = VariableKind::Undefined;
+    bool readOnly = false;
+    int index = 0; // parameter number, port, axis, group ... depending on kind
+};
+
+class VariableMap {
+public:
+    explicit VariableMap(const gcode::Dialect& dialect);
+
+    static constexpr int kMaxVariable = 9999;
+
+    VariableInfo describe(int number) const;
+    std::string describeText(int number) const;
+
+private:
+    struct Range {
+        int first;
+        int last;
+        VariableKind kind;
+        bool readOnly;
+        int indexBase; // index = number - first + indexBase
+    };
+    std::vector<Range> ranges_;
+    std::vector<std::uint16_t> lookup_; // variable number -> range index + 1 (0 = undefined)
+};
+
+std::string_view kindName(VariableKind kind);
+
+} // namespace m350::macro
