@@ -107,6 +107,9 @@ void BlockParser::parseStatement(Block& block) {
         if (t.kind == TokenKind::Invalid) {
             fail(t, t.text);
         }
+        if (!t.problem.empty()) {
+            fail(t, t.problem);
+        }
         if (t.kind == TokenKind::Comment && block.comment.empty()) {
             block.comment = t.text;
         }

@@ -23,6 +23,7 @@ Dialect makeM350() {
     d.semicolonComments = true;
     d.cStyleComparisons = true;
     d.unbracketedConditions = true;
+    d.upperCaseKeywords = true;
     d.atanComma = true;
     d.maxLoopId = 16; // the factory macros use DO1..DO16
     d.hasVacant = false;

@@ -30,6 +30,7 @@ struct Dialect {
     bool cStyleComparisons = false;    // == != < > <= >=
     bool bitwiseKeywords = false;      // AND OR XOR MOD
     bool unbracketedConditions = false; // M350: `IF#1300 != 0 GOTO56`, `WHILE#13>0DO13`
+    bool upperCaseKeywords = false;    // M350: `while` is not WHILE
     bool atanComma = false;            // ATAN[y,x]
     bool atanSlash = false;            // ATAN[a]/[b]
     bool extendedFunctions = false;    // ASIN ACOS LN EXP BIN BCD

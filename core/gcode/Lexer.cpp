@@ -129,9 +129,14 @@ std::vector<Token> Lexer::tokenize(std::string_view line) const {
             if (word.size() == 1) {
                 emit(TokenKind::Letter, column, offset).letter = word[0];
             } else if (auto k = keywordFor(word)) {
+                std::string written(c.from(offset));
                 Token& t = emit(TokenKind::Keyword, column, offset);
                 t.keyword = *k;
-                t.text = std::string(c.from(offset));
+                if (dialect_.upperCaseKeywords && written != word) {
+                    t.problem = "keywords are upper case in the " + std::string(dialect_.name) + " dialect: write " +
+                                word + ", not " + written;
+                }
+                t.text = std::move(written);
             } else {
                 emit(TokenKind::Invalid, column, offset).text = "unknown word '" + std::string(c.from(offset)) + "'";
             }

@@ -28,6 +28,7 @@ struct Token {
     Keyword keyword = Keyword::If;
     BinaryOp compare = BinaryOp::Eq;
     std::string text; // comment text, or the characters of an Invalid token / unknown word
+    std::string problem; // a valid token written in a way the dialect refuses (`while` on the M350)
 };
 
 bool isFunctionKeyword(Keyword k);

@@ -290,7 +290,12 @@ void ModalInterpreter::moveAxes(const Words& words) {
         return;
     }
     if (words.hasG(53)) {
-        machine_.rapid(targetFor(words, true));
+        // One-shot machine coordinates; with F (the M350's `G53 Z#1306 F#1312`) a feed move
+        if (words['F']) {
+            machine_.feed(targetFor(words, true), state_.feed);
+        } else {
+            machine_.rapid(targetFor(words, true));
+        }
         return;
     }
     if (words.hasG(28)) {
