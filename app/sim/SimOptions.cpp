@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <charconv>
+#include <cmath>
 #include <iostream>
 #include <stdexcept>
 
@@ -21,7 +22,7 @@ double parseNumber(const std::string& text, const std::string& what) {
 
 int parseWhole(const std::string& text, const std::string& what) {
     double v = parseNumber(text, what);
-    if (v != static_cast<int>(v)) {
+    if (!(v >= -1e9 && v <= 1e9) || v != std::trunc(v)) {
         throw CLI::ValidationError(what, "'" + text + "' is not a whole number");
     }
     return static_cast<int>(v);

@@ -1,4 +1,5 @@
 #include "core/config/MachineConfig.h"
+#include "core/common/Numeric.h"
 
 #include <toml++/toml.h>
 
@@ -88,7 +89,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                 fail(file, "[codes] key '" + std::string(k) + "' must be an M or G code such as M6");
             }
             int code = numberKey(file, k.substr(1), 0, 9999, "code");
-            config.codePrograms[{k[0], code}] = static_cast<int>(numberValue(file, value, k));
+            config.codePrograms[{k[0], code}] = roundToInt(numberValue(file, value, k));
         }
     }
     if (auto links = t["io_links"].as_array()) {

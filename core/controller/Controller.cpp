@@ -1,4 +1,5 @@
 #include "core/controller/Controller.h"
+#include "core/common/Numeric.h"
 
 #include "core/config/ParameterNumbers.h"
 #include "core/gcode/Parser.h"
@@ -187,7 +188,7 @@ RunReport Controller::run() {
 }
 
 int Controller::spindleTool() const {
-    return config_.dialect->id == gcode::DialectId::M350 ? static_cast<int>(config_.parameters.get(param::kCurrentTool))
+    return config_.dialect->id == gcode::DialectId::M350 ? saturatingInt(config_.parameters.get(param::kCurrentTool))
                                                          : fanucSpindleTool_;
 }
 
@@ -196,7 +197,7 @@ void Controller::report(RunReport& out) const {
     out.work = interp_.workPosition();
     out.tool = spindleTool();
     int capacity = config_.dialect->id == gcode::DialectId::M350
-                       ? static_cast<int>(config_.parameters.get(param::kMagazineCapacity))
+                       ? saturatingInt(config_.parameters.get(param::kMagazineCapacity))
                        : config_.magazineCapacity;
     // Fixed pockets: every tool has its own pocket, empty while that tool is in the spindle.
     for (int pocket = 1; pocket <= capacity; ++pocket) {

@@ -1,6 +1,7 @@
 // The variables that belong to the machine: what macros read and write through #-numbers
 // beyond their own storage.
 #include "core/controller/Controller.h"
+#include "core/common/Numeric.h"
 
 #include "core/config/ParameterNumbers.h"
 
@@ -85,7 +86,7 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
         dialogAnswer_ = 1;
         return std::nullopt;
     case VariableKind::Alarm: {
-        auto n = static_cast<long long>(std::lround(value));
+        auto n = static_cast<long long>(roundToInt(value));
         return "macro alarm " + std::to_string(3000 + n) + (text.empty() ? "" : ": " + std::string(text));
     }
     case VariableKind::StopMessage:

@@ -1,4 +1,5 @@
 #include "core/gcode/BlockParser.h"
+#include "core/common/Numeric.h"
 
 #include "core/gcode/Lexer.h"
 
@@ -16,6 +17,7 @@ std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lin
     lineNumber_ = lineNumber;
     tokens_ = Lexer(dialect_).tokenize(line);
     pos_ = 0;
+    depth_ = 0;
     Block block;
     block.location = {fileIndex_, lineNumber, tokens_.front().column};
     try {
@@ -50,7 +52,7 @@ std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
                               : i == first;
         if (marker && tokens_[i + 1].kind == TokenKind::Number) {
             block.control = isWhile ? Control::While : Control::End;
-            block.loopId = static_cast<std::int32_t>(tokens_[i + 1].number);
+            block.loopId = saturatingInt(tokens_[i + 1].number);
             block.controlColumn = tokens_[first].column;
             block.words.clear();
             block.assignments.clear();
@@ -137,7 +139,7 @@ void BlockParser::parseStatement(Block& block) {
         if (peek().kind != TokenKind::Number || peek().number != std::floor(peek().number)) {
             fail(o, "O must be followed by a whole program number, e.g. O20000");
         }
-        block.programNumber = static_cast<std::int32_t>(next().number);
+        block.programNumber = saturatingInt(next().number);
         skipComments();
         if (peek().kind != TokenKind::End) {
             fail(peek(), "unexpected " + describe(peek()) + " after the program number O" +
@@ -151,7 +153,7 @@ void BlockParser::parseStatement(Block& block) {
         if (n.number != std::floor(n.number)) {
             fail(n, "a sequence number must be a whole number");
         }
-        block.label = static_cast<std::int32_t>(n.number);
+        block.label = saturatingInt(n.number);
     }
     skipComments();
     if (peek().kind == TokenKind::Keyword) {
@@ -279,7 +281,7 @@ int BlockParser::parseLoopId(const char* keyword) {
                     ", found " + describe(t));
     }
     next();
-    int id = static_cast<int>(t.number);
+    int id = saturatingInt(t.number);
     if (id < 1 || id > dialect_.maxLoopId) {
         fail(t, std::string(keyword) + std::to_string(id) + ": loop numbers run from 1 to " +
                     std::to_string(dialect_.maxLoopId) + " in the " + std::string(dialect_.name) + " dialect");
@@ -486,7 +488,17 @@ ExprId BlockParser::parseTerm() {
     return lhs;
 }
 
+// Deeper nesting than any real program uses would exhaust the stack; refuse it as an error.
+BlockParser::Nesting BlockParser::enterNesting(const Token& at) {
+    constexpr int kMaxNesting = 64;
+    if (++depth_ > kMaxNesting) {
+        fail(at, "expression nested more than " + std::to_string(kMaxNesting) + " levels deep");
+    }
+    return Nesting{depth_};
+}
+
 ExprId BlockParser::parseUnary() {
+    Nesting nesting = enterNesting(peek());
     if (peek().kind == TokenKind::Minus || peek().kind == TokenKind::Plus) {
         const Token& sign = next();
         ExprId operand = parseUnary();
@@ -545,6 +557,7 @@ ExprId BlockParser::parseBracketed() {
 }
 
 ExprId BlockParser::parseVariable() {
+    Nesting nesting = enterNesting(peek());
     const Token& hash = next();
     ExprNode n;
     n.kind = ExprKind::Variable;

@@ -57,6 +57,11 @@ private:
     ExprId parseFunction();
     ExprId parseBracketed();
     ExprId binary(BinaryOp op, ExprId lhs, ExprId rhs, std::uint32_t column);
+    struct Nesting {
+        int& depth;
+        ~Nesting() { --depth; }
+    };
+    [[nodiscard]] Nesting enterNesting(const Token& at);
 
     std::optional<BinaryOp> comparisonAhead();
     std::optional<BinaryOp> additiveAhead();
@@ -79,6 +84,7 @@ private:
     std::uint32_t lineNumber_ = 0;
     std::vector<Token> tokens_;
     std::size_t pos_ = 0;
+    int depth_ = 0; // nesting of brackets, signs and indirections in the current expression
 };
 
 } // namespace m350::gcode

@@ -1,4 +1,5 @@
 #include "core/gcode/Parser.h"
+#include "core/common/Numeric.h"
 
 #include "core/gcode/BlockParser.h"
 
@@ -126,7 +127,7 @@ void Parser::checkGotos(const Program& program, const ProgramUnit& unit) {
         if (target.kind != ExprKind::Number) {
             continue;
         }
-        auto label = static_cast<std::int32_t>(target.number);
+        auto label = roundToInt(target.number);
         if (unit.labels.find(label) == unit.labels.end()) {
             std::string where = unit.number >= 0 ? "O" + std::to_string(unit.number) : std::string("this program");
             report(program, block, target.column, DiagnosticKind::Flow,
@@ -169,9 +170,9 @@ void Parser::checkCalls(const Program& program) {
             for (const Word& w : block.words) {
                 const ExprNode& v = program.expressions[w.value];
                 if (calls && w.letter == 'P' && v.kind == ExprKind::Number &&
-                    !program.findUnit(static_cast<std::int32_t>(v.number))) {
+                    !program.findUnit(roundToInt(v.number))) {
                     report(program, block, w.column, DiagnosticKind::Flow,
-                           "no O" + std::to_string(static_cast<long long>(v.number)) +
+                           "no O" + std::to_string(roundToInt(v.number)) +
                                " in this file or the machine's macro libraries");
                 }
             }

@@ -1,4 +1,5 @@
 #include "core/interp/ModalInterpreter.h"
+#include "core/common/Numeric.h"
 
 #include "core/config/ParameterNumbers.h"
 
@@ -42,7 +43,7 @@ namespace {
 std::string codeText(char letter, double value) {
     double whole = std::round(value);
     if (std::abs(value - whole) < 1e-9) {
-        return std::string(1, letter) + std::to_string(static_cast<long long>(whole));
+        return std::string(1, letter) + std::to_string(saturatingInt(whole));
     }
     std::string text = std::to_string(value);
     text.erase(text.find_last_not_of('0') + 1);
@@ -79,7 +80,7 @@ ModalInterpreter::ModalInterpreter(const gcode::Dialect& dialect, config::Parame
 }
 
 int ModalInterpreter::currentTool() const {
-    return dialect_.id == gcode::DialectId::M350 ? static_cast<int>(parameters_.get(param::kCurrentTool))
+    return dialect_.id == gcode::DialectId::M350 ? saturatingInt(parameters_.get(param::kCurrentTool))
                                                   : state_.selectedTool;
 }
 
@@ -88,7 +89,7 @@ double ModalInterpreter::toolZOffset() const {
         return 0.0;
     }
     int tool = currentTool();
-    int capacity = static_cast<int>(parameters_.get(param::kMagazineCapacity));
+    int capacity = saturatingInt(parameters_.get(param::kMagazineCapacity));
     if (tool >= 1 && tool <= capacity && tool <= param::kToolZOffsetCount) {
         return parameters_.get(param::kToolZOffsetFirst + tool - 1);
     }
@@ -101,7 +102,7 @@ double ModalInterpreter::toolZOffset() const {
 
 int ModalInterpreter::activeSlot() const {
     if (dialect_.id == gcode::DialectId::M350) {
-        int slot = static_cast<int>(parameters_.get(param::kCurrentWorkSystem));
+        int slot = saturatingInt(parameters_.get(param::kCurrentWorkSystem));
         return (slot >= 0 && slot <= 6) ? slot : 1;
     }
     return state_.group(14) - 53;
@@ -158,18 +159,18 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
             state_.spindleSpeed = words['S']->value;
         }
         if (words['T']) {
-            state_.selectedTool = static_cast<int>(std::lround(words['T']->value));
+            state_.selectedTool = roundToInt(words['T']->value);
         }
         if (words['H']) {
-            state_.lengthOffset = static_cast<int>(std::lround(words['H']->value));
+            state_.lengthOffset = roundToInt(words['H']->value);
         }
         if (words['D']) {
-            state_.radiusOffset = static_cast<int>(std::lround(words['D']->value));
+            state_.radiusOffset = roundToInt(words['D']->value);
         }
         // 2. spindle and coolant
         bool endProgram = false;
         for (const WordValue& m : words.m) {
-            int code = static_cast<int>(std::lround(m.value));
+            int code = roundToInt(m.value);
             state_.lastM = m.value;
             switch (code) {
             case 3: machine_.spindle(machine::SpindleState::Forward, state_.spindleSpeed); break;
@@ -193,7 +194,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         moveAxes(words);
         // 8. stops and program end
         for (const WordValue& m : words.m) {
-            int code = static_cast<int>(std::lround(m.value));
+            int code = roundToInt(m.value);
             if (code == 0) {
                 notices_.push_back("M0 program stop (headless run: continued)");
             } else if (code == 2 || code == 30) {
@@ -212,7 +213,7 @@ void ModalInterpreter::applyGCodes(const Words& words) {
     std::array<bool, 23> seen{};
     for (const WordValue& g : words.g) {
         double value = g.value;
-        int code = static_cast<int>(std::lround(value));
+        int code = roundToInt(value);
         if (std::abs(value - code) > 1e-6) {
             invalid(g, "not a G code this machine knows");
         }

@@ -3,6 +3,7 @@
 #include "core/macro/MacroError.h"
 #include "core/macro/MessageText.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -17,8 +18,13 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
+// Bitwise operators and MOD work on integers; values beyond 2^53 have no exact integer anyway.
 std::int64_t toInteger(double v) {
-    return static_cast<std::int64_t>(std::llround(v));
+    constexpr double kLimit = 9.0e15;
+    if (std::isnan(v)) {
+        return 0;
+    }
+    return static_cast<std::int64_t>(std::llround(std::clamp(v, -kLimit, kLimit)));
 }
 
 std::int64_t bcdToBinary(std::int64_t bcd) {
@@ -32,7 +38,7 @@ std::int64_t bcdToBinary(std::int64_t bcd) {
 
 std::int64_t binaryToBcd(std::int64_t value) {
     std::int64_t result = 0;
-    for (int shift = 0; value > 0; value /= 10, shift += 4) {
+    for (int shift = 0; value > 0 && shift < 60; value /= 10, shift += 4) { // 15 digits fit
         result |= (value % 10) << shift;
     }
     return result;
@@ -135,7 +141,7 @@ Value Evaluator::binary(const ExprNode& node) {
         if (divisor == 0) {
             throw MacroError{AlarmCode::DivisionByZero, "MOD by zero", node.column};
         }
-        return Value::of(static_cast<double>(toInteger(a) % divisor));
+        return Value::of(divisor == -1 ? 0.0 : static_cast<double>(toInteger(a) % divisor));
     }
     case BinaryOp::And: return Value::of(static_cast<double>(toInteger(a) & toInteger(b)));
     case BinaryOp::Or: return Value::of(static_cast<double>(toInteger(a) | toInteger(b)));

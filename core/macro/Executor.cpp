@@ -1,4 +1,5 @@
 #include "core/macro/Executor.h"
+#include "core/common/Numeric.h"
 
 #include <cmath>
 
@@ -129,7 +130,7 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
 void Executor::jumpToLabel(std::size_t frameIndex, double label, std::uint32_t column) {
     Frame& frame = frames_[frameIndex];
     const gcode::ProgramUnit& unit = program_.units[frame.unit];
-    auto n = static_cast<std::int32_t>(std::lround(label));
+    auto n = roundToInt(label);
     if (auto target = program_.findLabel(frame.unit, n, frame.pc)) {
         frame.pc = *target;
         return;
@@ -170,7 +171,7 @@ bool Executor::handlingCode(std::int32_t code) const {
 }
 
 std::uint32_t Executor::programUnit(double number, const char* how, std::uint32_t column) const {
-    auto n = static_cast<std::int32_t>(std::lround(number));
+    auto n = roundToInt(number);
     if (auto unit = program_.findUnit(n)) {
         return *unit;
     }

@@ -1,6 +1,7 @@
 // The part of the Executor that runs ordinary blocks: assignments, then the block's words, of which
 // calls (M98, G65, M99, T, and codes that have handler programs) are taken out first.
 #include "core/macro/Executor.h"
+#include "core/common/Numeric.h"
 
 #include <algorithm>
 #include <cmath>
@@ -119,7 +120,7 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
             ++i;
             continue;
         }
-        int n = static_cast<int>(std::lround(w.value));
+        int n = roundToInt(w.value);
         std::int32_t key = codeKey(w.letter, n);
         std::optional<std::uint32_t> unit;
         bool mapped = false;
