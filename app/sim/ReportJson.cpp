@@ -80,11 +80,19 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
     return j;
 }
 
+// Every key of the contract is present even when nothing ran, so scripts can read any of them.
 nlohmann::json errorJson(const std::string& code, const std::string& message, const std::string& file) {
     return {{"status", "error"},
             {"alarm", {{"code", code}, {"message", message}, {"file", file}, {"line", 0}, {"column", 0}}},
             {"vars", nlohmann::json::object()},
-            {"messages", nlohmann::json::array()}};
+            {"machine", axes(machine::Axes::Zero())},
+            {"work", axes(machine::Axes::Zero())},
+            {"tool", 0},
+            {"pockets", nlohmann::json::object()},
+            {"outputs", std::vector<int>(machine::kOutputCount, 0)},
+            {"messages", nlohmann::json::array()},
+            {"sim_time_s", 0.0},
+            {"diagnostics", nlohmann::json::array()}};
 }
 
 std::string dump(const nlohmann::json& j) {

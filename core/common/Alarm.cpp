@@ -16,6 +16,7 @@ std::string_view alarmKey(AlarmCode code) {
     case AlarmCode::MissingAddress: return "missing_address";
     case AlarmCode::InvalidWord: return "invalid_word";
     case AlarmCode::MacroAlarm: return "macro_alarm";
+    case AlarmCode::SuspectLine: return "suspect_line";
     case AlarmCode::SimulatedTimeLimit: return "simulated_time_limit";
     case AlarmCode::NotHomed: return "not_homed";
     case AlarmCode::OperatorReset: return "reset";

@@ -21,6 +21,7 @@ enum class AlarmCode : std::uint8_t {
     MissingAddress,       // M98 without P ...
     InvalidWord,          // a G or M code the machine does not know, a bad value
     MacroAlarm,           // FANUC #3000
+    SuspectLine,          // a line `check` flags as never meant (X[#1330+#1300-1])
     SimulatedTimeLimit,   // runaway loop
     NotHomed,
     OperatorReset,

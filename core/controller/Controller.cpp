@@ -165,8 +165,11 @@ RunReport Controller::run() {
             break;
         }
         int toolBefore = spindleTool();
+        std::uint64_t blocksBefore = executor_->blocksExecuted();
         executor_->step();
-        machine_.blockTime(settings_.blockTime);
+        if (executor_->blocksExecuted() != blocksBefore) {
+            machine_.blockTime(settings_.blockTime);
+        }
         for (std::string& notice : interp_.takeNotices()) {
             postMessage(std::move(notice));
         }

@@ -4,6 +4,7 @@
 #include "core/gcode/Expression.h"
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct Assignment {
 
 enum class Control : std::uint8_t { None, IfGoto, IfThen, Goto, While, End };
 
+// loopId of a WHILE or END line too damaged to say which loop it is.
+inline constexpr std::int32_t kUnknownLoop = -1;
+
 // One line of a program. Control statements stand alone after the N label; ordinary blocks hold
 // assignments and words, executed as one unit.
 struct Block {
@@ -35,6 +39,7 @@ struct Block {
     std::int32_t programNumber = -1; // the O number on an O line
     bool blockDelete = false;        // leading '/'
     bool programEnd = false;         // holds M30 or M02 (ends the main program's scope)
+    bool suspect = false;            // has a lint finding: Program::suspectMessage says which
     Control control = Control::None;
     ExprId condition = kNoExpr;      // IF / WHILE
     ExprId target = kNoExpr;         // GOTO label expression
@@ -42,7 +47,7 @@ struct Block {
     std::int32_t partner = -1;       // WHILE <-> END block index, -1 when unmatched
     std::uint32_t controlColumn = 0; // where the control keyword starts
     std::vector<Assignment> assignments;
-    std::vector<Word> words;
+    std::span<const Word> words; // stored in the Program's WordArena
     std::string comment;             // text of the first comment on the line
 };
 

@@ -7,17 +7,20 @@
 
 namespace m350::gcode {
 
-BlockParser::BlockParser(const Dialect& dialect, ExpressionPool& pool, std::vector<Diagnostic>& diagnostics,
-                         std::string fileName, std::uint32_t fileIndex)
-    : dialect_(dialect), pool_(pool), diagnostics_(diagnostics), fileName_(std::move(fileName)),
+BlockParser::BlockParser(const Dialect& dialect, ExpressionPool& pool, WordArena& words,
+                         std::vector<Diagnostic>& diagnostics, std::string fileName, std::uint32_t fileIndex)
+    : dialect_(dialect), pool_(pool), words_(words), diagnostics_(diagnostics), fileName_(std::move(fileName)),
       fileIndex_(fileIndex) {}
 
 std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lineNumber) {
     line_ = line;
     lineNumber_ = lineNumber;
-    tokens_ = Lexer(dialect_).tokenize(line);
+    Lexer(dialect_).tokenize(line, tokens_);
+    const Token end = tokens_.back();
+    tokens_.insert(tokens_.end(), kLookahead, end);
     pos_ = 0;
     depth_ = 0;
+    lastLint_.clear();
     Block block;
     block.location = {fileIndex_, lineNumber, tokens_.front().column};
     try {
@@ -25,6 +28,7 @@ std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lin
     } catch (const Failure&) {
         return brokenLoopBlock(block);
     }
+    block.suspect = !lastLint_.empty();
     bool empty = block.label < 0 && block.programNumber < 0 && block.control == Control::None &&
                  block.assignments.empty() && block.words.empty();
     if (empty) {
@@ -47,31 +51,31 @@ std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
         return std::nullopt;
     }
     bool isWhile = tokens_[first].keyword == Keyword::While;
+    block.control = isWhile ? Control::While : Control::End;
+    block.controlColumn = tokens_[first].column;
+    block.words = {};
+    block.assignments.clear();
+    block.loopId = kUnknownLoop; // the parser then trusts no pairing in this program
     for (std::size_t i = first; i + 1 < tokens_.size(); ++i) {
         bool marker = isWhile ? (tokens_[i].kind == TokenKind::Keyword && tokens_[i].keyword == Keyword::Do)
                               : i == first;
         if (marker && tokens_[i + 1].kind == TokenKind::Number) {
-            block.control = isWhile ? Control::While : Control::End;
             block.loopId = saturatingInt(tokens_[i + 1].number);
-            block.controlColumn = tokens_[first].column;
-            block.words.clear();
-            block.assignments.clear();
-            return block;
+            break;
         }
     }
-    return std::nullopt;
+    return block;
 }
 
+// The token list ends with kLookahead End tokens (see parse()), so peeking never runs past it and
+// next() never moves beyond the first End.
 const Token& BlockParser::peek(std::size_t ahead) const {
-    std::size_t i = pos_ + ahead;
-    return i < tokens_.size() ? tokens_[i] : tokens_.back();
+    return tokens_[pos_ + ahead];
 }
 
 const Token& BlockParser::next() {
-    const Token& t = peek();
-    if (pos_ + 1 < tokens_.size()) {
-        ++pos_;
-    }
+    const Token& t = tokens_[pos_];
+    pos_ += t.kind != TokenKind::End ? 1 : 0;
     return t;
 }
 
@@ -89,6 +93,7 @@ void BlockParser::fail(std::uint32_t column, std::string message) {
 }
 
 void BlockParser::lint(std::uint32_t column, std::string message) {
+    lastLint_ = message;
     diagnostics_.push_back({Severity::Error, DiagnosticKind::Lint, fileName_, lineNumber_, column, std::move(message)});
 }
 
@@ -106,14 +111,11 @@ std::string BlockParser::describe(const Token& token) const {
 
 void BlockParser::parseStatement(Block& block) {
     for (const Token& t : tokens_) {
-        if (t.kind == TokenKind::Invalid) {
-            fail(t, t.text);
-        }
-        if (!t.problem.empty()) {
-            fail(t, t.problem);
+        if (t.issue != TokenIssue::None) {
+            fail(t, Lexer(dialect_).issueMessage(t, line_));
         }
         if (t.kind == TokenKind::Comment && block.comment.empty()) {
-            block.comment = t.text;
+            block.comment = std::string(commentText(t, line_));
         }
     }
     auto skipComments = [&] {
@@ -213,8 +215,9 @@ void BlockParser::failStrayBracket(const Token& at, const char* context) {
 // For `#1552+#20-1]` or `[#1520+#13-1] NE 0]`: the indirect reference the author most likely meant,
 // `#[1552+#20-1]`, built from the text between the '#' and the first ']' after it.
 std::string BlockParser::hashBracketHint(std::size_t hashToken, std::size_t strayToken) const {
-    if (hashToken >= tokens_.size() || tokens_[hashToken].kind != TokenKind::Hash) {
-        return {};
+    if (hashToken + 1 >= tokens_.size() || tokens_[hashToken].kind != TokenKind::Hash ||
+        tokens_[hashToken + 1].kind == TokenKind::LBracket) {
+        return {}; // no hint when the reference is already written #[...]
     }
     std::size_t close = hashToken;
     while (close < strayToken && tokens_[close].kind != TokenKind::RBracket) {
@@ -290,6 +293,12 @@ int BlockParser::parseLoopId(const char* keyword) {
 }
 
 void BlockParser::parseItems(Block& block) {
+    std::size_t letters = 0;
+    for (std::size_t i = pos_; i < tokens_.size(); ++i) {
+        letters += tokens_[i].kind == TokenKind::Letter ? 1 : 0;
+    }
+    std::span<Word> room = words_.allocate(letters);
+    std::size_t count = 0;
     while (peek().kind != TokenKind::End) {
         const Token& t = peek();
         switch (t.kind) {
@@ -303,7 +312,8 @@ void BlockParser::parseItems(Block& block) {
                 (pool_[w.value].number == 30 || pool_[w.value].number == 2)) {
                 block.programEnd = true;
             }
-            block.words.push_back(w);
+            room[count++] = w;
+            block.words = room.first(count);
             break;
         }
         case TokenKind::RBracket: failStrayBracket(t, "this block");
@@ -336,7 +346,7 @@ Assignment BlockParser::parseAssignment() {
     }
     a.value = parseExpression();
     if (peek().kind == TokenKind::Comment) {
-        a.text = next().text;
+        a.text = std::string(commentText(next(), line_));
         a.hasText = true;
     }
     if (peek().kind == TokenKind::RBracket) {
@@ -355,7 +365,10 @@ Word BlockParser::parseWord() {
         k != TokenKind::Plus) {
         fail(letter, std::string("address ") + letter.letter + " needs a value, found " + describe(peek()));
     }
-    w.value = parseUnary();
+    w.value = plainNumber();
+    if (w.value == kNoExpr) {
+        w.value = parseUnary();
+    }
     if (peek().kind == TokenKind::Plus || peek().kind == TokenKind::Minus || peek().kind == TokenKind::Star ||
         (peek().kind == TokenKind::Slash)) {
         fail(peek(), "arithmetic in an address value needs brackets: " + std::string(1, letter.letter) + "[...]");
@@ -395,6 +408,24 @@ void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, 
     }
 }
 
+// `X12.5` and `X-3`, most of any real program, without the precedence chain.
+ExprId BlockParser::plainNumber() {
+    bool negative = peek().kind == TokenKind::Minus;
+    const Token& number = peek(negative ? 1 : 0);
+    if (number.kind != TokenKind::Number) {
+        return kNoExpr;
+    }
+    ExprNode n;
+    n.kind = ExprKind::Number;
+    n.number = negative ? -number.number : number.number;
+    n.column = peek().column;
+    next();
+    if (negative) {
+        next();
+    }
+    return pool_.add(n);
+}
+
 ExprId BlockParser::binary(BinaryOp op, ExprId lhs, ExprId rhs, std::uint32_t column) {
     ExprNode n;
     n.kind = ExprKind::Binary;
@@ -410,7 +441,7 @@ std::optional<BinaryOp> BlockParser::comparisonAhead() {
     if (t.kind == TokenKind::Compare) {
         if (!dialect_.cStyleComparisons) {
             const char* word[] = {"EQ", "NE", "LT", "GT", "LE", "GE"};
-            fail(t, "'" + t.text + "' is not " + std::string(dialect_.name) +
+            fail(t, "'" + source(t) + "' is not " + std::string(dialect_.name) +
                                                         " syntax: write " +
                                                         word[static_cast<int>(t.compare) - static_cast<int>(BinaryOp::Eq)]);
         }
@@ -433,9 +464,10 @@ std::optional<BinaryOp> BlockParser::additiveAhead() {
     }
     if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::Or || t.keyword == Keyword::Xor)) {
         if (!dialect_.bitwiseKeywords) {
-            fail(t, std::string(keywordSpelling(t.keyword)) + " is not an " +
-                                                        std::string(dialect_.name) +
-                                                        " operator: write OR as [a]+[b]");
+            fail(t, std::string(keywordSpelling(t.keyword)) + " is not an " + std::string(dialect_.name) +
+                        " operator" +
+                        (t.keyword == Keyword::Or ? ": write OR as [a]+[b]"
+                                                  : ": write XOR of two conditions as [[a]+[b]]==1"));
         }
         return t.keyword == Keyword::Or ? BinaryOp::Or : BinaryOp::Xor;
     }
@@ -452,9 +484,10 @@ std::optional<BinaryOp> BlockParser::termAhead() {
     }
     if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::And || t.keyword == Keyword::Mod)) {
         if (!dialect_.bitwiseKeywords) {
-            fail(t, std::string(keywordSpelling(t.keyword)) + " is not an " +
-                                                        std::string(dialect_.name) + " operator" +
-                                                        (t.keyword == Keyword::And ? ": write AND as [a]*[b]" : ""));
+            fail(t, std::string(keywordSpelling(t.keyword)) + " is not an " + std::string(dialect_.name) +
+                        " operator" +
+                        (t.keyword == Keyword::And ? ": write AND as [a]*[b]"
+                                                   : ": write a MOD b as [a-FIX[a/b]*b]"));
         }
         return t.keyword == Keyword::And ? BinaryOp::And : BinaryOp::Mod;
     }

@@ -5,6 +5,7 @@
 #include "core/gcode/Diagnostic.h"
 #include "core/gcode/Expression.h"
 #include "core/gcode/Token.h"
+#include "core/gcode/WordArena.h"
 
 #include <optional>
 #include <string>
@@ -23,15 +24,19 @@ namespace m350::gcode {
 // errors of every other line.
 class BlockParser {
 public:
-    BlockParser(const Dialect& dialect, ExpressionPool& pool, std::vector<Diagnostic>& diagnostics,
+    BlockParser(const Dialect& dialect, ExpressionPool& pool, WordArena& words, std::vector<Diagnostic>& diagnostics,
                 std::string fileName, std::uint32_t fileIndex);
 
     // Returns nothing for a line without content (blank, comment only, `%`) or with a syntax error.
     std::optional<Block> parse(std::string_view line, std::uint32_t lineNumber);
 
+    // The lint finding of the block just parsed (empty when none).
+    const std::string& lastLint() const { return lastLint_; }
+
 private:
     struct Failure {};
 
+    static constexpr int kLookahead = 2; // peek(1) and peek(2) are the farthest the grammar looks
     const Token& peek(std::size_t ahead = 0) const;
     const Token& next();
     bool atKeyword(Keyword k) const;
@@ -48,6 +53,7 @@ private:
     ExprId parseCondition(const char* statement);
     int parseLoopId(const char* keyword);
 
+    ExprId plainNumber();
     ExprId parseExpression();
     ExprId parseAdditive();
     ExprId parseTerm();
@@ -76,6 +82,7 @@ private:
 
     const Dialect& dialect_;
     ExpressionPool& pool_;
+    WordArena& words_;
     std::vector<Diagnostic>& diagnostics_;
     std::string fileName_;
     std::uint32_t fileIndex_;
@@ -85,6 +92,7 @@ private:
     std::vector<Token> tokens_;
     std::size_t pos_ = 0;
     int depth_ = 0; // nesting of brackets, signs and indirections in the current expression
+    std::string lastLint_;
 };
 
 } // namespace m350::gcode

@@ -68,6 +68,7 @@ Dialect makeFanuc() {
     d.localFirst = 1;
     d.localCount = 33; // #1-#33
     d.m98OpensLocalLevel = false;
+    d.m99RestartsMain = true;
     d.maxCallDepth = 15;
     // Argument specification I
     d.callArguments = letters({{'A', 1}, {'B', 2}, {'C', 3}, {'I', 4}, {'J', 5}, {'K', 6}, {'D', 7}, {'E', 8},

@@ -41,6 +41,7 @@ struct Dialect {
     int localFirst = 1;                // first local variable number (#0 on the M350, #1 on FANUC)
     int localCount = 33;               // locals per level (#0-#49 => 50, #1-#33 => 33)
     bool m98OpensLocalLevel = false;   // M350: every call opens one; FANUC: only G65
+    bool m99RestartsMain = false;      // FANUC: M99 in a main program returns to its start
     int maxCallDepth = 15;
     std::array<std::int8_t, 26> callArguments{};    // G65/M98 address letter -> local number, -1 none
     std::array<std::int8_t, 26> handlerArguments{}; // arguments of G-code handlers (M350: X#0 Y#1 ...)

@@ -1,9 +1,7 @@
 #include "core/gcode/Lexer.h"
 
-#include <cctype>
 #include <charconv>
 #include <optional>
-#include <string>
 
 namespace m350::gcode {
 
@@ -18,38 +16,19 @@ bool isDigit(char c) {
 bool isSpace(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
+char upper(char c) {
+    return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+}
 
-std::optional<Keyword> keywordFor(std::string_view word) {
+// Keywords are at most 5 letters; longer runs are never keywords.
+std::optional<Keyword> keywordFor(std::string_view upperWord) {
     for (int k = 0; k <= static_cast<int>(Keyword::Bcd); ++k) {
-        if (word == keywordSpelling(static_cast<Keyword>(k))) {
+        if (upperWord == keywordSpelling(static_cast<Keyword>(k))) {
             return static_cast<Keyword>(k);
         }
     }
     return std::nullopt;
 }
-
-// Walks a line byte by byte while counting characters, so columns match what an editor shows.
-class Cursor {
-public:
-    explicit Cursor(std::string_view line) : line_(line) {}
-    bool done() const { return pos_ >= line_.size(); }
-    char peek(std::size_t ahead = 0) const { return pos_ + ahead < line_.size() ? line_[pos_ + ahead] : '\0'; }
-    std::uint32_t column() const { return column_; }
-    std::uint32_t offset() const { return static_cast<std::uint32_t>(pos_); }
-    void advance() {
-        ++pos_;
-        while (pos_ < line_.size() && (static_cast<unsigned char>(line_[pos_]) & 0xC0) == 0x80) {
-            ++pos_; // continuation bytes of one character
-        }
-        ++column_;
-    }
-    std::string_view from(std::uint32_t start) const { return line_.substr(start, pos_ - start); }
-
-private:
-    std::string_view line_;
-    std::size_t pos_ = 0;
-    std::uint32_t column_ = 1;
-};
 
 // Full-width punctuation typed with a Chinese input method looks right but is not G-code.
 const char* asciiFor(std::string_view character) {
@@ -64,153 +43,242 @@ const char* asciiFor(std::string_view character) {
     return nullptr;
 }
 
+// Plain decimals, the bulk of every program, in one pass: when the digits form an integer below
+// 2^53 and there are at most 22 after the point, mantissa / 10^k is one correctly rounded
+// division, so the result equals what from_chars gives (Clinger's fast path).
+constexpr double kPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                   1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+bool parseDecimalFast(std::string_view digits, double& value) {
+    const auto& kPowers = kPowersOfTen;
+    std::uint64_t mantissa = 0;
+    int fraction = -1; // digits after the point; -1 before the point
+    int significant = 0;
+    for (char ch : digits) {
+        if (ch == '.') {
+            if (fraction >= 0) {
+                return false;
+            }
+            fraction = 0;
+            continue;
+        }
+        mantissa = mantissa * 10 + static_cast<std::uint64_t>(ch - '0');
+        significant += (mantissa != 0) ? 1 : 0;
+        fraction += fraction >= 0 ? 1 : 0;
+        if (significant > 15) {
+            return false;
+        }
+    }
+    int scale = fraction < 0 ? 0 : fraction;
+    if (scale > 22) {
+        return false;
+    }
+    value = static_cast<double>(mantissa) / kPowers[scale];
+    return true;
+}
+
+bool parseNumber(std::string_view digits, double& value) {
+    if (parseDecimalFast(digits, value)) {
+        return true;
+    }
+    if (digits.back() == '.') {
+        digits.remove_suffix(1); // `1.` is FANUC's 1.0
+    }
+    auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    return ec == std::errc() && ptr == digits.data() + digits.size();
+}
+
 } // namespace
 
 std::vector<Token> Lexer::tokenize(std::string_view line) const {
     std::vector<Token> tokens;
-    Cursor c(line);
-    auto emit = [&](TokenKind kind, std::uint32_t column, std::uint32_t offset) -> Token& {
-        Token t;
+    tokenize(line, tokens);
+    return tokens;
+}
+
+// One pass over the bytes. Columns count characters: every byte of ASCII is one, and a multi-byte
+// UTF-8 character (possible only in comments and invalid tokens) counts once.
+void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens) const {
+    tokens.clear();
+    const char* text = line.data();
+    const std::size_t size = line.size();
+    std::size_t i = 0;
+    std::uint32_t column = 1;
+    auto at = [&](std::size_t k) { return k < size ? text[k] : '\0'; };
+    auto emit = [&](TokenKind kind, std::size_t start, std::uint32_t startColumn) -> Token& {
+        Token& t = tokens.emplace_back();
         t.kind = kind;
-        t.column = column;
-        t.offset = offset;
-        t.length = c.offset() - offset;
-        tokens.push_back(std::move(t));
-        return tokens.back();
+        t.column = startColumn;
+        t.offset = static_cast<std::uint32_t>(start);
+        t.length = static_cast<std::uint32_t>(i - start);
+        return t;
     };
-    while (!c.done()) {
-        char ch = c.peek();
-        std::uint32_t column = c.column();
-        std::uint32_t offset = c.offset();
-        if (isSpace(ch)) {
-            c.advance();
-            continue;
+    // Advances over one character, which may be several bytes long.
+    auto step = [&] {
+        ++i;
+        while (i < size && (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) {
+            ++i;
         }
-        if ((ch == '/' && c.peek(1) == '/' && dialect_.slashSlashComments) || ch == ';') {
-            break; // comment (M350) or end of block (FANUC) up to the end of the line
-        }
-        if (ch == '(') {
-            c.advance();
-            std::uint32_t textStart = c.offset();
-            while (!c.done() && c.peek() != ')') {
-                c.advance();
-            }
-            std::string text(c.from(textStart));
-            if (c.done()) {
-                Token& t = emit(TokenKind::Invalid, column, offset);
-                t.text = "comment '(' is not closed with ')'";
-                break;
-            }
-            c.advance();
-            emit(TokenKind::Comment, column, offset).text = std::move(text);
+        ++column;
+    };
+    while (i < size) {
+        const char ch = text[i];
+        const std::size_t start = i;
+        const std::uint32_t startColumn = column;
+        if (ch == ' ' || ch == '\t' || ch == '\r' || ch == '\n') {
+            ++i;
+            ++column;
             continue;
         }
         if (isLetter(ch)) {
-            std::string word;
-            while (!c.done()) {
-                if (isLetter(c.peek())) {
-                    word.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c.peek()))));
-                    c.advance();
-                } else if (dialect_.spacesInsignificant && isSpace(c.peek())) {
-                    std::size_t ahead = 1;
-                    while (isSpace(c.peek(ahead))) {
+            char word[8];
+            std::size_t letters = 0;
+            bool lowerCase = false;
+            while (i < size) {
+                char c = text[i];
+                if (isLetter(c)) {
+                    lowerCase |= c >= 'a';
+                    if (letters < sizeof word) {
+                        word[letters] = upper(c);
+                    }
+                    ++letters;
+                    ++i;
+                    ++column;
+                } else if (dialect_.spacesInsignificant && isSpace(c)) {
+                    std::size_t ahead = i + 1;
+                    while (isSpace(at(ahead))) {
                         ++ahead;
                     }
-                    if (!isLetter(c.peek(ahead))) {
+                    if (!isLetter(at(ahead))) {
                         break;
                     }
-                    while (isSpace(c.peek())) {
-                        c.advance();
-                    }
+                    column += static_cast<std::uint32_t>(ahead - i);
+                    i = ahead;
                 } else {
                     break;
                 }
             }
-            if (word.size() == 1) {
-                emit(TokenKind::Letter, column, offset).letter = word[0];
-            } else if (auto k = keywordFor(word)) {
-                std::string written(c.from(offset));
-                Token& t = emit(TokenKind::Keyword, column, offset);
-                t.keyword = *k;
-                if (dialect_.upperCaseKeywords && written != word) {
-                    t.problem = "keywords are upper case in the " + std::string(dialect_.name) + " dialect: write " +
-                                word + ", not " + written;
+            if (letters == 1) {
+                emit(TokenKind::Letter, start, startColumn).letter = word[0];
+                continue;
+            }
+            auto keyword = letters <= sizeof word ? keywordFor(std::string_view(word, letters)) : std::nullopt;
+            if (!keyword) {
+                emit(TokenKind::Invalid, start, startColumn).issue = TokenIssue::UnknownWord;
+                continue;
+            }
+            Token& t = emit(TokenKind::Keyword, start, startColumn);
+            t.keyword = *keyword;
+            if (dialect_.upperCaseKeywords && lowerCase) {
+                t.issue = TokenIssue::LowerCaseKeyword;
+            }
+            continue;
+        }
+        if (isDigit(ch) || (ch == '.' && isDigit(at(i + 1)))) {
+            // Scan and convert in one pass (see parseDecimalFast); anything unusual takes the slow path.
+            std::uint64_t mantissa = 0;
+            int fraction = -1;
+            int significant = 0;
+            bool fast = true;
+            for (; i < size; ++i) {
+                char c = text[i];
+                if (isDigit(c)) {
+                    mantissa = mantissa * 10 + static_cast<std::uint64_t>(c - '0');
+                    significant += mantissa != 0 ? 1 : 0;
+                    fraction += fraction >= 0 ? 1 : 0;
+                } else if (c == '.') {
+                    fast &= fraction < 0;
+                    fraction = 0;
+                } else {
+                    break;
                 }
-                t.text = std::move(written);
-            } else {
-                emit(TokenKind::Invalid, column, offset).text = "unknown word '" + std::string(c.from(offset)) + "'";
             }
-            continue;
-        }
-        if (isDigit(ch) || (ch == '.' && isDigit(c.peek(1)))) {
-            while (isDigit(c.peek()) || c.peek() == '.') {
-                c.advance();
-            }
-            std::string_view digits = c.from(offset);
-            Token& t = emit(TokenKind::Number, column, offset);
-            std::string copy(digits);
-            if (copy.back() == '.') {
-                copy.pop_back(); // `1.` is FANUC's 1.0
-            }
-            auto [ptr, ec] = std::from_chars(copy.data(), copy.data() + copy.size(), t.number);
-            if (ec != std::errc() || ptr != copy.data() + copy.size()) {
+            column += static_cast<std::uint32_t>(i - start);
+            Token& t = emit(TokenKind::Number, start, startColumn);
+            int scale = fraction < 0 ? 0 : fraction;
+            if (fast && significant <= 15 && scale <= 22) {
+                t.number = static_cast<double>(mantissa) / kPowersOfTen[scale];
+            } else if (!parseNumber(line.substr(start, i - start), t.number)) {
                 t.kind = TokenKind::Invalid;
-                t.text = "malformed number '" + std::string(digits) + "'";
+                t.issue = TokenIssue::MalformedNumber;
             }
             continue;
         }
-        auto two = [&](char second) { return c.peek(1) == second; };
-        auto compare = [&](BinaryOp op, int length) {
-            for (int i = 0; i < length; ++i) {
-                c.advance();
+        if ((ch == '/' && at(i + 1) == '/' && dialect_.slashSlashComments) || ch == ';') {
+            break; // comment (M350) or end of block (FANUC) up to the end of the line
+        }
+        if (ch == '(') {
+            while (i < size && text[i] != ')') {
+                step();
             }
-            Token& t = emit(TokenKind::Compare, column, offset);
-            t.compare = op;
-            t.text = std::string(c.from(offset));
+            if (i >= size) {
+                emit(TokenKind::Invalid, start, startColumn).issue = TokenIssue::UnclosedComment;
+                break;
+            }
+            step();
+            emit(TokenKind::Comment, start, startColumn);
+            continue;
+        }
+        auto single = [&](TokenKind kind) {
+            ++i;
+            ++column;
+            emit(kind, start, startColumn);
+        };
+        auto compare = [&](BinaryOp op, std::size_t length) {
+            i += length;
+            column += static_cast<std::uint32_t>(length);
+            emit(TokenKind::Compare, start, startColumn).compare = op;
         };
         switch (ch) {
-        case '#': c.advance(); emit(TokenKind::Hash, column, offset); continue;
-        case '[': c.advance(); emit(TokenKind::LBracket, column, offset); continue;
-        case ']': c.advance(); emit(TokenKind::RBracket, column, offset); continue;
-        case '+': c.advance(); emit(TokenKind::Plus, column, offset); continue;
-        case '-': c.advance(); emit(TokenKind::Minus, column, offset); continue;
-        case '*': c.advance(); emit(TokenKind::Star, column, offset); continue;
-        case '/': c.advance(); emit(TokenKind::Slash, column, offset); continue;
-        case ',': c.advance(); emit(TokenKind::Comma, column, offset); continue;
-        case '%': c.advance(); emit(TokenKind::Percent, column, offset); continue;
-        case '=':
-            if (two('=')) {
-                compare(BinaryOp::Eq, 2);
-            } else {
-                c.advance();
-                emit(TokenKind::Assign, column, offset);
-            }
-            continue;
+        case '#': single(TokenKind::Hash); continue;
+        case '[': single(TokenKind::LBracket); continue;
+        case ']': single(TokenKind::RBracket); continue;
+        case '+': single(TokenKind::Plus); continue;
+        case '-': single(TokenKind::Minus); continue;
+        case '*': single(TokenKind::Star); continue;
+        case '/': single(TokenKind::Slash); continue;
+        case ',': single(TokenKind::Comma); continue;
+        case '%': single(TokenKind::Percent); continue;
+        case '=': at(i + 1) == '=' ? compare(BinaryOp::Eq, 2) : single(TokenKind::Assign); continue;
+        case '<': at(i + 1) == '=' ? compare(BinaryOp::Le, 2) : compare(BinaryOp::Lt, 1); continue;
+        case '>': at(i + 1) == '=' ? compare(BinaryOp::Ge, 2) : compare(BinaryOp::Gt, 1); continue;
         case '!':
-            if (two('=')) {
+            if (at(i + 1) == '=') {
                 compare(BinaryOp::Ne, 2);
                 continue;
             }
             break;
-        case '<': two('=') ? compare(BinaryOp::Le, 2) : compare(BinaryOp::Lt, 1); continue;
-        case '>': two('=') ? compare(BinaryOp::Ge, 2) : compare(BinaryOp::Gt, 1); continue;
         default: break;
         }
-        c.advance();
-        std::string character(c.from(offset));
-        Token& t = emit(TokenKind::Invalid, column, offset);
-        if (const char* ascii = asciiFor(character)) {
-            t.text = "full-width '" + character + "' is not G-code (did you mean '" + ascii + "'?)";
-        } else {
-            t.text = "unexpected character '" + character + "'";
-        }
+        step();
+        Token& t = emit(TokenKind::Invalid, start, startColumn);
+        t.issue = asciiFor(line.substr(start, i - start)) ? TokenIssue::FullWidth : TokenIssue::UnexpectedCharacter;
     }
-    Token end;
-    end.kind = TokenKind::End;
-    end.column = c.column();
-    end.offset = c.offset();
-    tokens.push_back(end);
-    return tokens;
+    emit(TokenKind::End, i, column);
+}
+
+std::string Lexer::issueMessage(const Token& token, std::string_view line) const {
+    std::string text(tokenSource(token, line));
+    switch (token.issue) {
+    case TokenIssue::None: return {};
+    case TokenIssue::UnknownWord: return "unknown word '" + text + "'";
+    case TokenIssue::MalformedNumber: return "malformed number '" + text + "'";
+    case TokenIssue::UnclosedComment: return "comment '(' is not closed with ')'";
+    case TokenIssue::FullWidth:
+        return "full-width '" + text + "' is not G-code (did you mean '" + asciiFor(text) + "'?)";
+    case TokenIssue::UnexpectedCharacter: return "unexpected character '" + text + "'";
+    case TokenIssue::LowerCaseKeyword: {
+        std::string upperText;
+        for (char ch : text) {
+            if (isLetter(ch)) {
+                upperText.push_back(upper(ch));
+            }
+        }
+        return "keywords are upper case in the " + std::string(dialect_.name) + " dialect: write " + upperText +
+               ", not " + text;
+    }
+    }
+    return {};
 }
 
 } // namespace m350::gcode

@@ -3,6 +3,7 @@
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Token.h"
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -15,8 +16,13 @@ class Lexer {
 public:
     explicit Lexer(const Dialect& dialect) : dialect_(dialect) {}
 
-    // The last token is always End.
+    // Fills `out` (cleared first); the last token is always End. Reusing `out` across lines keeps
+    // lexing free of allocations.
+    void tokenize(std::string_view line, std::vector<Token>& out) const;
     std::vector<Token> tokenize(std::string_view line) const;
+
+    // What is wrong with a token whose issue is not None, in the operator's terms.
+    std::string issueMessage(const Token& token, std::string_view line) const;
 
 private:
     const Dialect& dialect_;

@@ -14,8 +14,16 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
     auto fileIndex = static_cast<std::uint32_t>(program.files.size());
     std::string name = std::filesystem::path(path).filename().string();
     program.files.push_back({path, name.empty() ? path : name, role, std::move(encoding)});
-    BlockParser blockParser(dialect_, program.expressions, diagnostics_, program.files.back().name, fileIndex);
+    BlockParser blockParser(dialect_, program.expressions, program.words, diagnostics_, program.files.back().name,
+                            fileIndex);
 
+    if (program.blocks.empty()) {
+        // Size for the program (the first and largest file) plus headroom for the macro libraries,
+        // so adding a library never copies a 200,000-block program.
+        auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+        program.blocks.reserve(lines + 4096);
+        program.expressions.reserve((lines + 4096) * 6); // a G1 line has 5 words
+    }
     bool unitOpen = false;
     std::uint32_t lineNumber = 0;
     std::size_t start = 0;
@@ -40,6 +48,9 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
             unit.begin = static_cast<std::uint32_t>(program.blocks.size());
             program.units.push_back(std::move(unit));
             unitOpen = true;
+        }
+        if (block->suspect) {
+            program.suspects[static_cast<std::uint32_t>(program.blocks.size())] = blockParser.lastLint();
         }
         program.blocks.push_back(std::move(*block));
     }
@@ -77,6 +88,12 @@ void Parser::report(const Program& program, const Block& block, std::uint32_t co
 
 // WHILE ... DOm and ENDm pair by nesting, as on FANUC: the innermost open DO must carry the same m.
 void Parser::pairLoops(Program& program, const ProgramUnit& unit) {
+    for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
+        if (program.blocks[b].loopId == kUnknownLoop &&
+            (program.blocks[b].control == Control::While || program.blocks[b].control == Control::End)) {
+            return; // a loop line with a syntax error: its error already stops the program
+        }
+    }
     std::vector<std::uint32_t> open;
     for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
         Block& block = program.blocks[b];

@@ -2,6 +2,7 @@
 
 #include "core/gcode/Block.h"
 #include "core/gcode/Expression.h"
+#include "core/gcode/WordArena.h"
 
 #include <cstdint>
 #include <optional>
@@ -39,6 +40,7 @@ public:
     std::vector<SourceFile> files;
     std::vector<Block> blocks;
     ExpressionPool expressions;
+    WordArena words; // the words the blocks' spans refer to
     std::vector<ProgramUnit> units;
 
     // The unit an O number names. The main and MDI files win over libraries, so a user can try a
@@ -54,6 +56,10 @@ public:
     std::optional<std::uint32_t> findLabel(std::uint32_t unit, std::int32_t label, std::uint32_t from) const;
 
     std::uint32_t unitOfBlock(std::uint32_t block) const;
+
+    // Lint findings by block: valid lines that are never what the author meant. Running such a
+    // line raises an alarm instead of moving the machine somewhere wrong.
+    std::unordered_map<std::uint32_t, std::string> suspects;
 
     const std::string& fileName(const SourceLocation& location) const { return files[location.file].name; }
 

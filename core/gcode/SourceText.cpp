@@ -106,10 +106,17 @@ std::string_view encodingName(TextEncoding encoding) {
 }
 
 std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::string_view bytes) {
-    const std::size_t bomSize = bytes.starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0;
-    const std::string_view body = bytes.substr(bomSize);
+    return decodeSourceBuffer(std::move(path), std::string(bytes));
+}
+
+std::variant<SourceText, SourceReadError> decodeSourceBuffer(std::string path, std::string bytes) {
+    const std::size_t bomSize = std::string_view(bytes).starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0;
+    const std::string_view body = std::string_view(bytes).substr(bomSize);
     const auto utf8Bad = firstInvalidUtf8(body);
-    if (!utf8Bad) return SourceText{std::move(path), std::string(body), TextEncoding::Utf8};
+    if (!utf8Bad) {
+        bytes.erase(0, bomSize); // the text is the file itself: no copy of a large program
+        return SourceText{std::move(path), std::move(bytes), TextEncoding::Utf8};
+    }
 
     const Iconv cd("UTF-8", "GB18030");
     if (!cd.ok()) {
@@ -132,11 +139,16 @@ std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path
     const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) return SourceReadError{path, "cannot open file: " + errnoMessage(errno)};
     std::string bytes;
+    if (std::fseek(file.get(), 0, SEEK_END) == 0) {
+        long size = std::ftell(file.get());
+        bytes.reserve(size > 0 ? static_cast<std::size_t>(size) : 0);
+        std::rewind(file.get());
+    }
     char buffer[16384];
     std::size_t n = 0;
     while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) bytes.append(buffer, n);
     if (std::ferror(file.get())) return SourceReadError{path, "cannot read file: " + errnoMessage(errno)};
-    return decodeSource(path, bytes);
+    return decodeSourceBuffer(path, std::move(bytes));
 }
 
 }  // namespace m350::gcode

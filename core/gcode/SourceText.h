@@ -29,5 +29,7 @@ std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path
 // Utf8, otherwise decodes as GBK (via GB18030, a superset). If neither fits,
 // the error names the 1-based line and byte column of the first bad byte.
 std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::string_view bytes);
+// The same, taking over `bytes`: valid UTF-8 becomes the text without a copy.
+std::variant<SourceText, SourceReadError> decodeSourceBuffer(std::string path, std::string bytes);
 
 }  // namespace m350::gcode

@@ -17,4 +17,19 @@ const char* keywordSpelling(Keyword k) {
     return spellings[static_cast<int>(k)];
 }
 
+std::string_view tokenSource(const Token& token, std::string_view line) {
+    return line.substr(token.offset, token.length);
+}
+
+std::string_view commentText(const Token& token, std::string_view line) {
+    std::string_view text = tokenSource(token, line);
+    if (!text.empty() && text.front() == '(') {
+        text.remove_prefix(1);
+    }
+    if (!text.empty() && text.back() == ')') {
+        text.remove_suffix(1);
+    }
+    return text;
+}
+
 } // namespace m350::gcode

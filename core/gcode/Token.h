@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace m350::gcode {
 
@@ -18,21 +19,31 @@ enum class Keyword : std::uint8_t {
     Abs, Sin, Cos, Tan, Asin, Acos, Atan, Sqrt, Round, Fix, Fup, Ln, Exp, Bin, Bcd
 };
 
+// Why a token cannot be used; the message is built from it only when an error is reported.
+enum class TokenIssue : std::uint8_t {
+    None, UnknownWord, MalformedNumber, UnclosedComment, FullWidth, UnexpectedCharacter, LowerCaseKeyword
+};
+
+// A token refers to its text by position in the line, so lexing a line allocates nothing.
 struct Token {
     TokenKind kind = TokenKind::End;
-    std::uint32_t column = 0;    // 1-based, in characters
-    std::uint32_t offset = 0;    // byte offset in the line
-    std::uint32_t length = 0;    // bytes
-    double number = 0.0;
+    TokenIssue issue = TokenIssue::None;
     char letter = 0;
     Keyword keyword = Keyword::If;
     BinaryOp compare = BinaryOp::Eq;
-    std::string text; // comment text, or the characters of an Invalid token / unknown word
-    std::string problem; // a valid token written in a way the dialect refuses (`while` on the M350)
+    std::uint32_t column = 0; // 1-based, in characters
+    std::uint32_t offset = 0; // byte offset in the line
+    std::uint32_t length = 0; // bytes
+    double number = 0.0;
 };
 
 bool isFunctionKeyword(Keyword k);
 Function functionOf(Keyword k);
 const char* keywordSpelling(Keyword k);
+
+// The token's characters as written.
+std::string_view tokenSource(const Token& token, std::string_view line);
+// A comment token's text, without its parentheses.
+std::string_view commentText(const Token& token, std::string_view line);
 
 } // namespace m350::gcode

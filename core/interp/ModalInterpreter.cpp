@@ -3,9 +3,7 @@
 
 #include "core/config/ParameterNumbers.h"
 
-#include <array>
 #include <cmath>
-#include <optional>
 
 namespace m350::interp {
 
@@ -14,29 +12,6 @@ using macro::MacroError;
 using macro::WordValue;
 namespace param = config::param;
 
-struct ModalInterpreter::Words {
-    std::array<std::optional<WordValue>, 26> letter;
-    std::vector<WordValue> g;
-    std::vector<WordValue> m;
-
-    const std::optional<WordValue>& operator[](char c) const { return letter[static_cast<std::size_t>(c - 'A')]; }
-    bool hasG(double code) const {
-        for (const WordValue& w : g) {
-            if (std::abs(w.value - code) < 1e-6) {
-                return true;
-            }
-        }
-        return false;
-    }
-    bool hasAxis() const {
-        for (char axis : machine::kAxisNames) {
-            if ((*this)[axis]) {
-                return true;
-            }
-        }
-        return false;
-    }
-};
 
 namespace {
 
@@ -129,7 +104,8 @@ std::vector<std::string> ModalInterpreter::takeNotices() {
 }
 
 BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
-    Words words;
+    Words& words = words_; // reused across blocks
+    words.clear();
     for (const WordValue& w : block.words) {
         if (w.letter == 'G') {
             words.g.push_back(w);
@@ -139,33 +115,33 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
             words.m.push_back(w);
             continue;
         }
-        auto& slot = words.letter[static_cast<std::size_t>(w.letter - 'A')];
-        if (slot) {
+        if (words.has(w.letter)) {
             return {false, MacroError{AlarmCode::InvalidWord,
                                       std::string(1, w.letter) + " appears twice in one block", w.column}};
         }
-        slot = w;
+        words.letter[static_cast<std::size_t>(w.letter - 'A')] = w;
+        words.present |= Words::bit(w.letter);
     }
     try {
         // 1. F S T H D
         double unit = state_.inches() ? 25.4 : 1.0;
-        if (words['F']) {
-            if (words['F']->value < 0) {
-                invalid(*words['F'], "the feed cannot be negative");
+        if (words.find('F')) {
+            if (words.find('F')->value < 0) {
+                invalid(*words.find('F'), "the feed cannot be negative");
             }
-            state_.feed = words['F']->value * unit;
+            state_.feed = words.find('F')->value * unit;
         }
-        if (words['S']) {
-            state_.spindleSpeed = words['S']->value;
+        if (words.find('S')) {
+            state_.spindleSpeed = words.find('S')->value;
         }
-        if (words['T']) {
-            state_.selectedTool = roundToInt(words['T']->value);
+        if (words.find('T')) {
+            state_.selectedTool = roundToInt(words.find('T')->value);
         }
-        if (words['H']) {
-            state_.lengthOffset = roundToInt(words['H']->value);
+        if (words.find('H')) {
+            state_.lengthOffset = roundToInt(words.find('H')->value);
         }
-        if (words['D']) {
-            state_.radiusOffset = roundToInt(words['D']->value);
+        if (words.find('D')) {
+            state_.radiusOffset = roundToInt(words.find('D')->value);
         }
         // 2. spindle and coolant
         bool endProgram = false;
@@ -232,14 +208,14 @@ void ModalInterpreter::applyGCodes(const Words& words) {
         switch (code) {
         case 4: {
             double seconds = 0.0;
-            if (words['P']) {
-                if (words['P']->value < 0) { // M350 `G04 P-1`: wait for START
+            if (words.find('P')) {
+                if (words.find('P')->value < 0) { // M350 `G04 P-1`: wait for START
                     notices_.push_back("G04 P-1 waits for START (headless run: continued)");
                     break;
                 }
-                seconds = words['P']->value * dialect_.dwellPScale;
-            } else if (words['X'] && dialect_.dwellXSeconds) {
-                seconds = words['X']->value;
+                seconds = words.find('P')->value * dialect_.dwellPScale;
+            } else if (words.find('X') && dialect_.dwellXSeconds) {
+                seconds = words.find('X')->value;
             } else {
                 invalid(g, "G04 needs P<milliseconds>" + std::string(dialect_.dwellXSeconds ? " or X<seconds>" : ""));
             }
@@ -257,7 +233,7 @@ machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordi
     machine::Axes offset = workOffset();
     double unit = state_.inches() ? 25.4 : 1.0;
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
-        const auto& w = words[machine::kAxisNames[static_cast<std::size_t>(axis)]];
+        const auto* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)]);
         if (!w) {
             continue;
         }
@@ -279,7 +255,7 @@ void ModalInterpreter::moveAxes(const Words& words) {
         machine::Axes position = machine_.position();
         machine::Axes offset = workOffset();
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
-            if (const auto& w = words[machine::kAxisNames[static_cast<std::size_t>(axis)]]) {
+            if (const auto* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)])) {
                 int slot = dialect_.id == gcode::DialectId::M350 ? activeSlot() : WorkOffsets::kG92;
                 double current = offsets_.get(slot, axis);
                 offsets_.set(slot, axis, current + (position(axis) - offset(axis)) - w->value);
@@ -292,7 +268,7 @@ void ModalInterpreter::moveAxes(const Words& words) {
     }
     if (words.hasG(53)) {
         // One-shot machine coordinates; with F (the M350's `G53 Z#1306 F#1312`) a feed move
-        if (words['F']) {
+        if (words.find('F')) {
             machine_.feed(targetFor(words, true), state_.feed);
         } else {
             machine_.rapid(targetFor(words, true));
@@ -304,7 +280,7 @@ void ModalInterpreter::moveAxes(const Words& words) {
         machine_.rapid(targetFor(words, false));
         machine::Axes home = machine_.position();
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
-            if (words[machine::kAxisNames[static_cast<std::size_t>(axis)]]) {
+            if (words.find(machine::kAxisNames[static_cast<std::size_t>(axis)])) {
                 home(axis) = parameters_.get(param::kHomePositionX + axis);
             }
         }

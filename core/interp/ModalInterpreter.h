@@ -7,6 +7,9 @@
 #include "core/machine/MachineInterface.h"
 #include "core/macro/BlockSink.h"
 
+#include <array>
+#include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,7 +46,36 @@ public:
     std::vector<std::string> takeNotices();
 
 private:
-    struct Words;
+    // The words of one block by letter. `present` says which letters were written; clearing it is
+    // all a new block needs.
+    struct Words {
+        std::array<macro::WordValue, 26> letter{};
+        std::uint32_t present = 0;
+        std::vector<macro::WordValue> g;
+        std::vector<macro::WordValue> m;
+
+        void clear() {
+            present = 0;
+            g.clear();
+            m.clear();
+        }
+        static std::uint32_t bit(char c) { return 1u << static_cast<unsigned>(c - 'A'); }
+        bool has(char c) const { return (present & bit(c)) != 0; }
+        const macro::WordValue& operator[](char c) const { return letter[static_cast<std::size_t>(c - 'A')]; }
+        const macro::WordValue* find(char c) const { return has(c) ? &(*this)[c] : nullptr; }
+        bool hasG(double code) const {
+            for (const macro::WordValue& w : g) {
+                if (std::abs(w.value - code) < 1e-6) {
+                    return true;
+                }
+            }
+            return false;
+        }
+        bool hasAxis() const {
+            return (present & (bit('X') | bit('Y') | bit('Z') | bit('A') | bit('B'))) != 0;
+        }
+    };
+
     void applyGCodes(const Words& words);
     void moveAxes(const Words& words);
     machine::Axes targetFor(const Words& words, bool machineCoordinates) const;
@@ -53,6 +85,7 @@ private:
     WorkOffsets& offsets_;
     machine::MachineInterface& machine_;
     ModalState state_;
+    Words words_;
     std::vector<std::string> notices_;
 };
 

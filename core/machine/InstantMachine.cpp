@@ -42,6 +42,9 @@ void InstantMachine::dwell(double seconds) {
 }
 
 void InstantMachine::spindle(SpindleState state, double rpm) {
+    if (state == spindle_ && (state == SpindleState::Stop ? 0.0 : rpm) == rpm_) {
+        return;
+    }
     spindle_ = state;
     rpm_ = state == SpindleState::Stop ? 0.0 : rpm;
     MachineEvent event;
@@ -53,6 +56,9 @@ void InstantMachine::spindle(SpindleState state, double rpm) {
 }
 
 void InstantMachine::coolant(bool on) {
+    if (on == coolant_) {
+        return;
+    }
     coolant_ = on;
     MachineEvent event;
     event.type = MachineEvent::Type::Coolant;

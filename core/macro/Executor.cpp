@@ -8,7 +8,30 @@ namespace m350::macro {
 Executor::Executor(const gcode::Program& program, const gcode::Dialect& dialect, VariableStore& store,
                    MachineAccess& machine, BlockSink& sink, Options options)
     : program_(program), dialect_(dialect), store_(store), machine_(machine), sink_(sink),
-      options_(std::move(options)), evaluator_(program.expressions, dialect, store, machine) {}
+      options_(std::move(options)), evaluator_(program.expressions, dialect, store, machine) {
+    indexHandlers();
+}
+
+void Executor::indexHandlers() {
+    constexpr int kIndexed = 1000;
+    gHandlers_.assign(kIndexed, -1);
+    mHandlers_.assign(kIndexed, -1);
+    for (int code = 0; code < kIndexed; ++code) {
+        if (dialect_.gHandlerBase >= 0) {
+            if (auto unit = program_.findHandler(dialect_.gHandlerBase + code, gcode::FileRole::GLibrary)) {
+                gHandlers_[static_cast<std::size_t>(code)] = static_cast<std::int32_t>(*unit);
+            }
+        }
+        if (dialect_.mHandlerBase >= 0) {
+            if (auto unit = program_.findHandler(dialect_.mHandlerBase + code, gcode::FileRole::MLibrary)) {
+                mHandlers_[static_cast<std::size_t>(code)] = static_cast<std::int32_t>(*unit);
+            }
+        }
+    }
+    if (dialect_.tCodeProgram >= 0) {
+        tCodeUnit_ = program_.findUnit(dialect_.tCodeProgram);
+    }
+}
 
 bool Executor::start(std::uint32_t unit) {
     if (unit >= program_.units.size()) {
@@ -57,7 +80,7 @@ Executor::State Executor::step() {
     std::size_t frameIndex = frames_.size() - 1;
     Frame& frame = frames_[frameIndex];
     if (frame.pc >= program_.units[frame.unit].end) {
-        returnFromFrame(std::nullopt, 0); // the end of an O program returns as M99 does
+        returnFromFrame(std::nullopt, 0, false); // the end of an O program returns as M99 does
         return state_;
     }
     current_ = frame.pc;
@@ -81,6 +104,11 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
     if ((block.blockDelete && options_.blockDelete) || block.programNumber >= 0) {
         ++frame.pc;
         return;
+    }
+    if (block.suspect) {
+        auto found = program_.suspects.find(static_cast<std::uint32_t>(&block - program_.blocks.data()));
+        throw MacroError{AlarmCode::SuspectLine, found != program_.suspects.end() ? found->second : "suspect line",
+                         0};
     }
     switch (block.control) {
     case Control::None: executeOrdinary(block, frameIndex); return;
@@ -140,8 +168,16 @@ void Executor::jumpToLabel(std::size_t frameIndex, double label, std::uint32_t c
                      "GOTO" + std::to_string(n) + ": there is no N" + std::to_string(n) + " in " + where, column};
 }
 
-void Executor::returnFromFrame(std::optional<double> label, std::uint32_t column) {
+void Executor::returnFromFrame(std::optional<double> label, std::uint32_t column, bool explicitM99) {
     Frame& frame = frames_.back();
+    if (frames_.size() == 1 && explicitM99 && dialect_.m99RestartsMain) {
+        // FANUC: M99 in the main program runs it again (from label P when given), until M30 or a stop
+        frame.pc = program_.units[frame.unit].begin;
+        if (label) {
+            jumpToLabel(0, *label, column);
+        }
+        return;
+    }
     if (frame.repeatsLeft > 1) {
         --frame.repeatsLeft;
         frame.pc = program_.units[frame.unit].begin;

@@ -63,11 +63,15 @@ private:
 
     void executeBlock(const gcode::Block& block, std::size_t frameIndex);
     void executeOrdinary(const gcode::Block& block, std::size_t frameIndex);
+    bool mayCall(const EvaluatedBlock& block) const;
+    bool sendToSink(const EvaluatedBlock& block, std::size_t frameIndex);
     void jumpToLabel(std::size_t frameIndex, double label, std::uint32_t column);
-    void returnFromFrame(std::optional<double> label, std::uint32_t column);
+    void returnFromFrame(std::optional<double> label, std::uint32_t column, bool explicitM99);
     void pushCall(const Call& call, std::uint32_t column);
     bool handlingCode(std::int32_t code) const;
     std::uint32_t programUnit(double number, const char* how, std::uint32_t column) const;
+    std::optional<std::uint32_t> handlerFor(char letter, int code) const;
+    void indexHandlers();
 
     const gcode::Program& program_;
     const gcode::Dialect& dialect_;
@@ -78,6 +82,11 @@ private:
     Evaluator evaluator_;
 
     std::vector<Frame> frames_;
+    EvaluatedBlock scratch_;
+    // Handler programs of G and M codes 0..999 (unit index, -1 none), looked up once, not per block.
+    std::vector<std::int32_t> gHandlers_;
+    std::vector<std::int32_t> mHandlers_;
+    std::optional<std::uint32_t> tCodeUnit_;
     State state_ = State::Idle;
     std::optional<Alarm> alarm_;
     std::uint32_t current_ = 0;

@@ -24,6 +24,68 @@ bool wholeNumber(double v) {
 
 } // namespace
 
+std::optional<std::uint32_t> Executor::handlerFor(char letter, int code) const {
+    const auto& table = letter == 'M' ? mHandlers_ : gHandlers_;
+    if (code >= 0 && static_cast<std::size_t>(code) < table.size()) {
+        std::int32_t unit = table[static_cast<std::size_t>(code)];
+        return unit < 0 ? std::nullopt : std::optional<std::uint32_t>(static_cast<std::uint32_t>(unit));
+    }
+    int base = letter == 'M' ? dialect_.mHandlerBase : dialect_.gHandlerBase;
+    if (base < 0) {
+        return std::nullopt;
+    }
+    return program_.findHandler(base + code, letter == 'M' ? gcode::FileRole::MLibrary : gcode::FileRole::GLibrary);
+}
+
+// Whether any word of the block may start a call; most blocks (G1 X.. Y..) do not, and skip the
+// call planning below.
+bool Executor::mayCall(const EvaluatedBlock& block) const {
+    for (const WordValue& w : block.words) {
+        switch (w.letter) {
+        case 'T':
+            if (tCodeUnit_ && !handlingCode(codeKey('T', 0))) {
+                return true;
+            }
+            break;
+        case 'G':
+        case 'M':
+            if (!wholeNumber(w.value)) {
+                break;
+            }
+            if ((w.letter == 'G' && isCode(w, 'G', 65)) ||
+                (w.letter == 'M' && (isCode(w, 'M', 98) || isCode(w, 'M', 99))) ||
+                options_.codePrograms.count({w.letter, roundToInt(w.value)}) != 0 ||
+                handlerFor(w.letter, roundToInt(w.value))) {
+                return true;
+            }
+            break;
+        default: break;
+        }
+    }
+    return false;
+}
+
+// Hands the block's remaining words to the modal interpreter and moves to the next block.
+// False when the program ended (M30, M02).
+bool Executor::sendToSink(const EvaluatedBlock& block, std::size_t frameIndex) {
+    if (!block.words.empty()) {
+        BlockOutcome outcome = sink_.execute(block);
+        if (outcome.error) {
+            throw *outcome.error;
+        }
+        if (outcome.endProgram) {
+            while (store_.localDepth() > 1) {
+                store_.popLocals();
+            }
+            frames_.clear();
+            state_ = State::Finished;
+            return false;
+        }
+    }
+    ++frames_[frameIndex].pc;
+    return true;
+}
+
 void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex) {
     for (const gcode::Assignment& a : block.assignments) {
         int number = evaluator_.variableNumber(a.index);
@@ -33,13 +95,18 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         ++frames_[frameIndex].pc;
         return;
     }
-    EvaluatedBlock evaluated{&block, {}};
-    evaluated.words.reserve(block.words.size());
+    EvaluatedBlock& evaluated = scratch_; // reused: executing a block allocates nothing
+    evaluated.source = &block;
+    evaluated.words.clear();
     for (const gcode::Word& w : block.words) {
         Value v = evaluator_.evaluate(w.value);
         if (!v.vacant) { // FANUC: an address whose value is vacant is as if not written
             evaluated.words.push_back({w.letter, v.number, w.column});
         }
+    }
+    if (!mayCall(evaluated)) {
+        sendToSink(evaluated, frameIndex);
+        return;
     }
     auto& words = evaluated.words;
     auto take = [&words](auto predicate) -> std::optional<WordValue> {
@@ -52,11 +119,15 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         return w;
     };
     auto takeLetter = [&take](char letter) { return take([letter](const WordValue& w) { return w.letter == letter; }); };
-    auto takeArguments = [&words](const std::array<std::int8_t, 26>& map, std::vector<std::pair<int, double>>& out) {
+    // G65 and M98 take every letter their specification maps (FANUC: M#13, T#20); a handler called
+    // for a G or M code leaves the block's other codes alone.
+    auto takeArguments = [&words](const std::array<std::int8_t, 26>& map, std::vector<std::pair<int, double>>& out,
+                                  bool codesAreArguments) {
         std::vector<WordValue> kept;
         for (const WordValue& w : words) {
             int variable = map[static_cast<std::size_t>(w.letter - 'A')];
-            if (variable >= 0 && w.letter != 'G' && w.letter != 'M' && w.letter != 'T' && w.letter != 'N') {
+            bool code = w.letter == 'G' || w.letter == 'M' || w.letter == 'T';
+            if (variable >= 0 && w.letter != 'N' && (codesAreArguments || !code)) {
                 out.emplace_back(variable, w.value);
             } else {
                 kept.push_back(w);
@@ -81,7 +152,7 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         WordValue p = needP(*g65, "G65");
         auto l = takeLetter('L');
         Call call{programUnit(p.value, "G65", p.column), l ? std::llround(l->value) : 1, true, -1, {}};
-        takeArguments(dialect_.callArguments, call.arguments);
+        takeArguments(dialect_.callArguments, call.arguments, true);
         calls.push_back(std::move(call));
         callColumn = g65->column;
     }
@@ -91,7 +162,7 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         Call call{programUnit(p.value, "M98", p.column), l ? std::llround(l->value) : 1,
                   dialect_.m98OpensLocalLevel, -1, {}};
         if (dialect_.m98OpensLocalLevel) {
-            takeArguments(dialect_.callArguments, call.arguments);
+            takeArguments(dialect_.callArguments, call.arguments, true);
         }
         calls.push_back(std::move(call));
         callColumn = m98->column;
@@ -100,7 +171,7 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         m99Label = takeLetter('P');
     }
     if (dialect_.tCodeProgram >= 0 && !handlingCode(codeKey('T', 0))) {
-        if (auto unit = program_.findUnit(dialect_.tCodeProgram)) {
+        if (auto unit = tCodeUnit_) {
             if (auto t = takeLetter('T')) {
                 // `T5` runs O20000 as `M98 P20000 X5` does; #1504 holds the target tool
                 evaluator_.writeVariable(1504, Value::of(t->value), {}, t->column);
@@ -127,10 +198,8 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         if (auto it = options_.codePrograms.find({w.letter, n}); it != options_.codePrograms.end()) {
             unit = programUnit(it->second, isM ? "M code program" : "G code program", w.column);
             mapped = true;
-        } else if (isM && dialect_.mHandlerBase >= 0) {
-            unit = program_.findHandler(dialect_.mHandlerBase + n, gcode::FileRole::MLibrary);
-        } else if (!isM && dialect_.gHandlerBase >= 0) {
-            unit = program_.findHandler(dialect_.gHandlerBase + n, gcode::FileRole::GLibrary);
+        } else {
+            unit = handlerFor(w.letter, n);
         }
         if (!unit || handlingCode(key)) {
             ++i;
@@ -140,30 +209,18 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         // A code mapped by the machine (M6 -> O9001) is a subprogram call; a handler gets arguments.
         Call call{*unit, 1, mapped ? dialect_.m98OpensLocalLevel : true, key, {}};
         if (!mapped) {
-            takeArguments(isM ? dialect_.callArguments : dialect_.handlerArguments, call.arguments);
+            takeArguments(isM ? dialect_.callArguments : dialect_.handlerArguments, call.arguments, false);
         }
         calls.push_back(std::move(call));
         callColumn = w.column;
     }
 
-    if (!words.empty()) {
-        BlockOutcome outcome = sink_.execute(evaluated);
-        if (outcome.error) {
-            throw *outcome.error;
-        }
-        if (outcome.endProgram) {
-            while (store_.localDepth() > 1) {
-                store_.popLocals();
-            }
-            frames_.clear();
-            state_ = State::Finished;
-            return;
-        }
+    if (!sendToSink(evaluated, frameIndex)) {
+        return;
     }
-    ++frames_[frameIndex].pc;
     if (m99) {
         returnFromFrame(m99Label ? std::optional<double>(m99Label->value) : std::nullopt,
-                        m99Label ? m99Label->column : m99->column);
+                        m99Label ? m99Label->column : m99->column, true);
         return;
     }
     for (auto it = calls.rbegin(); it != calls.rend(); ++it) {

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -182,6 +184,59 @@ TEST(ControllerM350, BundledToolChangeRefusesWhenNotHomed) {
     EXPECT_NE(run.report.messages[0].find("归零"), std::string::npos) << run.report.messages[0];
 }
 
+// G handlers O9000+n come from the G library, M handlers O10000+n from the M library; the
+// program's own O number wins over both.
+TEST(ControllerM350, HandlersComeFromTheirLibraries) {
+    auto config = m350Machine();
+    std::string gLibrary = m350::test::writeTempFile(
+        lines({"O9100", "#60 = #0", "#61 = #1", "M99", "O9101", "#63 = 1", "M99", "O10101", "#64 = 1", "M99"}));
+    std::string mLibrary = m350::test::writeTempFile(lines({"O10100", "#62 = #1", "M99"}));
+    config.libraries = {{gLibrary, m350::gcode::FileRole::GLibrary}, {mLibrary, m350::gcode::FileRole::MLibrary}};
+    auto withLibraries = config;
+
+    auto run = runProgram(config, lines({"G100 X3 Y4", "M100 X5", "G101", "M30", "O9101", "#65 = 1", "M99"}));
+    EXPECT_RUN_OK(run);
+    EXPECT_DOUBLE_EQ(run.number(60), 3);
+    EXPECT_DOUBLE_EQ(run.number(61), 4);
+    EXPECT_DOUBLE_EQ(run.number(62), 5);
+    EXPECT_DOUBLE_EQ(run.number(63), 0); // the program's own O9101 ran instead
+    EXPECT_DOUBLE_EQ(run.number(65), 1);
+
+    // O10101 sits in the G library, so M101 has no handler: an unknown M code
+    auto wrongLibrary = runProgram(withLibraries, lines({"#100 = 1", "M101", "M30"}));
+    EXPECT_EQ(wrongLibrary.report.status, RunStatus::Alarm);
+    ASSERT_TRUE(wrongLibrary.report.alarm);
+    EXPECT_EQ(wrongLibrary.report.alarm->code, AlarmCode::InvalidWord) << wrongLibrary.alarmText();
+    EXPECT_EQ(wrongLibrary.report.alarm->line, 2u);
+    EXPECT_DOUBLE_EQ(wrongLibrary.number(64), 0);
+    std::remove(gLibrary.c_str());
+    std::remove(mLibrary.c_str());
+}
+
+// An alarm inside a library names the library file and its line.
+TEST(ControllerM350, AlarmInTheLibraryNamesTheLibraryLine) {
+    RunSettings settings;
+    settings.heldInputs[7] = 1; // the spindle never reports stopped
+    settings.maxSimTime = 2;
+    auto config = bundledMachine();
+    std::string library = config.libraries.empty() ? std::string() : config.libraries.front().path;
+    auto run = runProgram(std::move(config), lines({"#100 = 1", "T3", "M30"}), settings);
+    EXPECT_EQ(run.report.status, RunStatus::Alarm);
+    ASSERT_TRUE(run.report.alarm);
+    EXPECT_EQ(run.report.alarm->code, AlarmCode::SimulatedTimeLimit);
+    EXPECT_EQ(run.report.alarm->file, "slib-g.nc");
+    std::ifstream in(library);
+    std::string text;
+    for (std::uint32_t n = 0; n < run.report.alarm->line && std::getline(in, text); ++n) {
+    }
+    EXPECT_TRUE(text.find("DO1") != std::string::npos || text.find("G04 P10") != std::string::npos ||
+                text.find("END1") != std::string::npos)
+        << "line " << run.report.alarm->line << ": " << text;
+    EXPECT_EQ(run.report.tool, 1);
+    EXPECT_DOUBLE_EQ(run.number(100), 1);
+    EXPECT_DOUBLE_EQ(run.number(1504), 3);
+}
+
 TEST(ControllerM350, SettingsOverrideParametersVariablesAndTool) {
     RunSettings settings;
     settings.parameters[129] = 12;
@@ -204,6 +259,16 @@ TEST(ControllerM350, MdiLinesRun) {
     EXPECT_NEAR(r.machine(0), 5, kEps);
     EXPECT_NEAR(r.machine(1), -2, kEps);
     EXPECT_DOUBLE_EQ(c.variable(880).number, 5);
+
+    Controller failing(m350Machine(), RunSettings{});
+    ASSERT_TRUE(failing.loadMdi({"#100 = 1", "#101 = 1 / 0"}));
+    RunReport alarmed = failing.run();
+    EXPECT_EQ(alarmed.status, RunStatus::Alarm);
+    ASSERT_TRUE(alarmed.alarm);
+    EXPECT_EQ(alarmed.alarm->code, AlarmCode::DivisionByZero);
+    EXPECT_EQ(alarmed.alarm->file, "MDI");
+    EXPECT_EQ(alarmed.alarm->line, 2u);
+    EXPECT_DOUBLE_EQ(failing.variable(100).number, 1);
 }
 
 TEST(ControllerM350, SyntaxErrorPreventsTheRun) {
@@ -256,13 +321,17 @@ void checkAlarms(bool fanuc, const std::vector<AlarmCase>& cases) {
     }
 }
 
-std::vector<AlarmCase> commonAlarmCases(const char* readOnlyWrite) {
+std::vector<AlarmCase> commonAlarmCases(const char* readOnlyWrite, const char* indirectReadOnlyWrite) {
     return {
         {"division by zero", {"#100 = 1", "#101 = 1 / [#100 - 1]", "#102 = 1", "M30"}, AlarmCode::DivisionByZero, 2},
         {"computed GOTO to a missing N", {"#100 = 1", "#1 = 77", "GOTO #1", "#102 = 1", "N78 M30"},
          AlarmCode::GotoMissingLabel, 3},
-        {"computed GOTO[expr]", {"#100 = 1", "#102 = 0", "GOTO [#100 + 1]", "#102 = 1", "M30"},
+        {"computed GOTO[expr]", {"#100 = 1", "#102 = 0", "GOTO[#100 + 1]", "#102 = 1", "M30"},
          AlarmCode::GotoMissingLabel, 3},
+        {"GOTO to an N of another program", {"#100 = 1", "M98 P100", "N5 #102 = 1", "M30", "O100", "GOTO 5", "M99"},
+         AlarmCode::GotoMissingLabel, 6},
+        {"indirect write to a read-only variable", {"#100 = 1", "#1 = 1", indirectReadOnlyWrite, "#102 = 1", "M30"},
+         AlarmCode::ReadOnlyVariable, 3},
         {"END without DO", {"#100 = 1", "#101 = 2", "END1", "#102 = 1", "M30"}, AlarmCode::EndWithoutDo, 3},
         {"read-only variable", {"#100 = 1", readOnlyWrite, "#102 = 1", "M30"}, AlarmCode::ReadOnlyVariable, 2},
         {"M98 calls itself",
@@ -277,16 +346,16 @@ std::vector<AlarmCase> commonAlarmCases(const char* readOnlyWrite) {
 }
 
 TEST(ControllerAlarms, M350) {
-    checkAlarms(false, commonAlarmCases("#1520 = 1"));
+    checkAlarms(false, commonAlarmCases("#1520 = 1", "#[1520 + #1 - 1] = 1"));
 }
 
 TEST(ControllerAlarms, Fanuc) {
-    auto cases = commonAlarmCases("#5021 = 1");
+    auto cases = commonAlarmCases("#5021 = 1", "#[5020 + #1] = 1");
     cases.push_back({"G65 calls itself",
                      {"#100 = 1", "G65 P100", "#102 = 1", "M30", "O100", "#101 = #101 + 1", "G65 P100", "M99"},
                      AlarmCode::CallNestingTooDeep, 7});
     cases.push_back({"#0 is read-only", {"#100 = 1", "#0 = 1", "#102 = 1", "M30"}, AlarmCode::ReadOnlyVariable, 2});
-    cases.push_back({"macro alarm", {"#100 = 1", "#3000 = 7 (STOP HERE)", "#102 = 1", "M30"}, AlarmCode::MacroAlarm, 2});
+    cases.push_back({"macro alarm", {"#100 = 1", "#3000=7(STOP HERE)", "#102 = 1", "M30"}, AlarmCode::MacroAlarm, 2});
     checkAlarms(true, cases);
 }
 

@@ -258,7 +258,7 @@ TEST(EvaluatorFanuc, BitwiseOperatorsAndMod) {
 TEST(EvaluatorFanuc, AtanSlashAnswersZeroTo360) {
     auto run = runFanuc(lines({
         "#1 = ATAN[1]/[1]", "#2 = ATAN[1]/[-1]", "#3 = ATAN[-1]/[-1]", "#4 = ATAN[-1]/[1]",
-        "#5 = ATAN[0]/[1]", "#6 = ATAN[-1]/[0]", "#7 = ATAN[0]/[-1]", "M30",
+        "#5 = ATAN[0]/[1]", "#6 = ATAN[-1]/[0]", "#7 = ATAN[0]/[-1]", "#8 = ATAN[1]/[1] * 2", "M30",
     }));
     EXPECT_RUN_OK(run);
     EXPECT_NEAR(run.number(1), 45, kEps);
@@ -268,6 +268,7 @@ TEST(EvaluatorFanuc, AtanSlashAnswersZeroTo360) {
     EXPECT_NEAR(run.number(5), 0, kEps);
     EXPECT_NEAR(run.number(6), 270, kEps);
     EXPECT_NEAR(run.number(7), 180, kEps);
+    EXPECT_NEAR(run.number(8), 90, kEps); // the /[b] belongs to ATAN, the * 2 applies to its result
 }
 
 TEST(EvaluatorFanuc, ExtendedFunctions) {

@@ -326,7 +326,7 @@ TEST(ExecutorFanuc, GotoSearchesBothDirectionsAndM99P) {
 }
 
 TEST(ExecutorFanuc, Alarm3000StopsWithTheText) {
-    auto run = runFanuc(lines({"#100 = 1", "#3000 = 1 (TOOL NOT FOUND)", "#101 = 1", "M30"}));
+    auto run = runFanuc(lines({"#100 = 1", "#3000=1(TOOL NOT FOUND)", "#101 = 1", "M30"}));
     EXPECT_EQ(run.report.status, RunStatus::Alarm);
     ASSERT_TRUE(run.report.alarm);
     EXPECT_EQ(run.report.alarm->code, AlarmCode::MacroAlarm);

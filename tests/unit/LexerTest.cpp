@@ -1,8 +1,8 @@
 // The lexer on its own: token kinds, values and positions (1-based character columns, byte offsets)
 // for the M350 and FANUC lexical rules.
 
-#include "core/gcode/Dialect.h"
 #include "core/gcode/Lexer.h"
+#include "core/gcode/Dialect.h"
 #include "core/gcode/Token.h"
 
 #include <gtest/gtest.h>
@@ -15,44 +15,103 @@ using namespace m350::gcode;
 
 namespace {
 
-std::vector<Token> lexM350(std::string_view line) {
-    return Lexer(Dialect::m350()).tokenize(line);
+// A token with the texts the lexer derives on demand: what a comment says, what is wrong with an
+// invalid token, or how a valid one was written; `problem` for a valid token the dialect refuses.
+struct LexedToken : Token {
+    std::string text;
+    std::string problem;
+};
+
+std::vector<LexedToken> lex(const Dialect& dialect, std::string_view line) {
+    Lexer lexer(dialect);
+    std::vector<LexedToken> out;
+    for (const Token& t : lexer.tokenize(line)) {
+        LexedToken lexed{t, {}, {}};
+        if (t.kind == TokenKind::Invalid) {
+            lexed.text = lexer.issueMessage(t, line);
+        } else if (t.kind == TokenKind::Comment) {
+            lexed.text = std::string(commentText(t, line));
+        } else {
+            lexed.text = std::string(tokenSource(t, line));
+            lexed.problem = lexer.issueMessage(t, line);
+        }
+        out.push_back(std::move(lexed));
+    }
+    return out;
 }
 
-std::vector<Token> lexFanuc(std::string_view line) {
-    return Lexer(Dialect::fanuc()).tokenize(line);
+std::vector<LexedToken> lexM350(std::string_view line) {
+    return lex(Dialect::m350(), line);
+}
+
+std::vector<LexedToken> lexFanuc(std::string_view line) {
+    return lex(Dialect::fanuc(), line);
 }
 
 // One letter per token, so a whole line's shape reads at a glance:
 // L letter, 9 number, K keyword, # hash, [ ] + - * / , = as written, C compare, ( comment,
 // % percent, ! invalid, $ end.
-std::string shape(const std::vector<Token>& tokens) {
+std::string shape(const std::vector<LexedToken>& tokens) {
     std::string out;
     for (const Token& t : tokens) {
         switch (t.kind) {
-        case TokenKind::Number: out += '9'; break;
-        case TokenKind::Letter: out += 'L'; break;
-        case TokenKind::Keyword: out += 'K'; break;
-        case TokenKind::Hash: out += '#'; break;
-        case TokenKind::LBracket: out += '['; break;
-        case TokenKind::RBracket: out += ']'; break;
-        case TokenKind::Plus: out += '+'; break;
-        case TokenKind::Minus: out += '-'; break;
-        case TokenKind::Star: out += '*'; break;
-        case TokenKind::Slash: out += '/'; break;
-        case TokenKind::Comma: out += ','; break;
-        case TokenKind::Assign: out += '='; break;
-        case TokenKind::Compare: out += 'C'; break;
-        case TokenKind::Comment: out += '('; break;
-        case TokenKind::Percent: out += '%'; break;
-        case TokenKind::Invalid: out += '!'; break;
-        case TokenKind::End: out += '$'; break;
+        case TokenKind::Number:
+            out += '9';
+            break;
+        case TokenKind::Letter:
+            out += 'L';
+            break;
+        case TokenKind::Keyword:
+            out += 'K';
+            break;
+        case TokenKind::Hash:
+            out += '#';
+            break;
+        case TokenKind::LBracket:
+            out += '[';
+            break;
+        case TokenKind::RBracket:
+            out += ']';
+            break;
+        case TokenKind::Plus:
+            out += '+';
+            break;
+        case TokenKind::Minus:
+            out += '-';
+            break;
+        case TokenKind::Star:
+            out += '*';
+            break;
+        case TokenKind::Slash:
+            out += '/';
+            break;
+        case TokenKind::Comma:
+            out += ',';
+            break;
+        case TokenKind::Assign:
+            out += '=';
+            break;
+        case TokenKind::Compare:
+            out += 'C';
+            break;
+        case TokenKind::Comment:
+            out += '(';
+            break;
+        case TokenKind::Percent:
+            out += '%';
+            break;
+        case TokenKind::Invalid:
+            out += '!';
+            break;
+        case TokenKind::End:
+            out += '$';
+            break;
         }
     }
     return out;
 }
 
-std::vector<std::uint32_t> columns(const std::vector<Token>& tokens) {
+std::vector<std::uint32_t> columns(const std::vector<LexedToken>& tokens) {
     std::vector<std::uint32_t> out;
     for (const Token& t : tokens) {
         out.push_back(t.column);
@@ -93,6 +152,16 @@ TEST(Lexer, LettersAreUpperCasedAndKeywordsKeepTheirSpelling) {
     EXPECT_EQ(tokens[4].keyword, Keyword::Goto);
     EXPECT_EQ(tokens[4].text, "goto");
     EXPECT_EQ(tokens[4].column, 8u);
+    // Addresses may be lower case on the M350, keywords may not; FANUC takes both.
+    EXPECT_TRUE(tokens[0].problem.empty());
+    EXPECT_EQ(tokens[4].problem, "keywords are upper case in the m350 dialect: write GOTO, not goto");
+    EXPECT_TRUE(lexM350("GOTO5")[0].problem.empty());
+    auto fanuc = lexFanuc("goto5 While");
+    ASSERT_EQ(shape(fanuc), "K9K$");
+    EXPECT_TRUE(fanuc[0].problem.empty());
+    EXPECT_EQ(fanuc[2].keyword, Keyword::While);
+    EXPECT_EQ(fanuc[2].text, "While");
+    EXPECT_TRUE(fanuc[2].problem.empty());
 }
 
 TEST(Lexer, LabelThenWhileWithoutSpaces) {
@@ -129,7 +198,8 @@ TEST(Lexer, EveryKeywordIsRecognised) {
 TEST(Lexer, ComparisonOperators) {
     auto tokens = lexM350("== != < > <= >= =");
     ASSERT_EQ(shape(tokens), "CCCCCC=$");
-    const BinaryOp expected[] = {BinaryOp::Eq, BinaryOp::Ne, BinaryOp::Lt, BinaryOp::Gt, BinaryOp::Le, BinaryOp::Ge};
+    const BinaryOp expected[] = {BinaryOp::Eq, BinaryOp::Ne, BinaryOp::Lt,
+                                 BinaryOp::Gt, BinaryOp::Le, BinaryOp::Ge};
     const char* text[] = {"==", "!=", "<", ">", "<=", ">="};
     for (int i = 0; i < 6; ++i) {
         EXPECT_EQ(tokens[i].compare, expected[i]) << text[i];

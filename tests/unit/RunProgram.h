@@ -19,6 +19,7 @@
 #include <initializer_list>
 #include <memory>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -117,6 +118,8 @@ inline ProgramRun loadProgram(config::MachineConfig config, const std::string& t
     run.fileName = std::filesystem::path(run.path).filename().string();
     run.controller = std::make_unique<controller::Controller>(std::move(config), std::move(settings));
     run.loaded = run.controller->loadFile(run.path);
+    std::error_code ignored;
+    std::filesystem::remove(run.path, ignored); // parsed once: the run no longer reads the file
     return run;
 }
 

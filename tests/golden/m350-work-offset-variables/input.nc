@@ -1,4 +1,4 @@
-(work offsets #805-#809 (G54), active system #578, positions #850-#884)
+(work offsets #805-#809 are G54, #578 is the active system, #850-#884 positions)
 #100=#805
 #101=#807
 G55
