@@ -2,6 +2,7 @@
 #include "core/common/Numeric.h"
 
 #include "core/gcode/Lexer.h"
+#include "core/gcode/PlainBlockParser.h"
 
 #include <cmath>
 
@@ -13,6 +14,14 @@ BlockParser::BlockParser(const Dialect& dialect, ExpressionPool& pool, WordArena
       fileIndex_(fileIndex) {}
 
 std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lineNumber) {
+    if (plainPath_) {
+        Block plain;
+        switch (parsePlainBlock(line, dialect_, {fileIndex_, lineNumber, 0}, pool_, words_, plain)) {
+        case PlainResult::Parsed: return plain;
+        case PlainResult::Empty: return std::nullopt;
+        case PlainResult::Declined: break;
+        }
+    }
     line_ = line;
     lineNumber_ = lineNumber;
     Lexer(dialect_).tokenize(line, tokens_);

@@ -30,6 +30,9 @@ public:
     // Returns nothing for a line without content (blank, comment only, `%`) or with a syntax error.
     std::optional<Block> parse(std::string_view line, std::uint32_t lineNumber);
 
+    // Plain-word lines take a fast path by default; tests turn it off to compare both paths.
+    void setPlainPath(bool enabled) { plainPath_ = enabled; }
+
     // The lint finding of the block just parsed (empty when none).
     const std::string& lastLint() const { return lastLint_; }
 
@@ -93,6 +96,7 @@ private:
     std::size_t pos_ = 0;
     int depth_ = 0; // nesting of brackets, signs and indirections in the current expression
     std::string lastLint_;
+    bool plainPath_ = true;
 };
 
 } // namespace m350::gcode

@@ -1,5 +1,7 @@
 #include "core/gcode/Lexer.h"
 
+#include "core/gcode/DecimalScan.h"
+
 #include <charconv>
 #include <optional>
 
@@ -46,41 +48,8 @@ const char* asciiFor(std::string_view character) {
 // Plain decimals, the bulk of every program, in one pass: when the digits form an integer below
 // 2^53 and there are at most 22 after the point, mantissa / 10^k is one correctly rounded
 // division, so the result equals what from_chars gives (Clinger's fast path).
-constexpr double kPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                                   1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-
-bool parseDecimalFast(std::string_view digits, double& value) {
-    const auto& kPowers = kPowersOfTen;
-    std::uint64_t mantissa = 0;
-    int fraction = -1; // digits after the point; -1 before the point
-    int significant = 0;
-    for (char ch : digits) {
-        if (ch == '.') {
-            if (fraction >= 0) {
-                return false;
-            }
-            fraction = 0;
-            continue;
-        }
-        mantissa = mantissa * 10 + static_cast<std::uint64_t>(ch - '0');
-        significant += (mantissa != 0) ? 1 : 0;
-        fraction += fraction >= 0 ? 1 : 0;
-        if (significant > 15) {
-            return false;
-        }
-    }
-    int scale = fraction < 0 ? 0 : fraction;
-    if (scale > 22) {
-        return false;
-    }
-    value = static_cast<double>(mantissa) / kPowers[scale];
-    return true;
-}
-
+// The general conversion, for numbers scanDecimal leaves alone.
 bool parseNumber(std::string_view digits, double& value) {
-    if (parseDecimalFast(digits, value)) {
-        return true;
-    }
     if (digits.back() == '.') {
         digits.remove_suffix(1); // `1.` is FANUC's 1.0
     }
@@ -175,29 +144,12 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens) const {
             continue;
         }
         if (isDigit(ch) || (ch == '.' && isDigit(at(i + 1)))) {
-            // Scan and convert in one pass (see parseDecimalFast); anything unusual takes the slow path.
-            std::uint64_t mantissa = 0;
-            int fraction = -1;
-            int significant = 0;
-            bool fast = true;
-            for (; i < size; ++i) {
-                char c = text[i];
-                if (isDigit(c)) {
-                    mantissa = mantissa * 10 + static_cast<std::uint64_t>(c - '0');
-                    significant += mantissa != 0 ? 1 : 0;
-                    fraction += fraction >= 0 ? 1 : 0;
-                } else if (c == '.') {
-                    fast &= fraction < 0;
-                    fraction = 0;
-                } else {
-                    break;
-                }
-            }
+            double value = 0.0;
+            bool converted = scanDecimal(text, size, i, value);
             column += static_cast<std::uint32_t>(i - start);
             Token& t = emit(TokenKind::Number, start, startColumn);
-            int scale = fraction < 0 ? 0 : fraction;
-            if (fast && significant <= 15 && scale <= 22) {
-                t.number = static_cast<double>(mantissa) / kPowersOfTen[scale];
+            if (converted) {
+                t.number = value;
             } else if (!parseNumber(line.substr(start, i - start), t.number)) {
                 t.kind = TokenKind::Invalid;
                 t.issue = TokenIssue::MalformedNumber;

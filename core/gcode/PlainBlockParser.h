@@ -1,0 +1,21 @@
+#pragma once
+
+#include "core/gcode/Block.h"
+#include "core/gcode/Dialect.h"
+#include "core/gcode/Expression.h"
+#include "core/gcode/WordArena.h"
+
+#include <string_view>
+
+namespace m350::gcode {
+
+enum class PlainResult { Declined, Empty, Parsed };
+
+// The fast path for the lines that make up most programs: address words with plain numbers
+// (`N10 G1 X12.5 Y-3 F1000 (rough)`), read straight from the characters. Anything else (macro
+// syntax, keywords, malformed numbers, O lines, block delete) is Declined and left to the general
+// BlockParser, which gives the same result for every line this accepts (tested).
+PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, SourceLocation location,
+                            ExpressionPool& pool, WordArena& words, Block& out);
+
+} // namespace m350::gcode

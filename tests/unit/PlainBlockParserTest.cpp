@@ -1,0 +1,118 @@
+// The plain-word fast path must give exactly what the general parser gives, for every line it
+// accepts, and must leave every other line to the general parser.
+#include "core/gcode/BlockParser.h"
+#include "core/gcode/Dialect.h"
+#include "core/gcode/PlainBlockParser.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace m350::gcode;
+
+struct Parsed {
+    std::optional<Block> block;
+    ExpressionPool pool;
+    WordArena words;
+    std::vector<Diagnostic> diagnostics;
+};
+
+void parseWith(bool plainPath, const Dialect& dialect, const std::string& line, Parsed& out) {
+    BlockParser parser(dialect, out.pool, out.words, out.diagnostics, "t.nc", 0);
+    parser.setPlainPath(plainPath);
+    out.block = parser.parse(line, 7);
+}
+
+void expectSameResult(const Dialect& dialect, const std::string& line) {
+    Parsed fast;
+    Parsed general;
+    parseWith(true, dialect, line, fast);
+    parseWith(false, dialect, line, general);
+    ASSERT_EQ(fast.block.has_value(), general.block.has_value()) << line;
+    EXPECT_EQ(fast.diagnostics.size(), general.diagnostics.size()) << line;
+    if (!fast.block) {
+        return;
+    }
+    const Block& a = *fast.block;
+    const Block& b = *general.block;
+    EXPECT_EQ(a.location.line, b.location.line) << line;
+    EXPECT_EQ(a.location.column, b.location.column) << line;
+    EXPECT_EQ(a.label, b.label) << line;
+    EXPECT_EQ(a.programNumber, b.programNumber) << line;
+    EXPECT_EQ(a.blockDelete, b.blockDelete) << line;
+    EXPECT_EQ(a.programEnd, b.programEnd) << line;
+    EXPECT_EQ(a.control, b.control) << line;
+    EXPECT_EQ(a.comment, b.comment) << line;
+    EXPECT_EQ(a.assignments.size(), b.assignments.size()) << line;
+    ASSERT_EQ(a.words.size(), b.words.size()) << line;
+    for (std::size_t i = 0; i < a.words.size(); ++i) {
+        EXPECT_EQ(a.words[i].letter, b.words[i].letter) << line;
+        EXPECT_EQ(a.words[i].column, b.words[i].column) << line;
+        const ExprNode& x = fast.pool[a.words[i].value];
+        const ExprNode& y = general.pool[b.words[i].value];
+        EXPECT_EQ(x.kind, y.kind) << line;
+        EXPECT_EQ(x.number, y.number) << line; // bit-identical conversion
+        EXPECT_EQ(x.column, y.column) << line;
+        EXPECT_EQ(x.lhs, y.lhs) << line;
+    }
+}
+
+TEST(PlainBlockParser, AcceptsPlainWordLines) {
+    ExpressionPool pool;
+    WordArena words;
+    Block block;
+    EXPECT_EQ(parsePlainBlock("N10 G1 X12.5 Y-3 F1000 (rough)", Dialect::m350(), {0, 1, 0}, pool, words, block),
+              PlainResult::Parsed);
+    EXPECT_EQ(block.label, 10);
+    EXPECT_EQ(block.words.size(), 4u);
+    EXPECT_EQ(block.comment, "rough");
+    EXPECT_EQ(parsePlainBlock("   (only a comment)", Dialect::m350(), {0, 1, 0}, pool, words, block),
+              PlainResult::Empty);
+}
+
+TEST(PlainBlockParser, DeclinesEverythingElse) {
+    for (const char* line : {"#1=2", "G1 X#1", "IF [#1 EQ 1] GOTO5", "O100", "/G1 X1", "G1 X[1+2]", "G1 X1.2.3",
+                             "X1-2", "GOTO5", "N1.5 G1", "N-1 G1", "G1 N5", "%", "G1 X（1）", "(换刀) G1 X1",
+                             "X", "X-", "X- 1", "G1 X1 (unclosed", "WHILE [1] DO1", "G1 X99999999999999999999"}) {
+        ExpressionPool pool;
+        WordArena words;
+        Block block;
+        EXPECT_EQ(parsePlainBlock(line, Dialect::m350(), {0, 1, 0}, pool, words, block), PlainResult::Declined)
+            << line;
+        EXPECT_EQ(pool.size(), 0u) << line;
+    }
+}
+
+TEST(PlainBlockParser, SameResultAsTheGeneralParserOnHandPickedLines) {
+    for (const char* line : {"G1 X12.5 Y-3 F1000", "  g1 x.5 y+2. z-0.001", "N50", "N50 (label) G0 Z0", "M30",
+                             "M02", "G04 P200 ;done", "G04 P200 // done", "T2 M6 (换刀)", "G1X1Y2Z3", "N0010 M5",
+                             "X1234567.890123", "X0.1234567890123456789", "F1.", "", "   ", "(a)(b)X1", "S12000 M3\r"}) {
+        expectSameResult(Dialect::m350(), line);
+        expectSameResult(Dialect::fanuc(), line);
+    }
+}
+
+TEST(PlainBlockParser, SameResultAsTheGeneralParserOnRandomLines) {
+    const std::vector<std::string> pieces = {"G", "X", "Y", "z", "N", "M", "F", "1", "0.5", ".25", "-", "+", " ",
+                                             "12", "3.", "(c)", ";", "//", "(", ")", "#", "[", "]", "O", "/", "\t",
+                                             "30", "99999999999999999", "1.2.3", "A", "B", "GOTO", "EQ"};
+    std::mt19937 rng(350);
+    std::uniform_int_distribution<std::size_t> pick(0, pieces.size() - 1);
+    std::uniform_int_distribution<int> length(0, 12);
+    for (int n = 0; n < 20000; ++n) {
+        std::string line;
+        for (int k = length(rng); k > 0; --k) {
+            line += pieces[pick(rng)];
+        }
+        expectSameResult(n % 2 ? Dialect::m350() : Dialect::fanuc(), line);
+        if (HasFailure()) {
+            return;
+        }
+    }
+}
+
+} // namespace
