@@ -1,18 +1,12 @@
 #include "app/sim/ReportJson.h"
 
+#include "core/controller/AxesJson.h"
+
 #include "core/common/Alarm.h"
 
 namespace m350::sim {
 
 namespace {
-
-nlohmann::json axes(const machine::Axes& a) {
-    nlohmann::json j = nlohmann::json::object();
-    for (int i = 0; i < machine::kAxisCount; ++i) {
-        j[std::string(1, machine::kAxisNames[static_cast<std::size_t>(i)])] = a(i);
-    }
-    return j;
-}
 
 nlohmann::json firstError(const std::vector<gcode::Diagnostic>& diagnostics) {
     for (const gcode::Diagnostic& d : diagnostics) {
@@ -65,8 +59,8 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
         vars[std::to_string(n)] = v.vacant ? nlohmann::json(nullptr) : nlohmann::json(v.number);
     }
     j["vars"] = vars;
-    j["machine"] = axes(report.machine);
-    j["work"] = axes(report.work);
+    j["machine"] = controller::axesJson(report.machine);
+    j["work"] = controller::axesJson(report.work);
     j["tool"] = report.tool;
     nlohmann::json pockets = nlohmann::json::object();
     for (auto [pocket, tool] : report.pockets) {
@@ -85,8 +79,8 @@ nlohmann::json errorJson(const std::string& code, const std::string& message, co
     return {{"status", "error"},
             {"alarm", {{"code", code}, {"message", message}, {"file", file}, {"line", 0}, {"column", 0}}},
             {"vars", nlohmann::json::object()},
-            {"machine", axes(machine::Axes::Zero())},
-            {"work", axes(machine::Axes::Zero())},
+            {"machine", controller::axesJson(machine::Axes::Zero())},
+            {"work", controller::axesJson(machine::Axes::Zero())},
             {"tool", 0},
             {"pockets", nlohmann::json::object()},
             {"outputs", std::vector<int>(machine::kOutputCount, 0)},

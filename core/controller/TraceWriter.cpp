@@ -1,18 +1,12 @@
 #include "core/controller/TraceWriter.h"
 
+#include "core/controller/AxesJson.h"
+
 #include <nlohmann/json.hpp>
 
 namespace m350::controller {
 
 namespace {
-
-nlohmann::json axes(const machine::Axes& a) {
-    nlohmann::json j = nlohmann::json::object();
-    for (int i = 0; i < machine::kAxisCount; ++i) {
-        j[std::string(1, machine::kAxisNames[static_cast<std::size_t>(i)])] = a(i);
-    }
-    return j;
-}
 
 void withSource(nlohmann::json& j, const TraceSource& source) {
     j["file"] = source.file;
@@ -31,8 +25,8 @@ void TraceWriter::machineEvent(const machine::MachineEvent& e, const TraceSource
     case Type::Arc:
         j["type"] = "move";
         j["kind"] = e.type == Type::Rapid ? "rapid" : e.type == Type::Feed ? "feed" : "arc";
-        j["from"] = axes(e.from);
-        j["to"] = axes(e.to);
+        j["from"] = axesJson(e.from);
+        j["to"] = axesJson(e.to);
         j["feed"] = e.feed;
         j["start"] = e.start;
         j["end"] = e.end;

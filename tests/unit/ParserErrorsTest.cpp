@@ -3,6 +3,7 @@
 // positions counted in characters.
 
 #include "core/gcode/Dialect.h"
+#include "ParseSupport.h"
 #include "core/gcode/Parser.h"
 #include "core/gcode/Program.h"
 
@@ -18,26 +19,11 @@ using namespace m350::gcode;
 
 namespace {
 
-struct Parsed {
-    Program program;
-    std::vector<Diagnostic> diagnostics;
-};
+using support::listDiagnostics;
+using support::Parsed;
 
 Parsed parse(std::string_view text, const Dialect& dialect = Dialect::m350()) {
-    Parsed p;
-    Parser parser(dialect);
-    parser.addFile(p.program, "test.nc", text, FileRole::Main);
-    parser.finish(p.program);
-    p.diagnostics = parser.diagnostics();
-    return p;
-}
-
-std::string listDiagnostics(const std::vector<Diagnostic>& diagnostics) {
-    std::string out;
-    for (const Diagnostic& d : diagnostics) {
-        out += formatDiagnostic(d) + "\n";
-    }
-    return out;
+    return support::parse(text, dialect);
 }
 
 const char* kindName(DiagnosticKind kind) {

@@ -2,6 +2,7 @@
 // precedence, ATAN[a]/[b], the extended functions, and what FANUC rejects that the M350 accepts.
 
 #include "core/gcode/Dialect.h"
+#include "ParseSupport.h"
 #include "core/gcode/Parser.h"
 #include "core/gcode/Program.h"
 
@@ -16,69 +17,16 @@ using namespace m350::gcode;
 
 namespace {
 
-struct Parsed {
-    Program program;
-    std::vector<Diagnostic> diagnostics;
-};
+using support::listDiagnostics;
+using support::Parsed;
+using support::show;
 
 Parsed parse(std::string_view text, const Dialect& dialect = Dialect::fanuc()) {
-    Parsed p;
-    Parser parser(dialect);
-    parser.addFile(p.program, "fanuc.nc", text, FileRole::Main);
-    parser.finish(p.program);
-    p.diagnostics = parser.diagnostics();
-    return p;
-}
-
-std::string listDiagnostics(const std::vector<Diagnostic>& diagnostics) {
-    std::string out;
-    for (const Diagnostic& d : diagnostics) {
-        out += formatDiagnostic(d) + "\n";
-    }
-    return out;
+    return support::parse(text, dialect, "fanuc.nc");
 }
 
 Parsed parseClean(std::string_view text) {
-    Parsed p = parse(text);
-    EXPECT_TRUE(p.diagnostics.empty()) << listDiagnostics(p.diagnostics);
-    return p;
-}
-
-// Renders an expression tree with every binary node parenthesised: `(#1 OR (2 AND 3))`.
-std::string show(const Program& program, ExprId id) {
-    if (id == kNoExpr) {
-        return "<none>";
-    }
-    const ExprNode& n = program.expressions[id];
-    char buffer[32];
-    switch (n.kind) {
-    case ExprKind::Number:
-        std::snprintf(buffer, sizeof buffer, "%g", n.number);
-        return buffer;
-    case ExprKind::Variable:
-        if (n.lhs != kNoExpr) {
-            return "#[" + show(program, n.lhs) + "]";
-        }
-        std::snprintf(buffer, sizeof buffer, "#%g", n.number);
-        return buffer;
-    case ExprKind::Unary:
-        return (static_cast<UnaryOp>(n.op) == UnaryOp::Negate ? "-" : "+") + show(program, n.lhs);
-    case ExprKind::Binary: {
-        static const char* ops[] = {"+",   "-",  "*",  "/", "MOD", "AND", "OR",
-                                    "XOR", "==", "!=", "<", ">",   "<=",  ">="};
-        return "(" + show(program, n.lhs) + " " + ops[n.op] + " " + show(program, n.rhs) + ")";
-    }
-    case ExprKind::Function: {
-        static const char* names[] = {"ABS",   "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT",
-                                      "ROUND", "FIX", "FUP", "LN",  "EXP",  "BIN",  "BCD"};
-        std::string out = std::string(names[n.op]) + "[" + show(program, n.lhs);
-        if (n.rhs != kNoExpr) {
-            out += "," + show(program, n.rhs);
-        }
-        return out + "]";
-    }
-    }
-    return "?";
+    return support::parseClean(text, Dialect::fanuc(), "fanuc.nc");
 }
 
 std::string value(const Parsed& p, std::size_t block) {

@@ -1,6 +1,7 @@
 // The parser on well-formed M350 programs: the structure of blocks, words, assignments, control
 // statements and expression trees, and how a file is split into O-program units.
 
+#include "ParseSupport.h"
 #include "core/gcode/Parser.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
@@ -16,57 +17,11 @@ using namespace m350::gcode;
 
 namespace {
 
-struct Parsed {
-    Program program;
-};
+using support::Parsed;
+using support::show;
 
-// Parses a program that must be clean: every diagnostic fails the test.
 Parsed parseClean(std::string_view text) {
-    Parsed p;
-    Parser parser(Dialect::m350());
-    parser.addFile(p.program, "test.nc", text, FileRole::Main);
-    parser.finish(p.program);
-    for (const Diagnostic& d : parser.diagnostics()) {
-        ADD_FAILURE() << formatDiagnostic(d);
-    }
-    return p;
-}
-
-// Renders an expression tree with every binary node parenthesised: `(#1 + (2 * 3))`.
-std::string show(const Program& program, ExprId id) {
-    if (id == kNoExpr) {
-        return "<none>";
-    }
-    const ExprNode& n = program.expressions[id];
-    char buffer[32];
-    switch (n.kind) {
-    case ExprKind::Number:
-        std::snprintf(buffer, sizeof buffer, "%g", n.number);
-        return buffer;
-    case ExprKind::Variable:
-        if (n.lhs != kNoExpr) {
-            return "#[" + show(program, n.lhs) + "]";
-        }
-        std::snprintf(buffer, sizeof buffer, "#%g", n.number);
-        return buffer;
-    case ExprKind::Unary:
-        return (static_cast<UnaryOp>(n.op) == UnaryOp::Negate ? "-" : "+") + show(program, n.lhs);
-    case ExprKind::Binary: {
-        static const char* ops[] = {"+",   "-",  "*",  "/", "MOD", "AND", "OR",
-                                    "XOR", "==", "!=", "<", ">",   "<=",  ">="};
-        return "(" + show(program, n.lhs) + " " + ops[n.op] + " " + show(program, n.rhs) + ")";
-    }
-    case ExprKind::Function: {
-        static const char* names[] = {"ABS",   "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT",
-                                      "ROUND", "FIX", "FUP", "LN",  "EXP",  "BIN",  "BCD"};
-        std::string out = std::string(names[n.op]) + "[" + show(program, n.lhs);
-        if (n.rhs != kNoExpr) {
-            out += "," + show(program, n.rhs);
-        }
-        return out + "]";
-    }
-    }
-    return "?";
+    return support::parseClean(text, Dialect::m350());
 }
 
 std::string letters(const Block& block) {
