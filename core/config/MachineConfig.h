@@ -3,7 +3,7 @@
 #include "core/config/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
-#include "core/machine/InstantMachine.h"
+#include "core/machine/SimulatedMachine.h"
 
 #include <array>
 #include <map>

@@ -6,6 +6,14 @@
 namespace m350::config::param {
 
 inline constexpr int kDefaultFeed = 61;            // 默认进给速度, mm/min
+inline constexpr int kFeedAcceleration = 62;       // G01 acceleration, mm/s^2
+inline constexpr int kRapidSpeed = 63;             // G00 speed, mm/min
+inline constexpr int kMaxSpeed = 64;               // maximum speed, mm/min
+inline constexpr int kSpindleStartDelay = 81;      // s, the program waits for the spindle to reach speed
+inline constexpr int kMaxSpindleRpm = 82;
+inline constexpr int kSpindleStopDelay = 89;       // s, the spindle coasts to a stop
+inline constexpr int kRapidAcceleration = 282;     // G00 acceleration, mm/s^2 (0: use 62)
+inline constexpr int kSpindleStoppedInput = 620;   // input triple: pin, enable, active level (M300)
 inline constexpr int kCurrentWorkSystem = 78;      // #578: 0 = G92, 1..6 = G54..G59
 inline constexpr int kHomePositionX = 122;         // 122-126: machine position after homing (G28 goes here)
 inline constexpr int kHomeBeforeProcessing = 220;  // 0 = not required

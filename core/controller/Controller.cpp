@@ -5,6 +5,7 @@
 #include "core/gcode/Parser.h"
 #include "core/gcode/SourceText.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -31,6 +32,26 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
 
 Controller::~Controller() = default;
 
+// The machine's speeds, delays and spindle sensor, from the parameters as they stand.
+void Controller::configureMachine() {
+    const config::ParameterTable& p = config_.parameters;
+    machine::MotionLimits limits;
+    auto positive = [](double v, double fallback) { return v > 0.0 ? v : fallback; };
+    limits.rapidSpeed = positive(p.get(param::kRapidSpeed), 10000.0) / 60.0;
+    limits.maxSpeed = positive(p.get(param::kMaxSpeed), 12000.0) / 60.0;
+    limits.feedAcceleration = positive(p.get(param::kFeedAcceleration), 500.0);
+    limits.rapidAcceleration = positive(p.get(param::kRapidAcceleration), limits.feedAcceleration);
+    limits.spindleStartDelay = std::max(0.0, p.get(param::kSpindleStartDelay));
+    limits.spindleStopDelay = std::max(0.0, p.get(param::kSpindleStopDelay));
+    limits.maxSpindleRpm = positive(p.get(param::kMaxSpindleRpm), 24000.0);
+    machine_.setLimits(limits);
+    const int pin = saturatingInt(p.get(param::kSpindleStoppedInput));
+    const bool enabled = p.get(param::kSpindleStoppedInput + 1) != 0.0;
+    if (enabled && pin >= 1 && pin <= machine::kInputCount) {
+        machine_.setSpindleStoppedSensor({pin, p.get(param::kSpindleStoppedInput + 2) != 0.0 ? 1 : 0});
+    }
+}
+
 void Controller::applySettings() {
     for (auto [number, value] : settings_.parameters) {
         config_.parameters.set(number, value);
@@ -46,6 +67,7 @@ void Controller::applySettings() {
             interp_.state().selectedTool = *settings_.tool;
         }
     }
+    configureMachine();
     homed_.fill(settings_.homed ? 1 : 0);
     machine::Axes start = machine::Axes::Zero();
     if (settings_.homed) {

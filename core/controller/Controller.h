@@ -7,7 +7,7 @@
 #include "core/gcode/Program.h"
 #include "core/interp/ModalInterpreter.h"
 #include "core/interp/WorkOffsets.h"
-#include "core/machine/InstantMachine.h"
+#include "core/machine/SimulatedMachine.h"
 #include "core/macro/Executor.h"
 #include "core/macro/MachineAccess.h"
 #include "core/macro/VariableStore.h"
@@ -51,6 +51,7 @@ public:
 private:
     bool load(const std::string& path, std::string_view text, gcode::FileRole role, const std::string& encoding);
     void applySettings();
+    void configureMachine();
     void enterSafeState();
     void report(RunReport& out) const;
     int spindleTool() const;
@@ -60,7 +61,7 @@ private:
     config::MachineConfig config_;
     RunSettings settings_;
     interp::WorkOffsets offsets_;
-    machine::InstantMachine machine_;
+    machine::SimulatedMachine machine_;
     interp::ModalInterpreter interp_;
     macro::VariableStore store_;
     gcode::Program program_;

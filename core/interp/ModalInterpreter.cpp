@@ -263,8 +263,8 @@ void ModalInterpreter::moveAxes(const Words& words) {
         }
         return;
     }
-    if (!words.hasAxis()) {
-        return;
+    if (!words.hasAxis() || words.hasG(4)) {
+        return; // in a G04 block, X is the dwell time (FANUC), not a move
     }
     if (words.hasG(53)) {
         // One-shot machine coordinates; with F (the M350's `G53 Z#1306 F#1312`) a feed move

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -287,8 +288,10 @@ TEST(ControllerFanuc, MachinePositionAndDwellInSeconds) {
     EXPECT_DOUBLE_EQ(run.number(100), 10);
     EXPECT_DOUBLE_EQ(run.number(101), -4);
     EXPECT_DOUBLE_EQ(run.number(102), 10);
-    EXPECT_GE(run.report.simTime, 2.0);
-    EXPECT_LT(run.report.simTime, 2.01);
+    // the 10.77 mm rapid never reaches G00 speed at 500 mm/s^2: a triangle of 2*sqrt(L/a) seconds;
+    // then the 2 s dwell and 0.1 ms for each of the 6 blocks
+    double rapid = 2.0 * std::sqrt(std::sqrt(116.0) / 500.0);
+    EXPECT_NEAR(run.report.simTime, rapid + 2.0 + 6 * 1e-4, 1e-9);
     EXPECT_TRUE(run.controller->variable(9999).vacant); // undefined reads as vacant
 }
 

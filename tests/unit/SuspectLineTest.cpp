@@ -36,3 +36,13 @@ TEST(M99InMain, FanucRestartsTheProgramUntilM30) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(DwellBlock, FanucG04XIsATimeNotAMove) {
+    auto run = m350::test::runFanuc(m350::test::lines({"G90 G00 X10", "G04 X2", "#100 = #5021", "M30"}));
+    EXPECT_EQ(run.report.status, m350::controller::RunStatus::Ok);
+    EXPECT_DOUBLE_EQ(run.controller->variable(100).number, 10.0);
+}
+
+} // namespace

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "core/machine/MachineInterface.h"
+#include "core/machine/MotionLimits.h"
+#include "core/machine/MotionProfile.h"
 
 #include <array>
 #include <optional>
@@ -9,7 +11,7 @@
 namespace m350::machine {
 
 // An output wired to an input through an actuator that answers after a delay: the clamp cylinder
-// (OUT01 -> IN11 "tool released"), a magazine slide ... A stand-in for the device models.
+// (OUT01 -> IN11 "tool released"), a magazine slide ... until the device models take over.
 struct IoLink {
     int output = 0;
     int input = 0;
@@ -17,16 +19,23 @@ struct IoLink {
     bool inverted = false;
 };
 
-// The minimal machine the language runs on until the motion model lands: moves complete at once,
-// dwells and block times advance the virtual clock, IO links answer after their delay.
-class InstantMachine : public MachineInterface {
+// The simulated machine in virtual time. Every move follows a trapezoidal velocity profile that is
+// computed in closed form: issuing a move advances the clock by its duration at once, so a
+// headless run jumps from event to event and a move of any length costs O(1). The last move is
+// kept so positionAt() can show where the axes were at any moment of it.
+class SimulatedMachine : public MachineInterface {
 public:
-    explicit InstantMachine(MachineObserver* observer = nullptr) : observer_(observer) {}
+    explicit SimulatedMachine(MachineObserver* observer = nullptr) : observer_(observer) {}
 
+    void setLimits(const MotionLimits& limits) { limits_ = limits; }
+    const MotionLimits& limits() const { return limits_; }
+    void setSpindleStoppedSensor(const SpindleStoppedSensor& sensor) { spindleSensor_ = sensor; }
     void addLink(const IoLink& link) { links_.push_back(link); }
     // Holds an input at a level for the whole run (`m350-sim --input IN11=0`), whatever drives it.
     void forceInput(int port, int level) { forced_[static_cast<std::size_t>(port - 1)] = level; }
     void setInput(int port, int level) { inputs_[static_cast<std::size_t>(port - 1)] = level; }
+    // Feed override 0..1.5 (the panel's 进给倍率); `rapidToo` when param 253 lets it slow G00.
+    void setFeedOverride(double factor, bool rapidToo);
 
     void rapid(const Axes& target) override;
     void feed(const Axes& target, double feed) override;
@@ -48,24 +57,43 @@ public:
     double spindleRpm() const override { return rpm_; }
     bool coolantOn() const override { return coolant_; }
 
+    // Where the axes were at virtual time t (inside the last move, or at rest).
+    Axes positionAt(double t) const;
+    bool spindleTurning() const { return spindle_ != SpindleState::Stop || time_ < spindleStopsAt_; }
+
+    // A move of `length` along a straight line at `speed` (units/s): its duration.
+    double moveDuration(double length, double speed, double acceleration) const;
+
 private:
     struct OutputState {
         int level = 0;
         int previous = 0;
         double changedAt = -1e300;
     };
-    void move(MachineEvent::Type type, const Axes& target, double feed);
+    struct LastMove {
+        Axes from = Axes::Zero();
+        Axes to = Axes::Zero();
+        double start = 0.0;
+        MotionProfile profile{0.0, 1.0, 1.0};
+    };
+    void move(MachineEvent::Type type, const Axes& target, double speed, double acceleration, double feed);
     void notify(const MachineEvent& event);
 
     MachineObserver* observer_;
+    MotionLimits limits_;
+    double feedOverride_ = 1.0;
+    bool rapidOverride_ = false;
     Axes position_ = Axes::Zero();
     double time_ = 0.0;
+    std::optional<LastMove> lastMove_;
     std::array<OutputState, kOutputCount> outputs_{};
     std::array<int, kInputCount> inputs_{};
     std::array<std::optional<int>, kInputCount> forced_{};
     std::vector<IoLink> links_;
+    SpindleStoppedSensor spindleSensor_;
     SpindleState spindle_ = SpindleState::Stop;
     double rpm_ = 0.0;
+    double spindleStopsAt_ = 0.0;
     bool coolant_ = false;
 };
 

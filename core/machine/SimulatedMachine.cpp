@@ -1,0 +1,146 @@
+#include "core/machine/SimulatedMachine.h"
+
+#include <algorithm>
+
+namespace m350::machine {
+
+void SimulatedMachine::notify(const MachineEvent& event) {
+    if (observer_) {
+        observer_->onMachineEvent(event);
+    }
+}
+
+void SimulatedMachine::setFeedOverride(double factor, bool rapidToo) {
+    feedOverride_ = std::clamp(factor, 0.0, 1.5);
+    rapidOverride_ = rapidToo;
+}
+
+double SimulatedMachine::moveDuration(double length, double speed, double acceleration) const {
+    return MotionProfile(length, speed, acceleration).duration();
+}
+
+void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double speed, double acceleration,
+                            double feed) {
+    MachineEvent event;
+    event.type = type;
+    event.from = position_;
+    event.to = target;
+    event.feed = feed;
+    event.start = time_;
+    double length = (target - position_).norm();
+    LastMove last{position_, target, time_, MotionProfile(length, speed, acceleration)};
+    time_ += last.profile.duration();
+    position_ = target;
+    lastMove_ = last;
+    event.end = time_;
+    notify(event);
+}
+
+void SimulatedMachine::rapid(const Axes& target) {
+    double speed = std::min(limits_.rapidSpeed, limits_.maxSpeed) * (rapidOverride_ ? feedOverride_ : 1.0);
+    move(MachineEvent::Type::Rapid, target, speed, limits_.rapidAcceleration, 0.0);
+}
+
+void SimulatedMachine::feed(const Axes& target, double feed) {
+    double speed = std::min(feed / 60.0, limits_.maxSpeed) * feedOverride_;
+    move(MachineEvent::Type::Feed, target, speed, limits_.feedAcceleration, feed);
+}
+
+void SimulatedMachine::arc(const Axes& target, const Axes&, Plane, bool, int, double feed) {
+    double speed = std::min(feed / 60.0, limits_.maxSpeed) * feedOverride_;
+    move(MachineEvent::Type::Arc, target, speed, limits_.feedAcceleration, feed);
+}
+
+Axes SimulatedMachine::positionAt(double t) const {
+    if (!lastMove_ || t >= lastMove_->start + lastMove_->profile.duration()) {
+        return position_;
+    }
+    const LastMove& m = *lastMove_;
+    double length = m.profile.length();
+    if (length <= 0.0 || t <= m.start) {
+        return m.from;
+    }
+    return m.from + (m.to - m.from) * (m.profile.distanceAt(t - m.start) / length);
+}
+
+void SimulatedMachine::dwell(double seconds) {
+    MachineEvent event;
+    event.type = MachineEvent::Type::Dwell;
+    event.from = event.to = position_;
+    event.start = time_;
+    time_ += seconds;
+    event.end = time_;
+    notify(event);
+}
+
+void SimulatedMachine::spindle(SpindleState state, double rpm) {
+    double effective = state == SpindleState::Stop ? 0.0 : std::min(rpm, limits_.maxSpindleRpm);
+    if (state == spindle_ && effective == rpm_) {
+        return;
+    }
+    bool starting = spindle_ == SpindleState::Stop && (state == SpindleState::Forward || state == SpindleState::Reverse);
+    if (state == SpindleState::Stop && spindle_ != SpindleState::Stop) {
+        spindleStopsAt_ = time_ + limits_.spindleStopDelay; // it coasts; the program goes on
+    }
+    spindle_ = state;
+    rpm_ = effective;
+    MachineEvent event;
+    event.type = MachineEvent::Type::Spindle;
+    event.start = time_;
+    event.spindle = state;
+    event.rpm = rpm_;
+    if (starting) {
+        time_ += limits_.spindleStartDelay; // the program waits for the spindle to reach speed
+    }
+    event.end = time_;
+    notify(event);
+}
+
+void SimulatedMachine::coolant(bool on) {
+    if (on == coolant_) {
+        return;
+    }
+    coolant_ = on;
+    MachineEvent event;
+    event.type = MachineEvent::Type::Coolant;
+    event.start = event.end = time_;
+    event.level = on ? 1 : 0;
+    notify(event);
+}
+
+void SimulatedMachine::setOutput(int port, int level) {
+    OutputState& out = outputs_[static_cast<std::size_t>(port - 1)];
+    if (out.level == level) {
+        return;
+    }
+    out.previous = out.level;
+    out.level = level;
+    out.changedAt = time_;
+    MachineEvent event;
+    event.type = MachineEvent::Type::Io;
+    event.start = event.end = time_;
+    event.port = port;
+    event.level = level;
+    notify(event);
+}
+
+int SimulatedMachine::input(int port) {
+    auto index = static_cast<std::size_t>(port - 1);
+    if (forced_[index]) {
+        return *forced_[index];
+    }
+    if (spindleSensor_.port == port) {
+        bool stopped = !spindleTurning();
+        return stopped ? spindleSensor_.activeLevel : 1 - spindleSensor_.activeLevel;
+    }
+    for (const IoLink& link : links_) {
+        if (link.input == port) {
+            const OutputState& out = outputs_[static_cast<std::size_t>(link.output - 1)];
+            int level = time_ >= out.changedAt + link.delay ? out.level : out.previous;
+            return link.inverted ? 1 - level : level;
+        }
+    }
+    return inputs_[index];
+}
+
+} // namespace m350::machine
