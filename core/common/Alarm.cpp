@@ -19,6 +19,7 @@ std::string_view alarmKey(AlarmCode code) {
     case AlarmCode::SuspectLine: return "suspect_line";
     case AlarmCode::SimulatedTimeLimit: return "simulated_time_limit";
     case AlarmCode::NotHomed: return "not_homed";
+    case AlarmCode::SoftLimit: return "soft_limit";
     case AlarmCode::OperatorReset: return "reset";
     }
     return "unknown";

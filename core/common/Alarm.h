@@ -24,6 +24,7 @@ enum class AlarmCode : std::uint8_t {
     SuspectLine,          // a line `check` flags as never meant (X[#1330+#1300-1])
     SimulatedTimeLimit,   // runaway loop
     NotHomed,
+    SoftLimit,
     OperatorReset,
 };
 

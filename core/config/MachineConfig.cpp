@@ -110,6 +110,20 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         }
     }
     config.magazineCapacity = t["magazine"]["capacity"].value_or(0);
+    if (auto points = t["reference_points"].as_table()) {
+        for (auto&& [key, value] : *points) {
+            int number = numberKey(file, key.str(), 1, 4, "reference point");
+            const toml::array* axes = value.as_array();
+            if (!axes || axes->size() > 5) {
+                fail(file, "reference point " + std::to_string(number) + " must be [X, Y, Z, A, B]");
+            }
+            std::array<double, 5> position{};
+            for (std::size_t i = 0; i < axes->size(); ++i) {
+                position[i] = numberValue(file, *axes->get(i), key.str());
+            }
+            config.referencePoints[number] = position;
+        }
+    }
 }
 
 void loadParams(const fs::path& folder, MachineConfig& config) {

@@ -17,6 +17,11 @@ inline constexpr int kSpindleStoppedInput = 620;   // input triple: pin, enable,
 inline constexpr int kCurrentWorkSystem = 78;      // #578: 0 = G92, 1..6 = G54..G59
 inline constexpr int kHomePositionX = 122;         // 122-126: machine position after homing (G28 goes here)
 inline constexpr int kHomeBeforeProcessing = 220;  // 0 = not required
+inline constexpr int kSoftLimitsEnabled = 155;     // 0 = off
+inline constexpr int kSoftLimitNegativeX = 161;    // 161-165 negative, 166-170 positive, machine coordinates
+inline constexpr int kSoftLimitPositiveX = 166;
+inline constexpr int kTotalRunCount = 201;         // #701 总加工数, counted by M30
+inline constexpr int kPieceCount = 202;            // #702 加工件数, counted by M30
 inline constexpr int kCurrentTool = 800;           // #1300 当前刀具号
 inline constexpr int kMagazineCapacity = 801;      // #1301 刀库容量
 inline constexpr int kMagazineType = 802;          // #1302 刀库类型

@@ -15,7 +15,7 @@ namespace param = config::param;
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)), machine_(this),
-      interp_(*config_.dialect, config_.parameters, offsets_, machine_), store_(*config_.dialect, config_.parameters) {
+      interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, machine_), store_(*config_.dialect, config_.parameters) {
     if (settings_.trace) {
         trace_ = std::make_unique<TraceWriter>(*settings_.trace);
     }
@@ -26,6 +26,9 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     }
     for (const machine::IoLink& link : config_.ioLinks) {
         machine_.addLink(link);
+    }
+    for (const auto& [number, position] : config_.referencePoints) {
+        interp_.setReferencePoint(number, Eigen::Map<const machine::Axes>(position.data()));
     }
     applySettings();
 }

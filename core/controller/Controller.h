@@ -61,6 +61,7 @@ private:
     config::MachineConfig config_;
     RunSettings settings_;
     interp::WorkOffsets offsets_;
+    interp::ToolOffsets toolOffsets_;
     machine::SimulatedMachine machine_;
     interp::ModalInterpreter interp_;
     macro::VariableStore store_;

@@ -62,6 +62,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         default: return Value::empty();
         }
     }
+    case VariableKind::ToolOffset: return Value::of(toolOffsets_.get(info.index));
     case VariableKind::Alarm:
     case VariableKind::StopMessage: return Value::of(0);
     default: return Value::empty();
@@ -74,6 +75,7 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
     switch (info.kind) {
     case VariableKind::WorkOffset: offsets_.set(info.index >> 3, info.index & 7, value); return std::nullopt;
     case VariableKind::Output: machine_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
+    case VariableKind::ToolOffset: toolOffsets_.set(info.index, value); return std::nullopt;
     case VariableKind::Homed: homed_[static_cast<std::size_t>(info.index)] = value != 0.0 ? 1 : 0; return std::nullopt;
     case VariableKind::Message:
         if (value != kClearMessage && !text.empty()) {

@@ -41,8 +41,8 @@ struct PathSegment {
     static PathSegment line(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
         return {Kind::Line, from, to, Eigen::Vector2d::Zero(), false};
     }
-    static PathSegment arc(const Eigen::Vector2d& from, const Eigen::Vector2d& to, const Eigen::Vector2d& center,
-                           bool clockwise) {
+    static PathSegment arc(const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+                           const Eigen::Vector2d& center, bool clockwise) {
         return {Kind::Arc, from, to, center, clockwise};
     }
 };
@@ -77,7 +77,7 @@ private:
         PathSegment programmed;
         Eigen::Vector2d toolStart; // where the tool center starts this segment (already trimmed)
         double radius = 0.0;
-        bool entry = false;        // the start-up move: a straight line to the next segment's offset start
+        bool entry = false; // the start-up move: a straight line to the next segment's offset start
     };
 
     Result enter(const PathSegment& programmed, CompensationSide side, double radius);
@@ -85,6 +85,8 @@ private:
     Result resume(const PathSegment& programmed, double radius);
     Result join(const PathSegment& programmed, double radius);
     double signedRadius(double radius) const;
+    // Whether the path turns away from the tool side (or reverses) at a corner.
+    bool outsideCorner(const Eigen::Vector2d& in, const Eigen::Vector2d& out) const;
 
     CompensationSide side_ = CompensationSide::Off;
     std::optional<Pending> pending_;

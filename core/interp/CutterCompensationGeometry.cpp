@@ -12,7 +12,9 @@ bool isFullCircle(const PathSegment& arc) {
     return arc.kind == PathSegment::Kind::Arc && (arc.end - arc.start).norm() <= kEps;
 }
 
-double arcRadius(const PathSegment& arc) { return (arc.start - arc.center).norm(); }
+double arcRadius(const PathSegment& arc) {
+    return (arc.start - arc.center).norm();
+}
 
 double offsetArcRadius(const PathSegment& arc, double signedRadius) {
     return arcRadius(arc) + (arc.clockwise ? signedRadius : -signedRadius);

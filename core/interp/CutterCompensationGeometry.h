@@ -11,8 +11,12 @@ namespace m350::interp::ccgeom {
 
 constexpr double kEps = 1e-9;
 
-inline Eigen::Vector2d leftNormal(const Eigen::Vector2d& d) { return {-d.y(), d.x()}; }
-inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+inline Eigen::Vector2d leftNormal(const Eigen::Vector2d& d) {
+    return {-d.y(), d.x()};
+}
+inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() * b.y() - a.y() * b.x();
+}
 
 bool isFullCircle(const PathSegment& arc);
 double arcRadius(const PathSegment& arc);
@@ -22,7 +26,8 @@ double offsetArcRadius(const PathSegment& arc, double signedRadius);
 Eigen::Vector2d tangentAt(const PathSegment& s, const Eigen::Vector2d& p);
 Eigen::Vector2d offsetPoint(const PathSegment& s, const Eigen::Vector2d& p, double signedRadius);
 // Counterclockwise (or clockwise) angle from `from` to `to` around `center`, in [0, 2 pi).
-double sweep(const Eigen::Vector2d& center, const Eigen::Vector2d& from, const Eigen::Vector2d& to, bool clockwise);
+double sweep(const Eigen::Vector2d& center, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+             bool clockwise);
 
 // A piece of an offset path: `seg` runs from the tool's start to the offset end; `direction` is the
 // programmed line's direction, kept because a trimmed piece may have no length left.

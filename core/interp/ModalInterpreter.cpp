@@ -25,9 +25,13 @@ std::string codeText(char letter, double value) {
     return std::string(1, letter) + text;
 }
 
-[[noreturn]] void invalid(const WordValue& w, std::string why) {
+} // namespace
+
+[[noreturn]] void ModalInterpreter::invalid(const WordValue& w, std::string why) {
     throw MacroError{AlarmCode::InvalidWord, codeText(w.letter, w.value) + ": " + why, w.column};
 }
+
+namespace {
 
 // Which modal group a G code sets, -1 for non-modal codes handled elsewhere.
 int groupOf(int code) {
@@ -38,7 +42,7 @@ int groupOf(int code) {
     case 94: case 95: return 5;
     case 20: case 21: return 6;
     case 40: return 7;
-    case 49: return 8;
+    case 43: case 44: case 49: return 8;
     case 80: return 9;
     case 98: case 99: return 10;
     case 54: case 55: case 56: case 57: case 58: case 59: return 14;
@@ -49,8 +53,9 @@ int groupOf(int code) {
 } // namespace
 
 ModalInterpreter::ModalInterpreter(const gcode::Dialect& dialect, config::ParameterTable& parameters,
-                                   WorkOffsets& offsets, machine::MachineInterface& machine)
-    : dialect_(dialect), parameters_(parameters), offsets_(offsets), machine_(machine) {
+                                   WorkOffsets& offsets, ToolOffsets& toolOffsets,
+                                   machine::MachineInterface& machine)
+    : dialect_(dialect), parameters_(parameters), offsets_(offsets), toolOffsets_(toolOffsets), machine_(machine) {
     state_.feed = parameters_.get(param::kDefaultFeed);
 }
 
@@ -75,6 +80,14 @@ double ModalInterpreter::toolZOffset() const {
     return 0.0;
 }
 
+double ModalInterpreter::toolLengthOffset() const {
+    switch (state_.group(8)) {
+    case 43: return toolOffsets_.get(state_.lengthOffset);
+    case 44: return -toolOffsets_.get(state_.lengthOffset);
+    default: return 0.0;
+    }
+}
+
 int ModalInterpreter::activeSlot() const {
     if (dialect_.id == gcode::DialectId::M350) {
         int slot = saturatingInt(parameters_.get(param::kCurrentWorkSystem));
@@ -90,6 +103,7 @@ machine::Axes ModalInterpreter::workOffset() const {
         offset += offsets_.slot(WorkOffsets::kG92); // FANUC's G92 shifts the active system
     }
     offset(2) += toolZOffset(); // M350: work Z = machine Z - G54..G59 Z - tool Z offset
+    offset(2) += toolLengthOffset();
     return offset;
 }
 
@@ -176,6 +190,10 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
             } else if (code == 2 || code == 30) {
                 machine_.spindle(machine::SpindleState::Stop, 0.0);
                 machine_.coolant(false);
+                if (code == 30 && dialect_.id == gcode::DialectId::M350) { // 总加工数, 加工件数
+                    parameters_.set(param::kTotalRunCount, parameters_.get(param::kTotalRunCount) + 1);
+                    parameters_.set(param::kPieceCount, parameters_.get(param::kPieceCount) + 1);
+                }
                 endProgram = true;
             }
         }
@@ -203,6 +221,10 @@ void ModalInterpreter::applyGCodes(const Words& words) {
             if (group == 14 && dialect_.id == gcode::DialectId::M350) {
                 parameters_.set(param::kCurrentWorkSystem, code - 53);
             }
+            if ((code == 43 || code == 44) && dialect_.id == gcode::DialectId::M350) {
+                invalid(g, "not used on the M350: each tool's Z offset (params 930-945) applies by itself "
+                           "after a tool change");
+            }
             continue;
         }
         switch (code) {
@@ -222,85 +244,9 @@ void ModalInterpreter::applyGCodes(const Words& words) {
             machine_.dwell(seconds);
             break;
         }
-        case 28: case 53: case 92: break; // with the axis words, in moveAxes
+        case 10: case 28: case 30: case 52: case 53: case 92: break; // with the axis words, in moveAxes
         default: invalid(g, "not a G code this machine knows");
         }
-    }
-}
-
-machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordinates) const {
-    machine::Axes target = machine_.position();
-    machine::Axes offset = workOffset();
-    double unit = state_.inches() ? 25.4 : 1.0;
-    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
-        const auto* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)]);
-        if (!w) {
-            continue;
-        }
-        double v = w->value * (axis < 3 ? unit : 1.0);
-        if (machineCoordinates) {
-            target(axis) = v;
-        } else if (state_.incremental()) {
-            target(axis) += v;
-        } else {
-            target(axis) = v + offset(axis);
-        }
-    }
-    return target;
-}
-
-void ModalInterpreter::moveAxes(const Words& words) {
-    if (words.hasG(92)) {
-        // G92: the current position gets the given work coordinates
-        machine::Axes position = machine_.position();
-        machine::Axes offset = workOffset();
-        for (int axis = 0; axis < machine::kAxisCount; ++axis) {
-            if (const auto* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)])) {
-                int slot = dialect_.id == gcode::DialectId::M350 ? activeSlot() : WorkOffsets::kG92;
-                double current = offsets_.get(slot, axis);
-                offsets_.set(slot, axis, current + (position(axis) - offset(axis)) - w->value);
-            }
-        }
-        return;
-    }
-    if (!words.hasAxis() || words.hasG(4)) {
-        return; // in a G04 block, X is the dwell time (FANUC), not a move
-    }
-    if (words.hasG(53)) {
-        // One-shot machine coordinates; with F (the M350's `G53 Z#1306 F#1312`) a feed move
-        if (words.find('F')) {
-            machine_.feed(targetFor(words, true), state_.feed);
-        } else {
-            machine_.rapid(targetFor(words, true));
-        }
-        return;
-    }
-    if (words.hasG(28)) {
-        // via the intermediate point to the position after homing (params 122-126), as the M350 does
-        machine_.rapid(targetFor(words, false));
-        machine::Axes home = machine_.position();
-        for (int axis = 0; axis < machine::kAxisCount; ++axis) {
-            if (words.find(machine::kAxisNames[static_cast<std::size_t>(axis)])) {
-                home(axis) = parameters_.get(param::kHomePositionX + axis);
-            }
-        }
-        machine_.rapid(home);
-        return;
-    }
-    machine::Axes target = targetFor(words, false);
-    switch (state_.group(1)) {
-    case 0: machine_.rapid(target); break;
-    case 1:
-        if (state_.feed <= 0) {
-            throw MacroError{AlarmCode::InvalidWord, "G01 with no feed: give F", words.g.empty() ? 0 : words.g[0].column};
-        }
-        machine_.feed(target, state_.feed);
-        break;
-    default: {
-        // G2/G3: the end point now; arc geometry arrives with the motion model
-        machine_.arc(target, machine_.position(), machine::Plane::XY, state_.group(1) == 2, 0, state_.feed);
-        break;
-    }
     }
 }
 

@@ -3,11 +3,13 @@
 #include "core/config/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/interp/ModalState.h"
+#include "core/interp/ToolOffsets.h"
 #include "core/interp/WorkOffsets.h"
 #include "core/machine/MachineInterface.h"
 #include "core/macro/BlockSink.h"
 
 #include <array>
+#include <map>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -26,7 +28,11 @@ namespace m350::interp {
 class ModalInterpreter : public macro::BlockSink {
 public:
     ModalInterpreter(const gcode::Dialect& dialect, config::ParameterTable& parameters, WorkOffsets& offsets,
-                     machine::MachineInterface& machine);
+                     ToolOffsets& toolOffsets, machine::MachineInterface& machine);
+
+    // G30 P2/P3 (and G28 on FANUC, point 1) go to these machine positions; G28 on the M350 goes to
+    // the position after homing (params 122-126).
+    void setReferencePoint(int number, const machine::Axes& position) { referencePoints_[number] = position; }
 
     macro::BlockOutcome execute(const macro::EvaluatedBlock& block) override;
 
@@ -41,6 +47,8 @@ public:
     // The Z offset of the tool in the spindle (M350: params 930-945, virtual tools 973-992).
     double toolZOffset() const;
     int currentTool() const;
+    // FANUC G43/G44 H: + or - the length in tool offset H (0 under G49).
+    double toolLengthOffset() const;
 
     // Texts of operator stops (M0, G04 P-1) met in a headless run.
     std::vector<std::string> takeNotices();
@@ -79,14 +87,23 @@ private:
     void applyGCodes(const Words& words);
     void moveAxes(const Words& words);
     machine::Axes targetFor(const Words& words, bool machineCoordinates) const;
+    void setCoordinateSystem(const Words& words); // G92, G52
+    void setOffsets(const Words& words);          // G10
+    void goToReference(const Words& words, int point);
+    void moveTo(const machine::Axes& target, const Words& words);
+    void checkSoftLimits(const machine::Axes& target, const Words& words) const;
+    std::uint32_t motionColumn(const Words& words) const;
+    [[noreturn]] static void invalid(const macro::WordValue& w, std::string why);
 
     const gcode::Dialect& dialect_;
     config::ParameterTable& parameters_;
     WorkOffsets& offsets_;
+    ToolOffsets& toolOffsets_;
     machine::MachineInterface& machine_;
     ModalState state_;
     Words words_;
     std::vector<std::string> notices_;
+    std::map<int, machine::Axes> referencePoints_;
 };
 
 } // namespace m350::interp

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/machine/ArcGeometry.h"
 #include "core/machine/MachineTypes.h"
 
 namespace m350::machine {
@@ -14,8 +15,8 @@ public:
     virtual void rapid(const Axes& target) = 0;
     // G1 to `target` at `feed` mm/min.
     virtual void feed(const Axes& target, double feed) = 0;
-    // G2/G3 in `plane` about `center` (machine coordinates) to `target`; `turns` extra full turns.
-    virtual void arc(const Axes& target, const Axes& center, Plane plane, bool clockwise, int turns, double feed) = 0;
+    // G2/G3 along `arc` (machine coordinates, validated by makeArc) at `feed` mm/min.
+    virtual void arc(const Arc& arc, double feed) = 0;
     // G04: wait `seconds` of virtual time.
     virtual void dwell(double seconds) = 0;
     // Time spent preparing a block that does not move (macro statements, M codes).

@@ -20,15 +20,15 @@ double SimulatedMachine::moveDuration(double length, double speed, double accele
 }
 
 void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double speed, double acceleration,
-                            double feed) {
+                            double feed, const std::optional<Arc>& arc) {
     MachineEvent event;
     event.type = type;
     event.from = position_;
     event.to = target;
     event.feed = feed;
     event.start = time_;
-    double length = (target - position_).norm();
-    LastMove last{position_, target, time_, MotionProfile(length, speed, acceleration)};
+    double length = arc ? arc->length : (target - position_).norm();
+    LastMove last{position_, target, time_, MotionProfile(length, speed, acceleration), arc};
     time_ += last.profile.duration();
     position_ = target;
     lastMove_ = last;
@@ -46,9 +46,9 @@ void SimulatedMachine::feed(const Axes& target, double feed) {
     move(MachineEvent::Type::Feed, target, speed, limits_.feedAcceleration, feed);
 }
 
-void SimulatedMachine::arc(const Axes& target, const Axes&, Plane, bool, int, double feed) {
+void SimulatedMachine::arc(const Arc& arc, double feed) {
     double speed = std::min(feed / 60.0, limits_.maxSpeed) * feedOverride_;
-    move(MachineEvent::Type::Arc, target, speed, limits_.feedAcceleration, feed);
+    move(MachineEvent::Type::Arc, arc.end, speed, limits_.feedAcceleration, feed, arc);
 }
 
 Axes SimulatedMachine::positionAt(double t) const {
@@ -60,7 +60,11 @@ Axes SimulatedMachine::positionAt(double t) const {
     if (length <= 0.0 || t <= m.start) {
         return m.from;
     }
-    return m.from + (m.to - m.from) * (m.profile.distanceAt(t - m.start) / length);
+    double travelled = m.profile.distanceAt(t - m.start);
+    if (m.arc) {
+        return m.arc->pointAt(travelled);
+    }
+    return m.from + (m.to - m.from) * (travelled / length);
 }
 
 void SimulatedMachine::dwell(double seconds) {

@@ -39,7 +39,7 @@ public:
 
     void rapid(const Axes& target) override;
     void feed(const Axes& target, double feed) override;
-    void arc(const Axes& target, const Axes& center, Plane plane, bool clockwise, int turns, double feed) override;
+    void arc(const Arc& arc, double feed) override;
     void dwell(double seconds) override;
     void blockTime(double seconds) override { time_ += seconds; }
 
@@ -75,8 +75,10 @@ private:
         Axes to = Axes::Zero();
         double start = 0.0;
         MotionProfile profile{0.0, 1.0, 1.0};
+        std::optional<Arc> arc; // the path, when it is not a straight line
     };
-    void move(MachineEvent::Type type, const Axes& target, double speed, double acceleration, double feed);
+    void move(MachineEvent::Type type, const Axes& target, double speed, double acceleration, double feed,
+              const std::optional<Arc>& arc = std::nullopt);
     void notify(const MachineEvent& event);
 
     MachineObserver* observer_;

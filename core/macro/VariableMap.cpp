@@ -45,7 +45,7 @@ VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable +
         add(500, 999, K::Retained);
         add(1000, 1015, K::PmcSignal, true, 0);
         add(1100, 1115, K::System);
-        add(2001, 2400, K::System); // tool offset memory
+        add(2001, 2400, K::ToolOffset, false, 1);
         add(3000, 3000, K::Alarm);
         add(3001, 3002, K::System);
         add(3006, 3006, K::StopMessage);
@@ -107,6 +107,7 @@ std::string_view kindName(VariableKind kind) {
     case VariableKind::StopMessage: return "stop with message";
     case VariableKind::ModalGroup: return "modal group";
     case VariableKind::ModalWord: return "modal word";
+    case VariableKind::ToolOffset: return "tool offset";
     case VariableKind::System: return "system";
     }
     return "undefined";

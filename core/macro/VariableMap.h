@@ -35,6 +35,7 @@ enum class VariableKind : std::uint8_t {
     StopMessage,     // FANUC #3006: stop with a message
     ModalGroup,      // FANUC #4001-#4022
     ModalWord,       // FANUC #4107-#4120 (D E F H M N O S T ...)
+    ToolOffset,      // FANUC #2001-#2400: tool offset memory 1-400
     System           // other system values, kept as plain storage
 };
 

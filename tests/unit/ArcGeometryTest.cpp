@@ -1,4 +1,4 @@
-#include "core/interp/ArcGeometry.h"
+#include "core/machine/ArcGeometry.h"
 
 #include <gtest/gtest.h>
 
@@ -7,10 +7,10 @@
 
 namespace {
 
-using m350::interp::Arc;
-using m350::interp::ArcError;
-using m350::interp::ArcSpec;
-using m350::interp::makeArc;
+using m350::machine::Arc;
+using m350::machine::ArcError;
+using m350::machine::ArcSpec;
+using m350::machine::makeArc;
 using m350::machine::Axes;
 using m350::machine::Plane;
 

@@ -1,11 +1,11 @@
-#include "core/interp/ArcGeometry.h"
+#include "core/machine/ArcGeometry.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
-namespace m350::interp {
+namespace m350::machine {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
@@ -128,4 +128,4 @@ machine::Axes Arc::pointAt(double s) const {
     return p;
 }
 
-} // namespace m350::interp
+} // namespace m350::machine

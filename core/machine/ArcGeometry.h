@@ -8,7 +8,7 @@
 #include <string>
 #include <variant>
 
-namespace m350::interp {
+namespace m350::machine {
 
 // Orientation convention (FANUC 0i, LinuxCNC): each plane is given as a right-handed pair (u, v)
 // with u x v = the plane normal w, and "clockwise" is as seen from +w looking toward -w:
@@ -48,4 +48,4 @@ struct ArcError {
 
 std::variant<Arc, ArcError> makeArc(const ArcSpec& spec);
 
-} // namespace m350::interp
+} // namespace m350::machine

@@ -1,0 +1,251 @@
+// The ModalInterpreter's positioning: targets in machine coordinates, the coordinate-setting codes
+// (G92, G52, G10), reference returns (G28, G30), one-shot machine coordinates (G53), soft limits
+// and the motion itself (G0, G1, G2, G3).
+#include "core/interp/ModalInterpreter.h"
+
+#include "core/common/Numeric.h"
+#include "core/config/ParameterNumbers.h"
+#include "core/machine/ArcGeometry.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace m350::interp {
+
+using macro::MacroError;
+using macro::WordValue;
+namespace param = config::param;
+
+namespace {
+
+constexpr std::array<char, 3> kCenterLetters{'I', 'J', 'K'};
+
+std::string millimetres(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3f", v);
+    return buffer;
+}
+
+} // namespace
+
+machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordinates) const {
+    machine::Axes target = machine_.position();
+    machine::Axes offset = workOffset();
+    double unit = state_.inches() ? 25.4 : 1.0;
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        const auto* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)]);
+        if (!w) {
+            continue;
+        }
+        double v = w->value * (axis < 3 ? unit : 1.0);
+        if (machineCoordinates) {
+            target(axis) = v;
+        } else if (state_.incremental()) {
+            target(axis) += v;
+        } else {
+            target(axis) = v + offset(axis);
+        }
+    }
+    return target;
+}
+
+std::uint32_t ModalInterpreter::motionColumn(const Words& words) const {
+    if (!words.g.empty()) {
+        return words.g.front().column;
+    }
+    for (char axis : machine::kAxisNames) {
+        if (const WordValue* w = words.find(axis)) {
+            return w->column;
+        }
+    }
+    return 0;
+}
+
+// Param 155 switches the limits of params 161-170 on; a move that would cross one is refused before
+// the machine moves, as the controller checks the whole block first.
+void ModalInterpreter::checkSoftLimits(const machine::Axes& target, const Words& words) const {
+    if (parameters_.get(param::kSoftLimitsEnabled) == 0.0) {
+        return;
+    }
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        double low = parameters_.get(param::kSoftLimitNegativeX + axis);
+        double high = parameters_.get(param::kSoftLimitPositiveX + axis);
+        char name = machine::kAxisNames[static_cast<std::size_t>(axis)];
+        if (target(axis) > high + 1e-9 || target(axis) < low - 1e-9) {
+            bool positive = target(axis) > high;
+            int number = (positive ? param::kSoftLimitPositiveX : param::kSoftLimitNegativeX) + axis;
+            throw MacroError{AlarmCode::SoftLimit,
+                             std::string(1, name) + (positive ? "+" : "-") + " soft limit: the move to " +
+                                 std::string(1, name) + millimetres(target(axis)) + " goes beyond " +
+                                 millimetres(positive ? high : low) + " (parameter " + std::to_string(number) + ")",
+                             motionColumn(words)};
+        }
+    }
+}
+
+void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
+    checkSoftLimits(target, words);
+    switch (state_.group(1)) {
+    case 0: machine_.rapid(target); return;
+    case 1:
+        if (state_.feed <= 0) {
+            throw MacroError{AlarmCode::InvalidWord, "G01 with no feed: give F", motionColumn(words)};
+        }
+        machine_.feed(target, state_.feed);
+        return;
+    default: break;
+    }
+    if (state_.feed <= 0) {
+        throw MacroError{AlarmCode::InvalidWord, "G02/G03 with no feed: give F", motionColumn(words)};
+    }
+    machine::ArcSpec spec;
+    spec.start = machine_.position();
+    spec.end = target;
+    spec.plane = state_.group(2) == 18 ? machine::Plane::ZX : state_.group(2) == 19 ? machine::Plane::YZ
+                                                                                      : machine::Plane::XY;
+    spec.clockwise = state_.group(1) == 2;
+    double unit = state_.inches() ? 25.4 : 1.0;
+    if (const WordValue* r = words.find('R')) {
+        spec.radius = r->value * unit;
+    } else {
+        Eigen::Vector3d center = Eigen::Vector3d::Zero();
+        for (std::size_t k = 0; k < kCenterLetters.size(); ++k) {
+            if (const WordValue* w = words.find(kCenterLetters[k])) {
+                center(static_cast<Eigen::Index>(k)) = w->value * unit;
+            }
+        }
+        spec.centerOffset = center;
+    }
+    auto arc = machine::makeArc(spec);
+    if (auto* error = std::get_if<machine::ArcError>(&arc)) {
+        throw MacroError{AlarmCode::InvalidWord, error->message, motionColumn(words)};
+    }
+    machine_.arc(std::get<machine::Arc>(arc), state_.feed);
+}
+
+void ModalInterpreter::moveAxes(const Words& words) {
+    if (words.hasG(92) || words.hasG(52)) {
+        setCoordinateSystem(words);
+        return;
+    }
+    if (words.hasG(10)) {
+        setOffsets(words);
+        return;
+    }
+    if (!words.hasAxis() || words.hasG(4)) {
+        return; // in a G04 block, X is the dwell time (FANUC), not a move
+    }
+    if (words.hasG(53)) {
+        // One-shot machine coordinates; with F (the M350's `G53 Z#1306 F#1312`) a feed move
+        machine::Axes target = targetFor(words, true);
+        checkSoftLimits(target, words);
+        if (words.find('F')) {
+            machine_.feed(target, state_.feed);
+        } else {
+            machine_.rapid(target);
+        }
+        return;
+    }
+    if (words.hasG(28)) {
+        goToReference(words, 1);
+        return;
+    }
+    if (words.hasG(30)) {
+        const WordValue* p = words.find('P');
+        goToReference(words, p ? roundToInt(p->value) : 2);
+        return;
+    }
+    moveTo(targetFor(words, false), words);
+}
+
+// G28 / G30: through the intermediate point given by the axis words, then those axes alone to the
+// reference point. The M350's G28 goes to the position after homing (params 122-126).
+void ModalInterpreter::goToReference(const Words& words, int point) {
+    machine::Axes intermediate = targetFor(words, false);
+    checkSoftLimits(intermediate, words);
+    machine_.rapid(intermediate);
+    machine::Axes reference = machine::Axes::Zero();
+    if (point == 1 && dialect_.id == gcode::DialectId::M350) {
+        for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+            reference(axis) = parameters_.get(param::kHomePositionX + axis);
+        }
+    } else if (auto it = referencePoints_.find(point); it != referencePoints_.end()) {
+        reference = it->second;
+    } else if (point != 1) {
+        throw MacroError{AlarmCode::InvalidWord,
+                         "G30 P" + std::to_string(point) + ": reference point " + std::to_string(point) +
+                             " is not set in this machine's machine.toml [reference_points]",
+                         motionColumn(words)};
+    }
+    machine::Axes target = machine_.position();
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        if (words.find(machine::kAxisNames[static_cast<std::size_t>(axis)])) {
+            target(axis) = reference(axis);
+        }
+    }
+    machine_.rapid(target);
+}
+
+// G92 gives the current position new work coordinates; G52 shifts a local system (G52 X0 Y0 ends it).
+void ModalInterpreter::setCoordinateSystem(const Words& words) {
+    bool local = words.hasG(52);
+    machine::Axes position = machine_.position();
+    machine::Axes offset = workOffset();
+    int slot = local ? WorkOffsets::kG52 : dialect_.id == gcode::DialectId::M350 ? activeSlot() : WorkOffsets::kG92;
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        if (const WordValue* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)])) {
+            if (local) {
+                offsets_.set(slot, axis, w->value);
+            } else {
+                offsets_.set(slot, axis, offsets_.get(slot, axis) + (position(axis) - offset(axis)) - w->value);
+            }
+        }
+    }
+}
+
+// FANUC G10: L2 P0-6 writes a work offset (P0 the external one), L20 sets system P so the current
+// position reads the given values (LinuxCNC's meaning), L11 P R writes tool offset P.
+void ModalInterpreter::setOffsets(const Words& words) {
+    const WordValue& g10 = *std::find_if(words.g.begin(), words.g.end(), [](const WordValue& w) {
+        return std::abs(w.value - 10) < 1e-9;
+    });
+    if (dialect_.id == gcode::DialectId::M350) {
+        invalid(g10, "not available on the M350: write the work offsets #805-#844 directly");
+    }
+    const WordValue* l = words.find('L');
+    const WordValue* p = words.find('P');
+    if (!l || !p) {
+        invalid(g10, "G10 needs L and P (L2 P1 X.. for G54, L20, L11 P.. R..)");
+    }
+    int kind = roundToInt(l->value);
+    int number = roundToInt(p->value);
+    if (kind == 11) {
+        const WordValue* r = words.find('R');
+        if (!ToolOffsets::valid(number) || !r) {
+            invalid(g10, "G10 L11 needs P1-" + std::to_string(ToolOffsets::kCount) + " and R<value>");
+        }
+        toolOffsets_.set(number, (state_.incremental() ? toolOffsets_.get(number) : 0.0) + r->value);
+        return;
+    }
+    if ((kind != 2 && kind != 20) || number < 0 || number > 6) {
+        invalid(g10, "supported: L2 or L20 with P0-P6 (P0 external, P1-P6 G54-G59), L11 for tool offsets");
+    }
+    int slot = number == 0 ? WorkOffsets::kCommon : number;
+    machine::Axes position = machine_.position();
+    machine::Axes total = workOffset();
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        const WordValue* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)]);
+        if (!w) {
+            continue;
+        }
+        double current = offsets_.get(slot, axis);
+        if (kind == 2) {
+            offsets_.set(slot, axis, state_.incremental() ? current + w->value : w->value);
+        } else {
+            double others = total(axis) - (slot == activeSlot() ? current : 0.0);
+            offsets_.set(slot, axis, position(axis) - others - w->value);
+        }
+    }
+}
+
+} // namespace m350::interp
