@@ -57,6 +57,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--var", vars, "set variable #N to V before the run (N=V), repeatable");
         cmd->add_option("--input", inputs, "hold input INnn at 0 or 1 for the whole run (IN11=0), repeatable");
         cmd->add_flag("--unhomed", unhomed, "start with no axis homed");
+        cmd->add_flag("--home", o.home, "home (回零) every axis that has a home switch before the run");
         cmd->add_option("--tool", tool, "tool in the spindle at start");
         cmd->add_option("--print", printList, "variables to report, e.g. 1,100,1300");
         cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE");

@@ -17,6 +17,7 @@ struct SimOptions {
     std::optional<std::string> dialect;
     std::vector<int> printVariables;
     std::optional<std::string> traceFile;
+    bool home = false;                   // 回零 every axis that has a home switch before the run
     controller::RunSettings settings;
 };
 

@@ -85,7 +85,11 @@ int main(int argc, char** argv) {
     }
     bool ready = o.command == sim::SimOptions::Command::Run ? controller.loadFile(o.program)
                                                             : controller.loadMdi(o.mdiLines);
-    controller::RunReport report = controller.run();
+    std::optional<Alarm> homing;
+    if (o.home) {
+        homing = controller.home(controller.homeableAxes());
+    }
+    controller::RunReport report = homing ? controller.report(*homing) : controller.run();
     if (!ready) {
         report.status = controller::RunStatus::Error;
     }

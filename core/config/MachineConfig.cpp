@@ -4,6 +4,7 @@
 #include <toml++/toml.h>
 
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 
 namespace m350::config {
@@ -110,6 +111,14 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         }
     }
     config.magazineCapacity = t["magazine"]["capacity"].value_or(0);
+    if (auto distances = t["homing"]["switch_distance"].as_array()) {
+        if (distances->size() > 5) {
+            fail(file, "[homing] switch_distance has more than 5 axes");
+        }
+        for (std::size_t i = 0; i < distances->size(); ++i) {
+            config.homeSwitchDistance[i] = std::abs(numberValue(file, *distances->get(i), "switch_distance"));
+        }
+    }
     if (auto points = t["reference_points"].as_table()) {
         for (auto&& [key, value] : *points) {
             int number = numberKey(file, key.str(), 1, 4, "reference point");

@@ -21,7 +21,7 @@ struct LibraryFile {
 
 // A machine folder, as loaded: which dialect it speaks, its macro libraries, its parameters and
 // offsets, and the wiring of its IO. Files:
-//   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine], [reference_points]
+//   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine], [reference_points], [homing]
 //   params.toml    [params] N = value (parameters 0-999; the rest stay 0)
 //   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
@@ -37,6 +37,9 @@ struct MachineConfig {
     std::map<int, double> variables;
     int magazineCapacity = 0; // machines whose capacity is not a parameter (FANUC)
     std::map<int, std::array<double, 5>> referencePoints; // G30 P2/P3 (FANUC G28: point 1), machine coordinates
+    // The simulated world: how far each axis travels from where it stands at power-on to its home
+    // switch ([homing] switch_distance = [X, Y, Z, A, B]); no parameter says this.
+    std::array<double, 5> homeSwitchDistance{100.0, 100.0, 50.0, 30.0, 30.0};
 };
 
 struct ConfigError {

@@ -16,6 +16,12 @@ inline constexpr int kRapidAcceleration = 282;     // G00 acceleration, mm/s^2 (
 inline constexpr int kSpindleStoppedInput = 620;   // input triple: pin, enable, active level (M300)
 inline constexpr int kCurrentWorkSystem = 78;      // #578: 0 = G92, 1..6 = G54..G59
 inline constexpr int kHomePositionX = 122;         // 122-126: machine position after homing (G28 goes here)
+inline constexpr int kHomingCycles = 106;          // approaches to the switch
+inline constexpr int kHomingSpeedX = 107;          // 107-111, mm/min (deg/min)
+inline constexpr int kHomingDirectionX = 112;      // 112-116: 0 negative, 1 positive
+inline constexpr int kHomingSecondSpeed = 118;     // mm/min of the precise approaches (0: a tenth of the first)
+inline constexpr int kHomeAfterBooting = 127;      // 0 = prompt 是否进行开机寻零操作? at boot
+inline constexpr int kHomeSwitchX = 545;           // input triples 545, 548, 551, 554, 557: pin, enable, level
 inline constexpr int kHomeBeforeProcessing = 220;  // 0 = not required
 inline constexpr int kSoftLimitsEnabled = 155;     // 0 = off
 inline constexpr int kSoftLimitNegativeX = 161;    // 161-165 negative, 166-170 positive, machine coordinates

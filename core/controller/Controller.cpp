@@ -48,6 +48,12 @@ void Controller::configureMachine() {
     limits.spindleStopDelay = std::max(0.0, p.get(param::kSpindleStopDelay));
     limits.maxSpindleRpm = positive(p.get(param::kMaxSpindleRpm), 24000.0);
     machine_.setLimits(limits);
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        if (homeSwitchWired(axis)) { // released: the level that is not the active one
+            int active = p.get(param::kHomeSwitchX + 3 * axis + 2) != 0.0 ? 1 : 0;
+            machine_.presetInput(saturatingInt(p.get(param::kHomeSwitchX + 3 * axis)), 1 - active);
+        }
+    }
     const int pin = saturatingInt(p.get(param::kSpindleStoppedInput));
     const bool enabled = p.get(param::kSpindleStoppedInput + 1) != 0.0;
     if (enabled && pin >= 1 && pin <= machine::kInputCount) {
@@ -133,6 +139,7 @@ bool Controller::loadMdi(const std::vector<std::string>& lines) {
         text += line;
         text += '\n';
     }
+    mdi_ = true;
     return load("MDI", text, gcode::FileRole::Mdi, "UTF-8");
 }
 
@@ -172,13 +179,23 @@ RunReport Controller::run() {
     if (!executor_) {
         out.status = RunStatus::Error;
         out.diagnostics = diagnostics_;
-        report(out);
+        fill(out);
+        return out;
+    }
+    if (!mdi_ && config_.parameters.get(param::kHomeBeforeProcessing) != 0.0 &&
+        !(homed(0) && homed(1) && homed(2))) {
+        // param 220: automatic runs need X, Y and Z homed (MDI does not)
+        out.status = RunStatus::Alarm;
+        out.alarm = Alarm{AlarmCode::NotHomed, "机械未归零不能自动加工! (home X, Y and Z first: parameter 220)",
+                          program_.files.empty() ? std::string() : program_.files.front().name, 0, 0};
+        out.diagnostics = diagnostics_;
+        fill(out);
         return out;
     }
     auto unit = program_.mainUnit();
     if (!unit || !executor_->start(*unit)) {
         out.status = RunStatus::Ok;
-        report(out);
+        fill(out);
         return out;
     }
     while (executor_->state() == macro::Executor::State::Running) {
@@ -211,7 +228,16 @@ RunReport Controller::run() {
         }
     }
     out.diagnostics = diagnostics_;
-    report(out);
+    fill(out);
+    return out;
+}
+
+RunReport Controller::report(const Alarm& alarm) const {
+    RunReport out;
+    out.status = RunStatus::Alarm;
+    out.alarm = alarm;
+    out.diagnostics = diagnostics_;
+    fill(out);
     return out;
 }
 
@@ -220,7 +246,7 @@ int Controller::spindleTool() const {
                                                          : fanucSpindleTool_;
 }
 
-void Controller::report(RunReport& out) const {
+void Controller::fill(RunReport& out) const {
     out.machine = machine_.position();
     out.work = interp_.workPosition();
     out.tool = spindleTool();

@@ -36,6 +36,17 @@ public:
 
     RunReport run();
 
+    // 回零: homes the given axes (0 X .. 4 B), Z first. An alarm when an axis has no home switch.
+    std::optional<Alarm> home(const std::vector<int>& axes);
+    bool homed(int axis) const { return homed_[static_cast<std::size_t>(axis)] != 0; }
+    // Param 127 = 0 asks at boot whether to home (是否进行开机寻零操作?) while X, Y, Z are not homed.
+    bool needsBootHomingPrompt() const;
+    // X, Y and Z always; the 4th and 5th axes when their home switch is set.
+    std::vector<int> homeableAxes() const;
+    // The state as it stands, reported with an alarm raised outside a run (homing).
+    RunReport report(const Alarm& alarm) const;
+    static constexpr const char* kBootHomingPrompt = "是否进行开机寻零操作?";
+
     // Reads any variable as a macro would, for --print and the panel.
     macro::Value variable(int number);
     const gcode::Dialect& dialect() const { return *config_.dialect; }
@@ -53,7 +64,9 @@ private:
     void applySettings();
     void configureMachine();
     void enterSafeState();
-    void report(RunReport& out) const;
+    std::optional<Alarm> homeAxis(int axis);
+    bool homeSwitchWired(int axis) const;
+    void fill(RunReport& out) const;
     int spindleTool() const;
     TraceSource source() const;
     void postMessage(std::string text);
@@ -73,6 +86,7 @@ private:
     int fanucSpindleTool_ = 0;
     double dialogAnswer_ = 0.0;
     std::vector<std::string> messages_;
+    bool mdi_ = false;
 };
 
 } // namespace m350::controller

@@ -128,6 +128,20 @@ void SimulatedMachine::setOutput(int port, int level) {
     notify(event);
 }
 
+void SimulatedMachine::setInput(int port, int level) {
+    int& current = inputs_[static_cast<std::size_t>(port - 1)];
+    if (current == level) {
+        return;
+    }
+    current = level;
+    MachineEvent event;
+    event.type = MachineEvent::Type::Io;
+    event.start = event.end = time_;
+    event.port = -port;
+    event.level = level;
+    notify(event);
+}
+
 int SimulatedMachine::input(int port) {
     auto index = static_cast<std::size_t>(port - 1);
     if (forced_[index]) {

@@ -33,7 +33,10 @@ public:
     void addLink(const IoLink& link) { links_.push_back(link); }
     // Holds an input at a level for the whole run (`m350-sim --input IN11=0`), whatever drives it.
     void forceInput(int port, int level) { forced_[static_cast<std::size_t>(port - 1)] = level; }
-    void setInput(int port, int level) { inputs_[static_cast<std::size_t>(port - 1)] = level; }
+    // A sensor the simulated world drives (a home switch); traced as an io event on INnn.
+    void setInput(int port, int level);
+    // The level an input reads at power-on (a released switch), before anything happens.
+    void presetInput(int port, int level) { inputs_[static_cast<std::size_t>(port - 1)] = level; }
     // Feed override 0..1.5 (the panel's 进给倍率); `rapidToo` when param 253 lets it slow G00.
     void setFeedOverride(double factor, bool rapidToo);
 

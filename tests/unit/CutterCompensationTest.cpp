@@ -248,16 +248,19 @@ TEST(CutterCompensation, ArcSmallerThanTheToolOnTheInsideIsAGouge) {
                {L(0, 10, 0, -5), L(0, -5, 10, -5), A(10, -5, 10, 11, 10, 3, CCW)});
 }
 
-TEST(CutterCompensation, NearlyTangentInsideTransitionIsJoinedNotRejected) {
-    // CAM rounding leaves the line 0.1 mrad off the tangent of the CW arc; the exact offsets meet
-    // 2.4 mm past the end of the line, which would read as a gouge.
+TEST(CutterCompensation, NearlyTangentInsideTransitionIsTrimmedNotRejected) {
+    // CAM rounding leaves the line 0.1 mrad off the tangent of the CW arc: a tiny inside corner whose
+    // trim stays within the last 0.2 um of the line.
     const Path path = run({{L(-10, 10, -10, 0.001), Side::Left},
                            {L(-10, 0.001, 0, 0), Side::Left},
                            {A(0, 0, 10, -10, 0, -10, CW), Side::Left}},
                           2.0);
-    ASSERT_EQ(path.size(), 4u);
-    EXPECT_LT((path[2].start - Eigen::Vector2d(0, 2)).norm(), 1e-3);
-    EXPECT_TRUE(same(path[3], A(0, 2, 12, -10, 0, -10, CW)));
+    ASSERT_EQ(path.size(), 3u);
+    const Eigen::Vector2d trim = path[1].end;
+    EXPECT_GT(trim.x(), 0.0);
+    EXPECT_LT(trim.x(), 2e-4);
+    EXPECT_NEAR((trim - Eigen::Vector2d(0, -10)).norm(), 12.0, 1e-9);
+    EXPECT_TRUE(same(path[2], A(trim.x(), trim.y(), 12, -10, 0, -10, CW)));
 }
 
 TEST(CutterCompensation, RadiusChangeJoinsTheOffsetsWithALine) {

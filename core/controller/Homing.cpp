@@ -1,0 +1,103 @@
+// 回零 homing: each axis runs toward its home switch (an IO input, params 545-557), backs off and
+// approaches again slowly, then takes the machine position of params 122-126.
+#include "core/controller/Controller.h"
+
+#include "core/common/Numeric.h"
+#include "core/config/ParameterNumbers.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace m350::controller {
+
+namespace param = config::param;
+
+namespace {
+
+constexpr double kBackOff = 2.0; // mm the axis leaves the switch by between approaches
+constexpr std::array<int, machine::kAxisCount> kHomingOrder{2, 0, 1, 3, 4}; // Z first, clear of the work
+
+} // namespace
+
+bool Controller::homeSwitchWired(int axis) const {
+    const config::ParameterTable& p = config_.parameters;
+    int pin = saturatingInt(p.get(param::kHomeSwitchX + 3 * axis));
+    return p.get(param::kHomeSwitchX + 3 * axis + 1) != 0.0 && pin >= 1 && pin <= machine::kInputCount;
+}
+
+std::vector<int> Controller::homeableAxes() const {
+    std::vector<int> axes{0, 1, 2};
+    for (int axis = 3; axis < machine::kAxisCount; ++axis) {
+        if (homeSwitchWired(axis)) {
+            axes.push_back(axis);
+        }
+    }
+    return axes;
+}
+
+bool Controller::needsBootHomingPrompt() const {
+    bool allHomed = homed_[0] && homed_[1] && homed_[2];
+    return config_.parameters.get(param::kHomeAfterBooting) == 0.0 && !allHomed;
+}
+
+std::optional<Alarm> Controller::home(const std::vector<int>& axes) {
+    for (int axis : kHomingOrder) {
+        if (std::find(axes.begin(), axes.end(), axis) == axes.end()) {
+            continue;
+        }
+        if (auto alarm = homeAxis(axis)) {
+            enterSafeState();
+            if (trace_) {
+                trace_->alarm(machine_.time(), *alarm);
+            }
+            return alarm;
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<Alarm> Controller::homeAxis(int axis) {
+    const config::ParameterTable& p = config_.parameters;
+    const char name = machine::kAxisNames[static_cast<std::size_t>(axis)];
+    if (!homeSwitchWired(axis)) {
+        int first = param::kHomeSwitchX + 3 * axis;
+        return Alarm{AlarmCode::NotHomed,
+                     std::string(1, name) + " cannot home: no home switch is set (params " + std::to_string(first) +
+                         "-" + std::to_string(first + 2) + ": pin, enable, level)",
+                     "", 0, 0};
+    }
+    const int pin = saturatingInt(p.get(param::kHomeSwitchX + 3 * axis));
+    const int active = p.get(param::kHomeSwitchX + 3 * axis + 2) != 0.0 ? 1 : 0;
+    const double direction = p.get(param::kHomingDirectionX + axis) != 0.0 ? 1.0 : -1.0;
+    const double speed = p.get(param::kHomingSpeedX + axis) > 0 ? p.get(param::kHomingSpeedX + axis) : 500.0;
+    const double slow = p.get(param::kHomingSecondSpeed) > 0 ? p.get(param::kHomingSecondSpeed) : speed / 10.0;
+    const int cycles = std::max(1, saturatingInt(p.get(param::kHomingCycles)));
+    const double home = p.get(param::kHomePositionX + axis);
+
+    // Where the switch is, seen from here: the simulated world says so before the first homing;
+    // afterwards the switch sits kBackOff beyond the home position.
+    machine::Axes position = machine_.position();
+    double distance = homed_[static_cast<std::size_t>(axis)]
+                          ? std::abs(home + direction * kBackOff - position(axis))
+                          : config_.homeSwitchDistance[static_cast<std::size_t>(axis)];
+    auto moveBy = [&](double delta, double feed) {
+        position(axis) += delta;
+        machine_.feed(position, feed);
+    };
+    moveBy(direction * distance, speed);
+    machine_.setInput(pin, active);
+    for (int cycle = 1; cycle < cycles; ++cycle) {
+        moveBy(-direction * kBackOff, slow);
+        machine_.setInput(pin, 1 - active);
+        moveBy(direction * kBackOff, slow);
+        machine_.setInput(pin, active);
+    }
+    moveBy(-direction * kBackOff, slow);
+    machine_.setInput(pin, 1 - active);
+    position(axis) = home;
+    machine_.setPosition(position);
+    homed_[static_cast<std::size_t>(axis)] = 1;
+    return std::nullopt;
+}
+
+} // namespace m350::controller
