@@ -14,7 +14,7 @@ namespace m350::controller {
 namespace param = config::param;
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
-    : config_(std::move(config)), settings_(std::move(settings)), machine_(this),
+    : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace ? this : nullptr),
       interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, machine_), store_(*config_.dialect, config_.parameters) {
     if (settings_.trace) {
         trace_ = std::make_unique<TraceWriter>(*settings_.trace);
@@ -212,8 +212,10 @@ RunReport Controller::run() {
         if (executor_->blocksExecuted() != blocksBefore) {
             machine_.blockTime(settings_.blockTime);
         }
-        for (std::string& notice : interp_.takeNotices()) {
-            postMessage(std::move(notice));
+        if (interp_.hasNotices()) {
+            for (std::string& notice : interp_.takeNotices()) {
+                postMessage(std::move(notice));
+            }
         }
         if (int toolAfter = spindleTool(); toolAfter != toolBefore && trace_) {
             trace_->toolChange(machine_.time(), toolBefore, toolAfter, source());

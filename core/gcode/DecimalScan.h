@@ -14,29 +14,44 @@ inline bool scanDecimal(const char* text, std::size_t size, std::size_t& i, doub
     static constexpr double kPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                               1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                               1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    auto digit = [](char c) { return static_cast<unsigned>(c - '0') < 10u; };
+    const std::size_t start = i;
     std::uint64_t mantissa = 0;
-    int fraction = -1; // digits after the point; -1 before it
-    int significant = 0;
-    bool plain = true;
-    for (; i < size; ++i) {
-        char c = text[i];
-        if (c >= '0' && c <= '9') {
-            mantissa = mantissa * 10 + static_cast<std::uint64_t>(c - '0');
-            significant += mantissa != 0 ? 1 : 0;
-            fraction += fraction >= 0 ? 1 : 0;
-            plain &= significant <= 15;
-        } else if (c == '.') {
-            plain &= fraction < 0;
-            fraction = 0;
-        } else {
-            break;
+    while (i < size && digit(text[i])) {
+        mantissa = mantissa * 10 + static_cast<std::uint64_t>(text[i] - '0');
+        ++i;
+    }
+    std::size_t fraction = 0;
+    const bool point = i < size && text[i] == '.';
+    if (point) {
+        const std::size_t point = ++i;
+        while (i < size && digit(text[i])) {
+            mantissa = mantissa * 10 + static_cast<std::uint64_t>(text[i] - '0');
+            ++i;
+        }
+        fraction = i - point;
+        if (i < size && text[i] == '.') { // 1.2.3: take the rest of the token, then refuse it
+            while (i < size && (digit(text[i]) || text[i] == '.')) {
+                ++i;
+            }
+            return false;
         }
     }
-    int scale = fraction < 0 ? 0 : fraction;
-    if (!plain || scale > 22) {
+    const std::size_t digits = i - start - (point ? 1 : 0);
+    if (digits > 15) {
+        // Leading zeros do not count, but more than 15 significant digits may not fit 2^53.
+        std::size_t significant = digits;
+        for (std::size_t k = start; k < i && (text[k] == '0' || text[k] == '.'); ++k) {
+            significant -= text[k] == '0' ? 1 : 0;
+        }
+        if (significant > 15) {
+            return false;
+        }
+    }
+    if (fraction > 22) {
         return false;
     }
-    value = static_cast<double>(mantissa) / kPowersOfTen[scale];
+    value = static_cast<double>(mantissa) / kPowersOfTen[fraction];
     return true;
 }
 

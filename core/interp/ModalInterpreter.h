@@ -52,6 +52,7 @@ public:
 
     // Texts of operator stops (M0, G04 P-1) met in a headless run.
     std::vector<std::string> takeNotices();
+    bool hasNotices() const { return !notices_.empty(); }
 
 private:
     // The words of one block by letter. `present` says which letters were written; clearing it is

@@ -21,19 +21,28 @@ double SimulatedMachine::moveDuration(double length, double speed, double accele
 
 void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double speed, double acceleration,
                             double feed, const std::optional<Arc>& arc) {
-    MachineEvent event;
-    event.type = type;
-    event.from = position_;
-    event.to = target;
-    event.feed = feed;
-    event.start = time_;
     double length = arc ? arc->length : (target - position_).norm();
-    LastMove last{position_, target, time_, MotionProfile(length, speed, acceleration), arc};
+    if (!lastMove_) {
+        lastMove_.emplace();
+    }
+    LastMove& last = *lastMove_; // assigned in place: this runs for every move of a 200,000-line program
+    last.from = position_;
+    last.to = target;
+    last.start = time_;
+    last.profile = MotionProfile(length, speed, acceleration);
+    last.arc = arc;
     time_ += last.profile.duration();
     position_ = target;
-    lastMove_ = last;
-    event.end = time_;
-    notify(event);
+    if (observer_) {
+        MachineEvent event;
+        event.type = type;
+        event.from = last.from;
+        event.to = target;
+        event.feed = feed;
+        event.start = last.start;
+        event.end = time_;
+        notify(event);
+    }
 }
 
 void SimulatedMachine::rapid(const Axes& target) {
