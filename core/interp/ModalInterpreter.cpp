@@ -41,7 +41,7 @@ int groupOf(int code) {
     case 90: case 91: return 3;
     case 94: case 95: return 5;
     case 20: case 21: return 6;
-    case 40: return 7;
+    case 40: case 41: case 42: return 7;
     case 43: case 44: case 49: return 8;
     case 80: return 9;
     case 98: case 99: return 10;
@@ -188,6 +188,9 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
             if (code == 0) {
                 notices_.push_back("M0 program stop (headless run: continued)");
             } else if (code == 2 || code == 30) {
+                flushCompensation();
+                compensation_.reset();
+                state_.groups[7] = 40;
                 machine_.spindle(machine::SpindleState::Stop, 0.0);
                 machine_.coolant(false);
                 if (code == 30 && dialect_.id == gcode::DialectId::M350) { // 总加工数, 加工件数

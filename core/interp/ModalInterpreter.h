@@ -2,6 +2,7 @@
 
 #include "core/config/ParameterTable.h"
 #include "core/gcode/Dialect.h"
+#include "core/interp/CutterCompensation.h"
 #include "core/interp/ModalState.h"
 #include "core/interp/ToolOffsets.h"
 #include "core/interp/WorkOffsets.h"
@@ -95,6 +96,12 @@ private:
     void checkSoftLimits(const machine::Axes& target, const Words& words) const;
     std::uint32_t motionColumn(const Words& words) const;
     [[noreturn]] static void invalid(const macro::WordValue& w, std::string why);
+    bool compensating() const;
+    machine::Axes basePosition() const;
+    double compensationRadius() const;
+    void compensatedMove(const machine::Axes& target, const Words& words);
+    void emitToolPath(const std::vector<PathSegment>& segments);
+    void flushCompensation();
 
     const gcode::Dialect& dialect_;
     config::ParameterTable& parameters_;
@@ -105,6 +112,10 @@ private:
     Words words_;
     std::vector<std::string> notices_;
     std::map<int, machine::Axes> referencePoints_;
+    CutterCompensation compensation_;
+    machine::Axes programmed_ = machine::Axes::Zero();    // where the program is, ahead of the machine
+    machine::Axes pendingHeight_ = machine::Axes::Zero(); // Z, A, B of the move being compensated
+    int pendingMode_ = 1;                                  // its motion mode (0 rapid, 1 feed)
 };
 
 } // namespace m350::interp

@@ -29,7 +29,7 @@ std::string millimetres(double v) {
 } // namespace
 
 machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordinates) const {
-    machine::Axes target = machine_.position();
+    machine::Axes target = basePosition();
     machine::Axes offset = workOffset();
     double unit = state_.inches() ? 25.4 : 1.0;
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
@@ -84,6 +84,22 @@ void ModalInterpreter::checkSoftLimits(const machine::Axes& target, const Words&
 }
 
 void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
+    if (compensating() || state_.group(7) != 40) {
+        bool sameXY = (target.head<2>() - basePosition().head<2>()).isZero(1e-12);
+        if (!sameXY || state_.group(7) == 40) {
+            compensatedMove(target, words);
+            return;
+        }
+        // A plunge or lift under compensation: the tool path so far is final, then Z moves alone
+        // where the tool stands.
+        flushCompensation();
+        programmed_ = target;
+        machine::Axes tool = target;
+        tool.head<2>() = machine_.position().head<2>();
+        checkSoftLimits(tool, words);
+        state_.group(1) == 0 ? machine_.rapid(tool) : machine_.feed(tool, state_.feed);
+        return;
+    }
     checkSoftLimits(target, words);
     switch (state_.group(1)) {
     case 0: machine_.rapid(target); return;
