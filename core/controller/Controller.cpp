@@ -234,6 +234,12 @@ RunReport Controller::run() {
     return out;
 }
 
+void Controller::zeroWorkAxis(int axis) {
+    int slot = interp_.activeSlot();
+    double others = interp_.workOffset()(axis) - offsets_.get(slot, axis);
+    offsets_.set(slot, axis, machine_.position()(axis) - others);
+}
+
 RunReport Controller::report(const Alarm& alarm) const {
     RunReport out;
     out.status = RunStatus::Alarm;

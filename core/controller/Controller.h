@@ -41,6 +41,11 @@ public:
     bool homed(int axis) const { return homed_[static_cast<std::size_t>(axis)] != 0; }
     // Param 127 = 0 asks at boot whether to home (是否进行开机寻零操作?) while X, Y, Z are not homed.
     bool needsBootHomingPrompt() const;
+    // 清零: makes the current position the work zero of `axis` in the active system. For Z on the
+    // M350 the stored offset excludes the tool's Z offset (params 930-945), so it holds the distance
+    // between the setter and the workpiece and every set tool then cuts at the same Z.
+    void zeroWorkAxis(int axis);
+
     // X, Y and Z always; the 4th and 5th axes when their home switch is set.
     std::vector<int> homeableAxes() const;
     // The state as it stands, reported with an alarm raised outside a run (homing).
