@@ -20,6 +20,7 @@ std::string_view alarmKey(AlarmCode code) {
     case AlarmCode::SimulatedTimeLimit: return "simulated_time_limit";
     case AlarmCode::NotHomed: return "not_homed";
     case AlarmCode::SoftLimit: return "soft_limit";
+    case AlarmCode::SkipNotTriggered: return "skip_not_triggered";
     case AlarmCode::OperatorReset: return "reset";
     }
     return "unknown";

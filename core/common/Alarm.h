@@ -25,6 +25,7 @@ enum class AlarmCode : std::uint8_t {
     SimulatedTimeLimit,   // runaway loop
     NotHomed,
     SoftLimit,
+    SkipNotTriggered,     // G31 ended its move without the signal
     OperatorReset,
 };
 

@@ -119,6 +119,13 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
             config.homeSwitchDistance[i] = std::abs(numberValue(file, *distances->get(i), "switch_distance"));
         }
     }
+    config.setterTop = t["tool_setter"]["top"].value_or(config.setterTop);
+    config.setterRadius = t["tool_setter"]["radius"].value_or(config.setterRadius);
+    if (auto lengths = t["tools"]["length"].as_array()) {
+        for (const toml::node& length : *lengths) {
+            config.toolLengths.push_back(numberValue(file, length, "tools.length"));
+        }
+    }
     if (auto points = t["reference_points"].as_table()) {
         for (auto&& [key, value] : *points) {
             int number = numberKey(file, key.str(), 1, 4, "reference point");

@@ -21,7 +21,8 @@ struct LibraryFile {
 
 // A machine folder, as loaded: which dialect it speaks, its macro libraries, its parameters and
 // offsets, and the wiring of its IO. Files:
-//   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine], [reference_points], [homing]
+//   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine], [reference_points], [homing],
+//                  [tool_setter], [tools]
 //   params.toml    [params] N = value (parameters 0-999; the rest stay 0)
 //   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
@@ -40,6 +41,11 @@ struct MachineConfig {
     // The simulated world: how far each axis travels from where it stands at power-on to its home
     // switch ([homing] switch_distance = [X, Y, Z, A, B]); no parameter says this.
     std::array<double, 5> homeSwitchDistance{100.0, 100.0, 50.0, 30.0, 30.0};
+    // The fixed tool setter's top ([tool_setter] top: spindle-nose machine Z at contact with a
+    // zero-length tool) and reach; the tools' true lengths ([tools] length = [T1, T2, ...], mm).
+    double setterTop = -100.0;
+    double setterRadius = 5.0;
+    std::vector<double> toolLengths;
 };
 
 struct ConfigError {

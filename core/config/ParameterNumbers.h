@@ -14,6 +14,8 @@ inline constexpr int kMaxSpindleRpm = 82;
 inline constexpr int kSpindleStopDelay = 89;       // s, the spindle coasts to a stop
 inline constexpr int kRapidAcceleration = 282;     // G00 acceleration, mm/s^2 (0: use 62)
 inline constexpr int kSpindleStoppedInput = 620;   // input triple: pin, enable, active level (M300)
+inline constexpr int kFixedSetterInput = 575;      // input triple of the fixed tool setter (固定对刀信号)
+inline constexpr int kFixedSetterX = 135;          // 135-137: the fixed setter's machine X, Y and start Z
 inline constexpr int kCurrentWorkSystem = 78;      // #578: 0 = G92, 1..6 = G54..G59
 inline constexpr int kHomePositionX = 122;         // 122-126: machine position after homing (G28 goes here)
 inline constexpr int kHomingCycles = 106;          // approaches to the switch

@@ -54,6 +54,16 @@ void Controller::configureMachine() {
             machine_.presetInput(saturatingInt(p.get(param::kHomeSwitchX + 3 * axis)), 1 - active);
         }
     }
+    machine::ToolSetter setter;
+    if (p.get(param::kFixedSetterInput + 1) != 0.0) {
+        setter.port = std::clamp(saturatingInt(p.get(param::kFixedSetterInput)), 0, machine::kInputCount);
+        setter.activeLevel = p.get(param::kFixedSetterInput + 2) != 0.0 ? 1 : 0;
+    }
+    setter.x = p.get(param::kFixedSetterX);
+    setter.y = p.get(param::kFixedSetterX + 1);
+    setter.top = config_.setterTop;
+    setter.radius = config_.setterRadius;
+    machine_.setToolSetter(setter);
     const int pin = saturatingInt(p.get(param::kSpindleStoppedInput));
     const bool enabled = p.get(param::kSpindleStoppedInput + 1) != 0.0;
     if (enabled && pin >= 1 && pin <= machine::kInputCount) {
@@ -77,6 +87,7 @@ void Controller::applySettings() {
         }
     }
     configureMachine();
+    syncToolLength();
     homed_.fill(settings_.homed ? 1 : 0);
     machine::Axes start = machine::Axes::Zero();
     if (settings_.homed) {
@@ -217,8 +228,11 @@ RunReport Controller::run() {
                 postMessage(std::move(notice));
             }
         }
-        if (int toolAfter = spindleTool(); toolAfter != toolBefore && trace_) {
-            trace_->toolChange(machine_.time(), toolBefore, toolAfter, source());
+        if (int toolAfter = spindleTool(); toolAfter != toolBefore) {
+            syncToolLength();
+            if (trace_) {
+                trace_->toolChange(machine_.time(), toolBefore, toolAfter, source());
+            }
         }
     }
     if (executor_->state() == macro::Executor::State::Alarmed) {
@@ -232,6 +246,13 @@ RunReport Controller::run() {
     out.diagnostics = diagnostics_;
     fill(out);
     return out;
+}
+
+// The tool in the spindle decides where the setter trips: the simulated world's tool length.
+void Controller::syncToolLength() {
+    int tool = spindleTool();
+    bool known = tool >= 1 && static_cast<std::size_t>(tool) <= config_.toolLengths.size();
+    machine_.setToolLength(known ? config_.toolLengths[static_cast<std::size_t>(tool - 1)] : 0.0);
 }
 
 void Controller::zeroWorkAxis(int axis) {

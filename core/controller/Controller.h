@@ -68,6 +68,7 @@ private:
     bool load(const std::string& path, std::string_view text, gcode::FileRole role, const std::string& encoding);
     void applySettings();
     void configureMachine();
+    void syncToolLength();
     void enterSafeState();
     std::optional<Alarm> homeAxis(int axis);
     bool homeSwitchWired(int axis) const;

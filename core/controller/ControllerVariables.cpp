@@ -32,8 +32,16 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         return Value::of(machine_.position()(axis) - offsets_.get(info.index >> 3, axis) - tool);
     }
     case VariableKind::BlockEnd: return Value::of(interp_.workPosition()(info.index));
-    case VariableKind::SkipPosition:
-    case VariableKind::ProbeResult: return Value::of(0); // written by G31 once probing is modelled
+    case VariableKind::SkipPosition: // FANUC #5061-#5065: where the skip signal came, work coordinates
+        return Value::of(interp_.lastProbe().position(info.index) - interp_.workOffset()(info.index));
+    case VariableKind::ProbeResult: { // M350 #1920-#1924 result per axis (2 hit), #1925-#1929 machine position
+        const interp::ModalInterpreter::Probe& probe = interp_.lastProbe();
+        if (info.index >= machine::kAxisCount) {
+            return Value::of(probe.position(info.index - machine::kAxisCount));
+        }
+        bool moved = (probe.axes & (1u << info.index)) != 0;
+        return Value::of(moved && probe.triggered ? 2 : 0);
+    }
     case VariableKind::Input: return Value::of(machine_.input(info.index));
     case VariableKind::Output: return Value::of(machine_.output(info.index));
     case VariableKind::Homed: return Value::of(homed_[static_cast<std::size_t>(info.index)]);

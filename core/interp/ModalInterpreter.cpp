@@ -247,7 +247,7 @@ void ModalInterpreter::applyGCodes(const Words& words) {
             machine_.dwell(seconds);
             break;
         }
-        case 10: case 28: case 30: case 52: case 53: case 92: break; // with the axis words, in moveAxes
+        case 10: case 28: case 30: case 31: case 52: case 53: case 92: break; // with the axis words, in moveAxes
         default: invalid(g, "not a G code this machine knows");
         }
     }

@@ -51,6 +51,14 @@ public:
     // FANUC G43/G44 H: + or - the length in tool offset H (0 under G49).
     double toolLengthOffset() const;
 
+    // The last G31: whether the signal came, where (machine coordinates), which axes moved.
+    struct Probe {
+        bool triggered = false;
+        machine::Axes position = machine::Axes::Zero();
+        std::uint32_t axes = 0; // bit per axis commanded in the G31 block
+    };
+    const Probe& lastProbe() const { return probe_; }
+
     // Texts of operator stops (M0, G04 P-1) met in a headless run.
     std::vector<std::string> takeNotices();
     bool hasNotices() const { return !notices_.empty(); }
@@ -92,6 +100,7 @@ private:
     void setCoordinateSystem(const Words& words); // G92, G52
     void setOffsets(const Words& words);          // G10
     void goToReference(const Words& words, int point);
+    void probeMove(const Words& words);
     void moveTo(const machine::Axes& target, const Words& words);
     void checkSoftLimits(const machine::Axes& target, const Words& words) const;
     std::uint32_t motionColumn(const Words& words) const;
@@ -113,6 +122,7 @@ private:
     std::vector<std::string> notices_;
     std::map<int, machine::Axes> referencePoints_;
     CutterCompensation compensation_;
+    Probe probe_;
     machine::Axes programmed_ = machine::Axes::Zero();    // where the program is, ahead of the machine
     machine::Axes pendingHeight_ = machine::Axes::Zero(); // Z, A, B of the move being compensated
     int pendingMode_ = 1;                                  // its motion mode (0 rapid, 1 feed)

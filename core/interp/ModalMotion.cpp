@@ -7,6 +7,7 @@
 #include "core/config/ParameterNumbers.h"
 #include "core/machine/ArcGeometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -166,12 +167,69 @@ void ModalInterpreter::moveAxes(const Words& words) {
         goToReference(words, 1);
         return;
     }
+    if (words.hasG(31)) {
+        probeMove(words);
+        return;
+    }
     if (words.hasG(30)) {
         const WordValue* p = words.find('P');
         goToReference(words, p ? roundToInt(p->value) : 2);
         return;
     }
     moveTo(targetFor(words, false), words);
+}
+
+// G31 skip: the M350 names the input and level (`G31 Z-50 F100 P12 L1`); FANUC's skip signal is
+// wired to the fixed setter's input (params 575-577). The move stops where the signal comes; a
+// move that ends without it is an alarm.
+void ModalInterpreter::probeMove(const Words& words) {
+    const WordValue& g31 = *std::find_if(words.g.begin(), words.g.end(), [](const WordValue& w) {
+        return std::abs(w.value - 31) < 1e-9;
+    });
+    int port = 0;
+    int level = 1;
+    if (dialect_.id == gcode::DialectId::M350) {
+        const WordValue* p = words.find('P');
+        port = p ? roundToInt(p->value) : 0;
+        const WordValue* l = words.find('L');
+        level = l ? (l->value != 0.0 ? 1 : 0) : 1;
+    } else if (parameters_.get(param::kFixedSetterInput + 1) != 0.0) {
+        port = saturatingInt(parameters_.get(param::kFixedSetterInput));
+        level = parameters_.get(param::kFixedSetterInput + 2) != 0.0 ? 1 : 0;
+    }
+    if (port < 1 || port > machine::kInputCount) {
+        invalid(g31, dialect_.id == gcode::DialectId::M350
+                         ? "G31 needs P<input 1-24> and L<level>"
+                         : "no skip signal: the fixed setter input (params 575-577) is not set");
+    }
+    if (state_.feed <= 0) {
+        invalid(g31, "G31 needs a feed: give F");
+    }
+    machine::Axes target = targetFor(words, false);
+    checkSoftLimits(target, words);
+    probe_ = Probe{};
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        if (words.find(machine::kAxisNames[static_cast<std::size_t>(axis)])) {
+            probe_.axes |= 1u << axis;
+        }
+    }
+    machine::ProbeResult result = machine_.probe(target, state_.feed, port, level);
+    probe_.triggered = result.triggered;
+    probe_.position = result.position;
+    if (!result.triggered) {
+        std::string where;
+        for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+            if (probe_.axes & (1u << axis)) {
+                where += std::string(1, machine::kAxisNames[static_cast<std::size_t>(axis)]) +
+                         millimetres(target(axis) - workOffset()(axis));
+            }
+        }
+        throw MacroError{AlarmCode::SkipNotTriggered,
+                         "G31: IN" + std::string(port < 10 ? "0" : "") + std::to_string(port) + " never became " +
+                             std::to_string(level) + " during the move to " + where +
+                             " (is the tool over the setter? params 135-136)",
+                         g31.column};
+    }
 }
 
 // G28 / G30: through the intermediate point given by the axis words, then those axes alone to the

@@ -2,6 +2,7 @@
 
 #include "core/machine/ArcGeometry.h"
 #include "core/machine/MachineTypes.h"
+#include "core/machine/MotionLimits.h"
 
 namespace m350::machine {
 
@@ -17,6 +18,8 @@ public:
     virtual void feed(const Axes& target, double feed) = 0;
     // G2/G3 along `arc` (machine coordinates, validated by makeArc) at `feed` mm/min.
     virtual void arc(const Arc& arc, double feed) = 0;
+    // G31: moves toward `target` at `feed` until input `port` reads `level`, stopping there.
+    virtual ProbeResult probe(const Axes& target, double feed, int port, int level) = 0;
     // G04: wait `seconds` of virtual time.
     virtual void dwell(double seconds) = 0;
     // Time spent preparing a block that does not move (macro statements, M codes).

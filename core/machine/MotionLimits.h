@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/machine/MachineTypes.h"
+
 namespace m350::machine {
 
 // How fast the machine may move, in machine units per second. Built from the parameters by the
@@ -18,6 +20,24 @@ struct MotionLimits {
 struct SpindleStoppedSensor {
     int port = 0;        // 1-24, 0 when not wired
     int activeLevel = 0; // the level the input reads while the spindle is stopped
+};
+
+// A fixed tool setter (固定对刀仪): its switch closes when the tool tip comes down to its top inside
+// its radius. The tip hangs the tool's length below the spindle, so the switch trips at machine Z =
+// top + tool length: what the M350 records as the tool's Z offset (params 930-945).
+struct ToolSetter {
+    int port = 0;          // input 1-24, 0 when not fitted
+    int activeLevel = 1;   // the level the input reads while pressed
+    double x = 0.0;        // machine position of its center
+    double y = 0.0;
+    double radius = 5.0;   // mm
+    double top = -100.0;   // machine Z the spindle nose would have at contact with a zero-length tool
+};
+
+// The result of a G31 move.
+struct ProbeResult {
+    bool triggered = false;
+    Axes position = Axes::Zero(); // machine coordinates where the signal came (or where the move ended)
 };
 
 } // namespace m350::machine

@@ -151,10 +151,46 @@ void SimulatedMachine::setInput(int port, int level) {
     notify(event);
 }
 
+bool SimulatedMachine::setterPressed(const Axes& at) const {
+    double dx = at(0) - setter_.x;
+    double dy = at(1) - setter_.y;
+    return setter_.port != 0 && dx * dx + dy * dy <= setter_.radius * setter_.radius &&
+           at(2) <= setter_.top + toolLength_ + 1e-9;
+}
+
+// The signal can come from the setter (where the tip meets its top) or be there from the start.
+ProbeResult SimulatedMachine::probe(const Axes& target, double feed, int port, int level) {
+    ProbeResult result;
+    if (input(port) == level) {
+        result.triggered = true;
+        result.position = position_;
+        return result;
+    }
+    Axes stop = target;
+    if (port == setter_.port && level == setter_.activeLevel && setterPressed(target)) {
+        // the first point of the straight move inside the setter's reach: where Z crosses the trip
+        // height, provided the tool is over the setter there
+        double contact = setter_.top + toolLength_;
+        double dz = target(2) - position_(2);
+        double fraction = dz < 0 ? std::clamp((contact - position_(2)) / dz, 0.0, 1.0) : 0.0;
+        Axes at = position_ + (target - position_) * fraction;
+        if (setterPressed(at)) {
+            stop = at;
+            result.triggered = true;
+        }
+    }
+    feed == 0.0 ? rapid(stop) : this->feed(stop, feed);
+    result.position = position_;
+    return result;
+}
+
 int SimulatedMachine::input(int port) {
     auto index = static_cast<std::size_t>(port - 1);
     if (forced_[index]) {
         return *forced_[index];
+    }
+    if (port == setter_.port && setter_.port != 0) {
+        return setterPressed(position_) ? setter_.activeLevel : 1 - setter_.activeLevel;
     }
     if (spindleSensor_.port == port) {
         bool stopped = !spindleTurning();

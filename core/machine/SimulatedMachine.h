@@ -43,6 +43,10 @@ public:
     void rapid(const Axes& target) override;
     void feed(const Axes& target, double feed) override;
     void arc(const Arc& arc, double feed) override;
+    ProbeResult probe(const Axes& target, double feed, int port, int level) override;
+    void setToolSetter(const ToolSetter& setter) { setter_ = setter; }
+    // The true length of the tool in the spindle (the simulated world's fact, not a parameter).
+    void setToolLength(double length) { toolLength_ = length; }
     void dwell(double seconds) override;
     void blockTime(double seconds) override { time_ += seconds; }
 
@@ -96,6 +100,9 @@ private:
     std::array<std::optional<int>, kInputCount> forced_{};
     std::vector<IoLink> links_;
     SpindleStoppedSensor spindleSensor_;
+    ToolSetter setter_;
+    double toolLength_ = 0.0;
+    bool setterPressed(const Axes& at) const;
     SpindleState spindle_ = SpindleState::Stop;
     double rpm_ = 0.0;
     double spindleStopsAt_ = 0.0;
