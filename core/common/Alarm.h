@@ -27,6 +27,7 @@ enum class AlarmCode : std::uint8_t {
     SoftLimit,
     SkipNotTriggered,     // G31 ended its move without the signal
     OperatorReset,
+    EmergencyStop,
 };
 
 std::string_view alarmKey(AlarmCode code);

@@ -17,6 +17,9 @@ inline constexpr int kSpindleStoppedInput = 620;   // input triple: pin, enable,
 inline constexpr int kFixedSetterInput = 575;      // input triple of the fixed tool setter (固定对刀信号)
 inline constexpr int kFixedSetterX = 135;          // 135-137: the fixed setter's machine X, Y and start Z
 inline constexpr int kCurrentWorkSystem = 78;      // #578: 0 = G92, 1..6 = G54..G59
+inline constexpr int kPauseLift = 70;              // mm Z rises on pause when param 91 = 1
+inline constexpr int kStopSpindleOnPause = 84;     // 1 = the spindle stops while paused
+inline constexpr int kPauseZMode = 91;             // 0 = Z stays, 1 = Z rises by param 70
 inline constexpr int kHomePositionX = 122;         // 122-126: machine position after homing (G28 goes here)
 inline constexpr int kHomingCycles = 106;          // approaches to the switch
 inline constexpr int kHomingSpeedX = 107;          // 107-111, mm/min (deg/min)

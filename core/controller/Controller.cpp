@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace m350::controller {
@@ -186,30 +187,55 @@ void Controller::enterSafeState() {
 }
 
 RunReport Controller::run() {
+    start();
+    if (state_ == RunState::Running) {
+        advance(std::numeric_limits<double>::infinity());
+    }
+    return snapshot();
+}
+
+RunReport Controller::snapshot() const {
     RunReport out;
+    switch (state_) {
+    case RunState::Alarm:
+    case RunState::EStop: out.status = RunStatus::Alarm; break;
+    default: out.status = executor_ ? RunStatus::Ok : RunStatus::Error; break;
+    }
+    out.alarm = alarm_;
+    out.diagnostics = diagnostics_;
+    fill(out);
+    return out;
+}
+
+bool Controller::start() {
+    alarm_.reset();
     if (!executor_) {
-        out.status = RunStatus::Error;
-        out.diagnostics = diagnostics_;
-        fill(out);
-        return out;
+        state_ = RunState::Idle;
+        return false;
     }
     if (!mdi_ && config_.parameters.get(param::kHomeBeforeProcessing) != 0.0 &&
         !(homed(0) && homed(1) && homed(2))) {
         // param 220: automatic runs need X, Y and Z homed (MDI does not)
-        out.status = RunStatus::Alarm;
-        out.alarm = Alarm{AlarmCode::NotHomed, "机械未归零不能自动加工! (home X, Y and Z first: parameter 220)",
-                          program_.files.empty() ? std::string() : program_.files.front().name, 0, 0};
-        out.diagnostics = diagnostics_;
-        fill(out);
-        return out;
+        raiseAlarm(Alarm{AlarmCode::NotHomed, "机械未归零不能自动加工! (home X, Y and Z first: parameter 220)",
+                         program_.files.empty() ? std::string() : program_.files.front().name, 0, 0});
+        return false;
     }
     auto unit = program_.mainUnit();
+    displayTime_ = machine_.time();
     if (!unit || !executor_->start(*unit)) {
-        out.status = RunStatus::Ok;
-        fill(out);
-        return out;
+        state_ = RunState::Finished;
+        return true;
     }
-    while (executor_->state() == macro::Executor::State::Running) {
+    state_ = RunState::Running;
+    return true;
+}
+
+Controller::RunState Controller::advance(double seconds) {
+    displayTime_ += seconds;
+    if (state_ != RunState::Running) {
+        return state_;
+    }
+    while (executor_->state() == macro::Executor::State::Running && machine_.time() <= displayTime_) {
         if (machine_.time() > settings_.maxSimTime) {
             std::ostringstream why;
             why << "the program ran " << settings_.maxSimTime
@@ -217,35 +243,43 @@ RunReport Controller::run() {
             executor_->raise(AlarmCode::SimulatedTimeLimit, why.str());
             break;
         }
-        int toolBefore = spindleTool();
-        std::uint64_t blocksBefore = executor_->blocksExecuted();
-        executor_->step();
-        if (executor_->blocksExecuted() != blocksBefore) {
-            machine_.blockTime(settings_.blockTime);
-        }
-        if (interp_.hasNotices()) {
-            for (std::string& notice : interp_.takeNotices()) {
-                postMessage(std::move(notice));
-            }
-        }
-        if (int toolAfter = spindleTool(); toolAfter != toolBefore) {
-            syncToolLength();
-            if (trace_) {
-                trace_->toolChange(machine_.time(), toolBefore, toolAfter, source());
-            }
-        }
+        stepOnce();
     }
     if (executor_->state() == macro::Executor::State::Alarmed) {
-        out.status = RunStatus::Alarm;
-        out.alarm = executor_->alarm();
-        enterSafeState();
-        if (trace_) {
-            trace_->alarm(machine_.time(), *out.alarm);
+        raiseAlarm(*executor_->alarm());
+    } else if (executor_->state() == macro::Executor::State::Finished) {
+        state_ = RunState::Finished;
+    }
+    return state_;
+}
+
+void Controller::stepOnce() {
+    int toolBefore = spindleTool();
+    std::uint64_t blocksBefore = executor_->blocksExecuted();
+    executor_->step();
+    if (executor_->blocksExecuted() != blocksBefore) {
+        machine_.blockTime(settings_.blockTime);
+    }
+    if (interp_.hasNotices()) {
+        for (std::string& notice : interp_.takeNotices()) {
+            postMessage(std::move(notice));
         }
     }
-    out.diagnostics = diagnostics_;
-    fill(out);
-    return out;
+    if (int toolAfter = spindleTool(); toolAfter != toolBefore) {
+        syncToolLength();
+        if (trace_) {
+            trace_->toolChange(machine_.time(), toolBefore, toolAfter, source());
+        }
+    }
+}
+
+void Controller::raiseAlarm(const Alarm& alarm) {
+    alarm_ = alarm;
+    state_ = RunState::Alarm;
+    enterSafeState();
+    if (trace_) {
+        trace_->alarm(machine_.time(), alarm);
+    }
 }
 
 // The tool in the spindle decides where the setter trips: the simulated world's tool length.

@@ -34,7 +34,25 @@ public:
     bool loadMdi(const std::vector<std::string>& lines);
     const std::vector<gcode::Diagnostic>& diagnostics() const { return diagnostics_; }
 
+    // Runs the loaded program to its end (or an alarm) as fast as it can: start() + advance(inf).
     RunReport run();
+
+    // The run as a panel drives it: cycle start, then advance() by the display's time steps; the
+    // program executes the blocks whose time has come. hold() (暂停) decelerates and keeps the
+    // program where it is (param 91: lift Z by param 70); resume() carries on from there; reset()
+    // stops at once and rewinds; emergencyStop() (急停) stops at once with an alarm. Reset and E-stop
+    // switch every output to its safe state.
+    enum class RunState { Idle, Running, Hold, Finished, Alarm, EStop };
+    bool start();
+    RunState advance(double seconds);
+    void hold();
+    void resume();
+    void reset();
+    void emergencyStop();
+    RunState runState() const { return state_; }
+    double displayTime() const { return displayTime_; }
+    machine::Axes displayPosition() const { return machine_.positionAt(displayTime_); }
+    RunReport snapshot() const;
 
     // 回零: homes the given axes (0 X .. 4 B), Z first. An alarm when an axis has no home switch.
     std::optional<Alarm> home(const std::vector<int>& axes);
@@ -70,6 +88,8 @@ private:
     void configureMachine();
     void syncToolLength();
     void enterSafeState();
+    void stepOnce();
+    void raiseAlarm(const Alarm& alarm);
     std::optional<Alarm> homeAxis(int axis);
     bool homeSwitchWired(int axis) const;
     void fill(RunReport& out) const;
@@ -93,6 +113,12 @@ private:
     double dialogAnswer_ = 0.0;
     std::vector<std::string> messages_;
     bool mdi_ = false;
+    RunState state_ = RunState::Idle;
+    std::optional<Alarm> alarm_;
+    double displayTime_ = 0.0;
+    machine::SimulatedMachine::Remainder remainder_; // what a hold cut short
+    double liftedBy_ = 0.0;                          // Z lift of the hold (param 91, 70)
+    std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 };
 
 } // namespace m350::controller

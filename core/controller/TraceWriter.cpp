@@ -68,6 +68,11 @@ void TraceWriter::toolChange(double time, int from, int to, const TraceSource& s
     out_ << j.dump() << '\n';
 }
 
+void TraceWriter::runState(double time, std::string_view state) {
+    nlohmann::json j{{"t", time}, {"type", std::string(state)}};
+    out_ << j.dump() << '\n';
+}
+
 void TraceWriter::alarm(double time, const Alarm& alarm) {
     nlohmann::json j{{"t", time},          {"type", "alarm"},      {"code", std::string(alarmKey(alarm.code))},
                      {"message", alarm.message}, {"file", alarm.file}, {"line", alarm.line},

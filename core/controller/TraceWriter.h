@@ -25,6 +25,8 @@ public:
     void message(double time, std::string_view text, const TraceSource& source);
     void toolChange(double time, int from, int to, const TraceSource& source);
     void alarm(double time, const Alarm& alarm);
+    // A change of the run state the operator caused: pause, resume, reset, estop.
+    void runState(double time, std::string_view state);
 
 private:
     std::ostream& out_;

@@ -31,6 +31,9 @@ void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double 
     last.start = time_;
     last.profile = MotionProfile(length, speed, acceleration);
     last.arc = arc;
+    last.type = type;
+    last.feed = feed;
+    last.acceleration = acceleration;
     time_ += last.profile.duration();
     position_ = target;
     if (observer_) {
@@ -60,6 +63,49 @@ void SimulatedMachine::arc(const Arc& arc, double feed) {
     move(MachineEvent::Type::Arc, arc.end, speed, limits_.feedAcceleration, feed, arc);
 }
 
+SimulatedMachine::Remainder SimulatedMachine::interrupt(double t, bool immediate) {
+    Remainder rest;
+    if (t >= time_) {
+        return rest; // nothing is running at t
+    }
+    if (dwellEnd_ > t) {
+        rest.kind = Remainder::Kind::Dwell;
+        rest.seconds = dwellEnd_ - t;
+        time_ = t;
+        dwellEnd_ = -1.0;
+        return rest;
+    }
+    if (!lastMove_ || t < lastMove_->start) {
+        time_ = t;
+        return rest;
+    }
+    LastMove& m = *lastMove_;
+    double elapsed = t - m.start;
+    double travelled = m.profile.distanceAt(elapsed);
+    double speed = m.profile.speedAt(elapsed);
+    double stopping = immediate ? 0.0 : speed * speed / (2.0 * m.acceleration);
+    double stopAt = std::min(m.profile.length(), travelled + stopping);
+    auto pointAt = [&m](double s) {
+        if (m.arc) {
+            return m.arc->pointAt(s);
+        }
+        double length = m.profile.length();
+        return length > 0.0 ? Axes(m.from + (m.to - m.from) * (s / length)) : m.from;
+    };
+    position_ = pointAt(stopAt);
+    time_ = t + (immediate ? 0.0 : speed / m.acceleration);
+    if (stopAt < m.profile.length() - 1e-9) {
+        rest.kind = m.type == MachineEvent::Type::Rapid ? Remainder::Kind::Rapid
+                    : m.arc                             ? Remainder::Kind::Arc
+                                                        : Remainder::Kind::Feed;
+        rest.target = m.to;
+        rest.feed = m.feed;
+        rest.arc = m.arc;
+    }
+    lastMove_.reset();
+    return rest;
+}
+
 Axes SimulatedMachine::positionAt(double t) const {
     if (!lastMove_ || t >= lastMove_->start + lastMove_->profile.duration()) {
         return position_;
@@ -77,6 +123,7 @@ Axes SimulatedMachine::positionAt(double t) const {
 }
 
 void SimulatedMachine::dwell(double seconds) {
+    dwellEnd_ = time_ + seconds;
     MachineEvent event;
     event.type = MachineEvent::Type::Dwell;
     event.from = event.to = position_;

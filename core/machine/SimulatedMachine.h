@@ -66,6 +66,19 @@ public:
 
     // Where the axes were at virtual time t (inside the last move, or at rest).
     Axes positionAt(double t) const;
+
+    // What was left of an operation cut short by a hold: the rest of a move (straight or along
+    // its arc), or of a dwell.
+    struct Remainder {
+        enum class Kind { None, Rapid, Feed, Arc, Dwell } kind = Kind::None;
+        Axes target = Axes::Zero();
+        double feed = 0.0;
+        std::optional<Arc> arc;
+        double seconds = 0.0;
+    };
+    // Cuts the operation running at virtual time t: a move decelerates to rest (`immediate`: stops
+    // where it is, as an E-stop does), a dwell ends. The clock then reads the moment of rest.
+    Remainder interrupt(double t, bool immediate);
     bool spindleTurning() const { return spindle_ != SpindleState::Stop || time_ < spindleStopsAt_; }
 
     // A move of `length` along a straight line at `speed` (units/s): its duration.
@@ -83,7 +96,11 @@ private:
         double start = 0.0;
         MotionProfile profile{0.0, 1.0, 1.0};
         std::optional<Arc> arc; // the path, when it is not a straight line
+        MachineEvent::Type type = MachineEvent::Type::Feed;
+        double feed = 0.0;
+        double acceleration = 1.0;
     };
+    double dwellEnd_ = -1.0;
     void move(MachineEvent::Type type, const Axes& target, double speed, double acceleration, double feed,
               const std::optional<Arc>& arc = std::nullopt);
     void notify(const MachineEvent& event);

@@ -1,0 +1,112 @@
+// The operator's run controls: 暂停 hold and resume, reset, 急停 emergency stop.
+#include "core/controller/Controller.h"
+
+#include "core/config/ParameterNumbers.h"
+#include "core/machine/ArcGeometry.h"
+
+#include <cmath>
+
+namespace m350::controller {
+
+namespace param = config::param;
+
+void Controller::hold() {
+    if (state_ != RunState::Running) {
+        return;
+    }
+    remainder_ = machine_.interrupt(displayTime_, false);
+    const config::ParameterTable& p = config_.parameters;
+    if (p.get(param::kStopSpindleOnPause) != 0.0 && machine_.spindleState() != machine::SpindleState::Stop) {
+        spindleBeforeHold_ = std::make_pair(machine_.spindleState(), machine_.spindleRpm());
+        machine_.spindle(machine::SpindleState::Stop, 0.0);
+    }
+    liftedBy_ = p.get(param::kPauseZMode) != 0.0 ? std::max(0.0, p.get(param::kPauseLift)) : 0.0;
+    if (liftedBy_ > 0.0) {
+        machine::Axes up = machine_.position();
+        up(2) += liftedBy_;
+        machine_.rapid(up);
+    }
+    state_ = RunState::Hold;
+    if (trace_) {
+        trace_->runState(displayTime_, "pause");
+    }
+}
+
+void Controller::resume() {
+    if (state_ != RunState::Hold) {
+        return;
+    }
+    if (machine_.time() < displayTime_) {
+        machine_.blockTime(displayTime_ - machine_.time()); // the clock ran while paused
+    }
+    if (trace_) {
+        trace_->runState(machine_.time(), "resume");
+    }
+    if (liftedBy_ > 0.0) {
+        machine::Axes down = machine_.position();
+        down(2) -= liftedBy_;
+        machine_.rapid(down);
+        liftedBy_ = 0.0;
+    }
+    if (spindleBeforeHold_) {
+        machine_.spindle(spindleBeforeHold_->first, spindleBeforeHold_->second);
+        spindleBeforeHold_.reset();
+    }
+    using Kind = machine::SimulatedMachine::Remainder::Kind;
+    switch (remainder_.kind) {
+    case Kind::Rapid: machine_.rapid(remainder_.target); break;
+    case Kind::Feed: machine_.feed(remainder_.target, remainder_.feed); break;
+    case Kind::Dwell: machine_.dwell(remainder_.seconds); break;
+    case Kind::Arc: {
+        // the rest of the arc, about the same center, from where it stopped
+        const machine::Arc& arc = *remainder_.arc;
+        machine::ArcSpec spec;
+        spec.start = machine_.position();
+        spec.end = remainder_.target;
+        spec.plane = arc.plane;
+        spec.clockwise = arc.sweep < 0;
+        spec.centerOffset = arc.center - spec.start.head<3>();
+        auto rest = machine::makeArc(spec);
+        if (auto* done = std::get_if<machine::Arc>(&rest)) {
+            machine_.arc(*done, remainder_.feed);
+        } else {
+            machine_.feed(remainder_.target, remainder_.feed);
+        }
+        break;
+    }
+    case Kind::None: break;
+    }
+    remainder_ = {};
+    state_ = RunState::Running;
+}
+
+void Controller::reset() {
+    machine_.interrupt(displayTime_, true);
+    if (machine_.time() < displayTime_) {
+        machine_.blockTime(displayTime_ - machine_.time());
+    }
+    enterSafeState();
+    remainder_ = {};
+    liftedBy_ = 0.0;
+    spindleBeforeHold_.reset();
+    alarm_.reset();
+    state_ = RunState::Idle; // start() runs the program again from its beginning
+    if (trace_) {
+        trace_->runState(displayTime_, "reset");
+    }
+}
+
+void Controller::emergencyStop() {
+    machine_.interrupt(displayTime_, true);
+    if (machine_.time() < displayTime_) {
+        machine_.blockTime(displayTime_ - machine_.time());
+    }
+    remainder_ = {};
+    raiseAlarm(Alarm{AlarmCode::EmergencyStop, "急停 emergency stop: motion stopped at once, outputs off", "", 0, 0});
+    state_ = RunState::EStop;
+    if (trace_) {
+        trace_->runState(displayTime_, "estop");
+    }
+}
+
+} // namespace m350::controller
