@@ -1,0 +1,109 @@
+// BlockParser: the hints and findings that make an error message useful to an operator: the
+// #[...] a stray ']' was meant to be, the table added instead of indexed, a broken loop line.
+#include "core/gcode/BlockParser.h"
+
+#include "core/common/Numeric.h"
+
+#include <cmath>
+
+namespace m350::gcode {
+
+// A WHILE or END line with a syntax error still opens or closes its loop, so the error is
+// reported once and not again as an unpaired END. The program cannot run with it anyway.
+std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
+    std::size_t first = 0;
+    while (first < tokens_.size() && (tokens_[first].kind == TokenKind::Comment ||
+                                      tokens_[first].kind == TokenKind::Letter ||
+                                      tokens_[first].kind == TokenKind::Number)) {
+        ++first; // N label
+    }
+    if (first >= tokens_.size() || tokens_[first].kind != TokenKind::Keyword ||
+        (tokens_[first].keyword != Keyword::While && tokens_[first].keyword != Keyword::End)) {
+        return std::nullopt;
+    }
+    bool isWhile = tokens_[first].keyword == Keyword::While;
+    block.control = isWhile ? Control::While : Control::End;
+    block.controlColumn = tokens_[first].column;
+    block.words = {};
+    block.assignments.clear();
+    block.loopId = kUnknownLoop; // the parser then trusts no pairing in this program
+    for (std::size_t i = first; i + 1 < tokens_.size(); ++i) {
+        bool marker = isWhile ? (tokens_[i].kind == TokenKind::Keyword && tokens_[i].keyword == Keyword::Do)
+                              : i == first;
+        if (marker && tokens_[i + 1].kind == TokenKind::Number) {
+            block.loopId = saturatingInt(tokens_[i + 1].number);
+            break;
+        }
+    }
+    return block;
+}
+
+void BlockParser::failStrayBracket(const Token& at, const char* context) {
+    std::size_t stray = pos_;
+    std::size_t open = 0;
+    for (std::size_t i = 0; i + 1 < stray; ++i) {
+        if (tokens_[i].kind == TokenKind::LBracket && tokens_[i + 1].kind == TokenKind::Hash) {
+            open = i + 1;
+            break;
+        }
+        if (tokens_[i].kind == TokenKind::Hash && tokens_[i + 1].kind == TokenKind::Number) {
+            open = i;
+            break;
+        }
+    }
+    std::string hint = hashBracketHint(open, stray);
+    fail(at, std::string("unbalanced ']' in ") + context + (hint.empty() ? "" : " (did you mean " + hint + "?)"));
+}
+
+// For `#1552+#20-1]` or `[#1520+#13-1] NE 0]`: the indirect reference the author most likely meant,
+// `#[1552+#20-1]`, built from the text between the '#' and the first ']' after it.
+std::string BlockParser::hashBracketHint(std::size_t hashToken, std::size_t strayToken) const {
+    if (hashToken + 1 >= tokens_.size() || tokens_[hashToken].kind != TokenKind::Hash ||
+        tokens_[hashToken + 1].kind == TokenKind::LBracket) {
+        return {}; // no hint when the reference is already written #[...]
+    }
+    std::size_t close = hashToken;
+    while (close < strayToken && tokens_[close].kind != TokenKind::RBracket) {
+        ++close;
+    }
+    std::uint32_t from = tokens_[hashToken].offset + 1;
+    std::uint32_t to = tokens_[close].offset;
+    if (to <= from) {
+        return {};
+    }
+    return "#[" + std::string(line_.substr(from, to - from)) + "]";
+}
+
+// `X[#1330+#1300-1]` adds a pocket coordinate to a tool number: never what anyone means, and exactly
+// what the M350 manual's damaged listing reads. The author wanted `X#[1330+#1300-1]`.
+void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken) {
+    const ExprNode& root = pool_[word.value];
+    if (root.kind != ExprKind::Binary || dialect_.indexedTables.empty()) {
+        return;
+    }
+    ExprId leftmost = word.value;
+    while (pool_[leftmost].kind == ExprKind::Binary) {
+        leftmost = pool_[leftmost].lhs;
+    }
+    const ExprNode& base = pool_[leftmost];
+    if (base.kind != ExprKind::Variable || base.lhs != kNoExpr) {
+        return;
+    }
+    for (const IndexedTable& table : dialect_.indexedTables) {
+        if (base.number == table.base) {
+            std::uint32_t from = tokens_[firstToken].offset;
+            std::uint32_t to = tokens_[endToken - 1].offset + tokens_[endToken - 1].length;
+            std::string written(line_.substr(from, to - from));
+            std::string meant = written;
+            if (auto at = meant.find("[#"); at != std::string::npos) {
+                meant.replace(at, 2, "#[");
+            }
+            std::string b = std::to_string(table.base);
+            lint(word.column, written + " adds the value of #" + b + " instead of indexing " +
+                                  std::string(table.what) + " (did you mean " + meant + "?)");
+            return;
+        }
+    }
+}
+
+} // namespace m350::gcode

@@ -1,0 +1,251 @@
+// BlockParser: expressions, one method per precedence level (see BlockParser.h).
+#include "core/gcode/BlockParser.h"
+
+#include <cmath>
+
+namespace m350::gcode {
+
+// `X12.5` and `X-3`, most of any real program, without the precedence chain.
+ExprId BlockParser::plainNumber() {
+    bool negative = peek().kind == TokenKind::Minus;
+    const Token& number = peek(negative ? 1 : 0);
+    if (number.kind != TokenKind::Number) {
+        return kNoExpr;
+    }
+    ExprNode n;
+    n.kind = ExprKind::Number;
+    n.number = negative ? -number.number : number.number;
+    n.column = peek().column;
+    next();
+    if (negative) {
+        next();
+    }
+    return pool_.add(n);
+}
+
+ExprId BlockParser::binary(BinaryOp op, ExprId lhs, ExprId rhs, std::uint32_t column) {
+    ExprNode n;
+    n.kind = ExprKind::Binary;
+    n.op = static_cast<std::uint8_t>(op);
+    n.lhs = lhs;
+    n.rhs = rhs;
+    n.column = column;
+    return pool_.add(n);
+}
+
+std::optional<BinaryOp> BlockParser::comparisonAhead() {
+    const Token& t = peek();
+    if (t.kind == TokenKind::Compare) {
+        if (!dialect_.cStyleComparisons) {
+            const char* word[] = {"EQ", "NE", "LT", "GT", "LE", "GE"};
+            fail(t, "'" + source(t) + "' is not " + std::string(dialect_.name) +
+                                                        " syntax: write " +
+                                                        word[static_cast<int>(t.compare) - static_cast<int>(BinaryOp::Eq)]);
+        }
+        return t.compare;
+    }
+    if (t.kind == TokenKind::Keyword && t.keyword >= Keyword::Eq && t.keyword <= Keyword::Ge) {
+        return static_cast<BinaryOp>(static_cast<int>(BinaryOp::Eq) + static_cast<int>(t.keyword) -
+                                     static_cast<int>(Keyword::Eq));
+    }
+    return std::nullopt;
+}
+
+std::optional<BinaryOp> BlockParser::additiveAhead() {
+    const Token& t = peek();
+    if (t.kind == TokenKind::Plus) {
+        return BinaryOp::Add;
+    }
+    if (t.kind == TokenKind::Minus) {
+        return BinaryOp::Sub;
+    }
+    if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::Or || t.keyword == Keyword::Xor)) {
+        if (!dialect_.bitwiseKeywords) {
+            fail(t, std::string(keywordSpelling(t.keyword)) + " is not an " + std::string(dialect_.name) +
+                        " operator" +
+                        (t.keyword == Keyword::Or ? ": write OR as [a]+[b]"
+                                                  : ": write XOR of two conditions as [[a]+[b]]==1"));
+        }
+        return t.keyword == Keyword::Or ? BinaryOp::Or : BinaryOp::Xor;
+    }
+    return std::nullopt;
+}
+
+std::optional<BinaryOp> BlockParser::termAhead() {
+    const Token& t = peek();
+    if (t.kind == TokenKind::Star) {
+        return BinaryOp::Mul;
+    }
+    if (t.kind == TokenKind::Slash) {
+        return BinaryOp::Div;
+    }
+    if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::And || t.keyword == Keyword::Mod)) {
+        if (!dialect_.bitwiseKeywords) {
+            fail(t, std::string(keywordSpelling(t.keyword)) + " is not an " + std::string(dialect_.name) +
+                        " operator" +
+                        (t.keyword == Keyword::And ? ": write AND as [a]*[b]"
+                                                   : ": write a MOD b as [a-FIX[a/b]*b]"));
+        }
+        return t.keyword == Keyword::And ? BinaryOp::And : BinaryOp::Mod;
+    }
+    return std::nullopt;
+}
+
+ExprId BlockParser::parseExpression() {
+    ExprId lhs = parseAdditive();
+    while (auto op = comparisonAhead()) {
+        std::uint32_t column = next().column;
+        lhs = binary(*op, lhs, parseAdditive(), column);
+    }
+    return lhs;
+}
+
+ExprId BlockParser::parseAdditive() {
+    ExprId lhs = parseTerm();
+    while (auto op = additiveAhead()) {
+        std::uint32_t column = next().column;
+        lhs = binary(*op, lhs, parseTerm(), column);
+    }
+    return lhs;
+}
+
+ExprId BlockParser::parseTerm() {
+    ExprId lhs = parseUnary();
+    while (auto op = termAhead()) {
+        std::uint32_t column = next().column;
+        lhs = binary(*op, lhs, parseUnary(), column);
+    }
+    return lhs;
+}
+
+// Deeper nesting than any real program uses would exhaust the stack; refuse it as an error.
+BlockParser::Nesting BlockParser::enterNesting(const Token& at) {
+    constexpr int kMaxNesting = 64;
+    if (++depth_ > kMaxNesting) {
+        fail(at, "expression nested more than " + std::to_string(kMaxNesting) + " levels deep");
+    }
+    return Nesting{depth_};
+}
+
+ExprId BlockParser::parseUnary() {
+    Nesting nesting = enterNesting(peek());
+    if (peek().kind == TokenKind::Minus || peek().kind == TokenKind::Plus) {
+        const Token& sign = next();
+        ExprId operand = parseUnary();
+        if (pool_[operand].kind == ExprKind::Number) {
+            if (sign.kind == TokenKind::Plus) {
+                return operand;
+            }
+            ExprNode folded = pool_[operand];
+            folded.number = -folded.number;
+            folded.column = sign.column;
+            return pool_.add(folded);
+        }
+        ExprNode n;
+        n.kind = ExprKind::Unary;
+        n.op = static_cast<std::uint8_t>(sign.kind == TokenKind::Minus ? UnaryOp::Negate : UnaryOp::Plus);
+        n.lhs = operand;
+        n.column = sign.column;
+        return pool_.add(n);
+    }
+    return parsePrimary();
+}
+
+ExprId BlockParser::parsePrimary() {
+    const Token& t = peek();
+    switch (t.kind) {
+    case TokenKind::Number: {
+        next();
+        ExprNode n;
+        n.kind = ExprKind::Number;
+        n.number = t.number;
+        n.column = t.column;
+        return pool_.add(n);
+    }
+    case TokenKind::Hash: return parseVariable();
+    case TokenKind::LBracket: return parseBracketed();
+    case TokenKind::Keyword:
+        if (isFunctionKeyword(t.keyword)) {
+            return parseFunction();
+        }
+        break;
+    case TokenKind::RBracket: failStrayBracket(t, "this expression");
+    default: break;
+    }
+    fail(t, "expected a value (a number, #variable or [expression]), found " + describe(t));
+}
+
+ExprId BlockParser::parseBracketed() {
+    const Token& open = next();
+    ExprId inner = parseExpression();
+    if (peek().kind != TokenKind::RBracket) {
+        fail(peek(), "missing ']' to close the '[' at column " + std::to_string(open.column) + ", found " +
+                         describe(peek()));
+    }
+    next();
+    return inner;
+}
+
+ExprId BlockParser::parseVariable() {
+    Nesting nesting = enterNesting(peek());
+    const Token& hash = next();
+    ExprNode n;
+    n.kind = ExprKind::Variable;
+    n.column = hash.column;
+    const Token& t = peek();
+    if (t.kind == TokenKind::Number) {
+        next();
+        if (t.number != std::floor(t.number)) {
+            fail(t, "variable numbers are whole numbers: #" + source(t) + " (did you mean #[...]?)");
+        }
+        n.number = t.number;
+    } else if (t.kind == TokenKind::LBracket) {
+        n.lhs = parseBracketed();
+    } else if (t.kind == TokenKind::Hash) {
+        n.lhs = parseVariable();
+    } else {
+        fail(t, "'#' must be followed by a variable number or [expression], found " + describe(t));
+    }
+    return pool_.add(n);
+}
+
+ExprId BlockParser::parseFunction() {
+    const Token& name = next();
+    Function f = functionOf(name.keyword);
+    bool extended = f == Function::Asin || f == Function::Acos || f == Function::Ln || f == Function::Exp ||
+                    f == Function::Bin || f == Function::Bcd;
+    if (extended && !dialect_.extendedFunctions) {
+        fail(name, std::string(keywordSpelling(name.keyword)) + " is not a function of the " +
+                       std::string(dialect_.name) + " dialect");
+    }
+    if (peek().kind != TokenKind::LBracket) {
+        fail(peek(), std::string(keywordSpelling(name.keyword)) + " must be followed by [argument]");
+    }
+    ExprNode n;
+    n.kind = ExprKind::Function;
+    n.op = static_cast<std::uint8_t>(f);
+    n.column = name.column;
+    const Token& open = next();
+    n.lhs = parseExpression();
+    if (peek().kind == TokenKind::Comma && f == Function::Atan && dialect_.atanComma) {
+        next();
+        n.rhs = parseExpression();
+    }
+    if (peek().kind != TokenKind::RBracket) {
+        fail(peek(), "missing ']' to close " + std::string(keywordSpelling(name.keyword)) + "[ at column " +
+                         std::to_string(open.column) + ", found " + describe(peek()));
+    }
+    next();
+    if (f == Function::Atan && n.rhs == kNoExpr) {
+        if (dialect_.atanSlash && peek().kind == TokenKind::Slash && peek(1).kind == TokenKind::LBracket) {
+            next();
+            n.rhs = parseBracketed();
+        } else {
+            fail(name, std::string("ATAN takes two arguments: ") +
+                           (dialect_.atanSlash ? "ATAN[a]/[b]" : "ATAN[y,x]"));
+        }
+    }
+    return pool_.add(n);
+}
+
+} // namespace m350::gcode
