@@ -19,7 +19,7 @@ machine::Axes ModalInterpreter::basePosition() const {
 }
 
 double ModalInterpreter::compensationRadius() const {
-    return toolOffsets_.get(state_.radiusOffset);
+    return toolOffsets_.get(state_.radiusOffset) * axisUnit(0);
 }
 
 void ModalInterpreter::compensatedMove(const machine::Axes& target, const Words& words) {
@@ -37,10 +37,10 @@ void ModalInterpreter::compensatedMove(const machine::Axes& target, const Words&
     if (state_.group(1) == 2 || state_.group(1) == 3) {
         Eigen::Vector2d center = from;
         if (const macro::WordValue* i = words.find('I')) {
-            center.x() += i->value;
+            center.x() += i->value * axisUnit(0);
         }
         if (const macro::WordValue* j = words.find('J')) {
-            center.y() += j->value;
+            center.y() += j->value * axisUnit(1);
         }
         if (words.find('R')) {
             throw MacroError{AlarmCode::InvalidWord, "write arcs under cutter compensation with I and J, not R",

@@ -82,8 +82,9 @@ double ModalInterpreter::toolZOffset() const {
 
 double ModalInterpreter::toolLengthOffset() const {
     switch (state_.group(8)) {
-    case 43: return toolOffsets_.get(state_.lengthOffset);
-    case 44: return -toolOffsets_.get(state_.lengthOffset);
+    // FANUC offset memory holds numbers in the input unit of the moment (G20: inches)
+    case 43: return toolOffsets_.get(state_.lengthOffset) * axisUnit(2);
+    case 44: return -toolOffsets_.get(state_.lengthOffset) * axisUnit(2);
     default: return 0.0;
     }
 }

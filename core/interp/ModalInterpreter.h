@@ -50,6 +50,8 @@ public:
     int currentTool() const;
     // FANUC G43/G44 H: + or - the length in tool offset H (0 under G49).
     double toolLengthOffset() const;
+    // mm per program unit for an axis: 25.4 for X Y Z under G20; rotary and G21 values are as written.
+    double axisUnit(int axis) const { return axis < 3 && state_.inches() ? 25.4 : 1.0; }
 
     // The last G31: whether the signal came, where (machine coordinates), which axes moved.
     struct Probe {

@@ -268,10 +268,11 @@ void ModalInterpreter::setCoordinateSystem(const Words& words) {
     int slot = local ? WorkOffsets::kG52 : dialect_.id == gcode::DialectId::M350 ? activeSlot() : WorkOffsets::kG92;
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         if (const WordValue* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)])) {
+            double value = w->value * axisUnit(axis);
             if (local) {
-                offsets_.set(slot, axis, w->value);
+                offsets_.set(slot, axis, value);
             } else {
-                offsets_.set(slot, axis, offsets_.get(slot, axis) + (position(axis) - offset(axis)) - w->value);
+                offsets_.set(slot, axis, offsets_.get(slot, axis) + (position(axis) - offset(axis)) - value);
             }
         }
     }
@@ -313,11 +314,13 @@ void ModalInterpreter::setOffsets(const Words& words) {
             continue;
         }
         double current = offsets_.get(slot, axis);
+        double value = w->value * axisUnit(axis);
         if (kind == 2) {
-            offsets_.set(slot, axis, state_.incremental() ? current + w->value : w->value);
+            offsets_.set(slot, axis, state_.incremental() ? current + value : value);
         } else {
-            double others = total(axis) - (slot == activeSlot() ? current : 0.0);
-            offsets_.set(slot, axis, position(axis) - others - w->value);
+            // system P replaces the active one once selected: everything else stays in the sum
+            double others = total(axis) - offsets_.get(activeSlot(), axis);
+            offsets_.set(slot, axis, position(axis) - others - value);
         }
     }
 }
