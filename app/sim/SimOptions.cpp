@@ -1,5 +1,7 @@
 #include "app/sim/SimOptions.h"
 
+#include "core/config/ParameterCatalogue.h"
+
 #include <CLI/CLI.hpp>
 
 #include <charconv>
@@ -74,6 +76,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     check->add_option("PROGRAM", o.program, "program file (.nc)")->required();
     addMachineOptions(check);
 
+    auto loaded = config::ParameterCatalogue::load(config::ParameterCatalogue::bundledPath());
+    const auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded);
     try {
         app.parse(argc, argv);
         o.command = run->parsed() ? SimOptions::Command::Run
@@ -85,7 +89,13 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
             if (number < 0 || number > 999) {
                 throw CLI::ValidationError("--param", "parameter numbers run from 0 to 999");
             }
-            o.settings.parameters[number] = parseNumber(v, "--param");
+            double value = parseNumber(v, "--param");
+            if (catalogue && catalogue->find(number)) {
+                if (auto problem = catalogue->validate(number, value)) {
+                    std::cerr << "m350-sim: warning: --param " << p << ": " << *problem << " (used as given)\n";
+                }
+            }
+            o.settings.parameters[number] = value;
         }
         for (const std::string& p : vars) {
             auto [n, v] = splitAssignment(p, "--var");

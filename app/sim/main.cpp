@@ -65,6 +65,9 @@ int main(int argc, char** argv) {
         return fail("config_error", error->message, error->file);
     }
     config::MachineConfig machineConfig = std::move(std::get<config::MachineConfig>(loaded));
+    for (const std::string& warning : machineConfig.warnings) {
+        std::cerr << warning << '\n';
+    }
     if (o.dialect) {
         machineConfig.dialect = gcode::Dialect::byName(*o.dialect);
     }

@@ -1,6 +1,8 @@
 #include "core/config/MachineConfig.h"
 #include "core/common/Numeric.h"
 
+#include "core/config/ParameterCatalogue.h"
+
 #include <toml++/toml.h>
 
 #include <charconv>
@@ -148,10 +150,20 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
         return;
     }
     toml::table t = parseToml(file);
+    auto catalogue = ParameterCatalogue::load(ParameterCatalogue::bundledPath());
+    const auto* known = std::get_if<ParameterCatalogue>(&catalogue);
     if (auto params = t["params"].as_table()) {
         for (auto&& [key, value] : *params) {
             int n = numberKey(file, key.str(), 0, ParameterTable::kCount - 1, "parameter");
-            config.parameters.set(n, numberValue(file, value, key.str()));
+            double v = numberValue(file, value, key.str());
+            // A value the panel would refuse is kept (a simulator may be asked for it) but said; the
+            // other members of the IO triples (enable, level) are not catalogued and pass as written.
+            if (known && known->find(n)) {
+                if (auto problem = known->validate(n, v)) {
+                    config.warnings.push_back(file.string() + ": warning: " + *problem + " (used as written)");
+                }
+            }
+            config.parameters.set(n, v);
         }
     }
 }

@@ -37,6 +37,7 @@ struct MachineConfig {
     std::array<std::array<double, 5>, 9> offsets{}; // slots as interp::WorkOffsets numbers them
     std::map<int, double> variables;
     int magazineCapacity = 0; // machines whose capacity is not a parameter (FANUC)
+    std::vector<std::string> warnings; // values the panel would refuse, kept as written
     std::map<int, std::array<double, 5>> referencePoints; // G30 P2/P3 (FANUC G28: point 1), machine coordinates
     // The simulated world: how far each axis travels from where it stands at power-on to its home
     // switch ([homing] switch_distance = [X, Y, Z, A, B]); no parameter says this.

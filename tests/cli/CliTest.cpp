@@ -509,3 +509,14 @@ TEST_F(CliTest, RunRejectsTheManualsDamagedPocketMove) {
 }
 
 } // namespace
+
+TEST_F(CliTest, ParameterOutsideThePanelRangeIsUsedWithAWarning) {
+    fs::path program = write("param.nc", kEndingProgram);
+    ProcessResult r = sim({"run", program.string(), "--param", "801=25", "--print", "1301"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_NE(r.err.find("warning: --param 801=25: parameter 801 (Total number of tools) must be a whole number "
+                         "from 0 to 20, not 25"),
+              std::string::npos)
+        << r.err;
+    EXPECT_DOUBLE_EQ(json::parse(r.out)["vars"]["1301"].get<double>(), 25.0);
+}
