@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
     if (o.home) {
         homing = controller.home(controller.homeableAxes());
     }
-    controller::RunReport report = homing ? controller.report(*homing) : controller.run();
+    controller::RunReport report = homing ? controller.snapshot() : controller.run();
     if (!ready) {
         report.status = controller::RunStatus::Error;
     }

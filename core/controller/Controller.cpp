@@ -295,15 +295,6 @@ void Controller::zeroWorkAxis(int axis) {
     offsets_.set(slot, axis, machine_.position()(axis) - others);
 }
 
-RunReport Controller::report(const Alarm& alarm) const {
-    RunReport out;
-    out.status = RunStatus::Alarm;
-    out.alarm = alarm;
-    out.diagnostics = diagnostics_;
-    fill(out);
-    return out;
-}
-
 int Controller::spindleTool() const {
     return config_.dialect->id == gcode::DialectId::M350 ? saturatingInt(config_.parameters.get(param::kCurrentTool))
                                                          : fanucSpindleTool_;

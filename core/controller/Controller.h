@@ -66,8 +66,6 @@ public:
 
     // X, Y and Z always; the 4th and 5th axes when their home switch is set.
     std::vector<int> homeableAxes() const;
-    // The state as it stands, reported with an alarm raised outside a run (homing).
-    RunReport report(const Alarm& alarm) const;
     static constexpr const char* kBootHomingPrompt = "是否进行开机寻零操作?";
 
     // Reads any variable as a macro would, for --print and the panel.

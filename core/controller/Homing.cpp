@@ -46,10 +46,7 @@ std::optional<Alarm> Controller::home(const std::vector<int>& axes) {
             continue;
         }
         if (auto alarm = homeAxis(axis)) {
-            enterSafeState();
-            if (trace_) {
-                trace_->alarm(machine_.time(), *alarm);
-            }
+            raiseAlarm(*alarm);
             return alarm;
         }
     }
