@@ -18,4 +18,8 @@ struct ProcessResult {
 ProcessResult runProcess(const std::string& program, const std::vector<std::string>& args,
                          const std::string& workingDirectory = {});
 
+// A folder or file name as a GoogleTest case name: every character that is not a letter or digit
+// becomes '_' (`m350-t-code` -> `m350_t_code`).
+std::string testNameFor(const std::string& name);
+
 } // namespace m350::testing
