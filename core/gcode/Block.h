@@ -5,23 +5,33 @@
 
 #include <cstdint>
 #include <span>
-#include <string>
-#include <vector>
+#include <string_view>
 
 namespace m350::gcode {
 
-// An address word: `X-#2`, `G#199`, `P#[1045+#1*3]`.
+// An address word: `X12.5`, `X-#2`, `G#199`, `P#[1045+#1*3]`. A plain number (most words of most
+// programs) is kept in the word itself; anything more is an expression in the program's pool.
 struct Word {
+    double number = 0.0;    // the value when `value` is kNoExpr
+    ExprId value = kNoExpr; // the value's expression, when it is more than a number
+    std::uint32_t column : 24 = 0;
     char letter = 0;
-    ExprId value = kNoExpr;
-    std::uint32_t column = 0;
+
+    bool isNumber() const { return value == kNoExpr; }
 };
+static_assert(sizeof(Word) == 16, "a G1 line has four or five words: keep them small");
+
+// Columns past this are stored as this (no line of a real program comes near it).
+inline constexpr std::uint32_t kMaxWordColumn = (1u << 24) - 1;
+inline std::uint32_t wordColumn(std::uint32_t column) {
+    return column < kMaxWordColumn ? column : kMaxWordColumn;
+}
 
 // `#index = value`, with the comment that follows it kept as text: `#1503 = 1(T[%.0f])`.
 struct Assignment {
     ExprId index = kNoExpr;
     ExprId value = kNoExpr;
-    std::string text;
+    std::string_view text; // stored in the program's TextArena
     bool hasText = false;
     std::uint32_t column = 0;
 };
@@ -46,9 +56,9 @@ struct Block {
     std::int32_t loopId = 0;         // m of DOm / ENDm
     std::int32_t partner = -1;       // WHILE <-> END block index, -1 when unmatched
     std::uint32_t controlColumn = 0; // where the control keyword starts
-    std::vector<Assignment> assignments;
-    std::span<const Word> words; // stored in the Program's WordArena
-    std::string comment;             // text of the first comment on the line
+    std::span<const Assignment> assignments; // these three are stored in the program's arenas
+    std::span<const Word> words;
+    std::string_view comment; // text of the first comment on the line
 };
 
 } // namespace m350::gcode

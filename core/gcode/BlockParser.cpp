@@ -8,15 +8,15 @@
 
 namespace m350::gcode {
 
-BlockParser::BlockParser(const Dialect& dialect, ExpressionPool& pool, WordArena& words,
-                         std::vector<Diagnostic>& diagnostics, std::string fileName, std::uint32_t fileIndex)
-    : dialect_(dialect), pool_(pool), words_(words), diagnostics_(diagnostics), fileName_(std::move(fileName)),
-      fileIndex_(fileIndex) {}
+BlockParser::BlockParser(const Dialect& dialect, BlockStorage& storage, std::vector<Diagnostic>& diagnostics,
+                         std::string fileName, std::uint32_t fileIndex)
+    : dialect_(dialect), storage_(storage), pool_(storage.expressions), diagnostics_(diagnostics),
+      fileName_(std::move(fileName)), fileIndex_(fileIndex) {}
 
 std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lineNumber) {
     if (plainPath_) {
         Block plain;
-        switch (parsePlainBlock(line, dialect_, {fileIndex_, lineNumber, 0}, pool_, words_, plain)) {
+        switch (parsePlainBlock(line, dialect_, {fileIndex_, lineNumber, 0}, storage_, plain)) {
         case PlainResult::Parsed: return plain;
         case PlainResult::Empty: return std::nullopt;
         case PlainResult::Declined: break;
@@ -30,6 +30,7 @@ std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lin
     pos_ = 0;
     depth_ = 0;
     lastLint_.clear();
+    assignments_.clear();
     Block block;
     block.location = {fileIndex_, lineNumber, tokens_.front().column};
     try {
@@ -39,10 +40,11 @@ std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lin
     }
     block.suspect = !lastLint_.empty();
     bool empty = block.label < 0 && block.programNumber < 0 && block.control == Control::None &&
-                 block.assignments.empty() && block.words.empty();
+                 assignments_.empty() && block.words.empty();
     if (empty) {
         return std::nullopt;
     }
+    block.assignments = storage_.assignments.copy(assignments_);
     return block;
 }
 
@@ -94,7 +96,7 @@ void BlockParser::parseStatement(Block& block) {
             fail(t, Lexer(dialect_).issueMessage(t, line_));
         }
         if (t.kind == TokenKind::Comment && block.comment.empty()) {
-            block.comment = std::string(commentText(t, line_));
+            block.comment = storage_.text.store(commentText(t, line_));
         }
     }
     auto skipComments = [&] {
@@ -189,7 +191,7 @@ void BlockParser::parseIf(Block& block) {
         if (peek().kind != TokenKind::Hash) {
             fail(peek(), "THEN must be followed by an assignment such as #1 = 0, found " + describe(peek()));
         }
-        block.assignments.push_back(parseAssignment());
+        assignments_.push_back(parseAssignment());
     } else {
         fail(peek(), "IF condition must be followed by GOTOn or THEN, found " + describe(peek()));
     }
@@ -240,19 +242,18 @@ void BlockParser::parseItems(Block& block) {
     for (std::size_t i = pos_; i < tokens_.size(); ++i) {
         letters += tokens_[i].kind == TokenKind::Letter ? 1 : 0;
     }
-    std::span<Word> room = words_.allocate(letters);
+    std::span<Word> room = storage_.words.allocate(letters);
     std::size_t count = 0;
     while (peek().kind != TokenKind::End) {
         const Token& t = peek();
         switch (t.kind) {
         case TokenKind::Comment: next(); break;
-        case TokenKind::Hash: block.assignments.push_back(parseAssignment()); break;
+        case TokenKind::Hash: assignments_.push_back(parseAssignment()); break;
         case TokenKind::Letter: {
             std::size_t first = pos_;
             Word w = parseWord();
             lintTableArithmetic(w, first, pos_);
-            if (w.letter == 'M' && pool_[w.value].kind == ExprKind::Number &&
-                (pool_[w.value].number == 30 || pool_[w.value].number == 2)) {
+            if (w.letter == 'M' && w.isNumber() && (w.number == 30 || w.number == 2)) {
                 block.programEnd = true;
             }
             room[count++] = w;
@@ -289,7 +290,7 @@ Assignment BlockParser::parseAssignment() {
     }
     a.value = parseExpression();
     if (peek().kind == TokenKind::Comment) {
-        a.text = std::string(commentText(next(), line_));
+        a.text = storage_.text.store(commentText(next(), line_));
         a.hasText = true;
     }
     if (peek().kind == TokenKind::RBracket) {
@@ -302,14 +303,13 @@ Word BlockParser::parseWord() {
     const Token& letter = next();
     Word w;
     w.letter = letter.letter;
-    w.column = letter.column;
+    w.column = wordColumn(letter.column);
     TokenKind k = peek().kind;
     if (k != TokenKind::Number && k != TokenKind::Hash && k != TokenKind::LBracket && k != TokenKind::Minus &&
         k != TokenKind::Plus) {
         fail(letter, std::string("address ") + letter.letter + " needs a value, found " + describe(peek()));
     }
-    w.value = plainNumber();
-    if (w.value == kNoExpr) {
+    if (!plainNumber(w)) {
         w.value = parseUnary();
     }
     if (peek().kind == TokenKind::Plus || peek().kind == TokenKind::Minus || peek().kind == TokenKind::Star ||

@@ -1,11 +1,11 @@
 #pragma once
 
 #include "core/gcode/Block.h"
+#include "core/gcode/BlockStorage.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Diagnostic.h"
 #include "core/gcode/Expression.h"
 #include "core/gcode/Token.h"
-#include "core/gcode/WordArena.h"
 
 #include <optional>
 #include <string>
@@ -24,7 +24,7 @@ namespace m350::gcode {
 // errors of every other line.
 class BlockParser {
 public:
-    BlockParser(const Dialect& dialect, ExpressionPool& pool, WordArena& words, std::vector<Diagnostic>& diagnostics,
+    BlockParser(const Dialect& dialect, BlockStorage& storage, std::vector<Diagnostic>& diagnostics,
                 std::string fileName, std::uint32_t fileIndex);
 
     // Returns nothing for a line without content (blank, comment only, `%`) or with a syntax error.
@@ -56,7 +56,7 @@ private:
     ExprId parseCondition(const char* statement);
     int parseLoopId(const char* keyword);
 
-    ExprId plainNumber();
+    bool plainNumber(Word& word); // a signed number alone: kept in the word
     ExprId parseExpression();
     ExprId parseAdditive();
     ExprId parseTerm();
@@ -84,8 +84,8 @@ private:
     std::string source(const Token& token) const;
 
     const Dialect& dialect_;
-    ExpressionPool& pool_;
-    WordArena& words_;
+    BlockStorage& storage_;
+    ExpressionPool& pool_; // storage_.expressions
     std::vector<Diagnostic>& diagnostics_;
     std::string fileName_;
     std::uint32_t fileIndex_;
@@ -93,6 +93,7 @@ private:
     std::string_view line_;
     std::uint32_t lineNumber_ = 0;
     std::vector<Token> tokens_;
+    std::vector<Assignment> assignments_; // of the block being parsed, stored when it parses
     std::size_t pos_ = 0;
     int depth_ = 0; // nesting of brackets, signs and indirections in the current expression
     std::string lastLint_;

@@ -25,7 +25,7 @@ std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
     block.control = isWhile ? Control::While : Control::End;
     block.controlColumn = tokens_[first].column;
     block.words = {};
-    block.assignments.clear();
+    block.assignments = {};
     block.loopId = kUnknownLoop; // the parser then trusts no pairing in this program
     for (std::size_t i = first; i + 1 < tokens_.size(); ++i) {
         bool marker = isWhile ? (tokens_[i].kind == TokenKind::Keyword && tokens_[i].keyword == Keyword::Do)
@@ -77,8 +77,7 @@ std::string BlockParser::hashBracketHint(std::size_t hashToken, std::size_t stra
 // `X[#1330+#1300-1]` adds a pocket coordinate to a tool number: never what anyone means, and exactly
 // what the M350 manual's damaged listing reads. The author wanted `X#[1330+#1300-1]`.
 void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken) {
-    const ExprNode& root = pool_[word.value];
-    if (root.kind != ExprKind::Binary || dialect_.indexedTables.empty()) {
+    if (word.isNumber() || pool_[word.value].kind != ExprKind::Binary || dialect_.indexedTables.empty()) {
         return;
     }
     ExprId leftmost = word.value;

@@ -6,21 +6,20 @@
 namespace m350::gcode {
 
 // `X12.5` and `X-3`, most of any real program, without the precedence chain.
-ExprId BlockParser::plainNumber() {
+bool BlockParser::plainNumber(Word& word) {
     bool negative = peek().kind == TokenKind::Minus;
-    const Token& number = peek(negative ? 1 : 0);
+    bool signed_ = negative || peek().kind == TokenKind::Plus;
+    const Token& number = peek(signed_ ? 1 : 0);
     if (number.kind != TokenKind::Number) {
-        return kNoExpr;
+        return false;
     }
-    ExprNode n;
-    n.kind = ExprKind::Number;
-    n.number = negative ? -number.number : number.number;
-    n.column = peek().column;
+    word.number = negative ? -number.number : number.number;
+    word.value = kNoExpr;
     next();
-    if (negative) {
+    if (signed_) {
         next();
     }
-    return pool_.add(n);
+    return true;
 }
 
 ExprId BlockParser::binary(BinaryOp op, ExprId lhs, ExprId rhs, std::uint32_t column) {

@@ -8,22 +8,38 @@
 #include <tuple>
 
 namespace m350::gcode {
+namespace {
+
+bool isNumberWord(const Word& w, char letter, double number) {
+    return w.letter == letter && w.isNumber() && w.number == number;
+}
+
+// M98 or G65: a call whose P names an O program.
+bool isCall(const Block& block) {
+    for (const Word& w : block.words) {
+        if (isNumberWord(w, 'M', 98) || isNumberWord(w, 'G', 65)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
 
 void Parser::addFile(Program& program, const std::string& path, std::string_view text, FileRole role,
                      std::string encoding) {
     auto fileIndex = static_cast<std::uint32_t>(program.files.size());
     std::string name = std::filesystem::path(path).filename().string();
     program.files.push_back({path, name.empty() ? path : name, role, std::move(encoding)});
-    BlockParser blockParser(dialect_, program.expressions, program.words, diagnostics_, program.files.back().name,
-                            fileIndex);
+    BlockParser blockParser(dialect_, program, diagnostics_, program.files.back().name, fileIndex);
 
     if (program.blocks.empty()) {
         // Size for the program (the first and largest file) plus headroom for the macro libraries,
         // so adding a library never copies a 200,000-block program.
         auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
         program.blocks.reserve(lines + 4096);
-        program.expressions.reserve((lines + 4096) * 6); // a G1 line has 5 words
     }
+    const bool checksCalls = role == FileRole::Main || role == FileRole::Mdi;
     bool unitOpen = false;
     std::uint32_t lineNumber = 0;
     std::size_t start = 0;
@@ -49,10 +65,17 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
             program.units.push_back(std::move(unit));
             unitOpen = true;
         }
+        const auto index = static_cast<std::uint32_t>(program.blocks.size());
         if (block->suspect) {
-            program.suspects[static_cast<std::uint32_t>(program.blocks.size())] = blockParser.lastLint();
+            program.suspects[index] = blockParser.lastLint();
         }
-        program.blocks.push_back(std::move(*block));
+        if (block->label >= 0 || block->control != Control::None) {
+            flowBlocks_.push_back(index);
+        }
+        if (checksCalls && isCall(*block)) {
+            callBlocks_.push_back(index);
+        }
+        program.blocks.push_back(*block);
     }
     if (unitOpen) {
         closeUnit(program, static_cast<std::uint32_t>(program.units.size() - 1));
@@ -70,14 +93,15 @@ void Parser::closeUnit(Program& program, std::uint32_t unitIndex) {
                        std::to_string(program.blocks[program.units[*existing].begin].location.line) + ")");
         }
     }
-    for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
+    for (std::uint32_t b : flowBlocks_) {
         if (program.blocks[b].label >= 0) {
             unit.labels[program.blocks[b].label].push_back(b);
         }
     }
     program.indexUnit(unitIndex);
-    pairLoops(program, unit);
+    pairLoops(program);
     checkGotos(program, unit);
+    flowBlocks_.clear();
 }
 
 void Parser::report(const Program& program, const Block& block, std::uint32_t column, DiagnosticKind kind,
@@ -87,15 +111,15 @@ void Parser::report(const Program& program, const Block& block, std::uint32_t co
 }
 
 // WHILE ... DOm and ENDm pair by nesting, as on FANUC: the innermost open DO must carry the same m.
-void Parser::pairLoops(Program& program, const ProgramUnit& unit) {
-    for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
+void Parser::pairLoops(Program& program) {
+    for (std::uint32_t b : flowBlocks_) {
         if (program.blocks[b].loopId == kUnknownLoop &&
             (program.blocks[b].control == Control::While || program.blocks[b].control == Control::End)) {
             return; // a loop line with a syntax error: its error already stops the program
         }
     }
     std::vector<std::uint32_t> open;
-    for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
+    for (std::uint32_t b : flowBlocks_) {
         Block& block = program.blocks[b];
         if (block.control == Control::While) {
             for (std::uint32_t outer : open) {
@@ -135,7 +159,7 @@ void Parser::pairLoops(Program& program, const ProgramUnit& unit) {
 }
 
 void Parser::checkGotos(const Program& program, const ProgramUnit& unit) {
-    for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
+    for (std::uint32_t b : flowBlocks_) {
         const Block& block = program.blocks[b];
         if ((block.control != Control::Goto && block.control != Control::IfGoto) || block.target == kNoExpr) {
             continue;
@@ -172,26 +196,12 @@ void Parser::finish(const Program& program) {
 }
 
 void Parser::checkCalls(const Program& program) {
-    for (const ProgramUnit& unit : program.units) {
-        if (program.files[unit.file].role != FileRole::Main && program.files[unit.file].role != FileRole::Mdi) {
-            continue;
-        }
-        for (std::uint32_t b = unit.begin; b < unit.end; ++b) {
-            const Block& block = program.blocks[b];
-            bool calls = false;
-            for (const Word& w : block.words) {
-                const ExprNode& v = program.expressions[w.value];
-                calls |= (w.letter == 'M' && v.kind == ExprKind::Number && v.number == 98) ||
-                         (w.letter == 'G' && v.kind == ExprKind::Number && v.number == 65);
-            }
-            for (const Word& w : block.words) {
-                const ExprNode& v = program.expressions[w.value];
-                if (calls && w.letter == 'P' && v.kind == ExprKind::Number &&
-                    !program.findUnit(roundToInt(v.number))) {
-                    report(program, block, w.column, DiagnosticKind::Flow,
-                           "no O" + std::to_string(roundToInt(v.number)) +
-                               " in this file or the machine's macro libraries");
-                }
+    for (std::uint32_t b : callBlocks_) {
+        const Block& block = program.blocks[b];
+        for (const Word& w : block.words) {
+            if (w.letter == 'P' && w.isNumber() && !program.findUnit(roundToInt(w.number))) {
+                report(program, block, w.column, DiagnosticKind::Flow,
+                       "no O" + std::to_string(roundToInt(w.number)) + " in this file or the machine's macro libraries");
             }
         }
     }

@@ -27,7 +27,7 @@ public:
 
 private:
     void closeUnit(Program& program, std::uint32_t unitIndex);
-    void pairLoops(Program& program, const ProgramUnit& unit);
+    void pairLoops(Program& program);
     void checkGotos(const Program& program, const ProgramUnit& unit);
     void checkCalls(const Program& program);
     void report(const Program& program, const Block& block, std::uint32_t column, DiagnosticKind kind,
@@ -35,6 +35,9 @@ private:
 
     const Dialect& dialect_;
     std::vector<Diagnostic> diagnostics_;
+    // The passes over a unit look only at the blocks that matter to them, not at every G1 line:
+    std::vector<std::uint32_t> flowBlocks_; // of the open unit: labels and control statements
+    std::vector<std::uint32_t> callBlocks_; // of main and MDI files: M98 / G65 with a P number
 };
 
 } // namespace m350::gcode

@@ -18,14 +18,13 @@ bool isSpace(char c) {
 struct PlainWord {
     char letter;
     std::uint32_t letterColumn;
-    std::uint32_t valueColumn;
     double value;
 };
 
 } // namespace
 
 PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, SourceLocation location,
-                            ExpressionPool& pool, WordArena& words, Block& out) {
+                            BlockStorage& storage, Block& out) {
     constexpr std::size_t kMaxWords = 24;
     std::array<PlainWord, kMaxWords> found;
     std::size_t count = 0;
@@ -88,8 +87,6 @@ PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, Sourc
         } else {
             sign = 0;
         }
-        auto signColumn = static_cast<std::uint32_t>(i); // the sign's column when there is one
-        std::size_t numberStart = i;
         bool digitFirst = i < size && text[i] >= '0' && text[i] <= '9';
         bool pointFirst = i + 1 < size && text[i] == '.' && text[i + 1] >= '0' && text[i + 1] <= '9';
         if (!digitFirst && !pointFirst) {
@@ -115,23 +112,23 @@ PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, Sourc
             return PlainResult::Declined;
         }
         first = false;
-        auto numberColumn = static_cast<std::uint32_t>(numberStart + 1);
-        found[count++] = {letter, letterColumn, sign == '-' ? signColumn : numberColumn, sign == '-' ? -value : value};
+        found[count++] = {letter, letterColumn, sign == '-' ? -value : value};
     }
     if (count == 0 && label < 0) {
         return PlainResult::Empty;
     }
     out.location = {location.file, location.line, firstColumn};
     out.label = label;
-    out.comment = std::string(comment);
-    std::span<Word> room = words.allocate(count);
+    if (!comment.empty()) {
+        out.comment = storage.text.store(comment);
+    }
+    std::span<Word> room = storage.words.allocate(count);
     for (std::size_t k = 0; k < count; ++k) {
-        ExprNode node;
-        node.kind = ExprKind::Number;
-        node.number = found[k].value;
-        node.column = found[k].valueColumn;
-        room[k] = Word{found[k].letter, pool.add(node), found[k].letterColumn};
-        if (found[k].letter == 'M' && (node.number == 30 || node.number == 2)) {
+        Word& w = room[k];
+        w.number = found[k].value;
+        w.column = wordColumn(found[k].letterColumn);
+        w.letter = found[k].letter;
+        if (w.letter == 'M' && (w.number == 30 || w.number == 2)) {
             out.programEnd = true;
         }
     }

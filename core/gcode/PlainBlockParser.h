@@ -1,9 +1,8 @@
 #pragma once
 
 #include "core/gcode/Block.h"
+#include "core/gcode/BlockStorage.h"
 #include "core/gcode/Dialect.h"
-#include "core/gcode/Expression.h"
-#include "core/gcode/WordArena.h"
 
 #include <string_view>
 
@@ -16,6 +15,6 @@ enum class PlainResult { Declined, Empty, Parsed };
 // syntax, keywords, malformed numbers, O lines, block delete) is Declined and left to the general
 // BlockParser, which gives the same result for every line this accepts (tested).
 PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, SourceLocation location,
-                            ExpressionPool& pool, WordArena& words, Block& out);
+                            BlockStorage& storage, Block& out);
 
 } // namespace m350::gcode

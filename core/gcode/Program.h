@@ -1,8 +1,7 @@
 #pragma once
 
 #include "core/gcode/Block.h"
-#include "core/gcode/Expression.h"
-#include "core/gcode/WordArena.h"
+#include "core/gcode/BlockStorage.h"
 
 #include <cstdint>
 #include <optional>
@@ -34,13 +33,12 @@ struct ProgramUnit {
     std::unordered_map<std::int32_t, std::vector<std::uint32_t>> labels;
 };
 
-// The parsed form of every file the run needs. Built once by the Parser; never re-scanned.
-class Program {
+// The parsed form of every file the run needs. Built once by the Parser; never re-scanned. The
+// BlockStorage it extends holds what the blocks refer to.
+class Program : public BlockStorage {
 public:
     std::vector<SourceFile> files;
     std::vector<Block> blocks;
-    ExpressionPool expressions;
-    WordArena words; // the words the blocks' spans refer to
     std::vector<ProgramUnit> units;
 
     // The unit an O number names. The main and MDI files win over libraries, so a user can try a

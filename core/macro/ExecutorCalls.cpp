@@ -99,6 +99,10 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
     evaluated.source = &block;
     evaluated.words.clear();
     for (const gcode::Word& w : block.words) {
+        if (w.isNumber()) {
+            evaluated.words.push_back({w.letter, w.number, w.column});
+            continue;
+        }
         Value v = evaluator_.evaluate(w.value);
         if (!v.vacant) { // FANUC: an address whose value is vacant is as if not written
             evaluated.words.push_back({w.letter, v.number, w.column});

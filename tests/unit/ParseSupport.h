@@ -81,4 +81,14 @@ inline std::string show(const Program& program, ExprId id) {
     return "?";
 }
 
+// A word's value: its plain number, or its expression as show() renders it.
+inline std::string show(const Program& program, const Word& word) {
+    if (!word.isNumber()) {
+        return show(program, word.value);
+    }
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", word.number);
+    return buffer;
+}
+
 } // namespace m350::gcode::support

@@ -180,7 +180,7 @@ TEST(ParserFanuc, VariableGCodes) {
     const char* expected[] = {"#199", "#198", "#197"};
     for (int i = 0; i < 3; ++i) {
         EXPECT_EQ(b.words[i].letter, 'G');
-        EXPECT_EQ(show(p.program, b.words[i].value), expected[i]);
+        EXPECT_EQ(show(p.program, b.words[i]), expected[i]);
     }
     EXPECT_EQ(b.words[2].column, 13u);
 }

@@ -36,7 +36,7 @@ std::string letters(const Block& block) {
 std::vector<std::string> values(const Program& program, const Block& block) {
     std::vector<std::string> out;
     for (const Word& w : block.words) {
-        out.push_back(show(program, w.value));
+        out.push_back(show(program, w));
     }
     return out;
 }
@@ -66,6 +66,7 @@ TEST(Parser, PackedWordsWithVariablesAndIndirection) {
     const Program& g = p.program;
     EXPECT_EQ(values(g, b), (std::vector<std::string>{"91", "31", "-#2", "#3", "#22", "#[(1045 + (#1 * 3))]",
                                                       "#28", "0", "1"}));
+    EXPECT_TRUE(b.words[0].isNumber());
     EXPECT_EQ(g.expressions[b.words[2].value].kind, ExprKind::Unary);
     const ExprNode& pValue = g.expressions[b.words[5].value];
     EXPECT_EQ(pValue.kind, ExprKind::Variable);
@@ -84,7 +85,9 @@ TEST(Parser, NegativeNumbersFoldButNegatedVariablesStayUnary) {
     Parsed p = parseClean("X-5 Y+2.5 Z-#2 A-[#1+1]");
     const Block& b = p.program.blocks.at(0);
     ASSERT_EQ(letters(b), "XYZA");
-    EXPECT_EQ(p.program.expressions[b.words[0].value].kind, ExprKind::Number);
+    EXPECT_TRUE(b.words[0].isNumber()); // kept in the word: no expression node
+    EXPECT_TRUE(b.words[1].isNumber());
+    EXPECT_FALSE(b.words[2].isNumber());
     EXPECT_EQ(values(p.program, b), (std::vector<std::string>{"-5", "2.5", "-#2", "-(#1 + 1)"}));
 }
 
@@ -242,7 +245,7 @@ TEST(Parser, ArithmeticPrecedenceAndAssociativity) {
 
 TEST(Parser, ExpressionColumns) {
     Parsed p = parseClean("#1 = #2 + 3*#4");
-    const Assignment& a = p.program.blocks.at(0).assignments.at(0);
+    const Assignment& a = p.program.blocks.at(0).assignments[0];
     const ExprNode& sum = p.program.expressions[a.value];
     EXPECT_EQ(sum.column, 9u);
     EXPECT_EQ(p.program.expressions[sum.lhs].column, 6u);
@@ -273,7 +276,7 @@ TEST(Parser, MessageTextIsKeptWithItsAssignment) {
     Parsed p = parseClean("#1503 = 1(T[%.0f])\n#1503 = 1(X,Y,Z轴机械未全部归零!)\n#1503 = 1000");
     const auto& b = p.program.blocks;
     ASSERT_EQ(b.size(), 3u);
-    EXPECT_EQ(show(p.program, b[0].assignments.at(0).index), "#1503");
+    EXPECT_EQ(show(p.program, b[0].assignments[0].index), "#1503");
     EXPECT_EQ(assigned(p, 0), "1");
     EXPECT_TRUE(b[0].assignments[0].hasText);
     EXPECT_EQ(b[0].assignments[0].text, "T[%.0f]");
