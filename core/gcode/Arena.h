@@ -1,43 +1,54 @@
 #pragma once
 
+#include "core/common/LargeAllocation.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <span>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace m350::gcode {
 
 // Storage for many small runs of T that never move once handed out, so a Block can refer to its
 // words, assignments and comment text with spans and views, and parsing a 200,000-line program
-// allocates a few hundred chunks instead of a few hundred thousand vectors and strings.
-template <class T, std::size_t ChunkSize = 16384>
+// allocates a handful of chunks instead of a few hundred thousand vectors and strings. Chunks
+// double from 16 KB up to 2 MB, which then come from allocateLarge (huge pages where available).
+template <class T>
 class Arena {
+    static_assert(std::is_trivially_destructible_v<T>, "an arena never runs destructors");
+
 public:
     Arena() = default;
     Arena(const Arena&) = delete;
     Arena& operator=(const Arena&) = delete;
-    Arena(Arena&&) = default;
-    Arena& operator=(Arena&&) = default;
+    Arena(Arena&& other) noexcept { swap(other); }
+    Arena& operator=(Arena&& other) noexcept {
+        Arena moved(std::move(other));
+        swap(moved);
+        return *this;
+    }
+    ~Arena() {
+        for (const Chunk& chunk : chunks_) {
+            freeLarge(chunk.memory, chunk.bytes);
+        }
+    }
 
     // Room for `count` consecutive default-constructed Ts; valid for the arena's lifetime.
     std::span<T> allocate(std::size_t count) {
         if (count == 0) {
             return {};
         }
-        if (count > ChunkSize) {
-            // A run longer than a chunk gets storage of its own.
-            large_.push_back(std::make_unique<T[]>(count));
-            return {large_.back().get(), count};
+        if (count > capacity_ - used_) {
+            addChunk(count);
         }
-        if (used_ + count > ChunkSize) {
-            chunks_.push_back(std::make_unique<T[]>(ChunkSize));
-            used_ = 0;
-        }
-        std::span<T> room(chunks_.back().get() + used_, count);
+        T* at = current_ + used_;
+        std::uninitialized_default_construct_n(at, count);
         used_ += count;
-        return room;
+        return {at, count};
     }
 
     std::span<const T> copy(std::span<const T> items) {
@@ -47,9 +58,38 @@ public:
     }
 
 private:
-    std::vector<std::unique_ptr<T[]>> chunks_;
-    std::vector<std::unique_ptr<T[]>> large_;
-    std::size_t used_ = ChunkSize; // of the last chunk
+    static constexpr std::size_t kFirstChunkBytes = std::size_t{16} << 10;
+    static constexpr std::size_t kLastChunkBytes = std::size_t{2} << 20;
+
+    struct Chunk {
+        void* memory;
+        std::size_t bytes;
+    };
+
+    void addChunk(std::size_t atLeast) {
+        std::size_t items = std::max(atLeast, std::max<std::size_t>(1, nextChunkBytes_ / sizeof(T)));
+        nextChunkBytes_ = std::min(nextChunkBytes_ * 2, kLastChunkBytes);
+        chunks_.reserve(chunks_.size() + 1);
+        void* memory = allocateLarge(items * sizeof(T));
+        chunks_.push_back({memory, items * sizeof(T)});
+        current_ = static_cast<T*>(memory);
+        capacity_ = items;
+        used_ = 0;
+    }
+
+    void swap(Arena& other) noexcept {
+        std::swap(chunks_, other.chunks_);
+        std::swap(current_, other.current_);
+        std::swap(capacity_, other.capacity_);
+        std::swap(used_, other.used_);
+        std::swap(nextChunkBytes_, other.nextChunkBytes_);
+    }
+
+    std::vector<Chunk> chunks_;
+    T* current_ = nullptr;
+    std::size_t capacity_ = 0; // of the current chunk
+    std::size_t used_ = 0;     // of the current chunk
+    std::size_t nextChunkBytes_ = kFirstChunkBytes;
 };
 
 // Text (comments, messages) kept for the program's lifetime.
@@ -61,7 +101,7 @@ public:
     }
 
 private:
-    Arena<char, 65536> chars_;
+    Arena<char> chars_;
 };
 
 } // namespace m350::gcode

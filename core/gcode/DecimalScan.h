@@ -51,7 +51,10 @@ inline bool scanDecimal(const char* text, std::size_t size, std::size_t& i, doub
     if (fraction > 22) {
         return false;
     }
-    value = static_cast<double>(mantissa) / kPowersOfTen[fraction];
+    value = static_cast<double>(mantissa);
+    if (fraction != 0) {
+        value /= kPowersOfTen[fraction];
+    }
     return true;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/LargeAllocation.h"
 #include "core/gcode/Block.h"
 #include "core/gcode/BlockStorage.h"
 
@@ -38,7 +39,7 @@ struct ProgramUnit {
 class Program : public BlockStorage {
 public:
     std::vector<SourceFile> files;
-    std::vector<Block> blocks;
+    std::vector<Block, LargeAllocator<Block>> blocks;
     std::vector<ProgramUnit> units;
 
     // The unit an O number names. The main and MDI files win over libraries, so a user can try a

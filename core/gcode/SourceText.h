@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/LargeAllocation.h"
+
 #include <string>
 #include <string_view>
 #include <variant>
@@ -10,10 +12,14 @@ enum class TextEncoding { Utf8, Gbk };
 
 std::string_view encodingName(TextEncoding encoding);
 
+// A file's bytes. A 200,000-line program is several megabytes: LargeAllocator gives them huge
+// pages where the system has them.
+using SourceBytes = std::basic_string<char, std::char_traits<char>, LargeAllocator<char>>;
+
 // A program file as the parser sees it.
 struct SourceText {
     std::string path;
-    std::string text;  // UTF-8, BOM removed, CRLF kept as is
+    SourceBytes text;  // UTF-8, BOM removed, CRLF kept as is
     TextEncoding encoding = TextEncoding::Utf8;
 };
 
@@ -30,6 +36,6 @@ std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path
 // the error names the 1-based line and byte column of the first bad byte.
 std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::string_view bytes);
 // The same, taking over `bytes`: valid UTF-8 becomes the text without a copy.
-std::variant<SourceText, SourceReadError> decodeSourceBuffer(std::string path, std::string bytes);
+std::variant<SourceText, SourceReadError> decodeSourceBuffer(std::string path, SourceBytes bytes);
 
 }  // namespace m350::gcode
