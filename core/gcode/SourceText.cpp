@@ -2,6 +2,16 @@
 
 #include <iconv.h>
 
+#if defined(__unix__)
+#define M350_HAVE_MMAP 1
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#else
+#define M350_HAVE_MMAP 0
+#endif
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
@@ -115,17 +125,16 @@ std::string_view encodingName(TextEncoding encoding) {
     return encoding == TextEncoding::Gbk ? "GBK" : "UTF-8";
 }
 
-std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::string_view bytes) {
-    return decodeSourceBuffer(std::move(path), SourceBytes(bytes));
-}
+namespace {
 
-std::variant<SourceText, SourceReadError> decodeSourceBuffer(std::string path, SourceBytes bytes) {
-    const std::size_t bomSize = std::string_view(bytes).starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0;
-    const std::string_view body = std::string_view(bytes).substr(bomSize);
+// Decodes `bytes`, which `owner` keeps alive: valid UTF-8 becomes the text as it lies.
+std::variant<SourceText, SourceReadError> decodeOwned(std::string path, std::string_view bytes,
+                                                      std::shared_ptr<const void> owner) {
+    const std::size_t bomSize = bytes.starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0;
+    const std::string_view body = bytes.substr(bomSize);
     const auto utf8Bad = firstInvalidUtf8(body);
     if (!utf8Bad) {
-        bytes.erase(0, bomSize); // the text is the file itself: no copy of a large program
-        return SourceText{std::move(path), std::move(bytes), TextEncoding::Utf8};
+        return SourceText{std::move(path), body, TextEncoding::Utf8, std::move(owner)};
     }
 
     const Iconv cd("UTF-8", "GB18030");
@@ -135,7 +144,9 @@ std::variant<SourceText, SourceReadError> decodeSourceBuffer(std::string path, S
     }
     auto gbk = decodeGbk(cd, body);
     if (auto* text = std::get_if<std::string>(&gbk)) {
-        return SourceText{std::move(path), SourceBytes(*text), TextEncoding::Gbk};
+        auto decoded = std::make_shared<const std::string>(std::move(*text));
+        std::string_view view = *decoded;
+        return SourceText{std::move(path), view, TextEncoding::Gbk, std::move(decoded)};
     }
 
     // The encoding that got further is most likely the intended one, so its
@@ -145,22 +156,66 @@ std::variant<SourceText, SourceReadError> decodeSourceBuffer(std::string path, S
                                                 position(bytes, bad) + ")"};
 }
 
+#if M350_HAVE_MMAP
+// A read-only private mapping of a whole file, unmapped with its last owner.
+class MappedFile {
+public:
+    MappedFile(void* address, std::size_t size) : address_(address), size_(size) {}
+    ~MappedFile() { ::munmap(address_, size_); }
+    MappedFile(const MappedFile&) = delete;
+    MappedFile& operator=(const MappedFile&) = delete;
+    std::string_view bytes() const { return {static_cast<const char*>(address_), size_}; }
+
+private:
+    void* address_;
+    std::size_t size_;
+};
+
+// The file mapped, or nothing when it cannot be (empty, not a regular file, no mmap): the caller
+// then reads it.
+std::shared_ptr<const MappedFile> mapFile(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        return nullptr;
+    }
+    struct stat info {};
+    std::shared_ptr<const MappedFile> mapped;
+    if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
+        const auto size = static_cast<std::size_t>(info.st_size);
+        void* address = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+        if (address != MAP_FAILED) {
+            mapped = std::make_shared<const MappedFile>(address, size);
+        }
+    }
+    ::close(fd);
+    return mapped;
+}
+#endif
+
+}  // namespace
+
+std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::string_view bytes) {
+    auto copy = std::make_shared<const std::string>(bytes);
+    std::string_view view = *copy;
+    return decodeOwned(std::move(path), view, std::move(copy));
+}
+
 std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path) {
+#if M350_HAVE_MMAP
+    if (auto mapped = mapFile(path)) {
+        std::string_view bytes = mapped->bytes();
+        return decodeOwned(path, bytes, std::move(mapped));
+    }
+#endif
     const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) return SourceReadError{path, "cannot open file: " + errnoMessage(errno)};
-    SourceBytes bytes;
-    if (std::fseek(file.get(), 0, SEEK_END) == 0) {
-        // Read straight into the text: a 200,000-line program is copied once, not twice.
-        long size = std::ftell(file.get());
-        std::rewind(file.get());
-        bytes.resize(size > 0 ? static_cast<std::size_t>(size) : 0);
-        bytes.resize(std::fread(bytes.data(), 1, bytes.size(), file.get()));
-    }
-    char buffer[16384]; // whatever is left: the file grew, or it is a pipe that cannot seek
+    auto bytes = std::make_shared<std::string>();
+    char buffer[16384];
     std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) bytes.append(buffer, n);
+    while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) bytes->append(buffer, n);
     if (std::ferror(file.get())) return SourceReadError{path, "cannot read file: " + errnoMessage(errno)};
-    return decodeSourceBuffer(path, std::move(bytes));
+    std::string_view view = *bytes;
+    return decodeOwned(path, view, std::move(bytes));
 }
 
 }  // namespace m350::gcode

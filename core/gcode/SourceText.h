@@ -1,7 +1,6 @@
 #pragma once
 
-#include "core/common/LargeAllocation.h"
-
+#include <memory>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -12,15 +11,15 @@ enum class TextEncoding { Utf8, Gbk };
 
 std::string_view encodingName(TextEncoding encoding);
 
-// A file's bytes. A 200,000-line program is several megabytes: LargeAllocator gives them huge
-// pages where the system has them.
-using SourceBytes = std::basic_string<char, std::char_traits<char>, LargeAllocator<char>>;
-
 // A program file as the parser sees it.
 struct SourceText {
     std::string path;
-    SourceBytes text;  // UTF-8, BOM removed, CRLF kept as is
+    std::string_view text;  // UTF-8, BOM removed, CRLF kept as is; points into `storage`
     TextEncoding encoding = TextEncoding::Utf8;
+    // What `text` points into: the file mapped into memory (a UTF-8 file is parsed where it lies,
+    // neither copied nor zero-filled first: a 200,000-line program is several megabytes), or the
+    // text decoded from GBK.
+    std::shared_ptr<const void> storage;
 };
 
 struct SourceReadError {
@@ -28,14 +27,12 @@ struct SourceReadError {
     std::string message;
 };
 
-// Reads the file's bytes and passes them to decodeSource.
+// Maps the file (reads it where mapping is not possible) and decodes it as decodeSource does.
 std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path);
 
 // Strips a UTF-8 BOM, accepts strictly valid UTF-8 (pure ASCII included) as
 // Utf8, otherwise decodes as GBK (via GB18030, a superset). If neither fits,
 // the error names the 1-based line and byte column of the first bad byte.
 std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::string_view bytes);
-// The same, taking over `bytes`: valid UTF-8 becomes the text without a copy.
-std::variant<SourceText, SourceReadError> decodeSourceBuffer(std::string path, SourceBytes bytes);
 
 }  // namespace m350::gcode

@@ -121,3 +121,30 @@ TEST(SourceText, ReadGbkFile) {
     EXPECT_EQ(text.text, "(换刀程序)\r\nT1 M6\r\nM99\r\n");
     EXPECT_EQ(text.encoding, TextEncoding::Gbk);
 }
+
+// A UTF-8 file is parsed where it lies (mapped): the text stays valid while the SourceText lives,
+// even after the file is removed, and copies share it.
+TEST(SourceText, ReadUtf8FileKeepsItsTextAlive) {
+    const std::string path = tempPath(".nc");
+    {
+        std::ofstream out(path, std::ios::binary);
+        out << "\xEF\xBB\xBF(换刀)\nG1 X1\n";
+    }
+    SourceText copy;
+    {
+        const auto text = expectText(readSourceFile(path));
+        std::remove(path.c_str());
+        EXPECT_EQ(text.encoding, TextEncoding::Utf8);
+        copy = text;
+    }
+    EXPECT_EQ(copy.text, "(换刀)\nG1 X1\n");
+}
+
+TEST(SourceText, ReadEmptyFile) {
+    const std::string path = tempPath(".nc");
+    { std::ofstream out(path, std::ios::binary); }
+    const auto text = expectText(readSourceFile(path));
+    std::remove(path.c_str());
+    EXPECT_EQ(text.text, "");
+    EXPECT_EQ(text.encoding, TextEncoding::Utf8);
+}
