@@ -188,8 +188,13 @@ void Controller::enterSafeState() {
 
 RunReport Controller::run() {
     start();
-    if (state_ == RunState::Running) {
+    while (state_ == RunState::Running) {
         advance(std::numeric_limits<double>::infinity());
+        if (state_ == RunState::Hold && !programStop_.empty()) {
+            postMessage(programStop_ + ": START pressed (run without an operator)");
+            displayTime_ = machine_.time(); // START comes the moment the machine stands still
+            resume();
+        }
     }
     return snapshot();
 }
@@ -235,7 +240,8 @@ Controller::RunState Controller::advance(double seconds) {
     if (state_ != RunState::Running) {
         return state_;
     }
-    while (executor_->state() == macro::Executor::State::Running && machine_.time() <= displayTime_) {
+    while (state_ == RunState::Running && executor_->state() == macro::Executor::State::Running &&
+           machine_.time() <= displayTime_) {
         if (machine_.time() > settings_.maxSimTime) {
             std::ostringstream why;
             why << "the program ran " << settings_.maxSimTime
@@ -260,10 +266,8 @@ void Controller::stepOnce() {
     if (executor_->blocksExecuted() != blocksBefore) {
         machine_.blockTime(settings_.blockTime);
     }
-    if (interp_.hasNotices()) {
-        for (std::string& notice : interp_.takeNotices()) {
-            postMessage(std::move(notice));
-        }
+    if (auto stop = interp_.takeStop()) {
+        stopForOperator(*stop);
     }
     if (int toolAfter = spindleTool(); toolAfter != toolBefore) {
         syncToolLength();
@@ -271,6 +275,29 @@ void Controller::stepOnce() {
             trace_->toolChange(machine_.time(), toolBefore, toolAfter, source());
         }
     }
+}
+
+void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& stop) {
+    if (stop.kind == interp::ModalInterpreter::OperatorStop::Kind::Optional && !optionalStopOn()) {
+        return;
+    }
+    TraceSource where{program_.fileName(stop.location), stop.location.line};
+    programStop_ = stop.what + " (" + where.file + ":" + std::to_string(where.line) + ")";
+    state_ = RunState::Hold;
+    if (trace_) {
+        trace_->programStop(machine_.time(), stop.what, where);
+    }
+}
+
+bool Controller::optionalStopOn() {
+    if (settings_.optionalStop) {
+        return true;
+    }
+    if (config_.dialect->id == gcode::DialectId::M350) {
+        macro::Value m1 = variable(1500); // M1 使能 on the M350
+        return !m1.vacant && m1.number != 0.0;
+    }
+    return false;
 }
 
 void Controller::raiseAlarm(const Alarm& alarm) {

@@ -50,6 +50,10 @@ public:
     void reset();
     void emergencyStop();
     RunState runState() const { return state_; }
+    // Why the run holds when the program itself stopped (M00, M01 with the optional stop on, the
+    // M350's G04 P-1): "M00 program stop (main.nc:12)"; empty for 暂停 or when running. resume()
+    // is START. run() presses START by itself and notes it in the messages.
+    const std::string& programStop() const { return programStop_; }
     double displayTime() const { return displayTime_; }
     machine::Axes displayPosition() const { return machine_.positionAt(displayTime_); }
     RunReport snapshot() const;
@@ -94,6 +98,8 @@ private:
     int spindleTool() const;
     TraceSource source() const;
     void postMessage(std::string text);
+    void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
+    bool optionalStopOn();
 
     config::MachineConfig config_;
     RunSettings settings_;
@@ -116,6 +122,7 @@ private:
     double displayTime_ = 0.0;
     machine::SimulatedMachine::Remainder remainder_; // what a hold cut short
     double liftedBy_ = 0.0;                          // Z lift of the hold (param 91, 70)
+    std::string programStop_;                        // see programStop()
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 };
 

@@ -77,6 +77,7 @@ void Controller::resume() {
     case Kind::None: break;
     }
     remainder_ = {};
+    programStop_.clear();
     state_ = RunState::Running;
 }
 
@@ -90,6 +91,7 @@ void Controller::reset() {
     liftedBy_ = 0.0;
     spindleBeforeHold_.reset();
     alarm_.reset();
+    programStop_.clear();
     state_ = RunState::Idle; // start() runs the program again from its beginning
     if (trace_) {
         trace_->runState(displayTime_, "reset");

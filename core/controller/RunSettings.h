@@ -11,6 +11,7 @@ struct RunSettings {
     double maxSimTime = 3600.0; // virtual seconds before a runaway program is stopped
     double blockTime = 1e-4;    // virtual seconds one block costs to prepare (macro statements too)
     bool homed = true;
+    bool optionalStop = false;  // the M01 switch (on the M350 #1500 = 1 turns it on too)
     std::optional<int> tool;    // tool in the spindle at start
     std::map<int, int> heldInputs;     // port -> level for the whole run
     std::map<int, double> parameters;  // overrides of the machine folder's parameters

@@ -73,6 +73,12 @@ void TraceWriter::runState(double time, std::string_view state) {
     out_ << j.dump() << '\n';
 }
 
+void TraceWriter::programStop(double time, std::string_view reason, const TraceSource& source) {
+    nlohmann::json j{{"t", time}, {"type", "pause"}, {"reason", std::string(reason)}};
+    withSource(j, source);
+    out_ << j.dump() << '\n';
+}
+
 void TraceWriter::alarm(double time, const Alarm& alarm) {
     nlohmann::json j{{"t", time},          {"type", "alarm"},      {"code", std::string(alarmKey(alarm.code))},
                      {"message", alarm.message}, {"file", alarm.file}, {"line", alarm.line},

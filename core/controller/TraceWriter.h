@@ -27,6 +27,8 @@ public:
     void alarm(double time, const Alarm& alarm);
     // A change of the run state the operator caused: pause, resume, reset, estop.
     void runState(double time, std::string_view state);
+    // A pause the program asked for (M00, M01, G04 P-1): why, and the block that asked.
+    void programStop(double time, std::string_view reason, const TraceSource& source);
 
 private:
     std::ostream& out_;

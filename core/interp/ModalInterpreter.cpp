@@ -112,15 +112,20 @@ machine::Axes ModalInterpreter::workPosition() const {
     return machine_.position() - workOffset();
 }
 
-std::vector<std::string> ModalInterpreter::takeNotices() {
-    std::vector<std::string> out;
-    out.swap(notices_);
+std::optional<ModalInterpreter::OperatorStop> ModalInterpreter::takeStop() {
+    std::optional<OperatorStop> out;
+    out.swap(stop_);
     return out;
+}
+
+void ModalInterpreter::stopForOperator(OperatorStop::Kind kind, std::string what) {
+    stop_ = OperatorStop{kind, std::move(what), block_ ? block_->location : gcode::SourceLocation{}};
 }
 
 BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
     Words& words = words_; // reused across blocks
     words.clear();
+    block_ = block.source;
     for (const WordValue& w : block.words) {
         if (w.letter == 'G') {
             words.g.push_back(w);
@@ -187,7 +192,9 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         for (const WordValue& m : words.m) {
             int code = roundToInt(m.value);
             if (code == 0) {
-                notices_.push_back("M0 program stop (headless run: continued)");
+                stopForOperator(OperatorStop::Kind::Program, "M00 program stop");
+            } else if (code == 1) {
+                stopForOperator(OperatorStop::Kind::Optional, "M01 optional stop");
             } else if (code == 2 || code == 30) {
                 flushCompensation();
                 compensation_.reset();
@@ -235,9 +242,15 @@ void ModalInterpreter::applyGCodes(const Words& words) {
         case 4: {
             double seconds = 0.0;
             if (words.find('P')) {
-                if (words.find('P')->value < 0) { // M350 `G04 P-1`: wait for START
-                    notices_.push_back("G04 P-1 waits for START (headless run: continued)");
+                if (words.find('P')->value == -1 && dialect_.id == gcode::DialectId::M350) {
+                    stopForOperator(OperatorStop::Kind::WaitForStart, "G04 P-1 waits for START");
                     break;
+                }
+                if (words.find('P')->value < 0) {
+                    invalid(*words.find('P'), "a dwell cannot be negative" +
+                                                  std::string(dialect_.id == gcode::DialectId::M350
+                                                                  ? " (G04 P-1 waits for START)"
+                                                                  : ""));
                 }
                 seconds = words.find('P')->value * dialect_.dwellPScale;
             } else if (words.find('X') && dialect_.dwellXSeconds) {

@@ -61,9 +61,13 @@ public:
     };
     const Probe& lastProbe() const { return probe_; }
 
-    // Texts of operator stops (M0, G04 P-1) met in a headless run.
-    std::vector<std::string> takeNotices();
-    bool hasNotices() const { return !notices_.empty(); }
+    // A stop for the operator met by the last block: the run waits for START (循环启动) there.
+    struct OperatorStop {
+        enum class Kind { Program, Optional, WaitForStart } kind = Kind::Program; // M00, M01, G04 P-1
+        std::string what;                  // "M00 program stop"
+        gcode::SourceLocation location;    // the block that stopped
+    };
+    std::optional<OperatorStop> takeStop();
 
 private:
     // The words of one block by letter. `present` says which letters were written; clearing it is
@@ -107,6 +111,7 @@ private:
     void checkSoftLimits(const machine::Axes& target, const Words& words) const;
     std::uint32_t motionColumn(const Words& words) const;
     [[noreturn]] static void invalid(const macro::WordValue& w, std::string why);
+    void stopForOperator(OperatorStop::Kind kind, std::string what);
     bool compensating() const;
     machine::Axes basePosition() const;
     double compensationRadius() const;
@@ -121,7 +126,8 @@ private:
     machine::MachineInterface& machine_;
     ModalState state_;
     Words words_;
-    std::vector<std::string> notices_;
+    std::optional<OperatorStop> stop_;
+    const gcode::Block* block_ = nullptr; // the block being executed
     std::map<int, machine::Axes> referencePoints_;
     CutterCompensation compensation_;
     Probe probe_;
