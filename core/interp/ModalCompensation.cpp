@@ -81,7 +81,7 @@ void ModalInterpreter::emitToolPath(const std::vector<PathSegment>& segments) {
             if (pendingMode_ == 0) {
                 machine_.rapid(end);
             } else {
-                machine_.feed(end, state_.feed);
+                machine_.feed(end, feedRate(0));
             }
             continue;
         }
@@ -96,7 +96,7 @@ void ModalInterpreter::emitToolPath(const std::vector<PathSegment>& segments) {
         if (auto* error = std::get_if<machine::ArcError>(&arc)) {
             throw MacroError{AlarmCode::InvalidWord, "compensated arc: " + error->message, 0};
         }
-        machine_.arc(std::get<machine::Arc>(arc), state_.feed);
+        machine_.arc(std::get<machine::Arc>(arc), feedRate(0));
     }
 }
 

@@ -110,6 +110,7 @@ private:
     void moveTo(const machine::Axes& target, const Words& words);
     void checkSoftLimits(const machine::Axes& target, const Words& words) const;
     std::uint32_t motionColumn(const Words& words) const;
+    double feedRate(std::uint32_t column) const; // mm/min, from F and (G95) the spindle speed
     [[noreturn]] static void invalid(const macro::WordValue& w, std::string why);
     void stopForOperator(OperatorStop::Kind kind, std::string what);
     bool compensating() const;

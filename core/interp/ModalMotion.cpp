@@ -50,6 +50,20 @@ machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordi
     return target;
 }
 
+// G95 (FANUC): F is mm per spindle revolution, so the feed follows the spindle's speed. The M350
+// ignores G94/G95 (its manual: use M29 for tapping), so its F stays mm/min.
+double ModalInterpreter::feedRate(std::uint32_t column) const {
+    if (state_.group(5) != 95 || dialect_.id == gcode::DialectId::M350) {
+        return state_.feed;
+    }
+    double rpm = machine_.spindleRpm();
+    if (rpm <= 0.0) {
+        throw MacroError{AlarmCode::InvalidWord,
+                         "G95 feed per revolution with the spindle stopped: start it with M03/M04 S..", column};
+    }
+    return state_.feed * rpm;
+}
+
 std::uint32_t ModalInterpreter::motionColumn(const Words& words) const {
     if (!words.g.empty()) {
         return words.g.front().column;
@@ -98,7 +112,7 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
         machine::Axes tool = target;
         tool.head<2>() = machine_.position().head<2>();
         checkSoftLimits(tool, words);
-        state_.group(1) == 0 ? machine_.rapid(tool) : machine_.feed(tool, state_.feed);
+        state_.group(1) == 0 ? machine_.rapid(tool) : machine_.feed(tool, feedRate(motionColumn(words)));
         return;
     }
     checkSoftLimits(target, words);
@@ -108,7 +122,7 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
         if (state_.feed <= 0) {
             throw MacroError{AlarmCode::InvalidWord, "G01 with no feed: give F", motionColumn(words)};
         }
-        machine_.feed(target, state_.feed);
+        machine_.feed(target, feedRate(motionColumn(words)));
         return;
     default: break;
     }
@@ -137,7 +151,7 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
     if (auto* error = std::get_if<machine::ArcError>(&arc)) {
         throw MacroError{AlarmCode::InvalidWord, error->message, motionColumn(words)};
     }
-    machine_.arc(std::get<machine::Arc>(arc), state_.feed);
+    machine_.arc(std::get<machine::Arc>(arc), feedRate(motionColumn(words)));
 }
 
 void ModalInterpreter::moveAxes(const Words& words) {
@@ -157,7 +171,7 @@ void ModalInterpreter::moveAxes(const Words& words) {
         machine::Axes target = targetFor(words, true);
         checkSoftLimits(target, words);
         if (words.find('F')) {
-            machine_.feed(target, state_.feed);
+            machine_.feed(target, feedRate(words.find('F')->column));
         } else {
             machine_.rapid(target);
         }
@@ -213,7 +227,7 @@ void ModalInterpreter::probeMove(const Words& words) {
             probe_.axes |= 1u << axis;
         }
     }
-    machine::ProbeResult result = machine_.probe(target, state_.feed, port, level);
+    machine::ProbeResult result = machine_.probe(target, feedRate(g31.column), port, level);
     probe_.triggered = result.triggered;
     probe_.position = result.position;
     if (!result.triggered) {
