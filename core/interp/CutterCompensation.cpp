@@ -54,6 +54,17 @@ std::optional<Vector2d> trimInside(const OffsetPiece& in, const OffsetPiece& out
     return nearest;
 }
 
+// The entry move, as LinuxCNC makes it: from where the tool stands to the radius beside the move's
+// own end; the corner with the next move is then joined like any other, on the entry's offset line
+// (an arc outside, a trim inside), so a diagonal entry leaves its mark on the profile as the
+// LinuxCNC manual warns.
+OffsetPiece entryPiece(const PathSegment& programmed, const Vector2d& toolStart, double signedRadius) {
+    OffsetPiece piece;
+    piece.seg = PathSegment::line(toolStart, offsetPoint(programmed, programmed.end, signedRadius));
+    piece.direction = tangentAt(programmed, programmed.start); // the carrying line: parallel, through the end
+    return piece;
+}
+
 } // namespace
 
 double CutterCompensation::signedRadius(double radius) const {
@@ -158,10 +169,10 @@ CutterCompensation::Result CutterCompensation::join(const PathSegment& programme
     const Vector2d nextStart = offsetPoint(programmed, programmed.start, signedRadius(radius));
     std::vector<PathSegment> out;
     Vector2d toolStart = nextStart;
-    if (prev.entry) {
-        appendLine(out, prev.toolStart, nextStart);
-    } else {
-        const OffsetPiece in = offsetPiece(prev.programmed, prev.toolStart, signedRadius(prev.radius));
+    {
+        const double sr = signedRadius(prev.radius);
+        const OffsetPiece in = prev.entry ? entryPiece(prev.programmed, prev.toolStart, sr)
+                                          : offsetPiece(prev.programmed, prev.toolStart, sr);
         const Vector2d tIn = tangentAt(prev.programmed, corner);
         const Vector2d tOut = tangentAt(programmed, programmed.start);
         const bool straightJoin =

@@ -77,7 +77,7 @@ private:
         PathSegment programmed;
         Eigen::Vector2d toolStart; // where the tool center starts this segment (already trimmed)
         double radius = 0.0;
-        bool entry = false; // the start-up move: a straight line to the next segment's offset start
+        bool entry = false; // the start-up move: from the uncompensated start to beside its end
     };
 
     Result enter(const PathSegment& programmed, CompensationSide side, double radius);

@@ -1,7 +1,9 @@
-// G41/G42 cutter radius compensation in the XY plane (G17): programmed moves go through the
-// CutterCompensation engine, which answers with tool-center segments one move later (it must see
-// the next move to shape the corner). Meanwhile the program's own position runs ahead of the
-// machine's, so targets are computed from the programmed position.
+// G41/G42 cutter radius compensation in the plane of G17 (XY), G18 (ZX) or G19 (YZ): programmed
+// moves go through the CutterCompensation engine, which answers with tool-center segments one move
+// later (it must see the next move to shape the corner). Meanwhile the program's own position runs
+// ahead of the machine's, so targets are computed from the programmed position. The engine works
+// in 2-D (u, v); each plane names its axes so that u x v is the plane's normal (+Z, +Y, +X), which
+// keeps G2 clockwise and G41 on the left as seen from that normal.
 #include "core/interp/ModalInterpreter.h"
 
 #include "core/machine/ArcGeometry.h"
@@ -22,28 +24,46 @@ double ModalInterpreter::compensationRadius() const {
     return toolOffsets_.get(state_.radiusOffset) * axisUnit(0);
 }
 
-void ModalInterpreter::compensatedMove(const machine::Axes& target, const Words& words) {
-    if (state_.group(2) != 17) {
-        throw MacroError{AlarmCode::InvalidWord, "cutter compensation (G41/G42) works in the G17 XY plane only",
-                         motionColumn(words)};
+ModalInterpreter::PlaneAxes ModalInterpreter::planeAxes(int planeCode) {
+    switch (planeCode) {
+    case 18: return {2, 0, machine::Plane::ZX};
+    case 19: return {1, 2, machine::Plane::YZ};
+    default: return {0, 1, machine::Plane::XY};
     }
+}
+
+Eigen::Vector2d ModalInterpreter::inPlane(const machine::Axes& p) const {
+    return {p(compensationPlane_.u), p(compensationPlane_.v)};
+}
+
+void ModalInterpreter::compensatedMove(const machine::Axes& target, const Words& words) {
     if (!compensating()) {
         programmed_ = machine_.position(); // entering: the program and the machine agree
+        compensationPlane_ = planeAxes(state_.group(2));
+    } else if (planeAxes(state_.group(2)).plane != compensationPlane_.plane) {
+        throw MacroError{AlarmCode::InvalidWord, "the plane changed under cutter compensation: cancel it with G40 first",
+                         motionColumn(words)};
     }
+    const int u = compensationPlane_.u;
+    const int v = compensationPlane_.v;
     machine::Axes offset = workOffset();
-    Eigen::Vector2d from = (programmed_ - offset).head<2>();
-    Eigen::Vector2d to = (target - offset).head<2>();
+    Eigen::Vector2d from = inPlane(programmed_ - offset);
+    Eigen::Vector2d to = inPlane(target - offset);
     PathSegment segment = PathSegment::line(from, to);
     if (state_.group(1) == 2 || state_.group(1) == 3) {
         Eigen::Vector2d center = from;
-        if (const macro::WordValue* i = words.find('I')) {
-            center.x() += i->value * axisUnit(0);
+        static constexpr std::array<char, 3> kCenterLetter{'I', 'J', 'K'};
+        if (const macro::WordValue* c = words.find(kCenterLetter[static_cast<std::size_t>(u)])) {
+            center.x() += c->value * axisUnit(u);
         }
-        if (const macro::WordValue* j = words.find('J')) {
-            center.y() += j->value * axisUnit(1);
+        if (const macro::WordValue* c = words.find(kCenterLetter[static_cast<std::size_t>(v)])) {
+            center.y() += c->value * axisUnit(v);
         }
         if (words.find('R')) {
-            throw MacroError{AlarmCode::InvalidWord, "write arcs under cutter compensation with I and J, not R",
+            throw MacroError{AlarmCode::InvalidWord,
+                             std::string("write arcs under cutter compensation with ") +
+                                 kCenterLetter[static_cast<std::size_t>(u)] + " and " +
+                                 kCenterLetter[static_cast<std::size_t>(v)] + ", not R",
                              motionColumn(words)};
         }
         segment = PathSegment::arc(from, to, center, state_.group(1) == 2);
@@ -70,12 +90,16 @@ void ModalInterpreter::flushCompensation() {
     }
 }
 
-// Tool-center segments are in work XY; Z, A and B go to where the move that produced them ends.
+// Tool-center segments are in the plane's work coordinates; the other axes go to where the move
+// that produced them ends.
 void ModalInterpreter::emitToolPath(const std::vector<PathSegment>& segments) {
     machine::Axes offset = workOffset();
+    const int u = compensationPlane_.u;
+    const int v = compensationPlane_.v;
     for (const PathSegment& s : segments) {
         machine::Axes end = pendingHeight_;
-        end.head<2>() = s.end + offset.head<2>();
+        end(u) = s.end.x() + offset(u);
+        end(v) = s.end.y() + offset(v);
         checkSoftLimits(end, Words{});
         if (s.kind == PathSegment::Kind::Line) {
             if (pendingMode_ == 0) {
@@ -88,10 +112,12 @@ void ModalInterpreter::emitToolPath(const std::vector<PathSegment>& segments) {
         machine::ArcSpec spec;
         spec.start = machine_.position();
         spec.end = end;
-        spec.plane = machine::Plane::XY;
+        spec.plane = compensationPlane_.plane;
         spec.clockwise = s.clockwise;
-        Eigen::Vector2d center = s.center + offset.head<2>() - spec.start.head<2>();
-        spec.centerOffset = Eigen::Vector3d(center.x(), center.y(), 0.0);
+        Eigen::Vector3d center = Eigen::Vector3d::Zero();
+        center(u) = s.center.x() + offset(u) - spec.start(u);
+        center(v) = s.center.y() + offset(v) - spec.start(v);
+        spec.centerOffset = center;
         auto arc = machine::makeArc(spec);
         if (auto* error = std::get_if<machine::ArcError>(&arc)) {
             throw MacroError{AlarmCode::InvalidWord, "compensated arc: " + error->message, 0};

@@ -6,6 +6,7 @@
 #include "core/interp/ModalState.h"
 #include "core/interp/ToolOffsets.h"
 #include "core/interp/WorkOffsets.h"
+#include "core/machine/ArcGeometry.h"
 #include "core/machine/MachineInterface.h"
 #include "core/macro/BlockSink.h"
 
@@ -114,6 +115,14 @@ private:
     [[noreturn]] static void invalid(const macro::WordValue& w, std::string why);
     void stopForOperator(OperatorStop::Kind kind, std::string what);
     bool compensating() const;
+    // The compensation plane's axes (u, v), u x v along its normal.
+    struct PlaneAxes {
+        int u = 0;
+        int v = 1;
+        machine::Plane plane = machine::Plane::XY;
+    };
+    static PlaneAxes planeAxes(int planeCode);
+    Eigen::Vector2d inPlane(const machine::Axes& p) const;
     machine::Axes basePosition() const;
     double compensationRadius() const;
     void compensatedMove(const machine::Axes& target, const Words& words);
@@ -135,6 +144,7 @@ private:
     machine::Axes programmed_ = machine::Axes::Zero();    // where the program is, ahead of the machine
     machine::Axes pendingHeight_ = machine::Axes::Zero(); // Z, A, B of the move being compensated
     int pendingMode_ = 1;                                  // its motion mode (0 rapid, 1 feed)
+    PlaneAxes compensationPlane_;                          // fixed from G41/G42 entry to G40 exit
 };
 
 } // namespace m350::interp

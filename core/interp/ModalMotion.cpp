@@ -100,17 +100,21 @@ void ModalInterpreter::checkSoftLimits(const machine::Axes& target, const Words&
 
 void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
     if (compensating() || state_.group(7) != 40) {
-        bool sameXY = (target.head<2>() - basePosition().head<2>()).isZero(1e-12);
-        if (!sameXY || state_.group(7) == 40) {
+        const PlaneAxes plane = compensating() ? compensationPlane_ : planeAxes(state_.group(2));
+        machine::Axes base = basePosition();
+        bool samePlace = std::abs(target(plane.u) - base(plane.u)) < 1e-12 &&
+                         std::abs(target(plane.v) - base(plane.v)) < 1e-12;
+        if (!samePlace || state_.group(7) == 40) {
             compensatedMove(target, words);
             return;
         }
-        // A plunge or lift under compensation: the tool path so far is final, then Z moves alone
-        // where the tool stands.
+        // A plunge or lift under compensation (along the plane's normal): the tool path so far is
+        // final, then that axis moves alone where the tool stands.
         flushCompensation();
         programmed_ = target;
         machine::Axes tool = target;
-        tool.head<2>() = machine_.position().head<2>();
+        tool(plane.u) = machine_.position()(plane.u);
+        tool(plane.v) = machine_.position()(plane.v);
         checkSoftLimits(tool, words);
         state_.group(1) == 0 ? machine_.rapid(tool) : machine_.feed(tool, feedRate(motionColumn(words)));
         return;

@@ -101,9 +101,10 @@ std::vector<std::pair<PathSegment, Side>> square(Side side, double entryFromY) {
 
 TEST(CutterCompensation, SquarePocketCcwWithG41TrimsInsideCorners) {
     // Tool on the left of a CCW path is inside the square: every corner is an inside corner and the
-    // tool-center path is the 16 x 16 square 2 mm in from each side.
+    // tool-center path is the 16 x 16 square 2 mm in from each side. The entry (as LinuxCNC's) ends
+    // 2 mm to the left of its own line, on X12, trimmed where that meets the first side's offset.
     expectPath(run(square(Side::Left, 10), 2.0),
-               {L(10, 10, 10, 2), L(10, 2, 18, 2), L(18, 2, 18, 18), L(18, 18, 2, 18), L(2, 18, 2, 2),
+               {L(10, 10, 12, 2), L(12, 2, 18, 2), L(18, 2, 18, 18), L(18, 18, 2, 18), L(2, 18, 2, 2),
                 L(2, 2, 10, 2), L(10, 2, 10, 10)});
 }
 
@@ -111,8 +112,8 @@ TEST(CutterCompensation, EachFeedReturnsThePreviousSegmentUpToItsCorner) {
     CutterCompensation cc;
     expectPath(segments(cc.feed(L(10, 10, 10, 0), Side::Left, 2.0)), {});
     EXPECT_EQ(cc.side(), Side::Left);
-    expectPath(segments(cc.feed(L(10, 0, 20, 0), Side::Left, 2.0)), {L(10, 10, 10, 2)});
-    expectPath(segments(cc.feed(L(20, 0, 20, 20), Side::Left, 2.0)), {L(10, 2, 18, 2)});
+    expectPath(segments(cc.feed(L(10, 0, 20, 0), Side::Left, 2.0)), {L(10, 10, 12, 2)});
+    expectPath(segments(cc.feed(L(20, 0, 20, 20), Side::Left, 2.0)), {L(12, 2, 18, 2)});
     expectPath(segments(cc.feed(L(20, 20, 10, 10), Side::Off, 2.0)), {L(18, 2, 18, 20), L(18, 20, 10, 10)});
     EXPECT_EQ(cc.side(), Side::Off);
     EXPECT_FALSE(cc.hasPending());
@@ -122,7 +123,7 @@ TEST(CutterCompensation, SquareCcwWithG42GoesAroundOutsideCornersOnArcs) {
     // Tool on the right of a CCW path is outside: each corner gets a CCW quarter circle of radius 2
     // around the programmed corner.
     expectPath(run(square(Side::Right, -10), 2.0),
-               {L(10, -10, 10, -2), L(10, -2, 20, -2), A(20, -2, 22, 0, 20, 0, CCW), L(22, 0, 22, 20),
+               {L(10, -10, 12, -2), L(12, -2, 20, -2), A(20, -2, 22, 0, 20, 0, CCW), L(22, 0, 22, 20),
                 A(22, 20, 20, 22, 20, 20, CCW), L(20, 22, 0, 22), A(0, 22, -2, 20, 0, 20, CCW),
                 L(-2, 20, -2, 0), A(-2, 0, 0, -2, 0, 0, CCW), L(0, -2, 10, -2), L(10, -2, 10, -10)});
 }
@@ -134,11 +135,13 @@ TEST(CutterCompensation, G41OutsideCornerArcIsClockwise) {
         {L(-10, 0, 0, 2), L(0, 2, 10, 2), A(10, 2, 12, 0, 10, 0, CW), L(12, 0, 12, -10)});
 }
 
-TEST(CutterCompensation, EntryEndsPerpendicularToTheNextSegmentAndExitLeavesFromTheOffsetEnd) {
+TEST(CutterCompensation, EntryEndsBesideItsOwnEndAndExitLeavesFromTheOffsetEnd) {
     CutterCompensation cc;
-    // The entry runs diagonally, but the tool stops 2 mm to the left of the next segment's start.
+    // The entry runs diagonally and ends 2 mm to the left of its own end, as LinuxCNC's does; the
+    // turn onto the next segment is an outside corner, so an arc follows around the corner.
+    const double d = std::sqrt(2.0);
     expectPath(segments(cc.feed(L(-5, -5, 0, 0), Side::Left, 2.0)), {});
-    expectPath(segments(cc.feed(L(0, 0, 10, 0), Side::Left, 2.0)), {L(-5, -5, 0, 2)});
+    expectPath(segments(cc.feed(L(0, 0, 10, 0), Side::Left, 2.0)), {L(-5, -5, -d, d), A(-d, d, 0, 2, 0, 0, CW)});
     // G40 without motion: the pending segment ends square to its own end, compensation stays on.
     expectPath(cc.flush(), {L(0, 2, 10, 2)});
     EXPECT_EQ(cc.side(), Side::Left);
@@ -169,11 +172,12 @@ TEST(CutterCompensation, LineArcLineOffsetsTheArcRadius) {
                                                          {L(20, 20, 20, 30), Side::Off}};
     };
     // G41 on a CCW arc: the tool is toward the center, R10 - 2 = 8.
-    expectPath(run(profile(Side::Left), 2.0), {L(0, -10, 0, 2), L(0, 2, 10, 2), A(10, 2, 18, 10, 10, 10, CCW),
-                                               L(18, 10, 18, 20), L(18, 20, 20, 30)});
+    // (The entry, run +Y, ends left of its end at X-2 and turns the outside corner on an arc.)
+    expectPath(run(profile(Side::Left), 2.0), {L(0, -10, -2, 0), A(-2, 0, 0, 2, 0, 0, CW), L(0, 2, 10, 2),
+                                               A(10, 2, 18, 10, 10, 10, CCW), L(18, 10, 18, 20), L(18, 20, 20, 30)});
     // G42 on a CCW arc: away from the center, R10 + 2 = 12.
     expectPath(run(profile(Side::Right), 2.0),
-               {L(0, -10, 0, -2), L(0, -2, 10, -2), A(10, -2, 22, 10, 10, 10, CCW), L(22, 10, 22, 20),
+               {L(0, -10, 2, -2), L(2, -2, 10, -2), A(10, -2, 22, 10, 10, 10, CCW), L(22, 10, 22, 20),
                 L(22, 20, 20, 30)});
 }
 
@@ -195,7 +199,7 @@ TEST(CutterCompensation, CollinearContinuationHasNoCorner) {
     expectPath(
         run({{L(0, -10, 0, 0), Side::Left}, {L(0, 0, 10, 0), Side::Left}, {L(10, 0, 20, 0), Side::Left}},
             2.0),
-        {L(0, -10, 0, 2), L(0, 2, 10, 2), L(10, 2, 20, 2)});
+        {L(0, -10, -2, 0), A(-2, 0, 0, 2, 0, 0, CW), L(0, 2, 10, 2), L(10, 2, 20, 2)});
 }
 
 TEST(CutterCompensation, ReversalGoesAroundTheEndOnAHalfCircle) {
@@ -209,7 +213,8 @@ TEST(CutterCompensation, FullCircleKeepsItsCenter) {
                     {A(10, 0, 10, 0, 0, 0, CCW), Side::Left},
                     {L(10, 0, 0, 0), Side::Off}},
                    2.0),
-               {L(0, 0, 8, 0), A(8, 0, 8, 0, 0, 0, CCW), L(8, 0, 0, 0)});
+               // the entry's offset (Y2) meets the R8 circle at X sqrt(60): an inside corner
+               {L(0, 0, std::sqrt(60.0), 2), A(std::sqrt(60.0), 2, 8, 0, 0, 0, CCW), L(8, 0, 0, 0)});
 }
 
 TEST(CutterCompensation, InsideCornerWithTooShortSegmentIsAGouge) {
@@ -245,7 +250,7 @@ TEST(CutterCompensation, ArcSmallerThanTheToolOnTheInsideIsAGouge) {
                     {L(0, 0, 10, 0), Side::Right},
                     {A(10, 0, 10, 6, 10, 3, CCW), Side::Right}},
                    5.0),
-               {L(0, 10, 0, -5), L(0, -5, 10, -5), A(10, -5, 10, 11, 10, 3, CCW)});
+               {L(0, 10, -5, 0), A(-5, 0, 0, -5, 0, 0, CCW), L(0, -5, 10, -5), A(10, -5, 10, 11, 10, 3, CCW)});
 }
 
 TEST(CutterCompensation, NearlyTangentInsideTransitionIsTrimmedNotRejected) {
@@ -287,8 +292,8 @@ TEST(CutterCompensation, NegativeRadiusSwapsTheSide) {
 TEST(CutterCompensation, ResumingAfterFlushAtAnOutsideCornerInsertsTheCornerArc) {
     CutterCompensation cc;
     segments(cc.feed(L(0, -10, 0, 0), Side::Right, 2.0));
-    segments(cc.feed(L(0, 0, 10, 0), Side::Right, 2.0));
-    expectPath(cc.flush(), {L(0, -2, 10, -2)}); // e.g. a Z move at the corner
+    segments(cc.feed(L(0, 0, 10, 0), Side::Right, 2.0)); // the entry ends trimmed at X2 Y-2
+    expectPath(cc.flush(), {L(2, -2, 10, -2)}); // e.g. a Z move at the corner
     expectPath(segments(cc.feed(L(10, 0, 10, 10), Side::Right, 2.0)), {A(10, -2, 12, 0, 10, 0, CCW)});
     expectPath(cc.flush(), {L(12, 0, 12, 10)});
 }
