@@ -65,6 +65,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE");
         cmd->add_option("--max-sim-time", o.settings.maxSimTime, "simulated seconds before a runaway stops")
             ->check(CLI::PositiveNumber);
+        cmd->add_option("--sensor-timeout", o.settings.sensorTimeout,
+                        "simulated seconds a macro may wait for a sensor input before an alarm (default 10)")
+            ->check(CLI::PositiveNumber);
     };
     CLI::App* run = app.add_subcommand("run", "run a program to its end");
     run->add_option("PROGRAM", o.program, "program file (.nc)")->required();

@@ -21,6 +21,7 @@ std::string_view alarmKey(AlarmCode code) {
     case AlarmCode::NotHomed: return "not_homed";
     case AlarmCode::SoftLimit: return "soft_limit";
     case AlarmCode::SkipNotTriggered: return "skip_not_triggered";
+    case AlarmCode::SensorTimeout: return "sensor_timeout";
     case AlarmCode::OperatorReset: return "reset";
     case AlarmCode::EmergencyStop: return "emergency_stop";
     }

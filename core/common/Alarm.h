@@ -26,6 +26,7 @@ enum class AlarmCode : std::uint8_t {
     NotHomed,
     SoftLimit,
     SkipNotTriggered,     // G31 ended its move without the signal
+    SensorTimeout,        // a macro waited longer than the sensor watchdog for an input
     OperatorReset,
     EmergencyStop,
 };

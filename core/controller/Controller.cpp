@@ -214,6 +214,7 @@ RunReport Controller::snapshot() const {
 
 bool Controller::start() {
     alarm_.reset();
+    sensorWatch_.clear();
     if (!executor_) {
         state_ = RunState::Idle;
         return false;

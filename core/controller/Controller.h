@@ -3,6 +3,7 @@
 #include "core/config/MachineConfig.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
+#include "core/controller/SensorWatch.h"
 #include "core/controller/TraceWriter.h"
 #include "core/gcode/Program.h"
 #include "core/interp/ModalInterpreter.h"
@@ -54,6 +55,17 @@ public:
     // M350's G04 P-1): "M00 program stop (main.nc:12)"; empty for 暂停 or when running. resume()
     // is START. run() presses START by itself and notes it in the messages.
     const std::string& programStop() const { return programStop_; }
+    // A macro waiting for a sensor (the same line reading an input unchanged while time passes):
+    // which input, which level it waits for, since when and where. The wait ends in an alarm after
+    // RunSettings::sensorTimeout.
+    struct SensorWait {
+        std::string input;   // "IN11 (tool released)"
+        int awaitedLevel = 1;
+        double seconds = 0.0; // waited so far
+        std::string file;
+        std::uint32_t line = 0;
+    };
+    std::optional<SensorWait> sensorWait() const;
     double displayTime() const { return displayTime_; }
     machine::Axes displayPosition() const { return machine_.positionAt(displayTime_); }
     RunReport snapshot() const;
@@ -100,6 +112,7 @@ private:
     void postMessage(std::string text);
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
     bool optionalStopOn();
+    void watchInput(int pin, int level);
 
     config::MachineConfig config_;
     RunSettings settings_;
@@ -123,6 +136,7 @@ private:
     machine::SimulatedMachine::Remainder remainder_; // what a hold cut short
     double liftedBy_ = 0.0;                          // Z lift of the hold (param 91, 70)
     std::string programStop_;                        // see programStop()
+    SensorWatch sensorWatch_;
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 };
 

@@ -42,7 +42,11 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         bool moved = (probe.axes & (1u << info.index)) != 0;
         return Value::of(moved && probe.triggered ? 2 : 0);
     }
-    case VariableKind::Input: return Value::of(machine_.input(info.index));
+    case VariableKind::Input: {
+        int level = machine_.input(info.index);
+        watchInput(info.index, level);
+        return Value::of(level);
+    }
     case VariableKind::Output: return Value::of(machine_.output(info.index));
     case VariableKind::Homed: return Value::of(homed_[static_cast<std::size_t>(info.index)]);
     case VariableKind::Dialog: return Value::of(dialogAnswer_);

@@ -92,6 +92,7 @@ void Controller::reset() {
     spindleBeforeHold_.reset();
     alarm_.reset();
     programStop_.clear();
+    sensorWatch_.clear();
     state_ = RunState::Idle; // start() runs the program again from its beginning
     if (trace_) {
         trace_->runState(displayTime_, "reset");

@@ -10,6 +10,9 @@ namespace m350::controller {
 struct RunSettings {
     double maxSimTime = 3600.0; // virtual seconds before a runaway program is stopped
     double blockTime = 1e-4;    // virtual seconds one block costs to prepare (macro statements too)
+    // A macro line that keeps reading a sensor input unchanged for this long raises an alarm naming
+    // the input, instead of waiting forever (the real machine would hang there).
+    double sensorTimeout = 10.0;
     bool homed = true;
     bool optionalStop = false;  // the M01 switch (on the M350 #1500 = 1 turns it on too)
     std::optional<int> tool;    // tool in the spindle at start

@@ -79,6 +79,12 @@ void TraceWriter::programStop(double time, std::string_view reason, const TraceS
     out_ << j.dump() << '\n';
 }
 
+void TraceWriter::sensorWait(double time, std::string_view port, int level, const TraceSource& source) {
+    nlohmann::json j{{"t", time}, {"type", "wait"}, {"port", std::string(port)}, {"level", level}};
+    withSource(j, source);
+    out_ << j.dump() << '\n';
+}
+
 void TraceWriter::alarm(double time, const Alarm& alarm) {
     nlohmann::json j{{"t", time},          {"type", "alarm"},      {"code", std::string(alarmKey(alarm.code))},
                      {"message", alarm.message}, {"file", alarm.file}, {"line", alarm.line},

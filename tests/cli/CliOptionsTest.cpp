@@ -1,5 +1,5 @@
 // m350-sim's options: --print, --var, --param, --input, --tool, --unhomed, mdi, --max-sim-time,
-// --trace, and what they do to a run.
+// --trace, --sensor-timeout, and what they do to a run.
 #include "tests/cli/CliFixture.h"
 
 #include <gtest/gtest.h>
@@ -146,6 +146,20 @@ TEST_F(CliTest, ParameterOutsideThePanelRangeIsUsedWithAWarning) {
               std::string::npos)
         << r.err;
     EXPECT_DOUBLE_EQ(json::parse(r.out)["vars"]["1301"].get<double>(), 25.0);
+}
+
+} // namespace m350::clitest
+
+namespace m350::clitest {
+
+TEST_F(CliTest, SensorTimeoutStopsAWaitForAStuckInput) {
+    // T2 on the default machine: O20000 waits for IN11 (tool released), held at 0
+    ProcessResult r = sim({"mdi", "T2", "--input", "IN11=0", "--sensor-timeout", "2"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm);
+    json j = output(r);
+    EXPECT_EQ(j["alarm"].value("code", ""), "sensor_timeout");
+    EXPECT_EQ(j["alarm"].value("message", ""), "IN11 (tool released) never became 1: waited 2.0 s at slib-g.nc:43");
+    EXPECT_EQ(sim({"mdi", "T2", "--sensor-timeout", "0"}).exitStatus, kExitUsage);
 }
 
 } // namespace m350::clitest

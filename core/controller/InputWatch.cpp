@@ -1,0 +1,69 @@
+// The sensor-wait watchdog: a macro that keeps reading an input that never changes is waiting for a
+// sensor. The real controller would hang there; the simulator says which input, and after
+// RunSettings::sensorTimeout of virtual time stops with an alarm naming it.
+#include "core/controller/Controller.h"
+
+#include "core/config/IoPorts.h"
+#include "core/macro/MacroError.h"
+
+#include <cstdio>
+
+namespace m350::controller {
+
+namespace {
+
+// The operator's own inputs (extern keys, START, PAUSE, E-stop): waiting for a person is no fault.
+bool operatorInput(const std::optional<config::PortAssignment>& a) {
+    return a && a->function->parameter >= 581 && a->function->parameter <= 605;
+}
+
+std::string seconds(double s) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.1f", s);
+    return buffer;
+}
+
+} // namespace
+
+void Controller::watchInput(int pin, int level) {
+    if (!executor_) {
+        return;
+    }
+    auto where = executor_->location();
+    if (!where || operatorInput(config::inputOnPin(config_.parameters, pin))) {
+        return;
+    }
+    switch (sensorWatch_.read(pin, level, machine_.time(), *where, settings_.sensorTimeout)) {
+    case SensorWatch::Verdict::Reading:
+    case SensorWatch::Verdict::Waiting: return;
+    case SensorWatch::Verdict::WaitBegins:
+        if (trace_) {
+            trace_->sensorWait(machine_.time(), config::inputName(pin), 1 - level,
+                               {program_.fileName(*where), where->line});
+        }
+        return;
+    case SensorWatch::Verdict::TimedOut: {
+        std::string what = config::describeInput(config_.parameters, pin) + " never became " +
+                           std::to_string(1 - level) + ": waited " + seconds(settings_.sensorTimeout) + " s at " +
+                           program_.fileName(*where) + ":" + std::to_string(where->line);
+        sensorWatch_.clear();
+        throw macro::MacroError{AlarmCode::SensorTimeout, std::move(what), 0};
+    }
+    }
+}
+
+std::optional<Controller::SensorWait> Controller::sensorWait() const {
+    auto wait = sensorWatch_.current();
+    if (!wait || state_ != RunState::Running) {
+        return std::nullopt;
+    }
+    SensorWait out;
+    out.input = config::describeInput(config_.parameters, wait->pin);
+    out.awaitedLevel = 1 - wait->level;
+    out.seconds = machine_.time() - wait->since;
+    out.file = program_.fileName(wait->where);
+    out.line = wait->where.line;
+    return out;
+}
+
+} // namespace m350::controller

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "core/gcode/Diagnostic.h"
+
+#include <optional>
+#include <string>
+
+namespace m350::controller {
+
+// Notices a macro waiting for a sensor: the same program line reading the same input at the same
+// level while virtual time passes (a WHILE loop around #[1520+k-1], an M301 wait). The controller
+// reports the wait (status, trace) and raises an alarm once it has lasted the watchdog's time.
+class SensorWatch {
+public:
+    struct Wait {
+        int pin = 0;
+        int level = 0;          // what the input keeps reading; the macro waits for the other level
+        double since = 0.0;     // virtual time of the first read
+        gcode::SourceLocation where;
+    };
+    enum class Verdict { Reading, WaitBegins, Waiting, TimedOut };
+
+    // One read of input `pin` at `now` by the line at `where`.
+    Verdict read(int pin, int level, double now, const gcode::SourceLocation& where, double timeout);
+    void clear() { wait_.reset(); announced_ = false; }
+
+    // The wait under way: a read repeated at least once with time passing.
+    std::optional<Wait> current() const { return announced_ ? wait_ : std::nullopt; }
+
+private:
+    std::optional<Wait> wait_;
+    bool announced_ = false;
+};
+
+} // namespace m350::controller
