@@ -80,6 +80,10 @@ public:
     // between the setter and the workpiece and every set tool then cuts at the same Z.
     void zeroWorkAxis(int axis);
 
+    // Fault injection for training: input `pin` (1-24) stuck, delayed or bouncing from now on;
+    // nullopt takes the fault off. `RunSettings::heldInputs` puts stuck faults on before a run.
+    void setInputFault(int pin, std::optional<machine::InputFault> fault) { machine_.setInputFault(pin, fault); }
+
     // X, Y and Z always; the 4th and 5th axes when their home switch is set.
     std::vector<int> homeableAxes() const;
     static constexpr const char* kBootHomingPrompt = "是否进行开机寻零操作?";

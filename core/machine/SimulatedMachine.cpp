@@ -190,6 +190,7 @@ void SimulatedMachine::setInput(int port, int level) {
         return;
     }
     current = level;
+    inputChangedAt_[static_cast<std::size_t>(port - 1)] = time_;
     MachineEvent event;
     event.type = MachineEvent::Type::Io;
     event.start = event.end = time_;
@@ -231,26 +232,52 @@ ProbeResult SimulatedMachine::probe(const Axes& target, double feed, int port, i
     return result;
 }
 
-int SimulatedMachine::input(int port) {
+SimulatedMachine::Signal SimulatedMachine::signalAt(int port, double t) const {
     auto index = static_cast<std::size_t>(port - 1);
-    if (forced_[index]) {
-        return *forced_[index];
-    }
     if (port == setter_.port && setter_.port != 0) {
-        return setterPressed(position_) ? setter_.activeLevel : 1 - setter_.activeLevel;
+        int level = setterPressed(positionAt(t)) ? setter_.activeLevel : 1 - setter_.activeLevel;
+        return {level, 1 - level, -1e300};
     }
     if (spindleSensor_.port == port) {
-        bool stopped = !spindleTurning();
-        return stopped ? spindleSensor_.activeLevel : 1 - spindleSensor_.activeLevel;
+        bool stopped = spindle_ == SpindleState::Stop && t >= spindleStopsAt_;
+        int level = stopped ? spindleSensor_.activeLevel : 1 - spindleSensor_.activeLevel;
+        return {level, 1 - level, stopped ? spindleStopsAt_ : -1e300};
     }
     for (const IoLink& link : links_) {
         if (link.input == port) {
             const OutputState& out = outputs_[static_cast<std::size_t>(link.output - 1)];
-            int level = time_ >= out.changedAt + link.delay ? out.level : out.previous;
-            return link.inverted ? 1 - level : level;
+            bool arrived = t >= out.changedAt + link.delay;
+            int level = arrived ? out.level : out.previous;
+            int previous = arrived ? out.previous : out.level;
+            if (link.inverted) {
+                level = 1 - level;
+                previous = 1 - previous;
+            }
+            return {level, previous, arrived ? out.changedAt + link.delay : -1e300};
         }
     }
-    return inputs_[index];
+    return {inputs_[index], 1 - inputs_[index], inputChangedAt_[index]};
+}
+
+int SimulatedMachine::input(int port) {
+    const auto& fault = faults_[static_cast<std::size_t>(port - 1)];
+    if (!fault) {
+        return signalAt(port, time_).level;
+    }
+    switch (fault->kind) {
+    case InputFault::Kind::Stuck: return fault->level;
+    case InputFault::Kind::Delayed: return signalAt(port, time_ - fault->seconds).level;
+    case InputFault::Kind::Bouncing: {
+        Signal s = signalAt(port, time_);
+        double since = time_ - s.changedAt;
+        if (since >= fault->seconds || fault->period <= 0.0) {
+            return s.level;
+        }
+        auto bounce = static_cast<long long>(since / fault->period);
+        return bounce % 2 == 0 ? s.level : s.previous;
+    }
+    }
+    return signalAt(port, time_).level;
 }
 
 } // namespace m350::machine

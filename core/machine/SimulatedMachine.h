@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/machine/InputFault.h"
 #include "core/machine/MachineInterface.h"
 #include "core/machine/MotionLimits.h"
 #include "core/machine/MotionProfile.h"
@@ -25,14 +26,20 @@ struct IoLink {
 // kept so positionAt() can show where the axes were at any moment of it.
 class SimulatedMachine : public MachineInterface {
 public:
-    explicit SimulatedMachine(MachineObserver* observer = nullptr) : observer_(observer) {}
+    explicit SimulatedMachine(MachineObserver* observer = nullptr) : observer_(observer) {
+        inputChangedAt_.fill(-1e300); // never changed
+    }
 
     void setLimits(const MotionLimits& limits) { limits_ = limits; }
     const MotionLimits& limits() const { return limits_; }
     void setSpindleStoppedSensor(const SpindleStoppedSensor& sensor) { spindleSensor_ = sensor; }
     void addLink(const IoLink& link) { links_.push_back(link); }
     // Holds an input at a level for the whole run (`m350-sim --input IN11=0`), whatever drives it.
-    void forceInput(int port, int level) { forced_[static_cast<std::size_t>(port - 1)] = level; }
+    void forceInput(int port, int level) { setInputFault(port, InputFault::stuck(level)); }
+    // Puts a fault on an input (stuck, delayed, bouncing), or takes it off (nullopt).
+    void setInputFault(int port, std::optional<InputFault> fault) {
+        faults_[static_cast<std::size_t>(port - 1)] = fault;
+    }
     // A sensor the simulated world drives (a home switch); traced as an io event on INnn.
     void setInput(int port, int level);
     // The level an input reads at power-on (a released switch), before anything happens.
@@ -114,7 +121,15 @@ private:
     std::optional<LastMove> lastMove_;
     std::array<OutputState, kOutputCount> outputs_{};
     std::array<int, kInputCount> inputs_{};
-    std::array<std::optional<int>, kInputCount> forced_{};
+    std::array<std::optional<InputFault>, kInputCount> faults_{};
+    std::array<double, kInputCount> inputChangedAt_{};
+    // An input's level at virtual time t as what drives it says, with its last change.
+    struct Signal {
+        int level = 0;
+        int previous = 0;
+        double changedAt = -1e300;
+    };
+    Signal signalAt(int port, double t) const;
     std::vector<IoLink> links_;
     SpindleStoppedSensor spindleSensor_;
     ToolSetter setter_;

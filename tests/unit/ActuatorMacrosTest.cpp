@@ -70,3 +70,22 @@ TEST(ActuatorMacros, AStuckSensorEndsInTheWatchdogAlarmInsideTheWait) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(ActuatorMacros, ASlowSensorDelaysTheWaitAndAVerySlowOneTripsTheWatchdog) {
+    for (double lateness : {3.0, 12.0}) {
+        ProgramRun r = loadProgram(bundledMachine(), lines({"M154", "M301", "M30"}));
+        ASSERT_TRUE(r.loaded);
+        r.controller->setInputFault(11, machine::InputFault::delayed(lateness));
+        r.report = r.controller->run();
+        if (lateness < 10.0) {
+            EXPECT_RUN_OK(r);
+            EXPECT_NEAR(r.report.simTime, 0.15 + lateness, 0.02);
+        } else {
+            EXPECT_EQ(r.report.alarm->code, AlarmCode::SensorTimeout) << r.alarmText();
+        }
+    }
+}
+
+} // namespace

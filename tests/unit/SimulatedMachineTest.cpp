@@ -102,3 +102,51 @@ TEST(SimulatedMachine, MoveEventsCarryStartAndEndTimes) {
 }
 
 } // namespace
+
+namespace {
+
+// The level input IN11 reads at virtual time t (the machine's clock moved there by dwells).
+int readAt(SimulatedMachine& m, double t) {
+    m.dwell(t - m.time());
+    return m.input(11);
+}
+
+TEST(SimulatedMachine, ADelayedInputShowsEveryChangeLate) {
+    SimulatedMachine m;
+    m.addLink({1, 11, 0.15, false});
+    m.setInputFault(11, InputFault::delayed(2.0));
+    m.setOutput(1, 1);
+    EXPECT_EQ(readAt(m, 0.2), 0);  // the cylinder is out, the sensor does not say so yet
+    EXPECT_EQ(readAt(m, 2.14), 0);
+    EXPECT_EQ(readAt(m, 2.16), 1); // 0.15 s + 2 s late
+    m.setInputFault(11, std::nullopt);
+    EXPECT_EQ(m.input(11), 1);
+}
+
+TEST(SimulatedMachine, ABouncingInputChattersAfterEachChangeThenSettles) {
+    SimulatedMachine m;
+    m.addLink({1, 11, 0.15, false});
+    m.setInputFault(11, InputFault::bouncing(0.05, 0.002));
+    m.setOutput(1, 1);
+    EXPECT_EQ(readAt(m, 0.1), 0);    // before the change: steady
+    EXPECT_EQ(readAt(m, 0.1505), 1); // first bounce period: the new level
+    EXPECT_EQ(readAt(m, 0.1525), 0); // second: back to the old one
+    EXPECT_EQ(readAt(m, 0.1545), 1);
+    EXPECT_EQ(readAt(m, 0.21), 1);   // settled after 50 ms
+    m.setOutput(1, 0);               // and again on the way back
+    EXPECT_EQ(readAt(m, 0.3605 + 0.0), 0);
+    EXPECT_EQ(readAt(m, 0.3625), 1);
+    EXPECT_EQ(readAt(m, 0.5), 0);
+}
+
+TEST(SimulatedMachine, AStuckInputIgnoresWhatDrivesIt) {
+    SimulatedMachine m;
+    m.addLink({1, 11, 0.15, false});
+    m.setInputFault(11, InputFault::stuck(1));
+    EXPECT_EQ(m.input(11), 1);
+    m.setOutput(1, 1);
+    m.setOutput(1, 0);
+    EXPECT_EQ(readAt(m, 1.0), 1);
+}
+
+} // namespace
