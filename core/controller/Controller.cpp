@@ -1,4 +1,5 @@
 #include "core/controller/Controller.h"
+#include "core/config/IoPorts.h"
 #include "core/common/Numeric.h"
 
 #include "core/config/ParameterNumbers.h"
@@ -178,11 +179,14 @@ void Controller::postMessage(std::string text) {
 }
 
 // Alarms stop motion and drive every output to its safe (off) state, as the real controller does.
+// An output's safe state is its function's inactive level (tool clamped, magazine in, cover
+// closed); an output with no function is switched off.
 void Controller::enterSafeState() {
     machine_.spindle(machine::SpindleState::Stop, 0.0);
     machine_.coolant(false);
     for (int port = 1; port <= machine::kOutputCount; ++port) {
-        machine_.setOutput(port, 0);
+        auto function = config::outputOnPin(config_.parameters, port);
+        machine_.setOutput(port, function ? 1 - function->activeLevel : 0);
     }
 }
 

@@ -89,3 +89,16 @@ TEST(ActuatorMacros, ASlowSensorDelaysTheWaitAndAVerySlowOneTripsTheWatchdog) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(ActuatorMacros, AnAlarmDrivesEveryOutputToItsInactiveLevel) {
+    auto cfg = bundledMachine();
+    cfg.parameters.set(752, 0); // release valve active low: clamped (safe) is 1
+    ProgramRun r = runProgram(cfg, lines({"M154", "#1555 = 1", "#3 = 1/0", "M30"}));
+    EXPECT_EQ(r.report.alarm->code, AlarmCode::DivisionByZero);
+    EXPECT_EQ(r.report.outputs[0], 1); // OUT01 back to clamp
+    EXPECT_EQ(r.report.outputs[3], 0); // OUT04, no function: off
+}
+
+} // namespace
