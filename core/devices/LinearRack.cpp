@@ -1,0 +1,221 @@
+#include "core/devices/LinearRack.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace m350::devices {
+
+using Eigen::Vector3d;
+
+namespace {
+
+constexpr double kStill = 1e-6; // an axis that moves less than this did not move
+
+std::string at(const Vector3d& p) {
+    char buffer[96];
+    std::snprintf(buffer, sizeof buffer, "X%.3f Y%.3f Z%.3f", p.x(), p.y(), p.z());
+    return buffer;
+}
+
+std::string tool(int t) {
+    return "T" + std::to_string(t);
+}
+
+std::string pocket(int k) {
+    return "pocket " + std::to_string(k);
+}
+
+} // namespace
+
+LinearRack::LinearRack(Geometry geometry, std::vector<int> pocketTools, int spindleTool)
+    : geometry_(std::move(geometry)), pockets_(std::move(pocketTools)), spindleTool_(spindleTool) {
+    pockets_.resize(geometry_.pockets.size(), 0);
+}
+
+LinearRack::Box LinearRack::region(int k) const {
+    const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(k - 1)];
+    const double t = geometry_.tolerance;
+    Box b{p - Vector3d::Constant(t), p + Vector3d::Constant(t)};
+    if (geometry_.loading == Loading::Top) {
+        b.high.z() = p.z() + geometry_.forkDepth;
+    } else if (geometry_.openingY > 0) {
+        b.high.y() = p.y() + geometry_.forkDepth;
+    } else {
+        b.low.y() = p.y() - geometry_.forkDepth;
+    }
+    return b;
+}
+
+namespace {
+
+// Over a tool standing in its pocket: where an empty nose reaches down onto its pull stud, and
+// where anything moving sideways hits it.
+LinearRack::Box column(const Vector3d& p, double tolerance, double height) {
+    return {p - Vector3d::Constant(tolerance), p + Vector3d(tolerance, tolerance, height)};
+}
+
+} // namespace
+
+LinearRack::Box LinearRack::zone() const {
+    Box z{Vector3d::Constant(1e300), Vector3d::Constant(-1e300)};
+    for (int k = 1; k <= pocketCount(); ++k) {
+        Box r = region(k);
+        z.low = z.low.cwiseMin(r.low);
+        z.high = z.high.cwiseMax(r.high);
+    }
+    z.high.z() = std::max(z.high.z(), z.low.z() + geometry_.zoneAbove);
+    return z;
+}
+
+bool LinearRack::inside(const Box& box, const Vector3d& p) {
+    return (p.array() >= box.low.array() - kStill).all() && (p.array() <= box.high.array() + kStill).all();
+}
+
+// Whether the straight move passes through the box (slab test).
+bool LinearRack::crosses(const Box& box, const Vector3d& from, const Vector3d& to) {
+    double enter = 0.0;
+    double leave = 1.0;
+    for (int i = 0; i < 3; ++i) {
+        double d = to(i) - from(i);
+        if (std::abs(d) < kStill) {
+            if (from(i) < box.low(i) - kStill || from(i) > box.high(i) + kStill) {
+                return false;
+            }
+            continue;
+        }
+        double t1 = (box.low(i) - from(i)) / d;
+        double t2 = (box.high(i) - from(i)) / d;
+        enter = std::max(enter, std::min(t1, t2));
+        leave = std::min(leave, std::max(t1, t2));
+    }
+    return enter <= leave;
+}
+
+bool LinearRack::alongEntry(const Vector3d& from, const Vector3d& to) const {
+    Vector3d d = (to - from).cwiseAbs();
+    return geometry_.loading == Loading::Top ? d.x() < kStill && d.y() < kStill : d.x() < kStill && d.z() < kStill;
+}
+
+int LinearRack::pocketAt(const Vector3d& p) const {
+    for (int k = 1; k <= pocketCount(); ++k) {
+        if (inside(region(k), p)) {
+            return k;
+        }
+    }
+    return 0;
+}
+
+std::optional<std::string> LinearRack::move(const Vector3d& from, const Vector3d& to, bool rapid,
+                                            bool spindleTurning) {
+    if ((to - from).norm() < kStill) {
+        return std::nullopt;
+    }
+    if (rapid && crosses(zone(), from, to)) {
+        return "rapid move through the magazine zone, from " + at(from) + " to " + at(to) +
+               ": move near the rack at feed (G01 / G53 ... F)";
+    }
+    return spindleTool_ != 0 ? moveHolding(from, to) : moveEmpty(from, to, spindleTurning);
+}
+
+std::optional<std::string> LinearRack::moveHolding(const Vector3d& from, const Vector3d& to) {
+    const int held = spindleTool_;
+    if (engaged_ != 0) {
+        const int k = engaged_;
+        if (!alongEntry(from, to)) {
+            const char* axis = std::abs(to.x() - from.x()) >= kStill ? "X" : std::abs(to.y() - from.y()) >= kStill ? "Y" : "Z";
+            return std::string("moved ") + axis + " while " + tool(held) + " was clamped in the fork of " + pocket(k) +
+                   ": the fork and the tool are wrecked at " + at(from);
+        }
+        if (!inside(region(k), to)) {
+            engaged_ = 0; // slid out of its fork with the tool
+        }
+        return std::nullopt;
+    }
+    for (int k = 1; k <= pocketCount(); ++k) {
+        const int standing = pockets_[static_cast<std::size_t>(k - 1)];
+        const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(k - 1)];
+        if (standing != 0 && (crosses(region(k), from, to) ||
+                              crosses(column(p, geometry_.tolerance, geometry_.forkDepth), from, to))) {
+            return tool(held) + " in the spindle ran into " + tool(standing) + " in " + pocket(k) + " (moving from " +
+                   at(from) + " to " + at(to) + ")";
+        }
+        if (standing == 0 && crosses(region(k), from, to)) {
+            if (!alongEntry(from, to)) {
+                return tool(held) + " in the spindle hit the fork of " + pocket(k) + ": a tool enters it along " +
+                       (geometry_.loading == Loading::Top ? "Z" : "Y") + " only (moving from " + at(from) + " to " +
+                       at(to) + ")";
+            }
+            if (inside(region(k), to)) {
+                engaged_ = k;
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> LinearRack::moveEmpty(const Vector3d& from, const Vector3d& to, bool spindleTurning) {
+    const bool vertical = std::abs(to.x() - from.x()) < kStill && std::abs(to.y() - from.y()) < kStill;
+    if (engaged_ != 0 && vertical) {
+        // the released nose rises off the tool it stood over (or goes back down onto it)
+        const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(engaged_ - 1)];
+        if (!inside(column(p, geometry_.tolerance, geometry_.forkDepth), to)) {
+            engaged_ = 0;
+        }
+        return std::nullopt;
+    }
+    engaged_ = 0;
+    for (int k = 1; k <= pocketCount(); ++k) {
+        const int standing = pockets_[static_cast<std::size_t>(k - 1)];
+        const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(k - 1)];
+        const Box over = column(p, geometry_.tolerance, geometry_.forkDepth);
+        if (standing == 0 || !crosses(over, from, to)) {
+            continue;
+        }
+        if (!vertical) {
+            return "the spindle nose ran into " + tool(standing) + " in " + pocket(k) + " (moving from " + at(from) +
+                   " to " + at(to) + ")";
+        }
+        if (spindleTurning) {
+            return "came down onto " + tool(standing) + " in " + pocket(k) +
+                   " with the spindle turning: stop it (M05) and wait for it (M300) first";
+        }
+        if (!released_) {
+            return "came down onto " + tool(standing) + " in " + pocket(k) +
+                   " with the drawbar clamped: release it (M154) before coming down";
+        }
+        if (to.z() <= p.z() + geometry_.tolerance) {
+            engaged_ = k; // seated over the pull stud
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> LinearRack::drawbar(bool released, const Vector3d& nose) {
+    if (released == released_) {
+        return std::nullopt;
+    }
+    released_ = released;
+    if (released) {
+        if (spindleTool_ == 0) {
+            return std::nullopt;
+        }
+        const int held = spindleTool_;
+        spindleTool_ = 0;
+        if (engaged_ != 0) {
+            pockets_[static_cast<std::size_t>(engaged_ - 1)] = held;
+            return std::nullopt;
+        }
+        dropped_.push_back(held);
+        return tool(held) + " dropped: the drawbar was released at " + at(nose) +
+               " with no pocket under the tool (it fell onto the table)";
+    }
+    if (spindleTool_ == 0 && engaged_ != 0) {
+        int& standing = pockets_[static_cast<std::size_t>(engaged_ - 1)];
+        spindleTool_ = standing;
+        standing = 0; // still in the fork until it slides out, but it is the spindle's now
+    }
+    return std::nullopt;
+}
+
+} // namespace m350::devices

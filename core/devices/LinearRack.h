@@ -1,0 +1,71 @@
+#pragma once
+
+#include "core/machine/MachineTypes.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace m350::devices {
+
+// A fixed linear rack (固定直排刀库): one fork per tool at fixed machine positions. What it knows
+// comes from signals and positions only: the spindle nose's moves, the drawbar's release output
+// and whether the spindle turns. It tracks where every tool is (spindle, pocket, dropped) and
+// answers each event with what real hardware would suffer, or nothing.
+//
+// A pocket's position is where the spindle nose stands when the tool it holds sits in the fork.
+// Side loading: the fork opens toward +Y or -Y and a held tool enters and leaves along Y; an empty
+// spindle comes down onto a tool from above. Top loading: both happen vertically.
+class LinearRack {
+public:
+    enum class Loading { Side, Top };
+    struct Geometry {
+        std::vector<Eigen::Vector3d> pockets; // machine X Y Z of pocket 1, 2, ...
+        Loading loading = Loading::Side;
+        double openingY = 1.0;   // side loading: the fork opens toward +Y (1) or -Y (-1)
+        double forkDepth = 30.0; // how far along its way in a held tool is engaged in a fork
+        double tolerance = 1.0;  // how far off a pocket's axis still counts as in it
+        double zoneAbove = 40.0; // the magazine zone reaches this far above the pockets
+    };
+
+    LinearRack(Geometry geometry, std::vector<int> pocketTools, int spindleTool);
+
+    // The spindle nose moved from `from` to `to` (machine X Y Z) in a straight line.
+    std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
+                                    bool spindleTurning);
+    // The drawbar was released (true) or clamped (false) with the nose at `at`.
+    std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at);
+
+    int spindleTool() const { return spindleTool_; }
+    int pocketTool(int pocket) const { return pockets_[static_cast<std::size_t>(pocket - 1)]; }
+    int pocketCount() const { return static_cast<int>(pockets_.size()); }
+    const std::vector<int>& droppedTools() const { return dropped_; }
+    bool released() const { return released_; }
+
+private:
+public:
+    struct Box {
+        Eigen::Vector3d low;
+        Eigen::Vector3d high;
+    };
+
+private:
+    Box region(int pocket) const;  // where the nose stands with a held tool engaged in the fork
+    Box zone() const;              // the magazine zone: every fork and the room above them
+    static bool inside(const Box& box, const Eigen::Vector3d& p);
+    static bool crosses(const Box& box, const Eigen::Vector3d& from, const Eigen::Vector3d& to);
+    bool alongEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
+    int pocketAt(const Eigen::Vector3d& p) const; // 0 when none
+    std::optional<std::string> moveHolding(const Eigen::Vector3d& from, const Eigen::Vector3d& to);
+    std::optional<std::string> moveEmpty(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool spindleTurning);
+
+    Geometry geometry_;
+    std::vector<int> pockets_; // tool in each pocket, 0 empty
+    int spindleTool_ = 0;
+    bool released_ = false;
+    int engaged_ = 0;          // the pocket whose fork holds the spindle's tool (or whose tool the
+                               // released nose stands over), 0 when none
+    std::vector<int> dropped_;
+};
+
+} // namespace m350::devices
