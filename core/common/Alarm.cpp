@@ -22,6 +22,7 @@ std::string_view alarmKey(AlarmCode code) {
     case AlarmCode::SoftLimit: return "soft_limit";
     case AlarmCode::SkipNotTriggered: return "skip_not_triggered";
     case AlarmCode::SensorTimeout: return "sensor_timeout";
+    case AlarmCode::Crash: return "crash";
     case AlarmCode::OperatorReset: return "reset";
     case AlarmCode::EmergencyStop: return "emergency_stop";
     }

@@ -27,6 +27,7 @@ enum class AlarmCode : std::uint8_t {
     SoftLimit,
     SkipNotTriggered,     // G31 ended its move without the signal
     SensorTimeout,        // a macro waited longer than the sensor watchdog for an input
+    Crash,                // the magazine hardware was hit, a tool dropped: what the real machine would suffer
     OperatorReset,
     EmergencyStop,
 };

@@ -113,6 +113,24 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         }
     }
     config.magazineCapacity = t["magazine"]["capacity"].value_or(0);
+    if (auto device = t["magazine"]["device"].value<std::string>()) {
+        if (*device != "linear-rack") {
+            fail(file, "[magazine] device '" + *device + "' is unknown (linear-rack)");
+        }
+        config.rack.present = true;
+        std::string loading = t["magazine"]["loading"].value_or(std::string("side"));
+        if (loading != "side" && loading != "top") {
+            fail(file, "[magazine] loading must be \"side\" or \"top\", not '" + loading + "'");
+        }
+        config.rack.topLoading = loading == "top";
+        std::string opening = t["magazine"]["opening"].value_or(std::string("+Y"));
+        if (opening != "+Y" && opening != "-Y") {
+            fail(file, "[magazine] opening must be \"+Y\" or \"-Y\", not '" + opening + "'");
+        }
+        config.rack.openingY = opening == "+Y" ? 1.0 : -1.0;
+        config.rack.forkDepth = t["magazine"]["fork_depth"].value_or(config.rack.forkDepth);
+        config.rack.tolerance = t["magazine"]["tolerance"].value_or(config.rack.tolerance);
+    }
     if (auto distances = t["homing"]["switch_distance"].as_array()) {
         if (distances->size() > 5) {
             fail(file, "[homing] switch_distance has more than 5 axes");

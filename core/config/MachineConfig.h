@@ -44,6 +44,15 @@ struct MachineConfig {
     std::array<double, 5> homeSwitchDistance{100.0, 100.0, 50.0, 30.0, 30.0};
     // The fixed tool setter's top ([tool_setter] top: spindle-nose machine Z at contact with a
     // zero-length tool) and reach; the tools' true lengths ([tools] length = [T1, T2, ...], mm).
+    // The tool magazine as a device ([magazine] device = "linear-rack", loading = "side" | "top",
+    // opening = "+Y" | "-Y", fork_depth, tolerance in mm); pockets come from params 830+/850+/870+.
+    struct Rack {
+        bool present = false;
+        bool topLoading = false;
+        double openingY = 1.0;
+        double forkDepth = 30.0;
+        double tolerance = 1.0;
+    } rack;
     double setterTop = -100.0;
     double setterRadius = 5.0;
     std::vector<double> toolLengths;

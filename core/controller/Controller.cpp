@@ -16,7 +16,7 @@ namespace m350::controller {
 namespace param = config::param;
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
-    : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace ? this : nullptr),
+    : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace || config_.rack.present ? this : nullptr),
       interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, machine_), store_(*config_.dialect, config_.parameters) {
     if (settings_.trace) {
         trace_ = std::make_unique<TraceWriter>(*settings_.trace);
@@ -89,6 +89,7 @@ void Controller::applySettings() {
         }
     }
     configureMachine();
+    buildMagazine();
     syncToolLength();
     homed_.fill(settings_.homed ? 1 : 0);
     machine::Axes start = machine::Axes::Zero();
@@ -168,6 +169,9 @@ TraceSource Controller::source() const {
 void Controller::onMachineEvent(const machine::MachineEvent& event) {
     if (trace_) {
         trace_->machineEvent(event, source());
+    }
+    if (rack_ && state_ != RunState::Alarm && state_ != RunState::EStop) {
+        checkMagazine(event);
     }
 }
 
@@ -328,6 +332,9 @@ void Controller::zeroWorkAxis(int axis) {
 }
 
 int Controller::spindleTool() const {
+    if (rack_) {
+        return rack_->spindleTool(); // what the spindle really holds
+    }
     return config_.dialect->id == gcode::DialectId::M350 ? saturatingInt(config_.parameters.get(param::kCurrentTool))
                                                          : fanucSpindleTool_;
 }
@@ -339,9 +346,13 @@ void Controller::fill(RunReport& out) const {
     int capacity = config_.dialect->id == gcode::DialectId::M350
                        ? saturatingInt(config_.parameters.get(param::kMagazineCapacity))
                        : config_.magazineCapacity;
-    // Fixed pockets: every tool has its own pocket, empty while that tool is in the spindle.
+    // Without a magazine device every tool has its own pocket, empty while it is in the spindle.
     for (int pocket = 1; pocket <= capacity; ++pocket) {
-        out.pockets[pocket] = pocket == out.tool ? 0 : pocket;
+        if (rack_) {
+            out.pockets[pocket] = pocket <= rack_->pocketCount() ? rack_->pocketTool(pocket) : 0;
+        } else {
+            out.pockets[pocket] = pocket == out.tool ? 0 : pocket;
+        }
     }
     for (int port = 1; port <= machine::kOutputCount; ++port) {
         out.outputs[static_cast<std::size_t>(port - 1)] = machine_.output(port);

@@ -5,6 +5,7 @@
 #include "core/controller/RunSettings.h"
 #include "core/controller/SensorWatch.h"
 #include "core/controller/TraceWriter.h"
+#include "core/devices/LinearRack.h"
 #include "core/gcode/Program.h"
 #include "core/interp/ModalInterpreter.h"
 #include "core/interp/WorkOffsets.h"
@@ -117,6 +118,8 @@ private:
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
     bool optionalStopOn();
     void watchInput(int pin, int level);
+    void buildMagazine();
+    void checkMagazine(const machine::MachineEvent& event);
 
     config::MachineConfig config_;
     RunSettings settings_;
@@ -141,6 +144,7 @@ private:
     double liftedBy_ = 0.0;                          // Z lift of the hold (param 91, 70)
     std::string programStop_;                        // see programStop()
     SensorWatch sensorWatch_;
+    std::optional<devices::LinearRack> rack_; // the magazine, when the machine folder describes one
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 };
 

@@ -10,7 +10,8 @@ using Eigen::Vector3d;
 
 namespace {
 
-constexpr double kStill = 1e-6; // an axis that moves less than this did not move
+constexpr double kStill = 1e-6;      // an axis that moves less than this did not move
+constexpr double kZoneMargin = 10.0; // the magazine zone reaches this far around a pocket
 
 std::string at(const Vector3d& p) {
     char buffer[96];
@@ -57,14 +58,14 @@ LinearRack::Box column(const Vector3d& p, double tolerance, double height) {
 
 } // namespace
 
-LinearRack::Box LinearRack::zone() const {
-    Box z{Vector3d::Constant(1e300), Vector3d::Constant(-1e300)};
-    for (int k = 1; k <= pocketCount(); ++k) {
-        Box r = region(k);
-        z.low = z.low.cwiseMin(r.low);
-        z.high = z.high.cwiseMax(r.high);
-    }
-    z.high.z() = std::max(z.high.z(), z.low.z() + geometry_.zoneAbove);
+// The magazine zone of a pocket: its fork, the tool standing in it and the room around and above.
+LinearRack::Box LinearRack::zone(int k) const {
+    const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(k - 1)];
+    Box z = region(k);
+    Box over = column(p, geometry_.tolerance, geometry_.forkDepth);
+    z.low = z.low.cwiseMin(over.low) - Vector3d(kZoneMargin, kZoneMargin, kZoneMargin);
+    z.high = z.high.cwiseMax(over.high) + Vector3d(kZoneMargin, kZoneMargin, 0.0);
+    z.high.z() = std::max(z.high.z(), p.z() + geometry_.zoneAbove);
     return z;
 }
 
@@ -111,9 +112,11 @@ std::optional<std::string> LinearRack::move(const Vector3d& from, const Vector3d
     if ((to - from).norm() < kStill) {
         return std::nullopt;
     }
-    if (rapid && crosses(zone(), from, to)) {
-        return "rapid move through the magazine zone, from " + at(from) + " to " + at(to) +
-               ": move near the rack at feed (G01 / G53 ... F)";
+    for (int k = 1; rapid && k <= pocketCount(); ++k) {
+        if (crosses(zone(k), from, to)) {
+            return "rapid move through the magazine zone at " + pocket(k) + ", from " + at(from) + " to " + at(to) +
+                   ": move near the rack at feed (G01 / G53 ... F)";
+        }
     }
     return spindleTool_ != 0 ? moveHolding(from, to) : moveEmpty(from, to, spindleTurning);
 }

@@ -51,7 +51,7 @@ public:
 
 private:
     Box region(int pocket) const;  // where the nose stands with a held tool engaged in the fork
-    Box zone() const;              // the magazine zone: every fork and the room above them
+    Box zone(int pocket) const;    // the magazine zone around one pocket
     static bool inside(const Box& box, const Eigen::Vector3d& p);
     static bool crosses(const Box& box, const Eigen::Vector3d& from, const Eigen::Vector3d& to);
     bool alongEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;

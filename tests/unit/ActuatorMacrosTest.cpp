@@ -11,10 +11,19 @@ namespace {
 using namespace m350;
 using namespace m350::test;
 
+// The rack would see a tool released at the home position dropped: these tests work the drawbar
+// with an empty spindle.
+controller::RunSettings emptySpindle() {
+    controller::RunSettings settings;
+    settings.tool = 0;
+    return settings;
+}
+
 TEST(ActuatorMacros, ReleaseAndClampDriveOut01AndWaitForIn11) {
     // OUT01 (param 750) drives the cylinder; IN11 answers 150 ms later (machine.toml io_links)
     ProgramRun r = runProgram(bundledMachine(), lines({"M154", "#100 = #1552", "M301", "#101 = #1530",
-                                                       "M155", "#102 = #1552", "M302", "#103 = #1530", "M30"}));
+                                                       "M155", "#102 = #1552", "M302", "#103 = #1530", "M30"}),
+                              emptySpindle());
     EXPECT_RUN_OK(r);
     EXPECT_EQ(r.number(100), 1); // released: OUT01 on
     EXPECT_EQ(r.number(101), 1); // M301 returned once IN11 said released
@@ -26,7 +35,7 @@ TEST(ActuatorMacros, ReleaseAndClampDriveOut01AndWaitForIn11) {
 TEST(ActuatorMacros, TheActiveLevelComesFromTheTriple) {
     auto cfg = bundledMachine();
     cfg.parameters.set(752, 0); // the release valve is active low
-    ProgramRun r = runProgram(cfg, lines({"M154", "#100 = #1552", "M155", "#101 = #1552", "M30"}));
+    ProgramRun r = runProgram(cfg, lines({"M154", "#100 = #1552", "M155", "#101 = #1552", "M30"}), emptySpindle());
     EXPECT_RUN_OK(r);
     EXPECT_EQ(r.number(100), 0);
     EXPECT_EQ(r.number(101), 1);
@@ -63,7 +72,7 @@ TEST(ActuatorMacros, EveryActuatorAndWaitUsesItsOwnPorts) {
 }
 
 TEST(ActuatorMacros, AStuckSensorEndsInTheWatchdogAlarmInsideTheWait) {
-    controller::RunSettings settings;
+    controller::RunSettings settings = emptySpindle();
     settings.heldInputs[11] = 0;
     ProgramRun r = runProgram(bundledMachine(), lines({"M154", "M301", "M30"}), settings);
     EXPECT_EQ(r.report.alarm->message, "IN11 (tool released) never became 1: waited 10.0 s at slib-m.nc:51");
@@ -75,7 +84,7 @@ namespace {
 
 TEST(ActuatorMacros, ASlowSensorDelaysTheWaitAndAVerySlowOneTripsTheWatchdog) {
     for (double lateness : {3.0, 12.0}) {
-        ProgramRun r = loadProgram(bundledMachine(), lines({"M154", "M301", "M30"}));
+        ProgramRun r = loadProgram(bundledMachine(), lines({"M154", "M301", "M30"}), emptySpindle());
         ASSERT_TRUE(r.loaded);
         r.controller->setInputFault(11, machine::InputFault::delayed(lateness));
         r.report = r.controller->run();

@@ -49,7 +49,7 @@ TEST(ControllerM350, BundledMachineParametersAndOffsetsAsVariables) {
 TEST(ControllerM350, WorkZSubtractsG54AndTheCurrentToolsOffset) {
     auto run = runProgram(bundledMachine(), lines({"#1300 = 2", "G53 X0 Y0 Z0", "M30"}));
     EXPECT_RUN_OK(run);
-    EXPECT_EQ(run.report.tool, 2);
+    EXPECT_EQ(run.report.tool, 1); // the spindle still holds T1: #1300 is what the controller believes
     EXPECT_DOUBLE_EQ(run.controller->config().parameters.get(800), 2); // #1300 is param 800
     EXPECT_NEAR(run.report.machine(2), 0, kEps);
     EXPECT_NEAR(run.report.work(0), -300, kEps);
@@ -106,9 +106,11 @@ TEST(ControllerM350, OutputsAreOneBased) {
 }
 
 TEST(ControllerM350, LinkedInputAnswersAfterItsDelay) {
-    // bundled wiring: OUT01 drives IN11 (#1530) 150 ms later
+    // bundled wiring: OUT01 drives IN11 (#1530) 150 ms later (an empty spindle: no tool to drop)
+    m350::controller::RunSettings settings;
+    settings.tool = 0;
     auto run = runProgram(bundledMachine(), lines({"#1552 = 1", "#60 = #1530", "G04 P200", "#61 = #1530", "#1552 = 0",
-                                                   "G04 P200", "#62 = #1530", "M30"}));
+                                                   "G04 P200", "#62 = #1530", "M30"}), settings);
     EXPECT_RUN_OK(run);
     EXPECT_DOUBLE_EQ(run.number(60), 0);
     EXPECT_DOUBLE_EQ(run.number(61), 1);

@@ -107,8 +107,8 @@ TEST(LinearRack, AnEmptyNoseRunningSidewaysIntoATool) {
 TEST(LinearRack, RapidThroughTheMagazineZone) {
     LinearRack r = rack();
     EXPECT_EQ(path(r, {{0, 20, -60}, {300, 20, -60}}, true),
-              "rapid move through the magazine zone, from X0.000 Y20.000 Z-60.000 to X300.000 Y20.000 Z-60.000: move "
-              "near the rack at feed (G01 / G53 ... F)");
+              "rapid move through the magazine zone at pocket 1, from X0.000 Y20.000 Z-60.000 to X300.000 Y20.000 "
+              "Z-60.000: move near the rack at feed (G01 / G53 ... F)");
     EXPECT_FALSE(path(r, {{0, 20, 0}, {300, 20, 0}}, true)); // high above it is fine
 }
 
