@@ -28,6 +28,7 @@ inline constexpr int kHomingSecondSpeed = 118;     // mm/min of the precise appr
 inline constexpr int kHomeAfterBooting = 127;      // 0 = prompt 是否进行开机寻零操作? at boot
 inline constexpr int kHomeSwitchX = 545;           // input triples 545, 548, 551, 554, 557: pin, enable, level
 inline constexpr int kHomeBeforeProcessing = 220;  // 0 = not required
+inline constexpr int kDrillingRetraction = 224;    // 钻孔循环退刀量, mm: G73/G83 retraction
 inline constexpr int kSoftLimitsEnabled = 155;     // 0 = off
 inline constexpr int kSoftLimitNegativeX = 161;    // 161-165 negative, 166-170 positive, machine coordinates
 inline constexpr int kSoftLimitPositiveX = 166;

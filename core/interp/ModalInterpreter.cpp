@@ -3,6 +3,7 @@
 
 #include "core/config/ParameterNumbers.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace m350::interp {
@@ -43,7 +44,7 @@ int groupOf(int code) {
     case 20: case 21: return 6;
     case 40: case 41: case 42: return 7;
     case 43: case 44: case 49: return 8;
-    case 80: return 9;
+    case 73: case 74: case 80: case 81: case 82: case 83: case 84: return 9;
     case 98: case 99: return 10;
     case 54: case 55: case 56: case 57: case 58: case 59: return 14;
     default: return -1;
@@ -199,6 +200,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 flushCompensation();
                 compensation_.reset();
                 state_.groups[7] = 40;
+                cancelCycle();
                 machine_.spindle(machine::SpindleState::Stop, 0.0);
                 machine_.coolant(false);
                 if (code == 30 && dialect_.id == gcode::DialectId::M350) { // 总加工数, 加工件数
@@ -264,6 +266,15 @@ void ModalInterpreter::applyGCodes(const Words& words) {
         case 10: case 28: case 30: case 31: case 52: case 53: case 92: break; // with the axis words, in moveAxes
         default: invalid(g, "not a G code this machine knows");
         }
+    }
+    if (seen[1] && seen[9] && state_.group(9) != 80) {
+        auto cycle = std::find_if(words.g.begin(), words.g.end(),
+                                  [](const WordValue& w) { return groupOf(roundToInt(w.value)) == 9; });
+        invalid(*cycle, "a motion code (G0-G3) in the same block would cancel the canned cycle: give them in "
+                        "separate blocks");
+    }
+    if (seen[1] || (seen[9] && state_.group(9) == 80)) {
+        cancelCycle(); // a cycle begun again starts from new drilling data and a new initial level
     }
 }
 

@@ -3,6 +3,7 @@
 #include "core/config/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/interp/CutterCompensation.h"
+#include "core/interp/DrillingCycle.h"
 #include "core/interp/ModalState.h"
 #include "core/interp/ToolOffsets.h"
 #include "core/interp/WorkOffsets.h"
@@ -24,8 +25,9 @@ namespace m350::interp {
 // Order of execution within one block (written once, followed by execute()):
 //   1. F, S, T, H, D words          5. work system (G54-G59)
 //   2. spindle M3/M4/M5/M19, M8/M9  6. non-modal G4, G28, G53, G92
-//   3. plane, units, distance,      7. motion (G0 G1 G2 G3) with the axis words
-//      feed mode, return level      8. M0, M1, M2, M30
+//   3. plane, units, distance,      7. motion (G0 G1 G2 G3) with the axis words, or
+//      feed mode, return level,        the active canned cycle (G73 G74 G81-G84) at them
+//      canned cycle                 8. M0, M1, M2, M30
 //   4. (reserved: compensation)
 class ModalInterpreter : public macro::BlockSink {
 public:
@@ -128,6 +130,15 @@ private:
     void compensatedMove(const machine::Axes& target, const Words& words);
     void emitToolPath(const std::vector<PathSegment>& segments);
     void flushCompensation();
+    void cancelCycle();
+    void cannedCycle(const Words& words);
+    void rememberCycleWords(const Words& words, char drillLetter);
+    void checkCycle(const Words& words, int code, char drillLetter) const;
+    int cycleRepeats(const Words& words) const;
+    DrillingCycle resolveCycle(const Words& words, int code, int drillAxis) const;
+    std::vector<machine::Axes> cycleHoles(const Words& words, int repeats) const;
+    void runCycle(const DrillingCycle& cycle, const std::vector<machine::Axes>& holes, const Words& words);
+    std::uint32_t cycleColumn(const Words& words) const;
 
     const gcode::Dialect& dialect_;
     config::ParameterTable& parameters_;
@@ -145,6 +156,17 @@ private:
     machine::Axes pendingHeight_ = machine::Axes::Zero(); // Z, A, B of the move being compensated
     int pendingMode_ = 1;                                  // its motion mode (0 rapid, 1 feed)
     PlaneAxes compensationPlane_;                          // fixed from G41/G42 entry to G40 exit
+
+    // The canned cycle's data (FANUC's drilling data), kept as written from block to block until
+    // G80, a group-1 code or the program end.
+    struct CycleData {
+        std::optional<double> bottom; // the drilling-axis word: Z under G17
+        std::optional<double> r;
+        double q = 0.0;
+        double p = 0.0;
+        std::optional<double> initialLevel; // machine position on the drilling axis when drilling began
+    };
+    CycleData cycle_;
 };
 
 } // namespace m350::interp

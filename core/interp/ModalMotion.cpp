@@ -1,6 +1,6 @@
 // The ModalInterpreter's positioning: targets in machine coordinates, the coordinate-setting codes
 // (G92, G52, G10), reference returns (G28, G30), one-shot machine coordinates (G53), soft limits
-// and the motion itself (G0, G1, G2, G3).
+// and the motion itself (G0, G1, G2, G3; the canned cycles are in CannedCycles.cpp).
 #include "core/interp/ModalInterpreter.h"
 
 #include "core/common/Numeric.h"
@@ -167,8 +167,15 @@ void ModalInterpreter::moveAxes(const Words& words) {
         setOffsets(words);
         return;
     }
-    if (!words.hasAxis() || words.hasG(4)) {
+    if (words.hasG(4)) {
         return; // in a G04 block, X is the dwell time (FANUC), not a move
+    }
+    if (state_.group(9) != 80 && !words.hasG(53) && !words.hasG(28) && !words.hasG(30) && !words.hasG(31)) {
+        cannedCycle(words);
+        return;
+    }
+    if (!words.hasAxis()) {
+        return;
     }
     if (words.hasG(53)) {
         // One-shot machine coordinates; with F (the M350's `G53 Z#1306 F#1312`) a feed move

@@ -1,0 +1,253 @@
+// The ModalInterpreter's canned drilling cycles, group 9: G73 G74 G81 G82 G83 G84 and G80. A cycle
+// stays active until G80, a group-1 code (G0-G3) or the program end; each block in it that has an
+// axis word of the plane, the drilling-axis word or R drills at the position it names, K (or L, as
+// LinuxCNC writes it) times. The drilling data (Z R Q P) persists from block to block; in a cycle
+// block R is the R level and P the dwell, never an arc radius or a program number.
+#include "core/interp/ModalInterpreter.h"
+
+#include "core/config/ParameterNumbers.h"
+
+#include <array>
+#include <cmath>
+
+namespace m350::interp {
+
+using macro::MacroError;
+using macro::WordValue;
+namespace param = config::param;
+
+namespace {
+
+// With parameter 224 at 0, G73/G83 back off by LinuxCNC's fixed amount (rs274's G83_RAPID_DELTA,
+// 0.010 inch, whatever the unit), so that the differential tests compare the same moves. A FANUC
+// takes it from parameters 5114 (G73) and 5115 (G83) instead.
+constexpr double kDefaultPeckClearance = 0.254; // mm
+// A Q so small that one hole takes more pecks than this is a slip of the pen, not a program to
+// simulate for minutes (the steps are produced one at a time, so it is not a memory limit).
+constexpr double kMaxPecksPerHole = 10000;
+constexpr int kMaxRepeats = 9999; // FANUC K0-K9999
+
+// The two positioning axes and the drilling axis of a plane, as indexes into machine::Axes.
+struct CycleAxes {
+    std::array<int, 2> plane;
+    int drill;
+};
+
+CycleAxes cycleAxes(int plane) {
+    switch (plane) {
+    case 18:
+        return {{2, 0}, 1};
+    case 19:
+        return {{1, 2}, 0};
+    default:
+        return {{0, 1}, 2};
+    }
+}
+
+char axisLetter(int axis) {
+    return machine::kAxisNames[static_cast<std::size_t>(axis)];
+}
+
+} // namespace
+
+void ModalInterpreter::cancelCycle() {
+    state_.groups[9] = 80;
+    cycle_ = CycleData{};
+}
+
+std::uint32_t ModalInterpreter::cycleColumn(const Words& words) const {
+    for (const WordValue& g : words.g) {
+        if (std::abs(g.value - state_.group(9)) < 1e-6) {
+            return g.column;
+        }
+    }
+    return motionColumn(words);
+}
+
+void ModalInterpreter::rememberCycleWords(const Words& words, char drillLetter) {
+    if (const WordValue* w = words.find(drillLetter)) {
+        cycle_.bottom = w->value;
+    }
+    if (const WordValue* w = words.find('R')) {
+        cycle_.r = w->value;
+    }
+    if (const WordValue* w = words.find('Q')) {
+        cycle_.q = w->value;
+    }
+    if (const WordValue* w = words.find('P')) {
+        if (w->value < 0) {
+            invalid(*w, "the dwell at the hole bottom cannot be negative");
+        }
+        cycle_.p = w->value;
+    }
+}
+
+int ModalInterpreter::cycleRepeats(const Words& words) const {
+    const WordValue* k = words.find('K');
+    const WordValue* l = words.find('L');
+    if (k && l) {
+        invalid(*l, "give the cycle's repeat count as K or as L, not both");
+    }
+    const WordValue* count = k ? k : l;
+    if (!count) {
+        return 1;
+    }
+    if (count->value < 0 || count->value > kMaxRepeats || count->value != std::floor(count->value)) {
+        invalid(*count,
+                "the repeat count of a canned cycle is a whole number 0-" + std::to_string(kMaxRepeats));
+    }
+    return static_cast<int>(count->value);
+}
+
+// What a FANUC alarms on before the cycle moves: missing drilling data, no feed, a tap with the
+// spindle the wrong way.
+void ModalInterpreter::checkCycle(const Words& words, int code, char drillLetter) const {
+    const std::string name = "G" + std::to_string(code);
+    const std::uint32_t column = cycleColumn(words);
+    if (!cycle_.bottom) {
+        throw MacroError{AlarmCode::MissingAddress,
+                         name + " needs " + std::string(1, drillLetter) +
+                             " (the hole bottom) in the first block of the cycle",
+                         column};
+    }
+    if (!cycle_.r) {
+        throw MacroError{AlarmCode::MissingAddress,
+                         name + " needs R (the level drilling starts from) in the first block of the cycle",
+                         column};
+    }
+    if ((code == 73 || code == 83) && cycle_.q <= 0) {
+        const WordValue* q = words.find('Q');
+        throw MacroError{q ? AlarmCode::InvalidWord : AlarmCode::MissingAddress,
+                         name + " needs Q (peck depth) > 0", q ? q->column : column};
+    }
+    if (state_.feed <= 0) {
+        const WordValue* f = words.find('F');
+        throw MacroError{AlarmCode::InvalidWord, name + " needs a feed: give F", f ? f->column : column};
+    }
+    machine::SpindleState spindle = machine_.spindleState();
+    if (code == 84 && spindle != machine::SpindleState::Forward) {
+        throw MacroError{AlarmCode::InvalidWord,
+                         "G84 (right-hand tapping) needs the spindle turning forward: M3 before the cycle",
+                         column};
+    }
+    if (code == 74 && spindle != machine::SpindleState::Reverse) {
+        throw MacroError{AlarmCode::InvalidWord,
+                         "G74 (left-hand tapping) needs the spindle turning in reverse: M4 before the cycle",
+                         column};
+    }
+}
+
+void ModalInterpreter::cannedCycle(const Words& words) {
+    const int code = state_.group(9);
+    const CycleAxes axes = cycleAxes(state_.group(2));
+    const char drillLetter = axisLetter(axes.drill);
+    if (compensating() || state_.group(7) != 40) {
+        throw MacroError{AlarmCode::InvalidWord,
+                         "G" + std::to_string(code) +
+                             ": cutter compensation is on (G41/G42, or G40 not yet followed by a move); "
+                             "a canned cycle needs it cancelled",
+                         cycleColumn(words)};
+    }
+    for (char rotary : {'A', 'B'}) {
+        if (const WordValue* w = words.find(rotary)) {
+            invalid(*w, "a rotary axis cannot move in a canned cycle (G" + std::to_string(code) + ")");
+        }
+    }
+    rememberCycleWords(words, drillLetter);
+    bool drills = words.find('R') || words.find(drillLetter) || words.find(axisLetter(axes.plane[0])) ||
+                  words.find(axisLetter(axes.plane[1]));
+    int repeats = cycleRepeats(words);
+    if (!drills || repeats == 0) {
+        return; // K0 keeps the drilling data and drills nothing, as on a FANUC
+    }
+    checkCycle(words, code, drillLetter);
+    if (!cycle_.initialLevel) {
+        cycle_.initialLevel = machine_.position()(axes.drill);
+    }
+    runCycle(resolveCycle(words, code, axes.drill), cycleHoles(words, repeats), words);
+}
+
+DrillingCycle ModalInterpreter::resolveCycle(const Words& words, int code, int drillAxis) const {
+    const std::string name = "G" + std::to_string(code);
+    const double unit = axisUnit(drillAxis);
+    DrillingCycle cycle;
+    cycle.code = code;
+    cycle.drillAxis = drillAxis;
+    cycle.initialLevel = *cycle_.initialLevel;
+    if (state_.incremental()) { // FANUC and rs274: R from the initial level, the bottom from R
+        cycle.r = cycle.initialLevel + *cycle_.r * unit;
+        cycle.bottom = cycle.r + *cycle_.bottom * unit;
+    } else {
+        double offset = workOffset()(drillAxis);
+        cycle.r = *cycle_.r * unit + offset;
+        cycle.bottom = *cycle_.bottom * unit + offset;
+    }
+    if (cycle.bottom > cycle.r + 1e-9) {
+        const WordValue* r = words.find('R');
+        std::string letter(1, axisLetter(drillAxis));
+        throw MacroError{AlarmCode::InvalidWord,
+                         name + ": the hole bottom " + letter +
+                             " lies above R; the cycle drills from R toward " + letter + "-",
+                         r ? r->column : cycleColumn(words)};
+    }
+    cycle.returnToR = state_.group(10) == 99;
+    cycle.peck = cycle_.q * unit;
+    if ((code == 73 || code == 83) && (cycle.r - cycle.bottom) / cycle.peck > kMaxPecksPerHole) {
+        const WordValue* q = words.find('Q');
+        throw MacroError{AlarmCode::InvalidWord,
+                         name + ": Q is so small that one hole would take more than " +
+                             std::to_string(static_cast<int>(kMaxPecksPerHole)) + " pecks",
+                         q ? q->column : cycleColumn(words)};
+    }
+    double clearance = parameters_.get(param::kDrillingRetraction);
+    cycle.peckClearance = clearance > 0 ? clearance : kDefaultPeckClearance;
+    cycle.dwell = cycle_.p * dialect_.dwellPScale;
+    return cycle;
+}
+
+// Where the block drills: once at the position it names, or under G91 `repeats` steps apart.
+std::vector<machine::Axes> ModalInterpreter::cycleHoles(const Words& words, int repeats) const {
+    const CycleAxes axes = cycleAxes(state_.group(2));
+    const machine::Axes offset = workOffset();
+    std::vector<machine::Axes> holes;
+    machine::Axes hole = machine_.position();
+    for (int i = 0; i < repeats; ++i) {
+        for (int axis : axes.plane) {
+            if (const WordValue* w = words.find(axisLetter(axis))) {
+                double value = w->value * axisUnit(axis);
+                hole(axis) = state_.incremental() ? hole(axis) + value : value + offset(axis);
+            }
+        }
+        holes.push_back(hole);
+    }
+    return holes;
+}
+
+void ModalInterpreter::runCycle(const DrillingCycle& cycle, const std::vector<machine::Axes>& holes,
+                                const Words& words) {
+    const machine::Axes from = machine_.position();
+    // The whole block is checked against the soft limits before the first move, as for any block.
+    cycle.plan(from, holes, [&](const CycleStep& step) {
+        if (step.kind == CycleStep::Kind::Rapid || step.kind == CycleStep::Kind::Feed) {
+            checkSoftLimits(step.target, words);
+        }
+    });
+    cycle.plan(from, holes, [&](const CycleStep& step) {
+        switch (step.kind) {
+        case CycleStep::Kind::Rapid:
+            machine_.rapid(step.target);
+            break;
+        case CycleStep::Kind::Feed:
+            machine_.feed(step.target, feedRate(motionColumn(words)));
+            break;
+        case CycleStep::Kind::Dwell:
+            machine_.dwell(step.seconds);
+            break;
+        case CycleStep::Kind::Spindle:
+            machine_.spindle(step.spindle, state_.spindleSpeed);
+            break;
+        }
+    });
+}
+
+} // namespace m350::interp
