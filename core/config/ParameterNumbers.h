@@ -34,6 +34,7 @@ inline constexpr int kSoftLimitNegativeX = 161;    // 161-165 negative, 166-170 
 inline constexpr int kSoftLimitPositiveX = 166;
 inline constexpr int kTotalRunCount = 201;         // #701 总加工数, counted by M30
 inline constexpr int kPieceCount = 202;            // #702 加工件数, counted by M30
+inline constexpr int kFourthAxisType = 449;       // 0 linear, 1 rotary; 450 the 5th axis
 inline constexpr int kCurrentTool = 800;           // #1300 当前刀具号
 inline constexpr int kMagazineCapacity = 801;      // #1301 刀库容量
 inline constexpr int kMagazineType = 802;          // #1302 刀库类型

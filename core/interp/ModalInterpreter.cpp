@@ -144,8 +144,9 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         words.present |= Words::bit(w.letter);
     }
     try {
-        // 1. F S T H D
-        double unit = state_.inches() ? 25.4 : 1.0;
+        // 1. F S T H D; F in the unit this block sets (`G20 G1 X1 F10`: 10 inch/min)
+        bool inches = words.hasG(20) || (state_.inches() && !words.hasG(21));
+        double unit = inches ? 25.4 : 1.0;
         if (words.find('F')) {
             if (words.find('F')->value < 0) {
                 invalid(*words.find('F'), "the feed cannot be negative");

@@ -53,8 +53,9 @@ public:
     int currentTool() const;
     // FANUC G43/G44 H: + or - the length in tool offset H (0 under G49).
     double toolLengthOffset() const;
-    // mm per program unit for an axis: 25.4 for X Y Z under G20; rotary and G21 values are as written.
-    double axisUnit(int axis) const { return axis < 3 && state_.inches() ? 25.4 : 1.0; }
+    // mm per program unit for an axis: 25.4 under G20 for X Y Z and for a linear 4th/5th axis
+    // (params 449/450 = 0); rotary axes (degrees) and G21 values are as written.
+    double axisUnit(int axis) const;
 
     // The last G31: whether the signal came, where (machine coordinates), which axes moved.
     struct Probe {

@@ -32,13 +32,12 @@ std::string millimetres(double v) {
 machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordinates) const {
     machine::Axes target = basePosition();
     machine::Axes offset = workOffset();
-    double unit = state_.inches() ? 25.4 : 1.0;
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         const auto* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)]);
         if (!w) {
             continue;
         }
-        double v = w->value * (axis < 3 ? unit : 1.0);
+        double v = w->value * axisUnit(axis);
         if (machineCoordinates) {
             target(axis) = v;
         } else if (state_.incremental()) {
@@ -48,6 +47,14 @@ machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordi
         }
     }
     return target;
+}
+
+double ModalInterpreter::axisUnit(int axis) const {
+    if (!state_.inches()) {
+        return 1.0;
+    }
+    bool rotary = axis >= 3 && parameters_.get(param::kFourthAxisType + axis - 3) != 0.0;
+    return rotary ? 1.0 : 25.4;
 }
 
 // G95 (FANUC): F is mm per spindle revolution, so the feed follows the spindle's speed. The M350

@@ -48,3 +48,24 @@ TEST(FeedMode, TheM350IgnoresG95) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(FeedMode, FInAG20BlockIsInchesPerMinute) {
+    // 1 inch at 10 inch/min (254 mm/min): 6 s
+    ProgramRun r = runProgram(quick(fanucMachine), lines({"G20 G01 X1. F10.", "M30"}));
+    ASSERT_EQ(r.report.status, controller::RunStatus::Ok) << r.alarmText();
+    EXPECT_NEAR(r.report.machine(0), 25.4, 1e-9);
+    EXPECT_NEAR(r.report.simTime, 6.0, 1e-2);
+}
+
+TEST(FeedMode, UnderG20ALinearFourthAxisMovesInInchesARotaryOneInDegrees) {
+    ProgramRun linear = runProgram(quick(m350Machine), lines({"G20 G01 A1. F100.", "M30"}));
+    EXPECT_NEAR(linear.report.machine(3), 25.4, 1e-9);
+    auto rotaryMachine = quick(m350Machine);
+    rotaryMachine.parameters.set(449, 1); // 4th axis rotary
+    ProgramRun rotary = runProgram(rotaryMachine, lines({"G20 G01 A90. F100.", "M30"}));
+    EXPECT_NEAR(rotary.report.machine(3), 90.0, 1e-9);
+}
+
+} // namespace
