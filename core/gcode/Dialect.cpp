@@ -34,9 +34,11 @@ Dialect makeM350() {
     // M350 argument specification (community G/M reference, confirmed by the factory macros)
     d.callArguments = letters({{'X', 1}, {'Y', 2}, {'Z', 3}, {'A', 4}, {'B', 5}, {'C', 6}, {'I', 7}, {'J', 8},
                                {'K', 9}, {'R', 10}, {'H', 12}, {'Q', 14}, {'D', 15}, {'F', 16}, {'S', 17}});
-    // G-code handlers get X#0 Y#1 Z#2 A#3 B#4 C#5 (O9053: `G91G00X#0Y#1Z#2A#3B#4C#5`); the rest as above
+    // G-code handlers get X#0 Y#1 Z#2 A#3 B#4 C#5 (O9053: `G91G00X#0Y#1Z#2A#3B#4C#5`); the rest as above,
+    // and P#13 (our choice, for the cycles' dwell: the firmware's is not known)
     d.handlerArguments = letters({{'X', 0}, {'Y', 1}, {'Z', 2}, {'A', 3}, {'B', 4}, {'C', 5}, {'I', 7}, {'J', 8},
-                                  {'K', 9}, {'R', 10}, {'H', 12}, {'Q', 14}, {'D', 15}, {'F', 16}, {'S', 17}});
+                                  {'K', 9}, {'R', 10}, {'H', 12}, {'P', 13}, {'Q', 14}, {'D', 15}, {'F', 16},
+                                  {'S', 17}});
     d.tCodeProgram = 20000;
     d.gHandlerBase = 9000;
     d.mHandlerBase = 10000;

@@ -113,6 +113,17 @@ machine::Axes ModalInterpreter::workPosition() const {
     return machine_.position() - workOffset();
 }
 
+macro::BlockSink::CycleContext ModalInterpreter::cycleContext() const {
+    CycleContext context;
+    machine::Axes work = workPosition();
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        context.work[static_cast<std::size_t>(axis)] = work(axis) / axisUnit(axis);
+    }
+    context.incremental = state_.incremental();
+    context.returnToR = state_.group(10) == 99;
+    return context;
+}
+
 std::optional<ModalInterpreter::OperatorStop> ModalInterpreter::takeStop() {
     std::optional<OperatorStop> out;
     out.swap(stop_);

@@ -39,6 +39,7 @@ public:
     void setReferencePoint(int number, const machine::Axes& position) { referencePoints_[number] = position; }
 
     macro::BlockOutcome execute(const macro::EvaluatedBlock& block) override;
+    CycleContext cycleContext() const override;
 
     const ModalState& state() const { return state_; }
     ModalState& state() { return state_; }

@@ -4,6 +4,7 @@
 #include "core/macro/MacroError.h"
 
 #include <cstdint>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -32,6 +33,16 @@ class BlockSink {
 public:
     virtual ~BlockSink() = default;
     virtual BlockOutcome execute(const EvaluatedBlock& block) = 0;
+
+    // Where the program stands, for canned-cycle handler programs (the M350's O9081 ...): the work
+    // position of X Y Z A B, whether distances are incremental (G91), whether cycles return to R
+    // (G99) rather than to the initial level (G98).
+    struct CycleContext {
+        std::array<double, 5> work{};
+        bool incremental = false;
+        bool returnToR = false;
+    };
+    virtual CycleContext cycleContext() const { return {}; }
 };
 
 } // namespace m350::macro

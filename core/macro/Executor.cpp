@@ -34,6 +34,7 @@ void Executor::indexHandlers() {
 }
 
 bool Executor::start(std::uint32_t unit) {
+    handlerCycle_.reset();
     if (unit >= program_.units.size()) {
         return false;
     }

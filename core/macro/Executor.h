@@ -8,6 +8,7 @@
 #include "core/macro/MachineAccess.h"
 #include "core/macro/VariableStore.h"
 
+#include <array>
 #include <map>
 #include <optional>
 #include <utility>
@@ -72,6 +73,10 @@ private:
     std::uint32_t programUnit(double number, const char* how, std::uint32_t column) const;
     std::optional<std::uint32_t> handlerFor(char letter, int code) const;
     void indexHandlers();
+    // Canned cycles run by handler programs (ExecutorCycles.cpp).
+    bool cycleHandlerCall(int code) const;
+    void prepareCycleCall(Call& call, int code, const std::vector<WordValue>& blockWords, std::uint32_t column);
+    std::optional<Call> repeatCycle(std::vector<WordValue>& words, const std::array<std::int8_t, 26>& map);
 
     const gcode::Program& program_;
     const gcode::Dialect& dialect_;
@@ -92,6 +97,14 @@ private:
     std::uint32_t current_ = 0;
     bool hasCurrent_ = false;
     std::uint64_t blocksExecuted_ = 0;
+    // The canned cycle a handler program runs, kept modal until G80 or G00-G03.
+    struct HandlerCycle {
+        std::int32_t key = 0;
+        std::uint32_t unit = 0;
+        std::map<int, double> arguments; // local -> value, as the cycle's blocks gave them
+        double initialLevel = 0.0;       // work Z when the cycle began
+    };
+    std::optional<HandlerCycle> handlerCycle_;
 };
 
 } // namespace m350::macro

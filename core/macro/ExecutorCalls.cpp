@@ -40,6 +40,9 @@ std::optional<std::uint32_t> Executor::handlerFor(char letter, int code) const {
 // Whether any word of the block may start a call; most blocks (G1 X.. Y..) do not, and skip the
 // call planning below.
 bool Executor::mayCall(const EvaluatedBlock& block) const {
+    if (handlerCycle_ && !handlingCode(handlerCycle_->key)) {
+        return true; // a block may repeat or end the modal cycle
+    }
     for (const WordValue& w : block.words) {
         switch (w.letter) {
         case 'T':
@@ -215,8 +218,17 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         if (!mapped) {
             takeArguments(isM ? dialect_.callArguments : dialect_.handlerArguments, call.arguments, false);
         }
+        if (!isM && !mapped && cycleHandlerCall(n)) {
+            prepareCycleCall(call, n, words, w.column);
+        }
         calls.push_back(std::move(call));
         callColumn = w.column;
+    }
+    if (calls.empty()) {
+        if (auto repeat = repeatCycle(words, dialect_.handlerArguments)) {
+            prepareCycleCall(*repeat, handlerCycle_->key & 0xFFFF, words, block.location.column);
+            calls.push_back(std::move(*repeat));
+        }
     }
 
     if (!sendToSink(evaluated, frameIndex)) {

@@ -60,3 +60,127 @@ N5
 M99
 N4
 M99                                 //exits keep their message on the status line
+
+// Canned drilling cycles (钻孔循环), as M350 handler programs O9000+n, written for M350 Studio.
+// The controller calls the handler for the cycle's first block and again for each later block that
+// names a new hole or level, until G80 or G00-G03. Each call gets, in work coordinates:
+//   #0 #1 X Y of the hole   #2 Z the bottom   #10 R level   #14 Q peck   #13 P dwell (ms)
+//   #16 F feed   #9 K repeats (1 if not given)   #30 the Z to return to (G98: initial, G99: R)
+//   #31 the Z the tool stands at   #32 1 on the cycle's first block (a tool below R goes up first)
+// Param 224 (#724) is the G73/G83 clearance d; 0 means 0.254 mm.
+
+O9081(G81 钻孔循环 drilling: feed to Z, rapid out)
+IF [#32 EQ 0] + [#31 GE #10] GOTO1  //starting below R: straight up to R first
+G00 Z#10
+N1 G00 X#0 Y#1                      //to the hole at the current level
+#20 = 0
+WHILE [#20 LT #9] DO1               //K times
+G00 Z#10
+G01 Z#2 F#16
+G00 Z#30
+#20 = #20 + 1
+END1
+M99
+
+O9082(G82 钻孔循环 drilling with a dwell at the bottom)
+IF [#32 EQ 0] + [#31 GE #10] GOTO1
+G00 Z#10
+N1 G00 X#0 Y#1
+#20 = 0
+WHILE [#20 LT #9] DO1
+G00 Z#10
+G01 Z#2 F#16
+IF #13 LE 0 GOTO2
+G04 P#13                            //dwell at the bottom
+N2G00 Z#30
+#20 = #20 + 1
+END1
+M99
+
+O9083(G83 深孔钻循环 peck drilling: out to R after every peck)
+IF [#32 EQ 0] + [#31 GE #10] GOTO1
+G00 Z#10
+N1 G00 X#0 Y#1
+#21 = #724                          //clearance d above the depth already drilled
+IF #21 GT 0 GOTO2
+#21 = 0.254
+N2 #20 = 0
+WHILE [#20 LT #9] DO1
+G00 Z#10
+#22 = #10                           //depth drilled so far
+WHILE [#22 GT #2] DO2
+#23 = #22 - #14                     //the next peck
+IF #23 GE #2 GOTO3
+#23 = #2
+N3 IF #22 GE #10 GOTO4              //the first peck starts at R
+G00 Z[#22 + #21]                    //back down, d above the bottom so far
+N4 G01 Z#23 F#16
+IF #23 LE #2 GOTO5                  //at the bottom: straight to the return level
+G00 Z#10                            //out to R: the chips come out
+N5 #22 = #23
+END2
+G00 Z#30
+#20 = #20 + 1
+END1
+M99
+
+O9073(G73 高速深孔钻循环 high-speed peck drilling: back off d after every peck)
+IF [#32 EQ 0] + [#31 GE #10] GOTO1
+G00 Z#10
+N1 G00 X#0 Y#1
+#21 = #724
+IF #21 GT 0 GOTO2
+#21 = 0.254
+N2 #20 = 0
+WHILE [#20 LT #9] DO1
+G00 Z#10
+#22 = #10
+WHILE [#22 GT #2] DO2
+#23 = #22 - #14
+IF #23 GE #2 GOTO3
+#23 = #2
+N3 G01 Z#23 F#16
+IF #23 LE #2 GOTO4                  //at the bottom: no back-off
+G00 Z[#23 + #21]                    //break the chip
+N4 #22 = #23
+END2
+G00 Z#30
+#20 = #20 + 1
+END1
+M99
+
+O9084(G84 攻丝循环 right-hand tapping: the spindle turns forward going in)
+IF [#32 EQ 0] + [#31 GE #10] GOTO1
+G00 Z#10
+N1 G00 X#0 Y#1
+#20 = 0
+WHILE [#20 LT #9] DO1
+G00 Z#10
+G01 Z#2 F#16
+IF #13 LE 0 GOTO2
+G04 P#13
+N2 M04                              //reverse to come out
+G01 Z#10 F#16
+M03                                 //forward again
+G00 Z#30
+#20 = #20 + 1
+END1
+M99
+
+O9074(G74 反攻丝循环 left-hand tapping: the spindle turns in reverse going in)
+IF [#32 EQ 0] + [#31 GE #10] GOTO1
+G00 Z#10
+N1 G00 X#0 Y#1
+#20 = 0
+WHILE [#20 LT #9] DO1
+G00 Z#10
+G01 Z#2 F#16
+IF #13 LE 0 GOTO2
+G04 P#13
+N2 M03                              //forward to come out
+G01 Z#10 F#16
+M04                                 //reverse again
+G00 Z#30
+#20 = #20 + 1
+END1
+M99
