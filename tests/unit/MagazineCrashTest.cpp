@@ -1,0 +1,110 @@
+// The training scenarios of the default machine's rack: the manual's O20000 with one line made
+// wrong (or one parameter), and the crash or drop the real machine would suffer, reported on the
+// line that caused it. A modified O20000 in the program file wins over the machine's slib-g.nc.
+#include "RunProgram.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+using namespace m350;
+using namespace m350::test;
+
+// O20000 as the default machine ships it, up to the cycle handlers that follow it in slib-g.nc.
+std::string shippedO20000() {
+    std::ifstream in(config::bundledMachinesDirectory() + "/" + config::kDefaultMachine + "/slib-g.nc");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string all = text.str();
+    std::size_t begin = all.find("\nO20000(") + 1;
+    std::size_t end = all.find("// Canned drilling cycles");
+    EXPECT_NE(begin, 0u);
+    return all.substr(begin, end - begin);
+}
+
+// The main program `before` + "T2" + "M30", then O20000 with `wrong` put in place of `right`.
+// Returns the run and the line (in the program file) where `wrong` stands.
+struct Scenario {
+    ProgramRun run;
+    std::uint32_t line = 0;
+};
+
+Scenario change(const std::string& right, const std::string& wrong, const std::string& before = "",
+                config::MachineConfig cfg = bundledMachine()) {
+    std::string o20000 = shippedO20000();
+    std::size_t at = o20000.find(right);
+    EXPECT_NE(at, std::string::npos) << right;
+    if (at != std::string::npos) {
+        o20000.replace(at, right.size(), wrong);
+    }
+    std::string program = before + "T2\nM30\n" + o20000;
+    Scenario s{runProgram(std::move(cfg), program), 0};
+    std::size_t wrongAt = program.find(wrong.empty() ? "\n" : wrong);
+    s.line = static_cast<std::uint32_t>(std::count(program.begin(), program.begin() + static_cast<long>(wrongAt), '\n') + 1);
+    return s;
+}
+
+void expectCrash(const Scenario& s, const std::string& message) {
+    ASSERT_TRUE(s.run.report.alarm.has_value()) << "no crash";
+    EXPECT_EQ(s.run.report.alarm->code, AlarmCode::Crash) << s.run.alarmText();
+    EXPECT_EQ(s.run.report.alarm->file, s.run.fileName);
+    EXPECT_EQ(s.run.report.alarm->message, message);
+}
+
+TEST(MagazineCrash, TheShippedChangeRunsAndEveryToolEndsWhereItBelongs) {
+    Scenario s = change("", "");
+    EXPECT_RUN_OK(s.run);
+    EXPECT_EQ(s.run.report.tool, 2);
+    EXPECT_EQ(s.run.report.pockets.at(1), 1);
+    EXPECT_EQ(s.run.report.pockets.at(2), 0);
+    EXPECT_EQ(s.run.number(1300), 2);
+}
+
+TEST(MagazineCrash, ReturningTheToolToTheTargetsPocket) {
+    // the current tool's X taken from the target's pocket: T1 goes into pocket 2, where T2 is
+    Scenario s = change("G53 X#[1330+#1300-1] F#1311", "G53 X#[1330+#1-1] F#1311");
+    expectCrash(s, "T1 in the spindle ran into T2 in pocket 2 (moving from X110.000 Y60.000 Z-80.000 to X110.000 "
+                   "Y5.000 Z-80.000)");
+    EXPECT_EQ(s.run.report.alarm->line, s.line + 2); // the Y slide two lines further on
+}
+
+TEST(MagazineCrash, MovingXBeforeTheToolLeavesItsFork) {
+    Scenario s = change("G53 Y#1309 F#1313                   //slide the tool out", "G53 X0 F#1311 //wrong:");
+    expectCrash(s, "moved X while T2 was clamped in the fork of pocket 2: the fork and the tool are wrecked at "
+                   "X110.000 Y5.000 Z-80.000");
+    EXPECT_EQ(s.run.report.alarm->line, s.line);
+}
+
+TEST(MagazineCrash, ReleasingBeforeTheToolIsInItsPocketDropsIt) {
+    Scenario s = change("G53 Y#[1350+#1300-1] F#1313         //slide the tool into its fork (param 813)\n"
+                        "#[1552+#20-1] = 1                   //release (松刀)",
+                        "#[1552+#20-1] = 1 //wrong: released too early\n"
+                        "G53 Y#[1350+#1300-1] F#1313");
+    expectCrash(s, "T1 dropped: the drawbar was released at X50.000 Y60.000 Z-80.000 with no pocket under the tool "
+                   "(it fell onto the table)");
+    EXPECT_EQ(s.run.report.alarm->line, s.line);
+    EXPECT_EQ(s.run.report.tool, 0);
+}
+
+TEST(MagazineCrash, ComingDownOntoTheToolWithTheSpindleTurning) {
+    // no M05 and no wait: the spindle started by the program is still turning
+    Scenario s = change("M05                                 //stop the spindle\n"
+                        "WHILE [#[1520+#13-1] NE 0] DO1      //wait for IN07 = 0\n"
+                        "G04 P10\n"
+                        "END1",
+                        "", "M03 S1000\n");
+    expectCrash(s, "came down onto T2 in pocket 2 with the spindle turning: stop it (M05) and wait for it (M300) first");
+}
+
+TEST(MagazineCrash, AWrongChangeHeightParameterDropsTheTool) {
+    auto cfg = bundledMachine();
+    cfg.parameters.set(807, -60); // Z down 20 mm too high: the tool never reaches its fork
+    Scenario s = change("", "", "", cfg);
+    expectCrash(s, "T1 dropped: the drawbar was released at X50.000 Y5.000 Z-60.000 with no pocket under the tool "
+                   "(it fell onto the table)");
+}
+
+} // namespace
