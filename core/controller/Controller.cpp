@@ -106,6 +106,11 @@ void Controller::applySettings() {
 
 bool Controller::load(const std::string& path, std::string_view text, gcode::FileRole role,
                       const std::string& encoding) {
+    // Each load replaces the program (a panel loads one file after another, MDI line after line);
+    // the machine, the variables and the magazine carry on.
+    executor_.reset();
+    program_ = gcode::Program{};
+    diagnostics_.clear();
     gcode::Parser parser(*config_.dialect);
     parser.addFile(program_, path, text, role, encoding);
     for (const config::LibraryFile& library : config_.libraries) {
@@ -138,6 +143,7 @@ bool Controller::load(const std::string& path, std::string_view text, gcode::Fil
 }
 
 bool Controller::loadFile(const std::string& path) {
+    mdi_ = false;
     auto source = gcode::readSourceFile(path);
     if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
         diagnostics_.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, path, 0, 0, error->message});
