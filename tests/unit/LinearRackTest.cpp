@@ -113,3 +113,39 @@ TEST(LinearRack, RapidThroughTheMagazineZone) {
 }
 
 } // namespace
+
+namespace {
+
+// Top loading: tools go down into their forks and come up out of them.
+LinearRack topRack() {
+    LinearRack::Geometry g;
+    g.loading = LinearRack::Loading::Top;
+    g.forkDepth = 40;
+    g.pockets = {Vector3d(100, 400, -95), Vector3d(180, 400, -95)};
+    return LinearRack(g, {0, 2}, 1);
+}
+
+TEST(LinearRack, TopLoadingChange) {
+    LinearRack r = topRack();
+    EXPECT_FALSE(path(r, {{0, 0, 0}, {100, 400, 0}, {100, 400, -95}}));
+    EXPECT_FALSE(r.drawbar(true, {100, 400, -95}));
+    EXPECT_FALSE(path(r, {{100, 400, -95}, {100, 400, 0}, {180, 400, 0}, {180, 400, -95}}));
+    EXPECT_FALSE(r.drawbar(false, {180, 400, -95}));
+    EXPECT_FALSE(path(r, {{180, 400, -95}, {180, 400, 0}}));
+    EXPECT_EQ(r.spindleTool(), 2);
+    EXPECT_EQ(r.pocketTool(1), 1);
+    EXPECT_EQ(r.pocketTool(2), 0);
+}
+
+TEST(LinearRack, TopLoadingHeldToolMovingSidewaysLowHitsTheForks) {
+    LinearRack r = topRack();
+    EXPECT_EQ(path(r, {{0, 400, -80}, {300, 400, -80}}),
+              "T1 in the spindle hit the fork of pocket 1: a tool enters it along Z only (moving from X0.000 Y400.000 "
+              "Z-80.000 to X300.000 Y400.000 Z-80.000)");
+    LinearRack past = topRack();
+    EXPECT_EQ(path(past, {{150, 400, -80}, {300, 400, -80}}),
+              "T1 in the spindle ran into T2 in pocket 2 (moving from X150.000 Y400.000 Z-80.000 to X300.000 Y400.000 "
+              "Z-80.000)");
+}
+
+} // namespace

@@ -107,4 +107,17 @@ TEST(MagazineCrash, AWrongChangeHeightParameterDropsTheTool) {
                    "(it fell onto the table)");
 }
 
+TEST(MagazineCrash, TopLoadingWithTheChangeHeightTooLowHitsAFork) {
+    auto cfg = bundledMachine("m350-rack-top");
+    cfg.parameters.set(806, -70); // "Z up" 70 mm down: the tool travels at fork height
+    ProgramRun r = runProgram(std::move(cfg), lines({"T2", "M30"}));
+    ASSERT_TRUE(r.report.alarm.has_value());
+    EXPECT_EQ(r.report.alarm->code, AlarmCode::Crash);
+    EXPECT_EQ(r.report.alarm->message,
+              "T1 in the spindle hit the fork of pocket 1: a tool enters it along Z only (moving from X0.000 Y0.000 "
+              "Z-70.000 to X100.000 Y400.000 Z-70.000)");
+    EXPECT_EQ(r.report.alarm->file, "slib-g.nc");
+    EXPECT_EQ(r.report.alarm->line, 25u); // G53 X#[1330+#1300-1] Y#[1350+#1300-1] F#1311
+}
+
 } // namespace
