@@ -25,6 +25,8 @@ IF #1!= 0 GOTO57                    //target 0 is not a tool
 G04 P100
 GOTO4
 N57
+#2 = #880                           //where the change began (param 815 returns there)
+#3 = #881
 #20= 1                              //clamp/release output OUT01
 #11= 11                             //tool released input IN11 (1 = released)
 #12= 11                             //tool clamped: the same IN11 back at 0
@@ -56,10 +58,59 @@ G53 Y#1309 F#1313                   //slide the tool out of its fork to the pre-
 G53 Z#1306 F#1312                   //Z up
 N5
 #1300 = #1                          //the target is now the current tool: work Z uses its offset
-#1503 = 1000                        //clear the status line
+IF #1305 == 0 GOTO6                 //param 805: set the new tool on the fixed setter
+#1502 = 2
+M98 P502
+N6 IF #1315 == 0 GOTO7              //param 815: back to where the change began
+G53 Z#1306 F#1312
+G53 X#2 Y#3 F#1311
+N7 #1503 = 1000                     //clear the status line
 M99
 N4
 M99                                 //exits keep their message on the status line
+
+O502(对刀 tool setting: #1502 = 1 first fixed, 2 fixed after a change, 0 floating)
+// Written for M350 Studio after the firmware's flow: to the fixed setter (params 135-137, Z safe
+// height 141), #631 passes (param 131) of G31 down onto it, the first at param 132's speed and each
+// later one at half the speed before, and the average trip height (machine Z) stored: mode 2 as
+// the tool's Z offset (#[1430+T-1]); mode 1 also moves the work Z zero, which the M350 keeps
+// relative to the setter. Then back off by param 140.
+IF #1300 != 0 GOTO1
+#1503 = 1(当前刀位空刀不能对刀!)
+M99
+N1 IF #1502 == 0 GOTO90             //floating setter
+IF [#1076 == 0] + [#1075 < 1] GOTO91 //the fixed setter's input (params 575-577)
+G53 Z#641 F#1312                    //safe height first
+G53 X#635 Y#636 F#1311              //over the setter
+G53 Z#637 F#1312                    //where probing starts
+#20 = #632                          //speed of the first pass
+#21 = 0                             //sum of the trip heights
+#22 = 0                             //passes made
+WHILE [#22 LT #631] DO1
+G91 G31 Z-200 F#20 P#1075 L#1077 K0 Q1
+G90
+#21 = #21 + #1927                   //machine Z where it tripped
+G91 G01 Z2 F#20                     //off the setter
+G90
+#20 = #20 / 2
+#22 = #22 + 1
+END1
+#23 = #21 / #631                    //the average trip height
+IF #1502 == 2 GOTO2
+#24 = 807 + [#578 - 1] * 5          //mode 1: the active work system's Z, kept relative to the setter
+#[#24] = #[#24] - #23
+N2 #[1430+#1300-1] = #23            //the tool's Z offset
+G91 G00 Z#640                       //back off
+G90
+#1503 = 1(对刀完成!)
+M99
+N90 IF [#1079 == 0] + [#1078 < 1] GOTO92
+#1503 = 1(浮动对刀: this machine's O502 sets tools on the fixed setter only)
+M99
+N91 #1503 = 1(固定对刀信号未设置! the fixed setter input, params 575-577, is not set)
+M99
+N92 #1503 = 1(浮动对刀信号未设置! the floating setter input, params 578-580, is not set)
+M99
 
 // Canned drilling cycles (钻孔循环), as M350 handler programs O9000+n, written for M350 Studio.
 // The controller calls the handler for the cycle's first block and again for each later block that
