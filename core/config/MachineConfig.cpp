@@ -129,6 +129,15 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         }
         config.rack.openingY = opening == "+Y" ? 1.0 : -1.0;
         config.rack.forkDepth = t["magazine"]["fork_depth"].value_or(config.rack.forkDepth);
+        std::string carried = t["magazine"]["carried"].value_or(std::string("fixed"));
+        if (carried != "fixed" && carried != "gantry") {
+            fail(file, "[magazine] carried must be \"fixed\" or \"gantry\", not '" + carried + "'");
+        }
+        config.rack.onGantry = carried == "gantry";
+        config.rack.slideTravel = t["magazine"]["slide_travel"].value_or(config.rack.slideTravel);
+        if (config.rack.onGantry && config.rack.topLoading) {
+            fail(file, "[magazine] a rack carried on the gantry is loaded from the side (its slide moves the forks)");
+        }
         config.rack.tolerance = t["magazine"]["tolerance"].value_or(config.rack.tolerance);
     }
     if (auto distances = t["homing"]["switch_distance"].as_array()) {

@@ -46,9 +46,14 @@ struct MachineConfig {
     // zero-length tool) and reach; the tools' true lengths ([tools] length = [T1, T2, ...], mm).
     // The tool magazine as a device ([magazine] device = "linear-rack", loading = "side" | "top",
     // opening = "+Y" | "-Y", fork_depth, tolerance in mm); pockets come from params 830+/850+/870+.
+    // A rack carried on the gantry (carried = "gantry", 龙门架直排) keeps its place in Y beside the
+    // spindle; its forks reach the tools when the magazine slide (output of param 753) pushes them
+    // out by slide_travel mm.
     struct Rack {
         bool present = false;
         bool topLoading = false;
+        bool onGantry = false;
+        double slideTravel = 100.0;
         double openingY = 1.0;
         double forkDepth = 30.0;
         double tolerance = 1.0;

@@ -120,6 +120,7 @@ private:
     void watchInput(int pin, int level);
     void buildMagazine();
     void checkMagazine(const machine::MachineEvent& event);
+    Eigen::Vector3d noseForRack(const machine::Axes& position) const;
 
     config::MachineConfig config_;
     RunSettings settings_;
@@ -145,6 +146,7 @@ private:
     std::string programStop_;                        // see programStop()
     SensorWatch sensorWatch_;
     std::optional<devices::LinearRack> rack_; // the magazine, when the machine folder describes one
+    bool slideOut_ = false;                   // a gantry rack's slide (output of param 753)
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 };
 

@@ -18,6 +18,7 @@ constexpr int kPocketX = 830; // pocket k: X 830+k-1, Y 850+k-1, Z 870+k-1 (mach
 constexpr int kPocketY = 850;
 constexpr int kPocketZ = 870;
 constexpr int kDrawbarOutput = 750; // 刀具松开/锁紧输出 (M154/M155)
+constexpr int kSlideOutput = 753;   // 刀库推出/收回输出 (M152/M153)
 
 } // namespace
 
@@ -36,14 +37,28 @@ void Controller::buildMagazine() {
     const int inSpindle = saturatingInt(p.get(param::kCurrentTool));
     std::vector<int> tools;
     for (int k = 1; k <= capacity; ++k) {
-        Eigen::Vector3d at(p.get(kPocketX + k - 1), p.get(kPocketY + k - 1), p.get(kPocketZ + k - 1));
-        if (at.isZero()) {
+        // On the gantry the forks stand beside the spindle in Y: Y 0 is "slide out", the travel "in".
+        double y = config_.rack.onGantry ? 0.0 : p.get(kPocketY + k - 1);
+        Eigen::Vector3d at(p.get(kPocketX + k - 1), y, p.get(kPocketZ + k - 1));
+        if (at.isZero() || (config_.rack.onGantry && at.x() == 0.0 && at.z() == 0.0)) {
             break; // no position set: the rack ends here, whatever param 801 says
         }
         g.pockets.push_back(at);
         tools.push_back(k == inSpindle ? 0 : k); // every tool has its own pocket
     }
-    rack_.emplace(std::move(g), std::move(tools), inSpindle >= 1 && inSpindle <= capacity ? inSpindle : 0);
+    slideOut_ = false;
+    const int spindle = inSpindle >= 1 && inSpindle <= static_cast<int>(tools.size()) ? inSpindle : 0;
+    rack_.emplace(std::move(g), std::move(tools), spindle);
+}
+
+// Where the spindle nose stands as the rack sees it. A rack on the gantry moves in Y with the
+// spindle, so only its slide changes the Y between them.
+Eigen::Vector3d Controller::noseForRack(const machine::Axes& position) const {
+    Eigen::Vector3d nose = position.head<3>();
+    if (config_.rack.onGantry) {
+        nose.y() = slideOut_ ? 0.0 : config_.rack.slideTravel;
+    }
+    return nose;
 }
 
 void Controller::checkMagazine(const machine::MachineEvent& event) {
@@ -53,13 +68,19 @@ void Controller::checkMagazine(const machine::MachineEvent& event) {
     case Type::Rapid:
     case Type::Feed:
     case Type::Arc:
-        crash = rack_->move(event.from.head<3>(), event.to.head<3>(), event.type == Type::Rapid,
+        crash = rack_->move(noseForRack(event.from), noseForRack(event.to), event.type == Type::Rapid,
                             machine_.spindleTurning());
         break;
     case Type::Io: {
         config::PortAssignment drawbar = config::portAssignment(config_.parameters, kDrawbarOutput);
+        config::PortAssignment slide = config::portAssignment(config_.parameters, kSlideOutput);
         if (event.port > 0 && drawbar.wired() && event.port == drawbar.pin) {
-            crash = rack_->drawbar(event.level == drawbar.activeLevel, machine_.position().head<3>());
+            crash = rack_->drawbar(event.level == drawbar.activeLevel, noseForRack(machine_.position()));
+        } else if (config_.rack.onGantry && event.port > 0 && slide.wired() && event.port == slide.pin) {
+            // the slide carries the forks to the spindle or away: a move along Y between them
+            const Eigen::Vector3d from = noseForRack(machine_.position());
+            slideOut_ = event.level == slide.activeLevel;
+            crash = rack_->move(from, noseForRack(machine_.position()), false, machine_.spindleTurning());
         }
         break;
     }

@@ -107,6 +107,31 @@ TEST(MagazineCrash, AWrongChangeHeightParameterDropsTheTool) {
                    "(it fell onto the table)");
 }
 
+TEST(MagazineCrash, FollowRowSlideOutBeforeTheToolIsDownThenComingDownOntoTheFork) {
+    // the follow-row O20000 with the slide pushed out while the tool is still up: the tool then
+    // comes down onto the fork from above
+    std::ifstream in(config::bundledMachinesDirectory() + "/m350-follow-row/slib-g.nc");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string o20000 = text.str().substr(text.str().find("\nO20000(") + 1);
+    const std::string down = "G53 Z#[1370+#1300-1] F#1319         //down to fork height, the slide still in\n";
+    const std::string out = "M300                                //the spindle has stopped\n"
+                            "M152                                //slide out: the fork takes the tool\n"
+                            "M303\n";
+    ASSERT_NE(o20000.find(down + out), std::string::npos);
+    o20000.replace(o20000.find(down + out), (down + out).size(), out + down);
+    std::string program = "T2\nM30\n" + o20000;
+    ProgramRun r = runProgram(bundledMachine("m350-follow-row"), program);
+    ASSERT_TRUE(r.report.alarm.has_value());
+    EXPECT_EQ(r.report.alarm->code, AlarmCode::Crash);
+    EXPECT_EQ(r.report.alarm->message, "T1 in the spindle hit the fork of pocket 1: a tool enters it along Y only "
+                                       "(moving from X100.000 Y0.000 Z0.000 to X100.000 Y0.000 Z-90.000)");
+    auto lineOf = [&](const std::string& text) {
+        return static_cast<std::uint32_t>(std::count(program.begin(), program.begin() + static_cast<long>(program.find(text)), '\n') + 1);
+    };
+    EXPECT_EQ(r.report.alarm->line, lineOf(down));
+}
+
 TEST(MagazineCrash, TopLoadingWithTheChangeHeightTooLowHitsAFork) {
     auto cfg = bundledMachine("m350-rack-top");
     cfg.parameters.set(806, -70); // "Z up" 70 mm down: the tool travels at fork height
