@@ -11,6 +11,7 @@ inline constexpr int kRapidSpeed = 63;             // G00 speed, mm/min
 inline constexpr int kMaxSpeed = 64;               // maximum speed, mm/min
 inline constexpr int kSpindleStartDelay = 81;      // s, the program waits for the spindle to reach speed
 inline constexpr int kMaxSpindleRpm = 82;
+inline constexpr int kDefaultSpindleSpeed = 85;    // rpm for M3/M4 before any S, and the spindle jog key
 inline constexpr int kSpindleStopDelay = 89;       // s, the spindle coasts to a stop
 inline constexpr int kRapidAcceleration = 282;     // G00 acceleration, mm/s^2 (0: use 62)
 inline constexpr int kSpindleStoppedInput = 620;   // input triple: pin, enable, active level (M300)

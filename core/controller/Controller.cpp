@@ -88,6 +88,9 @@ void Controller::applySettings() {
             interp_.state().selectedTool = *settings_.tool;
         }
     }
+    // the modal defaults that come from parameters, after --param
+    interp_.state().feed = config_.parameters.get(param::kDefaultFeed);
+    interp_.state().spindleSpeed = config_.parameters.get(param::kDefaultSpindleSpeed);
     configureMachine();
     buildMagazine();
     syncToolLength();

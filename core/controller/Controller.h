@@ -81,6 +81,13 @@ public:
     // between the setter and the workpiece and every set tool then cuts at the same Z.
     void zeroWorkAxis(int axis);
 
+    // The spindle as the panel shows it: STOP FWD REV ORIENT, JOG while the spindle jog key turns
+    // it, TAP while a tapping cycle (G84/G74) is active and it turns.
+    machine::SpindleState spindleDisplay() const;
+    // The panel's spindle jog key (主轴点动): turns the spindle at param 85's speed, or stops it.
+    // Refused (false) while a program runs.
+    bool spindleJog(bool on);
+
     // Fault injection for training: input `pin` (1-24) stuck, delayed or bouncing from now on;
     // nullopt takes the fault off. `RunSettings::heldInputs` puts stuck faults on before a run.
     void setInputFault(int pin, std::optional<machine::InputFault> fault) { machine_.setInputFault(pin, fault); }

@@ -99,6 +99,25 @@ void Controller::reset() {
     }
 }
 
+machine::SpindleState Controller::spindleDisplay() const {
+    machine::SpindleState state = machine_.spindleState();
+    const int cycle = interp_.state().group(9);
+    bool turning = state == machine::SpindleState::Forward || state == machine::SpindleState::Reverse;
+    return turning && (cycle == 84 || cycle == 74) ? machine::SpindleState::Tap : state;
+}
+
+bool Controller::spindleJog(bool on) {
+    if (state_ == RunState::Running || state_ == RunState::Hold) {
+        return false;
+    }
+    if (on) {
+        machine_.spindle(machine::SpindleState::Jog, config_.parameters.get(param::kDefaultSpindleSpeed));
+    } else if (machine_.spindleState() == machine::SpindleState::Jog) {
+        machine_.spindle(machine::SpindleState::Stop, 0.0);
+    }
+    return true;
+}
+
 void Controller::emergencyStop() {
     machine_.interrupt(displayTime_, true);
     if (machine_.time() < displayTime_) {

@@ -58,6 +58,7 @@ ModalInterpreter::ModalInterpreter(const gcode::Dialect& dialect, config::Parame
                                    machine::MachineInterface& machine)
     : dialect_(dialect), parameters_(parameters), offsets_(offsets), toolOffsets_(toolOffsets), machine_(machine) {
     state_.feed = parameters_.get(param::kDefaultFeed);
+    state_.spindleSpeed = parameters_.get(param::kDefaultSpindleSpeed); // M3 before any S
 }
 
 int ModalInterpreter::currentTool() const {
