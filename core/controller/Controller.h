@@ -81,6 +81,10 @@ public:
     // between the setter and the workpiece and every set tool then cuts at the same Z.
     void zeroWorkAxis(int axis);
 
+    // The panel's feed override (进给倍率) in percent, from 0 up to param 295 (150 % when it is 0);
+    // G00 follows it when param 253 = 1. Returns the percentage in effect.
+    double setFeedOverride(double percent);
+
     // The spindle as the panel shows it: STOP FWD REV ORIENT, JOG while the spindle jog key turns
     // it, TAP while a tapping cycle (G84/G74) is active and it turns.
     machine::SpindleState spindleDisplay() const;

@@ -4,6 +4,7 @@
 #include "core/config/ParameterNumbers.h"
 #include "core/machine/ArcGeometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace m350::controller {
@@ -97,6 +98,13 @@ void Controller::reset() {
     if (trace_) {
         trace_->runState(displayTime_, "reset");
     }
+}
+
+double Controller::setFeedOverride(double percent) {
+    double maximum = config_.parameters.get(param::kMaxFeedOverride);
+    double applied = std::clamp(percent, 0.0, maximum > 0.0 ? maximum : 150.0);
+    machine_.setFeedOverride(applied / 100.0, config_.parameters.get(param::kOverrideActsOnRapids) != 0.0);
+    return applied;
 }
 
 machine::SpindleState Controller::spindleDisplay() const {

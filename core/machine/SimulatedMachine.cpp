@@ -11,7 +11,7 @@ void SimulatedMachine::notify(const MachineEvent& event) {
 }
 
 void SimulatedMachine::setFeedOverride(double factor, bool rapidToo) {
-    feedOverride_ = std::clamp(factor, 0.0, 1.5);
+    feedOverride_ = std::clamp(factor, 0.0, 3.0); // the panel's limit is param 295 (50-300 %)
     rapidOverride_ = rapidToo;
 }
 

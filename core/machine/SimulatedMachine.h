@@ -44,7 +44,8 @@ public:
     void setInput(int port, int level);
     // The level an input reads at power-on (a released switch), before anything happens.
     void presetInput(int port, int level) { inputs_[static_cast<std::size_t>(port - 1)] = level; }
-    // Feed override 0..1.5 (the panel's 进给倍率); `rapidToo` when param 253 lets it slow G00.
+    // Feed override as a factor (the panel's 进给倍率, at most 3); `rapidToo` when param 253 lets it
+    // act on G00. It applies to the moves issued from then on.
     void setFeedOverride(double factor, bool rapidToo);
 
     void rapid(const Axes& target) override;

@@ -88,3 +88,32 @@ TEST(RunControl, EmergencyStopIsAnAlarmWithEverythingOff) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(RunControl, FeedOverrideScalesFeedsUpToParam295AndRapidsWhenParam253Says) {
+    auto cfg = m350Machine();
+    cfg.parameters.set(62, 1e9); // no measurable ramps
+    cfg.parameters.set(282, 1e9);
+    cfg.parameters.set(63, 6000);
+    cfg.parameters.set(64, 100000);
+    cfg.parameters.set(295, 120);
+    auto timeOf = [&](const std::string& move, double percent, bool rapids) {
+        auto c = cfg;
+        c.parameters.set(253, rapids ? 1 : 0);
+        controller::Controller controller(std::move(c), controller::RunSettings{});
+        EXPECT_TRUE(controller.loadMdi({move}));
+        double applied = controller.setFeedOverride(percent);
+        controller::RunReport r = controller.run();
+        return std::make_pair(applied, r.simTime);
+    };
+    EXPECT_NEAR(timeOf("G01 X100 F600", 100, false).second, 10.0, 1e-3);
+    EXPECT_NEAR(timeOf("G01 X100 F600", 50, false).second, 20.0, 1e-3);
+    auto capped = timeOf("G01 X100 F600", 200, false);
+    EXPECT_EQ(capped.first, 120); // param 295
+    EXPECT_NEAR(capped.second, 10.0 / 1.2, 1e-3);
+    EXPECT_NEAR(timeOf("G00 X100", 50, false).second, 1.0, 1e-3); // G00 at param 63: 100 mm/s
+    EXPECT_NEAR(timeOf("G00 X100", 50, true).second, 2.0, 1e-3);
+}
+
+} // namespace
