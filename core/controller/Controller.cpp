@@ -204,6 +204,7 @@ void Controller::enterSafeState() {
 }
 
 RunReport Controller::run() {
+    pressStartWhenAwaited_ = true;
     start();
     while (state_ == RunState::Running) {
         advance(std::numeric_limits<double>::infinity());
@@ -213,6 +214,7 @@ RunReport Controller::run() {
             resume();
         }
     }
+    pressStartWhenAwaited_ = false;
     return snapshot();
 }
 
@@ -342,7 +344,11 @@ void Controller::zeroWorkAxis(int axis) {
 
 int Controller::spindleTool() const {
     if (rack_) {
-        return rack_->spindleTool(); // what the spindle really holds
+        // what the spindle really holds; a virtual tool (above the magazine) was put in by hand,
+        // which the rack does not see
+        int believed = saturatingInt(config_.parameters.get(param::kCurrentTool));
+        bool virtualTool = believed > rack_->pocketCount() && rack_->spindleTool() == 0;
+        return virtualTool ? believed : rack_->spindleTool();
     }
     return config_.dialect->id == gcode::DialectId::M350 ? saturatingInt(config_.parameters.get(param::kCurrentTool))
                                                          : fanucSpindleTool_;

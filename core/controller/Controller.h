@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/config/IoPorts.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
@@ -129,6 +130,7 @@ private:
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
     bool optionalStopOn();
     void watchInput(int pin, int level);
+    void pressStartIfAwaited(const config::PortAssignment& key, int pin, int level, const gcode::SourceLocation& where);
     void buildMagazine();
     void checkMagazine(const machine::MachineEvent& event);
     Eigen::Vector3d noseForRack(const machine::Axes& position) const;
@@ -156,6 +158,7 @@ private:
     double liftedBy_ = 0.0;                          // Z lift of the hold (param 91, 70)
     std::string programStop_;                        // see programStop()
     SensorWatch sensorWatch_;
+    bool pressStartWhenAwaited_ = false; // run(): no operator, the controller presses START
     std::optional<devices::LinearRack> rack_; // the magazine, when the machine folder describes one
     bool slideOut_ = false;                   // a gantry rack's slide (output of param 753)
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;

@@ -17,6 +17,9 @@ bool operatorInput(const std::optional<config::PortAssignment>& a) {
     return a && a->function->parameter >= 581 && a->function->parameter <= 605;
 }
 
+constexpr int kExternStart = 599;
+constexpr double kKeyPress = 0.3; // how long a pressed key stays down, s
+
 std::string seconds(double s) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.1f", s);
@@ -30,7 +33,12 @@ void Controller::watchInput(int pin, int level) {
         return;
     }
     auto where = executor_->location();
-    if (!where || operatorInput(config::inputOnPin(config_.parameters, pin))) {
+    auto function = config::inputOnPin(config_.parameters, pin);
+    if (!where) {
+        return;
+    }
+    if (operatorInput(function)) {
+        pressStartIfAwaited(*function, pin, level, *where);
         return;
     }
     switch (sensorWatch_.read(pin, level, machine_.time(), *where, settings_.sensorTimeout)) {
@@ -50,6 +58,21 @@ void Controller::watchInput(int pin, int level) {
         throw macro::MacroError{AlarmCode::SensorTimeout, std::move(what), 0};
     }
     }
+}
+
+// A run without an operator (run()) presses the extern START key when a macro waits for it, as
+// the operator would after doing what the prompt asked, and says so.
+void Controller::pressStartIfAwaited(const config::PortAssignment& key, int pin, int level,
+                                     const gcode::SourceLocation& where) {
+    if (!pressStartWhenAwaited_ || key.function->parameter != kExternStart || level == key.activeLevel) {
+        return;
+    }
+    if (sensorWatch_.read(pin, level, machine_.time(), where, 1e300) != SensorWatch::Verdict::WaitBegins) {
+        return;
+    }
+    machine_.pulseInput(pin, key.activeLevel, kKeyPress);
+    postMessage("外部启动 extern START (" + config::inputName(pin) + ") pressed at " + program_.fileName(where) + ":" +
+                std::to_string(where.line) + " (run without an operator)");
 }
 
 std::optional<Controller::SensorWait> Controller::sensorWait() const {

@@ -234,6 +234,9 @@ ProbeResult SimulatedMachine::probe(const Axes& target, double feed, int port, i
 
 SimulatedMachine::Signal SimulatedMachine::signalAt(int port, double t) const {
     auto index = static_cast<std::size_t>(port - 1);
+    if (const Pulse& pulse = pulses_[index]; t >= pulse.from && t < pulse.until) {
+        return {pulse.level, 1 - pulse.level, pulse.from};
+    }
     if (port == setter_.port && setter_.port != 0) {
         int level = setterPressed(positionAt(t)) ? setter_.activeLevel : 1 - setter_.activeLevel;
         return {level, 1 - level, -1e300};

@@ -42,6 +42,10 @@ public:
     }
     // A sensor the simulated world drives (a home switch); traced as an io event on INnn.
     void setInput(int port, int level);
+    // A key pressed for a while: the input reads `level` from now for `seconds`, then what drives it.
+    void pulseInput(int port, int level, double seconds) {
+        pulses_[static_cast<std::size_t>(port - 1)] = Pulse{level, time_, time_ + seconds};
+    }
     // The level an input reads at power-on (a released switch), before anything happens.
     void presetInput(int port, int level) { inputs_[static_cast<std::size_t>(port - 1)] = level; }
     // Feed override as a factor (the panel's 进给倍率, at most 3); `rapidToo` when param 253 lets it
@@ -124,6 +128,12 @@ private:
     std::array<int, kInputCount> inputs_{};
     std::array<std::optional<InputFault>, kInputCount> faults_{};
     std::array<double, kInputCount> inputChangedAt_{};
+    struct Pulse {
+        int level = 0;
+        double from = 0.0;
+        double until = -1.0;
+    };
+    std::array<Pulse, kInputCount> pulses_{};
     // An input's level at virtual time t as what drives it says, with its last change.
     struct Signal {
         int level = 0;

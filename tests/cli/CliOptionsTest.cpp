@@ -157,7 +157,7 @@ TEST_F(CliTest, SensorTimeoutStopsAWaitForAStuckInput) {
     EXPECT_EQ(r.exitStatus, kExitAlarm);
     json j = output(r);
     EXPECT_EQ(j["alarm"].value("code", ""), "sensor_timeout");
-    EXPECT_EQ(j["alarm"].value("message", ""), "IN11 (tool released) never became 1: waited 2.0 s at slib-g.nc:45");
+    EXPECT_EQ(j["alarm"].value("message", ""), "IN11 (tool released) never became 1: waited 2.0 s at slib-g.nc:46");
     EXPECT_EQ(sim({"mdi", "T2", "--sensor-timeout", "0"}).exitStatus, kExitUsage);
 }
 

@@ -53,17 +53,17 @@ TEST(ActuatorMacros, ADisabledFunctionIsSkipped) {
 
 TEST(ActuatorMacros, EveryActuatorAndWaitUsesItsOwnPorts) {
     auto cfg = bundledMachine();
-    // dust cover on OUT05 -> IN05, magazine slide on OUT06 -> IN06 (out) and IN08 (in, active 0)
-    for (auto [param, pin, level] : {std::tuple{762, 5, 1}, {753, 6, 1}, {632, 5, 1}, {629, 6, 1}, {697, 8, 0}}) {
+    // dust cover on OUT05 -> IN09, magazine slide on OUT06 -> IN06 (out) and IN08 (in, active 0)
+    for (auto [param, pin, level] : {std::tuple{762, 5, 1}, {753, 6, 1}, {632, 9, 1}, {629, 6, 1}, {697, 8, 0}}) {
         cfg.parameters.set(param, pin);
         cfg.parameters.set(param + 1, 1);
         cfg.parameters.set(param + 2, level);
     }
-    cfg.ioLinks.push_back({5, 5, 0.4, false});
+    cfg.ioLinks.push_back({5, 9, 0.4, false});
     cfg.ioLinks.push_back({6, 6, 1.0, false});
     cfg.ioLinks.push_back({6, 8, 1.0, false}); // magazine-in sensor reads 0 while the slide is in
-    ProgramRun r = runProgram(cfg, lines({"M150", "M305", "#100 = #1556", "M152", "M303", "#101 = #1557", "M153",
-                                          "M304", "M151", "M306", "#102 = #1556", "M30"}));
+    ProgramRun r = runProgram(cfg, lines({"M150", "M305", "#100 = #1528", "M152", "M303", "#101 = #1557", "M153",
+                                          "M304", "M151", "M306", "#102 = #1528", "M30"}));
     EXPECT_RUN_OK(r);
     EXPECT_EQ(r.number(100), 1);
     EXPECT_EQ(r.number(101), 1);

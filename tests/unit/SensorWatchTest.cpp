@@ -73,10 +73,24 @@ TEST(SensorWatch, WaitingForTheOperatorIsNoFault) {
     cfg.parameters.set(599, 5);
     cfg.parameters.set(600, 1);
     cfg.parameters.set(601, 1);
-    controller::RunSettings settings;
-    settings.maxSimTime = 30;
-    ProgramRun r = runProgram(cfg, kWaitForClamp, settings);
-    EXPECT_EQ(r.report.alarm->code, AlarmCode::SimulatedTimeLimit) << r.alarmText();
+    controller::Controller c(cfg, controller::RunSettings{});
+    ASSERT_TRUE(c.loadFile(writeTempFile(kWaitForClamp)));
+    ASSERT_TRUE(c.start());
+    EXPECT_EQ(c.advance(60.0), controller::Controller::RunState::Running); // still waiting, no alarm
+    EXPECT_FALSE(c.sensorWait().has_value());
+}
+
+TEST(SensorWatch, ARunWithoutAnOperatorPressesStartWhenAMacroWaitsForIt) {
+    auto cfg = m350Machine();
+    cfg.parameters.set(599, 5);
+    cfg.parameters.set(600, 1);
+    cfg.parameters.set(601, 1);
+    ProgramRun r = runProgram(cfg, lines({"WHILE [#1524 NE 1] DO1", "G04 P10", "END1", "WHILE [#1524 EQ 1] DO2",
+                                          "G04 P10", "END2", "M30"}));
+    EXPECT_RUN_OK(r);
+    ASSERT_EQ(r.report.messages.size(), 1u);
+    EXPECT_EQ(r.report.messages[0], "外部启动 extern START (IN05) pressed at " + r.fileName + ":1 (run without an operator)");
+    EXPECT_NEAR(r.report.simTime, 0.01 + 0.3, 0.03); // pressed after the first poll, let go 0.3 s later
 }
 
 } // namespace

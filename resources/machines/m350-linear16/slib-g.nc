@@ -7,7 +7,7 @@
 //  - the spindle is stopped (M05) before waiting for its stopped signal, as step 2 of the flow says
 
 O20000(换刀程序 T-code tool change)
-IF #1>[#1301] GOTO4                 //target above the magazine capacity: nothing to do
+IF #1>[#1301+20*#1303] GOTO4        //above the magazine (and, with param 803, the virtual tools)
 IF #1300==#1 GOTO4                  //target already in the spindle
 (判断XYZ是否回过参考点 are X Y Z homed?)
 IF [#1515+#1516+#1517]>=3 GOTO50    //all homed: go on at N50
@@ -35,6 +35,7 @@ M05                                 //stop the spindle
 WHILE [#[1520+#13-1] NE 0] DO1      //wait for IN07 = 0
 G04 P10
 END1
+IF #1300 > #1301 GOTO70             //a virtual tool in the spindle: the operator takes it out
 G53 Z#1306 F#1312                   //Z up to the change height (param 806) at param 812
 G53 Y#1309 F#1311                   //to the Y pre-point (param 809)
 G53 X#[1330+#1300-1] F#1311         //to the X of the current tool's pocket
@@ -46,6 +47,7 @@ WHILE [#[1520+#11-1] NE 1] DO2      //wait for IN11 = 1
 G04 P10
 END2
 G53 Z#1306 F#1312                   //up, leaving the tool in its pocket
+N71 IF #1 > #1301 GOTO72            //a virtual target: the operator puts it in
 G53 X#[1330+#1-1] Y#[1350+#1-1] F#1311 //above the target tool
 G53 Z[#1307+40] F#1312              //quickly to 40 mm above the change height
 G53 Z#1307 F#1313                   //slowly onto the tool
@@ -66,8 +68,44 @@ G53 Z#1306 F#1312
 G53 X#2 Y#3 F#1311
 N7 #1503 = 1000                     //clear the status line
 M99
+N70 M98 P20001 X#1300 Y0            //out by hand at the manual change place
+IF #50 < 0 GOTO4
+GOTO71
+N72 M98 P20001 X#1 Y1               //in by hand
+IF #50 GE 0 GOTO5
+#1300 = 0                           //no START key: the spindle stays empty, its tool went home
+GOTO4
 N4
 M99                                 //exits keep their message on the status line
+
+O20001(虚拟刀 a virtual tool changed by hand: X#1 the tool, Y#2 0 take it out, 1 put it in)
+// Written for M350 Studio after the firmware's flow: to the manual change place (params 816-818),
+// a prompt, then the extern START key (params 599-601) pressed and let go. #50 says how it went:
+// 0 done, -1 no START key wired.
+#50 = 0
+G53 Z#1318 F#1312
+G53 X#1316 Y#1317 F#1311
+#1510 = #1
+IF #2 == 1 GOTO1
+M154                                //release: the operator takes the tool out
+M301
+#1503 = 1(请取下虚拟刀[T%.0f]后,按外部启动键!)
+GOTO2
+N1 #1503 = 1(请手动更换虚拟刀号[T%.0f]后,按外部启动键进行自动对刀!)
+N2 IF [#1100 == 0] + [#1099 < 1] GOTO9
+WHILE [#[1520+#1099-1] NE #1101] DO1 //wait for START
+G04 P10
+END1
+WHILE [#[1520+#1099-1] EQ #1101] DO2 //and for its release
+G04 P10
+END2
+IF #2 == 0 GOTO3
+M155                                //clamp the tool the operator put in
+M302
+N3 M99
+N9 #50 = -1
+#1503 = 1(外部启动键未设置! extern START, params 599-601, is not set)
+M99
 
 O502(对刀 tool setting: #1502 = 1 first fixed, 2 fixed after a change, 0 floating)
 // Written for M350 Studio after the firmware's flow: to the fixed setter (params 135-137, Z safe
