@@ -4,12 +4,12 @@
 #   g1    200,000 lines `G1 X.. Y.. Z.. F1000` (parse + execute)            target: >= 20x rs274
 #   loop  a 200,000-iteration WHILE loop with arithmetic, SIN and SQRT      target: >= 20x rs274
 # Each program is first run once untimed to prove it really executes (rs274's canonical calls are
-# counted; m350-sim must exit 0 and end where the program says), then timed best of 3 as whole
+# counted; m350-sim must exit 0 and end where the program says), then timed best of 5 as whole
 # processes (start-up included, output to /dev/null).
 #
 # Usage: tests/bench/compare_rs274.sh [path/to/m350-sim]     (default: build/app/m350-sim)
 # Environment: RS274 (default: rs274 on PATH), M350_BENCH_LINES, M350_BENCH_ITERATIONS,
-#              M350_BENCH_REPEAT (default 3).
+#              M350_BENCH_REPEAT (default 5).
 # Exit status: 0 when the comparison ran (whatever the ratios) or rs274 is not installed;
 #              1 when a program did not run correctly; 2 on a usage or set-up problem.
 set -euo pipefail
@@ -20,7 +20,7 @@ repo_root=$(cd -- "$script_dir/../.." && pwd)
 sim=${1:-$repo_root/build/app/m350-sim}
 lines=${M350_BENCH_LINES:-200000}
 iterations=${M350_BENCH_ITERATIONS:-200000}
-repeat=${M350_BENCH_REPEAT:-3}
+repeat=${M350_BENCH_REPEAT:-5}
 target=20
 
 rs274=${RS274:-$(command -v rs274 || true)}
