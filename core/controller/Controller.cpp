@@ -177,7 +177,20 @@ TraceSource Controller::source() const {
 
 void Controller::onMachineEvent(const machine::MachineEvent& event) {
     if (trace_) {
-        trace_->machineEvent(event, source());
+        // an input an IoLink drives changes because of the output switch that came before it
+        TraceSource where = source();
+        if (event.type == machine::MachineEvent::Type::Io && event.port < 0) {
+            if (auto it = linkedInputSource_.find(-event.port); it != linkedInputSource_.end()) {
+                where = it->second;
+            }
+        } else if (event.type == machine::MachineEvent::Type::Io) {
+            for (const machine::IoLink& link : config_.ioLinks) {
+                if (link.output == event.port) {
+                    linkedInputSource_[link.input] = where;
+                }
+            }
+        }
+        trace_->machineEvent(event, where);
     }
     if (rack_ && state_ != RunState::Alarm && state_ != RunState::EStop) {
         checkMagazine(event);
@@ -215,6 +228,9 @@ RunReport Controller::run() {
         }
     }
     pressStartWhenAwaited_ = false;
+    if (trace_) {
+        machine_.reportLinkedInputs(machine_.time());
+    }
     return snapshot();
 }
 

@@ -16,6 +16,7 @@
 #include "core/macro/VariableStore.h"
 
 #include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -161,6 +162,7 @@ private:
     bool pressStartWhenAwaited_ = false; // run(): no operator, the controller presses START
     std::optional<devices::LinearRack> rack_; // the magazine, when the machine folder describes one
     bool slideOut_ = false;                   // a gantry rack's slide (output of param 753)
+    std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 };
 

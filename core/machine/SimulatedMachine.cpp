@@ -6,7 +6,39 @@ namespace m350::machine {
 
 void SimulatedMachine::notify(const MachineEvent& event) {
     if (observer_) {
+        reportLinkedInputs(event.start);
         observer_->onMachineEvent(event);
+    }
+}
+
+// An input an IoLink drives changes after the link's delay; it is reported when the clock reaches
+// that moment, so observers see every event in time order.
+void SimulatedMachine::reportLinkedInputs(double upTo) {
+    while (!pendingInputs_.empty() && pendingInputs_.front().start <= upTo) {
+        MachineEvent event = pendingInputs_.front();
+        pendingInputs_.erase(pendingInputs_.begin());
+        observer_->onMachineEvent(event);
+    }
+}
+
+void SimulatedMachine::scheduleLinkedInputs(int output) {
+    for (const IoLink& link : links_) {
+        if (link.output != output) {
+            continue;
+        }
+        // a later switch of the output cancels a change its input has not shown yet
+        std::erase_if(pendingInputs_, [&link](const MachineEvent& e) { return e.port == -link.input; });
+        if (faults_[static_cast<std::size_t>(link.input - 1)]) {
+            continue; // a faulty sensor does not follow its actuator
+        }
+        MachineEvent event;
+        event.type = MachineEvent::Type::Io;
+        event.start = event.end = time_ + link.delay;
+        event.port = -link.input;
+        event.level = signalAt(link.input, event.start).level;
+        auto at = std::upper_bound(pendingInputs_.begin(), pendingInputs_.end(), event,
+                                   [](const MachineEvent& a, const MachineEvent& b) { return a.start < b.start; });
+        pendingInputs_.insert(at, event);
     }
 }
 
@@ -182,6 +214,9 @@ void SimulatedMachine::setOutput(int port, int level) {
     event.port = port;
     event.level = level;
     notify(event);
+    if (observer_) {
+        scheduleLinkedInputs(port);
+    }
 }
 
 void SimulatedMachine::setInput(int port, int level) {

@@ -76,6 +76,9 @@ public:
     double spindleRpm() const override { return rpm_; }
     bool coolantOn() const override { return coolant_; }
 
+    // Reports the changes of linked inputs due up to virtual time t (the rest come with later events).
+    void reportLinkedInputs(double upTo);
+
     // Where the axes were at virtual time t (inside the last move, or at rest).
     Axes positionAt(double t) const;
 
@@ -142,6 +145,8 @@ private:
     };
     Signal signalAt(int port, double t) const;
     std::vector<IoLink> links_;
+    std::vector<MachineEvent> pendingInputs_; // linked input changes not yet due, in time order
+    void scheduleLinkedInputs(int output);
     SpindleStoppedSensor spindleSensor_;
     ToolSetter setter_;
     double toolLength_ = 0.0;

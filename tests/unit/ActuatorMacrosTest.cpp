@@ -111,3 +111,28 @@ TEST(ActuatorMacros, AnAlarmDrivesEveryOutputToItsInactiveLevel) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(ActuatorMacros, TheTraceShowsTheSensorAnsweringItsActuator) {
+    std::ostringstream trace;
+    controller::RunSettings settings = emptySpindle();
+    settings.trace = &trace;
+    ProgramRun r = runProgram(bundledMachine(), lines({"M154", "M301", "M155", "M302", "M30"}), settings);
+    EXPECT_RUN_OK(r);
+    std::vector<std::string> io;
+    std::istringstream in(trace.str());
+    for (std::string line; std::getline(in, line);) {
+        if (line.find(R"("type":"io")") != std::string::npos) {
+            io.push_back(line);
+        }
+    }
+    ASSERT_EQ(io.size(), 4u) << trace.str();
+    // OUT01 from M154 (slib-m.nc:34), then IN11 150 ms later, credited to the same line
+    EXPECT_NE(io[0].find(R"("level":1,"line":34,"port":"OUT01","t":0.0003)"), std::string::npos) << io[0];
+    EXPECT_NE(io[1].find(R"("level":1,"line":34,"port":"IN11","t":0.1503)"), std::string::npos) << io[1];
+    EXPECT_NE(io[2].find(R"("port":"OUT01")"), std::string::npos) << io[2];
+    EXPECT_NE(io[3].find(R"("level":0,"line":39,"port":"IN11")"), std::string::npos) << io[3];
+}
+
+} // namespace
