@@ -9,6 +9,8 @@
 namespace m350::config {
 namespace {
 
+constexpr int kInputPins = 24; // IN01-IN24
+
 // The IO page's functions (parameter catalogue, group "IO"): short names for messages.
 constexpr IoFunction kFunctions[] = {
     {500, true, "X servo alarm", "X轴驱动器报警"},
@@ -119,6 +121,14 @@ PortAssignment portAssignment(const ParameterTable& parameters, int functionPara
     a.pin = saturatingInt(parameters.get(functionParameter));
     a.enabled = parameters.get(functionParameter + 1) != 0.0;
     a.activeLevel = parameters.get(functionParameter + 2) != 0.0 ? 1 : 0;
+    return a;
+}
+
+std::optional<PortAssignment> wiredInput(const ParameterTable& parameters, int functionParameter) {
+    PortAssignment a = portAssignment(parameters, functionParameter);
+    if (!a.wired() || a.pin > kInputPins) {
+        return std::nullopt;
+    }
     return a;
 }
 

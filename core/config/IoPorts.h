@@ -32,6 +32,8 @@ std::span<const IoFunction> ioFunctions();
 const IoFunction* ioFunction(int parameter);
 
 PortAssignment portAssignment(const ParameterTable& parameters, int functionParameter);
+// The input function's assignment when it is enabled on a pin IN01-IN24, else nothing.
+std::optional<PortAssignment> wiredInput(const ParameterTable& parameters, int functionParameter);
 
 // The enabled function wired to a pin (the first in parameter order when several share it).
 std::optional<PortAssignment> inputOnPin(const ParameterTable& parameters, int pin);

@@ -51,25 +51,22 @@ void Controller::configureMachine() {
     limits.maxSpindleRpm = positive(p.get(param::kMaxSpindleRpm), 24000.0);
     machine_.setLimits(limits);
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
-        if (homeSwitchWired(axis)) { // released: the level that is not the active one
-            int active = p.get(param::kHomeSwitchX + 3 * axis + 2) != 0.0 ? 1 : 0;
-            machine_.presetInput(saturatingInt(p.get(param::kHomeSwitchX + 3 * axis)), 1 - active);
+        if (auto home = config::wiredInput(p, param::kHomeSwitchX + 3 * axis)) {
+            machine_.presetInput(home->pin, 1 - home->activeLevel); // released: not the active level
         }
     }
     machine::ToolSetter setter;
-    if (p.get(param::kFixedSetterInput + 1) != 0.0) {
-        setter.port = std::clamp(saturatingInt(p.get(param::kFixedSetterInput)), 0, machine::kInputCount);
-        setter.activeLevel = p.get(param::kFixedSetterInput + 2) != 0.0 ? 1 : 0;
+    if (auto input = config::wiredInput(p, param::kFixedSetterInput)) {
+        setter.port = input->pin;
+        setter.activeLevel = input->activeLevel;
     }
     setter.x = p.get(param::kFixedSetterX);
     setter.y = p.get(param::kFixedSetterX + 1);
     setter.top = config_.setterTop;
     setter.radius = config_.setterRadius;
     machine_.setToolSetter(setter);
-    const int pin = saturatingInt(p.get(param::kSpindleStoppedInput));
-    const bool enabled = p.get(param::kSpindleStoppedInput + 1) != 0.0;
-    if (enabled && pin >= 1 && pin <= machine::kInputCount) {
-        machine_.setSpindleStoppedSensor({pin, p.get(param::kSpindleStoppedInput + 2) != 0.0 ? 1 : 0});
+    if (auto stopped = config::wiredInput(p, param::kSpindleStoppedInput)) {
+        machine_.setSpindleStoppedSensor({stopped->pin, stopped->activeLevel});
     }
 }
 

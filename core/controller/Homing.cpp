@@ -1,6 +1,7 @@
 // 回零 homing: each axis runs toward its home switch (an IO input, params 545-557), backs off and
 // approaches again slowly, then takes the machine position of params 122-126.
 #include "core/controller/Controller.h"
+#include "core/config/IoPorts.h"
 
 #include "core/common/Numeric.h"
 #include "core/config/ParameterNumbers.h"
@@ -20,9 +21,7 @@ constexpr std::array<int, machine::kAxisCount> kHomingOrder{2, 0, 1, 3, 4}; // Z
 } // namespace
 
 bool Controller::homeSwitchWired(int axis) const {
-    const config::ParameterTable& p = config_.parameters;
-    int pin = saturatingInt(p.get(param::kHomeSwitchX + 3 * axis));
-    return p.get(param::kHomeSwitchX + 3 * axis + 1) != 0.0 && pin >= 1 && pin <= machine::kInputCount;
+    return config::wiredInput(config_.parameters, param::kHomeSwitchX + 3 * axis).has_value();
 }
 
 std::vector<int> Controller::homeableAxes() const {
@@ -63,8 +62,9 @@ std::optional<Alarm> Controller::homeAxis(int axis) {
                          "-" + std::to_string(first + 2) + ": pin, enable, level)",
                      "", 0, 0};
     }
-    const int pin = saturatingInt(p.get(param::kHomeSwitchX + 3 * axis));
-    const int active = p.get(param::kHomeSwitchX + 3 * axis + 2) != 0.0 ? 1 : 0;
+    const config::PortAssignment homeSwitch = *config::wiredInput(p, param::kHomeSwitchX + 3 * axis);
+    const int pin = homeSwitch.pin;
+    const int active = homeSwitch.activeLevel;
     const double direction = p.get(param::kHomingDirectionX + axis) != 0.0 ? 1.0 : -1.0;
     const double speed = p.get(param::kHomingSpeedX + axis) > 0 ? p.get(param::kHomingSpeedX + axis) : 500.0;
     const double slow = p.get(param::kHomingSecondSpeed) > 0 ? p.get(param::kHomingSecondSpeed) : speed / 10.0;

@@ -4,6 +4,7 @@
 #include "core/interp/ModalInterpreter.h"
 
 #include "core/common/Numeric.h"
+#include "core/config/IoPorts.h"
 #include "core/config/ParameterNumbers.h"
 #include "core/machine/ArcGeometry.h"
 
@@ -225,9 +226,9 @@ void ModalInterpreter::probeMove(const Words& words) {
         port = p ? roundToInt(p->value) : 0;
         const WordValue* l = words.find('L');
         level = l ? (l->value != 0.0 ? 1 : 0) : 1;
-    } else if (parameters_.get(param::kFixedSetterInput + 1) != 0.0) {
-        port = saturatingInt(parameters_.get(param::kFixedSetterInput));
-        level = parameters_.get(param::kFixedSetterInput + 2) != 0.0 ? 1 : 0;
+    } else if (auto setter = config::wiredInput(parameters_, param::kFixedSetterInput)) {
+        port = setter->pin;
+        level = setter->activeLevel;
     }
     if (port < 1 || port > machine::kInputCount) {
         invalid(g31, dialect_.id == gcode::DialectId::M350

@@ -13,16 +13,17 @@ namespace {
 using namespace m350;
 using namespace m350::test;
 
-// O20000 as the default machine ships it, up to the cycle handlers that follow it in slib-g.nc.
-std::string shippedO20000() {
-    std::ifstream in(config::bundledMachinesDirectory() + "/" + config::kDefaultMachine + "/slib-g.nc");
+// A bundled machine's O20000, from its O line to `until` (empty: to the end of slib-g.nc).
+std::string shippedO20000(const std::string& machine = config::kDefaultMachine,
+                          const std::string& until = "// Canned drilling cycles") {
+    std::ifstream in(config::bundledMachinesDirectory() + "/" + machine + "/slib-g.nc");
     std::stringstream text;
     text << in.rdbuf();
     std::string all = text.str();
     std::size_t begin = all.find("\nO20000(") + 1;
-    std::size_t end = all.find("// Canned drilling cycles");
     EXPECT_NE(begin, 0u);
-    return all.substr(begin, end - begin);
+    std::size_t end = until.empty() ? std::string::npos : all.find(until);
+    return all.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
 }
 
 // The main program `before` + "T2" + "M30", then O20000 with `wrong` put in place of `right`.
@@ -110,10 +111,7 @@ TEST(MagazineCrash, AWrongChangeHeightParameterDropsTheTool) {
 TEST(MagazineCrash, FollowRowSlideOutBeforeTheToolIsDownThenComingDownOntoTheFork) {
     // the follow-row O20000 with the slide pushed out while the tool is still up: the tool then
     // comes down onto the fork from above
-    std::ifstream in(config::bundledMachinesDirectory() + "/m350-follow-row/slib-g.nc");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string o20000 = text.str().substr(text.str().find("\nO20000(") + 1);
+    std::string o20000 = shippedO20000("m350-follow-row", "");
     const std::string down = "G53 Z#[1370+#1300-1] F#1319         //down to fork height, the slide still in\n";
     const std::string out = "M300                                //the spindle has stopped\n"
                             "M152                                //slide out: the fork takes the tool\n"
