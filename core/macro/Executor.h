@@ -73,6 +73,8 @@ private:
     std::uint32_t programUnit(double number, const char* how, std::uint32_t column) const;
     std::optional<std::uint32_t> handlerFor(char letter, int code) const;
     void indexHandlers();
+    static void takeArguments(std::vector<WordValue>& words, const std::array<std::int8_t, 26>& map,
+                              std::vector<std::pair<int, double>>& out, bool codesAreArguments);
     // Canned cycles run by handler programs (ExecutorCycles.cpp).
     bool cycleHandlerCall(int code) const;
     void prepareCycleCall(Call& call, int code, const std::vector<WordValue>& blockWords, std::uint32_t column);

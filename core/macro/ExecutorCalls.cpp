@@ -24,6 +24,24 @@ bool wholeNumber(double v) {
 
 } // namespace
 
+// Moves the words the argument specification maps into `out` (local number, value). G65 and M98
+// take every letter mapped (FANUC: M#13, T#20); a handler called for a G or M code leaves the
+// block's other codes alone.
+void Executor::takeArguments(std::vector<WordValue>& words, const std::array<std::int8_t, 26>& map,
+                             std::vector<std::pair<int, double>>& out, bool codesAreArguments) {
+    std::vector<WordValue> kept;
+    for (const WordValue& w : words) {
+        int variable = map[static_cast<std::size_t>(w.letter - 'A')];
+        bool code = w.letter == 'G' || w.letter == 'M' || w.letter == 'T';
+        if (variable >= 0 && w.letter != 'N' && (codesAreArguments || !code)) {
+            out.emplace_back(variable, w.value);
+        } else {
+            kept.push_back(w);
+        }
+    }
+    words = std::move(kept);
+}
+
 std::optional<std::uint32_t> Executor::handlerFor(char letter, int code) const {
     const auto& table = letter == 'M' ? mHandlers_ : gHandlers_;
     if (code >= 0 && static_cast<std::size_t>(code) < table.size()) {
@@ -126,22 +144,6 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         return w;
     };
     auto takeLetter = [&take](char letter) { return take([letter](const WordValue& w) { return w.letter == letter; }); };
-    // G65 and M98 take every letter their specification maps (FANUC: M#13, T#20); a handler called
-    // for a G or M code leaves the block's other codes alone.
-    auto takeArguments = [&words](const std::array<std::int8_t, 26>& map, std::vector<std::pair<int, double>>& out,
-                                  bool codesAreArguments) {
-        std::vector<WordValue> kept;
-        for (const WordValue& w : words) {
-            int variable = map[static_cast<std::size_t>(w.letter - 'A')];
-            bool code = w.letter == 'G' || w.letter == 'M' || w.letter == 'T';
-            if (variable >= 0 && w.letter != 'N' && (codesAreArguments || !code)) {
-                out.emplace_back(variable, w.value);
-            } else {
-                kept.push_back(w);
-            }
-        }
-        words = std::move(kept);
-    };
     auto needP = [&](const WordValue& code, const char* name) {
         auto p = takeLetter('P');
         if (!p) {
@@ -159,7 +161,7 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         WordValue p = needP(*g65, "G65");
         auto l = takeLetter('L');
         Call call{programUnit(p.value, "G65", p.column), l ? std::llround(l->value) : 1, true, -1, {}};
-        takeArguments(dialect_.callArguments, call.arguments, true);
+        takeArguments(words, dialect_.callArguments, call.arguments, true);
         calls.push_back(std::move(call));
         callColumn = g65->column;
     }
@@ -169,7 +171,7 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         Call call{programUnit(p.value, "M98", p.column), l ? std::llround(l->value) : 1,
                   dialect_.m98OpensLocalLevel, -1, {}};
         if (dialect_.m98OpensLocalLevel) {
-            takeArguments(dialect_.callArguments, call.arguments, true);
+            takeArguments(words, dialect_.callArguments, call.arguments, true);
         }
         calls.push_back(std::move(call));
         callColumn = m98->column;
@@ -216,7 +218,7 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         // A code mapped by the machine (M6 -> O9001) is a subprogram call; a handler gets arguments.
         Call call{*unit, 1, mapped ? dialect_.m98OpensLocalLevel : true, key, {}};
         if (!mapped) {
-            takeArguments(isM ? dialect_.callArguments : dialect_.handlerArguments, call.arguments, false);
+            takeArguments(words, isM ? dialect_.callArguments : dialect_.handlerArguments, call.arguments, false);
         }
         if (!isM && !mapped && cycleHandlerCall(n)) {
             prepareCycleCall(call, n, words, w.column);

@@ -107,17 +107,7 @@ std::optional<Executor::Call> Executor::repeatCycle(std::vector<WordValue>& word
         return std::nullopt;
     }
     Call call{handlerCycle_->unit, 1, true, handlerCycle_->key, {}};
-    std::vector<WordValue> kept;
-    for (const WordValue& w : words) {
-        int variable = map[static_cast<std::size_t>(w.letter - 'A')];
-        bool code = w.letter == 'G' || w.letter == 'M' || w.letter == 'T';
-        if (variable >= 0 && !code && w.letter != 'N') {
-            call.arguments.emplace_back(variable, w.value);
-        } else {
-            kept.push_back(w);
-        }
-    }
-    words = std::move(kept);
+    takeArguments(words, map, call.arguments, false);
     return call;
 }
 
