@@ -1,6 +1,7 @@
 #include "core/config/MachineConfig.h"
 #include "core/common/Numeric.h"
 
+#include "core/config/MagazineToml.h"
 #include "core/config/ParameterCatalogue.h"
 
 #include <toml++/toml.h>
@@ -113,32 +114,10 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         }
     }
     config.magazineCapacity = t["magazine"]["capacity"].value_or(0);
-    if (auto device = t["magazine"]["device"].value<std::string>()) {
-        if (*device != "linear-rack") {
-            fail(file, "[magazine] device '" + *device + "' is unknown (linear-rack)");
+    if (const toml::table* magazine = t["magazine"].as_table(); magazine && magazine->contains("device")) {
+        if (auto wrong = readMagazine(*magazine, config.magazine)) {
+            fail(file, *wrong);
         }
-        config.rack.present = true;
-        std::string loading = t["magazine"]["loading"].value_or(std::string("side"));
-        if (loading != "side" && loading != "top") {
-            fail(file, "[magazine] loading must be \"side\" or \"top\", not '" + loading + "'");
-        }
-        config.rack.topLoading = loading == "top";
-        std::string opening = t["magazine"]["opening"].value_or(std::string("+Y"));
-        if (opening != "+Y" && opening != "-Y") {
-            fail(file, "[magazine] opening must be \"+Y\" or \"-Y\", not '" + opening + "'");
-        }
-        config.rack.openingY = opening == "+Y" ? 1.0 : -1.0;
-        config.rack.forkDepth = t["magazine"]["fork_depth"].value_or(config.rack.forkDepth);
-        std::string carried = t["magazine"]["carried"].value_or(std::string("fixed"));
-        if (carried != "fixed" && carried != "gantry") {
-            fail(file, "[magazine] carried must be \"fixed\" or \"gantry\", not '" + carried + "'");
-        }
-        config.rack.onGantry = carried == "gantry";
-        config.rack.slideTravel = t["magazine"]["slide_travel"].value_or(config.rack.slideTravel);
-        if (config.rack.onGantry && config.rack.topLoading) {
-            fail(file, "[magazine] a rack carried on the gantry is loaded from the side (its slide moves the forks)");
-        }
-        config.rack.tolerance = t["magazine"]["tolerance"].value_or(config.rack.tolerance);
     }
     if (auto distances = t["homing"]["switch_distance"].as_array()) {
         if (distances->size() > 5) {

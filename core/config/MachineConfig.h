@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/config/MagazineConfig.h"
 #include "core/config/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
@@ -42,22 +43,9 @@ struct MachineConfig {
     // The simulated world: how far each axis travels from where it stands at power-on to its home
     // switch ([homing] switch_distance = [X, Y, Z, A, B]); no parameter says this.
     std::array<double, 5> homeSwitchDistance{100.0, 100.0, 50.0, 30.0, 30.0};
+    MagazineConfig magazine; // [magazine]: the device beside the machine, if any
     // The fixed tool setter's top ([tool_setter] top: spindle-nose machine Z at contact with a
     // zero-length tool) and reach; the tools' true lengths ([tools] length = [T1, T2, ...], mm).
-    // The tool magazine as a device ([magazine] device = "linear-rack", loading = "side" | "top",
-    // opening = "+Y" | "-Y", fork_depth, tolerance in mm); pockets come from params 830+/850+/870+.
-    // A rack carried on the gantry (carried = "gantry", 龙门架直排) keeps its place in Y beside the
-    // spindle; its forks reach the tools when the magazine slide (output of param 753) pushes them
-    // out by slide_travel mm.
-    struct Rack {
-        bool present = false;
-        bool topLoading = false;
-        bool onGantry = false;
-        double slideTravel = 100.0;
-        double openingY = 1.0;
-        double forkDepth = 30.0;
-        double tolerance = 1.0;
-    } rack;
     double setterTop = -100.0;
     double setterRadius = 5.0;
     std::vector<double> toolLengths;

@@ -16,7 +16,7 @@ namespace m350::controller {
 namespace param = config::param;
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
-    : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace || config_.rack.present ? this : nullptr),
+    : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace || config_.magazine.present() ? this : nullptr),
       interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, machine_), store_(*config_.dialect, config_.parameters) {
     if (settings_.trace) {
         trace_ = std::make_unique<TraceWriter>(*settings_.trace);
@@ -189,7 +189,7 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
         }
         trace_->machineEvent(event, where);
     }
-    if (rack_ && state_ != RunState::Alarm && state_ != RunState::EStop) {
+    if (magazine_ && state_ != RunState::Alarm && state_ != RunState::EStop) {
         checkMagazine(event);
     }
 }
@@ -356,12 +356,14 @@ void Controller::zeroWorkAxis(int axis) {
 }
 
 int Controller::spindleTool() const {
-    if (rack_) {
+    if (magazine_) {
         // what the spindle really holds; a virtual tool (above the magazine) was put in by hand,
-        // which the rack does not see
-        int believed = saturatingInt(config_.parameters.get(param::kCurrentTool));
-        bool virtualTool = believed > rack_->pocketCount() && rack_->spindleTool() == 0;
-        return virtualTool ? believed : rack_->spindleTool();
+        // which the magazine does not see
+        int believed = config_.dialect->id == gcode::DialectId::M350
+                           ? saturatingInt(config_.parameters.get(param::kCurrentTool))
+                           : fanucSpindleTool_;
+        bool virtualTool = believed > magazine_->pocketCount() && magazine_->spindleTool() == 0;
+        return virtualTool ? believed : magazine_->spindleTool();
     }
     return config_.dialect->id == gcode::DialectId::M350 ? saturatingInt(config_.parameters.get(param::kCurrentTool))
                                                          : fanucSpindleTool_;
@@ -373,11 +375,11 @@ void Controller::fill(RunReport& out) const {
     out.tool = spindleTool();
     int capacity = config_.dialect->id == gcode::DialectId::M350
                        ? saturatingInt(config_.parameters.get(param::kMagazineCapacity))
-                       : config_.magazineCapacity;
+                       : magazine_ ? magazine_->pocketCount() : config_.magazineCapacity;
     // Without a magazine device every tool has its own pocket, empty while it is in the spindle.
     for (int pocket = 1; pocket <= capacity; ++pocket) {
-        if (rack_) {
-            out.pockets[pocket] = pocket <= rack_->pocketCount() ? rack_->pocketTool(pocket) : 0;
+        if (magazine_) {
+            out.pockets[pocket] = pocket <= magazine_->pocketCount() ? magazine_->pocketTool(pocket) : 0;
         } else {
             out.pockets[pocket] = pocket == out.tool ? 0 : pocket;
         }

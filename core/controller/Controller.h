@@ -7,6 +7,8 @@
 #include "core/controller/SensorWatch.h"
 #include "core/controller/TraceWriter.h"
 #include "core/devices/LinearRack.h"
+#include "core/devices/ServoDisc.h"
+#include "core/devices/UmbrellaCarousel.h"
 #include "core/gcode/Program.h"
 #include "core/interp/ModalInterpreter.h"
 #include "core/interp/WorkOffsets.h"
@@ -132,9 +134,28 @@ private:
     bool optionalStopOn();
     void watchInput(int pin, int level);
     void pressStartIfAwaited(const config::PortAssignment& key, int pin, int level, const gcode::SourceLocation& where);
+    // the magazine device (MagazineDevice.cpp) and a FANUC carousel's PMC (UmbrellaPmc.cpp)
+    struct Sensor {
+        int pin = 0; // 0: not wired
+        int activeLevel = 1;
+    };
+    struct DrawbarWiring {
+        int output = 0;
+        int releaseLevel = 1;
+        Sensor released;
+        Sensor clamped;
+        double seconds = 0.15; // the clamp cylinder's stroke
+    };
     void buildMagazine();
+    void buildRack();
+    void wireDrawbar();
     void checkMagazine(const machine::MachineEvent& event);
-    Eigen::Vector3d noseForRack(const machine::Axes& position) const;
+    std::optional<std::string> magazineOutput(int port, int level, double now);
+    void driveSensor(const Sensor& sensor, bool active, double at);
+    Eigen::Vector3d noseForMagazine(const machine::Axes& position) const;
+    void answerPmc(int code);
+    void awaitSensor(int pin, int level, int mCode);
+    std::string magazineInputName(int pin) const;
 
     config::MachineConfig config_;
     RunSettings settings_;
@@ -160,8 +181,11 @@ private:
     std::string programStop_;                        // see programStop()
     SensorWatch sensorWatch_;
     bool pressStartWhenAwaited_ = false; // run(): no operator, the controller presses START
-    std::optional<devices::LinearRack> rack_; // the magazine, when the machine folder describes one
-    bool slideOut_ = false;                   // a gantry rack's slide (output of param 753)
+    std::unique_ptr<devices::Magazine> magazine_; // the magazine, when the machine folder describes one
+    devices::ServoDisc* disc_ = nullptr;           // magazine_ when it is a servo disc
+    devices::UmbrellaCarousel* carousel_ = nullptr; // magazine_ when it is an umbrella carousel
+    DrawbarWiring drawbar_;
+    bool slideOut_ = false;                        // a gantry rack's slide (output of param 753)
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 };

@@ -1,6 +1,7 @@
-// The tool magazine as a device beside the machine: it sees every move of the spindle nose and
-// every switch of the drawbar output, keeps track of the tools, and turns what the hardware would
-// suffer into a `crash` alarm on the macro line that caused it.
+// The tool magazine as a device beside the machine: it sees every move of the spindle nose, every
+// switch of the drawbar and of its own actuators, keeps track of the tools, drives the sensors the
+// hardware has (clamp cylinder, slide, disc in position), and turns what the hardware would suffer
+// into a `crash` alarm on the macro line that caused it.
 #include "core/controller/Controller.h"
 
 #include "core/common/Numeric.h"
@@ -8,87 +9,235 @@
 #include "core/config/ParameterNumbers.h"
 #include "core/macro/MacroError.h"
 
+#include <algorithm>
+
 namespace m350::controller {
 
 namespace param = config::param;
+using Device = config::MagazineConfig::Device;
 
 namespace {
 
-constexpr int kPocketX = 830; // pocket k: X 830+k-1, Y 850+k-1, Z 870+k-1 (machine)
-constexpr int kPocketY = 850;
-constexpr int kPocketZ = 870;
-constexpr int kDrawbarOutput = 750; // 刀具松开/锁紧输出 (M154/M155)
-constexpr int kSlideOutput = 753;   // 刀库推出/收回输出 (M152/M153)
+constexpr double kDefaultClampSeconds = 0.15;
+
+// Every tool has its own pocket; the one in the spindle leaves its pocket empty.
+std::vector<int> toolsInPockets(int pockets, int inSpindle) {
+    std::vector<int> tools;
+    for (int k = 1; k <= pockets; ++k) {
+        tools.push_back(k == inSpindle ? 0 : k);
+    }
+    return tools;
+}
 
 } // namespace
 
 void Controller::buildMagazine() {
-    rack_.reset();
-    if (!config_.rack.present) {
+    magazine_.reset();
+    disc_ = nullptr;
+    carousel_ = nullptr;
+    const config::MagazineConfig& m = config_.magazine;
+    const config::ParameterTable& p = config_.parameters;
+    wireDrawbar();
+    switch (m.device) {
+    case Device::None: return;
+    case Device::LinearRack: buildRack(); return;
+    case Device::ServoDisc: {
+        devices::ServoDisc::Geometry g;
+        g.station = Eigen::Vector3d(p.get(param::kChangeFrontX), p.get(param::kChangeFrontY), p.get(param::kChangeZDown));
+        g.pockets = std::clamp(saturatingInt(p.get(param::kMagazineCapacity)), 1, 20);
+        g.forkDepth = m.forkDepth;
+        g.tolerance = m.tolerance;
+        g.secondsPerPocket = m.secondsPerPocket;
+        g.settleSeconds = m.settleSeconds;
+        const int tool = saturatingInt(p.get(param::kCurrentTool));
+        const int inSpindle = tool >= 1 && tool <= g.pockets ? tool : 0;
+        auto disc = std::make_unique<devices::ServoDisc>(g, toolsInPockets(g.pockets, inSpindle), inSpindle,
+                                                         inSpindle != 0 ? inSpindle : 1);
+        disc_ = disc.get();
+        magazine_ = std::move(disc);
+        machine_.presetInput(m.inPositionInput, 1);
         return;
     }
+    case Device::Umbrella: {
+        devices::UmbrellaCarousel::Geometry g;
+        const auto point = [this](int n) {
+            auto it = config_.referencePoints.find(n);
+            return it == config_.referencePoints.end() ? std::array<double, 5>{} : it->second;
+        };
+        g.changeX = m.changeXYGiven ? m.changeX : point(3)[0];
+        g.changeY = m.changeXYGiven ? m.changeY : point(3)[1];
+        g.gripZ = point(3)[2];
+        g.clearZ = point(2)[2];
+        g.pockets = m.pockets;
+        g.tolerance = m.tolerance;
+        g.secondsPerPocket = m.secondsPerPocket;
+        g.slideSeconds = m.slideSeconds;
+        const int inSpindle = fanucSpindleTool_ >= 1 && fanucSpindleTool_ <= g.pockets ? fanucSpindleTool_ : 0;
+        auto carousel = std::make_unique<devices::UmbrellaCarousel>(g, toolsInPockets(g.pockets, inSpindle), inSpindle,
+                                                                    inSpindle != 0 ? inSpindle : 1);
+        carousel_ = carousel.get();
+        magazine_ = std::move(carousel);
+        machine_.presetInput(m.inPositionInput, 1);
+        machine_.presetInput(m.awayInput, 1);
+        machine_.presetInput(m.atSpindleInput, 0);
+        return;
+    }
+    }
+}
+
+void Controller::buildRack() {
     const config::ParameterTable& p = config_.parameters;
+    const config::MagazineConfig& m = config_.magazine;
     devices::LinearRack::Geometry g;
-    g.loading = config_.rack.topLoading ? devices::LinearRack::Loading::Top : devices::LinearRack::Loading::Side;
-    g.openingY = config_.rack.openingY;
-    g.forkDepth = config_.rack.forkDepth;
-    g.tolerance = config_.rack.tolerance;
+    g.loading = m.topLoading ? devices::LinearRack::Loading::Top : devices::LinearRack::Loading::Side;
+    g.openingY = m.openingY;
+    g.forkDepth = m.forkDepth;
+    g.tolerance = m.tolerance;
     const int capacity = std::clamp(saturatingInt(p.get(param::kMagazineCapacity)), 0, 20);
-    const int inSpindle = saturatingInt(p.get(param::kCurrentTool));
-    std::vector<int> tools;
     for (int k = 1; k <= capacity; ++k) {
         // On the gantry the forks stand beside the spindle in Y: Y 0 is "slide out", the travel "in".
-        double y = config_.rack.onGantry ? 0.0 : p.get(kPocketY + k - 1);
-        Eigen::Vector3d at(p.get(kPocketX + k - 1), y, p.get(kPocketZ + k - 1));
-        if (at.isZero() || (config_.rack.onGantry && at.x() == 0.0 && at.z() == 0.0)) {
+        double y = m.onGantry ? 0.0 : p.get(param::kPocketY + k - 1);
+        Eigen::Vector3d at(p.get(param::kPocketX + k - 1), y, p.get(param::kPocketZ + k - 1));
+        if (at.isZero() || (m.onGantry && at.x() == 0.0 && at.z() == 0.0)) {
             break; // no position set: the rack ends here, whatever param 801 says
         }
         g.pockets.push_back(at);
-        tools.push_back(k == inSpindle ? 0 : k); // every tool has its own pocket
     }
     slideOut_ = false;
-    const int spindle = inSpindle >= 1 && inSpindle <= static_cast<int>(tools.size()) ? inSpindle : 0;
-    rack_.emplace(std::move(g), std::move(tools), spindle);
+    const int pockets = static_cast<int>(g.pockets.size());
+    const int tool = saturatingInt(p.get(param::kCurrentTool));
+    const int spindle = tool >= 1 && tool <= pockets ? tool : 0;
+    magazine_ = std::make_unique<devices::LinearRack>(std::move(g), toolsInPockets(pockets, spindle), spindle);
+}
+
+// The drawbar and its clamp cylinder's sensors: the IO page's triples on the M350, the magazine's
+// wiring on a FANUC. The cylinder takes param 814 (when set above its default of 1 ms) or
+// [magazine] clamp_ms, else 150 ms, to reach either end.
+void Controller::wireDrawbar() {
+    drawbar_ = DrawbarWiring{};
+    const config::MagazineConfig& m = config_.magazine;
+    if (!m.present()) {
+        return;
+    }
+    if (config_.dialect->id == gcode::DialectId::M350) {
+        const config::ParameterTable& p = config_.parameters;
+        config::PortAssignment out = config::portAssignment(p, param::kDrawbarOutput);
+        if (out.wired()) {
+            drawbar_.output = out.pin;
+            drawbar_.releaseLevel = out.activeLevel;
+        }
+        if (auto released = config::wiredInput(p, param::kToolReleasedInput)) {
+            drawbar_.released = {released->pin, released->activeLevel};
+        }
+        if (auto clamped = config::wiredInput(p, param::kToolClampedInput)) {
+            drawbar_.clamped = {clamped->pin, clamped->activeLevel};
+        }
+        const double lockDelay = p.get(param::kSpindleLockDelay) / 1000.0;
+        drawbar_.seconds = m.clampSeconds > 0.0 ? m.clampSeconds : lockDelay > 0.001 ? lockDelay : kDefaultClampSeconds;
+    } else {
+        drawbar_.output = m.drawbarOutput;
+        drawbar_.released = {m.releasedInput, 1};
+        drawbar_.clamped = {m.clampedInput, 1};
+        drawbar_.seconds = m.clampSeconds > 0.0 ? m.clampSeconds : kDefaultClampSeconds;
+    }
+    // power-on: the tool is clamped
+    for (const auto& [sensor, clampedMeansActive] : {std::pair{drawbar_.released, false}, std::pair{drawbar_.clamped, true}}) {
+        if (sensor.pin > 0) {
+            machine_.presetInput(sensor.pin, clampedMeansActive ? sensor.activeLevel : 1 - sensor.activeLevel);
+        }
+    }
 }
 
 // Where the spindle nose stands as the rack sees it. A rack on the gantry moves in Y with the
 // spindle, so only its slide changes the Y between them.
-Eigen::Vector3d Controller::noseForRack(const machine::Axes& position) const {
+Eigen::Vector3d Controller::noseForMagazine(const machine::Axes& position) const {
     Eigen::Vector3d nose = position.head<3>();
-    if (config_.rack.onGantry) {
-        nose.y() = slideOut_ ? 0.0 : config_.rack.slideTravel;
+    if (config_.magazine.onGantry) {
+        nose.y() = slideOut_ ? 0.0 : config_.magazine.slideTravel;
     }
     return nose;
+}
+
+void Controller::driveSensor(const Sensor& sensor, bool active, double at) {
+    if (sensor.pin > 0) {
+        machine_.driveInput(sensor.pin, active ? sensor.activeLevel : 1 - sensor.activeLevel, at);
+        linkedInputSource_[sensor.pin] = source();
+    }
 }
 
 void Controller::checkMagazine(const machine::MachineEvent& event) {
     using Type = machine::MachineEvent::Type;
     std::optional<std::string> crash;
+    const double now = machine_.time();
     switch (event.type) {
     case Type::Rapid:
     case Type::Feed:
     case Type::Arc:
-        crash = rack_->move(noseForRack(event.from), noseForRack(event.to), event.type == Type::Rapid,
-                            machine_.spindleTurning());
+        crash = magazine_->move(noseForMagazine(event.from), noseForMagazine(event.to), event.type == Type::Rapid,
+                                machine_.spindleTurning(), event.start);
         break;
-    case Type::Io: {
-        config::PortAssignment drawbar = config::portAssignment(config_.parameters, kDrawbarOutput);
-        config::PortAssignment slide = config::portAssignment(config_.parameters, kSlideOutput);
-        if (event.port > 0 && drawbar.wired() && event.port == drawbar.pin) {
-            crash = rack_->drawbar(event.level == drawbar.activeLevel, noseForRack(machine_.position()));
-        } else if (config_.rack.onGantry && event.port > 0 && slide.wired() && event.port == slide.pin) {
-            // the slide carries the forks to the spindle or away: a move along Y between them
-            const Eigen::Vector3d from = noseForRack(machine_.position());
-            slideOut_ = event.level == slide.activeLevel;
-            crash = rack_->move(from, noseForRack(machine_.position()), false, machine_.spindleTurning());
+    case Type::Io:
+        if (event.port > 0) {
+            crash = magazineOutput(event.port, event.level, now);
         }
         break;
-    }
+    case Type::Spindle:
+        if (carousel_) {
+            carousel_->spindle(machine_.spindleTurning(), event.spindle == machine::SpindleState::Orient);
+        }
+        break;
+    case Type::Auxiliary:
+        if (carousel_) {
+            answerPmc(event.port);
+        }
+        break;
     default: break;
     }
     if (crash) {
         throw macro::MacroError{AlarmCode::Crash, *crash, 0};
     }
+}
+
+std::optional<std::string> Controller::magazineOutput(int port, int level, double now) {
+    const Eigen::Vector3d nose = noseForMagazine(machine_.position());
+    if (port == drawbar_.output) {
+        const bool released = level == drawbar_.releaseLevel;
+        driveSensor(drawbar_.released, released, now + drawbar_.seconds);
+        driveSensor(drawbar_.clamped, !released, now + drawbar_.seconds);
+        return magazine_->drawbar(released, nose);
+    }
+    const config::MagazineConfig& m = config_.magazine;
+    if (m.onGantry) {
+        config::PortAssignment slide = config::portAssignment(config_.parameters, param::kMagazineSlideOutput);
+        if (slide.wired() && port == slide.pin) {
+            // the slide carries the forks to the spindle or away: a move along Y between them
+            slideOut_ = level == slide.activeLevel;
+            return magazine_->move(nose, noseForMagazine(machine_.position()), false, machine_.spindleTurning(), now);
+        }
+    }
+    if (disc_ && port == m.strobeOutput && level == 1) {
+        int pocket = 0;
+        for (std::size_t bit = 0; bit < m.selectOutputs.size(); ++bit) {
+            pocket |= machine_.output(m.selectOutputs[bit]) << bit;
+        }
+        devices::ServoDisc::Turn turn = disc_->turnTo(pocket, now, nose);
+        if (!turn.crash && turn.seconds > 0.0) {
+            machine_.driveInput(m.inPositionInput, 0, now);
+            machine_.driveInput(m.inPositionInput, 1, now + turn.seconds);
+            linkedInputSource_[m.inPositionInput] = source();
+        }
+        return turn.crash;
+    }
+    if (carousel_ && port == m.slideOutput) {
+        devices::UmbrellaCarousel::Action slide = carousel_->slide(level == 1, nose, now);
+        if (!slide.crash && slide.seconds > 0.0) {
+            driveSensor({m.awayInput, 1}, false, now);
+            driveSensor({m.atSpindleInput, 1}, false, now);
+            driveSensor({level == 1 ? m.atSpindleInput : m.awayInput, 1}, true, now + slide.seconds);
+        }
+        return slide.crash;
+    }
+    return std::nullopt;
 }
 
 } // namespace m350::controller

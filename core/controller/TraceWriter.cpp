@@ -51,6 +51,10 @@ void TraceWriter::machineEvent(const machine::MachineEvent& e, const TraceSource
         j["type"] = "coolant";
         j["on"] = e.level != 0;
         break;
+    case Type::Auxiliary:
+        j["type"] = "pmc";
+        j["m"] = e.port;
+        break;
     }
     withSource(j, source);
     out_ << j.dump() << '\n';

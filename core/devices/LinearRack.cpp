@@ -69,6 +69,13 @@ LinearRack::Box LinearRack::zone(int k) const {
     return z;
 }
 
+bool LinearRack::reaches(int k, const Vector3d& nose) const {
+    const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(k - 1)];
+    const double around = geometry_.tolerance + kZoneMargin;
+    return std::abs(nose.x() - p.x()) <= around && std::abs(nose.y() - p.y()) <= around &&
+           nose.z() < p.z() + geometry_.forkDepth - kStill;
+}
+
 bool LinearRack::inside(const Box& box, const Vector3d& p) {
     return (p.array() >= box.low.array() - kStill).all() && (p.array() <= box.high.array() + kStill).all();
 }
@@ -108,7 +115,7 @@ int LinearRack::pocketAt(const Vector3d& p) const {
 }
 
 std::optional<std::string> LinearRack::move(const Vector3d& from, const Vector3d& to, bool rapid,
-                                            bool spindleTurning) {
+                                            bool spindleTurning, double /*at: a fixed rack does not change*/) {
     if ((to - from).norm() < kStill) {
         return std::nullopt;
     }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/devices/Magazine.h"
 #include "core/machine/MachineTypes.h"
 
 #include <optional>
@@ -16,7 +17,7 @@ namespace m350::devices {
 // A pocket's position is where the spindle nose stands when the tool it holds sits in the fork.
 // Side loading: the fork opens toward +Y or -Y and a held tool enters and leaves along Y; an empty
 // spindle comes down onto a tool from above. Top loading: both happen vertically.
-class LinearRack {
+class LinearRack : public Magazine {
 public:
     enum class Loading { Side, Top };
     struct Geometry {
@@ -30,20 +31,22 @@ public:
 
     LinearRack(Geometry geometry, std::vector<int> pocketTools, int spindleTool);
 
-    // The spindle nose moved from `from` to `to` (machine X Y Z) in a straight line.
     std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
-                                    bool spindleTurning);
-    // The drawbar was released (true) or clamped (false) with the nose at `at`.
-    std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at);
+                                    bool spindleTurning, double at) override;
+    std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) override;
 
-    int spindleTool() const { return spindleTool_; }
-    int pocketTool(int pocket) const { return pockets_[static_cast<std::size_t>(pocket - 1)]; }
-    int pocketCount() const { return static_cast<int>(pockets_.size()); }
-    const std::vector<int>& droppedTools() const { return dropped_; }
+    int spindleTool() const override { return spindleTool_; }
+    int pocketTool(int pocket) const override { return pockets_[static_cast<std::size_t>(pocket - 1)]; }
+    int pocketCount() const override { return static_cast<int>(pockets_.size()); }
+    const std::vector<int>& droppedTools() const override { return dropped_; }
     bool released() const { return released_; }
 
-private:
-public:
+    // A device that carries its pockets (a disc) puts another tool in a pocket, or takes it out.
+    void setPocketTool(int pocket, int tool) { pockets_[static_cast<std::size_t>(pocket - 1)] = tool; }
+    // Whether the nose stands where anything moving through the pocket hits it (or what it holds):
+    // over the pocket, lower than the top of a tool standing in it.
+    bool reaches(int pocket, const Eigen::Vector3d& nose) const;
+
     struct Box {
         Eigen::Vector3d low;
         Eigen::Vector3d high;

@@ -195,7 +195,8 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                     invalid(m, "no such M code (and no O" + std::to_string(dialect_.mHandlerBase + code) +
                                    " handler in slib-m.nc)");
                 }
-                break; // FANUC: an M code the PMC answers (magazine, clamp ...)
+                machine_.auxiliary(code); // FANUC: an M code the PMC answers (magazine, clamp ...)
+                break;
             }
         }
         // 3-6: modal codes and the non-modal ones

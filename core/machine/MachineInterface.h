@@ -25,6 +25,10 @@ public:
     // Time spent preparing a block that does not move (macro statements, M codes).
     virtual void blockTime(double seconds) = 0;
 
+    // An M code the machine's PMC answers (FANUC: the magazine's M81-M85, M10/M11 clamp): the block
+    // waits until the PMC reports it done.
+    virtual void auxiliary(int code) = 0;
+
     virtual void spindle(SpindleState state, double rpm) = 0;
     virtual void coolant(bool on) = 0;
 

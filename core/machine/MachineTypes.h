@@ -24,13 +24,13 @@ enum class Plane : std::uint8_t { XY, ZX, YZ }; // G17, G18, G19
 
 // A trace event as the machine reports it; the controller adds the source line that caused it.
 struct MachineEvent {
-    enum class Type : std::uint8_t { Rapid, Feed, Arc, Dwell, Io, Spindle, Coolant } type = Type::Rapid;
+    enum class Type : std::uint8_t { Rapid, Feed, Arc, Dwell, Io, Spindle, Coolant, Auxiliary } type = Type::Rapid;
     Axes from = Axes::Zero();
     Axes to = Axes::Zero();
     double feed = 0.0;
     double start = 0.0; // virtual seconds
     double end = 0.0;
-    int port = 0;       // Io: output (>0) or input (<0) number
+    int port = 0;       // Io: output (>0) or input (<0) number; Auxiliary: the M code
     int level = 0;
     SpindleState spindle = SpindleState::Stop;
     double rpm = 0.0;

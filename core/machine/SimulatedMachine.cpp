@@ -36,10 +36,55 @@ void SimulatedMachine::scheduleLinkedInputs(int output) {
         event.start = event.end = time_ + link.delay;
         event.port = -link.input;
         event.level = signalAt(link.input, event.start).level;
-        auto at = std::upper_bound(pendingInputs_.begin(), pendingInputs_.end(), event,
-                                   [](const MachineEvent& a, const MachineEvent& b) { return a.start < b.start; });
-        pendingInputs_.insert(at, event);
+        schedulePending(event);
     }
+}
+
+void SimulatedMachine::schedulePending(MachineEvent event) {
+    auto at = std::upper_bound(pendingInputs_.begin(), pendingInputs_.end(), event,
+                               [](const MachineEvent& a, const MachineEvent& b) { return a.start < b.start; });
+    pendingInputs_.insert(at, event);
+}
+
+void SimulatedMachine::driveInput(int port, int level, double at) {
+    auto index = static_cast<std::size_t>(port - 1);
+    auto& timeline = driven_[index];
+    std::erase_if(timeline, [at](const std::pair<double, int>& change) { return change.first >= at; });
+    // what is past matters only for the level now and the one before it
+    while (timeline.size() > 2 && timeline[timeline.size() - 2].first <= time_) {
+        timeline.erase(timeline.begin());
+    }
+    timeline.emplace_back(at, level);
+    if (!observer_) {
+        return;
+    }
+    std::erase_if(pendingInputs_, [port, at](const MachineEvent& e) { return e.port == -port && e.start >= at; });
+    if (faults_[index]) {
+        return; // a faulty sensor does not follow its device
+    }
+    MachineEvent event;
+    event.type = MachineEvent::Type::Io;
+    event.start = event.end = at;
+    event.port = -port;
+    event.level = level;
+    schedulePending(event);
+}
+
+std::optional<SimulatedMachine::Signal> SimulatedMachine::drivenSignal(std::size_t index, double t) const {
+    const auto& timeline = driven_[index];
+    if (timeline.empty()) {
+        return std::nullopt;
+    }
+    Signal s{inputs_[index], 1 - inputs_[index], inputChangedAt_[index]};
+    for (const auto& [from, level] : timeline) {
+        if (from > t) {
+            break;
+        }
+        if (level != s.level) {
+            s = Signal{level, s.level, from};
+        }
+    }
+    return s;
 }
 
 void SimulatedMachine::setFeedOverride(double factor, bool rapidToo) {
@@ -165,6 +210,14 @@ void SimulatedMachine::dwell(double seconds) {
     notify(event);
 }
 
+void SimulatedMachine::auxiliary(int code) {
+    MachineEvent event;
+    event.type = MachineEvent::Type::Auxiliary;
+    event.start = event.end = time_;
+    event.port = code;
+    notify(event);
+}
+
 void SimulatedMachine::spindle(SpindleState state, double rpm) {
     double effective = state == SpindleState::Stop ? 0.0 : std::min(rpm, limits_.maxSpindleRpm);
     if (state == spindle_ && effective == rpm_) {
@@ -275,6 +328,9 @@ SimulatedMachine::Signal SimulatedMachine::signalAt(int port, double t) const {
     if (port == setter_.port && setter_.port != 0) {
         int level = setterPressed(positionAt(t)) ? setter_.activeLevel : 1 - setter_.activeLevel;
         return {level, 1 - level, -1e300};
+    }
+    if (auto driven = drivenSignal(index, t)) {
+        return *driven;
     }
     if (spindleSensor_.port == port) {
         bool stopped = spindle_ == SpindleState::Stop && t >= spindleStopsAt_;

@@ -46,6 +46,10 @@ public:
     void pulseInput(int port, int level, double seconds) {
         pulses_[static_cast<std::size_t>(port - 1)] = Pulse{level, time_, time_ + seconds};
     }
+    // A sensor a device drives (the clamp cylinder's, a disc's in-position signal): from virtual time
+    // `at` on, the input reads `level`. A later call for the same input cancels the changes it
+    // had not reached yet, as a cylinder reversed halfway never reaches its end.
+    void driveInput(int port, int level, double at);
     // The level an input reads at power-on (a released switch), before anything happens.
     void presetInput(int port, int level) { inputs_[static_cast<std::size_t>(port - 1)] = level; }
     // Feed override as a factor (the panel's 进给倍率, at most 3); `rapidToo` when param 253 lets it
@@ -62,6 +66,8 @@ public:
     void dwell(double seconds) override;
     void blockTime(double seconds) override { time_ += seconds; }
 
+    // Tells the observer, which plays the PMC: it may take time, switch outputs, or refuse.
+    void auxiliary(int code) override;
     void spindle(SpindleState state, double rpm) override;
     void coolant(bool on) override;
 
@@ -94,7 +100,10 @@ public:
     // Cuts the operation running at virtual time t: a move decelerates to rest (`immediate`: stops
     // where it is, as an E-stop does), a dwell ends. The clock then reads the moment of rest.
     Remainder interrupt(double t, bool immediate);
-    bool spindleTurning() const { return spindle_ != SpindleState::Stop || time_ < spindleStopsAt_; }
+    // An oriented spindle (M19) stands still, held in place.
+    bool spindleTurning() const {
+        return (spindle_ != SpindleState::Stop && spindle_ != SpindleState::Orient) || time_ < spindleStopsAt_;
+    }
 
     // A move of `length` along a straight line at `speed` (units/s): its duration.
     double moveDuration(double length, double speed, double acceleration) const;
@@ -145,6 +154,9 @@ private:
     };
     Signal signalAt(int port, double t) const;
     std::vector<IoLink> links_;
+    std::array<std::vector<std::pair<double, int>>, kInputCount> driven_{}; // (from, level), see driveInput
+    std::optional<Signal> drivenSignal(std::size_t index, double t) const;
+    void schedulePending(MachineEvent event);
     std::vector<MachineEvent> pendingInputs_; // linked input changes not yet due, in time order
     void scheduleLinkedInputs(int output);
     SpindleStoppedSensor spindleSensor_;

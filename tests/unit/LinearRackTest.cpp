@@ -22,7 +22,7 @@ std::optional<std::string> path(LinearRack& r, std::initializer_list<Vector3d> p
     const Vector3d* previous = nullptr;
     for (const Vector3d& p : points) {
         if (previous) {
-            if (auto crash = r.move(*previous, p, rapid, turning)) {
+            if (auto crash = r.move(*previous, p, rapid, turning, 0.0)) {
                 return crash;
             }
         }

@@ -1,0 +1,15 @@
+#pragma once
+
+#include "core/config/MagazineConfig.h"
+
+#include <toml++/toml.h>
+
+#include <optional>
+#include <string>
+
+namespace m350::config {
+
+// Reads the [magazine] table of machine.toml into `out`; what is wrong with it, if anything.
+std::optional<std::string> readMagazine(const toml::table& magazine, MagazineConfig& out);
+
+} // namespace m350::config

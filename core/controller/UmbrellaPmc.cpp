@@ -1,0 +1,82 @@
+// The PMC of a FANUC machine with an umbrella carousel, as the paper's O9001 expects it: each M code
+// switches an actuator and finishes (FIN) when its sensor says the motion is done. A sensor that
+// never comes stops the run with `sensor_timeout` naming it, where the real machine would hang.
+//   M10 clamp / M11 release the tool (drawbar, released/clamped sensors)
+//   M81 magazine ready (enable), M82 turn the commanded tool's pocket to the spindle (in position)
+//   M83 carousel to the spindle / M84 back (slide, at-spindle/away sensors)
+//   M85 store the commanded tool as the spindle's tool (what #1000 and #1001 compare with)
+#include "core/controller/Controller.h"
+
+#include "core/config/IoPorts.h"
+#include "core/macro/MacroError.h"
+
+#include <cstdio>
+
+namespace m350::controller {
+
+namespace {
+
+constexpr double kPmcScan = 0.01; // how often the ladder looks at a sensor, s
+
+} // namespace
+
+std::string Controller::magazineInputName(int pin) const {
+    const config::MagazineConfig& m = config_.magazine;
+    const char* what = pin == m.atSpindleInput   ? "carousel at the spindle"
+                       : pin == m.awayInput      ? "carousel away"
+                       : pin == m.inPositionInput ? "carousel in position"
+                       : pin == m.releasedInput  ? "tool released"
+                       : pin == m.clampedInput   ? "tool clamped"
+                                                 : nullptr;
+    return what ? config::inputName(pin) + " (" + what + ")" : config::inputName(pin);
+}
+
+void Controller::awaitSensor(int pin, int level, int mCode) {
+    double waited = 0.0;
+    while (machine_.input(pin) != level) {
+        if (waited >= settings_.sensorTimeout) {
+            char seconds[32];
+            std::snprintf(seconds, sizeof seconds, "%.1f", settings_.sensorTimeout);
+            throw macro::MacroError{AlarmCode::SensorTimeout,
+                                    magazineInputName(pin) + " never became " + std::to_string(level) +
+                                        ": the PMC waited " + seconds + " s to finish M" + std::to_string(mCode),
+                                    0};
+        }
+        machine_.blockTime(kPmcScan);
+        waited += kPmcScan;
+    }
+}
+
+void Controller::answerPmc(int code) {
+    const config::MagazineConfig& m = config_.magazine;
+    const int commanded = interp_.state().selectedTool;
+    switch (code) {
+    case 10:
+    case 11:
+        machine_.setOutput(m.drawbarOutput, code == 11 ? 1 : 0);
+        awaitSensor(code == 11 ? m.releasedInput : m.clampedInput, 1, code);
+        return;
+    case 82: {
+        devices::UmbrellaCarousel::Action turn =
+            carousel_->turnTo(commanded, noseForMagazine(machine_.position()), machine_.time());
+        if (turn.crash) {
+            throw macro::MacroError{AlarmCode::Crash, *turn.crash, 0};
+        }
+        if (turn.seconds > 0.0) {
+            machine_.driveInput(m.inPositionInput, 0, machine_.time());
+            machine_.driveInput(m.inPositionInput, 1, machine_.time() + turn.seconds);
+        }
+        awaitSensor(m.inPositionInput, 1, code);
+        return;
+    }
+    case 83:
+    case 84:
+        machine_.setOutput(m.slideOutput, code == 83 ? 1 : 0);
+        awaitSensor(code == 83 ? m.atSpindleInput : m.awayInput, 1, code);
+        return;
+    case 85: fanucSpindleTool_ = commanded; return;
+    default: return; // M81 (ready) and the rest: nothing the carousel needs
+    }
+}
+
+} // namespace m350::controller

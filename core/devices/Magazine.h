@@ -1,0 +1,32 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace m350::devices {
+
+// A tool magazine as a device beside the machine. It knows only signals and positions: every move
+// of the spindle nose (machine X Y Z, where the nose stands when a held tool sits in a pocket), the
+// drawbar, whether the spindle turns, and its own actuators, which the concrete devices take. It
+// keeps where every tool is (spindle, pocket, dropped) and answers each event with what real
+// hardware would suffer (a message saying what happened and where), or nothing.
+class Magazine {
+public:
+    virtual ~Magazine() = default;
+
+    // The spindle nose moved from `from` to `to` in a straight line, starting at virtual time `at`.
+    virtual std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
+                                            bool spindleTurning, double at) = 0;
+    // The drawbar was released (true) or clamped (false) with the nose at `at`.
+    virtual std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) = 0;
+
+    virtual int spindleTool() const = 0;
+    virtual int pocketCount() const = 0;
+    virtual int pocketTool(int pocket) const = 0; // 0: empty
+    virtual const std::vector<int>& droppedTools() const = 0;
+};
+
+} // namespace m350::devices

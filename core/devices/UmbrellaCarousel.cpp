@@ -1,0 +1,220 @@
+#include "core/devices/UmbrellaCarousel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace m350::devices {
+
+using Eigen::Vector3d;
+
+namespace {
+
+constexpr double kStill = 1e-6;
+
+std::string where(const Vector3d& p) {
+    char buffer[96];
+    std::snprintf(buffer, sizeof buffer, "X%.3f Y%.3f Z%.3f", p.x(), p.y(), p.z());
+    return buffer;
+}
+
+std::string tool(int t) {
+    return "T" + std::to_string(t);
+}
+
+std::string pocket(int k) {
+    return "pocket " + std::to_string(k);
+}
+
+} // namespace
+
+UmbrellaCarousel::UmbrellaCarousel(const Geometry& geometry, std::vector<int> pocketTools, int spindleTool,
+                                   int atSpindle)
+    : geometry_(geometry), pockets_(std::move(pocketTools)), spindleTool_(spindleTool), atSpindle_(atSpindle) {
+    pockets_.resize(static_cast<std::size_t>(std::max(1, geometry_.pockets)), 0);
+    if (atSpindle_ < 1 || atSpindle_ > pocketCount()) {
+        atSpindle_ = 1;
+    }
+}
+
+bool UmbrellaCarousel::atChangeXY(const Vector3d& nose) const {
+    return std::abs(nose.x() - geometry_.changeX) <= geometry_.tolerance &&
+           std::abs(nose.y() - geometry_.changeY) <= geometry_.tolerance;
+}
+
+bool UmbrellaCarousel::near(double z, double level) const {
+    return std::abs(z - level) <= geometry_.tolerance;
+}
+
+std::optional<std::string> UmbrellaCarousel::move(const Vector3d& from, const Vector3d& to, bool /*rapid*/,
+                                                   bool spindleTurning, double at) {
+    if (!slideIn_ || (to - from).norm() < kStill) {
+        return std::nullopt;
+    }
+    if (std::abs(to.x() - from.x()) >= kStill || std::abs(to.y() - from.y()) >= kStill) {
+        const char* axis = std::abs(to.x() - from.x()) >= kStill ? "X" : "Y";
+        return std::string("moved ") + axis + " while the carousel stood at the spindle (from " + where(from) +
+               " to " + where(to) + "): slide it back (M84) first";
+    }
+    if (at < busyUntil_ && to.z() < geometry_.clearZ - geometry_.tolerance) {
+        return "came down into the carousel at " + where(to) + " while it was still turning or sliding";
+    }
+    if (spindleTool_ != 0) {
+        // only at the change height, in its clip: any Z move tears the clamped tool out of it
+        return "Z moved from " + where(from) + " to " + where(to) + " while " + tool(spindleTool_) +
+               " was clamped in the spindle and held by the clip of " + pocket(atSpindle_) +
+               ": release it (M11) first, or slide the carousel back (M84)";
+    }
+    return moveEmpty(from, to, spindleTurning);
+}
+
+std::optional<std::string> UmbrellaCarousel::moveEmpty(const Vector3d& from, const Vector3d& to, bool spindleTurning) {
+    const int standing = clip();
+    const double tol = geometry_.tolerance;
+    if (to.z() >= geometry_.clearZ - tol) {
+        engaged_ = false; // up and clear of the tools
+        return std::nullopt;
+    }
+    if (standing == 0) {
+        if (to.z() < geometry_.gripZ - tol) {
+            return "the spindle nose hit the empty clip of " + pocket(atSpindle_) + " at " + where(to) +
+                   ": the change height is Z" + std::to_string(geometry_.gripZ).substr(0, 8) + " (G30 P3)";
+        }
+        return std::nullopt;
+    }
+    if (to.z() < from.z() && !engaged_) {
+        if (spindleTurning || turning_) {
+            return "came down onto " + tool(standing) + " in " + pocket(atSpindle_) +
+                   " with the spindle turning: stop and orient it (M19) first";
+        }
+        if (!released_) {
+            return "came down onto " + tool(standing) + " in " + pocket(atSpindle_) +
+                   " with the drawbar clamped: release it (M11) before coming down";
+        }
+        if (!oriented_) {
+            return "the spindle's drive keys came down onto " + tool(standing) + "'s holder in " +
+                   pocket(atSpindle_) + ": orient the spindle (M19) first";
+        }
+    }
+    if (to.z() < geometry_.gripZ - tol) {
+        return "pushed " + tool(standing) + " in " + pocket(atSpindle_) + " down out of its clip: the nose went to " +
+               where(to) + ", below the change height (G30 P3)";
+    }
+    engaged_ = near(to.z(), geometry_.gripZ);
+    return std::nullopt;
+}
+
+std::optional<std::string> UmbrellaCarousel::drawbar(bool released, const Vector3d& nose) {
+    if (released == released_) {
+        return std::nullopt;
+    }
+    released_ = released;
+    if (released) {
+        if (spindleTool_ == 0) {
+            return std::nullopt;
+        }
+        const int held = spindleTool_;
+        spindleTool_ = 0;
+        if (engaged_) {
+            clip() = held;
+            return std::nullopt;
+        }
+        dropped_.push_back(held);
+        return tool(held) + " dropped: the spindle released it at " + where(nose) +
+               (slideIn_ ? " out of its clip's reach (the change height is G30 P3)"
+                         : " with the carousel away from the spindle (slide it in with M83 first)");
+    }
+    if (spindleTool_ == 0 && engaged_ && clip() != 0) {
+        spindleTool_ = clip();
+        clip() = 0; // still in the clip until the carousel slides back, but the spindle's now
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> UmbrellaCarousel::slideIn(const Vector3d& nose) {
+    const int standing = clip();
+    const double tol = geometry_.tolerance;
+    if (!atChangeXY(nose)) {
+        return "the carousel slid in while the spindle stood at " + where(nose) +
+               ", away from the change position X" + std::to_string(geometry_.changeX).substr(0, 8) + " Y" +
+               std::to_string(geometry_.changeY).substr(0, 8) + ": it hit the spindle head";
+    }
+    if (spindleTool_ != 0) {
+        if (!near(nose.z(), geometry_.gripZ)) {
+            return "the carousel hit " + tool(spindleTool_) + " in the spindle at " + where(nose) +
+                   ": with a tool in the spindle it comes in at the change height only (G30 P3)";
+        }
+        if (standing != 0) {
+            return tool(spindleTool_) + " in the spindle ran into " + tool(standing) + " in " + pocket(atSpindle_) +
+                   ": the pocket at the spindle must be the empty one of the tool being returned";
+        }
+        if (turning_) {
+            return "the clip of " + pocket(atSpindle_) + " hit " + tool(spindleTool_) +
+                   " turning in the spindle: stop and orient it (M19) first";
+        }
+        if (!oriented_) {
+            return "the clip of " + pocket(atSpindle_) + " hit " + tool(spindleTool_) +
+                   "'s holder out of line with its key: orient the spindle (M19) first";
+        }
+        engaged_ = true;
+        return std::nullopt;
+    }
+    if (nose.z() < geometry_.clearZ - tol && (standing != 0 || nose.z() < geometry_.gripZ - tol)) {
+        return (standing != 0 ? tool(standing) + " in " + pocket(atSpindle_) : std::string("the carousel")) +
+               " ran into the spindle nose at " + where(nose) +
+               ": an empty spindle waits above the tools (G30 P2) for the carousel";
+    }
+    return std::nullopt;
+}
+
+UmbrellaCarousel::Action UmbrellaCarousel::slide(bool toSpindle, const Vector3d& nose, double now) {
+    Action action;
+    if (toSpindle == slideIn_) {
+        return action;
+    }
+    if (now < busyUntil_) {
+        action.crash = std::string("the carousel slid ") + (toSpindle ? "in" : "back") +
+                       " while it was still turning: wait for its in-position signal";
+        return action;
+    }
+    if (toSpindle) {
+        action.crash = slideIn(nose);
+    } else if (engaged_ && spindleTool_ == 0 && clip() != 0) {
+        action.crash = "the carousel pulled " + tool(clip()) + " sideways out of the open spindle nose at " +
+                       where(nose) + ": raise Z (G30 P2) after releasing it, or clamp it (M10) first";
+    }
+    if (action.crash) {
+        return action;
+    }
+    slideIn_ = toSpindle;
+    engaged_ = toSpindle && engaged_;
+    action.seconds = geometry_.slideSeconds;
+    busyUntil_ = now + action.seconds;
+    return action;
+}
+
+UmbrellaCarousel::Action UmbrellaCarousel::turnTo(int target, const Vector3d& nose, double now) {
+    Action action;
+    if (target < 1 || target > pocketCount()) {
+        action.crash = "the carousel was told to turn to " + pocket(target) + ", but it has pockets 1-" +
+                       std::to_string(pocketCount());
+        return action;
+    }
+    if (target == atSpindle_) {
+        return action;
+    }
+    if (slideIn_ && (engaged_ || nose.z() < geometry_.clearZ - geometry_.tolerance)) {
+        action.crash = "the carousel turned from " + pocket(atSpindle_) + " to " + pocket(target) +
+                       " while the spindle was inside it at " + where(nose) +
+                       ": raise Z above the tools (G30 P2) before turning it";
+        return action;
+    }
+    const int n = pocketCount();
+    const int forward = ((target - atSpindle_) % n + n) % n;
+    action.seconds = std::min(forward, n - forward) * geometry_.secondsPerPocket;
+    atSpindle_ = target;
+    busyUntil_ = std::max(busyUntil_, now + action.seconds);
+    return action;
+}
+
+} // namespace m350::devices
