@@ -155,7 +155,7 @@ private:
     Eigen::Vector3d noseForMagazine(const machine::Axes& position) const;
     void answerPmc(int code);
     void awaitSensor(int pin, int level, int mCode);
-    std::string magazineInputName(int pin) const;
+    std::string describeInput(int pin) const;
 
     config::MachineConfig config_;
     RunSettings settings_;

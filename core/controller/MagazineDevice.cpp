@@ -158,6 +158,21 @@ Eigen::Vector3d Controller::noseForMagazine(const machine::Axes& position) const
     return nose;
 }
 
+// "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor.
+std::string Controller::describeInput(int pin) const {
+    if (config::inputOnPin(config_.parameters, pin) || !config_.magazine.present()) {
+        return config::describeInput(config_.parameters, pin);
+    }
+    const config::MagazineConfig& m = config_.magazine;
+    const char* what = pin == m.inPositionInput ? (disc_ ? "disc in position" : "carousel in position")
+                       : pin == m.atSpindleInput ? "carousel at the spindle"
+                       : pin == m.awayInput      ? "carousel away"
+                       : pin == m.releasedInput  ? "tool released"
+                       : pin == m.clampedInput   ? "tool clamped"
+                                                 : nullptr;
+    return what && pin > 0 ? config::inputName(pin) + " (" + what + ")" : config::inputName(pin);
+}
+
 void Controller::driveSensor(const Sensor& sensor, bool active, double at) {
     if (sensor.pin > 0) {
         machine_.driveInput(sensor.pin, active ? sensor.activeLevel : 1 - sensor.activeLevel, at);

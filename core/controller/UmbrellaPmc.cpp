@@ -20,16 +20,6 @@ constexpr double kPmcScan = 0.01; // how often the ladder looks at a sensor, s
 
 } // namespace
 
-std::string Controller::magazineInputName(int pin) const {
-    const config::MagazineConfig& m = config_.magazine;
-    const char* what = pin == m.atSpindleInput   ? "carousel at the spindle"
-                       : pin == m.awayInput      ? "carousel away"
-                       : pin == m.inPositionInput ? "carousel in position"
-                       : pin == m.releasedInput  ? "tool released"
-                       : pin == m.clampedInput   ? "tool clamped"
-                                                 : nullptr;
-    return what ? config::inputName(pin) + " (" + what + ")" : config::inputName(pin);
-}
 
 void Controller::awaitSensor(int pin, int level, int mCode) {
     double waited = 0.0;
@@ -38,7 +28,7 @@ void Controller::awaitSensor(int pin, int level, int mCode) {
             char seconds[32];
             std::snprintf(seconds, sizeof seconds, "%.1f", settings_.sensorTimeout);
             throw macro::MacroError{AlarmCode::SensorTimeout,
-                                    magazineInputName(pin) + " never became " + std::to_string(level) +
+                                    describeInput(pin) + " never became " + std::to_string(level) +
                                         ": the PMC waited " + seconds + " s to finish M" + std::to_string(mCode),
                                     0};
         }

@@ -1,5 +1,7 @@
 #include "core/devices/ServoDisc.h"
 
+#include "core/devices/DeviceText.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,9 +22,7 @@ LinearRack::Geometry stationGeometry(const ServoDisc::Geometry& g) {
 }
 
 std::string where(const Vector3d& p) {
-    char buffer[96];
-    std::snprintf(buffer, sizeof buffer, "X%.3f Y%.3f Z%.3f", p.x(), p.y(), p.z());
-    return buffer;
+    return text::position(p);
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 #include "core/devices/UmbrellaCarousel.h"
 
+#include "core/devices/DeviceText.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,18 +15,11 @@ namespace {
 constexpr double kStill = 1e-6;
 
 std::string where(const Vector3d& p) {
-    char buffer[96];
-    std::snprintf(buffer, sizeof buffer, "X%.3f Y%.3f Z%.3f", p.x(), p.y(), p.z());
-    return buffer;
+    return text::position(p);
 }
 
-std::string tool(int t) {
-    return "T" + std::to_string(t);
-}
-
-std::string pocket(int k) {
-    return "pocket " + std::to_string(k);
-}
+using text::pocket;
+using text::tool;
 
 } // namespace
 

@@ -2,11 +2,9 @@
 // wrong (or one parameter), and the crash or drop the real machine would suffer, reported on the
 // line that caused it. A modified O20000 in the program file wins over the machine's slib-g.nc.
 #include "RunProgram.h"
+#include "ShippedMacros.h"
 
 #include <gtest/gtest.h>
-
-#include <fstream>
-#include <sstream>
 
 namespace {
 
@@ -16,10 +14,7 @@ using namespace m350::test;
 // A bundled machine's O20000, from its O line to `until` (empty: to the end of slib-g.nc).
 std::string shippedO20000(const std::string& machine = config::kDefaultMachine,
                           const std::string& until = "// Canned drilling cycles") {
-    std::ifstream in(config::bundledMachinesDirectory() + "/" + machine + "/slib-g.nc");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string all = text.str();
+    std::string all = shippedLibrary(machine);
     std::size_t begin = all.find("\nO20000(") + 1;
     EXPECT_NE(begin, 0u);
     std::size_t end = until.empty() ? std::string::npos : all.find(until);
@@ -35,16 +30,9 @@ struct Scenario {
 
 Scenario change(const std::string& right, const std::string& wrong, const std::string& before = "",
                 config::MachineConfig cfg = bundledMachine()) {
-    std::string o20000 = shippedO20000();
-    std::size_t at = o20000.find(right);
-    EXPECT_NE(at, std::string::npos) << right;
-    if (at != std::string::npos) {
-        o20000.replace(at, right.size(), wrong);
-    }
-    std::string program = before + "T2\nM30\n" + o20000;
+    std::string program = before + "T2\nM30\n" + withLine(shippedO20000(), right, wrong);
     Scenario s{runProgram(std::move(cfg), program), 0};
-    std::size_t wrongAt = program.find(wrong.empty() ? "\n" : wrong);
-    s.line = static_cast<std::uint32_t>(std::count(program.begin(), program.begin() + static_cast<long>(wrongAt), '\n') + 1);
+    s.line = lineOf(program, wrong.empty() ? "\n" : wrong);
     return s;
 }
 
@@ -124,10 +112,7 @@ TEST(MagazineCrash, FollowRowSlideOutBeforeTheToolIsDownThenComingDownOntoTheFor
     EXPECT_EQ(r.report.alarm->code, AlarmCode::Crash);
     EXPECT_EQ(r.report.alarm->message, "T1 in the spindle hit the fork of pocket 1: a tool enters it along Y only "
                                        "(moving from X100.000 Y0.000 Z0.000 to X100.000 Y0.000 Z-90.000)");
-    auto lineOf = [&](const std::string& text) {
-        return static_cast<std::uint32_t>(std::count(program.begin(), program.begin() + static_cast<long>(program.find(text)), '\n') + 1);
-    };
-    EXPECT_EQ(r.report.alarm->line, lineOf(down));
+    EXPECT_EQ(r.report.alarm->line, lineOf(program, down));
 }
 
 TEST(MagazineCrash, TopLoadingWithTheChangeHeightTooLowHitsAFork) {

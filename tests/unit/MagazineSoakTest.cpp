@@ -57,6 +57,6 @@ TEST_P(MagazineSoak, HundredRandomChangesLeaveEveryToolAccountedFor) {
 
 INSTANTIATE_TEST_SUITE_P(BundledRacks, MagazineSoak,
                          testing::Values(Rack{"m350-linear16", false}, Rack{"m350-rack-top", false},
-                                         Rack{"m350-follow-row", true}));
+                                         Rack{"m350-follow-row", true}, Rack{"m350-servo-disc", true}));
 
 } // namespace
