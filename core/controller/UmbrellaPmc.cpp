@@ -40,6 +40,14 @@ void Controller::awaitSensor(int pin, int level, int mCode) {
 void Controller::answerPmc(int code) {
     const config::MagazineConfig& m = config_.magazine;
     const int commanded = interp_.state().selectedTool;
+    if (code >= 81 && code <= 85 && (commanded < 0 || commanded > carousel_->pocketCount())) {
+        // the ladder checks the T code before it moves the magazine
+        throw macro::MacroError{AlarmCode::InvalidArgument,
+                                "T" + std::to_string(commanded) + " is not in the carousel: its pockets are 1-" +
+                                    std::to_string(carousel_->pocketCount()) + " (PMC refused M" +
+                                    std::to_string(code) + ")",
+                                0};
+    }
     switch (code) {
     case 10:
     case 11:

@@ -14,6 +14,12 @@ inline std::string position(const Eigen::Vector3d& p) {
     return buffer;
 }
 
+inline std::string millimetres(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3f", v);
+    return buffer;
+}
+
 inline std::string tool(int t) {
     return "T" + std::to_string(t);
 }

@@ -73,7 +73,7 @@ std::optional<std::string> UmbrellaCarousel::moveEmpty(const Vector3d& from, con
     if (standing == 0) {
         if (to.z() < geometry_.gripZ - tol) {
             return "the spindle nose hit the empty clip of " + pocket(atSpindle_) + " at " + where(to) +
-                   ": the change height is Z" + std::to_string(geometry_.gripZ).substr(0, 8) + " (G30 P3)";
+                   ": the change height is Z" + text::millimetres(geometry_.gripZ) + " (G30 P3)";
         }
         return std::nullopt;
     }
@@ -131,8 +131,8 @@ std::optional<std::string> UmbrellaCarousel::slideIn(const Vector3d& nose) {
     const double tol = geometry_.tolerance;
     if (!atChangeXY(nose)) {
         return "the carousel slid in while the spindle stood at " + where(nose) +
-               ", away from the change position X" + std::to_string(geometry_.changeX).substr(0, 8) + " Y" +
-               std::to_string(geometry_.changeY).substr(0, 8) + ": it hit the spindle head";
+               ", away from the change position X" + text::millimetres(geometry_.changeX) + " Y" +
+               text::millimetres(geometry_.changeY) + ": it hit the spindle head";
     }
     if (spindleTool_ != 0) {
         if (!near(nose.z(), geometry_.gripZ)) {
