@@ -7,7 +7,7 @@ namespace m350::config {
 // The tool magazine of a machine folder, as the device beside the machine ([magazine] of
 // machine.toml). Positions come from the parameters (M350) or from here (FANUC).
 struct MagazineConfig {
-    enum class Device { None, LinearRack, ServoDisc, Umbrella };
+    enum class Device { None, LinearRack, ServoDisc, Umbrella, MultiHead };
     Device device = Device::None;
 
     // linear-rack: pockets from params 830+/850+/870+; loading = "side" | "top", opening = "+Y" |
@@ -20,6 +20,8 @@ struct MagazineConfig {
     double forkDepth = 30.0;
     double tolerance = 1.0;
 
+    // multi-head (多工序, M350 type 1): param 801 heads (at most 4), lowered by the outputs of
+    // params 777, 780, 783, 786; a head comes down only with Z at or above param 806.
     // servo-disc (圆盘, M350 type 4): the station is params 808/809 (X Y) and 807 (nose Z with a
     // tool seated); pockets = param 801. The drive takes the pocket number in binary on
     // select_outputs (bit 0 first), starts on strobe_output and reports in_position_input.

@@ -102,10 +102,11 @@ void readUmbrella(const toml::table& t, MagazineConfig& out) {
 
 std::optional<std::string> readMagazine(const toml::table& t, MagazineConfig& out) {
     try {
-        std::string device = choice(t, "device", "", {"linear-rack", "servo-disc", "umbrella"});
-        out.device = device == "linear-rack" ? Device::LinearRack
+        std::string device = choice(t, "device", "", {"linear-rack", "servo-disc", "umbrella", "multi-head"});
+        out.device = device == "linear-rack"  ? Device::LinearRack
                      : device == "servo-disc" ? Device::ServoDisc
-                                              : Device::Umbrella;
+                     : device == "umbrella"   ? Device::Umbrella
+                                              : Device::MultiHead;
         out.forkDepth = positive(t, "fork_depth", out.forkDepth);
         out.tolerance = positive(t, "tolerance", out.tolerance);
         out.secondsPerPocket = positive(t, "seconds_per_pocket", out.secondsPerPocket);
@@ -116,6 +117,7 @@ std::optional<std::string> readMagazine(const toml::table& t, MagazineConfig& ou
         case Device::LinearRack: readRack(t, out); break;
         case Device::ServoDisc: readDisc(t, out); break;
         case Device::Umbrella: readUmbrella(t, out); break;
+        case Device::MultiHead:
         case Device::None: break;
         }
     } catch (const Invalid& invalid) {

@@ -7,6 +7,7 @@
 #include "core/controller/SensorWatch.h"
 #include "core/controller/TraceWriter.h"
 #include "core/devices/LinearRack.h"
+#include "core/devices/MultiHead.h"
 #include "core/devices/ServoDisc.h"
 #include "core/devices/UmbrellaCarousel.h"
 #include "core/gcode/Program.h"
@@ -184,6 +185,7 @@ private:
     std::unique_ptr<devices::Magazine> magazine_; // the magazine, when the machine folder describes one
     devices::ServoDisc* disc_ = nullptr;           // magazine_ when it is a servo disc
     devices::UmbrellaCarousel* carousel_ = nullptr; // magazine_ when it is an umbrella carousel
+    devices::MultiHead* multiHead_ = nullptr;       // magazine_ when it is a multi-process machine
     DrawbarWiring drawbar_;
     bool slideOut_ = false;                        // a gantry rack's slide (output of param 753)
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output

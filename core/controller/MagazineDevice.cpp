@@ -35,12 +35,29 @@ void Controller::buildMagazine() {
     magazine_.reset();
     disc_ = nullptr;
     carousel_ = nullptr;
+    multiHead_ = nullptr;
     const config::MagazineConfig& m = config_.magazine;
     const config::ParameterTable& p = config_.parameters;
     wireDrawbar();
     switch (m.device) {
     case Device::None: return;
     case Device::LinearRack: buildRack(); return;
+    case Device::MultiHead: {
+        auto heads = std::make_unique<devices::MultiHead>(saturatingInt(p.get(param::kMagazineCapacity)),
+                                                          p.get(param::kChangeZUp), m.tolerance,
+                                                          saturatingInt(p.get(param::kCurrentTool)));
+        multiHead_ = heads.get();
+        magazine_ = std::move(heads);
+        // the head in use (param 800) was left down: its cylinder's output is on
+        if (const int inUse = multiHead_->spindleTool(); inUse != 0) {
+            config::PortAssignment cylinder =
+                config::portAssignment(p, param::kMultiProcessOutput1 + 3 * (inUse - 1));
+            if (cylinder.wired()) {
+                machine_.setOutput(cylinder.pin, cylinder.activeLevel);
+            }
+        }
+        return;
+    }
     case Device::ServoDisc: {
         devices::ServoDisc::Geometry g;
         g.station = Eigen::Vector3d(p.get(param::kChangeFrontX), p.get(param::kChangeFrontY), p.get(param::kChangeZDown));
@@ -242,6 +259,13 @@ std::optional<std::string> Controller::magazineOutput(int port, int level, doubl
             linkedInputSource_[m.inPositionInput] = source();
         }
         return turn.crash;
+    }
+    for (int head = 1; multiHead_ && head <= multiHead_->pocketCount(); ++head) {
+        config::PortAssignment cylinder =
+            config::portAssignment(config_.parameters, param::kMultiProcessOutput1 + 3 * (head - 1));
+        if (cylinder.wired() && port == cylinder.pin) {
+            return multiHead_->cylinder(head, level == cylinder.activeLevel, nose);
+        }
     }
     if (carousel_ && port == m.slideOutput) {
         devices::UmbrellaCarousel::Action slide = carousel_->slide(level == 1, nose, now);

@@ -1,4 +1,4 @@
-// 100 random tool changes on each bundled rack (side and top loading), one controller, as an
+// 100 random tool changes on each bundled M350 magazine, one controller, as an
 // operator would type them in MDI: after each, the spindle holds the tool asked for, #1300 agrees,
 // and every other tool is in its own pocket: no tool lost, none doubled.
 #include "RunProgram.h"
@@ -16,6 +16,7 @@ using namespace m350::test;
 struct Rack {
     const char* folder;
     bool t0ReturnsTheTool; // the follow-row flow puts the tool away on T0; the fixed rows ignore T0
+    double slowestAtLeast = 5.0; // s of machine time the slowest change takes at least
 };
 
 class MagazineSoak : public testing::TestWithParam<Rack> {};
@@ -51,12 +52,13 @@ TEST_P(MagazineSoak, HundredRandomChangesLeaveEveryToolAccountedFor) {
     // What a trainer reads in the log: one change takes ~18 s of machine time; the soak, milliseconds.
     RecordProperty("slowest_change_sim_s", std::to_string(slowest));
     RecordProperty("soak_wall_s", std::to_string(wall));
-    EXPECT_GT(slowest, 5.0);
+    EXPECT_GT(slowest, GetParam().slowestAtLeast);
     EXPECT_LT(slowest, 30.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(BundledRacks, MagazineSoak,
                          testing::Values(Rack{"m350-linear16", false}, Rack{"m350-rack-top", false},
-                                         Rack{"m350-follow-row", true}, Rack{"m350-servo-disc", true}));
+                                         Rack{"m350-follow-row", true}, Rack{"m350-servo-disc", true},
+                                         Rack{"m350-multi-head", true, 0.5}, Rack{"m350-manual", false, 0.5}));
 
 } // namespace
