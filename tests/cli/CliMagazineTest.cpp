@@ -1,0 +1,46 @@
+// The bundled magazines through m350-sim, as an engineer scripting checks of a machine folder
+// would drive them: --config, --tool, --input, and what the report says of the tools.
+#include "tests/cli/CliFixture.h"
+
+#include <gtest/gtest.h>
+
+namespace m350::clitest {
+
+std::string machine(const std::string& name) {
+    return std::string(M350_MACHINES_DIR) + "/" + name;
+}
+
+TEST_F(CliTest, UmbrellaM06ExchangesThroughThePapersO9001) {
+    ProcessResult r = sim({"mdi", "G90", "M06 T5", "--config", machine("fanuc-umbrella"), "--tool", "3", "--print",
+                           "1000,4003"});
+    ASSERT_EQ(r.exitStatus, kExitOk) << r.err;
+    json j = output(r);
+    EXPECT_EQ(j.value("tool", -1), 5);
+    EXPECT_EQ(j["pockets"].value("3", -1), 3);
+    EXPECT_EQ(j["pockets"].value("5", -1), 0);
+    EXPECT_EQ(j["vars"].value("1000", json()), 1);
+    EXPECT_EQ(j["vars"].value("4003", json()), 90);
+}
+
+TEST_F(CliTest, ServoDiscWithItsInPositionSensorHeldOffStopsNamingIt) {
+    ProcessResult r = sim({"mdi", "T3", "--config", machine("m350-servo-disc"), "--input", "IN13=0",
+                           "--sensor-timeout", "1.5"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    json j = output(r);
+    EXPECT_EQ(j["alarm"].value("code", std::string()), "sensor_timeout");
+    EXPECT_NE(j["alarm"].value("message", std::string()).find("IN13 (disc in position) never became 1: waited 1.5 s"),
+              std::string::npos)
+        << j["alarm"];
+    EXPECT_NE(r.err.find("slib-g.nc:"), std::string::npos) << r.err;
+}
+
+TEST_F(CliTest, MultiHeadAndManualMachinesChangeTools) {
+    json heads = output(sim({"mdi", "T4", "--config", machine("m350-multi-head")}));
+    EXPECT_EQ(heads.value("tool", -1), 4);
+    EXPECT_EQ(heads["outputs"][5], 1); // OUT06: head 4's cylinder
+    json manual = output(sim({"mdi", "T2", "--config", machine("m350-manual")}));
+    EXPECT_EQ(manual.value("tool", -1), 2);
+    EXPECT_EQ(manual.value("status", std::string()), "ok");
+}
+
+} // namespace m350::clitest
