@@ -54,12 +54,13 @@ void SimulatedMachine::driveInput(int port, int level, double at) {
     while (timeline.size() > 2 && timeline[timeline.size() - 2].first <= time_) {
         timeline.erase(timeline.begin());
     }
+    const int before = signalAt(port, at).level;
     timeline.emplace_back(at, level);
     if (!observer_) {
         return;
     }
     std::erase_if(pendingInputs_, [port, at](const MachineEvent& e) { return e.port == -port && e.start >= at; });
-    if (faults_[index]) {
+    if (faults_[index] || before == level) {
         return; // a faulty sensor does not follow its device
     }
     MachineEvent event;
