@@ -31,13 +31,14 @@ inline std::string shortNumber(double v) {
 struct TracedRun {
     ProgramRun run;
     std::vector<std::string> events;
+    std::vector<std::string> signals; // "OUT03=1 at 0.601", "M83" (an M code the PMC answered)
 };
 
 inline TracedRun runTraced(config::MachineConfig config, const std::string& program,
                            controller::RunSettings settings = {}) {
     std::ostringstream trace;
     settings.trace = &trace;
-    TracedRun traced{runProgram(std::move(config), program, std::move(settings)), {}};
+    TracedRun traced{runProgram(std::move(config), program, std::move(settings)), {}, {}};
     std::istringstream in(trace.str());
     for (std::string line; std::getline(in, line);) {
         auto event = nlohmann::json::parse(line);
@@ -56,6 +57,11 @@ inline TracedRun runTraced(config::MachineConfig config, const std::string& prog
                                     shortNumber(event["end"].get<double>() - event["start"].get<double>()));
         } else if (type == "spindle") {
             traced.events.push_back("spindle " + event["state"].get<std::string>());
+        } else if (type == "io") {
+            traced.signals.push_back(event["port"].get<std::string>() + "=" + std::to_string(event["level"].get<int>()) +
+                                     " at " + shortNumber(event["t"].get<double>()));
+        } else if (type == "pmc") {
+            traced.signals.push_back("M" + std::to_string(event["m"].get<int>()));
         }
     }
     return traced;

@@ -5,6 +5,7 @@
 #include "core/devices/UmbrellaCarousel.h"
 
 #include "RunProgram.h"
+#include "TracedRun.h"
 #include "ShippedMacros.h"
 
 #include <gtest/gtest.h>
@@ -113,6 +114,20 @@ TEST(UmbrellaMachine, ExchangeReturnsTheOldToolAndRestoresTheModes) {
     RecordProperty("exchange_sim_s", std::to_string(r.simTime));
     EXPECT_GT(r.simTime, 4.0);
     EXPECT_LT(r.simTime, 15.0);
+}
+
+TEST(UmbrellaMachine, ThePmcFinishesEachMCodeWhenItsSensorSaysSo) {
+    controller::RunSettings settings;
+    settings.tool = 3;
+    TracedRun t = runTraced(bundledMachine(kUmbrella), "M06 T0\nM30\n", settings);
+    EXPECT_RUN_OK(t.run);
+    // the return only: carousel in (1.2 s to IN05), release (0.3 s to IN11), up, clamp, back
+    const std::vector<std::string> expected{
+        "M81", "M83", "OUT03=1 at 0.601", "IN06=0 at 0.601", "IN05=1 at 1.801",
+        "M11", "OUT01=1 at 2.3012", "IN11=1 at 2.6012", "IN12=0 at 2.6012",
+        "M10", "OUT01=0 at 3.6316", "IN11=0 at 3.9316", "IN12=1 at 3.9316",
+        "M85", "M84", "OUT03=0 at 3.9418", "IN05=0 at 3.9418", "IN06=1 at 5.1418"};
+    EXPECT_EQ(t.signals, expected);
 }
 
 TEST(UmbrellaMachine, T0ReturnsOnlyAndAFetchFillsTheEmptySpindle) {
