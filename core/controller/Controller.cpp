@@ -356,17 +356,17 @@ void Controller::zeroWorkAxis(int axis) {
 }
 
 int Controller::spindleTool() const {
-    if (magazine_) {
-        // what the spindle really holds; a virtual tool (above the magazine) was put in by hand,
-        // which the magazine does not see
-        int believed = config_.dialect->id == gcode::DialectId::M350
-                           ? saturatingInt(config_.parameters.get(param::kCurrentTool))
-                           : fanucSpindleTool_;
-        bool virtualTool = believed > magazine_->pocketCount() && magazine_->spindleTool() == 0;
-        return virtualTool ? believed : magazine_->spindleTool();
+    // what the controller believes: #1300 on the M350, the tool M85 stored on a FANUC
+    const int believed = config_.dialect->id == gcode::DialectId::M350
+                             ? saturatingInt(config_.parameters.get(param::kCurrentTool))
+                             : fanucSpindleTool_;
+    if (!magazine_) {
+        return believed;
     }
-    return config_.dialect->id == gcode::DialectId::M350 ? saturatingInt(config_.parameters.get(param::kCurrentTool))
-                                                         : fanucSpindleTool_;
+    // what the spindle really holds; a virtual tool (above the magazine) was put in by hand,
+    // which the magazine does not see
+    bool virtualTool = believed > magazine_->pocketCount() && magazine_->spindleTool() == 0;
+    return virtualTool ? believed : magazine_->spindleTool();
 }
 
 void Controller::fill(RunReport& out) const {

@@ -153,6 +153,13 @@ private:
     void checkMagazine(const machine::MachineEvent& event);
     std::optional<std::string> magazineOutput(int port, int level, double now);
     void driveSensor(const Sensor& sensor, bool active, double at);
+    void driveInPosition(double now, double seconds);
+    // Makes `device` the magazine; returns it for the typed pointer of its kind.
+    template <class Device> Device* install(std::unique_ptr<Device> device) {
+        Device* installed = device.get();
+        magazine_ = std::move(device);
+        return installed;
+    }
     Eigen::Vector3d noseForMagazine(const machine::Axes& position) const;
     void answerPmc(int code);
     void awaitSensor(int pin, int level, int mCode);

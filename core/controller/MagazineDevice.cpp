@@ -20,6 +20,11 @@ namespace {
 
 constexpr double kDefaultClampSeconds = 0.15;
 
+// The tool param 800 (or --tool) puts in the spindle, when the magazine has a pocket for it.
+int toolInMagazine(int tool, int pockets) {
+    return tool >= 1 && tool <= pockets ? tool : 0;
+}
+
 // Every tool has its own pocket; the one in the spindle leaves its pocket empty.
 std::vector<int> toolsInPockets(int pockets, int inSpindle) {
     std::vector<int> tools;
@@ -43,11 +48,9 @@ void Controller::buildMagazine() {
     case Device::None: return;
     case Device::LinearRack: buildRack(); return;
     case Device::MultiHead: {
-        auto heads = std::make_unique<devices::MultiHead>(saturatingInt(p.get(param::kMagazineCapacity)),
-                                                          p.get(param::kChangeZUp), m.tolerance,
-                                                          saturatingInt(p.get(param::kCurrentTool)));
-        multiHead_ = heads.get();
-        magazine_ = std::move(heads);
+        multiHead_ = install(std::make_unique<devices::MultiHead>(saturatingInt(p.get(param::kMagazineCapacity)),
+                                                                  p.get(param::kChangeZUp), m.tolerance,
+                                                                  saturatingInt(p.get(param::kCurrentTool))));
         // the head in use (param 800) was left down: its cylinder's output is on
         if (const int inUse = multiHead_->spindleTool(); inUse != 0) {
             config::PortAssignment cylinder =
@@ -66,12 +69,9 @@ void Controller::buildMagazine() {
         g.tolerance = m.tolerance;
         g.secondsPerPocket = m.secondsPerPocket;
         g.settleSeconds = m.settleSeconds;
-        const int tool = saturatingInt(p.get(param::kCurrentTool));
-        const int inSpindle = tool >= 1 && tool <= g.pockets ? tool : 0;
-        auto disc = std::make_unique<devices::ServoDisc>(g, toolsInPockets(g.pockets, inSpindle), inSpindle,
-                                                         inSpindle != 0 ? inSpindle : 1);
-        disc_ = disc.get();
-        magazine_ = std::move(disc);
+        const int inSpindle = toolInMagazine(saturatingInt(p.get(param::kCurrentTool)), g.pockets);
+        disc_ = install(std::make_unique<devices::ServoDisc>(g, toolsInPockets(g.pockets, inSpindle), inSpindle,
+                                                             inSpindle != 0 ? inSpindle : 1));
         machine_.presetInput(m.inPositionInput, 1);
         return;
     }
@@ -89,11 +89,9 @@ void Controller::buildMagazine() {
         g.tolerance = m.tolerance;
         g.secondsPerPocket = m.secondsPerPocket;
         g.slideSeconds = m.slideSeconds;
-        const int inSpindle = fanucSpindleTool_ >= 1 && fanucSpindleTool_ <= g.pockets ? fanucSpindleTool_ : 0;
-        auto carousel = std::make_unique<devices::UmbrellaCarousel>(g, toolsInPockets(g.pockets, inSpindle), inSpindle,
-                                                                    inSpindle != 0 ? inSpindle : 1);
-        carousel_ = carousel.get();
-        magazine_ = std::move(carousel);
+        const int inSpindle = toolInMagazine(fanucSpindleTool_, g.pockets);
+        carousel_ = install(std::make_unique<devices::UmbrellaCarousel>(g, toolsInPockets(g.pockets, inSpindle),
+                                                                        inSpindle, inSpindle != 0 ? inSpindle : 1));
         machine_.presetInput(m.inPositionInput, 1);
         machine_.presetInput(m.awayInput, 1);
         machine_.presetInput(m.atSpindleInput, 0);
@@ -122,9 +120,8 @@ void Controller::buildRack() {
     }
     slideOut_ = false;
     const int pockets = static_cast<int>(g.pockets.size());
-    const int tool = saturatingInt(p.get(param::kCurrentTool));
-    const int spindle = tool >= 1 && tool <= pockets ? tool : 0;
-    magazine_ = std::make_unique<devices::LinearRack>(std::move(g), toolsInPockets(pockets, spindle), spindle);
+    const int spindle = toolInMagazine(saturatingInt(p.get(param::kCurrentTool)), pockets);
+    install(std::make_unique<devices::LinearRack>(std::move(g), toolsInPockets(pockets, spindle), spindle));
 }
 
 // The drawbar and its clamp cylinder's sensors: the IO page's triples on the M350, the magazine's
@@ -197,6 +194,15 @@ void Controller::driveSensor(const Sensor& sensor, bool active, double at) {
     }
 }
 
+// A disc or carousel turning from `now` for `seconds`: its in-position signal is off meanwhile.
+void Controller::driveInPosition(double now, double seconds) {
+    if (seconds > 0.0) {
+        const Sensor inPosition{config_.magazine.inPositionInput, 1};
+        driveSensor(inPosition, false, now);
+        driveSensor(inPosition, true, now + seconds);
+    }
+}
+
 void Controller::checkMagazine(const machine::MachineEvent& event) {
     using Type = machine::MachineEvent::Type;
     std::optional<std::string> crash;
@@ -253,10 +259,8 @@ std::optional<std::string> Controller::magazineOutput(int port, int level, doubl
             pocket |= machine_.output(m.selectOutputs[bit]) << bit;
         }
         devices::ServoDisc::Turn turn = disc_->turnTo(pocket, now, nose);
-        if (!turn.crash && turn.seconds > 0.0) {
-            machine_.driveInput(m.inPositionInput, 0, now);
-            machine_.driveInput(m.inPositionInput, 1, now + turn.seconds);
-            linkedInputSource_[m.inPositionInput] = source();
+        if (!turn.crash) {
+            driveInPosition(now, turn.seconds);
         }
         return turn.crash;
     }

@@ -60,10 +60,7 @@ void Controller::answerPmc(int code) {
         if (turn.crash) {
             throw macro::MacroError{AlarmCode::Crash, *turn.crash, 0};
         }
-        if (turn.seconds > 0.0) {
-            machine_.driveInput(m.inPositionInput, 0, machine_.time());
-            machine_.driveInput(m.inPositionInput, 1, machine_.time() + turn.seconds);
-        }
+        driveInPosition(machine_.time(), turn.seconds);
         awaitSensor(m.inPositionInput, 1, code);
         return;
     }

@@ -25,7 +25,7 @@ using text::tool;
 } // namespace
 
 LinearRack::LinearRack(Geometry geometry, std::vector<int> pocketTools, int spindleTool)
-    : geometry_(std::move(geometry)), pockets_(std::move(pocketTools)), spindleTool_(spindleTool) {
+    : geometry_(std::move(geometry)), pockets_(std::move(pocketTools)), spindle_(spindleTool) {
     pockets_.resize(geometry_.pockets.size(), 0);
 }
 
@@ -120,11 +120,11 @@ std::optional<std::string> LinearRack::move(const Vector3d& from, const Vector3d
                    ": move near the rack at feed (G01 / G53 ... F)";
         }
     }
-    return spindleTool_ != 0 ? moveHolding(from, to) : moveEmpty(from, to, spindleTurning);
+    return spindle_.tool() != 0 ? moveHolding(from, to) : moveEmpty(from, to, spindleTurning);
 }
 
 std::optional<std::string> LinearRack::moveHolding(const Vector3d& from, const Vector3d& to) {
-    const int held = spindleTool_;
+    const int held = spindle_.tool();
     if (engaged_ != 0) {
         const int k = engaged_;
         if (!alongEntry(from, to)) {
@@ -185,7 +185,7 @@ std::optional<std::string> LinearRack::moveEmpty(const Vector3d& from, const Vec
             return "came down onto " + tool(standing) + " in " + pocket(k) +
                    " with the spindle turning: stop it (M05) and wait for it (M300) first";
         }
-        if (!released_) {
+        if (!spindle_.released()) {
             return "came down onto " + tool(standing) + " in " + pocket(k) +
                    " with the drawbar clamped: release it (M154) before coming down";
         }
@@ -197,28 +197,10 @@ std::optional<std::string> LinearRack::moveEmpty(const Vector3d& from, const Vec
 }
 
 std::optional<std::string> LinearRack::drawbar(bool released, const Vector3d& nose) {
-    if (released == released_) {
-        return std::nullopt;
-    }
-    released_ = released;
-    if (released) {
-        if (spindleTool_ == 0) {
-            return std::nullopt;
-        }
-        const int held = spindleTool_;
-        spindleTool_ = 0;
-        if (engaged_ != 0) {
-            pockets_[static_cast<std::size_t>(engaged_ - 1)] = held;
-            return std::nullopt;
-        }
-        dropped_.push_back(held);
-        return tool(held) + " dropped: the drawbar was released at " + at(nose) +
+    int* pocket = engaged_ != 0 ? &pockets_[static_cast<std::size_t>(engaged_ - 1)] : nullptr;
+    if (const int dropped = spindle_.change(released, pocket)) {
+        return tool(dropped) + " dropped: the drawbar was released at " + at(nose) +
                " with no pocket under the tool (it fell onto the table)";
-    }
-    if (spindleTool_ == 0 && engaged_ != 0) {
-        int& standing = pockets_[static_cast<std::size_t>(engaged_ - 1)];
-        spindleTool_ = standing;
-        standing = 0; // still in the fork until it slides out, but it is the spindle's now
     }
     return std::nullopt;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/devices/Magazine.h"
+#include "core/devices/SpindleDrawbar.h"
 #include "core/machine/MachineTypes.h"
 
 #include <optional>
@@ -35,11 +36,11 @@ public:
                                     bool spindleTurning, double at) override;
     std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) override;
 
-    int spindleTool() const override { return spindleTool_; }
+    int spindleTool() const override { return spindle_.tool(); }
     int pocketTool(int pocket) const override { return pockets_[static_cast<std::size_t>(pocket - 1)]; }
     int pocketCount() const override { return static_cast<int>(pockets_.size()); }
-    const std::vector<int>& droppedTools() const override { return dropped_; }
-    bool released() const { return released_; }
+    const std::vector<int>& droppedTools() const override { return spindle_.dropped(); }
+    bool released() const { return spindle_.released(); }
 
     // A device that carries its pockets (a disc) puts another tool in a pocket, or takes it out.
     void setPocketTool(int pocket, int tool) { pockets_[static_cast<std::size_t>(pocket - 1)] = tool; }
@@ -64,11 +65,9 @@ private:
 
     Geometry geometry_;
     std::vector<int> pockets_; // tool in each pocket, 0 empty
-    int spindleTool_ = 0;
-    bool released_ = false;
+    SpindleDrawbar spindle_;
     int engaged_ = 0;          // the pocket whose fork holds the spindle's tool (or whose tool the
                                // released nose stands over), 0 when none
-    std::vector<int> dropped_;
 };
 
 } // namespace m350::devices

@@ -25,7 +25,7 @@ using text::tool;
 
 UmbrellaCarousel::UmbrellaCarousel(const Geometry& geometry, std::vector<int> pocketTools, int spindleTool,
                                    int atSpindle)
-    : geometry_(geometry), pockets_(std::move(pocketTools)), spindleTool_(spindleTool), atSpindle_(atSpindle) {
+    : geometry_(geometry), pockets_(std::move(pocketTools)), spindle_(spindleTool), atSpindle_(atSpindle) {
     pockets_.resize(static_cast<std::size_t>(std::max(1, geometry_.pockets)), 0);
     if (atSpindle_ < 1 || atSpindle_ > pocketCount()) {
         atSpindle_ = 1;
@@ -54,9 +54,9 @@ std::optional<std::string> UmbrellaCarousel::move(const Vector3d& from, const Ve
     if (at < busyUntil_ && to.z() < geometry_.clearZ - geometry_.tolerance) {
         return "came down into the carousel at " + where(to) + " while it was still turning or sliding";
     }
-    if (spindleTool_ != 0) {
+    if (spindle_.tool() != 0) {
         // only at the change height, in its clip: any Z move tears the clamped tool out of it
-        return "Z moved from " + where(from) + " to " + where(to) + " while " + tool(spindleTool_) +
+        return "Z moved from " + where(from) + " to " + where(to) + " while " + tool(spindle_.tool()) +
                " was clamped in the spindle and held by the clip of " + pocket(atSpindle_) +
                ": release it (M11) first, or slide the carousel back (M84)";
     }
@@ -82,7 +82,7 @@ std::optional<std::string> UmbrellaCarousel::moveEmpty(const Vector3d& from, con
             return "came down onto " + tool(standing) + " in " + pocket(atSpindle_) +
                    " with the spindle turning: stop and orient it (M19) first";
         }
-        if (!released_) {
+        if (!spindle_.released()) {
             return "came down onto " + tool(standing) + " in " + pocket(atSpindle_) +
                    " with the drawbar clamped: release it (M11) before coming down";
         }
@@ -100,28 +100,10 @@ std::optional<std::string> UmbrellaCarousel::moveEmpty(const Vector3d& from, con
 }
 
 std::optional<std::string> UmbrellaCarousel::drawbar(bool released, const Vector3d& nose) {
-    if (released == released_) {
-        return std::nullopt;
-    }
-    released_ = released;
-    if (released) {
-        if (spindleTool_ == 0) {
-            return std::nullopt;
-        }
-        const int held = spindleTool_;
-        spindleTool_ = 0;
-        if (engaged_) {
-            clip() = held;
-            return std::nullopt;
-        }
-        dropped_.push_back(held);
-        return tool(held) + " dropped: the spindle released it at " + where(nose) +
+    if (const int dropped = spindle_.change(released, engaged_ ? &clip() : nullptr)) {
+        return tool(dropped) + " dropped: the spindle released it at " + where(nose) +
                (slideIn_ ? " out of its clip's reach (the change height is G30 P3)"
                          : " with the carousel away from the spindle (slide it in with M83 first)");
-    }
-    if (spindleTool_ == 0 && engaged_ && clip() != 0) {
-        spindleTool_ = clip();
-        clip() = 0; // still in the clip until the carousel slides back, but the spindle's now
     }
     return std::nullopt;
 }
@@ -134,21 +116,21 @@ std::optional<std::string> UmbrellaCarousel::slideIn(const Vector3d& nose) {
                ", away from the change position X" + text::millimetres(geometry_.changeX) + " Y" +
                text::millimetres(geometry_.changeY) + ": it hit the spindle head";
     }
-    if (spindleTool_ != 0) {
+    if (spindle_.tool() != 0) {
         if (!near(nose.z(), geometry_.gripZ)) {
-            return "the carousel hit " + tool(spindleTool_) + " in the spindle at " + where(nose) +
+            return "the carousel hit " + tool(spindle_.tool()) + " in the spindle at " + where(nose) +
                    ": with a tool in the spindle it comes in at the change height only (G30 P3)";
         }
         if (standing != 0) {
-            return tool(spindleTool_) + " in the spindle ran into " + tool(standing) + " in " + pocket(atSpindle_) +
+            return tool(spindle_.tool()) + " in the spindle ran into " + tool(standing) + " in " + pocket(atSpindle_) +
                    ": the pocket at the spindle must be the empty one of the tool being returned";
         }
         if (turning_) {
-            return "the clip of " + pocket(atSpindle_) + " hit " + tool(spindleTool_) +
+            return "the clip of " + pocket(atSpindle_) + " hit " + tool(spindle_.tool()) +
                    " turning in the spindle: stop and orient it (M19) first";
         }
         if (!oriented_) {
-            return "the clip of " + pocket(atSpindle_) + " hit " + tool(spindleTool_) +
+            return "the clip of " + pocket(atSpindle_) + " hit " + tool(spindle_.tool()) +
                    "'s holder out of line with its key: orient the spindle (M19) first";
         }
         engaged_ = true;
@@ -174,7 +156,7 @@ UmbrellaCarousel::Action UmbrellaCarousel::slide(bool toSpindle, const Vector3d&
     }
     if (toSpindle) {
         action.crash = slideIn(nose);
-    } else if (engaged_ && spindleTool_ == 0 && clip() != 0) {
+    } else if (engaged_ && spindle_.tool() == 0 && clip() != 0) {
         action.crash = "the carousel pulled " + tool(clip()) + " sideways out of the open spindle nose at " +
                        where(nose) + ": raise Z (G30 P2) after releasing it, or clamp it (M10) first";
     }

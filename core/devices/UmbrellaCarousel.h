@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/devices/Magazine.h"
+#include "core/devices/SpindleDrawbar.h"
 
 #include <optional>
 #include <string>
@@ -38,10 +39,10 @@ public:
                                     bool spindleTurning, double at) override;
     std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) override;
 
-    int spindleTool() const override { return spindleTool_; }
+    int spindleTool() const override { return spindle_.tool(); }
     int pocketCount() const override { return static_cast<int>(pockets_.size()); }
     int pocketTool(int pocket) const override { return pockets_[static_cast<std::size_t>(pocket - 1)]; }
-    const std::vector<int>& droppedTools() const override { return dropped_; }
+    const std::vector<int>& droppedTools() const override { return spindle_.dropped(); }
 
     // What an actuator command costs: the hardware's complaint, or how long the motion takes.
     struct Action {
@@ -70,15 +71,13 @@ private:
 
     Geometry geometry_;
     std::vector<int> pockets_;
-    int spindleTool_ = 0;
+    SpindleDrawbar spindle_;
     int atSpindle_ = 1;      // the pocket on the spindle side
     bool slideIn_ = false;   // the carousel stands at the spindle
     bool engaged_ = false;   // the nose is in the clip at the spindle (holding its tool, or over it)
-    bool released_ = false;
     bool turning_ = false;
     bool oriented_ = false;
     double busyUntil_ = -1.0; // turning or sliding until then
-    std::vector<int> dropped_;
 };
 
 } // namespace m350::devices

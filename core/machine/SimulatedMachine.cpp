@@ -4,6 +4,20 @@
 
 namespace m350::machine {
 
+namespace {
+
+// An input changing to `level` at virtual time `at`, as observers see it.
+MachineEvent inputEvent(int port, int level, double at) {
+    MachineEvent event;
+    event.type = MachineEvent::Type::Io;
+    event.start = event.end = at;
+    event.port = -port;
+    event.level = level;
+    return event;
+}
+
+} // namespace
+
 void SimulatedMachine::notify(const MachineEvent& event) {
     if (observer_) {
         reportLinkedInputs(event.start);
@@ -31,12 +45,8 @@ void SimulatedMachine::scheduleLinkedInputs(int output) {
         if (faults_[static_cast<std::size_t>(link.input - 1)]) {
             continue; // a faulty sensor does not follow its actuator
         }
-        MachineEvent event;
-        event.type = MachineEvent::Type::Io;
-        event.start = event.end = time_ + link.delay;
-        event.port = -link.input;
-        event.level = signalAt(link.input, event.start).level;
-        schedulePending(event);
+        const double at = time_ + link.delay;
+        schedulePending(inputEvent(link.input, signalAt(link.input, at).level, at));
     }
 }
 
@@ -61,14 +71,9 @@ void SimulatedMachine::driveInput(int port, int level, double at) {
     }
     std::erase_if(pendingInputs_, [port, at](const MachineEvent& e) { return e.port == -port && e.start >= at; });
     if (faults_[index] || before == level) {
-        return; // a faulty sensor does not follow its device
+        return; // a faulty sensor does not follow its device; an unchanged one makes no event
     }
-    MachineEvent event;
-    event.type = MachineEvent::Type::Io;
-    event.start = event.end = at;
-    event.port = -port;
-    event.level = level;
-    schedulePending(event);
+    schedulePending(inputEvent(port, level, at));
 }
 
 std::optional<SimulatedMachine::Signal> SimulatedMachine::drivenSignal(std::size_t index, double t) const {
@@ -280,12 +285,7 @@ void SimulatedMachine::setInput(int port, int level) {
     }
     current = level;
     inputChangedAt_[static_cast<std::size_t>(port - 1)] = time_;
-    MachineEvent event;
-    event.type = MachineEvent::Type::Io;
-    event.start = event.end = time_;
-    event.port = -port;
-    event.level = level;
-    notify(event);
+    notify(inputEvent(port, level, time_));
 }
 
 bool SimulatedMachine::setterPressed(const Axes& at) const {
