@@ -260,6 +260,7 @@ bool Controller::start() {
     }
     auto unit = program_.mainUnit();
     displayTime_ = machine_.time();
+    runStartedAt_ = displayTime_;
     if (!unit || !executor_->start(*unit)) {
         state_ = RunState::Finished;
         return true;

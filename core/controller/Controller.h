@@ -2,6 +2,7 @@
 
 #include "core/config/IoPorts.h"
 #include "core/config/MachineConfig.h"
+#include "core/controller/PanelStatus.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
 #include "core/controller/SensorWatch.h"
@@ -75,6 +76,10 @@ public:
     double displayTime() const { return displayTime_; }
     machine::Axes displayPosition() const { return machine_.positionAt(displayTime_); }
     RunReport snapshot() const;
+    // What the panel shows now (PanelStatusView.cpp): positions at the display time, modes, IO.
+    PanelStatus panelStatus();
+    // The active modal codes as the Monitor page prints them: "G00 G17 G90 G94 G21 G40 G49 G80 G54 F3000 S0".
+    std::string modalLine() const;
 
     // 回零: homes the given axes (0 X .. 4 B), Z first. An alarm when an axis has no home switch.
     std::optional<Alarm> home(const std::vector<int>& axes);
@@ -180,6 +185,9 @@ private:
     int fanucSpindleTool_ = 0;
     double dialogAnswer_ = 0.0;
     std::vector<std::string> messages_;
+    std::string statusMessage_; // the #1503 text the status line shows now (cleared by #1503 = 1000)
+    double feedOverride_ = 100.0;
+    double runStartedAt_ = 0.0;
     bool mdi_ = false;
     RunState state_ = RunState::Idle;
     std::optional<Alarm> alarm_;

@@ -90,7 +90,10 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
     case VariableKind::ToolOffset: toolOffsets_.set(info.index, value); return std::nullopt;
     case VariableKind::Homed: homed_[static_cast<std::size_t>(info.index)] = value != 0.0 ? 1 : 0; return std::nullopt;
     case VariableKind::Message:
-        if (value != kClearMessage && !text.empty()) {
+        if (value == kClearMessage) {
+            statusMessage_.clear();
+        } else if (!text.empty()) {
+            statusMessage_ = std::string(text);
             postMessage(std::string(text));
         }
         return std::nullopt;

@@ -103,6 +103,7 @@ void Controller::reset() {
 double Controller::setFeedOverride(double percent) {
     double maximum = config_.parameters.get(param::kMaxFeedOverride);
     double applied = std::clamp(percent, 0.0, maximum > 0.0 ? maximum : 150.0);
+    feedOverride_ = applied;
     machine_.setFeedOverride(applied / 100.0, config_.parameters.get(param::kOverrideActsOnRapids) != 0.0);
     return applied;
 }

@@ -1,0 +1,60 @@
+#pragma once
+
+#include "core/common/Alarm.h"
+#include "core/machine/MachineTypes.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace m350::controller {
+
+// Everything the panel shows of the controller at one moment, as plain values: the machine
+// session copies it out of its worker thread and the widgets only ever read such a copy.
+// Positions are where the axes are at the display time (inside a move, not at its end).
+struct PanelStatus {
+    enum class Run : std::uint8_t { Idle, Running, Hold, Finished, Alarm, EStop };
+    Run run = Run::Idle;
+    double time = 0.0; // the display's virtual time, s
+
+    machine::Axes machine = machine::Axes::Zero(); // 机械坐标
+    machine::Axes work = machine::Axes::Zero();    // 工件坐标
+    std::array<bool, machine::kAxisCount> homed{}; // #1515-#1519
+    std::array<bool, machine::kAxisCount> axisShown{true, true, true, false, false}; // A, B when configured
+    int workSystem = 1; // #578: 0 = G92, 1..6 = G54..G59
+
+    double feedOverride = 100.0;    // 进给倍率 FRO, %
+    double spindleOverride = 100.0; // 主轴倍率 SRO, %
+    double jogOverride = 100.0;     // 手动倍率 SJR, %
+    double feed = 0.0;              // programmed F, mm/min
+    double spindleRpm = 0.0;        // commanded speed of the turning spindle
+    machine::SpindleState spindle = machine::SpindleState::Stop; // 停止 正转 反转 点动 攻丝 准停
+    int tool = 0;                   // 当前刀具: what the spindle holds
+    int totalCount = 0;             // 总加工数 (param 201)
+    int pieceCount = 0;             // 加工件数 (param 202)
+    double runSeconds = 0.0;        // 加工时间 of the current run
+    std::string modalLine;          // "G00 G17 G90 G94 G21 G40 G49 G80 G54 F3000 S12000"
+
+    std::string message;            // the status line's #1503 text (empty when cleared)
+    std::string programStop;        // why a run holds by itself (M00, G04 P-1), else empty
+    std::optional<Alarm> alarm;
+    std::string file;               // file and line of the block being executed
+    std::uint32_t line = 0;
+    bool mdi = false;               // the loaded program is MDI lines
+    std::uint64_t blocks = 0;
+
+    struct SensorWait {
+        std::string input; // "IN11 (tool released)"
+        int awaitedLevel = 1;
+        double seconds = 0.0;
+        std::string file;
+        std::uint32_t line = 0;
+    };
+    std::optional<SensorWait> sensorWait;
+
+    std::array<int, machine::kInputCount> inputs{};   // IN01-IN24 as the macros read them
+    std::array<int, machine::kOutputCount> outputs{}; // OUT01-OUT21
+};
+
+} // namespace m350::controller

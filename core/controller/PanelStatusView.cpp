@@ -1,0 +1,103 @@
+// What the panel shows: the controller's state copied into a PanelStatus at the display time.
+#include "core/controller/Controller.h"
+
+#include "core/common/Numeric.h"
+#include "core/config/ParameterNumbers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace m350::controller {
+
+namespace param = config::param;
+
+namespace {
+
+PanelStatus::Run runOf(Controller::RunState state) {
+    switch (state) {
+    case Controller::RunState::Idle: return PanelStatus::Run::Idle;
+    case Controller::RunState::Running: return PanelStatus::Run::Running;
+    case Controller::RunState::Hold: return PanelStatus::Run::Hold;
+    case Controller::RunState::Finished: return PanelStatus::Run::Finished;
+    case Controller::RunState::Alarm: return PanelStatus::Run::Alarm;
+    case Controller::RunState::EStop: return PanelStatus::Run::EStop;
+    }
+    return PanelStatus::Run::Idle;
+}
+
+// One modal group as the panel's modal line prints it: G00, G17, G80 ...
+std::string gWord(double code) {
+    char text[16];
+    double whole = std::floor(code);
+    if (code == whole) {
+        std::snprintf(text, sizeof text, "G%02d", static_cast<int>(whole));
+    } else {
+        std::snprintf(text, sizeof text, "G%.1f", code);
+    }
+    return text;
+}
+
+} // namespace
+
+std::string Controller::modalLine() const {
+    const interp::ModalState& s = interp_.state();
+    std::string line;
+    for (int group : {1, 2, 3, 5, 6, 7, 8, 9}) {
+        line += gWord(s.groups[static_cast<std::size_t>(group)]);
+        line += ' ';
+    }
+    int slot = interp_.activeSlot();
+    line += slot == 0 ? "G92" : gWord(53 + slot);
+    char words[64];
+    std::snprintf(words, sizeof words, " F%.0f S%.0f", s.feed, s.spindleSpeed);
+    return line + words;
+}
+
+PanelStatus Controller::panelStatus() {
+    PanelStatus out;
+    out.run = runOf(state_);
+    out.time = displayTime_;
+    out.machine = displayPosition();
+    // the offsets in force, applied to where the axes are at the display time
+    out.work = out.machine - (machine_.position() - interp_.workPosition());
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        out.homed[static_cast<std::size_t>(axis)] = homed(axis);
+    }
+    for (int axis = 3; axis < machine::kAxisCount; ++axis) {
+        out.axisShown[static_cast<std::size_t>(axis)] = homeSwitchWired(axis);
+    }
+    out.workSystem = interp_.activeSlot();
+    out.feedOverride = feedOverride_;
+    out.feed = interp_.state().feed;
+    out.spindle = spindleDisplay();
+    out.spindleRpm = machine_.spindleTurning() ? machine_.spindleRpm() : 0.0;
+    out.tool = spindleTool();
+    out.totalCount = saturatingInt(config_.parameters.get(param::kTotalRunCount));
+    out.pieceCount = saturatingInt(config_.parameters.get(param::kPieceCount));
+    out.runSeconds = state_ == RunState::Idle ? 0.0 : std::max(0.0, displayTime_ - runStartedAt_);
+    out.modalLine = modalLine();
+    out.message = statusMessage_;
+    out.programStop = programStop_;
+    out.alarm = alarm_;
+    if (executor_) {
+        if (auto loc = executor_->location()) {
+            out.file = program_.fileName(*loc);
+            out.line = loc->line;
+        }
+        out.blocks = executor_->blocksExecuted();
+    }
+    out.mdi = mdi_;
+    if (auto wait = sensorWait()) {
+        out.sensorWait = PanelStatus::SensorWait{wait->input, wait->awaitedLevel, wait->seconds, wait->file, wait->line};
+    }
+    for (int port = 1; port <= machine::kInputCount; ++port) {
+        out.inputs[static_cast<std::size_t>(port - 1)] = machine_.input(port);
+    }
+    for (int port = 1; port <= machine::kOutputCount; ++port) {
+        out.outputs[static_cast<std::size_t>(port - 1)] = machine_.output(port);
+    }
+    return out;
+}
+
+} // namespace m350::controller
