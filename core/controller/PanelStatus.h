@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/common/Alarm.h"
+#include "core/config/ParameterTable.h"
 #include "core/machine/MachineTypes.h"
 
 #include <array>
@@ -55,6 +56,7 @@ struct PanelStatus {
 
     std::array<int, machine::kInputCount> inputs{};   // IN01-IN24 as the macros read them
     std::array<int, machine::kOutputCount> outputs{}; // OUT01-OUT21
+    config::ParameterTable parameters; // as they stand now (tool Z offsets 930-945, setter 129-137, IO triples)
 };
 
 } // namespace m350::controller

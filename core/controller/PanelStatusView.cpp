@@ -97,6 +97,7 @@ PanelStatus Controller::panelStatus() {
     for (int port = 1; port <= machine::kOutputCount; ++port) {
         out.outputs[static_cast<std::size_t>(port - 1)] = machine_.output(port);
     }
+    out.parameters = config_.parameters;
     return out;
 }
 
