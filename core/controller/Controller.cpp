@@ -3,6 +3,7 @@
 #include "core/common/Numeric.h"
 
 #include "core/config/ParameterNumbers.h"
+#include "core/devices/Magazine.h"
 #include "core/gcode/Parser.h"
 #include "core/gcode/SourceText.h"
 
@@ -17,7 +18,8 @@ namespace param = config::param;
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace || config_.magazine.present() ? this : nullptr),
-      interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, machine_), store_(*config_.dialect, config_.parameters) {
+      interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, machine_), store_(*config_.dialect, config_.parameters),
+      magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}) {
     if (settings_.trace) {
         trace_ = std::make_unique<TraceWriter>(*settings_.trace);
     }
@@ -89,7 +91,7 @@ void Controller::applySettings() {
     interp_.state().feed = config_.parameters.get(param::kDefaultFeed);
     interp_.state().spindleSpeed = config_.parameters.get(param::kDefaultSpindleSpeed);
     configureMachine();
-    buildMagazine();
+    magazine_.build();
     syncToolLength();
     homed_.fill(settings_.homed ? 1 : 0);
     machine::Axes start = machine::Axes::Zero();
@@ -189,8 +191,8 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
         }
         trace_->machineEvent(event, where);
     }
-    if (magazine_ && state_ != RunState::Alarm && state_ != RunState::EStop) {
-        checkMagazine(event);
+    if (magazine_.device() && state_ != RunState::Alarm && state_ != RunState::EStop) {
+        magazine_.onMachineEvent(event);
     }
 }
 
@@ -361,26 +363,28 @@ int Controller::spindleTool() const {
     const int believed = config_.dialect->id == gcode::DialectId::M350
                              ? saturatingInt(config_.parameters.get(param::kCurrentTool))
                              : fanucSpindleTool_;
-    if (!magazine_) {
+    const devices::Magazine* magazine = magazine_.device();
+    if (!magazine) {
         return believed;
     }
     // what the spindle really holds; a virtual tool (above the magazine) was put in by hand,
     // which the magazine does not see
-    bool virtualTool = believed > magazine_->pocketCount() && magazine_->spindleTool() == 0;
-    return virtualTool ? believed : magazine_->spindleTool();
+    bool virtualTool = believed > magazine->pocketCount() && magazine->spindleTool() == 0;
+    return virtualTool ? believed : magazine->spindleTool();
 }
 
 void Controller::fill(RunReport& out) const {
     out.machine = machine_.position();
     out.work = interp_.workPosition();
     out.tool = spindleTool();
+    const devices::Magazine* magazine = magazine_.device();
     int capacity = config_.dialect->id == gcode::DialectId::M350
                        ? saturatingInt(config_.parameters.get(param::kMagazineCapacity))
-                       : magazine_ ? magazine_->pocketCount() : config_.magazineCapacity;
+                       : magazine ? magazine->pocketCount() : config_.magazineCapacity;
     // Without a magazine device every tool has its own pocket, empty while it is in the spindle.
     for (int pocket = 1; pocket <= capacity; ++pocket) {
-        if (magazine_) {
-            out.pockets[pocket] = pocket <= magazine_->pocketCount() ? magazine_->pocketTool(pocket) : 0;
+        if (magazine) {
+            out.pockets[pocket] = pocket <= magazine->pocketCount() ? magazine->pocketTool(pocket) : 0;
         } else {
             out.pockets[pocket] = pocket == out.tool ? 0 : pocket;
         }

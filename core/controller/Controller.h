@@ -6,11 +6,8 @@
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
 #include "core/controller/SensorWatch.h"
+#include "core/controller/MagazineDriver.h"
 #include "core/controller/TraceWriter.h"
-#include "core/devices/LinearRack.h"
-#include "core/devices/MultiHead.h"
-#include "core/devices/ServoDisc.h"
-#include "core/devices/UmbrellaCarousel.h"
 #include "core/gcode/Program.h"
 #include "core/interp/ModalInterpreter.h"
 #include "core/interp/WorkOffsets.h"
@@ -140,35 +137,6 @@ private:
     bool optionalStopOn();
     void watchInput(int pin, int level);
     void pressStartIfAwaited(const config::PortAssignment& key, int pin, int level, const gcode::SourceLocation& where);
-    // the magazine device (MagazineDevice.cpp) and a FANUC carousel's PMC (UmbrellaPmc.cpp)
-    struct Sensor {
-        int pin = 0; // 0: not wired
-        int activeLevel = 1;
-    };
-    struct DrawbarWiring {
-        int output = 0;
-        int releaseLevel = 1;
-        Sensor released;
-        Sensor clamped;
-        double seconds = 0.15; // the clamp cylinder's stroke
-    };
-    void buildMagazine();
-    void buildRack();
-    void wireDrawbar();
-    void checkMagazine(const machine::MachineEvent& event);
-    std::optional<std::string> magazineOutput(int port, int level, double now);
-    void driveSensor(const Sensor& sensor, bool active, double at);
-    void driveInPosition(double now, double seconds);
-    // Makes `device` the magazine; returns it for the typed pointer of its kind.
-    template <class Device> Device* install(std::unique_ptr<Device> device) {
-        Device* installed = device.get();
-        magazine_ = std::move(device);
-        return installed;
-    }
-    Eigen::Vector3d noseForMagazine(const machine::Axes& position) const;
-    void answerPmc(int code);
-    void awaitSensor(int pin, int level, int mCode);
-    std::string describeInput(int pin) const;
 
     config::MachineConfig config_;
     RunSettings settings_;
@@ -197,13 +165,8 @@ private:
     std::string programStop_;                        // see programStop()
     SensorWatch sensorWatch_;
     bool pressStartWhenAwaited_ = false; // run(): no operator, the controller presses START
-    std::unique_ptr<devices::Magazine> magazine_; // the magazine, when the machine folder describes one
-    devices::ServoDisc* disc_ = nullptr;           // magazine_ when it is a servo disc
-    devices::UmbrellaCarousel* carousel_ = nullptr; // magazine_ when it is an umbrella carousel
-    devices::MultiHead* multiHead_ = nullptr;       // magazine_ when it is a multi-process machine
-    DrawbarWiring drawbar_;
-    bool slideOut_ = false;                        // a gantry rack's slide (output of param 753)
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
+    MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 };
 

@@ -51,7 +51,7 @@ void Controller::watchInput(int pin, int level) {
         }
         return;
     case SensorWatch::Verdict::TimedOut: {
-        std::string what = describeInput(pin) + " never became " +
+        std::string what = magazine_.describeInput(pin) + " never became " +
                            std::to_string(1 - level) + ": waited " + seconds(settings_.sensorTimeout) + " s at " +
                            program_.fileName(*where) + ":" + std::to_string(where->line);
         sensorWatch_.clear();
@@ -81,7 +81,7 @@ std::optional<Controller::SensorWait> Controller::sensorWait() const {
         return std::nullopt;
     }
     SensorWait out;
-    out.input = describeInput(wait->pin);
+    out.input = magazine_.describeInput(wait->pin);
     out.awaitedLevel = 1 - wait->level;
     out.seconds = machine_.time() - wait->since;
     out.file = program_.fileName(wait->where);

@@ -5,9 +5,12 @@
 //   M81 magazine ready (enable), M82 turn the commanded tool's pocket to the spindle (in position)
 //   M83 carousel to the spindle / M84 back (slide, at-spindle/away sensors)
 //   M85 store the commanded tool as the spindle's tool (what #1000 and #1001 compare with)
-#include "core/controller/Controller.h"
+#include "core/controller/MagazineDriver.h"
 
 #include "core/config/IoPorts.h"
+#include "core/devices/UmbrellaCarousel.h"
+#include "core/interp/ModalInterpreter.h"
+#include "core/machine/SimulatedMachine.h"
 #include "core/macro/MacroError.h"
 
 #include <cstdio>
@@ -20,26 +23,25 @@ constexpr double kPmcScan = 0.01; // how often the ladder looks at a sensor, s
 
 } // namespace
 
-
-void Controller::awaitSensor(int pin, int level, int mCode) {
+void MagazineDriver::awaitSensor(int pin, int level, int mCode) {
     double waited = 0.0;
-    while (machine_.input(pin) != level) {
-        if (waited >= settings_.sensorTimeout) {
+    while (context_.machine.input(pin) != level) {
+        if (waited >= context_.settings.sensorTimeout) {
             char seconds[32];
-            std::snprintf(seconds, sizeof seconds, "%.1f", settings_.sensorTimeout);
+            std::snprintf(seconds, sizeof seconds, "%.1f", context_.settings.sensorTimeout);
             throw macro::MacroError{AlarmCode::SensorTimeout,
                                     describeInput(pin) + " never became " + std::to_string(level) +
                                         ": the PMC waited " + seconds + " s to finish M" + std::to_string(mCode),
                                     0};
         }
-        machine_.blockTime(kPmcScan);
+        context_.machine.blockTime(kPmcScan);
         waited += kPmcScan;
     }
 }
 
-void Controller::answerPmc(int code) {
-    const config::MagazineConfig& m = config_.magazine;
-    const int commanded = interp_.state().selectedTool;
+void MagazineDriver::answerPmc(int code) {
+    const config::MagazineConfig& m = context_.config.magazine;
+    const int commanded = context_.interp.state().selectedTool;
     if (code >= 81 && code <= 85 && (commanded < 0 || commanded > carousel_->pocketCount())) {
         // the ladder checks the T code before it moves the magazine
         throw macro::MacroError{AlarmCode::InvalidArgument,
@@ -51,25 +53,25 @@ void Controller::answerPmc(int code) {
     switch (code) {
     case 10:
     case 11:
-        machine_.setOutput(m.drawbarOutput, code == 11 ? 1 : 0);
+        context_.machine.setOutput(m.drawbarOutput, code == 11 ? 1 : 0);
         awaitSensor(code == 11 ? m.releasedInput : m.clampedInput, 1, code);
         return;
     case 82: {
         devices::UmbrellaCarousel::Action turn =
-            carousel_->turnTo(commanded, noseForMagazine(machine_.position()), machine_.time());
+            carousel_->turnTo(commanded, noseAt(context_.machine.position()), context_.machine.time());
         if (turn.crash) {
             throw macro::MacroError{AlarmCode::Crash, *turn.crash, 0};
         }
-        driveInPosition(machine_.time(), turn.seconds);
+        driveInPosition(context_.machine.time(), turn.seconds);
         awaitSensor(m.inPositionInput, 1, code);
         return;
     }
     case 83:
     case 84:
-        machine_.setOutput(m.slideOutput, code == 83 ? 1 : 0);
+        context_.machine.setOutput(m.slideOutput, code == 83 ? 1 : 0);
         awaitSensor(code == 83 ? m.atSpindleInput : m.awayInput, 1, code);
         return;
-    case 85: fanucSpindleTool_ = commanded; return;
+    case 85: context_.pmcSpindleTool = commanded; return;
     default: return; // M81 (ready) and the rest: nothing the carousel needs
     }
 }

@@ -22,6 +22,11 @@ public:
                                             bool spindleTurning, double at) = 0;
     // The drawbar was released (true) or clamped (false) with the nose at `at`.
     virtual std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) = 0;
+    // The spindle started, stopped or oriented (M19); only a device the spindle's keys meet cares.
+    virtual void spindle(bool turning, bool oriented) {
+        (void)turning;
+        (void)oriented;
+    }
 
     virtual int spindleTool() const = 0;
     virtual int pocketCount() const = 0;

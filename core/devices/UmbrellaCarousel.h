@@ -54,7 +54,7 @@ public:
     // M82: the pocket of the commanded tool turns to the spindle side.
     Action turnTo(int pocket, const Eigen::Vector3d& nose, double now);
     // The spindle as the carousel cares: turning, and oriented (M19).
-    void spindle(bool turning, bool oriented) {
+    void spindle(bool turning, bool oriented) override {
         turning_ = turning;
         oriented_ = oriented;
     }

@@ -1,15 +1,18 @@
-// The tool magazine as a device beside the machine: it sees every move of the spindle nose, every
-// switch of the drawbar and of its own actuators, keeps track of the tools, drives the sensors the
-// hardware has (clamp cylinder, slide, disc in position), and turns what the hardware would suffer
-// into a `crash` alarm on the macro line that caused it.
-#include "core/controller/Controller.h"
+#include "core/controller/MagazineDriver.h"
 
 #include "core/common/Numeric.h"
 #include "core/config/IoPorts.h"
 #include "core/config/ParameterNumbers.h"
+#include "core/devices/LinearRack.h"
+#include "core/devices/MultiHead.h"
+#include "core/devices/ServoDisc.h"
+#include "core/devices/UmbrellaCarousel.h"
+#include "core/interp/ModalInterpreter.h"
+#include "core/machine/SimulatedMachine.h"
 #include "core/macro/MacroError.h"
 
 #include <algorithm>
+#include <array>
 
 namespace m350::controller {
 
@@ -36,73 +39,82 @@ std::vector<int> toolsInPockets(int pockets, int inSpindle) {
 
 } // namespace
 
-void Controller::buildMagazine() {
-    magazine_.reset();
+MagazineDriver::MagazineDriver(Context context) : context_(std::move(context)) {}
+
+MagazineDriver::~MagazineDriver() = default;
+
+void MagazineDriver::build() {
+    device_.reset();
     disc_ = nullptr;
     carousel_ = nullptr;
     multiHead_ = nullptr;
-    const config::MagazineConfig& m = config_.magazine;
-    const config::ParameterTable& p = config_.parameters;
     wireDrawbar();
-    switch (m.device) {
+    switch (context_.config.magazine.device) {
     case Device::None: return;
     case Device::LinearRack: buildRack(); return;
-    case Device::MultiHead: {
-        multiHead_ = install(std::make_unique<devices::MultiHead>(saturatingInt(p.get(param::kMagazineCapacity)),
-                                                                  p.get(param::kChangeZUp), m.tolerance,
-                                                                  saturatingInt(p.get(param::kCurrentTool))));
-        // the head in use (param 800) was left down: its cylinder's output is on
-        if (const int inUse = multiHead_->spindleTool(); inUse != 0) {
-            config::PortAssignment cylinder =
-                config::portAssignment(p, param::kMultiProcessOutput1 + 3 * (inUse - 1));
-            if (cylinder.wired()) {
-                machine_.setOutput(cylinder.pin, cylinder.activeLevel);
-            }
-        }
-        return;
-    }
-    case Device::ServoDisc: {
-        devices::ServoDisc::Geometry g;
-        g.station = Eigen::Vector3d(p.get(param::kChangeFrontX), p.get(param::kChangeFrontY), p.get(param::kChangeZDown));
-        g.pockets = std::clamp(saturatingInt(p.get(param::kMagazineCapacity)), 1, 20);
-        g.forkDepth = m.forkDepth;
-        g.tolerance = m.tolerance;
-        g.secondsPerPocket = m.secondsPerPocket;
-        g.settleSeconds = m.settleSeconds;
-        const int inSpindle = toolInMagazine(saturatingInt(p.get(param::kCurrentTool)), g.pockets);
-        disc_ = install(std::make_unique<devices::ServoDisc>(g, toolsInPockets(g.pockets, inSpindle), inSpindle,
-                                                             inSpindle != 0 ? inSpindle : 1));
-        machine_.presetInput(m.inPositionInput, 1);
-        return;
-    }
-    case Device::Umbrella: {
-        devices::UmbrellaCarousel::Geometry g;
-        const auto point = [this](int n) {
-            auto it = config_.referencePoints.find(n);
-            return it == config_.referencePoints.end() ? std::array<double, 5>{} : it->second;
-        };
-        g.changeX = m.changeXYGiven ? m.changeX : point(3)[0];
-        g.changeY = m.changeXYGiven ? m.changeY : point(3)[1];
-        g.gripZ = point(3)[2];
-        g.clearZ = point(2)[2];
-        g.pockets = m.pockets;
-        g.tolerance = m.tolerance;
-        g.secondsPerPocket = m.secondsPerPocket;
-        g.slideSeconds = m.slideSeconds;
-        const int inSpindle = toolInMagazine(fanucSpindleTool_, g.pockets);
-        carousel_ = install(std::make_unique<devices::UmbrellaCarousel>(g, toolsInPockets(g.pockets, inSpindle),
-                                                                        inSpindle, inSpindle != 0 ? inSpindle : 1));
-        machine_.presetInput(m.inPositionInput, 1);
-        machine_.presetInput(m.awayInput, 1);
-        machine_.presetInput(m.atSpindleInput, 0);
-        return;
-    }
+    case Device::MultiHead: buildMultiHead(); return;
+    case Device::ServoDisc: buildDisc(); return;
+    case Device::Umbrella: buildCarousel(); return;
     }
 }
 
-void Controller::buildRack() {
-    const config::ParameterTable& p = config_.parameters;
-    const config::MagazineConfig& m = config_.magazine;
+void MagazineDriver::buildMultiHead() {
+    const config::MagazineConfig& m = context_.config.magazine;
+    const config::ParameterTable& p = context_.config.parameters;
+    multiHead_ = install(std::make_unique<devices::MultiHead>(saturatingInt(p.get(param::kMagazineCapacity)),
+                                                              p.get(param::kChangeZUp), m.tolerance,
+                                                              saturatingInt(p.get(param::kCurrentTool))));
+    // the head in use (param 800) was left down: its cylinder's output is on
+    if (const int inUse = multiHead_->spindleTool(); inUse != 0) {
+        config::PortAssignment cylinder = config::portAssignment(p, param::kMultiProcessOutput1 + 3 * (inUse - 1));
+        if (cylinder.wired()) {
+            context_.machine.setOutput(cylinder.pin, cylinder.activeLevel);
+        }
+    }
+}
+
+void MagazineDriver::buildDisc() {
+    const config::MagazineConfig& m = context_.config.magazine;
+    const config::ParameterTable& p = context_.config.parameters;
+    devices::ServoDisc::Geometry g;
+    g.station = Eigen::Vector3d(p.get(param::kChangeFrontX), p.get(param::kChangeFrontY), p.get(param::kChangeZDown));
+    g.pockets = std::clamp(saturatingInt(p.get(param::kMagazineCapacity)), 1, 20);
+    g.forkDepth = m.forkDepth;
+    g.tolerance = m.tolerance;
+    g.secondsPerPocket = m.secondsPerPocket;
+    g.settleSeconds = m.settleSeconds;
+    const int inSpindle = toolInMagazine(saturatingInt(p.get(param::kCurrentTool)), g.pockets);
+    disc_ = install(std::make_unique<devices::ServoDisc>(g, toolsInPockets(g.pockets, inSpindle), inSpindle,
+                                                         inSpindle != 0 ? inSpindle : 1));
+    context_.machine.presetInput(m.inPositionInput, 1);
+}
+
+void MagazineDriver::buildCarousel() {
+    const config::MagazineConfig& m = context_.config.magazine;
+    const auto point = [this](int n) {
+        auto it = context_.config.referencePoints.find(n);
+        return it == context_.config.referencePoints.end() ? std::array<double, 5>{} : it->second;
+    };
+    devices::UmbrellaCarousel::Geometry g;
+    g.changeX = m.changeXYGiven ? m.changeX : point(3)[0];
+    g.changeY = m.changeXYGiven ? m.changeY : point(3)[1];
+    g.gripZ = point(3)[2];
+    g.clearZ = point(2)[2];
+    g.pockets = m.pockets;
+    g.tolerance = m.tolerance;
+    g.secondsPerPocket = m.secondsPerPocket;
+    g.slideSeconds = m.slideSeconds;
+    const int inSpindle = toolInMagazine(context_.pmcSpindleTool, g.pockets);
+    carousel_ = install(std::make_unique<devices::UmbrellaCarousel>(g, toolsInPockets(g.pockets, inSpindle), inSpindle,
+                                                                    inSpindle != 0 ? inSpindle : 1));
+    context_.machine.presetInput(m.inPositionInput, 1);
+    context_.machine.presetInput(m.awayInput, 1);
+    context_.machine.presetInput(m.atSpindleInput, 0);
+}
+
+void MagazineDriver::buildRack() {
+    const config::ParameterTable& p = context_.config.parameters;
+    const config::MagazineConfig& m = context_.config.magazine;
     devices::LinearRack::Geometry g;
     g.loading = m.topLoading ? devices::LinearRack::Loading::Top : devices::LinearRack::Loading::Side;
     g.openingY = m.openingY;
@@ -127,14 +139,14 @@ void Controller::buildRack() {
 // The drawbar and its clamp cylinder's sensors: the IO page's triples on the M350, the magazine's
 // wiring on a FANUC. The cylinder takes param 814 (when set above its default of 1 ms) or
 // [magazine] clamp_ms, else 150 ms, to reach either end.
-void Controller::wireDrawbar() {
+void MagazineDriver::wireDrawbar() {
     drawbar_ = DrawbarWiring{};
-    const config::MagazineConfig& m = config_.magazine;
+    const config::MagazineConfig& m = context_.config.magazine;
     if (!m.present()) {
         return;
     }
-    if (config_.dialect->id == gcode::DialectId::M350) {
-        const config::ParameterTable& p = config_.parameters;
+    if (context_.config.dialect->id == gcode::DialectId::M350) {
+        const config::ParameterTable& p = context_.config.parameters;
         config::PortAssignment out = config::portAssignment(p, param::kDrawbarOutput);
         if (out.wired()) {
             drawbar_.output = out.pin;
@@ -157,27 +169,27 @@ void Controller::wireDrawbar() {
     // power-on: the tool is clamped
     for (const auto& [sensor, clampedMeansActive] : {std::pair{drawbar_.released, false}, std::pair{drawbar_.clamped, true}}) {
         if (sensor.pin > 0) {
-            machine_.presetInput(sensor.pin, clampedMeansActive ? sensor.activeLevel : 1 - sensor.activeLevel);
+            context_.machine.presetInput(sensor.pin, clampedMeansActive ? sensor.activeLevel : 1 - sensor.activeLevel);
         }
     }
 }
 
 // Where the spindle nose stands as the rack sees it. A rack on the gantry moves in Y with the
 // spindle, so only its slide changes the Y between them.
-Eigen::Vector3d Controller::noseForMagazine(const machine::Axes& position) const {
+Eigen::Vector3d MagazineDriver::noseAt(const machine::Axes& position) const {
     Eigen::Vector3d nose = position.head<3>();
-    if (config_.magazine.onGantry) {
-        nose.y() = slideOut_ ? 0.0 : config_.magazine.slideTravel;
+    if (context_.config.magazine.onGantry) {
+        nose.y() = slideOut_ ? 0.0 : context_.config.magazine.slideTravel;
     }
     return nose;
 }
 
 // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor.
-std::string Controller::describeInput(int pin) const {
-    if (config::inputOnPin(config_.parameters, pin) || !config_.magazine.present()) {
-        return config::describeInput(config_.parameters, pin);
+std::string MagazineDriver::describeInput(int pin) const {
+    if (config::inputOnPin(context_.config.parameters, pin) || !context_.config.magazine.present()) {
+        return config::describeInput(context_.config.parameters, pin);
     }
-    const config::MagazineConfig& m = config_.magazine;
+    const config::MagazineConfig& m = context_.config.magazine;
     const char* what = pin == m.inPositionInput ? (disc_ ? "disc in position" : "carousel in position")
                        : pin == m.atSpindleInput ? "carousel at the spindle"
                        : pin == m.awayInput      ? "carousel away"
@@ -187,42 +199,40 @@ std::string Controller::describeInput(int pin) const {
     return what && pin > 0 ? config::inputName(pin) + " (" + what + ")" : config::inputName(pin);
 }
 
-void Controller::driveSensor(const Sensor& sensor, bool active, double at) {
+void MagazineDriver::driveSensor(const Sensor& sensor, bool active, double at) {
     if (sensor.pin > 0) {
-        machine_.driveInput(sensor.pin, active ? sensor.activeLevel : 1 - sensor.activeLevel, at);
-        linkedInputSource_[sensor.pin] = source();
+        context_.machine.driveInput(sensor.pin, active ? sensor.activeLevel : 1 - sensor.activeLevel, at);
+        context_.inputSource[sensor.pin] = context_.source();
     }
 }
 
 // A disc or carousel turning from `now` for `seconds`: its in-position signal is off meanwhile.
-void Controller::driveInPosition(double now, double seconds) {
+void MagazineDriver::driveInPosition(double now, double seconds) {
     if (seconds > 0.0) {
-        const Sensor inPosition{config_.magazine.inPositionInput, 1};
+        const Sensor inPosition{context_.config.magazine.inPositionInput, 1};
         driveSensor(inPosition, false, now);
         driveSensor(inPosition, true, now + seconds);
     }
 }
 
-void Controller::checkMagazine(const machine::MachineEvent& event) {
+void MagazineDriver::onMachineEvent(const machine::MachineEvent& event) {
     using Type = machine::MachineEvent::Type;
     std::optional<std::string> crash;
-    const double now = machine_.time();
+    const double now = context_.machine.time();
     switch (event.type) {
     case Type::Rapid:
     case Type::Feed:
     case Type::Arc:
-        crash = magazine_->move(noseForMagazine(event.from), noseForMagazine(event.to), event.type == Type::Rapid,
-                                machine_.spindleTurning(), event.start);
+        crash = device_->move(noseAt(event.from), noseAt(event.to), event.type == Type::Rapid,
+                                context_.machine.spindleTurning(), event.start);
         break;
     case Type::Io:
         if (event.port > 0) {
-            crash = magazineOutput(event.port, event.level, now);
+            crash = output(event.port, event.level, now);
         }
         break;
     case Type::Spindle:
-        if (carousel_) {
-            carousel_->spindle(machine_.spindleTurning(), event.spindle == machine::SpindleState::Orient);
-        }
+        device_->spindle(context_.machine.spindleTurning(), event.spindle == machine::SpindleState::Orient);
         break;
     case Type::Auxiliary:
         if (carousel_) {
@@ -236,27 +246,27 @@ void Controller::checkMagazine(const machine::MachineEvent& event) {
     }
 }
 
-std::optional<std::string> Controller::magazineOutput(int port, int level, double now) {
-    const Eigen::Vector3d nose = noseForMagazine(machine_.position());
+std::optional<std::string> MagazineDriver::output(int port, int level, double now) {
+    const Eigen::Vector3d nose = noseAt(context_.machine.position());
     if (port == drawbar_.output) {
         const bool released = level == drawbar_.releaseLevel;
         driveSensor(drawbar_.released, released, now + drawbar_.seconds);
         driveSensor(drawbar_.clamped, !released, now + drawbar_.seconds);
-        return magazine_->drawbar(released, nose);
+        return device_->drawbar(released, nose);
     }
-    const config::MagazineConfig& m = config_.magazine;
+    const config::MagazineConfig& m = context_.config.magazine;
     if (m.onGantry) {
-        config::PortAssignment slide = config::portAssignment(config_.parameters, param::kMagazineSlideOutput);
+        config::PortAssignment slide = config::portAssignment(context_.config.parameters, param::kMagazineSlideOutput);
         if (slide.wired() && port == slide.pin) {
             // the slide carries the forks to the spindle or away: a move along Y between them
             slideOut_ = level == slide.activeLevel;
-            return magazine_->move(nose, noseForMagazine(machine_.position()), false, machine_.spindleTurning(), now);
+            return device_->move(nose, noseAt(context_.machine.position()), false, context_.machine.spindleTurning(), now);
         }
     }
     if (disc_ && port == m.strobeOutput && level == 1) {
         int pocket = 0;
         for (std::size_t bit = 0; bit < m.selectOutputs.size(); ++bit) {
-            pocket |= machine_.output(m.selectOutputs[bit]) << bit;
+            pocket |= context_.machine.output(m.selectOutputs[bit]) << bit;
         }
         devices::ServoDisc::Turn turn = disc_->turnTo(pocket, now, nose);
         if (!turn.crash) {
@@ -266,7 +276,7 @@ std::optional<std::string> Controller::magazineOutput(int port, int level, doubl
     }
     for (int head = 1; multiHead_ && head <= multiHead_->pocketCount(); ++head) {
         config::PortAssignment cylinder =
-            config::portAssignment(config_.parameters, param::kMultiProcessOutput1 + 3 * (head - 1));
+            config::portAssignment(context_.config.parameters, param::kMultiProcessOutput1 + 3 * (head - 1));
         if (cylinder.wired() && port == cylinder.pin) {
             return multiHead_->cylinder(head, level == cylinder.activeLevel, nose);
         }

@@ -1,0 +1,105 @@
+#pragma once
+
+#include "core/config/MachineConfig.h"
+#include "core/controller/RunSettings.h"
+#include "core/controller/TraceWriter.h"
+#include "core/machine/MachineTypes.h"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace m350::devices {
+class Magazine;
+class ServoDisc;
+class UmbrellaCarousel;
+class MultiHead;
+} // namespace m350::devices
+
+namespace m350::machine {
+class SimulatedMachine;
+}
+
+namespace m350::interp {
+class ModalInterpreter;
+}
+
+namespace m350::controller {
+
+// The magazine device of a machine folder and its wiring to the machine: builds the device, feeds
+// it every move, drawbar and actuator switch, drives its sensors in virtual time (clamp cylinder,
+// slide, disc or carousel in position), plays a FANUC carousel's PMC, and throws what the hardware
+// would suffer as a `crash` MacroError, so the alarm names the macro line that caused it.
+class MagazineDriver {
+public:
+    // What the driver works on; all of it belongs to the Controller and outlives the driver.
+    struct Context {
+        const config::MachineConfig& config;
+        const RunSettings& settings;
+        machine::SimulatedMachine& machine;
+        const interp::ModalInterpreter& interp;
+        int& pmcSpindleTool;                      // a FANUC's spindle tool as M85 stores it
+        std::map<int, TraceSource>& inputSource;  // input -> the line that made it change
+        std::function<TraceSource()> source;      // the line executing now
+    };
+
+    explicit MagazineDriver(Context context);
+    ~MagazineDriver();
+    MagazineDriver(const MagazineDriver&) = delete;
+    MagazineDriver& operator=(const MagazineDriver&) = delete;
+
+    // (Re)builds the device the machine folder describes from the parameters as they stand, with
+    // the tool param 800 (M350) or the PMC names in the spindle and every other tool in its pocket.
+    void build();
+    // The device, nullptr when the machine has none.
+    const devices::Magazine* device() const { return device_.get(); }
+    // Feeds one machine event to the device; throws a `crash` or `sensor_timeout` MacroError.
+    void onMachineEvent(const machine::MachineEvent& event);
+    // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor.
+    std::string describeInput(int pin) const;
+
+private:
+    struct Sensor {
+        int pin = 0; // 0: not wired
+        int activeLevel = 1;
+    };
+    struct DrawbarWiring {
+        int output = 0;
+        int releaseLevel = 1;
+        Sensor released;
+        Sensor clamped;
+        double seconds = 0.15; // the clamp cylinder's stroke
+    };
+
+    void buildRack();
+    void buildMultiHead();
+    void buildDisc();
+    void buildCarousel();
+    void wireDrawbar();
+    template <class Device> Device* install(std::unique_ptr<Device> device) {
+        Device* installed = device.get();
+        device_ = std::move(device);
+        return installed;
+    }
+    std::optional<std::string> output(int port, int level, double now);
+    void driveSensor(const Sensor& sensor, bool active, double at);
+    void driveInPosition(double now, double seconds);
+    Eigen::Vector3d noseAt(const machine::Axes& position) const;
+    // a FANUC carousel's PMC (UmbrellaPmc.cpp)
+    void answerPmc(int code);
+    void awaitSensor(int pin, int level, int mCode);
+
+    Context context_;
+    std::unique_ptr<devices::Magazine> device_;
+    devices::ServoDisc* disc_ = nullptr;            // device_ when it is a servo disc
+    devices::UmbrellaCarousel* carousel_ = nullptr; // device_ when it is an umbrella carousel
+    devices::MultiHead* multiHead_ = nullptr;       // device_ when it is a multi-process machine
+    DrawbarWiring drawbar_;
+    bool slideOut_ = false; // a gantry rack's slide (output of param 753)
+};
+
+} // namespace m350::controller
