@@ -19,6 +19,8 @@ inline constexpr int kRapidAcceleration = 282;     // G00 acceleration, mm/s^2 (
 inline constexpr int kSpindleStoppedInput = 620;   // input triple: pin, enable, active level (M300)
 inline constexpr int kFixedSetterInput = 575;      // input triple of the fixed tool setter (固定对刀信号)
 inline constexpr int kFixedSetterX = 135;          // 135-137: the fixed setter's machine X, Y and start Z
+inline constexpr int kFloatingSetterInput = 578;   // input triple of the floating setter (浮动对刀信号)
+inline constexpr int kExternStartInput = 599;      // input triple of the extern START key (外部启动)
 inline constexpr int kCurrentWorkSystem = 78;      // #578: 0 = G92, 1..6 = G54..G59
 inline constexpr int kPauseLift = 70;              // mm Z rises on pause when param 91 = 1
 inline constexpr int kStopSpindleOnPause = 84;     // 1 = the spindle stops while paused

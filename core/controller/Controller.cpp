@@ -248,6 +248,7 @@ RunReport Controller::snapshot() const {
 
 bool Controller::start() {
     alarm_.reset();
+    pendingDialog_.reset();
     sensorWatch_.clear();
     if (!executor_) {
         state_ = RunState::Idle;
@@ -277,7 +278,7 @@ Controller::RunState Controller::advance(double seconds) {
         return state_;
     }
     while (state_ == RunState::Running && executor_->state() == macro::Executor::State::Running &&
-           machine_.time() <= displayTime_) {
+           machine_.time() <= displayTime_ && !pendingDialog_) {
         if (machine_.time() > settings_.maxSimTime) {
             std::ostringstream why;
             why << "the program ran " << settings_.maxSimTime
@@ -338,6 +339,7 @@ bool Controller::optionalStopOn() {
 
 void Controller::raiseAlarm(const Alarm& alarm) {
     alarm_ = alarm;
+    pendingDialog_.reset();
     state_ = RunState::Alarm;
     enterSafeState();
     if (trace_) {

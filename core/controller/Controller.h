@@ -70,6 +70,24 @@ public:
         std::uint32_t line = 0;
     };
     std::optional<SensorWait> sensorWait() const;
+    // An operator dialog (#1505 = kind(text)) the run waits on: with RunSettings::operatorPresent
+    // the run holds after the block that wrote #1505 until answerDialog(); #1505 then reads 1 for
+    // Enter and 0 for Esc. `#1505 = -5000(text)` only shows the text. Without an operator (and in
+    // run()) every dialog is answered with Enter at once and the messages say so.
+    struct Dialog {
+        std::string text;
+        int kind;
+    };
+    std::optional<Dialog> pendingDialog() const { return pendingDialog_; }
+    void answerDialog(bool enter);
+    // The operator presses the extern START key (param 599's input) for a moment, as the
+    // virtual-tool prompt asks; nothing when the key is not wired.
+    void pressExternStart();
+    // Parameters 0-999 as they stand, for the panel's teach buttons (135-137) and IO page. A write
+    // takes effect at once (setters, sensors, speeds); false for other numbers or a value that is
+    // not finite.
+    double parameter(int n) const;
+    bool setParameter(int n, double value);
     double displayTime() const { return displayTime_; }
     machine::Axes displayPosition() const { return machine_.positionAt(displayTime_); }
     RunReport snapshot() const;
@@ -137,6 +155,8 @@ private:
     bool optionalStopOn();
     void watchInput(int pin, int level);
     void pressStartIfAwaited(const config::PortAssignment& key, int pin, int level, const gcode::SourceLocation& where);
+    std::optional<std::string> showDialog(double kind, std::string_view text);
+    bool operatorAnswers() const { return settings_.operatorPresent && !pressStartWhenAwaited_; }
 
     config::MachineConfig config_;
     RunSettings settings_;
@@ -152,6 +172,7 @@ private:
     std::array<int, machine::kAxisCount> homed_{};
     int fanucSpindleTool_ = 0;
     double dialogAnswer_ = 0.0;
+    std::optional<Dialog> pendingDialog_; // see pendingDialog()
     std::vector<std::string> messages_;
     std::string statusMessage_; // the #1503 text the status line shows now (cleared by #1503 = 1000)
     double feedOverride_ = 100.0;

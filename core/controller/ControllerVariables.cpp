@@ -97,11 +97,7 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
             postMessage(std::string(text));
         }
         return std::nullopt;
-    case VariableKind::Dialog:
-        // A headless run answers every dialog with Enter (1), and says so.
-        postMessage(std::string(text) + " [dialog answered: Enter]");
-        dialogAnswer_ = 1;
-        return std::nullopt;
+    case VariableKind::Dialog: return showDialog(value, text);
     case VariableKind::Alarm: {
         auto n = static_cast<long long>(roundToInt(value));
         return "macro alarm " + std::to_string(3000 + n) + (text.empty() ? "" : ": " + std::string(text));

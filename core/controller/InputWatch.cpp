@@ -4,6 +4,7 @@
 #include "core/controller/Controller.h"
 
 #include "core/config/IoPorts.h"
+#include "core/config/ParameterNumbers.h"
 #include "core/macro/MacroError.h"
 
 #include <cstdio>
@@ -17,7 +18,6 @@ bool operatorInput(const std::optional<config::PortAssignment>& a) {
     return a && a->function->parameter >= 581 && a->function->parameter <= 605;
 }
 
-constexpr int kExternStart = 599;
 constexpr double kKeyPress = 0.3; // how long a pressed key stays down, s
 
 std::string seconds(double s) {
@@ -64,7 +64,8 @@ void Controller::watchInput(int pin, int level) {
 // the operator would after doing what the prompt asked, and says so.
 void Controller::pressStartIfAwaited(const config::PortAssignment& key, int pin, int level,
                                      const gcode::SourceLocation& where) {
-    if (!pressStartWhenAwaited_ || key.function->parameter != kExternStart || level == key.activeLevel) {
+    if (!pressStartWhenAwaited_ || key.function->parameter != config::param::kExternStartInput ||
+        level == key.activeLevel) {
         return;
     }
     if (sensorWatch_.read(pin, level, machine_.time(), where, 1e300) != SensorWatch::Verdict::WaitBegins) {
@@ -73,6 +74,13 @@ void Controller::pressStartIfAwaited(const config::PortAssignment& key, int pin,
     machine_.pulseInput(pin, key.activeLevel, kKeyPress);
     postMessage("外部启动 extern START (" + config::inputName(pin) + ") pressed at " + program_.fileName(where) + ":" +
                 std::to_string(where.line) + " (run without an operator)");
+}
+
+// The operator presses the extern START key, as the virtual-tool prompt asks.
+void Controller::pressExternStart() {
+    if (auto key = config::wiredInput(config_.parameters, config::param::kExternStartInput)) {
+        machine_.pulseInput(key->pin, key->activeLevel, kKeyPress);
+    }
 }
 
 std::optional<Controller::SensorWait> Controller::sensorWait() const {

@@ -39,6 +39,7 @@ struct PanelStatus {
 
     std::string message;            // the status line's #1503 text (empty when cleared)
     std::string programStop;        // why a run holds by itself (M00, G04 P-1), else empty
+    std::optional<std::string> dialog; // the #1505 dialog the run waits on (Enter / Esc), if any
     std::optional<Alarm> alarm;
     std::string file;               // file and line of the block being executed
     std::uint32_t line = 0;

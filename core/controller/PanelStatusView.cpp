@@ -79,6 +79,9 @@ PanelStatus Controller::panelStatus() {
     out.modalLine = modalLine();
     out.message = statusMessage_;
     out.programStop = programStop_;
+    if (pendingDialog_) {
+        out.dialog = pendingDialog_->text;
+    }
     out.alarm = alarm_;
     if (executor_) {
         if (auto loc = executor_->location()) {

@@ -94,6 +94,7 @@ void Controller::reset() {
     alarm_.reset();
     programStop_.clear();
     sensorWatch_.clear();
+    pendingDialog_.reset();
     state_ = RunState::Idle; // start() runs the program again from its beginning
     if (trace_) {
         trace_->runState(displayTime_, "reset");

@@ -15,6 +15,9 @@ struct RunSettings {
     double sensorTimeout = 10.0;
     bool homed = true;
     bool optionalStop = false;  // the M01 switch (on the M350 #1500 = 1 turns it on too)
+    // A person at the panel (the panel sets it): a #1505 dialog holds the run until answered
+    // (Controller::answerDialog). Without one, run() answers every dialog with Enter.
+    bool operatorPresent = false;
     std::optional<int> tool;    // tool in the spindle at start
     std::map<int, int> heldInputs;     // port -> level for the whole run
     std::map<int, double> parameters;  // overrides of the machine folder's parameters

@@ -1,0 +1,21 @@
+// Parameters as the panel reads and writes them (teach buttons, the IO page's polarity).
+#include "core/controller/Controller.h"
+
+#include <cmath>
+
+namespace m350::controller {
+
+double Controller::parameter(int n) const {
+    return config::ParameterTable::valid(n) ? config_.parameters.get(n) : 0.0;
+}
+
+bool Controller::setParameter(int n, double value) {
+    if (!config::ParameterTable::valid(n) || !std::isfinite(value)) {
+        return false;
+    }
+    config_.parameters.set(n, value);
+    configureMachine(); // the setters, the spindle sensor and the speeds follow at once
+    return true;
+}
+
+} // namespace m350::controller
