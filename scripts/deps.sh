@@ -9,6 +9,7 @@ REQUIRED_PACKAGES=(
     libgtest-dev libgmock-dev libbenchmark-dev
     qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     xvfb xauth
+    fonts-wqy-microhei fonts-dejavu-core
 )
 # Provides /usr/bin/rs274: only used for benchmark comparisons and a differential test.
 OPTIONAL_PACKAGE=linuxcnc-uspace

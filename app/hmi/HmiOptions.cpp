@@ -1,0 +1,35 @@
+#include "app/hmi/HmiOptions.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+
+namespace m350::hmi {
+
+HmiParse parseHmiCommandLine(int argc, char** argv) {
+    HmiOptions o;
+    CLI::App app{"m350-hmi: the M350 panel (desktop). With --screenshot, --replay or --state it renders "
+                 "and exits, for tests and docs."};
+    app.add_option("program", o.program, "G-code file to load; START runs it")->check(CLI::ExistingFile);
+    app.add_option("--config", o.configDir, "machine folder (default: the bundled M350 16-pocket linear rack)")
+        ->check(CLI::ExistingDirectory);
+    app.add_option("--lang", o.language, "language of the panel")->check(CLI::IsMember({"zh_CN", "en"}));
+    app.add_option("--page", o.page, "page to show")->check(CLI::IsMember({"monitor", "mdi", "io", "probe"}));
+    app.add_option("--screenshot", o.screenshot, "save the window as a PNG and exit");
+    app.add_option("--replay", o.replay, "play operator actions (JSON Lines) in virtual time, then exit")
+        ->check(CLI::ExistingFile);
+    app.add_option("--state", o.state, "write the panel's state as JSON and exit");
+    app.add_option("--record", o.record, "record the operator's actions to this file (JSON Lines)");
+    app.add_flag("--unhomed", o.unhomed, "start with no axis homed, as after power-on");
+    app.add_option("--tool", o.tool, "tool in the spindle at start")->check(CLI::Range(0, 99));
+    app.add_option("--rate", o.rate, "virtual seconds per wall second (faster for simulation)")
+        ->check(CLI::Range(0.01, 1000.0));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return {std::nullopt, app.exit(e) == 0 ? 0 : 64};
+    }
+    return {o, 0};
+}
+
+} // namespace m350::hmi

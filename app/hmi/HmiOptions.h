@@ -1,0 +1,30 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace m350::hmi {
+
+// The command line of `m350-hmi`.
+struct HmiOptions {
+    std::string program;     // loaded at start; START runs it
+    std::string configDir;   // empty: the bundled default machine (a private copy of it)
+    std::string language = "zh_CN";
+    std::string page;        // monitor mdi io probe
+    std::string screenshot;  // render, save the PNG, exit
+    std::string replay;      // play operator actions (JSON Lines), then exit
+    std::string state;       // write the panel's state (JSON) before exiting
+    std::string record;      // record what the operator does (JSON Lines)
+    bool unhomed = false;
+    std::optional<int> tool;
+    double rate = 1.0;       // virtual seconds per wall second
+    bool headlessRun() const { return !screenshot.empty() || !replay.empty() || !state.empty(); }
+};
+
+struct HmiParse {
+    std::optional<HmiOptions> options;
+    int exitStatus = 0;
+};
+HmiParse parseHmiCommandLine(int argc, char** argv);
+
+} // namespace m350::hmi

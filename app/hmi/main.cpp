@@ -1,0 +1,120 @@
+// m350-hmi: the desktop panel. Builds the session and the window, then either runs the event loop
+// or (with --screenshot / --replay / --state) renders in virtual time and exits.
+#include "app/hmi/HmiOptions.h"
+#include "core/config/MachineConfig.h"
+#include "ui/i18n/Language.h"
+#include "ui/panel/MainWindow.h"
+#include "ui/session/MachineFolderCopy.h"
+#include "ui/replay/Replay.h"
+#include "ui/session/MachineSession.h"
+
+#include <QApplication>
+#include <QFile>
+#include <QJsonDocument>
+#include <QSaveFile>
+#include <QTemporaryDir>
+
+#include <cstdio>
+#include <variant>
+
+using namespace m350;
+
+namespace {
+
+int fail(const QString& message, int status = 2) {
+    std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
+    return status;
+}
+
+bool writeState(const ui::MainWindow& window, const QString& path, QString* error) {
+    QSaveFile file(path);
+    QByteArray json = QJsonDocument(window.state()).toJson(QJsonDocument::Indented);
+    if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit()) {
+        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv); // takes Qt's own options (-platform ...) out of argv first
+    QApplication::setApplicationName(QStringLiteral("m350-studio"));
+    ui::Language language(app);
+    auto parsed = hmi::parseHmiCommandLine(argc, argv);
+    if (!parsed.options) {
+        return parsed.exitStatus;
+    }
+    const hmi::HmiOptions& o = *parsed.options;
+    QString languageError;
+    if (!language.set(QString::fromStdString(o.language), &languageError)) {
+        return fail(languageError);
+    }
+    if (o.language == "zh_CN" && !language.fontProblem().isEmpty()) {
+        std::fprintf(stderr, "%s\n", qPrintable(language.fontProblem()));
+    }
+    // The panel writes into its machine folder (MDI lines ...): the bundled machine is never
+    // written; a replay or screenshot works on a throwaway copy, the desktop on the user's own.
+    QTemporaryDir scratch;
+    QString folder = QString::fromStdString(o.configDir);
+    if (folder.isEmpty()) {
+        QString error;
+        auto copy = o.headlessRun() ? ui::copyBundledMachine(scratch.path(), &error) : ui::userMachineFolder(&error);
+        if (!copy) {
+            return fail(error);
+        }
+        folder = *copy;
+    }
+    auto loaded = config::loadMachineFolder(folder.toStdString());
+    if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
+        return fail(QString::fromStdString(error->file + ": " + error->message));
+    }
+    ui::MachineSession::Options sessionOptions;
+    sessionOptions.clock = o.headlessRun() ? ui::MachineSession::Clock::Manual : ui::MachineSession::Clock::RealTime;
+    sessionOptions.rate = o.rate;
+    sessionOptions.homed = !o.unhomed;
+    sessionOptions.tool = o.tool;
+    ui::MachineSession session(std::move(std::get<config::MachineConfig>(loaded)), sessionOptions);
+    ui::MainWindow window(session, folder, &language);
+    if (QFile style(QStringLiteral(":/panel/panel.qss")); style.open(QIODevice::ReadOnly)) {
+        app.setStyleSheet(QString::fromUtf8(style.readAll()));
+    }
+    if (!o.program.empty()) {
+        session.loadProgram(QString::fromStdString(o.program));
+    }
+    if (!o.page.empty()) {
+        window.showPage(QString::fromStdString(o.page));
+    }
+    if (!o.record.empty()) {
+        QString error;
+        if (!window.startRecording(QString::fromStdString(o.record), &error)) {
+            return fail(error);
+        }
+    }
+    if (!o.headlessRun()) {
+        window.show();
+        return app.exec();
+    }
+    window.show();
+    ui::settle(session);
+    if (!o.replay.empty()) {
+        QString error;
+        auto actions = ui::readReplay(QString::fromStdString(o.replay), &error);
+        if (!actions) {
+            return fail(error);
+        }
+        ui::playReplay(window, session, *actions);
+    }
+    ui::settle(session);
+    if (!o.screenshot.empty() && !window.grab().save(QString::fromStdString(o.screenshot))) {
+        return fail(QStringLiteral("%1: cannot write the screenshot").arg(QString::fromStdString(o.screenshot)));
+    }
+    if (!o.state.empty()) {
+        QString error;
+        if (!writeState(window, QString::fromStdString(o.state), &error)) {
+            return fail(error);
+        }
+    }
+    return 0;
+}

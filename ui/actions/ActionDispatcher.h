@@ -1,0 +1,34 @@
+#pragma once
+
+#include "ui/actions/OperatorAction.h"
+
+#include <QObject>
+
+namespace m350::ui {
+
+class MainWindow;
+class MachineSession;
+
+// The one path every operator action takes, whoever produced it (keyboard, a click, a test, a
+// replay): machine keys become session commands, page keys change the page, softkeys, arrows,
+// Enter and Esc go to the open prompt or the current page.
+class ActionDispatcher : public QObject {
+    Q_OBJECT
+public:
+    ActionDispatcher(MainWindow& window, MachineSession& session);
+    void dispatch(const OperatorAction& action);
+
+signals:
+    // After each action, for the recorder (t is filled in by whoever records).
+    void dispatched(const m350::ui::OperatorAction& action);
+
+private:
+    bool machineKey(const OperatorAction& action);
+    void jogKey(const OperatorAction& action);
+    void screenKey(const QString& name);
+    void force(const OperatorAction::Force& force);
+    MainWindow& window_;
+    MachineSession& session_;
+};
+
+} // namespace m350::ui

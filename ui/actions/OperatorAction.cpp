@@ -1,0 +1,200 @@
+#include "ui/actions/OperatorAction.h"
+
+#include <QJsonValue>
+#include <QStringList>
+
+namespace m350::ui {
+
+namespace {
+
+const QStringList& keyNames() {
+    static const QStringList names = [] {
+        QStringList list{"START", "PAUSE", "RESET", "ESTOP", "CONT_STEP_MPG", "MPG_RUN", "SPINDLE", "M3", "M4", "M5",
+                         "ENTER", "ESC", "UP", "DOWN", "LEFT", "RIGHT", "F1", "F2", "F3", "F4", "F5", "F6",
+                         "MONITOR", "PROGRAM", "PARAM", "IO", "LOG", "SYSTEM", "MDI", "PROBE",
+                         "FRO_100", "FRO_UP", "FRO_DOWN", "SRO_100", "SRO_UP", "SRO_DOWN", "HIGH_LOW",
+                         "STEP_0.001", "STEP_0.01", "STEP_0.1", "STEP_1", "STEP_INPUT", "EXT_START", "BACKSPACE"};
+        for (QChar axis : QStringLiteral("XYZAB")) {
+            list << QStringLiteral("JOG_%1+").arg(axis) << QStringLiteral("JOG_%1-").arg(axis);
+        }
+        return list;
+    }();
+    return names;
+}
+
+const char* kindKey(OperatorAction::Kind kind) {
+    switch (kind) {
+    case OperatorAction::Kind::Key: return "key";
+    case OperatorAction::Kind::KeyDown: return "key_down";
+    case OperatorAction::Kind::KeyUp: return "key_up";
+    case OperatorAction::Kind::Softkey: return "softkey";
+    case OperatorAction::Kind::Text: return "text";
+    case OperatorAction::Kind::Wheel: return "wheel";
+    case OperatorAction::Kind::Page: return "page";
+    case OperatorAction::Kind::Force: return "force";
+    case OperatorAction::Kind::Language: return "lang";
+    case OperatorAction::Kind::Load: return "load";
+    case OperatorAction::Kind::Wait: return "";
+    }
+    return "";
+}
+
+int axisIndex(const QString& name) {
+    static const QString axes = QStringLiteral("XYZAB");
+    return name.size() == 1 ? static_cast<int>(axes.indexOf(name.at(0).toUpper())) : -1;
+}
+
+} // namespace
+
+bool isKnownKey(const QString& name) { return keyNames().contains(name); }
+
+const QStringList& pageIds() {
+    static const QStringList ids{"monitor", "mdi", "io", "probe", "program", "param", "log", "system"};
+    return ids;
+}
+
+QJsonObject OperatorAction::toJson() const {
+    QJsonObject out;
+    out["t"] = t;
+    switch (kind) {
+    case Kind::Key:
+    case Kind::KeyDown:
+    case Kind::KeyUp:
+    case Kind::Page:
+    case Kind::Language:
+    case Kind::Load: out[kindKey(kind)] = name; break;
+    case Kind::Softkey: out["softkey"] = softkey; break;
+    case Kind::Text: out["text"] = text; break;
+    case Kind::Wheel:
+        out["wheel"] = QJsonObject{{"axis", QString(QStringLiteral("XYZAB").at(wheel.axis))},
+                                   {"step", wheel.step},
+                                   {"detents", wheel.detents},
+                                   {"seconds", wheel.seconds}};
+        break;
+    case Kind::Force: {
+        QJsonObject f{{"input", force.input}};
+        if (force.fault == QLatin1String("stuck")) {
+            f["level"] = force.level;
+        } else {
+            f["fault"] = force.fault;
+            if (force.fault != QLatin1String("none")) {
+                f["seconds"] = force.seconds;
+            }
+        }
+        out["force"] = f;
+        break;
+    }
+    case Kind::Wait: break;
+    }
+    return out;
+}
+
+std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object, QString* error) {
+    auto fail = [error](const QString& why) -> std::optional<OperatorAction> {
+        if (error) {
+            *error = why;
+        }
+        return std::nullopt;
+    };
+    OperatorAction a;
+    if (!object.contains("t") || !object.value("t").isDouble() || object.value("t").toDouble() < 0.0) {
+        return fail(QStringLiteral("\"t\" (virtual time in seconds, >= 0) is missing or not a number"));
+    }
+    a.t = object.value("t").toDouble();
+    int kinds = 0;
+    for (const QString& key : object.keys()) {
+        if (key != QLatin1String("t")) {
+            ++kinds;
+        }
+    }
+    if (kinds > 1) {
+        return fail(QStringLiteral("one action per line: found %1 besides \"t\"").arg(kinds));
+    }
+    for (Kind kind : {Kind::Key, Kind::KeyDown, Kind::KeyUp}) {
+        if (object.contains(kindKey(kind))) {
+            a.kind = kind;
+            a.name = object.value(kindKey(kind)).toString();
+            if (!isKnownKey(a.name)) {
+                return fail(QStringLiteral("unknown key \"%1\"").arg(a.name));
+            }
+            return a;
+        }
+    }
+    if (object.contains("softkey")) {
+        a.kind = Kind::Softkey;
+        a.softkey = object.value("softkey").toInt();
+        if (a.softkey < 1 || a.softkey > 12) {
+            return fail(QStringLiteral("softkey must be 1-6 (F1-F6) or 7-12 (second row)"));
+        }
+        return a;
+    }
+    if (object.contains("text")) {
+        a.kind = Kind::Text;
+        a.text = object.value("text").toString();
+        return a;
+    }
+    if (object.contains("page")) {
+        a.kind = Kind::Page;
+        a.name = object.value("page").toString();
+        if (!pageIds().contains(a.name)) {
+            return fail(QStringLiteral("unknown page \"%1\" (one of: %2)").arg(a.name, pageIds().join(", ")));
+        }
+        return a;
+    }
+    if (object.contains("lang")) {
+        a.kind = Kind::Language;
+        a.name = object.value("lang").toString();
+        if (a.name != QLatin1String("zh_CN") && a.name != QLatin1String("en")) {
+            return fail(QStringLiteral("lang must be zh_CN or en"));
+        }
+        return a;
+    }
+    if (object.contains("load")) {
+        a.kind = Kind::Load;
+        a.name = object.value("load").toString();
+        return a;
+    }
+    if (object.contains("wheel")) {
+        QJsonObject w = object.value("wheel").toObject();
+        a.kind = Kind::Wheel;
+        a.wheel.axis = axisIndex(w.value("axis").toString());
+        a.wheel.step = w.value("step").toInt(1);
+        a.wheel.detents = w.value("detents").toInt();
+        a.wheel.seconds = w.value("seconds").toDouble(0.0);
+        if (a.wheel.axis < 0) {
+            return fail(QStringLiteral("wheel axis must be X, Y, Z, A or B"));
+        }
+        if (a.wheel.step != 1 && a.wheel.step != 10 && a.wheel.step != 100) {
+            return fail(QStringLiteral("wheel step must be 1, 10 or 100"));
+        }
+        if (!(a.wheel.seconds >= 0.0)) {
+            return fail(QStringLiteral("wheel seconds must be >= 0"));
+        }
+        return a;
+    }
+    if (object.contains("force")) {
+        QJsonObject f = object.value("force").toObject();
+        a.kind = Kind::Force;
+        a.force.input = f.value("input").toInt();
+        a.force.fault = f.value("fault").toString(QStringLiteral("stuck"));
+        a.force.level = f.value("level").toInt();
+        a.force.seconds = f.value("seconds").toDouble(0.0);
+        if (a.force.input < 1 || a.force.input > 24) {
+            return fail(QStringLiteral("force input must be 1-24 (IN01-IN24)"));
+        }
+        static const QStringList faults{"stuck", "slow", "bouncing", "none"};
+        if (!faults.contains(a.force.fault)) {
+            return fail(QStringLiteral("force fault must be stuck, slow, bouncing or none"));
+        }
+        if (a.force.fault == QLatin1String("stuck") && a.force.level != 0 && a.force.level != 1) {
+            return fail(QStringLiteral("force level must be 0 or 1"));
+        }
+        return a;
+    }
+    if (kinds == 0) {
+        return a; // {"t": 8}: time passes
+    }
+    return fail(QStringLiteral("unknown action \"%1\"").arg(object.keys().join(", ")));
+}
+
+} // namespace m350::ui

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <QString>
+#include <QTranslator>
+
+#include <memory>
+
+class QApplication;
+
+namespace m350::ui {
+
+// The panel's language (zh_CN by default, en) and its font. Chinese needs a CJK font, which a
+// stock Debian machine lacks: the panel picks one explicitly and says so when there is none.
+class Language {
+public:
+    explicit Language(QApplication& app);
+    // Installs the translation; false (and a message) for an unknown language.
+    bool set(const QString& language, QString* error = nullptr);
+    const QString& current() const { return current_; }
+    // The CJK font family in use, or empty when the machine has none (see fontProblem()).
+    const QString& cjkFamily() const { return cjkFamily_; }
+    QString fontProblem() const;
+
+private:
+    QApplication& app_;
+    std::unique_ptr<QTranslator> translator_;
+    QString current_;
+    QString cjkFamily_;
+};
+
+// The CJK families the panel prefers, best first (fonts-wqy-microhei is what scripts/deps.sh installs).
+QString findCjkFamily();
+
+} // namespace m350::ui

@@ -1,0 +1,58 @@
+#pragma once
+
+#include "ui/session/PanelSnapshot.h"
+
+#include <QJsonObject>
+#include <QString>
+#include <QVector>
+#include <QWidget>
+
+namespace m350::ui {
+
+class PanelContext;
+
+// One screen of the panel (加工状态, MDI, IO状态, 对刀 ...). A page shows snapshots and answers the
+// operator's softkeys and keys; it moves the machine only through the context's session. Adding
+// a page is a local change: write a Page and register it in MainWindow::addPages.
+class Page : public QWidget {
+    Q_OBJECT
+public:
+    struct Softkey {
+        QString text;
+        bool enabled = true;
+        QString tooltip; // why a key is disabled
+    };
+
+    Page(PanelContext& context, QWidget* parent = nullptr) : QWidget(parent), context_(context) {}
+
+    virtual QString id() const = 0;    // "monitor", used by --page and the replay format
+    virtual QString title() const = 0; // the page's name on the status line, translated
+    // The softkeys of the current menu level: 6, or 12 for two rows (F1-F6, Shift+F1-F6).
+    virtual QVector<Softkey> softkeys() const = 0;
+    virtual void softkey(int number) = 0; // 1-12
+    // ENTER ESC UP DOWN LEFT RIGHT; false when the page has no use for the key.
+    virtual bool key(const QString& name) {
+        (void)name;
+        return false;
+    }
+    virtual bool typed(const QString& text) {
+        (void)text;
+        return false;
+    }
+    virtual void render(const PanelSnapshot& snapshot) = 0;
+    virtual void retranslate() {}
+    virtual QJsonObject state() const { return {}; } // page-specific part of --state
+
+signals:
+    void softkeysChanged();
+    void navigate(const QString& pageId); // a softkey that opens another page (对刀, MDI)
+
+protected:
+    PanelContext& context() const { return context_; }
+    void changeEvent(QEvent* event) override;
+
+private:
+    PanelContext& context_;
+};
+
+} // namespace m350::ui

@@ -1,0 +1,300 @@
+#include "ui/panel/MainWindow.h"
+
+#include "ui/actions/ActionRecorder.h"
+#include "ui/actions/KeyboardMap.h"
+#include "ui/i18n/Language.h"
+#include "ui/pages/IoPage.h"
+#include "ui/pages/MdiPage.h"
+#include "ui/pages/MonitorPage.h"
+#include "ui/pages/ProbePage.h"
+#include "ui/panel/HandwheelWidget.h"
+#include "ui/panel/KeyPad.h"
+#include "ui/panel/PanelMode.h"
+#include "ui/panel/PanelStateJson.h"
+#include "ui/panel/PromptBox.h"
+#include "ui/panel/SoftkeyBar.h"
+#include "ui/panel/StatusLine.h"
+
+#include <QApplication>
+#include <QEvent>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QMenuBar>
+#include <QStackedWidget>
+#include <QVBoxLayout>
+
+namespace m350::ui {
+
+MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language* language, QWidget* parent)
+    : QMainWindow(parent), session_(session), context_(session, std::move(machineFolder)), language_(language) {
+    setObjectName("panel");
+    auto* central = new QWidget(this);
+    auto* row = new QHBoxLayout(central);
+    row->setContentsMargins(2, 2, 2, 2);
+    row->setSpacing(4);
+    auto* screen = new QWidget(central);
+    screen->setObjectName("screen");
+    auto* column = new QVBoxLayout(screen);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(2);
+    status_ = new StatusLine(screen);
+    stack_ = new QStackedWidget(screen);
+    message_ = new QLabel(screen);
+    message_->setObjectName("messageLine");
+    alarm_ = new QLabel(screen);
+    alarm_->setObjectName("alarmLine");
+    alarm_->setWordWrap(true);
+    softkeys_ = new SoftkeyBar(screen);
+    column->addWidget(status_);
+    column->addWidget(stack_, 1);
+    column->addWidget(message_);
+    column->addWidget(alarm_);
+    column->addWidget(softkeys_);
+    dispatcher_ = new ActionDispatcher(*this, session_);
+    keys_ = new KeyPad([this](const OperatorAction& a) { dispatcher_->dispatch(a); }, central);
+    keys_->setFixedWidth(348);
+    row->addWidget(screen, 1);
+    row->addWidget(keys_);
+    setCentralWidget(central);
+    prompt_ = new PromptBox(this);
+    context_.attach(prompt_, [this](const QString& text) { notify(text); });
+    recorder_ = new ActionRecorder([this] { return snapshot_ ? snapshot_->status.time : 0.0; }, this);
+    connect(dispatcher_, &ActionDispatcher::dispatched, recorder_, &ActionRecorder::record);
+    connect(softkeys_, &SoftkeyBar::pressed, this,
+            [this](int number) { dispatcher_->dispatch(OperatorAction::softkeyPress(number)); });
+    addPages();
+    buildMenu();
+    connect(&session_, &MachineSession::snapshotReady, this, &MainWindow::onSnapshot);
+    qApp->installEventFilter(this);
+    resize(1024, 600);
+    showPage(QStringLiteral("monitor"));
+    retranslate();
+}
+
+MainWindow::~MainWindow() { qApp->removeEventFilter(this); }
+
+void MainWindow::addPages() {
+    addPage(new MonitorPage(context_, stack_));
+    addPage(new MdiPage(context_, stack_));
+    addPage(new IoPage(context_, stack_));
+    addPage(new ProbePage(context_, stack_));
+}
+
+void MainWindow::addPage(Page* page) {
+    pages_.insert(page->id(), page);
+    stack_->addWidget(page);
+    connect(page, &Page::navigate, this, [this](const QString& id) { showPage(id); });
+    connect(page, &Page::softkeysChanged, this, [this, page] {
+        if (page == currentPage()) {
+            refreshSoftkeys();
+        }
+    });
+}
+
+bool MainWindow::showPage(const QString& id) {
+    Page* page = pages_.value(id);
+    if (!page) {
+        notify(tr("This page comes with the panel's part 2"));
+        return false;
+    }
+    stack_->setCurrentWidget(page);
+    refreshSoftkeys();
+    if (snapshot_) {
+        page->render(*snapshot_);
+        status_->render(*snapshot_, page->title());
+    }
+    return true;
+}
+
+Page* MainWindow::currentPage() const { return static_cast<Page*>(stack_->currentWidget()); }
+
+void MainWindow::refreshSoftkeys() { softkeys_->show(currentPage()->softkeys()); }
+
+void MainWindow::pressSoftkey(int number) {
+    QVector<Page::Softkey> keys = currentPage()->softkeys();
+    if (number < 1 || number > keys.size() || keys[number - 1].text.isEmpty()) {
+        return;
+    }
+    if (!keys[number - 1].enabled) {
+        notify(keys[number - 1].tooltip);
+        return;
+    }
+    notice_.clear();
+    currentPage()->softkey(number);
+}
+
+void MainWindow::setLanguage(const QString& language) {
+    QString error;
+    if (language_ && !language_->set(language, &error)) {
+        notify(error);
+    }
+}
+
+void MainWindow::askJogStep() {
+    context_.askText(tr("Input the step distance (mm):"), {}, [this](std::optional<QString> text) {
+        bool ok = false;
+        double step = text ? text->toDouble(&ok) : 0.0;
+        if (text && (!ok || step <= 0.0 || step > 100.0)) {
+            notify(tr("Step distance must be a number from 0.001 to 100"));
+        } else if (text) {
+            session_.setJogStep(step);
+        }
+    });
+}
+
+void MainWindow::notify(const QString& text) {
+    notice_ = text;
+    message_->setText(text);
+}
+
+QString MainWindow::messageText() const { return message_->text(); }
+QString MainWindow::alarmText() const { return alarm_->text(); }
+
+void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
+    snapshot_ = snapshot;
+    const PanelSnapshot& s = *snapshot;
+    status_->render(s, currentPage()->title());
+    currentPage()->render(s);
+    keys_->render(s);
+    QString message = QString::fromStdString(s.status.message);
+    if (s.status.run == controller::PanelStatus::Run::Hold) {
+        QString why = QString::fromStdString(s.status.programStop);
+        message = tr("Pause", "msg 114") + (why.isEmpty() ? QString() : QStringLiteral(": ") + why);
+    }
+    if (!s.lastError.isEmpty()) {
+        message = s.lastError;
+    }
+    message_->setText(message.isEmpty() ? notice_ : message);
+    QString alarm;
+    if (s.status.alarm) {
+        const Alarm& a = *s.status.alarm;
+        alarm = QString::fromStdString(a.message);
+        if (!a.file.empty()) {
+            alarm = QStringLiteral("%1:%2:%3: %4").arg(QString::fromStdString(a.file)).arg(a.line).arg(a.column).arg(alarm);
+        }
+    } else if (s.status.sensorWait) {
+        const auto& w = *s.status.sensorWait;
+        alarm = tr("Waiting for %1 = %2 for %3 s (%4:%5)")
+                    .arg(QString::fromStdString(w.input))
+                    .arg(w.awaitedLevel)
+                    .arg(w.seconds, 0, 'f', 1)
+                    .arg(QString::fromStdString(w.file))
+                    .arg(w.line);
+    }
+    alarm_->setText(alarm);
+    alarm_->setVisible(!alarm.isEmpty());
+    showMacroDialog(s);
+    if (s.homingPrompt && !bootPromptAsked_) {
+        bootPromptAsked_ = true;
+        context_.ask(tr("Go to home?", "msg 140"), [this](bool yes) {
+            if (yes) {
+                session_.home({});
+            }
+        });
+    }
+}
+
+// A macro's #1505 dialog: the run waits until the operator answers it.
+void MainWindow::showMacroDialog(const PanelSnapshot& s) {
+    if (!s.status.dialog) {
+        dialogShown_.clear();
+        return;
+    }
+    if (*s.status.dialog == dialogShown_ && prompt_->active()) {
+        return;
+    }
+    dialogShown_ = *s.status.dialog;
+    prompt_->ask(QString::fromStdString(*s.status.dialog), false, {},
+                 [this](std::optional<QString> answer) { session_.answerDialog(answer.has_value()); });
+}
+
+QJsonObject MainWindow::state() const {
+    QJsonObject out = snapshot_ ? panelStateJson(*snapshot_) : QJsonObject{};
+    out["page"] = currentPage()->id();
+    out["message"] = messageText();
+    out["alarm_text"] = alarmText();
+    out["language"] = language_ ? language_->current() : QString();
+    out["prompt"] = prompt_->active() ? prompt_->question() : QString();
+    for (Page* page : pages_) {
+        QJsonObject extra = page->state();
+        for (auto it = extra.begin(); it != extra.end(); ++it) {
+            out[it.key()] = it.value();
+        }
+    }
+    return out;
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    const bool press = event->type() == QEvent::KeyPress;
+    if (!press && event->type() != QEvent::KeyRelease) {
+        return QMainWindow::eventFilter(watched, event);
+    }
+    QWidget* active = QApplication::activeWindow();
+    if (active != this && active != prompt_) {
+        return false;
+    }
+    auto action = actionForKey(*static_cast<QKeyEvent*>(event), press);
+    if (!action) {
+        return false;
+    }
+    if (action->kind == OperatorAction::Kind::Wheel) {
+        keys_->handwheel()->turn(action->wheel.detents);
+    } else {
+        dispatcher_->dispatch(*action);
+    }
+    return true;
+}
+
+void MainWindow::buildMenu() {
+    panelMenu_ = menuBar()->addMenu(QString());
+    panelMenu_->addAction(QStringLiteral("中文"), this, [this] { setLanguage(QStringLiteral("zh_CN")); });
+    panelMenu_->addAction(QStringLiteral("English"), this, [this] { setLanguage(QStringLiteral("en")); });
+    panelMenu_->addSeparator();
+    QAction* record = panelMenu_->addAction(QString(), this, [this] {
+        if (recorder_->recording()) {
+            recorder_->stop();
+            notify(tr("Recording stopped"));
+            return;
+        }
+        QString path = QFileDialog::getSaveFileName(this, tr("Record operator actions"), {}, "JSON Lines (*.jsonl)");
+        QString error;
+        if (!path.isEmpty() && !recorder_->start(path, &error)) {
+            notify(error);
+        }
+    });
+    record->setObjectName("recordAction");
+    QAction* retrace = panelMenu_->addAction(QString());
+    retrace->setObjectName("retraceAction");
+    retrace->setCheckable(true);
+    retrace->setChecked(true);
+    connect(retrace, &QAction::toggled, this, [this](bool on) { session_.setGuideRetrace(on); });
+}
+
+bool MainWindow::startRecording(const QString& path, QString* error) { return recorder_->start(path, error); }
+
+void MainWindow::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+    }
+    QMainWindow::changeEvent(event);
+}
+
+void MainWindow::retranslate() {
+    setWindowTitle(tr("M350 Studio"));
+    panelMenu_->setTitle(tr("Panel"));
+    for (QAction* action : panelMenu_->actions()) {
+        if (action->objectName() == QLatin1String("recordAction")) {
+            action->setText(tr("Record operator actions..."));
+        } else if (action->objectName() == QLatin1String("retraceAction")) {
+            action->setText(tr("MPG RUN: reverse wheel retraces the path"));
+        }
+    }
+    refreshSoftkeys();
+    if (snapshot_) {
+        onSnapshot(snapshot_);
+    }
+}
+
+} // namespace m350::ui

@@ -1,0 +1,85 @@
+#pragma once
+
+#include "ui/actions/ActionDispatcher.h"
+#include "ui/panel/PanelContext.h"
+#include "ui/session/PanelSnapshot.h"
+
+#include <QJsonObject>
+#include <QMainWindow>
+#include <QMap>
+
+class QLabel;
+class QStackedWidget;
+
+namespace m350::ui {
+
+class KeyPad;
+class Language;
+class Page;
+class PromptBox;
+class SoftkeyBar;
+class StatusLine;
+
+// The panel: status line on top, the page in the middle, the message line and the softkeys under
+// it, the panel's keys and the handwheel on the right. It shows snapshots and hands every
+// operator action to its dispatcher; it owns no machine state.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    MainWindow(MachineSession& session, QString machineFolder, Language* language, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    ActionDispatcher& dispatcher() { return *dispatcher_; }
+    PanelContext& context() { return context_; }
+    bool showPage(const QString& id);
+    Page* currentPage() const;
+    Page* page(const QString& id) const { return pages_.value(id); }
+    void pressSoftkey(int number);
+    void setLanguage(const QString& language);
+    void askJogStep();
+    void notify(const QString& text);
+    bool startRecording(const QString& path, QString* error); // --record
+
+    StatusLine* statusLine() const { return status_; }
+    SoftkeyBar* softkeys() const { return softkeys_; }
+    KeyPad* keyPad() const { return keys_; }
+    PromptBox* prompt() const { return prompt_; }
+    QString messageText() const;
+    QString alarmText() const;
+    // The panel's state for --state: page, mode, state, positions, tool, message, alarm, IO, MDI lines.
+    QJsonObject state() const;
+
+protected:
+    void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void addPages();
+    void addPage(Page* page);
+    void onSnapshot(const SnapshotPtr& snapshot);
+    void refreshSoftkeys();
+    void showMacroDialog(const PanelSnapshot& snapshot);
+    void buildMenu();
+    void retranslate();
+
+    MachineSession& session_;
+    PanelContext context_;
+    Language* language_;
+    ActionDispatcher* dispatcher_;
+    StatusLine* status_;
+    QStackedWidget* stack_;
+    QLabel* message_;
+    QLabel* alarm_;
+    SoftkeyBar* softkeys_;
+    KeyPad* keys_;
+    PromptBox* prompt_;
+    QMap<QString, Page*> pages_;
+    SnapshotPtr snapshot_;
+    QString notice_;
+    std::string dialogShown_;
+    bool bootPromptAsked_ = false;
+    QMenu* panelMenu_ = nullptr;
+    class ActionRecorder* recorder_ = nullptr;
+};
+
+} // namespace m350::ui

@@ -1,0 +1,48 @@
+#include "ui/panel/PanelMode.h"
+
+namespace m350::ui {
+
+using Run = controller::PanelStatus::Run;
+
+PanelText::Mode displayedMode(const PanelSnapshot& snapshot) {
+    const controller::PanelStatus& s = snapshot.status;
+    if (s.guide) {
+        return PanelText::Mode::Wheel;
+    }
+    switch (snapshot.activity) {
+    case Activity::Auto: return PanelText::Mode::Auto;
+    case Activity::Mdi:
+    case Activity::SpindleKey: return PanelText::Mode::Mdi;
+    case Activity::Homing: return PanelText::Mode::Home;
+    case Activity::Probe: return PanelText::Mode::Probe;
+    case Activity::None: break;
+    }
+    switch (s.jogMode) {
+    case controller::JogMode::Continuous: return PanelText::Mode::Cont;
+    case controller::JogMode::Step: return PanelText::Mode::Step;
+    case controller::JogMode::Mpg: return PanelText::Mode::Mpg;
+    }
+    return PanelText::Mode::Cont;
+}
+
+PanelText::State displayedState(const PanelSnapshot& snapshot) {
+    const controller::PanelStatus& s = snapshot.status;
+    switch (s.run) {
+    case Run::Alarm: return PanelText::State::Error;
+    case Run::EStop: return PanelText::State::Alarm;
+    case Run::Hold: // 暂停 shows on the message line; the machine is still in a run
+    case Run::Running:
+        if (s.guide && s.guideDirection > 0) {
+            return PanelText::State::Forward;
+        }
+        if (s.guide && s.guideDirection < 0) {
+            return PanelText::State::Reverse;
+        }
+        return PanelText::State::Busy;
+    case Run::Idle:
+    case Run::Finished: break;
+    }
+    return s.jogging ? PanelText::State::Busy : PanelText::State::Ready;
+}
+
+} // namespace m350::ui

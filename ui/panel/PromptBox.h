@@ -1,0 +1,42 @@
+#pragma once
+
+#include <QDialog>
+
+#include <functional>
+#include <optional>
+
+class QLabel;
+class QLineEdit;
+
+namespace m350::ui {
+
+// The panel's own question box (是否进行开机寻零操作?, 请输入固定对刀的刀具号:) and the macro's
+// #1505 dialog: modal over the panel, answered with Enter or Esc, with a line of typed text when
+// it asks for a value. It never blocks the event loop (open(), not exec()).
+class PromptBox : public QDialog {
+    Q_OBJECT
+public:
+    explicit PromptBox(QWidget* parent);
+
+    using Answer = std::function<void(std::optional<QString>)>; // nullopt: Esc
+    void ask(const QString& question, bool withText, const QString& initial, Answer answer);
+    bool active() const { return isVisible(); }
+    QString question() const;
+    QString textValue() const;
+    void type(const QString& text);
+    void backspace();
+    void confirm(); // Enter
+    void cancel();  // Esc
+
+protected:
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    void finishWith(std::optional<QString> value);
+    QLabel* question_;
+    QLineEdit* edit_;
+    QLabel* hint_;
+    Answer answer_;
+};
+
+} // namespace m350::ui

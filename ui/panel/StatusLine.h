@@ -1,0 +1,28 @@
+#pragma once
+
+#include "ui/session/PanelSnapshot.h"
+
+#include <QWidget>
+
+class QLabel;
+
+namespace m350::ui {
+
+// The top line of the screen: mode, state, the loaded file, the page's name, date and time.
+class StatusLine : public QWidget {
+    Q_OBJECT
+public:
+    explicit StatusLine(QWidget* parent = nullptr);
+    void render(const PanelSnapshot& snapshot, const QString& pageTitle);
+    QString modeText() const;
+    QString stateText() const;
+
+private:
+    QLabel* mode_;
+    QLabel* state_;
+    QLabel* file_;
+    QLabel* page_;
+    QLabel* clock_;
+};
+
+} // namespace m350::ui

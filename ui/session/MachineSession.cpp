@@ -1,0 +1,89 @@
+#include "ui/session/MachineSession.h"
+
+#include "ui/session/SessionWorker.h"
+
+#include "core/config/MachineConfig.h"
+
+#include <QMetaObject>
+
+#include <algorithm>
+#include <cmath>
+
+namespace m350::ui {
+
+MachineSession::MachineSession(config::MachineConfig config, Options options, QObject* parent) : QObject(parent) {
+    qRegisterMetaType<SnapshotPtr>();
+    worker_ = new SessionWorker(std::move(config), options);
+    worker_->moveToThread(&thread_);
+    connect(worker_, &SessionWorker::published, this, [this](const SnapshotPtr& snapshot) {
+        latest_ = snapshot;
+        emit snapshotReady(snapshot);
+    });
+    thread_.setObjectName("machine");
+    thread_.start();
+    post([](SessionWorker& w) { w.begin(); });
+}
+
+MachineSession::~MachineSession() {
+    QMetaObject::invokeMethod(worker_, [w = worker_] { w->finish(); }, Qt::BlockingQueuedConnection);
+    thread_.quit();
+    thread_.wait();
+    delete worker_;
+}
+
+void MachineSession::post(std::function<void(SessionWorker&)> call) {
+    QMetaObject::invokeMethod(worker_, [w = worker_, call = std::move(call)] { call(*w); }, Qt::QueuedConnection);
+}
+
+void MachineSession::start() { post([](SessionWorker& w) { w.start(); }); }
+void MachineSession::pause() { post([](SessionWorker& w) { w.pause(); }); }
+void MachineSession::reset() { post([](SessionWorker& w) { w.reset(); }); }
+void MachineSession::emergencyStop() { post([](SessionWorker& w) { w.emergencyStop(); }); }
+void MachineSession::loadProgram(const QString& path) {
+    post([path](SessionWorker& w) { w.loadProgram(path); });
+}
+void MachineSession::runMdi(const QStringList& lines, Activity activity) {
+    post([lines, activity](SessionWorker& w) { w.runMdi(lines, activity); });
+}
+void MachineSession::answerDialog(bool enter) { post([enter](SessionWorker& w) { w.answerDialog(enter); }); }
+void MachineSession::pressExternStart() { post([](SessionWorker& w) { w.pressExternStart(); }); }
+void MachineSession::home(const QVector<int>& axes) { post([axes](SessionWorker& w) { w.home(axes); }); }
+void MachineSession::zeroAxes(const QVector<int>& axes) { post([axes](SessionWorker& w) { w.zeroAxes(axes); }); }
+void MachineSession::jogPress(int axis, int direction) {
+    post([axis, direction](SessionWorker& w) { w.jogPress(axis, direction); });
+}
+void MachineSession::jogRelease(int axis) { post([axis](SessionWorker& w) { w.jogRelease(axis); }); }
+void MachineSession::cycleJogMode() { post([](SessionWorker& w) { w.cycleJogMode(); }); }
+void MachineSession::setJogStep(double distance) { post([distance](SessionWorker& w) { w.setJogStep(distance); }); }
+void MachineSession::toggleJogHighSpeed() { post([](SessionWorker& w) { w.toggleJogHighSpeed(); }); }
+void MachineSession::wheel(int axis, int multiplier, int detents, double seconds) {
+    post([=](SessionWorker& w) { w.wheel(axis, multiplier, detents, seconds); });
+}
+void MachineSession::toggleHandwheelGuide() { post([](SessionWorker& w) { w.toggleHandwheelGuide(); }); }
+void MachineSession::setGuideRetrace(bool retrace) { post([retrace](SessionWorker& w) { w.setGuideRetrace(retrace); }); }
+void MachineSession::feedOverrideKey(int step) { post([step](SessionWorker& w) { w.feedOverrideKey(step); }); }
+void MachineSession::spindleOverrideKey(int step) { post([step](SessionWorker& w) { w.spindleOverrideKey(step); }); }
+void MachineSession::spindleKey(int code) { post([code](SessionWorker& w) { w.spindleKey(code); }); }
+void MachineSession::setOutput(int port, int level) { post([=](SessionWorker& w) { w.setOutput(port, level); }); }
+void MachineSession::setParameter(int number, double value) {
+    post([=](SessionWorker& w) { w.setParameter(number, value); });
+}
+void MachineSession::forceInput(int pin, Fault fault, int level, double seconds) {
+    post([=](SessionWorker& w) { w.forceInput(pin, fault, level, seconds); });
+}
+
+void MachineSession::advance(double seconds) {
+    constexpr double kFrame = 1.0 / 60.0;
+    while (seconds > 1e-12) {
+        double step = std::min(kFrame, seconds);
+        QMetaObject::invokeMethod(worker_, [w = worker_, step] { w->advanceManual(step); },
+                                  Qt::BlockingQueuedConnection);
+        seconds -= step;
+    }
+}
+
+void MachineSession::sync() {
+    QMetaObject::invokeMethod(worker_, [w = worker_] { w->publish(); }, Qt::BlockingQueuedConnection);
+}
+
+} // namespace m350::ui

@@ -1,0 +1,91 @@
+#pragma once
+
+#include "ui/session/PanelSnapshot.h"
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+#include <QThread>
+#include <QVector>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace m350::config {
+struct MachineConfig;
+}
+
+namespace m350::ui {
+
+class SessionWorker;
+
+// The one machine behind the panel. The controller lives in a worker thread; every method here
+// only queues a call to it and returns at once, so no widget ever blocks on the machine. What the
+// machine looks like arrives as snapshots (snapshotReady) at up to 60 Hz.
+class MachineSession : public QObject {
+    Q_OBJECT
+public:
+    enum class Clock {
+        RealTime, // virtual time follows the wall clock (times `rate`), ticked at 60 Hz
+        Manual,   // virtual time moves only by advance(): replays and tests
+    };
+    struct Options {
+        Clock clock = Clock::RealTime;
+        double rate = 1.0;     // virtual seconds per wall second (faster for simulation)
+        bool homed = true;     // start with every axis homed (--unhomed: as after power-on)
+        std::optional<int> tool;
+    };
+    MachineSession(config::MachineConfig config, Options options, QObject* parent = nullptr);
+    ~MachineSession() override;
+
+    // the cycle keys
+    void start();         // START: resume a hold, or run the loaded program from its beginning
+    void pause();         // PAUSE (暂停)
+    void reset();         // RESET (复位)
+    void emergencyStop(); // E-stop (急停)
+    void loadProgram(const QString& path);
+    void runMdi(const QStringList& lines, Activity activity = Activity::Mdi);
+    void answerDialog(bool enter);
+    void pressExternStart();
+
+    // manual work
+    void home(const QVector<int>& axes); // 回机械原点 (empty: every axis with a home switch)
+    void zeroAxes(const QVector<int>& axes); // 清零: the current position becomes work zero
+    void jogPress(int axis, int direction);
+    void jogRelease(int axis);
+    void cycleJogMode(); // CONT -> STEP -> MPG
+    void setJogStep(double distance);
+    void toggleJogHighSpeed(); // Hi/Lo
+    void wheel(int axis, int multiplier, int detents, double seconds);
+    void toggleHandwheelGuide(); // MPG RUN (试切)
+    void setGuideRetrace(bool retrace);
+    void feedOverrideKey(int step);    // 0: 100 %, +10 / -10
+    void spindleOverrideKey(int step); // 0: 100 %, +10 / -10
+    void spindleKey(int code);         // 3, 4, 5; 0 = SPINDLE (toggle)
+
+    // IO page and parameters
+    void setOutput(int port, int level);
+    void setParameter(int number, double value);
+    enum class Fault { None, Stuck, Slow, Bouncing };
+    void forceInput(int pin, Fault fault, int level, double seconds);
+
+    // Manual clock: lets `seconds` of virtual time pass in frames of at most 1/60 s and waits until
+    // the worker has done so; the snapshot of the last frame is then queued to this thread.
+    void advance(double seconds);
+    // Waits until every call queued so far has run (replays and tests).
+    void sync();
+
+    SnapshotPtr latest() const { return latest_; }
+
+signals:
+    void snapshotReady(m350::ui::SnapshotPtr snapshot);
+
+private:
+    void post(std::function<void(SessionWorker&)> call);
+    QThread thread_;
+    SessionWorker* worker_ = nullptr;
+    SnapshotPtr latest_;
+};
+
+} // namespace m350::ui

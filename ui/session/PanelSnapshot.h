@@ -1,0 +1,32 @@
+#pragma once
+
+#include "core/controller/PanelStatus.h"
+
+#include <QMetaType>
+#include <QString>
+#include <QStringList>
+
+#include <memory>
+
+namespace m350::ui {
+
+// What the session is doing on the operator's behalf, for the mode field of the status line.
+enum class Activity { None, Auto, Mdi, Homing, Probe, SpindleKey };
+
+// One immutable picture of the machine, published by the session from its worker thread. Widgets
+// keep the latest one and read nothing else.
+struct PanelSnapshot {
+    controller::PanelStatus status;
+    Activity activity = Activity::None;
+    QString programFile;  // the file START runs (empty: none loaded)
+    QString lastError;    // why the last command was refused (syntax error with file:line:col, ...)
+    QString machineName;
+    int magazineCapacity = 0;
+    bool homingPrompt = false; // param 127 = 0 and X, Y, Z not homed: 是否进行开机寻零操作?
+};
+
+using SnapshotPtr = std::shared_ptr<const PanelSnapshot>;
+
+} // namespace m350::ui
+
+Q_DECLARE_METATYPE(m350::ui::SnapshotPtr)

@@ -1,0 +1,320 @@
+#include "ui/session/SessionWorker.h"
+
+#include "core/config/MachineConfig.h"
+#include "core/controller/Controller.h"
+#include "core/gcode/Diagnostic.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace m350::ui {
+
+using controller::Controller;
+
+namespace {
+
+constexpr int kFrameMs = 16; // the display's 60 Hz
+
+controller::RunSettings settingsFor(const MachineSession::Options& options) {
+    controller::RunSettings settings;
+    settings.homed = options.homed;
+    settings.tool = options.tool;
+    settings.operatorPresent = true; // dialogs and START wait for the operator
+    return settings;
+}
+
+QString diagnosticsText(const std::vector<gcode::Diagnostic>& diagnostics) {
+    QStringList lines;
+    for (const gcode::Diagnostic& d : diagnostics) {
+        if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
+            lines << QString::fromStdString(gcode::formatDiagnostic(d));
+        }
+    }
+    return lines.join('\n');
+}
+
+} // namespace
+
+SessionWorker::SessionWorker(config::MachineConfig config, MachineSession::Options options) : options_(options) {
+    machineName_ = QString::fromStdString(config.name);
+    controller_ = std::make_unique<Controller>(std::move(config), settingsFor(options));
+}
+
+SessionWorker::~SessionWorker() = default;
+
+void SessionWorker::begin() {
+    if (options_.clock == MachineSession::Clock::RealTime) {
+        timer_ = new QTimer(this);
+        timer_->setTimerType(Qt::PreciseTimer);
+        connect(timer_, &QTimer::timeout, this, &SessionWorker::tick);
+        wall_.start();
+        lastTickNs_ = 0;
+        timer_->start(kFrameMs);
+    }
+    publish();
+}
+
+void SessionWorker::finish() {
+    delete timer_;
+    timer_ = nullptr;
+}
+
+void SessionWorker::tick() {
+    qint64 now = wall_.nsecsElapsed();
+    double seconds = static_cast<double>(now - lastTickNs_) * 1e-9 * options_.rate;
+    lastTickNs_ = now;
+    advance(seconds);
+    publish();
+}
+
+void SessionWorker::advanceManual(double seconds) {
+    advance(seconds);
+    publish();
+}
+
+void SessionWorker::advance(double seconds) {
+    Controller::RunState state = controller_->advance(seconds);
+    if (state != Controller::RunState::Running && state != Controller::RunState::Hold &&
+        activity_ != Activity::Homing) {
+        activity_ = Activity::None;
+    }
+}
+
+bool SessionWorker::busy() const {
+    auto state = controller_->runState();
+    return state == Controller::RunState::Running || state == Controller::RunState::Hold;
+}
+
+void SessionWorker::refuse(const QString& why) {
+    lastError_ = why;
+    publish();
+}
+
+void SessionWorker::publish() {
+    auto snapshot = std::make_shared<PanelSnapshot>();
+    snapshot->status = controller_->panelStatus();
+    snapshot->activity = activity_;
+    snapshot->programFile = programFile_;
+    snapshot->lastError = lastError_;
+    snapshot->machineName = machineName_;
+    snapshot->homingPrompt = controller_->needsBootHomingPrompt();
+    emit published(snapshot);
+}
+
+bool SessionWorker::loadCurrentFile() {
+    if (fileLoaded_) {
+        return true;
+    }
+    if (!controller_->loadFile(programFile_.toStdString())) {
+        refuse(diagnosticsText(controller_->diagnostics()));
+        return false;
+    }
+    fileLoaded_ = true;
+    return true;
+}
+
+void SessionWorker::start() {
+    lastError_.clear();
+    if (controller_->runState() == Controller::RunState::Hold) {
+        controller_->resume();
+    } else if (busy()) {
+        return;
+    } else if (programFile_.isEmpty()) {
+        refuse(QStringLiteral("no program loaded"));
+        return;
+    } else if (loadCurrentFile()) {
+        if (controller_->start()) {
+            activity_ = Activity::Auto;
+        }
+    }
+    publish();
+}
+
+void SessionWorker::pause() {
+    controller_->hold();
+    publish();
+}
+
+void SessionWorker::reset() {
+    controller_->reset();
+    activity_ = Activity::None;
+    lastError_.clear();
+    publish();
+}
+
+void SessionWorker::emergencyStop() {
+    controller_->emergencyStop();
+    activity_ = Activity::None;
+    publish();
+}
+
+void SessionWorker::loadProgram(const QString& path) {
+    if (busy()) {
+        refuse(QStringLiteral("a program is running"));
+        return;
+    }
+    programFile_ = path;
+    fileLoaded_ = false;
+    lastError_.clear();
+    loadCurrentFile();
+    publish();
+}
+
+void SessionWorker::runMdi(const QStringList& lines, Activity activity) {
+    if (busy()) {
+        refuse(QStringLiteral("a program is running"));
+        return;
+    }
+    std::vector<std::string> text;
+    for (const QString& line : lines) {
+        text.push_back(line.toStdString());
+    }
+    lastError_.clear();
+    fileLoaded_ = false;
+    if (!controller_->loadMdi(text)) {
+        refuse(diagnosticsText(controller_->diagnostics()));
+        return;
+    }
+    if (controller_->start()) {
+        activity_ = activity;
+    }
+    publish();
+}
+
+void SessionWorker::answerDialog(bool enter) {
+    controller_->answerDialog(enter);
+    publish();
+}
+
+void SessionWorker::pressExternStart() {
+    controller_->pressExternStart();
+    publish();
+}
+
+void SessionWorker::home(const QVector<int>& axes) {
+    if (busy()) {
+        refuse(QStringLiteral("a program is running"));
+        return;
+    }
+    std::vector<int> which(axes.begin(), axes.end());
+    if (which.empty()) {
+        which = controller_->homeableAxes();
+    }
+    lastError_.clear();
+    if (auto alarm = controller_->home(which)) {
+        lastError_ = QString::fromStdString(alarm->message);
+    }
+    publish();
+}
+
+void SessionWorker::zeroAxes(const QVector<int>& axes) {
+    if (busy()) {
+        refuse(QStringLiteral("a program is running"));
+        return;
+    }
+    for (int axis : axes) {
+        controller_->zeroWorkAxis(axis);
+    }
+    publish();
+}
+
+void SessionWorker::jogPress(int axis, int direction) {
+    controller_->jogPress(axis, direction);
+    publish();
+}
+
+void SessionWorker::jogRelease(int axis) {
+    controller_->jogRelease(axis);
+    publish();
+}
+
+void SessionWorker::cycleJogMode() {
+    using Mode = Controller::JogMode;
+    switch (controller_->jogMode()) {
+    case Mode::Continuous: controller_->setJogMode(Mode::Step); break;
+    case Mode::Step: controller_->setJogMode(Mode::Mpg); break;
+    case Mode::Mpg: controller_->setJogMode(Mode::Continuous); break;
+    }
+    publish();
+}
+
+void SessionWorker::setJogStep(double distance) {
+    controller_->setJogStep(distance);
+    publish();
+}
+
+void SessionWorker::toggleJogHighSpeed() {
+    jogHigh_ = !jogHigh_;
+    controller_->setJogHighSpeed(jogHigh_);
+    publish();
+}
+
+void SessionWorker::wheel(int axis, int multiplier, int detents, double seconds) {
+    controller_->wheelTurn(axis, multiplier, detents, seconds);
+    publish();
+}
+
+void SessionWorker::toggleHandwheelGuide() {
+    controller_->setHandwheelGuide(!controller_->handwheelGuide());
+    publish();
+}
+
+void SessionWorker::setGuideRetrace(bool retrace) {
+    controller_->setGuideReverse(retrace ? Controller::GuideReverse::Retrace : Controller::GuideReverse::Hold);
+    publish();
+}
+
+// The override keys: 0 back to 100 %, else a step of `step` percent.
+void SessionWorker::feedOverrideKey(int step) {
+    feedOverride_ = controller_->setFeedOverride(step == 0 ? 100.0 : feedOverride_ + step);
+    publish();
+}
+
+void SessionWorker::spindleOverrideKey(int step) {
+    spindleOverride_ = controller_->setSpindleOverride(step == 0 ? 100.0 : spindleOverride_ + step);
+    publish();
+}
+
+// The panel's spindle keys run M-codes as MDI lines would (the M350 runs M3.nc for its M3 key).
+void SessionWorker::spindleKey(int code) {
+    if (code == 0) {
+        bool turning = controller_->spindleDisplay() != machine::SpindleState::Stop;
+        code = turning ? 5 : 3;
+    }
+    runMdi({QStringLiteral("M%1").arg(code)}, Activity::SpindleKey);
+}
+
+void SessionWorker::setOutput(int port, int level) {
+    if (!controller_->setOutputByOperator(port, level)) {
+        refuse(QStringLiteral("a program is running"));
+        return;
+    }
+    publish();
+}
+
+void SessionWorker::setParameter(int number, double value) {
+    if (!controller_->setParameter(number, value)) {
+        refuse(QStringLiteral("parameter %1: invalid value").arg(number));
+        return;
+    }
+    publish();
+}
+
+void SessionWorker::forceInput(int pin, MachineSession::Fault fault, int level, double seconds) {
+    if (pin < 1 || pin > machine::kInputCount) {
+        refuse(QStringLiteral("IN%1: no such input").arg(pin));
+        return;
+    }
+    std::optional<machine::InputFault> put;
+    switch (fault) {
+    case MachineSession::Fault::None: break;
+    case MachineSession::Fault::Stuck: put = machine::InputFault::stuck(level); break;
+    case MachineSession::Fault::Slow: put = machine::InputFault::delayed(seconds); break;
+    case MachineSession::Fault::Bouncing: put = machine::InputFault::bouncing(seconds); break;
+    }
+    controller_->setInputFault(pin, put);
+    publish();
+}
+
+} // namespace m350::ui

@@ -1,0 +1,80 @@
+#pragma once
+
+#include "ui/session/MachineSession.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+#include <memory>
+
+namespace m350::controller {
+class Controller;
+}
+
+namespace m350::ui {
+
+// Lives in the session's worker thread and is the only code of the panel that touches the
+// Controller. Each method runs one operator command, then publishes a snapshot.
+class SessionWorker : public QObject {
+    Q_OBJECT
+public:
+    SessionWorker(config::MachineConfig config, MachineSession::Options options);
+    ~SessionWorker() override;
+
+    void begin();  // in the worker thread: starts the display clock
+    void finish(); // in the worker thread: stops it
+
+    void start();
+    void pause();
+    void reset();
+    void emergencyStop();
+    void loadProgram(const QString& path);
+    void runMdi(const QStringList& lines, Activity activity);
+    void answerDialog(bool enter);
+    void pressExternStart();
+    void home(const QVector<int>& axes);
+    void zeroAxes(const QVector<int>& axes);
+    void jogPress(int axis, int direction);
+    void jogRelease(int axis);
+    void cycleJogMode();
+    void setJogStep(double distance);
+    void toggleJogHighSpeed();
+    void wheel(int axis, int multiplier, int detents, double seconds);
+    void toggleHandwheelGuide();
+    void setGuideRetrace(bool retrace);
+    void feedOverrideKey(int step);
+    void spindleOverrideKey(int step);
+    void spindleKey(int code);
+    void setOutput(int port, int level);
+    void setParameter(int number, double value);
+    void forceInput(int pin, MachineSession::Fault fault, int level, double seconds);
+    void advanceManual(double seconds);
+    void publish();
+
+signals:
+    void published(const m350::ui::SnapshotPtr& snapshot);
+
+private:
+    void tick();
+    void advance(double seconds);
+    bool busy() const;
+    void refuse(const QString& why);
+    bool loadCurrentFile();
+
+    std::unique_ptr<controller::Controller> controller_;
+    MachineSession::Options options_;
+    QString machineName_;
+    QTimer* timer_ = nullptr;
+    QElapsedTimer wall_;
+    qint64 lastTickNs_ = 0;
+    Activity activity_ = Activity::None;
+    QString programFile_;
+    bool fileLoaded_ = false; // the controller holds programFile_ (not MDI lines)
+    QString lastError_;
+    double feedOverride_ = 100.0;
+    double spindleOverride_ = 100.0;
+    bool jogHigh_ = false;
+};
+
+} // namespace m350::ui
