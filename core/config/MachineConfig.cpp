@@ -129,6 +129,9 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     }
     config.setterTop = t["tool_setter"]["top"].value_or(config.setterTop);
     config.setterRadius = t["tool_setter"]["radius"].value_or(config.setterRadius);
+    if (auto top = t["floating_setter"]["top"].value<double>()) {
+        config.floatingSetterTop = *top;
+    }
     if (auto lengths = t["tools"]["length"].as_array()) {
         for (const toml::node& length : *lengths) {
             config.toolLengths.push_back(numberValue(file, length, "tools.length"));

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -23,7 +24,7 @@ struct LibraryFile {
 // A machine folder, as loaded: which dialect it speaks, its macro libraries, its parameters and
 // offsets, and the wiring of its IO. Files:
 //   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine], [reference_points], [homing],
-//                  [tool_setter], [tools]
+//                  [tool_setter], [floating_setter], [tools]
 //   params.toml    [params] N = value (parameters 0-999; the rest stay 0)
 //   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
@@ -48,6 +49,9 @@ struct MachineConfig {
     // zero-length tool) and reach; the tools' true lengths ([tools] length = [T1, T2, ...], mm).
     double setterTop = -100.0;
     double setterRadius = 5.0;
+    // The floating setter ([floating_setter] top): a block of param 129's thickness lying on the
+    // work, as spindle-nose machine Z at contact with a zero-length tool; none when not given.
+    std::optional<double> floatingSetterTop;
     std::vector<double> toolLengths;
 };
 

@@ -67,6 +67,13 @@ void Controller::configureMachine() {
     setter.top = config_.setterTop;
     setter.radius = config_.setterRadius;
     machine_.setToolSetter(setter);
+    machine::ToolSetter block; // the floating setter, where the machine folder puts one on the work
+    if (auto input = config::wiredInput(p, param::kFloatingSetterInput); input && config_.floatingSetterTop) {
+        block.port = input->pin;
+        block.activeLevel = input->activeLevel;
+        block.top = *config_.floatingSetterTop;
+    }
+    machine_.setFloatingSetter(block);
     if (auto stopped = config::wiredInput(p, param::kSpindleStoppedInput)) {
         machine_.setSpindleStoppedSensor({stopped->pin, stopped->activeLevel});
     }

@@ -288,11 +288,21 @@ void SimulatedMachine::setInput(int port, int level) {
     notify(inputEvent(port, level, time_));
 }
 
-bool SimulatedMachine::setterPressed(const Axes& at) const {
-    double dx = at(0) - setter_.x;
-    double dy = at(1) - setter_.y;
-    return setter_.port != 0 && dx * dx + dy * dy <= setter_.radius * setter_.radius &&
-           at(2) <= setter_.top + toolLength_ + 1e-9;
+bool SimulatedMachine::setterPressed(const ToolSetter& setter, const Axes& at) const {
+    double dx = at(0) - setter.x;
+    double dy = at(1) - setter.y;
+    bool under = &setter == &floatingSetter_ || dx * dx + dy * dy <= setter.radius * setter.radius;
+    return setter.port != 0 && under && at(2) <= setter.top + toolLength_ + 1e-9;
+}
+
+// The setter whose switch is wired to `port`, if any.
+const ToolSetter* SimulatedMachine::setterOn(int port) const {
+    for (const ToolSetter* setter : {&setter_, &floatingSetter_}) {
+        if (setter->port != 0 && setter->port == port) {
+            return setter;
+        }
+    }
+    return nullptr;
 }
 
 // The signal can come from the setter (where the tip meets its top) or be there from the start.
@@ -304,14 +314,15 @@ ProbeResult SimulatedMachine::probe(const Axes& target, double feed, int port, i
         return result;
     }
     Axes stop = target;
-    if (port == setter_.port && level == setter_.activeLevel && setterPressed(target)) {
+    const ToolSetter* setter = setterOn(port);
+    if (setter && level == setter->activeLevel && setterPressed(*setter, target)) {
         // the first point of the straight move inside the setter's reach: where Z crosses the trip
         // height, provided the tool is over the setter there
-        double contact = setter_.top + toolLength_;
+        double contact = setter->top + toolLength_;
         double dz = target(2) - position_(2);
         double fraction = dz < 0 ? std::clamp((contact - position_(2)) / dz, 0.0, 1.0) : 0.0;
         Axes at = position_ + (target - position_) * fraction;
-        if (setterPressed(at)) {
+        if (setterPressed(*setter, at)) {
             stop = at;
             result.triggered = true;
         }
@@ -326,8 +337,8 @@ SimulatedMachine::Signal SimulatedMachine::signalAt(int port, double t) const {
     if (const Pulse& pulse = pulses_[index]; t >= pulse.from && t < pulse.until) {
         return {pulse.level, 1 - pulse.level, pulse.from};
     }
-    if (port == setter_.port && setter_.port != 0) {
-        int level = setterPressed(positionAt(t)) ? setter_.activeLevel : 1 - setter_.activeLevel;
+    if (const ToolSetter* setter = setterOn(port)) {
+        int level = setterPressed(*setter, positionAt(t)) ? setter->activeLevel : 1 - setter->activeLevel;
         return {level, 1 - level, -1e300};
     }
     if (auto driven = drivenSignal(index, t)) {

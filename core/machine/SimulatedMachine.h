@@ -61,6 +61,8 @@ public:
     void arc(const Arc& arc, double feed) override;
     ProbeResult probe(const Axes& target, double feed, int port, int level) override;
     void setToolSetter(const ToolSetter& setter) { setter_ = setter; }
+    // The floating setter (浮动对刀块): a block lying on the work; its `top` trips wherever X and Y are.
+    void setFloatingSetter(const ToolSetter& setter) { floatingSetter_ = setter; }
     // The true length of the tool in the spindle (the simulated world's fact, not a parameter).
     void setToolLength(double length) { toolLength_ = length; }
     void dwell(double seconds) override;
@@ -161,8 +163,10 @@ private:
     void scheduleLinkedInputs(int output);
     SpindleStoppedSensor spindleSensor_;
     ToolSetter setter_;
+    ToolSetter floatingSetter_; // its radius does not matter: it lies under the tool wherever it is
     double toolLength_ = 0.0;
-    bool setterPressed(const Axes& at) const;
+    bool setterPressed(const ToolSetter& setter, const Axes& at) const;
+    const ToolSetter* setterOn(int port) const;
     SpindleState spindle_ = SpindleState::Stop;
     double rpm_ = 0.0;
     double spindleStopsAt_ = 0.0;

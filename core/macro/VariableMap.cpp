@@ -38,6 +38,10 @@ VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable +
         add(1520, 1543, K::Input, true, 1);
         add(1552, 1572, K::Output, false, 1);
         add(1920, 1929, K::ProbeResult, true, 0);
+        // stored like any system value, named here because the Probe page and O505 share them:
+        // #1970-#1989 the tools of a multi-tool setting (0 = none), #1993 1 while it runs
+        add(1970, 1989, K::System);
+        add(1993, 1993, K::System);
     } else {
         add(0, 0, K::Null, true);
         add(1, 33, K::Local);

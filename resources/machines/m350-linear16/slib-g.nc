@@ -108,11 +108,16 @@ N9 #50 = -1
 M99
 
 O502(对刀 tool setting: #1502 = 1 first fixed, 2 fixed after a change, 0 floating)
-// Written for M350 Studio after the firmware's flow: to the fixed setter (params 135-137, Z safe
-// height 141), #631 passes (param 131) of G31 down onto it, the first at param 132's speed and each
-// later one at half the speed before, and the average trip height (machine Z) stored: mode 2 as
-// the tool's Z offset (#[1430+T-1]); mode 1 also moves the work Z zero, which the M350 keeps
-// relative to the setter. Then back off by param 140.
+// Written for M350 Studio after the firmware's flow: #631 passes (param 131) of G31 down onto a
+// setter, the first at param 132's speed and each later one at half the speed before, and the
+// average trip height (machine Z) stored, then back off by param 140.
+//  - fixed (1, 2): first to the fixed setter (params 135-137, Z safe height 141), its input params
+//    575-577; mode 2 stores the trip height as the tool's Z offset (#[1430+T-1]); mode 1 also moves
+//    the work Z zero, which the M350 keeps relative to the setter.
+//  - floating (0): from where the tool stands, onto the block lying on the work (input params
+//    578-580, valid param 128); the active work system's Z is set so that work Z 0 lies the block's
+//    thickness (param 129) below the trip height. Work Z = machine Z - G5x Z - tool Z offset, so
+//    G5x Z = trip - thickness - the tool's Z offset.
 IF #1300 != 0 GOTO1
 #1503 = 1(当前刀位空刀不能对刀!)
 M99
@@ -121,11 +126,13 @@ IF [#1076 == 0] + [#1075 < 1] GOTO91 //the fixed setter's input (params 575-577)
 G53 Z#641 F#1312                    //safe height first
 G53 X#635 Y#636 F#1311              //over the setter
 G53 Z#637 F#1312                    //where probing starts
-#20 = #632                          //speed of the first pass
+#25 = #1075                         //G31 on the fixed setter's input
+#26 = #1077
+N3 #20 = #632                       //speed of the first pass
 #21 = 0                             //sum of the trip heights
 #22 = 0                             //passes made
 WHILE [#22 LT #631] DO1
-G91 G31 Z-200 F#20 P#1075 L#1077 K0 Q1
+G91 G31 Z-200 F#20 P#25 L#26 K0 Q1
 G90
 #21 = #21 + #1927                   //machine Z where it tripped
 G91 G01 Z2 F#20                     //off the setter
@@ -134,20 +141,53 @@ G90
 #22 = #22 + 1
 END1
 #23 = #21 / #631                    //the average trip height
+#24 = 807 + [#578 - 1] * 5          //the active work system's Z (#802 for G92)
+IF #1502 == 0 GOTO4
 IF #1502 == 2 GOTO2
-#24 = 807 + [#578 - 1] * 5          //mode 1: the active work system's Z, kept relative to the setter
-#[#24] = #[#24] - #23
+#[#24] = #[#24] - #23               //mode 1: the work Z, kept relative to the setter
 N2 #[1430+#1300-1] = #23            //the tool's Z offset
-G91 G00 Z#640                       //back off
+GOTO5
+N4 #27 = #[1430+#1300-1]            //floating: the tool's Z offset as work Z counts it
+IF #1300 LE #1301 GOTO6
+#27 = #[1473+#1300-#1301-1]         //a virtual tool's
+N6 #[#24] = #23 - #629 - #27
+N5 G91 G00 Z#640                    //back off
 G90
 #1503 = 1(对刀完成!)
 M99
-N90 IF [#1079 == 0] + [#1078 < 1] GOTO92
-#1503 = 1(浮动对刀: this machine's O502 sets tools on the fixed setter only)
-M99
+N90 IF #628 == 0 GOTO93             //param 128: the floating setter is switched off
+IF [#1079 == 0] + [#1078 < 1] GOTO92
+#25 = #1078                         //G31 on the floating setter's input
+#26 = #1080
+GOTO3
 N91 #1503 = 1(固定对刀信号未设置! the fixed setter input, params 575-577, is not set)
 M99
 N92 #1503 = 1(浮动对刀信号未设置! the floating setter input, params 578-580, is not set)
+M99
+N93 #1503 = 1(浮动对刀仪无效! the floating setter is not valid: param 128)
+M99
+
+O505(多刀固定对刀 multi-tool setting: every tool listed in #1970-#1989 on the fixed setter)
+// Written for M350 Studio after the Probe page's 多刀固定对刀: the panel lists the chosen tools in
+// #1970-#1989 (0 = none, any order) and runs the MDI line `M98 P505`. Each listed tool is changed
+// to (T, O20000) and set on the fixed setter (#1502 = 2, O502); #1993 is 1 while the batch runs.
+// A change that does not happen (its message says why) ends the batch.
+#1993 = 1
+#40 = 0                             //index into the list
+WHILE [#40 LT 20] DO1
+#41 = #[1970 + #40]
+#40 = #40 + 1
+IF #41 == 0 GOTO1                   //no tool in this place of the list
+T#41
+IF #1300 != #41 GOTO9
+#1502 = 2
+M98 P502
+N1 #1993 = 1
+END1
+#1993 = 0
+#1503 = 1(多刀对刀完成!)
+M99
+N9 #1993 = 0
 M99
 
 // Canned drilling cycles (钻孔循环), as M350 handler programs O9000+n, written for M350 Studio.
