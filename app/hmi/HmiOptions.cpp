@@ -24,6 +24,10 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
     app.add_option("--tool", o.tool, "tool in the spindle at start")->check(CLI::Range(0, 99));
     app.add_option("--rate", o.rate, "virtual seconds per wall second (faster for simulation)")
         ->check(CLI::Range(0.01, 1000.0));
+    app.add_option("--measure", o.measure,
+                   "run the loaded program for this many seconds and print the panel's frame rate, CPU and "
+                   "latency as JSON (tests/bench/panel_perf.sh)")
+        ->check(CLI::Range(0.1, 600.0));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -18,6 +18,7 @@ struct HmiOptions {
     bool unhomed = false;
     std::optional<int> tool;
     double rate = 1.0;       // virtual seconds per wall second
+    double measure = 0.0;    // > 0: start the program, measure the panel for this long, print JSON, exit
     bool headlessRun() const { return !screenshot.empty() || !replay.empty() || !state.empty(); }
 };
 

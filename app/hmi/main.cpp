@@ -4,6 +4,7 @@
 #include "core/config/MachineConfig.h"
 #include "ui/i18n/Language.h"
 #include "ui/panel/MainWindow.h"
+#include "ui/panel/PanelMeter.h"
 #include "ui/session/MachineFolderCopy.h"
 #include "ui/replay/Replay.h"
 #include "ui/session/MachineSession.h"
@@ -13,6 +14,7 @@
 #include <QJsonDocument>
 #include <QSaveFile>
 #include <QTemporaryDir>
+#include <QTimer>
 
 #include <cstdio>
 #include <variant>
@@ -38,7 +40,23 @@ bool writeState(const ui::MainWindow& window, const QString& path, QString* erro
 
 } // namespace
 
+// --measure: run the loaded program in real time and report what the operator would see.
+int measure(QApplication& app, ui::MainWindow& window, ui::MachineSession& session, double seconds, qint64 startNs) {
+    ui::PanelMeter meter(window.findChild<QWidget*>(QStringLiteral("droMachine0")), startNs);
+    QObject::connect(&session, &ui::MachineSession::snapshotReady, &meter, &ui::PanelMeter::onSnapshot);
+    window.show();
+    session.start();
+    constexpr int kWarmUpMs = 500;
+    QTimer::singleShot(kWarmUpMs, &meter, [&meter] { meter.begin(); });
+    QTimer::singleShot(kWarmUpMs + static_cast<int>(seconds * 1000.0), &app, [&] {
+        std::printf("%s\n", qPrintable(meter.reportJson()));
+        app.quit();
+    });
+    return app.exec();
+}
+
 int main(int argc, char** argv) {
+    const qint64 startNs = ui::steadyNowNs();
     QApplication app(argc, argv); // takes Qt's own options (-platform ...) out of argv first
     QApplication::setApplicationName(QStringLiteral("m350-studio"));
     ui::Language language(app);
@@ -91,6 +109,9 @@ int main(int argc, char** argv) {
         if (!window.startRecording(QString::fromStdString(o.record), &error)) {
             return fail(error);
         }
+    }
+    if (o.measure > 0.0) {
+        return measure(app, window, session, o.measure, startNs);
     }
     if (!o.headlessRun()) {
         window.show();

@@ -61,4 +61,17 @@ inline constexpr int kToolZOffsetCount = 16;
 inline constexpr int kVirtualToolZOffsetFirst = 973; // #1473-#1492: virtual tools 1..20
 inline constexpr int kVirtualToolZOffsetCount = 20;
 
+// Manual motion (手动参数, 手轮参数): per-axis parameters run X Y Z 4th 5th from the first number.
+inline constexpr int kManualMaxSpeedX = 35;        // 35-39 手动最大速度, mm/min (deg/min): caps every jog
+inline constexpr int kManualHighSpeedX = 40;       // 40-44 手动高速, mm/min
+inline constexpr int kManualLowSpeedX = 45;        // 45-49 手动低速, mm/min
+inline constexpr int kManualStartAccelerationX = 50; // 50-54 手动启动加速度, mm/s^2
+inline constexpr int kManualStopAccelerationX = 55;  // 55-59 手动停止加速度, mm/s^2: a released key
+inline constexpr int kMpgDistance = 172;           // 手轮X1距离: mm per detent at x1
+inline constexpr int kMpgReversed = 175;           // 手轮方向: 0 positive, 1 negative
+inline constexpr int kMpgSpeedX1 = 176;            // 176, 177, 178: speed at x1, x10, x100, mm/min
+inline constexpr int kGuideStopStep = 179;         // 试切: override step per interval once the wheel stops (0.05 = 5 %)
+inline constexpr int kGuideChangeStep = 180;       // 试切: override step per interval as the wheel speeds up or slows down
+inline constexpr int kMpgAccelerationX = 181;      // 181-185 手轮移动加速度, mm/s^2
+
 } // namespace m350::config::param

@@ -254,6 +254,9 @@ RunReport Controller::snapshot() const {
 }
 
 bool Controller::start() {
+    if (jogging()) {
+        return false; // START waits for the manual move to end
+    }
     alarm_.reset();
     pendingDialog_.reset();
     sensorWatch_.clear();
@@ -280,7 +283,7 @@ bool Controller::start() {
 }
 
 Controller::RunState Controller::advance(double seconds) {
-    displayTime_ += seconds;
+    displayTime_ += displayStep(seconds); // the handwheel guide may slow it, stop it or run it back
     if (state_ != RunState::Running) {
         return state_;
     }

@@ -2,6 +2,7 @@
 
 #include "core/config/IoPorts.h"
 #include "core/config/MachineConfig.h"
+#include "core/controller/ManualMotionState.h"
 #include "core/controller/PanelStatus.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
@@ -117,6 +118,46 @@ public:
     // Refused (false) while a program runs.
     bool spindleJog(bool on);
 
+    // Manual motion (ManualMotion.cpp). Axis 0..4 = X Y Z A B. Moves start at the display time (or
+    // after a manual move still under way) and advance() shows them; soft limits (param 155) bound
+    // every one. Refused (false) while a program runs or holds, in alarm or E-stop.
+    using JogMode = controller::JogMode;
+    void setJogMode(JogMode mode); // a held CONT key is released
+    JogMode jogMode() const { return manual_.mode; }
+    void setJogStep(double distance); // mm (deg) per STEP press; ignored unless positive
+    double jogStep() const { return manual_.step; }
+    void setJogHighSpeed(bool high); // 高速 params 40-44 / 低速 45-49, capped by 35-39
+    // 手动倍率 SJR: 0 up to param 295 (150 % when it is 0); returns what applies.
+    double setJogOverride(double percent);
+    // CONT: moves until jogRelease() (to the soft limit, or kJogTravel); STEP: one jogStep();
+    // MPG: nothing (false). direction +1 / -1.
+    bool jogPress(int axis, int direction);
+    // Key up: a CONT move brakes to rest at the manual stop acceleration (params 55-59).
+    void jogRelease(int axis);
+    // The handwheel: `detents` (signed) turned over the next `seconds` at x1, x10 or x100. With
+    // the guide on and a program running it drives the guide (HandwheelGuide.cpp); in MPG mode
+    // with no program running it moves the axis detents * multiplier * param 172 (param 175
+    // reverses) at up to the speed of params 176-178, no faster than the wheel turns, ramping at
+    // params 181-185. Otherwise false.
+    bool wheelTurn(int axis, int multiplier, int detents, double seconds);
+    static constexpr double kJogTravel = 10000.0; // mm a CONT jog runs without soft limits
+
+    // 试切 handwheel guide (HandwheelGuide.cpp): while on and a program runs, the program's time
+    // advances only as the wheel turns (see GuideOverride). Turning backwards holds or retraces the
+    // path already made (the last SimulatedMachine::kHistoryMoves moves); turning forward again
+    // replays it, then new blocks execute. A retrace undoes motion only: outputs, spindle and
+    // variables stay as the blocks set them. Off: the run goes on at normal speed.
+    using GuideReverse = controller::GuideReverse;
+    void setHandwheelGuide(bool on);
+    bool handwheelGuide() const { return manual_.guide; }
+    void setGuideReverse(GuideReverse mode) { manual_.reverse = mode; }
+
+    // 主轴倍率 SRO, 50-150 % (clamped): the spindle speed shown follows it. Returns what applies.
+    double setSpindleOverride(double percent);
+    // The IO page's 输出开/输出关 for OUT01-OUT21 (level 0/1). Refused while a program runs or
+    // holds and in E-stop.
+    bool setOutputByOperator(int port, int level);
+
     // Fault injection for training: input `pin` (1-24) stuck, delayed or bouncing from now on;
     // nullopt takes the fault off. `RunSettings::heldInputs` puts stuck faults on before a run.
     void setInputFault(int pin, std::optional<machine::InputFault> fault) { machine_.setInputFault(pin, fault); }
@@ -189,6 +230,14 @@ private:
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
+
+    // manual motion and the handwheel guide (ManualMotion.cpp, HandwheelGuide.cpp)
+    ManualMotionState manual_;
+    bool manualAllowed() const;
+    bool jogging() const;
+    bool moveManually(int axis, double distance, double speed, double acceleration);
+    bool guideTurn(int multiplier, int detents, double seconds);
+    double displayStep(double seconds);
 };
 
 } // namespace m350::controller

@@ -2,6 +2,7 @@
 
 #include "core/common/Alarm.h"
 #include "core/config/ParameterTable.h"
+#include "core/controller/ManualModes.h"
 #include "core/machine/MachineTypes.h"
 
 #include <array>
@@ -28,8 +29,15 @@ struct PanelStatus {
     double feedOverride = 100.0;    // 进给倍率 FRO, %
     double spindleOverride = 100.0; // 主轴倍率 SRO, %
     double jogOverride = 100.0;     // 手动倍率 SJR, %
+    JogMode jogMode = JogMode::Continuous; // 连续 CONT, 寸动 STEP, 手轮 MPG
+    double jogStep = 0.1;           // mm (deg) per STEP press
+    bool jogHighSpeed = false;      // 高速 / 低速
+    bool jogging = false;           // a manual move is under way (a key held, a step, the wheel)
+    bool guide = false;             // 试切: the handwheel guide is on
+    int guideDirection = 0;         // +1 顺切 forward, -1 逆切 reverse, 0 at rest
+    double guideOverride = 0.0;     // %, the rate the wheel gives the program now
     double feed = 0.0;              // programmed F, mm/min
-    double spindleRpm = 0.0;        // commanded speed of the turning spindle
+    double spindleRpm = 0.0;        // speed of the turning spindle, with SRO applied
     machine::SpindleState spindle = machine::SpindleState::Stop; // 停止 正转 反转 点动 攻丝 准停
     int tool = 0;                   // 当前刀具: what the spindle holds
     int totalCount = 0;             // 总加工数 (param 201)

@@ -69,9 +69,21 @@ PanelStatus Controller::panelStatus() {
     }
     out.workSystem = interp_.activeSlot();
     out.feedOverride = feedOverride_;
+    out.spindleOverride = manual_.spindleOverride;
+    out.jogOverride = manual_.jogOverride;
+    out.jogMode = manual_.mode;
+    out.jogStep = manual_.step;
+    out.jogHighSpeed = manual_.highSpeed;
+    out.jogging = jogging();
+    out.guide = manual_.guide;
+    out.guideDirection = manual_.guide ? manual_.override.direction() : 0;
+    out.guideOverride = manual_.guide ? std::abs(manual_.override.value()) * 100.0 : 0.0;
     out.feed = interp_.state().feed;
     out.spindle = spindleDisplay();
-    out.spindleRpm = machine_.spindleTurning() ? machine_.spindleRpm() : 0.0;
+    // SRO scales what the spindle turns at, up to its maximum (param 82)
+    out.spindleRpm = machine_.spindleTurning() ? std::min(machine_.spindleRpm() * manual_.spindleOverride / 100.0,
+                                                          machine_.limits().maxSpindleRpm)
+                                               : 0.0;
     out.tool = spindleTool();
     out.totalCount = saturatingInt(config_.parameters.get(param::kTotalRunCount));
     out.pieceCount = saturatingInt(config_.parameters.get(param::kPieceCount));

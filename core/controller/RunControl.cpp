@@ -15,6 +15,15 @@ void Controller::hold() {
     if (state_ != RunState::Running) {
         return;
     }
+    if (machine_.keepsHistory() && displayTime_ < machine_.moveStart()) {
+        // the handwheel guide has the display behind the moves already issued (a retrace): their
+        // blocks have run, so the run waits where the display is and goes on from there
+        state_ = RunState::Hold;
+        if (trace_) {
+            trace_->runState(displayTime_, "pause");
+        }
+        return;
+    }
     remainder_ = machine_.interrupt(displayTime_, false);
     const config::ParameterTable& p = config_.parameters;
     if (p.get(param::kStopSpindleOnPause) != 0.0 && machine_.spindleState() != machine::SpindleState::Stop) {

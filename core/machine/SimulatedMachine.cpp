@@ -117,7 +117,15 @@ void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double 
     last.type = type;
     last.feed = feed;
     last.acceleration = acceleration;
+    last.cutAt = kNever;
     time_ += last.profile.duration();
+    if (keepHistory_) {
+        history_.push_back(last);
+        if (history_.size() > kHistoryMoves) {
+            history_.pop_front();
+            historyFrom_ = history_.front().start;
+        }
+    }
     position_ = target;
     if (observer_) {
         MachineEvent event;
@@ -158,25 +166,25 @@ SimulatedMachine::Remainder SimulatedMachine::interrupt(double t, bool immediate
         dwellEnd_ = -1.0;
         return rest;
     }
+    if (lastMove_ && t < lastMove_->start && !history_.empty()) {
+        rewind(t);
+        return rest;
+    }
     if (!lastMove_ || t < lastMove_->start) {
         time_ = t;
         return rest;
     }
     LastMove& m = *lastMove_;
     double elapsed = t - m.start;
-    double travelled = m.profile.distanceAt(elapsed);
-    double speed = m.profile.speedAt(elapsed);
+    double travelled = travelledAt(m, t);
+    double speed = t < m.cutAt ? m.profile.speedAt(elapsed) : 0.0;
     double stopping = immediate ? 0.0 : speed * speed / (2.0 * m.acceleration);
     double stopAt = std::min(m.profile.length(), travelled + stopping);
-    auto pointAt = [&m](double s) {
-        if (m.arc) {
-            return m.arc->pointAt(s);
-        }
-        double length = m.profile.length();
-        return length > 0.0 ? Axes(m.from + (m.to - m.from) * (s / length)) : m.from;
-    };
-    position_ = pointAt(stopAt);
+    position_ = pointAlong(m, stopAt);
     time_ = t + (immediate ? 0.0 : speed / m.acceleration);
+    if (keepHistory_ && !history_.empty() && t < m.cutAt) {
+        cut(history_.back(), t, immediate ? 0.0 : m.acceleration); // a retrace passes the stop as it was
+    }
     if (stopAt < m.profile.length() - 1e-9) {
         rest.kind = m.type == MachineEvent::Type::Rapid ? Remainder::Kind::Rapid
                     : m.arc                             ? Remainder::Kind::Arc
@@ -189,20 +197,102 @@ SimulatedMachine::Remainder SimulatedMachine::interrupt(double t, bool immediate
     return rest;
 }
 
+double SimulatedMachine::endOf(const LastMove& m) {
+    if (m.cutAt == kNever) {
+        return m.start + m.profile.duration();
+    }
+    return m.cutAt + (m.braking > 0.0 ? m.cutSpeed / m.braking : 0.0);
+}
+
+double SimulatedMachine::travelledAt(const LastMove& m, double t) {
+    if (t <= m.start) {
+        return 0.0;
+    }
+    if (t < m.cutAt) {
+        return m.profile.distanceAt(t - m.start);
+    }
+    double braking = std::min(t - m.cutAt, m.braking > 0.0 ? m.cutSpeed / m.braking : 0.0);
+    return m.cutDistance + m.cutSpeed * braking - 0.5 * m.braking * braking * braking;
+}
+
+Axes SimulatedMachine::pointAlong(const LastMove& m, double distance) {
+    if (m.arc) {
+        return m.arc->pointAt(distance);
+    }
+    double length = m.profile.length();
+    return length > 0.0 ? Axes(m.from + (m.to - m.from) * (distance / length)) : m.from;
+}
+
+void SimulatedMachine::cut(LastMove& m, double t, double deceleration) {
+    m.cutDistance = travelledAt(m, t);
+    m.cutSpeed = deceleration > 0.0 ? m.profile.speedAt(t - m.start) : 0.0;
+    m.braking = deceleration;
+    m.cutAt = t;
+}
+
+void SimulatedMachine::brake(double t, double deceleration) {
+    if (!lastMove_ || lastMove_->cutAt != kNever || t >= endOf(*lastMove_) || deceleration <= 0.0) {
+        return;
+    }
+    LastMove& m = *lastMove_;
+    t = std::max(t, m.start);
+    double speed = m.profile.speedAt(t - m.start);
+    double stopAt = travelledAt(m, t) + speed * speed / (2.0 * deceleration);
+    if (stopAt >= m.profile.length()) {
+        return; // its own ramp down ends it sooner (the soft limit, the step's end)
+    }
+    cut(m, t, deceleration);
+    position_ = pointAlong(m, stopAt);
+    time_ = endOf(m);
+    if (keepHistory_ && !history_.empty()) {
+        history_.back() = m;
+    }
+}
+
+// The machine goes back to where it was at t (before the last move): the moves after t are
+// dropped, the one under way at t stops there.
+void SimulatedMachine::rewind(double t) {
+    position_ = positionAt(t);
+    time_ = t;
+    dwellEnd_ = -1.0;
+    while (!history_.empty() && history_.back().start > t) {
+        history_.pop_back();
+    }
+    if (!history_.empty() && t < endOf(history_.back())) {
+        cut(history_.back(), t, 0.0);
+    }
+    lastMove_.reset();
+}
+
+void SimulatedMachine::setKeepHistory(bool on) {
+    if (on == keepHistory_) {
+        return;
+    }
+    keepHistory_ = on;
+    history_.clear();
+    historyFrom_ = time_;
+    if (on && lastMove_) {
+        history_.push_back(*lastMove_);
+        historyFrom_ = lastMove_->start;
+    }
+}
+
 Axes SimulatedMachine::positionAt(double t) const {
-    if (!lastMove_ || t >= lastMove_->start + lastMove_->profile.duration()) {
+    bool past = !history_.empty() && (lastMove_ ? t < lastMove_->start : t < endOf(history_.back()));
+    if (past) {
+        // the newest move that started by t
+        auto after = std::upper_bound(history_.begin(), history_.end(), t,
+                                      [](double at, const LastMove& m) { return at < m.start; });
+        if (after == history_.begin()) {
+            return history_.front().from;
+        }
+        const LastMove& m = *(after - 1);
+        return pointAlong(m, travelledAt(m, t));
+    }
+    if (!lastMove_ || t >= endOf(*lastMove_)) {
         return position_;
     }
-    const LastMove& m = *lastMove_;
-    double length = m.profile.length();
-    if (length <= 0.0 || t <= m.start) {
-        return m.from;
-    }
-    double travelled = m.profile.distanceAt(t - m.start);
-    if (m.arc) {
-        return m.arc->pointAt(travelled);
-    }
-    return m.from + (m.to - m.from) * (travelled / length);
+    return pointAlong(*lastMove_, travelledAt(*lastMove_, t));
 }
 
 void SimulatedMachine::dwell(double seconds) {

@@ -6,6 +6,8 @@
 #include "core/machine/MotionProfile.h"
 
 #include <array>
+#include <deque>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -87,8 +89,28 @@ public:
     // Reports the changes of linked inputs due up to virtual time t (the rest come with later events).
     void reportLinkedInputs(double upTo);
 
-    // Where the axes were at virtual time t (inside the last move, or at rest).
+    // Where the axes were at virtual time t (inside the last move, or at rest; with the history
+    // kept, inside any move it holds).
     Axes positionAt(double t) const;
+
+    // A manual move (jog, handwheel): straight to `target` at `speed` (units/s), ramping at
+    // `acceleration`; traced as a feed.
+    void manualMove(const Axes& target, double speed, double acceleration) {
+        move(MachineEvent::Type::Feed, target, speed, acceleration, speed * 60.0);
+    }
+    // Brakes the last move from its speed at virtual time t at `deceleration` (a released jog key);
+    // positionAt() shows the braking. Nothing changes when the move would stop sooner by itself.
+    void brake(double t, double deceleration);
+    // When the last move started (the clock when no move was made).
+    double moveStart() const { return lastMove_ ? lastMove_->start : time_; }
+
+    // The handwheel guide retraces the path: while on, every move is kept (the last kHistoryMoves)
+    // so positionAt() can go back along them. Off by default: a long program keeps nothing.
+    static constexpr std::size_t kHistoryMoves = 10000;
+    void setKeepHistory(bool on);
+    bool keepsHistory() const { return keepHistory_; }
+    // The earliest virtual time positionAt() still knows.
+    double historyFrom() const { return historyFrom_; }
 
     // What was left of an operation cut short by a hold: the rest of a move (straight or along
     // its arc), or of a dwell.
@@ -100,7 +122,9 @@ public:
         double seconds = 0.0;
     };
     // Cuts the operation running at virtual time t: a move decelerates to rest (`immediate`: stops
-    // where it is, as an E-stop does), a dwell ends. The clock then reads the moment of rest.
+    // where it is, as an E-stop does), a dwell ends. The clock then reads the moment of rest. With
+    // the history kept and t before the last move (a retraced guide), the machine stops where it
+    // was at t and the later moves are dropped.
     Remainder interrupt(double t, bool immediate);
     // An oriented spindle (M19) stands still, held in place.
     bool spindleTurning() const {
@@ -116,6 +140,7 @@ private:
         int previous = 0;
         double changedAt = -1e300;
     };
+    static constexpr double kNever = std::numeric_limits<double>::infinity();
     struct LastMove {
         Axes from = Axes::Zero();
         Axes to = Axes::Zero();
@@ -125,7 +150,18 @@ private:
         MachineEvent::Type type = MachineEvent::Type::Feed;
         double feed = 0.0;
         double acceleration = 1.0;
+        // A move cut short (hold, E-stop, released jog key): from cutAt it brakes from cutSpeed at
+        // `braking` (0: stopped at once), cutDistance along its path.
+        double cutAt = kNever;
+        double cutSpeed = 0.0;
+        double cutDistance = 0.0;
+        double braking = 0.0;
     };
+    static double endOf(const LastMove& m);
+    static double travelledAt(const LastMove& m, double t);
+    static Axes pointAlong(const LastMove& m, double distance);
+    static void cut(LastMove& m, double t, double deceleration);
+    void rewind(double t);
     double dwellEnd_ = -1.0;
     void move(MachineEvent::Type type, const Axes& target, double speed, double acceleration, double feed,
               const std::optional<Arc>& arc = std::nullopt);
@@ -138,6 +174,9 @@ private:
     Axes position_ = Axes::Zero();
     double time_ = 0.0;
     std::optional<LastMove> lastMove_;
+    bool keepHistory_ = false;
+    std::deque<LastMove> history_; // oldest first; the last is a copy of lastMove_
+    double historyFrom_ = 0.0;
     std::array<OutputState, kOutputCount> outputs_{};
     std::array<int, kInputCount> inputs_{};
     std::array<std::optional<InputFault>, kInputCount> faults_{};

@@ -23,6 +23,7 @@ struct PanelSnapshot {
     QString machineName;
     int magazineCapacity = 0;
     bool homingPrompt = false; // param 127 = 0 and X, Y, Z not homed: 是否进行开机寻零操作?
+    qint64 publishedNs = 0;    // steady clock when the worker published it (the panel's latency meter)
 };
 
 using SnapshotPtr = std::shared_ptr<const PanelSnapshot>;

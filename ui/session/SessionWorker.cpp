@@ -4,6 +4,7 @@
 #include "core/controller/Controller.h"
 #include "core/gcode/Diagnostic.h"
 
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -99,6 +100,9 @@ void SessionWorker::publish() {
     snapshot->lastError = lastError_;
     snapshot->machineName = machineName_;
     snapshot->homingPrompt = controller_->needsBootHomingPrompt();
+    snapshot->publishedNs = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                std::chrono::steady_clock::now().time_since_epoch())
+                                .count();
     emit published(snapshot);
 }
 

@@ -1,0 +1,121 @@
+// m350-hmi --replay as a user runs it: the recorded actions play in virtual time, then the
+// screenshot and the panel's state are written.
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+namespace m350::test {
+
+namespace {
+
+struct HmiRun {
+    int exitCode = -1;
+    QString errors;
+    QJsonObject state;
+    QImage screenshot;
+};
+
+HmiRun runHmi(const QStringList& arguments) {
+    QTemporaryDir dir;
+    QString state = dir.filePath("state.json");
+    QString png = dir.filePath("screen.png");
+    QProcess hmi;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("QT_QPA_PLATFORM", "offscreen");
+    hmi.setProcessEnvironment(env);
+    hmi.start(M350_HMI_PATH, arguments + QStringList{"--state", state, "--screenshot", png});
+    HmiRun run;
+    if (!hmi.waitForFinished(60000)) {
+        hmi.kill();
+        run.errors = "m350-hmi did not finish within 60 s";
+        return run;
+    }
+    run.exitCode = hmi.exitCode();
+    run.errors = QString::fromUtf8(hmi.readAllStandardError());
+    QFile file(state);
+    if (file.open(QIODevice::ReadOnly)) {
+        run.state = QJsonDocument::fromJson(file.readAll()).object();
+    }
+    run.screenshot.load(png);
+    return run;
+}
+
+QString replay(const char* name) { return QDir(M350_REPLAY_DIR).filePath(QString::fromLatin1(name)); }
+
+} // namespace
+
+TEST(HmiReplay, MdiLineRunsAndTheStateShowsWhereTheMachineIs) {
+    HmiRun run = runHmi({"--replay", replay("mdi-move.jsonl")});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_EQ(run.state["page"].toString(), "mdi");
+    EXPECT_NEAR(run.state["work"].toObject()["X"].toDouble(), 10.0, 1e-6);
+    EXPECT_NEAR(run.state["work"].toObject()["Y"].toDouble(), 20.0, 1e-6);
+    EXPECT_EQ(run.state["mdi_lines"].toArray().at(0).toString(), "G90 G0 X10 Y20");
+    EXPECT_EQ(run.state["state"].toString(), "READY");
+    EXPECT_FALSE(run.screenshot.isNull());
+    EXPECT_EQ(run.screenshot.size(), QSize(1024, 600));
+}
+
+TEST(HmiReplay, OutOpenSwitchesTheDrawbarOutput) {
+    // an empty spindle: releasing the drawbar over nothing with a tool in it would drop the tool
+    HmiRun run = runHmi({"--replay", replay("io-output.jsonl"), "--tool", "0"});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_EQ(run.state["page"].toString(), "io");
+    EXPECT_EQ(run.state["io_selected"].toInt(), 750);
+    EXPECT_EQ(run.state["outputs"].toArray().at(0).toInt(), 1);
+    EXPECT_EQ(run.state["inputs"].toArray().at(10).toInt(), 1) << "the clamp cylinder answers on IN11";
+}
+
+TEST(HmiReplay, AStuckSensorDuringT2EndsInTheWatchdogAlarm) {
+    HmiRun run = runHmi({"--replay", replay("stuck-sensor-t2.jsonl")});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    QJsonObject alarm = run.state["alarm"].toObject();
+    EXPECT_EQ(alarm["code"].toString(), "sensor_timeout");
+    EXPECT_TRUE(alarm["message"].toString().contains("IN11")) << alarm["message"].toString().toStdString();
+    EXPECT_EQ(run.state["state"].toString(), "ERROR");
+    EXPECT_EQ(run.state["tool"].toInt(), 0) << "T1 went into its pocket, T2 was never fetched";
+}
+
+TEST(HmiReplay, TheHandwheelGuideStopsWhenTheWheelStops) {
+    HmiRun run = runHmi({"--replay", replay("handwheel-guide.jsonl")});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_EQ(run.state["mode"].toString(), "WHEEL");
+    EXPECT_TRUE(run.state["guide"].toBool());
+    double x = run.state["work"].toObject()["X"].toDouble();
+    EXPECT_GT(x, -300.0 + 0.5) << "the wheel moved the program";
+    EXPECT_LT(x, -300.0 + 100.0) << "it stopped short of the end when the wheel stopped";
+    EXPECT_EQ(run.state["run"].toString(), "running");
+}
+
+TEST(HmiReplay, ABadReplayFileIsRefusedWithItsLine) {
+    QTemporaryDir dir;
+    QString bad = dir.filePath("bad.jsonl");
+    QFile file(bad);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("{\"t\":0,\"key\":\"MDI\"}\n{\"t\":1,\"wheel\":{\"axis\":\"X\",\"step\":3,\"detents\":1}}\n");
+    file.close();
+    HmiRun run = runHmi({"--replay", bad});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.errors.contains("bad.jsonl:2:1: wheel step must be 1, 10 or 100")) << run.errors.toStdString();
+}
+
+TEST(HmiReplay, EveryPageRendersInBothLanguages) {
+    for (const char* page : {"monitor", "mdi", "io", "probe"}) {
+        for (const char* lang : {"zh_CN", "en"}) {
+            HmiRun run = runHmi({"--page", page, "--lang", lang});
+            ASSERT_EQ(run.exitCode, 0) << page << " " << lang << ": " << run.errors.toStdString();
+            EXPECT_EQ(run.state["page"].toString(), QString::fromLatin1(page));
+            EXPECT_EQ(run.state["language"].toString(), QString::fromLatin1(lang));
+            EXPECT_FALSE(run.screenshot.isNull());
+        }
+    }
+}
+
+} // namespace m350::test

@@ -1,0 +1,92 @@
+// The replay line format: every kind of action reads back as it was written; bad lines say why.
+#include "ui/actions/OperatorAction.h"
+#include "ui/replay/Replay.h"
+
+#include <QJsonDocument>
+#include <QTemporaryFile>
+
+#include <gtest/gtest.h>
+
+namespace m350::test {
+
+using ui::OperatorAction;
+
+namespace {
+
+std::optional<OperatorAction> parse(const char* json, QString* error = nullptr) {
+    QString ignored;
+    return OperatorAction::fromJson(QJsonDocument::fromJson(json).object(), error ? error : &ignored);
+}
+
+} // namespace
+
+TEST(OperatorAction, ReadsTheIssuesExamples) {
+    auto key = parse(R"({"t":0,"key":"MDI"})");
+    ASSERT_TRUE(key);
+    EXPECT_EQ(key->kind, OperatorAction::Kind::Key);
+    EXPECT_EQ(key->name, "MDI");
+    auto wheel = parse(R"({"t":2,"wheel":{"axis":"X","step":10,"detents":40,"seconds":1}})");
+    ASSERT_TRUE(wheel);
+    EXPECT_EQ(wheel->kind, OperatorAction::Kind::Wheel);
+    EXPECT_EQ(wheel->wheel.axis, 0);
+    EXPECT_EQ(wheel->wheel.step, 10);
+    EXPECT_EQ(wheel->wheel.detents, 40);
+    EXPECT_DOUBLE_EQ(wheel->wheel.seconds, 1.0);
+    EXPECT_DOUBLE_EQ(wheel->t, 2.0);
+    auto force = parse(R"({"t":3.5,"force":{"input":11,"level":0}})");
+    ASSERT_TRUE(force);
+    EXPECT_EQ(force->force.input, 11);
+    EXPECT_EQ(force->force.fault, "stuck");
+    auto wait = parse(R"({"t":8})");
+    ASSERT_TRUE(wait);
+    EXPECT_EQ(wait->kind, OperatorAction::Kind::Wait);
+    auto softkey = parse(R"({"t":0.4,"softkey":1})");
+    ASSERT_TRUE(softkey);
+    EXPECT_EQ(softkey->softkey, 1);
+}
+
+TEST(OperatorAction, WritesWhatItReads) {
+    for (const char* json : {R"({"t":1.5,"key":"JOG_Z-"})", R"({"t":1,"key_down":"JOG_X+"})",
+                             R"({"t":0,"page":"io"})", R"({"t":0,"text":"G0 X10"})", R"({"t":0,"lang":"en"})",
+                             R"({"t":2,"force":{"input":13,"fault":"slow","seconds":2}})"}) {
+        auto action = parse(json);
+        ASSERT_TRUE(action) << json;
+        auto again = OperatorAction::fromJson(action->toJson(), nullptr);
+        ASSERT_TRUE(again) << json;
+        EXPECT_EQ(QJsonDocument(again->toJson()).toJson(), QJsonDocument(action->toJson()).toJson()) << json;
+    }
+}
+
+TEST(OperatorAction, RefusesWhatItDoesNotKnow) {
+    QString error;
+    EXPECT_FALSE(parse(R"({"t":0,"key":"LAUNCH"})", &error));
+    EXPECT_TRUE(error.contains("LAUNCH"));
+    EXPECT_FALSE(parse(R"({"key":"START"})", &error));
+    EXPECT_TRUE(error.contains("\"t\""));
+    EXPECT_FALSE(parse(R"({"t":0,"softkey":13})", &error));
+    EXPECT_FALSE(parse(R"({"t":0,"wheel":{"axis":"Q","step":1,"detents":1}})", &error));
+    EXPECT_FALSE(parse(R"({"t":0,"key":"START","page":"io"})", &error));
+    EXPECT_TRUE(error.contains("one action per line"));
+}
+
+TEST(Replay, AReplayFileErrorNamesTheLine) {
+    QTemporaryFile file;
+    ASSERT_TRUE(file.open());
+    file.write("{\"t\":0,\"key\":\"MDI\"}\n\n// a comment\n{\"t\":1,\"key\":\"NOPE\"}\n");
+    file.close();
+    QString error;
+    EXPECT_FALSE(ui::readReplay(file.fileName(), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral(":4:1: unknown key \"NOPE\""))) << error.toStdString();
+}
+
+TEST(Replay, ActionsMustBeInTimeOrder) {
+    QTemporaryFile file;
+    ASSERT_TRUE(file.open());
+    file.write("{\"t\":2}\n{\"t\":1}\n");
+    file.close();
+    QString error;
+    EXPECT_FALSE(ui::readReplay(file.fileName(), &error));
+    EXPECT_TRUE(error.contains(":2:1:")) << error.toStdString();
+}
+
+} // namespace m350::test

@@ -1,0 +1,21 @@
+// GoogleTest main for the panel tests: one QApplication on the offscreen platform, in Chinese
+// (the panel's default), with the panel's style sheet.
+#include "tests/ui/PanelHarness.h"
+
+#include <QApplication>
+#include <QFile>
+
+#include <gtest/gtest.h>
+
+int main(int argc, char** argv) {
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    m350::ui::Language language(app);
+    m350::test::PanelHarness::setLanguage(&language);
+    language.set(QStringLiteral("zh_CN"));
+    if (QFile style(QStringLiteral(":/panel/panel.qss")); style.open(QIODevice::ReadOnly)) {
+        app.setStyleSheet(QString::fromUtf8(style.readAll()));
+    }
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
