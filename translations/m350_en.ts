@@ -140,14 +140,12 @@
         <translation>IO</translation>
     </message>
     <message>
-        <source>System Log</source>
-        <comment>msg 304</comment>
-        <translation>System Log</translation>
+        <source>Log</source>
+        <translation>Log</translation>
     </message>
     <message>
-        <source>System Info</source>
-        <comment>msg 305</comment>
-        <translation>System Info</translation>
+        <source>System</source>
+        <translation>System</translation>
     </message>
     <message>
         <source>MDI</source>
@@ -233,8 +231,8 @@ STEP MPG</translation>
 -10%</translation>
     </message>
     <message>
-        <source>SPINDLE</source>
-        <translation>SPINDLE</translation>
+        <source>Spindle</source>
+        <translation>Spindle</translation>
     </message>
     <message>
         <source>This page comes with the panel's part 2</source>

@@ -140,13 +140,11 @@
         <translation>IO状态</translation>
     </message>
     <message>
-        <source>System Log</source>
-        <comment>msg 304</comment>
+        <source>Log</source>
         <translation>系统日志</translation>
     </message>
     <message>
-        <source>System Info</source>
-        <comment>msg 305</comment>
+        <source>System</source>
         <translation>系统管理</translation>
     </message>
     <message>
@@ -233,7 +231,7 @@ STEP MPG</source>
 -10%</translation>
     </message>
     <message>
-        <source>SPINDLE</source>
+        <source>Spindle</source>
         <translation>主轴</translation>
     </message>
     <message>

@@ -285,6 +285,11 @@ bool Controller::start() {
 Controller::RunState Controller::advance(double seconds) {
     displayTime_ += displayStep(seconds); // the handwheel guide may slow it, stop it or run it back
     if (state_ != RunState::Running) {
+        // Between runs the machine's clock follows the display's, so what devices drive in time
+        // (a clamp cylinder the operator switched from the IO page) arrives while the panel watches.
+        if (state_ != RunState::Hold && std::isfinite(displayTime_) && machine_.time() < displayTime_) {
+            machine_.blockTime(displayTime_ - machine_.time());
+        }
         return state_;
     }
     while (state_ == RunState::Running && executor_->state() == macro::Executor::State::Running &&

@@ -11,6 +11,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QTemporaryDir>
 
 namespace m350::test {
 
@@ -252,6 +253,45 @@ TEST(Panel, MacroDialogWaitsForTheOperatorsAnswer) {
     panel.advance(0.2);
     EXPECT_FALSE(panel.window().prompt()->active());
     EXPECT_EQ(panel.session().latest()->status.run, controller::PanelStatus::Run::Finished);
+}
+
+} // namespace m350::test
+
+namespace m350::test {
+
+TEST(Panel, AtPowerOnThePanelAsksToHomeAndEnterHomesEveryAxis) {
+    ui::MachineSession::Options powerOn;
+    powerOn.homed = false;
+    PanelHarness panel(powerOn);
+    panel.advance(0.1);
+    ASSERT_TRUE(panel.window().prompt()->active());
+    EXPECT_EQ(panel.window().prompt()->question(), QStringLiteral("是否进行开机寻零操作?"));
+    EXPECT_FALSE(panel.session().latest()->status.homed[0]);
+    panel.key("ENTER");
+    panel.advance(0.1);
+    for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_TRUE(panel.session().latest()->status.homed[static_cast<std::size_t>(axis)]) << axis;
+    }
+}
+
+TEST(Panel, RecordedActionsReadBackAsAReplay) {
+    PanelHarness panel;
+    QTemporaryDir dir;
+    QString path = dir.filePath("session.jsonl");
+    QString error;
+    ASSERT_TRUE(panel.window().startRecording(path, &error)) << error.toStdString();
+    panel.key("MDI");
+    panel.type("G0 X1");
+    panel.key("ENTER");
+    panel.advance(0.5);
+    panel.softkey(1);
+    auto actions = ui::readReplay(path, &error);
+    ASSERT_TRUE(actions) << error.toStdString();
+    ASSERT_EQ(actions->size(), 4u);
+    EXPECT_EQ((*actions)[0].name, "MDI");
+    EXPECT_EQ((*actions)[1].text, "G0 X1");
+    EXPECT_EQ((*actions)[3].softkey, 1);
+    EXPECT_NEAR((*actions)[3].t, 0.5, 0.02) << "stamped with the machine's virtual time";
 }
 
 } // namespace m350::test

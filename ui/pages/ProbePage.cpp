@@ -3,6 +3,7 @@
 #include "ui/panel/PanelContext.h"
 
 #include <QGridLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QJsonArray>
 #include <QLabel>
@@ -30,7 +31,9 @@ ProbePage::ProbePage(PanelContext& context, QWidget* parent) : Page(context, par
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(4, 4, 4, 4);
     auto* top = new QHBoxLayout;
-    auto* fields = new QGridLayout;
+    auto* fieldBox = new QGroupBox(this);
+    auto* fields = new QGridLayout(fieldBox);
+    fields->setColumnMinimumWidth(1, 90);
     int row = 0;
     for (const char* name : {"coord", "tool", "thickness", "x", "y", "z"}) {
         auto* caption = new QLabel(this);
@@ -45,18 +48,18 @@ ProbePage::ProbePage(PanelContext& context, QWidget* parent) : Page(context, par
         ++row;
     }
     fields->setRowStretch(row, 1);
-    auto* offsets = new QGridLayout;
-    offsetsTitle_ = new QLabel(this);
-    offsets->addWidget(offsetsTitle_, 0, 0, 1, 4);
+    offsetsBox_ = new QGroupBox(this);
+    auto* offsets = new QGridLayout(offsetsBox_);
+    offsets->setHorizontalSpacing(18);
     for (int tool = 1; tool <= kSelectable; ++tool) {
         auto* label = new QLabel(this);
         label->setObjectName(QStringLiteral("probeOffsetT%1").arg(tool));
         label->setStyleSheet(QStringLiteral("font-family: 'DejaVu Sans Mono', monospace;"));
         offsets_[static_cast<std::size_t>(tool - 1)] = label;
-        offsets->addWidget(label, 1 + (tool - 1) % 8, (tool - 1) / 8);
+        offsets->addWidget(label, (tool - 1) % 8, (tool - 1) / 8);
     }
-    top->addLayout(fields, 1);
-    top->addLayout(offsets, 1);
+    top->addWidget(fieldBox, 1);
+    top->addWidget(offsetsBox_, 1);
     column->addLayout(top);
     gridBox_ = new QWidget(this);
     gridBox_->setObjectName("probeSelection");
@@ -98,7 +101,7 @@ void ProbePage::retranslate() {
     captions_["x"]->setText(tr("Fixed Probe X:", "msg 994"));
     captions_["y"]->setText(tr("Fixed Probe Y:", "msg 995"));
     captions_["z"]->setText(tr("Fixed Probe Z:", "msg 996"));
-    offsetsTitle_->setText(tr("Tool Z offsets (params 930-945)"));
+    offsetsBox_->setTitle(tr("Tool Z offsets (params 930-945)"));
     gridTitle_->setText(tr("Multi-tool selection:", "msg 864"));
     help_->setText(tr("1:Before operate [Floating Probe],Pls move tool above the block and set Param 129;", "msg 984") +
                    QLatin1Char('\n') +

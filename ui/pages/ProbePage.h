@@ -4,6 +4,7 @@
 
 #include <array>
 
+class QGroupBox;
 class QLabel;
 class QPushButton;
 
@@ -51,7 +52,7 @@ private:
     QLabel* gridTitle_;
     QLabel* progress_;
     QLabel* help_;
-    QLabel* offsetsTitle_;
+    QGroupBox* offsetsBox_;
     int cursor_ = 0;
     bool selecting_ = false;
 };

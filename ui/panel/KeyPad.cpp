@@ -46,9 +46,10 @@ KeyPad::KeyPad(Sink sink, QWidget* parent) : QWidget(parent), sink_(std::move(si
         }
         ++row;
     }
-    column->addLayout(grid);
+    column->addLayout(grid, 3);
     wheel_ = new HandwheelWidget(sink_, this);
-    column->addWidget(wheel_, 1);
+    wheel_->setMaximumHeight(210);
+    column->addWidget(wheel_, 2);
     retranslate();
 }
 
@@ -80,7 +81,7 @@ void KeyPad::retranslate() {
     const QMap<QString, QString> labels{
         {"MONITOR", tr("Monitor", "msg 300")}, {"PROGRAM", tr("Program", "msg 301")},
         {"PARAM", tr("Param", "msg 302")},     {"IO", tr("IO", "msg 303")},
-        {"LOG", tr("System Log", "msg 304")},  {"SYSTEM", tr("System Info", "msg 305")},
+        {"LOG", tr("Log")},  {"SYSTEM", tr("System")},
         {"MDI", tr("MDI")},                    {"PROBE", tr("Probe", "msg 313")},
         {"CONT_STEP_MPG", tr("CONT\nSTEP MPG")}, {"MPG_RUN", tr("MPG RUN")},
         {"HIGH_LOW", tr("Hi/Lo")},             {"STEP_INPUT", tr("Step...")},
@@ -91,7 +92,7 @@ void KeyPad::retranslate() {
         {"RESET", tr("RESET")},                {"FRO_100", tr("FRO\n100%")},
         {"FRO_UP", tr("FRO\n+10%")},            {"FRO_DOWN", tr("FRO\n-10%")},
         {"SRO_100", tr("SRO\n100%")},           {"SRO_UP", tr("SRO\n+10%")},
-        {"SRO_DOWN", tr("SRO\n-10%")},          {"SPINDLE", tr("SPINDLE")},
+        {"SRO_DOWN", tr("SRO\n-10%")},          {"SPINDLE", tr("Spindle")},
         {"M3", "M3"},                          {"M4", "M4"},
         {"M5", "M5"},
     };
