@@ -1,6 +1,19 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="en_US">
 <context>
+    <name>m350::ui::CompactDro</name>
+    <message>
+        <source>Mach</source>
+        <comment>msg 34</comment>
+        <translation>Mach</translation>
+    </message>
+    <message>
+        <source>Abs</source>
+        <comment>msg 35</comment>
+        <translation>Abs</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::IoPage</name>
     <message>
         <source>IO</source>
@@ -890,6 +903,25 @@ STEP MPG</translation>
     <message>
         <source>[Enter] OK    [Esc] Cancel</source>
         <translation>[Enter] OK    [Esc] Cancel</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::SessionWorker</name>
+    <message>
+        <source>No program loaded: open one with m350-hmi FILE (the Program page comes with part 2)</source>
+        <translation>No program loaded: open one with m350-hmi FILE (the Program page comes with part 2)</translation>
+    </message>
+    <message>
+        <source>A program is running: wait for it, or PAUSE / RESET first</source>
+        <translation>A program is running: wait for it, or PAUSE / RESET first</translation>
+    </message>
+    <message>
+        <source>Parameter %1: invalid value</source>
+        <translation>Parameter %1: invalid value</translation>
+    </message>
+    <message>
+        <source>IN%1: no such input (IN01-IN24)</source>
+        <translation>IN%1: no such input (IN01-IN24)</translation>
     </message>
 </context>
 </TS>

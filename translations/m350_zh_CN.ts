@@ -1,6 +1,19 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>m350::ui::CompactDro</name>
+    <message>
+        <source>Mach</source>
+        <comment>msg 34</comment>
+        <translation>机械坐标</translation>
+    </message>
+    <message>
+        <source>Abs</source>
+        <comment>msg 35</comment>
+        <translation>工件坐标</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::IoPage</name>
     <message>
         <source>IO</source>
@@ -890,6 +903,25 @@ STEP MPG</source>
     <message>
         <source>[Enter] OK    [Esc] Cancel</source>
         <translation>[确认]确定    [取消]退出</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::SessionWorker</name>
+    <message>
+        <source>No program loaded: open one with m350-hmi FILE (the Program page comes with part 2)</source>
+        <translation>未载入加工文件: 用 m350-hmi 文件名 打开 (文件管理页面将在第二部分提供)</translation>
+    </message>
+    <message>
+        <source>A program is running: wait for it, or PAUSE / RESET first</source>
+        <translation>程序正在运行: 请等待, 或先按暂停/复位</translation>
+    </message>
+    <message>
+        <source>Parameter %1: invalid value</source>
+        <translation>[%1]号参数输入的数据非法!</translation>
+    </message>
+    <message>
+        <source>IN%1: no such input (IN01-IN24)</source>
+        <translation>IN%1: 无此输入口 (IN01-IN24)</translation>
     </message>
 </context>
 </TS>

@@ -1,5 +1,6 @@
 #include "ui/pages/MdiPage.h"
 
+#include "ui/pages/CompactDro.h"
 #include "ui/pages/MdiLines.h"
 #include "ui/panel/PanelContext.h"
 
@@ -30,9 +31,13 @@ MdiPage::MdiPage(PanelContext& context, QWidget* parent) : Page(context, parent)
     help_ = new QLabel(this);
     help_->setObjectName("pageHelp");
     help_->setWordWrap(true);
-    column->addWidget(list_, 1);
+    list_->setMaximumHeight(6 * 26 + 8);
+    dro_ = new CompactDro(this);
+    column->addWidget(list_);
     column->addWidget(editor_);
     column->addWidget(result_);
+    column->addWidget(dro_);
+    column->addStretch(1);
     column->addWidget(help_);
     QString error;
     lines_ = MdiLines::load(context.machineFolder(), &error);
@@ -149,6 +154,7 @@ void MdiPage::refreshList() {
 
 void MdiPage::render(const PanelSnapshot& snapshot) {
     const controller::PanelStatus& s = snapshot.status;
+    dro_->render(snapshot);
     if (running_ == 0) {
         result_->clear();
         return;

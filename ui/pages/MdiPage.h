@@ -9,6 +9,10 @@ class QLineEdit;
 class QListWidget;
 
 namespace m350::ui {
+class CompactDro;
+}
+
+namespace m350::ui {
 
 // MDI: six numbered lines kept in the machine folder. UP/DOWN move the selection bar, typing or
 // Enter edits the selected line (Enter again keeps it, Esc drops the edit), F1-F6 run line 1-6
@@ -39,6 +43,7 @@ private:
     void refreshList();
     void run(int line);
     QListWidget* list_;
+    CompactDro* dro_;
     QLineEdit* editor_;
     QLabel* result_;
     QLabel* help_;

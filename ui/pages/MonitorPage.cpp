@@ -1,6 +1,7 @@
 #include "ui/pages/MonitorPage.h"
 
 #include "ui/i18n/PanelText.h"
+#include "ui/pages/CompactDro.h"
 #include "ui/panel/PanelContext.h"
 
 #include <QGridLayout>
@@ -15,14 +16,6 @@ namespace m350::ui {
 namespace {
 
 constexpr int kSpindleInterface = 79; // 0 analog, 1 pulse/direction (servo), 2 multi-speed
-
-// A coordinate as the panel shows it: sign, three decimals, fixed width, so digits never jump.
-QString coordinate(double value) {
-    if (std::abs(value) < 0.0005) {
-        value = 0.0; // no "-0.000"
-    }
-    return QStringLiteral("%1").arg(value, 10, 'f', 3);
-}
 
 QString clock(double seconds) {
     auto total = static_cast<long long>(std::max(0.0, seconds));
@@ -245,8 +238,8 @@ void MonitorPage::render(const PanelSnapshot& snapshot) {
         // the homed marker: a filled circle beside a homed axis, as the panel's home icon
         axisName_[index]->setText(PanelText::axis(axis) + (s.homed[index] ? QStringLiteral(" ●") : QStringLiteral(" ○")));
         axisName_[index]->setToolTip(s.homed[index] ? tr("Homed") : tr("Not homed"));
-        machine_[index]->setText(coordinate(s.machine(axis)));
-        work_[index]->setText(coordinate(s.work(axis)));
+        machine_[index]->setText(droText(s.machine(axis)));
+        work_[index]->setText(droText(s.work(axis)));
     }
     if (axesChanged) {
         emit softkeysChanged();

@@ -1,5 +1,6 @@
 #include "ui/pages/ProbePage.h"
 
+#include "ui/pages/CompactDro.h"
 #include "ui/panel/PanelContext.h"
 
 #include <QGridLayout>
@@ -61,6 +62,8 @@ ProbePage::ProbePage(PanelContext& context, QWidget* parent) : Page(context, par
     top->addWidget(fieldBox, 1);
     top->addWidget(offsetsBox_, 1);
     column->addLayout(top);
+    dro_ = new CompactDro(this);
+    column->addWidget(dro_);
     gridBox_ = new QWidget(this);
     gridBox_->setObjectName("probeSelection");
     auto* gridLayout = new QGridLayout(gridBox_);
@@ -261,6 +264,7 @@ bool ProbePage::key(const QString& name) {
 void ProbePage::render(const PanelSnapshot& snapshot) {
     const controller::PanelStatus& s = snapshot.status;
     const config::ParameterTable& p = s.parameters;
+    dro_->render(snapshot);
     fields_["coord"]->setText(s.workSystem == 0 ? QStringLiteral("G92") : QStringLiteral("G%1").arg(53 + s.workSystem));
     fields_["tool"]->setText(QStringLiteral("T%1").arg(s.tool));
     fields_["thickness"]->setText(number(p.get(kThickness)));

@@ -9,6 +9,10 @@ class QLabel;
 class QPushButton;
 
 namespace m350::ui {
+class CompactDro;
+}
+
+namespace m350::ui {
 
 // 对刀 Probe: the setter fields (coordinate system, current tool, floating setter thickness,
 // fixed setter X/Y/Z) and the tools' Z offsets (params 930-945), with the panel's softkeys:
@@ -49,6 +53,7 @@ private:
     std::array<QPushButton*, 16> grid_{};
     std::array<bool, 16> selected_{};
     QWidget* gridBox_;
+    CompactDro* dro_;
     QLabel* gridTitle_;
     QLabel* progress_;
     QLabel* help_;

@@ -103,7 +103,7 @@ bool MainWindow::showPage(const QString& id) {
     refreshSoftkeys();
     if (snapshot_) {
         page->render(*snapshot_);
-        status_->render(*snapshot_, page->title());
+        status_->render(*snapshot_, page->id(), page->title());
     }
     return true;
 }
@@ -155,7 +155,7 @@ QString MainWindow::alarmText() const { return alarm_->text(); }
 void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
     snapshot_ = snapshot;
     const PanelSnapshot& s = *snapshot;
-    status_->render(s, currentPage()->title());
+    status_->render(s, currentPage()->id(), currentPage()->title());
     currentPage()->render(s);
     keys_->render(s);
     QString message = QString::fromStdString(s.status.message);
@@ -213,6 +213,9 @@ void MainWindow::showMacroDialog(const PanelSnapshot& s) {
 QJsonObject MainWindow::state() const {
     QJsonObject out = snapshot_ ? panelStateJson(*snapshot_) : QJsonObject{};
     out["page"] = currentPage()->id();
+    if (snapshot_) {
+        out["mode"] = PanelText::modeKey(displayedMode(*snapshot_, currentPage()->id()));
+    }
     out["message"] = messageText();
     out["alarm_text"] = alarmText();
     out["language"] = language_ ? language_->current() : QString();

@@ -4,7 +4,7 @@ namespace m350::ui {
 
 using Run = controller::PanelStatus::Run;
 
-PanelText::Mode displayedMode(const PanelSnapshot& snapshot) {
+PanelText::Mode displayedMode(const PanelSnapshot& snapshot, const QString& page) {
     const controller::PanelStatus& s = snapshot.status;
     if (s.guide) {
         return PanelText::Mode::Wheel;
@@ -16,6 +16,12 @@ PanelText::Mode displayedMode(const PanelSnapshot& snapshot) {
     case Activity::Homing: return PanelText::Mode::Home;
     case Activity::Probe: return PanelText::Mode::Probe;
     case Activity::None: break;
+    }
+    if (page == QLatin1String("mdi")) {
+        return PanelText::Mode::Mdi;
+    }
+    if (page == QLatin1String("probe")) {
+        return PanelText::Mode::Probe;
     }
     switch (s.jogMode) {
     case controller::JogMode::Continuous: return PanelText::Mode::Cont;

@@ -39,9 +39,9 @@ StatusLine::StatusLine(QWidget* parent) : QWidget(parent) {
     layout->addWidget(clock_);
 }
 
-void StatusLine::render(const PanelSnapshot& snapshot, const QString& pageTitle) {
+void StatusLine::render(const PanelSnapshot& snapshot, const QString& pageId, const QString& pageTitle) {
     PanelText::State state = displayedState(snapshot);
-    mode_->setText(PanelText::mode(displayedMode(snapshot)));
+    mode_->setText(PanelText::mode(displayedMode(snapshot, pageId)));
     state_->setText(PanelText::state(state));
     state_->setProperty("level", state == PanelText::State::Error || state == PanelText::State::Alarm ? "bad"
                                  : state == PanelText::State::Ready                                  ? "ok"

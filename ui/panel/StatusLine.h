@@ -13,7 +13,7 @@ class StatusLine : public QWidget {
     Q_OBJECT
 public:
     explicit StatusLine(QWidget* parent = nullptr);
-    void render(const PanelSnapshot& snapshot, const QString& pageTitle);
+    void render(const PanelSnapshot& snapshot, const QString& pageId, const QString& pageTitle);
     QString modeText() const;
     QString stateText() const;
 

@@ -125,7 +125,7 @@ void SessionWorker::start() {
     } else if (busy()) {
         return;
     } else if (programFile_.isEmpty()) {
-        refuse(QStringLiteral("no program loaded"));
+        refuse(tr("No program loaded: open one with m350-hmi FILE (the Program page comes with part 2)"));
         return;
     } else if (loadCurrentFile()) {
         if (controller_->start()) {
@@ -136,6 +136,7 @@ void SessionWorker::start() {
 }
 
 void SessionWorker::pause() {
+    lastError_.clear();
     controller_->hold();
     publish();
 }
@@ -148,6 +149,7 @@ void SessionWorker::reset() {
 }
 
 void SessionWorker::emergencyStop() {
+    lastError_.clear();
     controller_->emergencyStop();
     activity_ = Activity::None;
     publish();
@@ -155,7 +157,7 @@ void SessionWorker::emergencyStop() {
 
 void SessionWorker::loadProgram(const QString& path) {
     if (busy()) {
-        refuse(QStringLiteral("a program is running"));
+        refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
         return;
     }
     programFile_ = path;
@@ -167,7 +169,7 @@ void SessionWorker::loadProgram(const QString& path) {
 
 void SessionWorker::runMdi(const QStringList& lines, Activity activity) {
     if (busy()) {
-        refuse(QStringLiteral("a program is running"));
+        refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
         return;
     }
     std::vector<std::string> text;
@@ -187,18 +189,20 @@ void SessionWorker::runMdi(const QStringList& lines, Activity activity) {
 }
 
 void SessionWorker::answerDialog(bool enter) {
+    lastError_.clear();
     controller_->answerDialog(enter);
     publish();
 }
 
 void SessionWorker::pressExternStart() {
+    lastError_.clear();
     controller_->pressExternStart();
     publish();
 }
 
 void SessionWorker::home(const QVector<int>& axes) {
     if (busy()) {
-        refuse(QStringLiteral("a program is running"));
+        refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
         return;
     }
     std::vector<int> which(axes.begin(), axes.end());
@@ -213,8 +217,9 @@ void SessionWorker::home(const QVector<int>& axes) {
 }
 
 void SessionWorker::zeroAxes(const QVector<int>& axes) {
+    lastError_.clear();
     if (busy()) {
-        refuse(QStringLiteral("a program is running"));
+        refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
         return;
     }
     for (int axis : axes) {
@@ -224,16 +229,19 @@ void SessionWorker::zeroAxes(const QVector<int>& axes) {
 }
 
 void SessionWorker::jogPress(int axis, int direction) {
+    lastError_.clear();
     controller_->jogPress(axis, direction);
     publish();
 }
 
 void SessionWorker::jogRelease(int axis) {
+    lastError_.clear();
     controller_->jogRelease(axis);
     publish();
 }
 
 void SessionWorker::cycleJogMode() {
+    lastError_.clear();
     using Mode = Controller::JogMode;
     switch (controller_->jogMode()) {
     case Mode::Continuous: controller_->setJogMode(Mode::Step); break;
@@ -244,38 +252,45 @@ void SessionWorker::cycleJogMode() {
 }
 
 void SessionWorker::setJogStep(double distance) {
+    lastError_.clear();
     controller_->setJogStep(distance);
     publish();
 }
 
 void SessionWorker::toggleJogHighSpeed() {
+    lastError_.clear();
     jogHigh_ = !jogHigh_;
     controller_->setJogHighSpeed(jogHigh_);
     publish();
 }
 
 void SessionWorker::wheel(int axis, int multiplier, int detents, double seconds) {
+    lastError_.clear();
     controller_->wheelTurn(axis, multiplier, detents, seconds);
     publish();
 }
 
 void SessionWorker::toggleHandwheelGuide() {
+    lastError_.clear();
     controller_->setHandwheelGuide(!controller_->handwheelGuide());
     publish();
 }
 
 void SessionWorker::setGuideRetrace(bool retrace) {
+    lastError_.clear();
     controller_->setGuideReverse(retrace ? Controller::GuideReverse::Retrace : Controller::GuideReverse::Hold);
     publish();
 }
 
 // The override keys: 0 back to 100 %, else a step of `step` percent.
 void SessionWorker::feedOverrideKey(int step) {
+    lastError_.clear();
     feedOverride_ = controller_->setFeedOverride(step == 0 ? 100.0 : feedOverride_ + step);
     publish();
 }
 
 void SessionWorker::spindleOverrideKey(int step) {
+    lastError_.clear();
     spindleOverride_ = controller_->setSpindleOverride(step == 0 ? 100.0 : spindleOverride_ + step);
     publish();
 }
@@ -290,24 +305,27 @@ void SessionWorker::spindleKey(int code) {
 }
 
 void SessionWorker::setOutput(int port, int level) {
+    lastError_.clear();
     if (!controller_->setOutputByOperator(port, level)) {
-        refuse(QStringLiteral("a program is running"));
+        refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
         return;
     }
     publish();
 }
 
 void SessionWorker::setParameter(int number, double value) {
+    lastError_.clear();
     if (!controller_->setParameter(number, value)) {
-        refuse(QStringLiteral("parameter %1: invalid value").arg(number));
+        refuse(tr("Parameter %1: invalid value").arg(number));
         return;
     }
     publish();
 }
 
 void SessionWorker::forceInput(int pin, MachineSession::Fault fault, int level, double seconds) {
+    lastError_.clear();
     if (pin < 1 || pin > machine::kInputCount) {
-        refuse(QStringLiteral("IN%1: no such input").arg(pin));
+        refuse(tr("IN%1: no such input (IN01-IN24)").arg(pin));
         return;
     }
     std::optional<machine::InputFault> put;

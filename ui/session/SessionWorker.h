@@ -71,7 +71,7 @@ private:
     Activity activity_ = Activity::None;
     QString programFile_;
     bool fileLoaded_ = false; // the controller holds programFile_ (not MDI lines)
-    QString lastError_;
+    QString lastError_; // why the last command was refused; every command clears it first
     double feedOverride_ = 100.0;
     double spindleOverride_ = 100.0;
     bool jogHigh_ = false;

@@ -1,0 +1,78 @@
+#include "ui/pages/CompactDro.h"
+
+#include "ui/i18n/PanelText.h"
+
+#include <QEvent>
+#include <QGridLayout>
+#include <QLabel>
+
+#include <cmath>
+
+namespace m350::ui {
+
+QString droText(double value) {
+    if (std::abs(value) < 0.0005) {
+        value = 0.0;
+    }
+    return QStringLiteral("%1").arg(value, 10, 'f', 3);
+}
+
+CompactDro::CompactDro(QWidget* parent) : QWidget(parent) {
+    setObjectName("compactDro");
+    auto* grid = new QGridLayout(this);
+    grid->setContentsMargins(0, 0, 0, 0);
+    grid->setHorizontalSpacing(12);
+    grid->setVerticalSpacing(1);
+    machineHeader_ = new QLabel(this);
+    workHeader_ = new QLabel(this);
+    for (QLabel* header : {machineHeader_, workHeader_}) {
+        header->setObjectName("droHeader");
+        header->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    }
+    grid->addWidget(machineHeader_, 0, 1);
+    grid->addWidget(workHeader_, 0, 2);
+    for (int axis = 0; axis < 5; ++axis) {
+        const auto i = static_cast<std::size_t>(axis);
+        names_[i] = new QLabel(PanelText::axis(axis), this);
+        machine_[i] = new QLabel(this);
+        work_[i] = new QLabel(this);
+        for (QLabel* value : {machine_[i], work_[i]}) {
+            value->setProperty("smallDro", true);
+            value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        }
+        grid->addWidget(names_[i], axis + 1, 0);
+        grid->addWidget(machine_[i], axis + 1, 1);
+        grid->addWidget(work_[i], axis + 1, 2);
+    }
+    grid->setColumnStretch(3, 1);
+    retranslate();
+}
+
+void CompactDro::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+    }
+    QWidget::changeEvent(event);
+}
+
+void CompactDro::retranslate() {
+    machineHeader_->setText(tr("Mach", "msg 34"));
+    workHeader_->setText(tr("Abs", "msg 35"));
+}
+
+void CompactDro::render(const PanelSnapshot& snapshot) {
+    const controller::PanelStatus& s = snapshot.status;
+    for (int axis = 0; axis < 5; ++axis) {
+        const auto i = static_cast<std::size_t>(axis);
+        bool shown = s.axisShown[i];
+        names_[i]->setVisible(shown);
+        machine_[i]->setVisible(shown);
+        work_[i]->setVisible(shown);
+        machine_[i]->setText(droText(s.machine(axis)));
+        work_[i]->setText(droText(s.work(axis)));
+    }
+}
+
+QString CompactDro::workText(int axis) const { return work_[static_cast<std::size_t>(axis)]->text().trimmed(); }
+
+} // namespace m350::ui

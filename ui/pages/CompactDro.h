@@ -1,0 +1,37 @@
+#pragma once
+
+#include "ui/session/PanelSnapshot.h"
+
+#include <QWidget>
+
+#include <array>
+
+class QLabel;
+
+namespace m350::ui {
+
+// A small 机械坐标 / 工件坐标 table for the pages that move the machine without showing the big
+// DRO (MDI, Probe), so the operator always sees where the axes are.
+class CompactDro : public QWidget {
+    Q_OBJECT
+public:
+    explicit CompactDro(QWidget* parent = nullptr);
+    void render(const PanelSnapshot& snapshot);
+    QString workText(int axis) const;
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void retranslate();
+    QLabel* machineHeader_;
+    QLabel* workHeader_;
+    std::array<QLabel*, 5> names_{};
+    std::array<QLabel*, 5> machine_{};
+    std::array<QLabel*, 5> work_{};
+};
+
+// A coordinate as the panel shows it: three decimals, fixed width, no "-0.000", so digits never jump.
+QString droText(double value);
+
+} // namespace m350::ui
