@@ -119,3 +119,29 @@ TEST(HmiReplay, EveryPageRendersInBothLanguages) {
 }
 
 } // namespace m350::test
+
+namespace m350::test {
+
+TEST(HmiReplay, FixedToolSettingStoresTheTripHeightInParam930) {
+    HmiRun run = runHmi({"--replay", replay("fixed-tool-setting.jsonl")});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_EQ(run.state["page"].toString(), "probe");
+    EXPECT_TRUE(run.state["alarm"].isNull()) << run.state["alarm_text"].toString().toStdString();
+    EXPECT_TRUE(run.state["status_message"].toString().contains(QStringLiteral("对刀完成")))
+        << run.state["status_message"].toString().toStdString();
+    EXPECT_TRUE(run.state["probe_offsets"].toArray().at(0).toString().contains("-53.677"))
+        << run.state["probe_offsets"].toArray().at(0).toString().toStdString();
+}
+
+TEST(HmiReplay, SwitchingToEnglishChangesTheWords) {
+    HmiRun zh = runHmi({"--page", "mdi"});
+    HmiRun en = runHmi({"--replay", replay("language-switch.jsonl")});
+    ASSERT_EQ(en.exitCode, 0) << en.errors.toStdString();
+    EXPECT_EQ(zh.state["language"].toString(), "zh_CN");
+    EXPECT_EQ(en.state["language"].toString(), "en");
+    EXPECT_EQ(en.state["mdi_lines"].toArray().at(0).toString(), "G0 X1");
+    EXPECT_EQ(en.state["softkeys"].toArray().at(0).toString(), "F1 Execute(1)");
+    EXPECT_EQ(zh.state["softkeys"].toArray().at(0).toString(), QStringLiteral("F1 执行(1)"));
+}
+
+} // namespace m350::test

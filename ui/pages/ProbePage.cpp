@@ -298,7 +298,14 @@ QJsonObject ProbePage::state() const {
             selected.append(tool);
         }
     }
-    return {{"probe_selecting", selecting_}, {"probe_selected", selected}, {"probe_progress", progress_->text()}};
+    QJsonArray offsets;
+    for (const QLabel* label : offsets_) {
+        offsets.append(label->text());
+    }
+    return {{"probe_selecting", selecting_},
+            {"probe_selected", selected},
+            {"probe_progress", progress_->text()},
+            {"probe_offsets", offsets}};
 }
 
 } // namespace m350::ui

@@ -19,6 +19,7 @@
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
+#include <QJsonArray>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMenuBar>
@@ -220,6 +221,11 @@ QJsonObject MainWindow::state() const {
     out["alarm_text"] = alarmText();
     out["language"] = language_ ? language_->current() : QString();
     out["prompt"] = prompt_->active() ? prompt_->question() : QString();
+    QJsonArray softkeys;
+    for (int number = 1; number <= currentPage()->softkeys().size(); ++number) {
+        softkeys.append(softkeys_->label(number));
+    }
+    out["softkeys"] = softkeys;
     for (Page* page : pages_) {
         QJsonObject extra = page->state();
         for (auto it = extra.begin(); it != extra.end(); ++it) {
