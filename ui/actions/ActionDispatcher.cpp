@@ -1,6 +1,7 @@
 #include "ui/actions/ActionDispatcher.h"
 
 #include "ui/pages/Page.h"
+#include "ui/panel/KeyPad.h"
 #include "ui/panel/MainWindow.h"
 #include "ui/panel/PromptBox.h"
 #include "ui/session/MachineSession.h"
@@ -110,11 +111,8 @@ void ActionDispatcher::screenKey(const QString& name) {
         }
         return;
     }
-    static const QHash<QString, QString> pages{{"MONITOR", "monitor"}, {"MDI", "mdi"},         {"IO", "io"},
-                                               {"PROBE", "probe"},     {"PROGRAM", "program"}, {"PARAM", "param"},
-                                               {"LOG", "log"},         {"SYSTEM", "system"}};
-    if (pages.contains(name)) {
-        window_.showPage(pages.value(name));
+    if (KeyPad::pageKeys().contains(name)) {
+        window_.showPage(KeyPad::pageKeys().value(name));
     } else if (name.size() == 2 && name.at(0) == QLatin1Char('F')) {
         window_.pressSoftkey(name.mid(1).toInt());
     } else {

@@ -107,10 +107,23 @@ void KeyPad::retranslate() {
         }
     }
     const QString later = tr("This page comes with the panel's part 2");
-    for (const char* key : {"PROGRAM", "PARAM", "LOG", "SYSTEM"}) {
-        buttons_.value(key)->setEnabled(false);
-        buttons_.value(key)->setToolTip(later);
+    for (auto it = pageKeys().begin(); it != pageKeys().end(); ++it) {
+        bool there = availablePages_.contains(it.value());
+        buttons_.value(it.key())->setEnabled(there);
+        buttons_.value(it.key())->setToolTip(there ? QString() : later);
     }
+}
+
+void KeyPad::setAvailablePages(const QStringList& ids) {
+    availablePages_ = ids;
+    retranslate();
+}
+
+const QMap<QString, QString>& KeyPad::pageKeys() {
+    static const QMap<QString, QString> keys{{"MONITOR", "monitor"}, {"PROGRAM", "program"}, {"PARAM", "param"},
+                                             {"IO", "io"},           {"LOG", "log"},         {"SYSTEM", "system"},
+                                             {"MDI", "mdi"},         {"PROBE", "probe"}};
+    return keys;
 }
 
 void KeyPad::render(const PanelSnapshot& snapshot) {

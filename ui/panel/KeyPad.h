@@ -25,6 +25,9 @@ public:
     void render(const PanelSnapshot& snapshot);
     QPushButton* button(const QString& key) const { return buttons_.value(key); }
     HandwheelWidget* handwheel() const { return wheel_; }
+    // The page keys of pages the window has are enabled; the others say they come later.
+    void setAvailablePages(const QStringList& ids);
+    static const QMap<QString, QString>& pageKeys(); // key name -> page id
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -35,6 +38,7 @@ private:
     Sink sink_;
     QMap<QString, QPushButton*> buttons_;
     HandwheelWidget* wheel_;
+    QStringList availablePages_;
 };
 
 } // namespace m350::ui

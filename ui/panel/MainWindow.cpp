@@ -66,6 +66,7 @@ MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language*
     connect(softkeys_, &SoftkeyBar::pressed, this,
             [this](int number) { dispatcher_->dispatch(OperatorAction::softkeyPress(number)); });
     addPages();
+    keys_->setAvailablePages(pages_.keys());
     buildMenu();
     connect(&session_, &MachineSession::snapshotReady, this, &MainWindow::onSnapshot);
     qApp->installEventFilter(this);

@@ -15,7 +15,7 @@ using controller::Controller;
 
 namespace {
 
-constexpr int kFrameMs = 16; // the display's 60 Hz
+constexpr qint64 kFrameNs = 1'000'000'000 / 60; // the display's 60 Hz
 
 controller::RunSettings settingsFor(const MachineSession::Options& options) {
     controller::RunSettings settings;
@@ -48,10 +48,11 @@ void SessionWorker::begin() {
     if (options_.clock == MachineSession::Clock::RealTime) {
         timer_ = new QTimer(this);
         timer_->setTimerType(Qt::PreciseTimer);
+        timer_->setSingleShot(true);
         connect(timer_, &QTimer::timeout, this, &SessionWorker::tick);
         wall_.start();
         lastTickNs_ = 0;
-        timer_->start(kFrameMs);
+        scheduleTick();
     }
     publish();
 }
@@ -67,6 +68,15 @@ void SessionWorker::tick() {
     lastTickNs_ = now;
     advance(seconds);
     publish();
+    scheduleTick();
+}
+
+// The next tick falls on the next 1/60 s boundary since the clock started: 60 frames a second
+// on average, not a 16 ms timer's 62.5.
+void SessionWorker::scheduleTick() {
+    qint64 now = wall_.nsecsElapsed();
+    qint64 next = (now / kFrameNs + 1) * kFrameNs;
+    timer_->start(static_cast<int>((next - now + 999'999) / 1'000'000));
 }
 
 void SessionWorker::advanceManual(double seconds) {

@@ -57,6 +57,7 @@ signals:
 
 private:
     void tick();
+    void scheduleTick();
     void advance(double seconds);
     bool busy() const;
     void refuse(const QString& why);
