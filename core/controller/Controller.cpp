@@ -17,7 +17,7 @@ namespace m350::controller {
 namespace param = config::param;
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
-    : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace || config_.magazine.present() ? this : nullptr),
+    : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? this : nullptr),
       interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, machine_), store_(*config_.dialect, config_.parameters),
       magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}) {
     if (settings_.trace) {
@@ -198,6 +198,9 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
         }
         trace_->machineEvent(event, where);
     }
+    if (settings_.observer) {
+        settings_.observer->onMachineEvent(event);
+    }
     if (magazine_.device() && state_ != RunState::Alarm && state_ != RunState::EStop) {
         magazine_.onMachineEvent(event);
     }
@@ -367,12 +370,6 @@ void Controller::syncToolLength() {
     int tool = spindleTool();
     bool known = tool >= 1 && static_cast<std::size_t>(tool) <= config_.toolLengths.size();
     machine_.setToolLength(known ? config_.toolLengths[static_cast<std::size_t>(tool - 1)] : 0.0);
-}
-
-void Controller::zeroWorkAxis(int axis) {
-    int slot = interp_.activeSlot();
-    double others = interp_.workOffset()(axis) - offsets_.get(slot, axis);
-    offsets_.set(slot, axis, machine_.position()(axis) - others);
 }
 
 int Controller::spindleTool() const {

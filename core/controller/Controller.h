@@ -105,7 +105,13 @@ public:
     // 清零: makes the current position the work zero of `axis` in the active system. For Z on the
     // M350 the stored offset excludes the tool's Z offset (params 930-945), so it holds the distance
     // between the setter and the workpiece and every set tool then cuts at the same Z.
-    void zeroWorkAxis(int axis);
+    void zeroWorkAxis(int axis) { setWorkPosition(axis, 0.0); }
+    // 坐标管理 / 分中: the current position gets work coordinate `value` on `axis` in the active
+    // system (its offset moves; the others, G52, the common offset and the tool's stay).
+    void setWorkPosition(int axis, double value);
+    // The panel's edits of a variable (#50-#499, offsets #800-#844 ...), as a macro would write it.
+    // False with a reason for a read-only or unknown variable, or a value that is not finite.
+    bool setVariable(int number, double value, std::string* why = nullptr);
 
     // The panel's feed override (进给倍率) in percent, from 0 up to param 295 (150 % when it is 0);
     // G00 follows it when param 253 = 1. Returns the percentage in effect.

@@ -25,6 +25,8 @@ struct PanelStatus {
     std::array<bool, machine::kAxisCount> homed{}; // #1515-#1519
     std::array<bool, machine::kAxisCount> axisShown{true, true, true, false, false}; // A, B when configured
     int workSystem = 1; // #578: 0 = G92, 1..6 = G54..G59
+    // Offsets in the variables' slot order: 0 G92, 1-6 G54-G59, 7 G52, 8 the common offset (公共偏置).
+    std::array<machine::Axes, 9> workOffsets{};
 
     double feedOverride = 100.0;    // 进给倍率 FRO, %
     double spindleOverride = 100.0; // 主轴倍率 SRO, %

@@ -68,6 +68,9 @@ PanelStatus Controller::panelStatus() {
         out.axisShown[static_cast<std::size_t>(axis)] = homeSwitchWired(axis);
     }
     out.workSystem = interp_.activeSlot();
+    for (int slot = 0; slot < interp::WorkOffsets::kSlots; ++slot) {
+        out.workOffsets[static_cast<std::size_t>(slot)] = offsets_.slot(slot);
+    }
     out.feedOverride = feedOverride_;
     out.spindleOverride = manual_.spindleOverride;
     out.jogOverride = manual_.jogOverride;

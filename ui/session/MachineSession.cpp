@@ -49,6 +49,12 @@ void MachineSession::answerDialog(bool enter) { post([enter](SessionWorker& w) {
 void MachineSession::pressExternStart() { post([](SessionWorker& w) { w.pressExternStart(); }); }
 void MachineSession::home(const QVector<int>& axes) { post([axes](SessionWorker& w) { w.home(axes); }); }
 void MachineSession::zeroAxes(const QVector<int>& axes) { post([axes](SessionWorker& w) { w.zeroAxes(axes); }); }
+void MachineSession::setWorkPosition(int axis, double value) {
+    post([=](SessionWorker& w) { w.setWorkPosition(axis, value); });
+}
+void MachineSession::setVariable(int number, double value) {
+    post([=](SessionWorker& w) { w.setVariable(number, value); });
+}
 void MachineSession::jogPress(int axis, int direction) {
     post([axis, direction](SessionWorker& w) { w.jogPress(axis, direction); });
 }
@@ -71,6 +77,12 @@ void MachineSession::setParameter(int number, double value) {
 void MachineSession::forceInput(int pin, Fault fault, int level, double seconds) {
     post([=](SessionWorker& w) { w.forceInput(pin, fault, level, seconds); });
 }
+
+void MachineSession::startSimulation(const QString& path, double speed) {
+    post([=](SessionWorker& w) { w.startSimulation(path, speed); });
+}
+void MachineSession::setSimulationSpeed(double speed) { post([=](SessionWorker& w) { w.setSimulationSpeed(speed); }); }
+void MachineSession::stopSimulation() { post([](SessionWorker& w) { w.stopSimulation(); }); }
 
 void MachineSession::advance(double seconds) {
     constexpr double kFrame = 1.0 / 60.0;

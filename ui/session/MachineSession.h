@@ -52,6 +52,8 @@ public:
     // manual work
     void home(const QVector<int>& axes); // 回机械原点 (empty: every axis with a home switch)
     void zeroAxes(const QVector<int>& axes); // 清零: the current position becomes work zero
+    void setWorkPosition(int axis, double value); // 坐标管理 / 分中: the current position gets this work coordinate
+    void setVariable(int number, double value);   // #50-#499, the offsets #800-#844 ...
     void jogPress(int axis, int direction);
     void jogRelease(int axis);
     void cycleJogMode(); // CONT -> STEP -> MPG
@@ -69,6 +71,12 @@ public:
     void setParameter(int number, double value);
     enum class Fault { None, Stuck, Slow, Bouncing };
     void forceInput(int pin, Fault fault, int level, double seconds);
+
+    // 仿真: runs the file on a second controller beside the machine (which never moves); speed in
+    // virtual seconds per wall second, 0 = as fast as the core goes. snapshot.simulation shows it.
+    void startSimulation(const QString& path, double speed);
+    void setSimulationSpeed(double speed);
+    void stopSimulation();
 
     // Manual clock: lets `seconds` of virtual time pass in frames of at most 1/60 s and waits until
     // the worker has done so; the snapshot of the last frame is then queued to this thread.

@@ -1,11 +1,14 @@
 #include "ui/session/SessionWorker.h"
 
+#include "ui/session/SimulationRun.h"
+
 #include "core/config/MachineConfig.h"
 #include "core/controller/Controller.h"
 #include "core/gcode/Diagnostic.h"
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -85,6 +88,7 @@ void SessionWorker::advanceManual(double seconds) {
 }
 
 void SessionWorker::advance(double seconds) {
+    advanceSimulation(seconds);
     Controller::RunState state = controller_->advance(seconds);
     if (state != Controller::RunState::Running && state != Controller::RunState::Hold &&
         activity_ != Activity::Homing) {
@@ -110,6 +114,9 @@ void SessionWorker::publish() {
     snapshot->lastError = lastError_;
     snapshot->machineName = machineName_;
     snapshot->homingPrompt = controller_->needsBootHomingPrompt();
+    if (simulation_) {
+        snapshot->simulation = simulation_->view();
+    }
     snapshot->publishedNs = std::chrono::duration_cast<std::chrono::nanoseconds>(
                                 std::chrono::steady_clock::now().time_since_epoch())
                                 .count();
@@ -238,6 +245,26 @@ void SessionWorker::zeroAxes(const QVector<int>& axes) {
     publish();
 }
 
+void SessionWorker::setWorkPosition(int axis, double value) {
+    lastError_.clear();
+    if (busy()) {
+        refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
+        return;
+    }
+    controller_->setWorkPosition(axis, value);
+    publish();
+}
+
+void SessionWorker::setVariable(int number, double value) {
+    lastError_.clear();
+    std::string why;
+    if (!controller_->setVariable(number, value, &why)) {
+        refuse(QString::fromStdString(why));
+        return;
+    }
+    publish();
+}
+
 void SessionWorker::jogPress(int axis, int direction) {
     lastError_.clear();
     controller_->jogPress(axis, direction);
@@ -346,6 +373,46 @@ void SessionWorker::forceInput(int pin, MachineSession::Fault fault, int level, 
     case MachineSession::Fault::Bouncing: put = machine::InputFault::bouncing(seconds); break;
     }
     controller_->setInputFault(pin, put);
+    publish();
+}
+
+// A simulation at speed 0 runs as fast as the core goes: with the wall clock for most of a
+// frame, with a manual clock (replays, tests) to its end at once, so a replay stays deterministic.
+void SessionWorker::advanceSimulation(double seconds) {
+    if (!simulation_ || !simulation_->running()) {
+        return;
+    }
+    constexpr long long kBudgetNs = 10'000'000; // of the 16.7 ms frame
+    if (simulation_->speed() > 0.0) {
+        simulation_->advance(seconds * simulation_->speed());
+    } else if (options_.clock == MachineSession::Clock::Manual) {
+        simulation_->advance(std::numeric_limits<double>::infinity());
+    } else {
+        simulation_->runFor(kBudgetNs);
+    }
+}
+
+void SessionWorker::startSimulation(const QString& path, double speed) {
+    lastError_.clear();
+    simulation_.reset();
+    QString error;
+    simulation_ = SimulationRun::start(controller_->config(), path, controller_->panelStatus().tool, speed, &error);
+    if (!simulation_) {
+        refuse(error);
+        return;
+    }
+    publish();
+}
+
+void SessionWorker::setSimulationSpeed(double speed) {
+    if (simulation_) {
+        simulation_->setSpeed(speed);
+    }
+    publish();
+}
+
+void SessionWorker::stopSimulation() {
+    simulation_.reset();
     publish();
 }
 

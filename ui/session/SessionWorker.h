@@ -14,6 +14,8 @@ class Controller;
 
 namespace m350::ui {
 
+class SimulationRun;
+
 // Lives in the session's worker thread and is the only code of the panel that touches the
 // Controller. Each method runs one operator command, then publishes a snapshot.
 class SessionWorker : public QObject {
@@ -35,6 +37,8 @@ public:
     void pressExternStart();
     void home(const QVector<int>& axes);
     void zeroAxes(const QVector<int>& axes);
+    void setWorkPosition(int axis, double value);
+    void setVariable(int number, double value);
     void jogPress(int axis, int direction);
     void jogRelease(int axis);
     void cycleJogMode();
@@ -51,6 +55,10 @@ public:
     void forceInput(int pin, MachineSession::Fault fault, int level, double seconds);
     void advanceManual(double seconds);
     void publish();
+    // 仿真 (SimulationRun.cpp): the file on a second controller; speed 0 = as fast as the core goes.
+    void startSimulation(const QString& path, double speed);
+    void setSimulationSpeed(double speed);
+    void stopSimulation();
 
 signals:
     void published(const m350::ui::SnapshotPtr& snapshot);
@@ -59,11 +67,13 @@ private:
     void tick();
     void scheduleTick();
     void advance(double seconds);
+    void advanceSimulation(double seconds);
     bool busy() const;
     void refuse(const QString& why);
     bool loadCurrentFile();
 
     std::unique_ptr<controller::Controller> controller_;
+    std::unique_ptr<SimulationRun> simulation_;
     MachineSession::Options options_;
     QString machineName_;
     QTimer* timer_ = nullptr;

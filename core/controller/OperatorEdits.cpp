@@ -1,0 +1,42 @@
+// What the operator edits from the panel rather than a program: work positions (清零, 坐标管理,
+// 分中) and variables.
+#include "core/controller/Controller.h"
+
+#include <cmath>
+
+namespace m350::controller {
+
+void Controller::setWorkPosition(int axis, double value) {
+    int slot = interp_.activeSlot();
+    double others = interp_.workOffset()(axis) - offsets_.get(slot, axis);
+    offsets_.set(slot, axis, machine_.position()(axis) - others - value);
+}
+
+bool Controller::setVariable(int number, double value, std::string* why) {
+    auto refuse = [why](std::string reason) {
+        if (why) {
+            *why = std::move(reason);
+        }
+        return false;
+    };
+    if (!std::isfinite(value)) {
+        return refuse("#" + std::to_string(number) + ": not a finite number");
+    }
+    macro::VariableInfo info = store_.map().describe(number);
+    if (info.kind == macro::VariableKind::Undefined) {
+        return refuse("#" + std::to_string(number) + ": no such variable");
+    }
+    if (info.readOnly) {
+        return refuse(store_.map().describeText(number) + " is read-only");
+    }
+    if (macro::VariableStore::ownsKind(info.kind)) {
+        store_.write(info, number, macro::Value::of(value));
+        return true;
+    }
+    if (auto error = writeSystem(info, number, value, {})) {
+        return refuse(*error);
+    }
+    return true;
+}
+
+} // namespace m350::controller
