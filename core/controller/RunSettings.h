@@ -4,6 +4,10 @@
 #include <optional>
 #include <ostream>
 
+namespace m350::machine {
+class MachineObserver;
+}
+
 namespace m350::controller {
 
 // How one run is set up, beyond the machine folder (the `m350-sim` options).
@@ -23,6 +27,8 @@ struct RunSettings {
     std::map<int, double> parameters;  // overrides of the machine folder's parameters
     std::map<int, double> variables;   // set before the run starts
     std::ostream* trace = nullptr;     // JSON Lines events
+    // Told every machine event as it happens (the panel's simulation draws the path from them).
+    machine::MachineObserver* observer = nullptr;
 };
 
 } // namespace m350::controller

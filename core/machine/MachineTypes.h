@@ -22,6 +22,8 @@ std::string_view spindleStateName(SpindleState state);
 
 enum class Plane : std::uint8_t { XY, ZX, YZ }; // G17, G18, G19
 
+struct Arc;
+
 // A trace event as the machine reports it; the controller adds the source line that caused it.
 struct MachineEvent {
     enum class Type : std::uint8_t { Rapid, Feed, Arc, Dwell, Io, Spindle, Coolant, Auxiliary } type = Type::Rapid;
@@ -34,6 +36,7 @@ struct MachineEvent {
     int level = 0;
     SpindleState spindle = SpindleState::Stop;
     double rpm = 0.0;
+    const Arc* arc = nullptr; // an Arc event's path, valid only while observers are told
 };
 
 class MachineObserver {

@@ -53,6 +53,7 @@ void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double 
         event.feed = feed;
         event.start = last.start;
         event.end = time_;
+        event.arc = last.arc ? &*last.arc : nullptr;
         notify(event);
     }
 }

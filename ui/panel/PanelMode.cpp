@@ -9,6 +9,9 @@ PanelText::Mode displayedMode(const PanelSnapshot& snapshot, const QString& page
     if (s.guide) {
         return PanelText::Mode::Wheel;
     }
+    if (snapshot.simulation.active() && snapshot.activity == Activity::None) {
+        return PanelText::Mode::Simulate; // 仿真 while the machine itself does nothing
+    }
     switch (snapshot.activity) {
     case Activity::Auto: return PanelText::Mode::Auto;
     case Activity::Mdi:
@@ -47,6 +50,9 @@ PanelText::State displayedState(const PanelSnapshot& snapshot) {
         return PanelText::State::Busy;
     case Run::Idle:
     case Run::Finished: break;
+    }
+    if (snapshot.simulation.run == SimulationView::Run::Running) {
+        return PanelText::State::Busy;
     }
     return s.jogging ? PanelText::State::Busy : PanelText::State::Ready;
 }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ui/session/SimulationView.h"
+
 #include "core/controller/PanelStatus.h"
 
 #include <QMetaType>
@@ -23,6 +25,7 @@ struct PanelSnapshot {
     QString machineName;
     int magazineCapacity = 0;
     bool homingPrompt = false; // param 127 = 0 and X, Y, Z not homed: 是否进行开机寻零操作?
+    SimulationView simulation; // the Program page's 仿真, beside the machine (Off when none)
     qint64 publishedNs = 0;    // steady clock when the worker published it (the panel's latency meter)
 };
 
