@@ -11,6 +11,7 @@ struct HmiOptions {
     std::string configDir;   // empty: the bundled default machine (a private copy of it)
     std::string language = "zh_CN";
     std::string page;        // monitor mdi io probe
+    std::string programs;    // the Program page's U disk (U盘程序); empty: the home folder
     std::string screenshot;  // render, save the PNG, exit
     std::string replay;      // play operator actions (JSON Lines), then exit
     std::string state;       // write the panel's state (JSON) before exiting

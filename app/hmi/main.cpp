@@ -3,6 +3,7 @@
 #include "app/hmi/HmiOptions.h"
 #include "core/config/MachineConfig.h"
 #include "ui/i18n/Language.h"
+#include "ui/pages/ProgramPage.h"
 #include "ui/panel/MainWindow.h"
 #include "ui/panel/PanelMeter.h"
 #include "ui/session/MachineFolderCopy.h"
@@ -97,6 +98,10 @@ int main(int argc, char** argv) {
     ui::MainWindow window(session, folder, &language);
     if (QFile style(QStringLiteral(":/panel/panel.qss")); style.open(QIODevice::ReadOnly)) {
         app.setStyleSheet(QString::fromUtf8(style.readAll()));
+    }
+    if (auto* programs = dynamic_cast<ui::ProgramPage*>(window.page(QStringLiteral("program")));
+        programs && !o.programs.empty()) {
+        programs->setUserFolder(QString::fromStdString(o.programs));
     }
     if (!o.program.empty()) {
         session.loadProgram(QString::fromStdString(o.program));

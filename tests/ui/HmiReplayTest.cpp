@@ -144,4 +144,13 @@ TEST(HmiReplay, SwitchingToEnglishChangesTheWords) {
     EXPECT_EQ(zh.state["softkeys"].toArray().at(0).toString(), QStringLiteral("F1 执行(1)"));
 }
 
+TEST(HmiReplay, AParameterEditAtGuestLevelAsksForThePasswordAndRefusesAnOutOfRangeValue) {
+    HmiRun run = runHmi({"--replay", replay("param-level-edit.jsonl")});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_EQ(run.state["page"].toString(), "param");
+    EXPECT_EQ(run.state["user_level"].toString(), "operator");
+    EXPECT_EQ(run.state["param_selected"].toInt(), 129);
+    EXPECT_EQ(run.state["param_value"].toString(), "12.500") << "150 was refused, 12.5 taken";
+}
+
 } // namespace m350::test

@@ -28,15 +28,10 @@ public:
         QString error;
         auto copy = ui::copyBundledMachine(dir_.path(), &error);
         EXPECT_TRUE(copy) << error.toStdString();
-        folder_ = copy.value_or(QString());
-        auto loaded = config::loadMachineFolder(folder_.toStdString());
-        EXPECT_TRUE(std::holds_alternative<config::MachineConfig>(loaded));
-        options.clock = ui::MachineSession::Clock::Manual;
-        session_ = std::make_unique<ui::MachineSession>(std::get<config::MachineConfig>(std::move(loaded)), options);
-        window_ = std::make_unique<ui::MainWindow>(*session_, folder_, language_);
-        window_->show();
-        ui::settle(*session_);
+        open(copy.value_or(QString()), options);
     }
+    // A panel on a folder an earlier harness used (a restart of the panel on the same machine).
+    explicit PanelHarness(const QString& folder, ui::MachineSession::Options options = {}) { open(folder, options); }
     ~PanelHarness() {
         window_.reset();
         session_.reset();
@@ -83,6 +78,18 @@ public:
     }
 
 private:
+    void open(const QString& folder, ui::MachineSession::Options options) {
+        folder_ = folder;
+        auto loaded = config::loadMachineFolder(folder_.toStdString());
+        ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(loaded))
+            << std::get<config::ConfigError>(loaded).file << ": " << std::get<config::ConfigError>(loaded).message;
+        options.clock = ui::MachineSession::Clock::Manual;
+        session_ = std::make_unique<ui::MachineSession>(std::get<config::MachineConfig>(std::move(loaded)), options);
+        window_ = std::make_unique<ui::MainWindow>(*session_, folder_, language_);
+        window_->show();
+        ui::settle(*session_);
+    }
+
     QTemporaryDir dir_;
     QString folder_;
     std::unique_ptr<ui::MachineSession> session_;

@@ -6,7 +6,9 @@
 #include "ui/pages/IoPage.h"
 #include "ui/pages/MdiPage.h"
 #include "ui/pages/MonitorPage.h"
+#include "ui/pages/ParamPage.h"
 #include "ui/pages/ProbePage.h"
+#include "ui/pages/SystemPage.h"
 #include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
 #include "ui/panel/PanelMode.h"
@@ -82,6 +84,8 @@ void MainWindow::addPages() {
     addPage(new MdiPage(context_, stack_));
     addPage(new IoPage(context_, stack_));
     addPage(new ProbePage(context_, stack_));
+    addPage(new ParamPage(context_, stack_));
+    addPage(new SystemPage(context_, stack_));
 }
 
 void MainWindow::addPage(Page* page) {

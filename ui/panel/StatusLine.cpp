@@ -1,6 +1,7 @@
 #include "ui/panel/StatusLine.h"
 
 #include "ui/panel/PanelMode.h"
+#include "ui/session/UserAccess.h"
 
 #include <QDateTime>
 #include <QFileInfo>
@@ -31,11 +32,13 @@ StatusLine::StatusLine(QWidget* parent) : QWidget(parent) {
     file_ = field(this, "fileField", 120);
     file_->setAlignment(Qt::AlignLeft | Qt::AlignVCenter);
     page_ = field(this, "pageField", 90);
+    level_ = field(this, "levelField", 64);
     clock_ = field(this, "clockField", 150);
     layout->addWidget(mode_);
     layout->addWidget(state_);
     layout->addWidget(file_, 1);
     layout->addWidget(page_);
+    layout->addWidget(level_);
     layout->addWidget(clock_);
 }
 
@@ -50,10 +53,12 @@ void StatusLine::render(const PanelSnapshot& snapshot, const QString& pageId, co
     QString file = snapshot.status.mdi ? QStringLiteral("MDI") : QFileInfo(snapshot.programFile).fileName();
     file_->setText(file);
     page_->setText(pageTitle);
+    level_->setText(UserAccess::levelName(snapshot.userLevel));
     clock_->setText(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
 }
 
 QString StatusLine::modeText() const { return mode_->text(); }
 QString StatusLine::stateText() const { return state_->text(); }
+QString StatusLine::levelText() const { return level_->text(); }
 
 } // namespace m350::ui

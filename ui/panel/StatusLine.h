@@ -8,7 +8,8 @@ class QLabel;
 
 namespace m350::ui {
 
-// The top line of the screen: mode, state, the loaded file, the page's name, date and time.
+// The top line of the screen: mode, state, the loaded file, the page's name, the user level, date
+// and time.
 class StatusLine : public QWidget {
     Q_OBJECT
 public:
@@ -16,12 +17,14 @@ public:
     void render(const PanelSnapshot& snapshot, const QString& pageId, const QString& pageTitle);
     QString modeText() const;
     QString stateText() const;
+    QString levelText() const;
 
 private:
     QLabel* mode_;
     QLabel* state_;
     QLabel* file_;
     QLabel* page_;
+    QLabel* level_; // 访客 / 操作员 / 管理员 / 超级管理
     QLabel* clock_;
 };
 

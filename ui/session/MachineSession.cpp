@@ -11,7 +11,8 @@
 
 namespace m350::ui {
 
-MachineSession::MachineSession(config::MachineConfig config, Options options, QObject* parent) : QObject(parent) {
+MachineSession::MachineSession(config::MachineConfig config, Options options, QObject* parent)
+    : QObject(parent), access_(QString::fromStdString(config.folder)) {
     qRegisterMetaType<SnapshotPtr>();
     worker_ = new SessionWorker(std::move(config), options);
     worker_->moveToThread(&thread_);
@@ -76,6 +77,17 @@ void MachineSession::setParameter(int number, double value) {
 }
 void MachineSession::forceInput(int pin, Fault fault, int level, double seconds) {
     post([=](SessionWorker& w) { w.forceInput(pin, fault, level, seconds); });
+}
+void MachineSession::setParameters(const std::map<int, double>& values) {
+    post([values](SessionWorker& w) { w.setParameters(values); });
+}
+void MachineSession::watchVariables(bool on) { post([on](SessionWorker& w) { w.watchVariables(on); }); }
+bool MachineSession::login(config::UserLevel level, const QString& password) {
+    if (!access_.login(level, password)) {
+        return false;
+    }
+    post([level = access_.level()](SessionWorker& w) { w.setUserLevel(level); });
+    return true;
 }
 
 void MachineSession::startSimulation(const QString& path, double speed) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/session/PanelSnapshot.h"
+#include "ui/session/UserAccess.h"
 
 #include <QObject>
 #include <QString>
@@ -9,6 +10,7 @@
 #include <QVector>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -71,6 +73,16 @@ public:
     void setParameter(int number, double value);
     enum class Fault { None, Stuck, Slow, Bouncing };
     void forceInput(int pin, Fault fault, int level, double seconds);
+    // 参数恢复: every value at once, one write of params.toml (setParameter writes it each time).
+    void setParameters(const std::map<int, double>& values);
+    // The #50-#499 view: while on, each snapshot carries those variables (userVariables).
+    void watchVariables(bool on);
+
+    // 用户权限 (the panel's, not the machine's: answered here at once); snapshots carry the level for
+    // the status line from the next frame on.
+    config::UserLevel userLevel() const { return access_.level(); }
+    bool login(config::UserLevel level, const QString& password);
+    std::optional<QString> changePassword(const QString& password) { return access_.changePassword(password); }
 
     // 仿真: runs the file on a second controller beside the machine (which never moves); speed in
     // virtual seconds per wall second, 0 = as fast as the core goes. snapshot.simulation shows it.
@@ -94,6 +106,7 @@ private:
     QThread thread_;
     SessionWorker* worker_ = nullptr;
     SnapshotPtr latest_;
+    UserAccess access_;
 };
 
 } // namespace m350::ui

@@ -2,11 +2,13 @@
 
 #include "ui/session/SimulationView.h"
 
+#include "core/config/ParameterPages.h"
 #include "core/controller/PanelStatus.h"
 
 #include <QMetaType>
 #include <QString>
 #include <QStringList>
+#include <QVector>
 
 #include <memory>
 
@@ -26,6 +28,8 @@ struct PanelSnapshot {
     int magazineCapacity = 0;
     bool homingPrompt = false; // param 127 = 0 and X, Y, Z not homed: 是否进行开机寻零操作?
     SimulationView simulation; // the Program page's 仿真, beside the machine (Off when none)
+    config::UserLevel userLevel = config::UserLevel::Guest; // 访客 / 操作员 / 管理员 / 超级管理
+    QVector<double> userVariables; // #50-#499 while the Param page watches them (NaN: vacant), else empty
     qint64 publishedNs = 0;    // steady clock when the worker published it (the panel's latency meter)
 };
 

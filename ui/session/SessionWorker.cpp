@@ -42,6 +42,7 @@ QString diagnosticsText(const std::vector<gcode::Diagnostic>& diagnostics) {
 
 SessionWorker::SessionWorker(config::MachineConfig config, MachineSession::Options options) : options_(options) {
     machineName_ = QString::fromStdString(config.name);
+    folder_ = config.folder;
     controller_ = std::make_unique<Controller>(std::move(config), settingsFor(options));
 }
 
@@ -114,6 +115,10 @@ void SessionWorker::publish() {
     snapshot->lastError = lastError_;
     snapshot->machineName = machineName_;
     snapshot->homingPrompt = controller_->needsBootHomingPrompt();
+    snapshot->userLevel = userLevel_;
+    if (watchVariables_) {
+        snapshot->userVariables = userVariables();
+    }
     if (simulation_) {
         snapshot->simulation = simulation_->view();
     }
@@ -354,6 +359,9 @@ void SessionWorker::setParameter(int number, double value) {
     lastError_.clear();
     if (!controller_->setParameter(number, value)) {
         refuse(tr("Parameter %1: invalid value").arg(number));
+        return;
+    }
+    if (!saveParameters({{number, value}})) {
         return;
     }
     publish();

@@ -53,6 +53,10 @@ public:
     void setOutput(int port, int level);
     void setParameter(int number, double value);
     void forceInput(int pin, MachineSession::Fault fault, int level, double seconds);
+    // SessionWorkerSettings.cpp: the Param page's batch, the #50-#499 view, the user level
+    void setParameters(const std::map<int, double>& values);
+    void watchVariables(bool on);
+    void setUserLevel(config::UserLevel level);
     void advanceManual(double seconds);
     void publish();
     // 仿真 (SimulationRun.cpp): the file on a second controller; speed 0 = as fast as the core goes.
@@ -71,6 +75,8 @@ private:
     bool busy() const;
     void refuse(const QString& why);
     bool loadCurrentFile();
+    bool saveParameters(const std::map<int, double>& values); // into params.toml; refuses when it cannot
+    QVector<double> userVariables(); // #50-#499, NaN for a vacant one
 
     std::unique_ptr<controller::Controller> controller_;
     std::unique_ptr<SimulationRun> simulation_;
@@ -86,6 +92,9 @@ private:
     double feedOverride_ = 100.0;
     double spindleOverride_ = 100.0;
     bool jogHigh_ = false;
+    std::string folder_; // the machine folder, where params.toml is kept
+    bool watchVariables_ = false;
+    config::UserLevel userLevel_ = config::UserLevel::Guest;
 };
 
 } // namespace m350::ui

@@ -1,0 +1,397 @@
+#include "ui/pages/ParamPage.h"
+
+#include "ui/i18n/PanelText.h"
+#include "ui/pages/LevelPrompt.h"
+#include "ui/panel/PanelContext.h"
+#include "ui/session/UserAccess.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QJsonObject>
+#include <QLabel>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <variant>
+
+namespace m350::ui {
+
+namespace {
+
+enum Column { Number, Note, Value, Unit, ColumnCount };
+constexpr int kFirstVariable = 50;
+constexpr int kLastVariable = 499;
+
+QString localName(const std::string& zh, const std::string& en) {
+    return QString::fromStdString(PanelText::chinese() && !zh.empty() ? zh : en);
+}
+
+} // namespace
+
+ParamPage::ParamPage(PanelContext& context, QWidget* parent) : Page(context, parent) {
+    setObjectName("paramPage");
+    auto loaded = config::ParameterCatalogue::load(config::ParameterCatalogue::bundledPath());
+    if (auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded)) {
+        catalogue_ = std::move(*catalogue);
+        pages_.emplace(*catalogue_);
+    } else {
+        catalogueError_ = QString::fromStdString(std::get<std::string>(loaded));
+    }
+    auto* column = new QVBoxLayout(this);
+    column->setContentsMargins(4, 4, 4, 4);
+    auto* header = new QHBoxLayout;
+    tabs_ = new QLabel(this);
+    tabs_->setObjectName("paramTabs");
+    group_ = new QLabel(this);
+    group_->setObjectName("paramGroup");
+    group_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    header->addWidget(tabs_);
+    header->addWidget(group_, 1);
+    column->addLayout(header);
+    auto* row = new QHBoxLayout;
+    table_ = new QTableWidget(0, ColumnCount, this);
+    table_->setObjectName("paramTable");
+    table_->setFocusPolicy(Qt::NoFocus);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->setSelectionMode(QAbstractItemView::SingleSelection);
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->verticalHeader()->hide();
+    table_->verticalHeader()->setDefaultSectionSize(22);
+    table_->horizontalHeader()->setSectionResizeMode(Note, QHeaderView::Stretch);
+    table_->setColumnWidth(Number, 56);
+    table_->setColumnWidth(Value, 110);
+    table_->setColumnWidth(Unit, 80);
+    connect(table_, &QTableWidget::currentCellChanged, this, [this] { fillInfo(); });
+    info_ = new QLabel(this);
+    info_->setObjectName("paramInfo");
+    info_->setWordWrap(true);
+    info_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    info_->setFixedWidth(230);
+    info_->setTextFormat(Qt::PlainText);
+    row->addWidget(table_, 1);
+    row->addWidget(info_);
+    column->addLayout(row, 1);
+    if (pages_) {
+        select(1); // the factory tab's 机床参数, the firmware's first page
+    }
+    retranslate();
+}
+
+QString ParamPage::title() const { return tr("Param", "msg 302"); }
+
+QVector<Page::Softkey> ParamPage::softkeys() const {
+    const bool ready = pages_.has_value();
+    const QString why = catalogueError_;
+    return {{tr("Param List", "msg 384"), ready, why},
+            {tr("Search", "msg 385"), ready, why},
+            {tr("Param Backup", "msg 386"), ready, why},
+            {tr("Param Restore", "msg 387"), ready, why},
+            {tr("#50-#499", "msg 388"), true, {}},
+            {},
+            {tr("Factory(N)", "msg 949"), ready, why},
+            {tr("User(O)", "msg 950"), ready, why},
+            {tr("User level"), true, {}},
+            {},
+            {},
+            {}};
+}
+
+void ParamPage::softkey(int number) {
+    switch (number) {
+    case 1:
+        if (variables_) {
+            showVariables(false);
+        } else {
+            key(QStringLiteral("RIGHT"));
+        }
+        break;
+    case 2: search(); break;
+    case 3: backup(); break;
+    case 4: restore(); break;
+    case 5: showVariables(!variables_); break;
+    case 7: showTab(Tab::Factory); break;
+    case 8: showTab(Tab::User); break;
+    case 9: LevelPrompt::askLevel(context()); break;
+    default: break;
+    }
+}
+
+bool ParamPage::key(const QString& name) {
+    if (name == QLatin1String("UP") || name == QLatin1String("DOWN")) {
+        int row = table_->currentRow() + (name == QLatin1String("UP") ? -1 : 1);
+        if (table_->rowCount() > 0) {
+            table_->selectRow(std::clamp(row, 0, table_->rowCount() - 1));
+        }
+        return true;
+    }
+    if ((name == QLatin1String("LEFT") || name == QLatin1String("RIGHT")) && pages_ && !variables_) {
+        // the groups of the current tab, in a ring
+        const auto& categories = pages_->categories();
+        const int step = name == QLatin1String("LEFT") ? -1 : 1;
+        const int count = static_cast<int>(categories.size());
+        int next = static_cast<int>(category_);
+        do {
+            next = (next + step + count) % count;
+        } while (categories[static_cast<std::size_t>(next)].tab != tab());
+        showCategory(static_cast<std::size_t>(next));
+        return true;
+    }
+    if (name == QLatin1String("ENTER")) {
+        edit();
+        return true;
+    }
+    if (name == QLatin1String("ESC") && variables_) {
+        showVariables(false);
+        return true;
+    }
+    return false;
+}
+
+bool ParamPage::typed(const QString& text) {
+    if (text.compare(QLatin1String("N"), Qt::CaseInsensitive) == 0) {
+        showTab(Tab::Factory);
+    } else if (text.compare(QLatin1String("O"), Qt::CaseInsensitive) == 0) {
+        showTab(Tab::User);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+ParamPage::Tab ParamPage::tab() const {
+    return pages_ ? pages_->categories()[category_].tab : Tab::Factory;
+}
+
+void ParamPage::showTab(Tab tab) {
+    if (!pages_) {
+        return;
+    }
+    showVariables(false);
+    const auto& categories = pages_->categories();
+    for (std::size_t c = 0; c < categories.size(); ++c) {
+        if (categories[c].tab == tab) {
+            showCategory(c);
+            return;
+        }
+    }
+}
+
+bool ParamPage::select(int number) {
+    auto at = pages_ ? pages_->locate(number) : std::nullopt;
+    if (!at) {
+        return false;
+    }
+    showVariables(false);
+    if (at->category != category_ || table_->rowCount() == 0) {
+        showCategory(at->category);
+    }
+    table_->selectRow(static_cast<int>(at->row));
+    return true;
+}
+
+void ParamPage::showCategory(std::size_t category) {
+    category_ = category;
+    const auto& numbers = pages_->categories()[category].numbers;
+    table_->clearContents();
+    table_->setRowCount(static_cast<int>(numbers.size()));
+    for (int row = 0; row < table_->rowCount(); ++row) {
+        const config::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
+        table_->setItem(row, Number, new QTableWidgetItem(QString::number(info.number)));
+        table_->setItem(row, Note, new QTableWidgetItem(localName(info.nameZh, info.nameEn)));
+        table_->setItem(row, Value, new QTableWidgetItem);
+        table_->setItem(row, Unit, new QTableWidgetItem(QString::fromStdString(info.unit)));
+        table_->item(row, Value)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    }
+    table_->selectRow(0);
+    retranslate();
+}
+
+void ParamPage::showVariables(bool on) {
+    if (on == variables_) {
+        return;
+    }
+    variables_ = on;
+    context().session().watchVariables(on);
+    table_->setColumnHidden(Note, on);
+    table_->setColumnHidden(Unit, on);
+    if (!on) {
+        showCategory(category_);
+        emit softkeysChanged();
+        return;
+    }
+    table_->clearContents();
+    table_->setRowCount(kLastVariable - kFirstVariable + 1);
+    for (int row = 0; row < table_->rowCount(); ++row) {
+        table_->setItem(row, Number, new QTableWidgetItem(QStringLiteral("#%1").arg(kFirstVariable + row)));
+        table_->setItem(row, Value, new QTableWidgetItem);
+        table_->item(row, Value)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    }
+    table_->selectRow(0);
+    retranslate();
+    emit softkeysChanged();
+}
+
+int ParamPage::selectedNumber() const {
+    int row = table_->currentRow();
+    if (row < 0) {
+        return -1;
+    }
+    if (variables_) {
+        return kFirstVariable + row;
+    }
+    return pages_ ? pages_->categories()[category_].numbers[static_cast<std::size_t>(row)] : -1;
+}
+
+QString ParamPage::groupTitle(int group) const {
+    switch (group) {
+    case 1: return tr("Machine", "msg 64");
+    case 2: return tr("Manual", "msg 65");
+    case 3: return tr("Process", "msg 66");
+    case 4: return tr("Coordinate", "msg 67");
+    case 5: return tr("Spindle", "msg 68");
+    case 6: return tr("IO", "msg 69");
+    case 7: return tr("Home", "msg 70");
+    case 8: return tr("Probe", "msg 71");
+    case 9: return tr("Hard Limit", "msg 72");
+    case 10: return tr("Software limit", "msg 73");
+    case 11: return tr("MPG", "msg 74");
+    case 12: return tr("External", "msg 75");
+    case 13: return tr("Backlash", "msg 76");
+    case 14: return tr("Tools", "msg 77");
+    case 15: return tr("System", "msg 78");
+    default: break;
+    }
+    if (group == 16) {
+        return tr("Input ports");
+    }
+    if (group == 17) {
+        return tr("Output ports");
+    }
+    return tr("Not on the firmware's pages");
+}
+
+void ParamPage::retranslate() {
+    table_->setHorizontalHeaderLabels({tr("No.", "msg 83"), tr("Note", "msg 84"), tr("Value", "msg 85"),
+                                       tr("Unit", "msg 86")});
+    if (!pages_) {
+        info_->setText(catalogueError_);
+        return;
+    }
+    const QString factory = tr("Factory(N)", "msg 949");
+    const QString user = tr("User(O)", "msg 950");
+    auto mark = [](const QString& text, bool on) { return on ? QStringLiteral("[%1]").arg(text) : text; };
+    tabs_->setText(variables_ ? tr("#50-#499", "msg 388")
+                              : mark(factory, tab() == Tab::Factory) + QStringLiteral("  ") + mark(user, tab() == Tab::User));
+    if (variables_) {
+        group_->setText(tr("Macro variables #50-#499, as a program reads them"));
+    } else {
+        int position = 0, count = 0;
+        for (std::size_t c = 0; c < pages_->categories().size(); ++c) {
+            if (pages_->categories()[c].tab == tab()) {
+                ++count;
+                position = c == category_ ? count : position;
+            }
+        }
+        group_->setText(QStringLiteral("◀ %1 (%2/%3) ▶").arg(groupTitle(pages_->categories()[category_].group)).arg(position).arg(count));
+        const auto& numbers = pages_->categories()[category_].numbers;
+        for (int row = 0; row < table_->rowCount(); ++row) {
+            const config::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
+            table_->item(row, Note)->setText(localName(info.nameZh, info.nameEn));
+        }
+    }
+    if (auto s = context().snapshot()) {
+        render(*s);
+    }
+}
+
+QString ParamPage::formatValue(const config::ParameterInfo& info, double value) const {
+    if (info.type == config::ParameterInfo::Type::Select) {
+        for (const config::ParameterOption& option : info.options) {
+            if (option.value == value) {
+                return QStringLiteral("%1 %2").arg(value).arg(localName(option.zh, option.en));
+            }
+        }
+    }
+    return info.type == config::ParameterInfo::Type::Real ? QString::number(value, 'f', 3) : QString::number(value);
+}
+
+QString ParamPage::rangeText(const config::ParameterInfo& info) const {
+    if (info.type != config::ParameterInfo::Type::Select) {
+        return QStringLiteral("%1 ~ %2").arg(info.min).arg(info.max);
+    }
+    QStringList options;
+    for (const config::ParameterOption& option : info.options) {
+        options << QStringLiteral("%1 = %2").arg(option.value).arg(localName(option.zh, option.en));
+    }
+    return QStringLiteral("\n  ") + options.join(QStringLiteral("\n  "));
+}
+
+void ParamPage::render(const PanelSnapshot& snapshot) {
+    shown_ = context().snapshot();
+    if (variables_) {
+        for (int row = 0; row < table_->rowCount() && row < snapshot.userVariables.size(); ++row) {
+            double v = snapshot.userVariables[row];
+            table_->item(row, Value)->setText(std::isnan(v) ? QStringLiteral("<vacant>") : QString::number(v, 'f', 4));
+        }
+    } else if (pages_) {
+        fillValues(snapshot);
+    }
+    fillInfo();
+}
+
+void ParamPage::fillValues(const PanelSnapshot& snapshot) {
+    const auto& numbers = pages_->categories()[category_].numbers;
+    for (int row = 0; row < table_->rowCount(); ++row) {
+        int number = numbers[static_cast<std::size_t>(row)];
+        table_->item(row, Value)->setText(formatValue(*catalogue_->find(number), snapshot.status.parameters.get(number)));
+    }
+}
+
+void ParamPage::fillInfo() {
+    int number = selectedNumber();
+    const config::UserLevel level = context().session().userLevel();
+    const QString current = tr("(now: %1)").arg(UserAccess::levelName(level));
+    if (variables_ || number < 0 || !pages_) {
+        if (variables_) {
+            info_->setText(tr("User:", "msg 940") + QStringLiteral(" ") + UserAccess::levelName(config::UserLevel::Operator) +
+                           QStringLiteral(" ") + current + QStringLiteral("\n\n") +
+                           tr("Enter sets the selected variable, as a macro's #%1 = value would.").arg(number));
+        }
+        return;
+    }
+    const config::ParameterInfo& info = *catalogue_->find(number);
+    const int group = pages_->categories()[category_].group;
+    QStringList lines;
+    lines << tr("User:", "msg 940") + QStringLiteral(" ") +
+                 UserAccess::levelName(config::ParameterPages::requiredLevel(group)) + QStringLiteral(" ") + current;
+    lines << tr("Param List:", "msg 941") + QStringLiteral(" ") + groupTitle(group);
+    lines << tr("Details:", "msg 946") + QStringLiteral(" ") + localName(info.nameZh, info.nameEn) + QStringLiteral(" (") +
+                 localName(info.nameEn, info.nameZh) + QStringLiteral(")");
+    lines << QStringLiteral("  ") + tr("macro #%1, factory value %2").arg(number + 500).arg(info.defaultValue);
+    lines << tr("Active:", "msg 947") + QStringLiteral(" ") + tr("Immediately", "msg 913");
+    lines << tr("Range:", "msg 948") + QStringLiteral(" ") + rangeText(info);
+    info_->setText(lines.join(QLatin1Char('\n')));
+}
+
+QString ParamPage::valueText(int row) const {
+    auto* item = table_->item(row, Value);
+    return item ? item->text() : QString();
+}
+
+QString ParamPage::infoText() const { return info_->text(); }
+
+QJsonObject ParamPage::state() const {
+    static const char* const levels[] = {"guest", "operator", "admin", "super"};
+    QJsonObject out{{"param_view", variables_ ? "variables" : "params"},
+                    {"param_selected", selectedNumber()},
+                    {"param_value", valueText(table_->currentRow())},
+                    {"user_level", levels[static_cast<int>(context().session().userLevel())]}};
+    if (pages_ && !variables_) {
+        out["param_tab"] = tab() == Tab::Factory ? "factory" : "user";
+        out["param_group"] = pages_->categories()[category_].group;
+    }
+    return out;
+}
+
+} // namespace m350::ui

@@ -1,0 +1,132 @@
+#include "ui/pages/SystemPage.h"
+
+#include "core/config/ParameterPages.h"
+#include "ui/pages/LevelPrompt.h"
+#include "ui/panel/PanelContext.h"
+#include "ui/session/UserAccess.h"
+
+#include <QDirIterator>
+#include <QGridLayout>
+#include <QJsonObject>
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include <variant>
+
+namespace m350::ui {
+
+namespace {
+
+const char* const kFields[] = {"name", "version", "machine", "folder", "params", "programs", "level"};
+
+} // namespace
+
+SystemPage::SystemPage(PanelContext& context, QWidget* parent) : Page(context, parent) {
+    setObjectName("systemPage");
+    auto* column = new QVBoxLayout(this);
+    column->setContentsMargins(16, 16, 16, 16);
+    auto* grid = new QGridLayout;
+    grid->setHorizontalSpacing(16);
+    grid->setVerticalSpacing(10);
+    int row = 0;
+    for (const char* name : kFields) {
+        auto* caption = new QLabel(this);
+        caption->setObjectName("infoCaption");
+        auto* field = new QLabel(this);
+        field->setObjectName(QStringLiteral("system_%1").arg(QLatin1String(name)));
+        field->setWordWrap(true);
+        field->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        grid->addWidget(caption, row, 0, Qt::AlignRight | Qt::AlignTop);
+        grid->addWidget(field, row, 1);
+        captions_.insert(QLatin1String(name), caption);
+        fields_.insert(QLatin1String(name), field);
+        ++row;
+    }
+    grid->setColumnStretch(1, 1);
+    column->addLayout(grid);
+    column->addStretch(1);
+    auto loaded = config::ParameterCatalogue::load(config::ParameterCatalogue::bundledPath());
+    if (auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded)) {
+        catalogued_ = static_cast<int>(catalogue->all().size());
+        const config::ParameterPages pages(*catalogue);
+        for (const auto& category : pages.categories()) {
+            listed_ += static_cast<int>(category.numbers.size());
+        }
+    }
+    countPrograms();
+    retranslate();
+}
+
+QString SystemPage::title() const { return tr("System Info", "msg 305"); }
+
+QVector<Page::Softkey> SystemPage::softkeys() const {
+    return {{tr("Registration", "msg 536"), false, tr("The simulator needs no licence")},
+            {tr("Password Set", "msg 537"), true, {}},
+            {tr("System Update", "msg 538"), false, tr("A new version is a new build of M350 Studio")},
+            {tr("System Set", "msg 539"), false,
+             tr("Date, network and factory reset belong to the controller's system, which is not simulated")},
+            {tr("System BackUp", "msg 540"), false, tr("Copy the machine folder to keep the whole machine")},
+            {tr("User level"), true, {}}};
+}
+
+void SystemPage::softkey(int number) {
+    if (number == 2) {
+        LevelPrompt::askNewPassword(context());
+    } else if (number == 6) {
+        LevelPrompt::askLevel(context());
+    }
+}
+
+// The programs a trainee keeps with the machine: every .nc file in the machine folder and below
+// (its macro libraries included).
+void SystemPage::countPrograms() {
+    programs_ = 0;
+    QDirIterator it(context().machineFolder(), {QStringLiteral("*.nc"), QStringLiteral("*.NC")}, QDir::Files,
+                    QDirIterator::Subdirectories);
+    while (it.hasNext()) {
+        it.next();
+        ++programs_;
+    }
+}
+
+void SystemPage::showEvent(QShowEvent* event) {
+    countPrograms();
+    retranslate();
+    Page::showEvent(event);
+}
+
+void SystemPage::retranslate() {
+    captions_["name"]->setText(tr("System Name:", "msg 930"));
+    captions_["version"]->setText(tr("Software Ver:", "msg 928"));
+    captions_["machine"]->setText(tr("Machine:"));
+    captions_["folder"]->setText(tr("Machine folder:"));
+    captions_["params"]->setText(tr("Parameters:"));
+    captions_["programs"]->setText(tr("Programs:"));
+    captions_["level"]->setText(tr("User level:"));
+    fields_["name"]->setText(tr("M350 Studio (a DDCS M350 panel simulator)"));
+    fields_["version"]->setText(QStringLiteral(M350_VERSION));
+    fields_["folder"]->setText(context().machineFolder());
+    fields_["params"]->setText(tr("%1 catalogued, %2 on the Param page").arg(catalogued_).arg(listed_));
+    fields_["programs"]->setText(tr("%1 .nc files in the machine folder").arg(programs_));
+    if (auto s = context().snapshot()) {
+        render(*s);
+    }
+}
+
+void SystemPage::render(const PanelSnapshot& snapshot) {
+    fields_["machine"]->setText(snapshot.machineName);
+    fields_["level"]->setText(UserAccess::levelName(context().session().userLevel()));
+}
+
+QString SystemPage::fieldText(const QString& name) const {
+    QLabel* field = fields_.value(name);
+    return field ? field->text() : QString();
+}
+
+QJsonObject SystemPage::state() const {
+    return {{"system_version", fieldText(QStringLiteral("version"))},
+            {"system_programs", programs_},
+            {"system_level", fieldText(QStringLiteral("level"))}};
+}
+
+} // namespace m350::ui

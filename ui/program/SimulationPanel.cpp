@@ -1,0 +1,58 @@
+#include "ui/program/SimulationPanel.h"
+
+#include "ui/program/CodeView.h"
+#include "ui/program/PathView.h"
+
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QVBoxLayout>
+
+namespace m350::ui {
+
+SimulationPanel::SimulationPanel(const gcode::Dialect& dialect, QWidget* parent) : QWidget(parent) {
+    auto* column = new QVBoxLayout(this);
+    column->setContentsMargins(0, 0, 0, 0);
+    auto* row = new QHBoxLayout;
+    code_ = new CodeView(dialect, this);
+    code_->setObjectName("simulationCode");
+    code_->setReadOnly(true);
+    path_ = new PathView(this);
+    row->addWidget(code_, 2);
+    row->addWidget(path_, 3);
+    info_ = new QLabel(this);
+    info_->setObjectName("simulationInfo");
+    info_->setWordWrap(true);
+    column->addLayout(row, 1);
+    column->addWidget(info_);
+}
+
+void SimulationPanel::open(const QString& path, const QString& text) {
+    file_ = path;
+    code_->setProgram(text);
+    path_->clear();
+    info_->clear();
+}
+
+QString SimulationPanel::speedName(double speed) {
+    return speed > 0.0 ? QStringLiteral("x%1").arg(speed) : tr("Max");
+}
+
+void SimulationPanel::render(const SimulationView& view) {
+    const bool here = QFileInfo(view.runningFile).fileName() == QFileInfo(file_).fileName();
+    code_->setRunningLine(view.run == SimulationView::Run::Running && here ? static_cast<int>(view.line) : 0);
+    path_->setPath(view.path);
+    QString state = view.run == SimulationView::Run::Finished ? tr("SL over", "msg 125")
+                    : view.run == SimulationView::Run::Alarm  ? view.alarm
+                                                              : tr("Start Simulating", "msg 111");
+    info_->setText(tr("%1  speed %2  line %3  %4 s  %5 blocks  %6 points")
+                       .arg(state, speedName(view.speed))
+                       .arg(view.line)
+                       .arg(view.time, 0, 'f', 1)
+                       .arg(static_cast<qulonglong>(view.blocks))
+                       .arg(static_cast<qulonglong>(view.path.size)));
+}
+
+QString SimulationPanel::infoText() const { return info_->text(); }
+
+} // namespace m350::ui

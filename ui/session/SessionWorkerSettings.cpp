@@ -1,0 +1,65 @@
+// The settings side of the session: parameters saved to the machine folder, the #50-#499 view and
+// the user level the status line shows.
+#include "ui/session/SessionWorker.h"
+
+#include "core/config/ParamsFileWriter.h"
+#include "core/controller/Controller.h"
+
+#include <cmath>
+#include <limits>
+
+namespace m350::ui {
+
+namespace {
+
+constexpr int kFirstUserVariable = 50;
+constexpr int kLastUserVariable = 499;
+
+} // namespace
+
+bool SessionWorker::saveParameters(const std::map<int, double>& values) {
+    if (folder_.empty()) {
+        return true; // a machine built in memory (tests of the core) has no folder to keep
+    }
+    if (auto error = config::saveParameters(folder_, values)) {
+        refuse(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
+        return false;
+    }
+    return true;
+}
+
+void SessionWorker::setParameters(const std::map<int, double>& values) {
+    lastError_.clear();
+    for (auto [number, value] : values) {
+        if (!controller_->setParameter(number, value)) {
+            refuse(tr("Parameter %1: invalid value").arg(number));
+            return;
+        }
+    }
+    if (!saveParameters(values)) {
+        return;
+    }
+    publish();
+}
+
+void SessionWorker::watchVariables(bool on) {
+    watchVariables_ = on;
+    publish();
+}
+
+QVector<double> SessionWorker::userVariables() {
+    QVector<double> values;
+    values.reserve(kLastUserVariable - kFirstUserVariable + 1);
+    for (int number = kFirstUserVariable; number <= kLastUserVariable; ++number) {
+        macro::Value v = controller_->variable(number);
+        values.push_back(v.vacant ? std::numeric_limits<double>::quiet_NaN() : v.number);
+    }
+    return values;
+}
+
+void SessionWorker::setUserLevel(config::UserLevel level) {
+    userLevel_ = level;
+    publish();
+}
+
+} // namespace m350::ui

@@ -1,0 +1,52 @@
+#pragma once
+
+#include "core/config/ParameterPages.h"
+
+#include <QByteArray>
+#include <QCoreApplication>
+#include <QString>
+
+#include <array>
+#include <optional>
+
+namespace m350::ui {
+
+// Who is at the panel: 访客 Guest, 操作员 Operator, 管理员 Admin or 超级管理 Super, and the passwords
+// that open each level. The panel starts as a guest. Passwords are kept hashed (PBKDF2-HMAC-SHA256
+// with a salt per level) in the machine folder's passwords.toml, one line per level that has been
+// changed through 密码设置; a level not in the file opens with its default password (README).
+class UserAccess {
+    Q_DECLARE_TR_FUNCTIONS(m350::ui::UserAccess)
+
+public:
+    using Level = config::UserLevel;
+    static constexpr int kMinimumLength = 6; // msg 918: fewer than 6 characters are refused
+
+    explicit UserAccess(QString folder);
+
+    Level level() const { return level_; }
+    // 请输入[操作员]及以上密码: the password of `wanted` or of any higher level opens `wanted`, or
+    // that higher level when it is its password. Guest needs none. False (level unchanged) otherwise.
+    bool login(Level wanted, const QString& password);
+    // 密码设置: the current level's password becomes `password`, saved at once. nullopt, or why not
+    // (translated: a guest has no password, fewer than 6 characters, the file could not be written).
+    std::optional<QString> changePassword(const QString& password);
+
+    static QString defaultPassword(Level level);
+    static QString levelName(Level level); // 访客 操作员 管理员 超级管理, translated
+    static QString fileName() { return QStringLiteral("passwords.toml"); }
+
+private:
+    struct Stored {
+        QByteArray salt, hash;
+    };
+    bool opens(Level level, const QString& password) const;
+    void load();
+    std::optional<QString> save() const;
+
+    QString folder_;
+    Level level_ = Level::Guest;
+    std::array<std::optional<Stored>, 4> stored_{}; // by level; Guest's stays empty
+};
+
+} // namespace m350::ui
