@@ -14,6 +14,106 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::CoordPage</name>
+    <message>
+        <source>Coord Set</source>
+        <comment>msg 319</comment>
+        <translation>Coord Set</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <comment>msg 87</comment>
+        <translation>Offset</translation>
+    </message>
+    <message>
+        <source>G92</source>
+        <comment>msg 232</comment>
+        <translation>G92</translation>
+    </message>
+    <message>
+        <source>1:[Knob]Move the cursor,[Enter]modify.</source>
+        <comment>msg 997</comment>
+        <translation>1:[Knob]Move the cursor,[Enter]modify.</translation>
+    </message>
+    <message>
+        <source>2:[Deeper] and [Move Up]Modified Z ext-offset.</source>
+        <comment>msg 998</comment>
+        <translation>2:[Deeper] and [Move Up]Modified Z ext-offset.</translation>
+    </message>
+    <message>
+        <source>Select Coord</source>
+        <comment>msg 500</comment>
+        <translation>Select Coord</translation>
+    </message>
+    <message>
+        <source>Clear X</source>
+        <comment>msg 501</comment>
+        <translation>Clear X</translation>
+    </message>
+    <message>
+        <source>Clear Y</source>
+        <comment>msg 502</comment>
+        <translation>Clear Y</translation>
+    </message>
+    <message>
+        <source>Clear Z</source>
+        <comment>msg 503</comment>
+        <translation>Clear Z</translation>
+    </message>
+    <message>
+        <source>Z Step</source>
+        <comment>msg 504</comment>
+        <translation>Z Step</translation>
+    </message>
+    <message>
+        <source>Deeper</source>
+        <comment>msg 505</comment>
+        <translation>Deeper</translation>
+    </message>
+    <message>
+        <source>Move up</source>
+        <comment>msg 506</comment>
+        <translation>Move up</translation>
+    </message>
+    <message>
+        <source>Clear 4th</source>
+        <comment>msg 507</comment>
+        <translation>Clear 4th</translation>
+    </message>
+    <message>
+        <source>Clear 5th</source>
+        <comment>msg 508</comment>
+        <translation>Clear 5th</translation>
+    </message>
+    <message>
+        <source>Select the work system: 0 = G92, 1-6 = G54-G59</source>
+        <translation>Select the work system: 0 = G92, 1-6 = G54-G59</translation>
+    </message>
+    <message>
+        <source>Is not G54-G59 coordinate!</source>
+        <comment>msg 987</comment>
+        <translation>Is not G54-G59 coordinate!</translation>
+    </message>
+    <message>
+        <source>Z Step:</source>
+        <comment>msg 999</comment>
+        <translation>Z Step:</translation>
+    </message>
+    <message>
+        <source>Step distance must be a number from 0.001 to 100</source>
+        <translation>Step distance must be a number from 0.001 to 100</translation>
+    </message>
+    <message>
+        <source>Axis Abs pos:</source>
+        <comment>msg 93</comment>
+        <translation>Axis Abs pos:</translation>
+    </message>
+    <message>
+        <source>Not a number: %1</source>
+        <translation>Not a number: %1</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::IoPage</name>
     <message>
         <source>IO</source>
@@ -253,6 +353,209 @@ STEP MPG</translation>
     </message>
 </context>
 <context>
+    <name>m350::ui::LevelPrompt</name>
+    <message>
+        <source>Pls input super admi or hight user's rights:</source>
+        <comment>msg 925</comment>
+        <translation>Pls input super admi or hight user's rights:</translation>
+    </message>
+    <message>
+        <source>Pls input admi or hight user's rights:</source>
+        <comment>msg 924</comment>
+        <translation>Pls input admi or hight user's rights:</translation>
+    </message>
+    <message>
+        <source>Pls input operator or hight user's rights:</source>
+        <comment>msg 923</comment>
+        <translation>Pls input operator or hight user's rights:</translation>
+    </message>
+    <message>
+        <source>Incorrect password!</source>
+        <comment>msg 905</comment>
+        <translation>Incorrect password!</translation>
+    </message>
+    <message>
+        <source>User level: %1</source>
+        <translation>User level: %1</translation>
+    </message>
+    <message>
+        <source>Change user level (0 %1, 1 %2, 2 %3, 3 %4):</source>
+        <translation>Change user level (0 %1, 1 %2, 2 %3, 3 %4):</translation>
+    </message>
+    <message>
+        <source>Enter 0, 1, 2 or 3</source>
+        <translation>Enter 0, 1, 2 or 3</translation>
+    </message>
+    <message>
+        <source>Rights is limited,pls shift user's rights:</source>
+        <comment>msg 934</comment>
+        <translation>Rights is limited,pls shift user's rights:</translation>
+    </message>
+    <message>
+        <source>Pls input new password:</source>
+        <comment>msg 922</comment>
+        <translation>Pls input new password:</translation>
+    </message>
+    <message>
+        <source>The No. of characters &lt; 6,pls input again!</source>
+        <comment>msg 918</comment>
+        <translation>The No. of characters &lt; 6,pls input again!</translation>
+    </message>
+    <message>
+        <source>Pls input password again:</source>
+        <comment>msg 921</comment>
+        <translation>Pls input password again:</translation>
+    </message>
+    <message>
+        <source>Two entries are not the same,pls input again!</source>
+        <comment>msg 919</comment>
+        <translation>Two entries are not the same,pls input again!</translation>
+    </message>
+    <message>
+        <source>Successfully modified!</source>
+        <comment>msg 920</comment>
+        <translation>Successfully modified!</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::LogPage</name>
+    <message>
+        <source>System Log</source>
+        <comment>msg 304</comment>
+        <translation>System Log</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <comment>msg 100</comment>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Event</source>
+        <comment>msg 101</comment>
+        <translation>Event</translation>
+    </message>
+    <message>
+        <source>Start working</source>
+        <comment>msg 112</comment>
+        <translation>Start working</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <comment>msg 113</comment>
+        <translation>Resume</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <comment>msg 114</comment>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <comment>msg 129</comment>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <comment>msg 108</comment>
+        <translation>Probe</translation>
+    </message>
+    <message>
+        <source>Home All Axes</source>
+        <comment>msg 107</comment>
+        <translation>Home All Axes</translation>
+    </message>
+    <message>
+        <source>Axis mach zero</source>
+        <comment>msg 119</comment>
+        <translation>Axis mach zero</translation>
+    </message>
+    <message>
+        <source>All axis clear</source>
+        <comment>msg 120</comment>
+        <translation>All axis clear</translation>
+    </message>
+    <message>
+        <source>Axis Coord set</source>
+        <comment>msg 118</comment>
+        <translation>Axis Coord set</translation>
+    </message>
+    <message>
+        <source>All axes go to zero</source>
+        <comment>msg 115</comment>
+        <translation>All axes go to zero</translation>
+    </message>
+    <message>
+        <source>Axes Middle</source>
+        <comment>msg 109</comment>
+        <translation>Axes Middle</translation>
+    </message>
+    <message>
+        <source>Start Simulating</source>
+        <comment>msg 111</comment>
+        <translation>Start Simulating</translation>
+    </message>
+    <message>
+        <source>SL over</source>
+        <comment>msg 125</comment>
+        <translation>SL over</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <comment>msg 110</comment>
+        <translation>Select file</translation>
+    </message>
+    <message>
+        <source>Line start</source>
+        <comment>msg 126</comment>
+        <translation>Line start</translation>
+    </message>
+    <message>
+        <source>Break run</source>
+        <comment>msg 128</comment>
+        <translation>Break run</translation>
+    </message>
+    <message>
+        <source>RESET</source>
+        <comment>msg 22</comment>
+        <translation>RESET</translation>
+    </message>
+    <message>
+        <source>ESP</source>
+        <comment>msg 749</comment>
+        <translation>ESP</translation>
+    </message>
+    <message>
+        <source>ERROR</source>
+        <comment>msg 23</comment>
+        <translation>ERROR</translation>
+    </message>
+    <message>
+        <source>Parameter changed</source>
+        <translation>Parameter changed</translation>
+    </message>
+    <message>
+        <source>Variable changed</source>
+        <translation>Variable changed</translation>
+    </message>
+    <message>
+        <source>Output switched</source>
+        <translation>Output switched</translation>
+    </message>
+    <message>
+        <source>Simulator: input fault</source>
+        <translation>Simulator: input fault</translation>
+    </message>
+    <message>
+        <source>User level changed</source>
+        <translation>User level changed</translation>
+    </message>
+    <message>
+        <source>Clear Record</source>
+        <comment>msg 548</comment>
+        <translation>Clear Record</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::MainWindow</name>
     <message>
         <source>This page comes with the panel's part 2</source>
@@ -368,6 +671,165 @@ STEP MPG</translation>
         <source>ALARM</source>
         <comment>msg 24</comment>
         <translation>ALARM</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::MiddlePage</name>
+    <message>
+        <source>Middle</source>
+        <comment>msg 321</comment>
+        <translation>Middle</translation>
+    </message>
+    <message>
+        <source>Set 1</source>
+        <comment>msg 524</comment>
+        <translation>Set 1</translation>
+    </message>
+    <message>
+        <source>Set 2</source>
+        <comment>msg 525</comment>
+        <translation>Set 2</translation>
+    </message>
+    <message>
+        <source>Middle</source>
+        <comment>msg 526</comment>
+        <translation>Middle</translation>
+    </message>
+    <message>
+        <source>4pts</source>
+        <comment>msg 529</comment>
+        <translation>4pts</translation>
+    </message>
+    <message>
+        <source>Set X</source>
+        <comment>msg 512</comment>
+        <translation>Set X</translation>
+    </message>
+    <message>
+        <source>Middle X</source>
+        <comment>msg 513</comment>
+        <translation>Middle X</translation>
+    </message>
+    <message>
+        <source>Set Y</source>
+        <comment>msg 514</comment>
+        <translation>Set Y</translation>
+    </message>
+    <message>
+        <source>Middle Y</source>
+        <comment>msg 515</comment>
+        <translation>Middle Y</translation>
+    </message>
+    <message>
+        <source>3Pts</source>
+        <comment>msg 517</comment>
+        <translation>3Pts</translation>
+    </message>
+    <message>
+        <source>Press [Set X] at the first side first</source>
+        <translation>Press [Set X] at the first side first</translation>
+    </message>
+    <message>
+        <source>Press [Set Y] at the first side first</source>
+        <translation>Press [Set Y] at the first side first</translation>
+    </message>
+    <message>
+        <source>Record two points of the circle first ([Set 1], [Set 2])</source>
+        <translation>Record two points of the circle first ([Set 1], [Set 2])</translation>
+    </message>
+    <message>
+        <source>The three points lie on a line: no circle through them</source>
+        <translation>The three points lie on a line: no circle through them</translation>
+    </message>
+    <message>
+        <source>Arc 3 pts:</source>
+        <comment>msg 964</comment>
+        <translation>Arc 3 pts:</translation>
+    </message>
+    <message>
+        <source>First pts:</source>
+        <comment>msg 968</comment>
+        <translation>First pts:</translation>
+    </message>
+    <message>
+        <source>Second pts:</source>
+        <comment>msg 969</comment>
+        <translation>Second pts:</translation>
+    </message>
+    <message>
+        <source>Third pts:</source>
+        <comment>msg 970</comment>
+        <translation>Third pts:</translation>
+    </message>
+    <message>
+        <source>Center:</source>
+        <comment>msg 971</comment>
+        <translation>Center:</translation>
+    </message>
+    <message>
+        <source>1:Move to the first point and press [Set 1];</source>
+        <comment>msg 965</comment>
+        <translation>1:Move to the first point and press [Set 1];</translation>
+    </message>
+    <message>
+        <source>2:Move to the second point and press [Set 2];</source>
+        <comment>msg 966</comment>
+        <translation>2:Move to the second point and press [Set 2];</translation>
+    </message>
+    <message>
+        <source>3:Move to the third point and press[Middle],get center of arc and set it to zero;</source>
+        <comment>msg 967</comment>
+        <translation>3:Move to the third point and press[Middle],get center of arc and set it to zero;</translation>
+    </message>
+    <message>
+        <source>4 Pts:</source>
+        <comment>msg 972</comment>
+        <translation>4 Pts:</translation>
+    </message>
+    <message>
+        <source>Px1:</source>
+        <comment>msg 976</comment>
+        <translation>Px1:</translation>
+    </message>
+    <message>
+        <source>Px2:</source>
+        <comment>msg 977</comment>
+        <translation>Px2:</translation>
+    </message>
+    <message>
+        <source>Pxm:</source>
+        <comment>msg 978</comment>
+        <translation>Pxm:</translation>
+    </message>
+    <message>
+        <source>Py1:</source>
+        <comment>msg 979</comment>
+        <translation>Py1:</translation>
+    </message>
+    <message>
+        <source>Py2</source>
+        <comment>msg 980</comment>
+        <translation>Py2</translation>
+    </message>
+    <message>
+        <source>Pym:</source>
+        <comment>msg 981</comment>
+        <translation>Pym:</translation>
+    </message>
+    <message>
+        <source>Mannal Center Operation(X):</source>
+        <comment>msg 973</comment>
+        <translation>Mannal Center Operation(X):</translation>
+    </message>
+    <message>
+        <source>1:Take the tool to the point Px1 and press [Set X] to set;</source>
+        <comment>msg 974</comment>
+        <translation>1:Take the tool to the point Px1 and press [Set X] to set;</translation>
+    </message>
+    <message>
+        <source>2:Take the tool to the point Px2 and press [Middle X],get  midpoint and set the X zero;</source>
+        <comment>msg 975</comment>
+        <translation>2:Take the tool to the point Px2 and press [Middle X],get  midpoint and set the X zero;</translation>
     </message>
 </context>
 <context>
@@ -759,6 +1221,253 @@ STEP MPG</translation>
     </message>
 </context>
 <context>
+    <name>m350::ui::ParamPage</name>
+    <message>
+        <source>Param</source>
+        <comment>msg 302</comment>
+        <translation>Param</translation>
+    </message>
+    <message>
+        <source>Param List</source>
+        <comment>msg 384</comment>
+        <translation>Param List</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <comment>msg 385</comment>
+        <translation>Search</translation>
+    </message>
+    <message>
+        <source>Param Backup</source>
+        <comment>msg 386</comment>
+        <translation>Param Backup</translation>
+    </message>
+    <message>
+        <source>Param Restore</source>
+        <comment>msg 387</comment>
+        <translation>Param Restore</translation>
+    </message>
+    <message>
+        <source>#50-#499</source>
+        <comment>msg 388</comment>
+        <translation>#50-#499</translation>
+    </message>
+    <message>
+        <source>Factory(N)</source>
+        <comment>msg 949</comment>
+        <translation>Factory(N)</translation>
+    </message>
+    <message>
+        <source>User(O)</source>
+        <comment>msg 950</comment>
+        <translation>User(O)</translation>
+    </message>
+    <message>
+        <source>User level</source>
+        <translation>User level</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <comment>msg 64</comment>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <comment>msg 65</comment>
+        <translation>Manual</translation>
+    </message>
+    <message>
+        <source>Process</source>
+        <comment>msg 66</comment>
+        <translation>Process</translation>
+    </message>
+    <message>
+        <source>Coordinate</source>
+        <comment>msg 67</comment>
+        <translation>Coordinate</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <comment>msg 68</comment>
+        <translation>Spindle</translation>
+    </message>
+    <message>
+        <source>IO</source>
+        <comment>msg 69</comment>
+        <translation>IO</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <comment>msg 70</comment>
+        <translation>Home</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <comment>msg 71</comment>
+        <translation>Probe</translation>
+    </message>
+    <message>
+        <source>Hard Limit</source>
+        <comment>msg 72</comment>
+        <translation>Hard Limit</translation>
+    </message>
+    <message>
+        <source>Software limit</source>
+        <comment>msg 73</comment>
+        <translation>Software limit</translation>
+    </message>
+    <message>
+        <source>MPG</source>
+        <comment>msg 74</comment>
+        <translation>MPG</translation>
+    </message>
+    <message>
+        <source>External</source>
+        <comment>msg 75</comment>
+        <translation>External</translation>
+    </message>
+    <message>
+        <source>Backlash</source>
+        <comment>msg 76</comment>
+        <translation>Backlash</translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <comment>msg 77</comment>
+        <translation>Tools</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <comment>msg 78</comment>
+        <translation>System</translation>
+    </message>
+    <message>
+        <source>Input ports</source>
+        <translation>Input ports</translation>
+    </message>
+    <message>
+        <source>Output ports</source>
+        <translation>Output ports</translation>
+    </message>
+    <message>
+        <source>Not on the firmware's pages</source>
+        <translation>Not on the firmware's pages</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <comment>msg 83</comment>
+        <translation>No.</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <comment>msg 84</comment>
+        <translation>Note</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <comment>msg 85</comment>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <comment>msg 86</comment>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Macro variables #50-#499, as a program reads them</source>
+        <translation>Macro variables #50-#499, as a program reads them</translation>
+    </message>
+    <message>
+        <source>(now: %1)</source>
+        <translation>(now: %1)</translation>
+    </message>
+    <message>
+        <source>User:</source>
+        <comment>msg 940</comment>
+        <translation>User:</translation>
+    </message>
+    <message>
+        <source>Enter sets the selected variable, as a macro's #%1 = value would.</source>
+        <translation>Enter sets the selected variable, as a macro's #%1 = value would.</translation>
+    </message>
+    <message>
+        <source>Param List:</source>
+        <comment>msg 941</comment>
+        <translation>Param List:</translation>
+    </message>
+    <message>
+        <source>Details:</source>
+        <comment>msg 946</comment>
+        <translation>Details:</translation>
+    </message>
+    <message>
+        <source>macro #%1, factory value %2</source>
+        <translation>macro #%1, factory value %2</translation>
+    </message>
+    <message>
+        <source>Active:</source>
+        <comment>msg 947</comment>
+        <translation>Active:</translation>
+    </message>
+    <message>
+        <source>Immediately</source>
+        <comment>msg 913</comment>
+        <translation>Immediately</translation>
+    </message>
+    <message>
+        <source>Range:</source>
+        <comment>msg 948</comment>
+        <translation>Range:</translation>
+    </message>
+    <message>
+        <source>[%d]The data entered is illegal!</source>
+        <comment>msg 802</comment>
+        <translation>[%d]The data entered is illegal!</translation>
+    </message>
+    <message>
+        <source>Variable #%1: not a number</source>
+        <translation>Variable #%1: not a number</translation>
+    </message>
+    <message>
+        <source>Input searching parameter No. :</source>
+        <comment>msg 935</comment>
+        <translation>Input searching parameter No. :</translation>
+    </message>
+    <message>
+        <source>Parameter %1 is not on the parameter pages</source>
+        <translation>Parameter %1 is not on the parameter pages</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>File save failed!</translation>
+    </message>
+    <message>
+        <source>Parameters backed up to %1</source>
+        <translation>Parameters backed up to %1</translation>
+    </message>
+    <message>
+        <source>No backup: %1 does not exist (Param Backup writes it)</source>
+        <translation>No backup: %1 does not exist (Param Backup writes it)</translation>
+    </message>
+    <message>
+        <source>Restore every parameter from %1?</source>
+        <translation>Restore every parameter from %1?</translation>
+    </message>
+    <message>
+        <source>Parameter restore refused, nothing changed: %1</source>
+        <translation>Parameter restore refused, nothing changed: %1</translation>
+    </message>
+    <message>
+        <source>Parameters restored from %1: %2 changed</source>
+        <translation>Parameters restored from %1: %2 changed</translation>
+    </message>
+    <message>
+        <source>; %1 outside their ranges kept as saved</source>
+        <translation>; %1 outside their ranges kept as saved</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::ProbePage</name>
     <message>
         <source>Probe</source>
@@ -899,10 +1608,329 @@ STEP MPG</translation>
     </message>
 </context>
 <context>
+    <name>m350::ui::ProgramEditor</name>
+    <message>
+        <source>File is too large to edit</source>
+        <comment>msg 137</comment>
+        <translation>File is too large to edit</translation>
+    </message>
+    <message>
+        <source>Current File:</source>
+        <comment>msg 953</comment>
+        <translation>Current File:</translation>
+    </message>
+    <message>
+        <source>... %1 more</source>
+        <translation>... %1 more</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ProgramList</name>
+    <message>
+        <source>Local Disk(O)</source>
+        <comment>msg 959</comment>
+        <translation>Local Disk(O)</translation>
+    </message>
+    <message>
+        <source>U Disk(N)</source>
+        <comment>msg 960</comment>
+        <translation>U Disk(N)</translation>
+    </message>
+    <message>
+        <source>System disk (macro libraries)</source>
+        <translation>System disk (macro libraries)</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <comment>msg 80</comment>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <comment>msg 81</comment>
+        <translation>Size</translation>
+    </message>
+    <message>
+        <source>Modify time</source>
+        <comment>msg 82</comment>
+        <translation>Modify time</translation>
+    </message>
+    <message>
+        <source>Cur Path:</source>
+        <comment>msg 952</comment>
+        <translation>Cur Path:</translation>
+    </message>
+    <message>
+        <source>EXT</source>
+        <comment>msg 757</comment>
+        <translation>EXT</translation>
+    </message>
+    <message>
+        <source>DATE</source>
+        <comment>msg 758</comment>
+        <translation>DATE</translation>
+    </message>
+    <message>
+        <source>NAME</source>
+        <comment>msg 756</comment>
+        <translation>NAME</translation>
+    </message>
+    <message>
+        <source>Free Space:</source>
+        <comment>msg 951</comment>
+        <translation>Free Space:</translation>
+    </message>
+    <message>
+        <source>Sort:</source>
+        <comment>msg 759</comment>
+        <translation>Sort:</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ProgramPage</name>
+    <message>
+        <source>Program</source>
+        <comment>msg 301</comment>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Not in the simulator</source>
+        <translation>Not in the simulator</translation>
+    </message>
+    <message>
+        <source>Save Exit</source>
+        <comment>msg 336</comment>
+        <translation>Save Exit</translation>
+    </message>
+    <message>
+        <source>Find Line</source>
+        <comment>msg 337</comment>
+        <translation>Find Line</translation>
+    </message>
+    <message>
+        <source>Del Line</source>
+        <comment>msg 338</comment>
+        <translation>Del Line</translation>
+    </message>
+    <message>
+        <source>CAM</source>
+        <comment>msg 340</comment>
+        <translation>CAM</translation>
+    </message>
+    <message>
+        <source>Teaching</source>
+        <comment>msg 341</comment>
+        <translation>Teaching</translation>
+    </message>
+    <message>
+        <source>Speed %1</source>
+        <translation>Speed %1</translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <comment>msg 332</comment>
+        <translation>Simulate</translation>
+    </message>
+    <message>
+        <source>Esc</source>
+        <comment>msg 939</comment>
+        <translation>Esc</translation>
+    </message>
+    <message>
+        <source>The macro libraries are edited here, not deleted, renamed or run</source>
+        <translation>The macro libraries are edited here, not deleted, renamed or run</translation>
+    </message>
+    <message>
+        <source>Copy To Local</source>
+        <comment>msg 958</comment>
+        <translation>Copy To Local</translation>
+    </message>
+    <message>
+        <source>Copy To U Disk</source>
+        <comment>msg 327</comment>
+        <translation>Copy To U Disk</translation>
+    </message>
+    <message>
+        <source>Switch disks</source>
+        <comment>msg 324</comment>
+        <translation>Switch disks</translation>
+    </message>
+    <message>
+        <source>Del</source>
+        <comment>msg 325</comment>
+        <translation>Del</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <comment>msg 326</comment>
+        <translation>Rename</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <comment>msg 328</comment>
+        <translation>New</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <comment>msg 329</comment>
+        <translation>Edit</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <comment>msg 330</comment>
+        <translation>Copy</translation>
+    </message>
+    <message>
+        <source>Paste</source>
+        <comment>msg 331</comment>
+        <translation>Paste</translation>
+    </message>
+    <message>
+        <source>Load NC</source>
+        <comment>msg 333</comment>
+        <translation>Load NC</translation>
+    </message>
+    <message>
+        <source>Clear local</source>
+        <comment>msg 334</comment>
+        <translation>Clear local</translation>
+    </message>
+    <message>
+        <source>Sort</source>
+        <comment>msg 335</comment>
+        <translation>Sort</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <comment>msg 110</comment>
+        <translation>Select file</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>File save failed!</translation>
+    </message>
+    <message>
+        <source>Pls input searching line No:</source>
+        <comment>msg 894</comment>
+        <translation>Pls input searching line No:</translation>
+    </message>
+    <message>
+        <source>[Enter] to save,[Esc] is not to save.</source>
+        <comment>msg 893</comment>
+        <translation>[Enter] to save,[Esc] is not to save.</translation>
+    </message>
+    <message>
+        <source>File name is too long!</source>
+        <comment>msg 797</comment>
+        <translation>File name is too long!</translation>
+    </message>
+    <message>
+        <source>File exists, please re-enter!</source>
+        <comment>msg 803</comment>
+        <translation>File exists, please re-enter!</translation>
+    </message>
+    <message>
+        <source>A file name may not begin with a dot or hold / : * ? &lt; &gt; | or a quote</source>
+        <translation>A file name may not begin with a dot or hold / : * ? &lt; &gt; | or a quote</translation>
+    </message>
+    <message>
+        <source>Pls enter the file name:</source>
+        <comment>msg 804</comment>
+        <translation>Pls enter the file name:</translation>
+    </message>
+    <message>
+        <source>Current file is running,can't delete!</source>
+        <comment>msg 871</comment>
+        <translation>Current file is running,can't delete!</translation>
+    </message>
+    <message>
+        <source>Do you want to delete the selected file?</source>
+        <comment>msg 957</comment>
+        <translation>Do you want to delete the selected file?</translation>
+    </message>
+    <message>
+        <source>Copy successful!</source>
+        <comment>msg 955</comment>
+        <translation>Copy successful!</translation>
+    </message>
+    <message>
+        <source>file does not exist!</source>
+        <comment>msg 842</comment>
+        <translation>file does not exist!</translation>
+    </message>
+    <message>
+        <source>Delete all?</source>
+        <comment>msg 846</comment>
+        <translation>Delete all?</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::PromptBox</name>
     <message>
         <source>[Enter] OK    [Esc] Cancel</source>
         <translation>[Enter] OK    [Esc] Cancel</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::RecordPage</name>
+    <message>
+        <source>Work Record</source>
+        <comment>msg 322</comment>
+        <translation>Work Record</translation>
+    </message>
+    <message>
+        <source>Clear Record</source>
+        <comment>msg 548</comment>
+        <translation>Clear Record</translation>
+    </message>
+    <message>
+        <source>To U Disk</source>
+        <comment>msg 549</comment>
+        <translation>To U Disk</translation>
+    </message>
+    <message>
+        <source>Confirm to delete the working record?</source>
+        <comment>msg 875</comment>
+        <translation>Confirm to delete the working record?</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: cannot write: %2</translation>
+    </message>
+    <message>
+        <source>Working record saved to %1</source>
+        <translation>Working record saved to %1</translation>
+    </message>
+    <message>
+        <source>Current file:</source>
+        <comment>msg 876</comment>
+        <translation>Current file:</translation>
+    </message>
+    <message>
+        <source>Total No.</source>
+        <comment>msg 47</comment>
+        <translation>Total No.</translation>
+    </message>
+    <message>
+        <source>Finished No.:</source>
+        <comment>msg 878</comment>
+        <translation>Finished No.:</translation>
+    </message>
+    <message>
+        <source>Time per:</source>
+        <comment>msg 879</comment>
+        <translation>Time per:</translation>
+    </message>
+    <message>
+        <source>Total time:</source>
+        <comment>msg 880</comment>
+        <translation>Total time:</translation>
+    </message>
+    <message>
+        <source>Start date:</source>
+        <comment>msg 881</comment>
+        <translation>Start date:</translation>
     </message>
 </context>
 <context>
@@ -922,6 +1950,165 @@ STEP MPG</translation>
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>
         <translation>IN%1: no such input (IN01-IN24)</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>File save failed!</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::SimulationPanel</name>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>SL over</source>
+        <comment>msg 125</comment>
+        <translation>SL over</translation>
+    </message>
+    <message>
+        <source>Start Simulating</source>
+        <comment>msg 111</comment>
+        <translation>Start Simulating</translation>
+    </message>
+    <message>
+        <source>%1  speed %2  line %3  %4 s  %5 blocks  %6 points</source>
+        <translation>%1  speed %2  line %3  %4 s  %5 blocks  %6 points</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::SystemPage</name>
+    <message>
+        <source>System Info</source>
+        <comment>msg 305</comment>
+        <translation>System Info</translation>
+    </message>
+    <message>
+        <source>Registration</source>
+        <comment>msg 536</comment>
+        <translation>Registration</translation>
+    </message>
+    <message>
+        <source>The simulator needs no licence</source>
+        <translation>The simulator needs no licence</translation>
+    </message>
+    <message>
+        <source>Password Set</source>
+        <comment>msg 537</comment>
+        <translation>Password Set</translation>
+    </message>
+    <message>
+        <source>System Update</source>
+        <comment>msg 538</comment>
+        <translation>System Update</translation>
+    </message>
+    <message>
+        <source>A new version is a new build of M350 Studio</source>
+        <translation>A new version is a new build of M350 Studio</translation>
+    </message>
+    <message>
+        <source>System Set</source>
+        <comment>msg 539</comment>
+        <translation>System Set</translation>
+    </message>
+    <message>
+        <source>Date, network and factory reset belong to the controller's system, which is not simulated</source>
+        <translation>Date, network and factory reset belong to the controller's system, which is not simulated</translation>
+    </message>
+    <message>
+        <source>System BackUp</source>
+        <comment>msg 540</comment>
+        <translation>System BackUp</translation>
+    </message>
+    <message>
+        <source>Copy the machine folder to keep the whole machine</source>
+        <translation>Copy the machine folder to keep the whole machine</translation>
+    </message>
+    <message>
+        <source>User level</source>
+        <translation>User level</translation>
+    </message>
+    <message>
+        <source>System Name:</source>
+        <comment>msg 930</comment>
+        <translation>System Name:</translation>
+    </message>
+    <message>
+        <source>Software Ver:</source>
+        <comment>msg 928</comment>
+        <translation>Software Ver:</translation>
+    </message>
+    <message>
+        <source>Machine:</source>
+        <translation>Machine:</translation>
+    </message>
+    <message>
+        <source>Machine folder:</source>
+        <translation>Machine folder:</translation>
+    </message>
+    <message>
+        <source>Parameters:</source>
+        <translation>Parameters:</translation>
+    </message>
+    <message>
+        <source>Programs:</source>
+        <translation>Programs:</translation>
+    </message>
+    <message>
+        <source>User level:</source>
+        <translation>User level:</translation>
+    </message>
+    <message>
+        <source>M350 Studio (a DDCS M350 panel simulator)</source>
+        <translation>M350 Studio (a DDCS M350 panel simulator)</translation>
+    </message>
+    <message>
+        <source>%1 catalogued, %2 on the Param page</source>
+        <translation>%1 catalogued, %2 on the Param page</translation>
+    </message>
+    <message>
+        <source>%1 .nc files in the machine folder</source>
+        <translation>%1 .nc files in the machine folder</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::UserAccess</name>
+    <message>
+        <source>Guest</source>
+        <comment>msg 942</comment>
+        <translation>Guest</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <comment>msg 943</comment>
+        <translation>Operator</translation>
+    </message>
+    <message>
+        <source>Admin</source>
+        <comment>msg 944</comment>
+        <translation>Admin</translation>
+    </message>
+    <message>
+        <source>Super</source>
+        <comment>msg 945</comment>
+        <translation>Super</translation>
+    </message>
+    <message>
+        <source>Rights is limited,pls shift user's rights:</source>
+        <comment>msg 934</comment>
+        <translation>Rights is limited,pls shift user's rights:</translation>
+    </message>
+    <message>
+        <source>The No. of characters &lt; 6,pls input again!</source>
+        <comment>msg 918</comment>
+        <translation>The No. of characters &lt; 6,pls input again!</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>File save failed!</translation>
     </message>
 </context>
 </TS>

@@ -14,6 +14,106 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::CoordPage</name>
+    <message>
+        <source>Coord Set</source>
+        <comment>msg 319</comment>
+        <translation>坐标管理</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <comment>msg 87</comment>
+        <translation>公共偏置</translation>
+    </message>
+    <message>
+        <source>G92</source>
+        <comment>msg 232</comment>
+        <translation>G92坐标系</translation>
+    </message>
+    <message>
+        <source>1:[Knob]Move the cursor,[Enter]modify.</source>
+        <comment>msg 997</comment>
+        <translation>1:[旋钮]键切换输入焦点,[确认]键修改偏置.</translation>
+    </message>
+    <message>
+        <source>2:[Deeper] and [Move Up]Modified Z ext-offset.</source>
+        <comment>msg 998</comment>
+        <translation>2:[加深]和[抬高]功能仅对公共偏置Z轴数据有效.</translation>
+    </message>
+    <message>
+        <source>Select Coord</source>
+        <comment>msg 500</comment>
+        <translation>选择坐标系</translation>
+    </message>
+    <message>
+        <source>Clear X</source>
+        <comment>msg 501</comment>
+        <translation>设置X</translation>
+    </message>
+    <message>
+        <source>Clear Y</source>
+        <comment>msg 502</comment>
+        <translation>设置Y</translation>
+    </message>
+    <message>
+        <source>Clear Z</source>
+        <comment>msg 503</comment>
+        <translation>设置Z</translation>
+    </message>
+    <message>
+        <source>Z Step</source>
+        <comment>msg 504</comment>
+        <translation>Z轴调整值</translation>
+    </message>
+    <message>
+        <source>Deeper</source>
+        <comment>msg 505</comment>
+        <translation>加深</translation>
+    </message>
+    <message>
+        <source>Move up</source>
+        <comment>msg 506</comment>
+        <translation>抬高</translation>
+    </message>
+    <message>
+        <source>Clear 4th</source>
+        <comment>msg 507</comment>
+        <translation>设置4th</translation>
+    </message>
+    <message>
+        <source>Clear 5th</source>
+        <comment>msg 508</comment>
+        <translation>设置5th</translation>
+    </message>
+    <message>
+        <source>Select the work system: 0 = G92, 1-6 = G54-G59</source>
+        <translation>选择坐标系: 0 = G92, 1-6 = G54-G59</translation>
+    </message>
+    <message>
+        <source>Is not G54-G59 coordinate!</source>
+        <comment>msg 987</comment>
+        <translation>当前坐标系不是(G54-G59)工件坐标系!</translation>
+    </message>
+    <message>
+        <source>Z Step:</source>
+        <comment>msg 999</comment>
+        <translation>Z轴加深和抬高距离:</translation>
+    </message>
+    <message>
+        <source>Step distance must be a number from 0.001 to 100</source>
+        <translation>寸动距离须为0.001至100之间的数值</translation>
+    </message>
+    <message>
+        <source>Axis Abs pos:</source>
+        <comment>msg 93</comment>
+        <translation>轴当前点工件坐标系坐标:</translation>
+    </message>
+    <message>
+        <source>Not a number: %1</source>
+        <translation>不是数值: %1</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::IoPage</name>
     <message>
         <source>IO</source>
@@ -253,6 +353,209 @@ STEP MPG</source>
     </message>
 </context>
 <context>
+    <name>m350::ui::LevelPrompt</name>
+    <message>
+        <source>Pls input super admi or hight user's rights:</source>
+        <comment>msg 925</comment>
+        <translation>请输入[超级管理员]及以上密码切换用户权限:</translation>
+    </message>
+    <message>
+        <source>Pls input admi or hight user's rights:</source>
+        <comment>msg 924</comment>
+        <translation>请输入[管理员]及以上密码切换用户权限:</translation>
+    </message>
+    <message>
+        <source>Pls input operator or hight user's rights:</source>
+        <comment>msg 923</comment>
+        <translation>请输入[操作员]及以上密码切换用户权限:</translation>
+    </message>
+    <message>
+        <source>Incorrect password!</source>
+        <comment>msg 905</comment>
+        <translation>解锁密码输入错误!</translation>
+    </message>
+    <message>
+        <source>User level: %1</source>
+        <translation>用户权限: %1</translation>
+    </message>
+    <message>
+        <source>Change user level (0 %1, 1 %2, 2 %3, 3 %4):</source>
+        <translation>切换用户权限 (0 %1, 1 %2, 2 %3, 3 %4):</translation>
+    </message>
+    <message>
+        <source>Enter 0, 1, 2 or 3</source>
+        <translation>请输入 0、1、2 或 3</translation>
+    </message>
+    <message>
+        <source>Rights is limited,pls shift user's rights:</source>
+        <comment>msg 934</comment>
+        <translation>权限不足!请输入密码切换用户权限:</translation>
+    </message>
+    <message>
+        <source>Pls input new password:</source>
+        <comment>msg 922</comment>
+        <translation>请输入新密码:</translation>
+    </message>
+    <message>
+        <source>The No. of characters &lt; 6,pls input again!</source>
+        <comment>msg 918</comment>
+        <translation>输入的字符个数小于6个,请重新输入!</translation>
+    </message>
+    <message>
+        <source>Pls input password again:</source>
+        <comment>msg 921</comment>
+        <translation>请再次输入新密码:</translation>
+    </message>
+    <message>
+        <source>Two entries are not the same,pls input again!</source>
+        <comment>msg 919</comment>
+        <translation>两次输入密码不一致,请重新输入!</translation>
+    </message>
+    <message>
+        <source>Successfully modified!</source>
+        <comment>msg 920</comment>
+        <translation>密码修改成功!</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::LogPage</name>
+    <message>
+        <source>System Log</source>
+        <comment>msg 304</comment>
+        <translation>系统日志</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <comment>msg 100</comment>
+        <translation>时刻</translation>
+    </message>
+    <message>
+        <source>Event</source>
+        <comment>msg 101</comment>
+        <translation>事件明细</translation>
+    </message>
+    <message>
+        <source>Start working</source>
+        <comment>msg 112</comment>
+        <translation>开始加工</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <comment>msg 113</comment>
+        <translation>恢复加工</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <comment>msg 114</comment>
+        <translation>暂停加工</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <comment>msg 129</comment>
+        <translation>MDI运行</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <comment>msg 108</comment>
+        <translation>对刀操作</translation>
+    </message>
+    <message>
+        <source>Home All Axes</source>
+        <comment>msg 107</comment>
+        <translation>全轴寻零操作</translation>
+    </message>
+    <message>
+        <source>Axis mach zero</source>
+        <comment>msg 119</comment>
+        <translation>轴寻零操作</translation>
+    </message>
+    <message>
+        <source>All axis clear</source>
+        <comment>msg 120</comment>
+        <translation>全轴置零操作</translation>
+    </message>
+    <message>
+        <source>Axis Coord set</source>
+        <comment>msg 118</comment>
+        <translation>轴工件坐标系设定</translation>
+    </message>
+    <message>
+        <source>All axes go to zero</source>
+        <comment>msg 115</comment>
+        <translation>全轴回零操作</translation>
+    </message>
+    <message>
+        <source>Axes Middle</source>
+        <comment>msg 109</comment>
+        <translation>轴分中操作</translation>
+    </message>
+    <message>
+        <source>Start Simulating</source>
+        <comment>msg 111</comment>
+        <translation>开始仿真</translation>
+    </message>
+    <message>
+        <source>SL over</source>
+        <comment>msg 125</comment>
+        <translation>仿真结束</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <comment>msg 110</comment>
+        <translation>选取加工文件:</translation>
+    </message>
+    <message>
+        <source>Line start</source>
+        <comment>msg 126</comment>
+        <translation>指定行加工</translation>
+    </message>
+    <message>
+        <source>Break run</source>
+        <comment>msg 128</comment>
+        <translation>断点加工</translation>
+    </message>
+    <message>
+        <source>RESET</source>
+        <comment>msg 22</comment>
+        <translation>复位</translation>
+    </message>
+    <message>
+        <source>ESP</source>
+        <comment>msg 749</comment>
+        <translation>急停启动</translation>
+    </message>
+    <message>
+        <source>ERROR</source>
+        <comment>msg 23</comment>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <source>Parameter changed</source>
+        <translation>参数修改</translation>
+    </message>
+    <message>
+        <source>Variable changed</source>
+        <translation>变量修改</translation>
+    </message>
+    <message>
+        <source>Output switched</source>
+        <translation>输出切换</translation>
+    </message>
+    <message>
+        <source>Simulator: input fault</source>
+        <translation>模拟器: 输入口故障</translation>
+    </message>
+    <message>
+        <source>User level changed</source>
+        <translation>用户权限切换</translation>
+    </message>
+    <message>
+        <source>Clear Record</source>
+        <comment>msg 548</comment>
+        <translation>清除加工记录</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::MainWindow</name>
     <message>
         <source>This page comes with the panel's part 2</source>
@@ -368,6 +671,165 @@ STEP MPG</source>
         <source>ALARM</source>
         <comment>msg 24</comment>
         <translation>警告</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::MiddlePage</name>
+    <message>
+        <source>Middle</source>
+        <comment>msg 321</comment>
+        <translation>分中</translation>
+    </message>
+    <message>
+        <source>Set 1</source>
+        <comment>msg 524</comment>
+        <translation>记录1</translation>
+    </message>
+    <message>
+        <source>Set 2</source>
+        <comment>msg 525</comment>
+        <translation>记录2</translation>
+    </message>
+    <message>
+        <source>Middle</source>
+        <comment>msg 526</comment>
+        <translation>分中</translation>
+    </message>
+    <message>
+        <source>4pts</source>
+        <comment>msg 529</comment>
+        <translation>手动分中</translation>
+    </message>
+    <message>
+        <source>Set X</source>
+        <comment>msg 512</comment>
+        <translation>记录X</translation>
+    </message>
+    <message>
+        <source>Middle X</source>
+        <comment>msg 513</comment>
+        <translation>分中X</translation>
+    </message>
+    <message>
+        <source>Set Y</source>
+        <comment>msg 514</comment>
+        <translation>记录Y</translation>
+    </message>
+    <message>
+        <source>Middle Y</source>
+        <comment>msg 515</comment>
+        <translation>分中Y</translation>
+    </message>
+    <message>
+        <source>3Pts</source>
+        <comment>msg 517</comment>
+        <translation>圆弧分中</translation>
+    </message>
+    <message>
+        <source>Press [Set X] at the first side first</source>
+        <translation>请先在工件一侧按[记录X]</translation>
+    </message>
+    <message>
+        <source>Press [Set Y] at the first side first</source>
+        <translation>请先在工件一侧按[记录Y]</translation>
+    </message>
+    <message>
+        <source>Record two points of the circle first ([Set 1], [Set 2])</source>
+        <translation>请先记录圆周上两点([记录1], [记录2])</translation>
+    </message>
+    <message>
+        <source>The three points lie on a line: no circle through them</source>
+        <translation>三点共线: 无法确定圆心</translation>
+    </message>
+    <message>
+        <source>Arc 3 pts:</source>
+        <comment>msg 964</comment>
+        <translation>圆弧三点分中:</translation>
+    </message>
+    <message>
+        <source>First pts:</source>
+        <comment>msg 968</comment>
+        <translation>第一组记录:</translation>
+    </message>
+    <message>
+        <source>Second pts:</source>
+        <comment>msg 969</comment>
+        <translation>第二组记录:</translation>
+    </message>
+    <message>
+        <source>Third pts:</source>
+        <comment>msg 970</comment>
+        <translation>第三组记录:</translation>
+    </message>
+    <message>
+        <source>Center:</source>
+        <comment>msg 971</comment>
+        <translation>分中值:</translation>
+    </message>
+    <message>
+        <source>1:Move to the first point and press [Set 1];</source>
+        <comment>msg 965</comment>
+        <translation>1:移动到圆周上一点,按[记录1]键,系统将当前机械坐标作为第一组坐标;</translation>
+    </message>
+    <message>
+        <source>2:Move to the second point and press [Set 2];</source>
+        <comment>msg 966</comment>
+        <translation>2:移动到圆周上另一点,按[记录2]键,系统将当前机械坐标作为第二组坐标;</translation>
+    </message>
+    <message>
+        <source>3:Move to the third point and press[Middle],get center of arc and set it to zero;</source>
+        <comment>msg 967</comment>
+        <translation>3:移动到圆周上第三点,按[分中]键,由前两组坐标和当前机械坐标计算圆心并设为工件零点;</translation>
+    </message>
+    <message>
+        <source>4 Pts:</source>
+        <comment>msg 972</comment>
+        <translation>手动分中:</translation>
+    </message>
+    <message>
+        <source>Px1:</source>
+        <comment>msg 976</comment>
+        <translation>X轴记录1:</translation>
+    </message>
+    <message>
+        <source>Px2:</source>
+        <comment>msg 977</comment>
+        <translation>X轴记录2:</translation>
+    </message>
+    <message>
+        <source>Pxm:</source>
+        <comment>msg 978</comment>
+        <translation>分中值X:</translation>
+    </message>
+    <message>
+        <source>Py1:</source>
+        <comment>msg 979</comment>
+        <translation>Y轴记录1:</translation>
+    </message>
+    <message>
+        <source>Py2</source>
+        <comment>msg 980</comment>
+        <translation>Y轴记录2</translation>
+    </message>
+    <message>
+        <source>Pym:</source>
+        <comment>msg 981</comment>
+        <translation>分中值Y:</translation>
+    </message>
+    <message>
+        <source>Mannal Center Operation(X):</source>
+        <comment>msg 973</comment>
+        <translation>手动分中操作步骤:</translation>
+    </message>
+    <message>
+        <source>1:Take the tool to the point Px1 and press [Set X] to set;</source>
+        <comment>msg 974</comment>
+        <translation>1:手动移动刀具到工件的一侧,按[记录]键,记录下当前点的机械位置;</translation>
+    </message>
+    <message>
+        <source>2:Take the tool to the point Px2 and press [Middle X],get  midpoint and set the X zero;</source>
+        <comment>msg 975</comment>
+        <translation>2:再移动到工件另一侧,按[分中]键,由当前位置和上次位置计算中点坐标并设置为工件零点;</translation>
     </message>
 </context>
 <context>
@@ -759,6 +1221,253 @@ STEP MPG</source>
     </message>
 </context>
 <context>
+    <name>m350::ui::ParamPage</name>
+    <message>
+        <source>Param</source>
+        <comment>msg 302</comment>
+        <translation>参数管理</translation>
+    </message>
+    <message>
+        <source>Param List</source>
+        <comment>msg 384</comment>
+        <translation>参数分类</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <comment>msg 385</comment>
+        <translation>搜索</translation>
+    </message>
+    <message>
+        <source>Param Backup</source>
+        <comment>msg 386</comment>
+        <translation>参数备份</translation>
+    </message>
+    <message>
+        <source>Param Restore</source>
+        <comment>msg 387</comment>
+        <translation>参数恢复</translation>
+    </message>
+    <message>
+        <source>#50-#499</source>
+        <comment>msg 388</comment>
+        <translation>#50-#499</translation>
+    </message>
+    <message>
+        <source>Factory(N)</source>
+        <comment>msg 949</comment>
+        <translation>厂商参数(N)</translation>
+    </message>
+    <message>
+        <source>User(O)</source>
+        <comment>msg 950</comment>
+        <translation>用户参数(O)</translation>
+    </message>
+    <message>
+        <source>User level</source>
+        <translation>用户权限</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <comment>msg 64</comment>
+        <translation>机床参数</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <comment>msg 65</comment>
+        <translation>手动参数</translation>
+    </message>
+    <message>
+        <source>Process</source>
+        <comment>msg 66</comment>
+        <translation>自动参数</translation>
+    </message>
+    <message>
+        <source>Coordinate</source>
+        <comment>msg 67</comment>
+        <translation>坐标系参数</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <comment>msg 68</comment>
+        <translation>主轴参数</translation>
+    </message>
+    <message>
+        <source>IO</source>
+        <comment>msg 69</comment>
+        <translation>IO参数及自定义按键</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <comment>msg 70</comment>
+        <translation>零点参数</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <comment>msg 71</comment>
+        <translation>对刀参数</translation>
+    </message>
+    <message>
+        <source>Hard Limit</source>
+        <comment>msg 72</comment>
+        <translation>硬限位参数</translation>
+    </message>
+    <message>
+        <source>Software limit</source>
+        <comment>msg 73</comment>
+        <translation>软限位参数</translation>
+    </message>
+    <message>
+        <source>MPG</source>
+        <comment>msg 74</comment>
+        <translation>手轮参数</translation>
+    </message>
+    <message>
+        <source>External</source>
+        <comment>msg 75</comment>
+        <translation>扩展参数</translation>
+    </message>
+    <message>
+        <source>Backlash</source>
+        <comment>msg 76</comment>
+        <translation>补偿参数</translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <comment>msg 77</comment>
+        <translation>刀具参数</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <comment>msg 78</comment>
+        <translation>系统参数</translation>
+    </message>
+    <message>
+        <source>Input ports</source>
+        <translation>输入端口</translation>
+    </message>
+    <message>
+        <source>Output ports</source>
+        <translation>输出端口</translation>
+    </message>
+    <message>
+        <source>Not on the firmware's pages</source>
+        <translation>未列于参数页</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <comment>msg 83</comment>
+        <translation>序号</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <comment>msg 84</comment>
+        <translation>说明</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <comment>msg 85</comment>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <comment>msg 86</comment>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Macro variables #50-#499, as a program reads them</source>
+        <translation>宏变量 #50-#499 (程序读到的值)</translation>
+    </message>
+    <message>
+        <source>(now: %1)</source>
+        <translation>(当前: %1)</translation>
+    </message>
+    <message>
+        <source>User:</source>
+        <comment>msg 940</comment>
+        <translation>修改权限:</translation>
+    </message>
+    <message>
+        <source>Enter sets the selected variable, as a macro's #%1 = value would.</source>
+        <translation>[确认] 设置所选变量, 与宏程序 #%1 = 数值 相同。</translation>
+    </message>
+    <message>
+        <source>Param List:</source>
+        <comment>msg 941</comment>
+        <translation>参数类别:</translation>
+    </message>
+    <message>
+        <source>Details:</source>
+        <comment>msg 946</comment>
+        <translation>参数说明:</translation>
+    </message>
+    <message>
+        <source>macro #%1, factory value %2</source>
+        <translation>宏变量 #%1, 出厂值 %2</translation>
+    </message>
+    <message>
+        <source>Active:</source>
+        <comment>msg 947</comment>
+        <translation>生效时间:</translation>
+    </message>
+    <message>
+        <source>Immediately</source>
+        <comment>msg 913</comment>
+        <translation>立即生效</translation>
+    </message>
+    <message>
+        <source>Range:</source>
+        <comment>msg 948</comment>
+        <translation>设定范围:</translation>
+    </message>
+    <message>
+        <source>[%d]The data entered is illegal!</source>
+        <comment>msg 802</comment>
+        <translation>[%d]号参数输入的数据非法!</translation>
+    </message>
+    <message>
+        <source>Variable #%1: not a number</source>
+        <translation>变量 #%1: 不是数值</translation>
+    </message>
+    <message>
+        <source>Input searching parameter No. :</source>
+        <comment>msg 935</comment>
+        <translation>请输入搜索的参数编号:</translation>
+    </message>
+    <message>
+        <source>Parameter %1 is not on the parameter pages</source>
+        <translation>参数 %1 不在参数页中</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>文件生成失败!</translation>
+    </message>
+    <message>
+        <source>Parameters backed up to %1</source>
+        <translation>参数已备份至 %1</translation>
+    </message>
+    <message>
+        <source>No backup: %1 does not exist (Param Backup writes it)</source>
+        <translation>无备份: %1 不存在 (由参数备份生成)</translation>
+    </message>
+    <message>
+        <source>Restore every parameter from %1?</source>
+        <translation>是否从 %1 恢复全部参数?</translation>
+    </message>
+    <message>
+        <source>Parameter restore refused, nothing changed: %1</source>
+        <translation>参数恢复被拒绝, 未作任何修改: %1</translation>
+    </message>
+    <message>
+        <source>Parameters restored from %1: %2 changed</source>
+        <translation>已从 %1 恢复参数: %2 项改变</translation>
+    </message>
+    <message>
+        <source>; %1 outside their ranges kept as saved</source>
+        <translation>; %1 项超出设定范围, 按备份保留</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::ProbePage</name>
     <message>
         <source>Probe</source>
@@ -899,10 +1608,329 @@ STEP MPG</source>
     </message>
 </context>
 <context>
+    <name>m350::ui::ProgramEditor</name>
+    <message>
+        <source>File is too large to edit</source>
+        <comment>msg 137</comment>
+        <translation>文件过大,无法进行编辑操作!</translation>
+    </message>
+    <message>
+        <source>Current File:</source>
+        <comment>msg 953</comment>
+        <translation>当前编辑文件:</translation>
+    </message>
+    <message>
+        <source>... %1 more</source>
+        <translation>... 另有 %1 处</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ProgramList</name>
+    <message>
+        <source>Local Disk(O)</source>
+        <comment>msg 959</comment>
+        <translation>本地程序(O)</translation>
+    </message>
+    <message>
+        <source>U Disk(N)</source>
+        <comment>msg 960</comment>
+        <translation>U盘程序(N)</translation>
+    </message>
+    <message>
+        <source>System disk (macro libraries)</source>
+        <translation>系统盘(宏程序库)</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <comment>msg 80</comment>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <comment>msg 81</comment>
+        <translation>大小</translation>
+    </message>
+    <message>
+        <source>Modify time</source>
+        <comment>msg 82</comment>
+        <translation>修改时间</translation>
+    </message>
+    <message>
+        <source>Cur Path:</source>
+        <comment>msg 952</comment>
+        <translation>当前路径:</translation>
+    </message>
+    <message>
+        <source>EXT</source>
+        <comment>msg 757</comment>
+        <translation>后缀</translation>
+    </message>
+    <message>
+        <source>DATE</source>
+        <comment>msg 758</comment>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>NAME</source>
+        <comment>msg 756</comment>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Free Space:</source>
+        <comment>msg 951</comment>
+        <translation>磁盘剩余空间:</translation>
+    </message>
+    <message>
+        <source>Sort:</source>
+        <comment>msg 759</comment>
+        <translation>排序:</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ProgramPage</name>
+    <message>
+        <source>Program</source>
+        <comment>msg 301</comment>
+        <translation>文件管理</translation>
+    </message>
+    <message>
+        <source>Not in the simulator</source>
+        <translation>模拟器中没有此功能</translation>
+    </message>
+    <message>
+        <source>Save Exit</source>
+        <comment>msg 336</comment>
+        <translation>保存退出</translation>
+    </message>
+    <message>
+        <source>Find Line</source>
+        <comment>msg 337</comment>
+        <translation>查找行</translation>
+    </message>
+    <message>
+        <source>Del Line</source>
+        <comment>msg 338</comment>
+        <translation>删除行</translation>
+    </message>
+    <message>
+        <source>CAM</source>
+        <comment>msg 340</comment>
+        <translation>图形加工向导</translation>
+    </message>
+    <message>
+        <source>Teaching</source>
+        <comment>msg 341</comment>
+        <translation>教导</translation>
+    </message>
+    <message>
+        <source>Speed %1</source>
+        <translation>速度 %1</translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <comment>msg 332</comment>
+        <translation>仿真</translation>
+    </message>
+    <message>
+        <source>Esc</source>
+        <comment>msg 939</comment>
+        <translation>退出</translation>
+    </message>
+    <message>
+        <source>The macro libraries are edited here, not deleted, renamed or run</source>
+        <translation>宏程序库在此只能编辑, 不能删除、重命名或运行</translation>
+    </message>
+    <message>
+        <source>Copy To Local</source>
+        <comment>msg 958</comment>
+        <translation>拷贝到本地</translation>
+    </message>
+    <message>
+        <source>Copy To U Disk</source>
+        <comment>msg 327</comment>
+        <translation>拷贝到U盘</translation>
+    </message>
+    <message>
+        <source>Switch disks</source>
+        <comment>msg 324</comment>
+        <translation>切换磁盘</translation>
+    </message>
+    <message>
+        <source>Del</source>
+        <comment>msg 325</comment>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <comment>msg 326</comment>
+        <translation>重命名</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <comment>msg 328</comment>
+        <translation>新建</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <comment>msg 329</comment>
+        <translation>编辑</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <comment>msg 330</comment>
+        <translation>拷贝文件</translation>
+    </message>
+    <message>
+        <source>Paste</source>
+        <comment>msg 331</comment>
+        <translation>粘贴文件</translation>
+    </message>
+    <message>
+        <source>Load NC</source>
+        <comment>msg 333</comment>
+        <translation>NC读取</translation>
+    </message>
+    <message>
+        <source>Clear local</source>
+        <comment>msg 334</comment>
+        <translation>清除本地</translation>
+    </message>
+    <message>
+        <source>Sort</source>
+        <comment>msg 335</comment>
+        <translation>排序</translation>
+    </message>
+    <message>
+        <source>Select file</source>
+        <comment>msg 110</comment>
+        <translation>选取加工文件:</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>文件生成失败!</translation>
+    </message>
+    <message>
+        <source>Pls input searching line No:</source>
+        <comment>msg 894</comment>
+        <translation>请输入查找的行号:</translation>
+    </message>
+    <message>
+        <source>[Enter] to save,[Esc] is not to save.</source>
+        <comment>msg 893</comment>
+        <translation>[确认]保存修改;[退出]不保存.</translation>
+    </message>
+    <message>
+        <source>File name is too long!</source>
+        <comment>msg 797</comment>
+        <translation>文件名过长!</translation>
+    </message>
+    <message>
+        <source>File exists, please re-enter!</source>
+        <comment>msg 803</comment>
+        <translation>文件名存在请重新输入!</translation>
+    </message>
+    <message>
+        <source>A file name may not begin with a dot or hold / : * ? &lt; &gt; | or a quote</source>
+        <translation>文件名不能以点开头, 也不能含有 / : * ? &lt; &gt; | 或引号</translation>
+    </message>
+    <message>
+        <source>Pls enter the file name:</source>
+        <comment>msg 804</comment>
+        <translation>请输入文件名:</translation>
+    </message>
+    <message>
+        <source>Current file is running,can't delete!</source>
+        <comment>msg 871</comment>
+        <translation>加工区文件不可删除!</translation>
+    </message>
+    <message>
+        <source>Do you want to delete the selected file?</source>
+        <comment>msg 957</comment>
+        <translation>是否删除当前选中文件?</translation>
+    </message>
+    <message>
+        <source>Copy successful!</source>
+        <comment>msg 955</comment>
+        <translation>文件拷贝成功!</translation>
+    </message>
+    <message>
+        <source>file does not exist!</source>
+        <comment>msg 842</comment>
+        <translation>文件不存在!</translation>
+    </message>
+    <message>
+        <source>Delete all?</source>
+        <comment>msg 846</comment>
+        <translation>是否删除全部内容?</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::PromptBox</name>
     <message>
         <source>[Enter] OK    [Esc] Cancel</source>
         <translation>[确认]确定    [取消]退出</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::RecordPage</name>
+    <message>
+        <source>Work Record</source>
+        <comment>msg 322</comment>
+        <translation>加工统计</translation>
+    </message>
+    <message>
+        <source>Clear Record</source>
+        <comment>msg 548</comment>
+        <translation>清除加工记录</translation>
+    </message>
+    <message>
+        <source>To U Disk</source>
+        <comment>msg 549</comment>
+        <translation>导出到U盘</translation>
+    </message>
+    <message>
+        <source>Confirm to delete the working record?</source>
+        <comment>msg 875</comment>
+        <translation>确定要清除加工记录表吗?</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: 无法写入: %2</translation>
+    </message>
+    <message>
+        <source>Working record saved to %1</source>
+        <translation>加工记录文件已保存至 %1</translation>
+    </message>
+    <message>
+        <source>Current file:</source>
+        <comment>msg 876</comment>
+        <translation>当前加工程序:</translation>
+    </message>
+    <message>
+        <source>Total No.</source>
+        <comment>msg 47</comment>
+        <translation>总加工数</translation>
+    </message>
+    <message>
+        <source>Finished No.:</source>
+        <comment>msg 878</comment>
+        <translation>已加工件数:</translation>
+    </message>
+    <message>
+        <source>Time per:</source>
+        <comment>msg 879</comment>
+        <translation>单件加工时间:</translation>
+    </message>
+    <message>
+        <source>Total time:</source>
+        <comment>msg 880</comment>
+        <translation>总加工时间:</translation>
+    </message>
+    <message>
+        <source>Start date:</source>
+        <comment>msg 881</comment>
+        <translation>开始日期时间:</translation>
     </message>
 </context>
 <context>
@@ -922,6 +1950,165 @@ STEP MPG</source>
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>
         <translation>IN%1: 无此输入口 (IN01-IN24)</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>文件生成失败!</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::SimulationPanel</name>
+    <message>
+        <source>Max</source>
+        <translation>最快</translation>
+    </message>
+    <message>
+        <source>SL over</source>
+        <comment>msg 125</comment>
+        <translation>仿真结束</translation>
+    </message>
+    <message>
+        <source>Start Simulating</source>
+        <comment>msg 111</comment>
+        <translation>开始仿真</translation>
+    </message>
+    <message>
+        <source>%1  speed %2  line %3  %4 s  %5 blocks  %6 points</source>
+        <translation>%1  速度 %2  行 %3  %4 秒  %5 段  %6 点</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::SystemPage</name>
+    <message>
+        <source>System Info</source>
+        <comment>msg 305</comment>
+        <translation>系统管理</translation>
+    </message>
+    <message>
+        <source>Registration</source>
+        <comment>msg 536</comment>
+        <translation>软件注册</translation>
+    </message>
+    <message>
+        <source>The simulator needs no licence</source>
+        <translation>模拟器无需注册</translation>
+    </message>
+    <message>
+        <source>Password Set</source>
+        <comment>msg 537</comment>
+        <translation>密码设置</translation>
+    </message>
+    <message>
+        <source>System Update</source>
+        <comment>msg 538</comment>
+        <translation>系统升级</translation>
+    </message>
+    <message>
+        <source>A new version is a new build of M350 Studio</source>
+        <translation>新版本即重新构建 M350 Studio</translation>
+    </message>
+    <message>
+        <source>System Set</source>
+        <comment>msg 539</comment>
+        <translation>系统维护</translation>
+    </message>
+    <message>
+        <source>Date, network and factory reset belong to the controller's system, which is not simulated</source>
+        <translation>系统时间、网络与恢复出厂设置属于控制器系统, 未模拟</translation>
+    </message>
+    <message>
+        <source>System BackUp</source>
+        <comment>msg 540</comment>
+        <translation>系统备份</translation>
+    </message>
+    <message>
+        <source>Copy the machine folder to keep the whole machine</source>
+        <translation>复制机床文件夹即可保存整台机床</translation>
+    </message>
+    <message>
+        <source>User level</source>
+        <translation>用户权限</translation>
+    </message>
+    <message>
+        <source>System Name:</source>
+        <comment>msg 930</comment>
+        <translation>系统名称:</translation>
+    </message>
+    <message>
+        <source>Software Ver:</source>
+        <comment>msg 928</comment>
+        <translation>系统软件版本:</translation>
+    </message>
+    <message>
+        <source>Machine:</source>
+        <translation>机床:</translation>
+    </message>
+    <message>
+        <source>Machine folder:</source>
+        <translation>机床文件夹:</translation>
+    </message>
+    <message>
+        <source>Parameters:</source>
+        <translation>参数:</translation>
+    </message>
+    <message>
+        <source>Programs:</source>
+        <translation>程序:</translation>
+    </message>
+    <message>
+        <source>User level:</source>
+        <translation>用户权限:</translation>
+    </message>
+    <message>
+        <source>M350 Studio (a DDCS M350 panel simulator)</source>
+        <translation>M350 Studio (DDCS M350 面板模拟器)</translation>
+    </message>
+    <message>
+        <source>%1 catalogued, %2 on the Param page</source>
+        <translation>共 %1 个, 参数页列出 %2 个</translation>
+    </message>
+    <message>
+        <source>%1 .nc files in the machine folder</source>
+        <translation>机床文件夹中 %1 个 .nc 文件</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::UserAccess</name>
+    <message>
+        <source>Guest</source>
+        <comment>msg 942</comment>
+        <translation>访客</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <comment>msg 943</comment>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <source>Admin</source>
+        <comment>msg 944</comment>
+        <translation>管理员</translation>
+    </message>
+    <message>
+        <source>Super</source>
+        <comment>msg 945</comment>
+        <translation>超级管理</translation>
+    </message>
+    <message>
+        <source>Rights is limited,pls shift user's rights:</source>
+        <comment>msg 934</comment>
+        <translation>权限不足!请输入密码切换用户权限:</translation>
+    </message>
+    <message>
+        <source>The No. of characters &lt; 6,pls input again!</source>
+        <comment>msg 918</comment>
+        <translation>输入的字符个数小于6个,请重新输入!</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>文件生成失败!</translation>
     </message>
 </context>
 </TS>

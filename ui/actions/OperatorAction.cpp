@@ -49,7 +49,8 @@ int axisIndex(const QString& name) {
 bool isKnownKey(const QString& name) { return keyNames().contains(name); }
 
 const QStringList& pageIds() {
-    static const QStringList ids{"monitor", "mdi", "io", "probe", "program", "param", "log", "system"};
+    static const QStringList ids{"monitor", "mdi",    "io",     "probe",  "program", "param",
+                                 "log",     "system", "coord",  "middle", "record",  "breakrun"};
     return ids;
 }
 

@@ -147,10 +147,10 @@ QVector<Page::Softkey> MonitorPage::softkeys() const {
             {tr("Clear", "msg 316"), true, {}},
             {tr("Break Run", "msg 317"), false, later},
             {tr("Manual", "msg 318"), false, later},
-            {tr("Coord Set", "msg 319"), false, later},
+            {tr("Coord Set", "msg 319"), true, {}},
             {tr("MDI", "msg 320"), true, {}},
-            {tr("Middle", "msg 321"), false, later},
-            {tr("Work Record", "msg 322"), false, later},
+            {tr("Middle", "msg 321"), true, {}},
+            {tr("Work Record", "msg 322"), true, {}},
             {tr("Sort Proces", "msg 323"), false, later}};
 }
 
@@ -169,7 +169,10 @@ void MonitorPage::softkey(int number) {
     case 3: openMenu(Menu::GoWorkZero); break;
     case 4: openMenu(Menu::GoHome); break;
     case 5: openMenu(Menu::Clear); break;
+    case 8: emit navigate(QStringLiteral("coord")); break;
     case 9: emit navigate(QStringLiteral("mdi")); break;
+    case 10: emit navigate(QStringLiteral("middle")); break;
+    case 11: emit navigate(QStringLiteral("record")); break;
     default: break;
     }
 }

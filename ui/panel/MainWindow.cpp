@@ -3,11 +3,16 @@
 #include "ui/actions/ActionRecorder.h"
 #include "ui/actions/KeyboardMap.h"
 #include "ui/i18n/Language.h"
+#include "ui/pages/CoordPage.h"
 #include "ui/pages/IoPage.h"
+#include "ui/pages/LogPage.h"
 #include "ui/pages/MdiPage.h"
+#include "ui/pages/MiddlePage.h"
 #include "ui/pages/MonitorPage.h"
 #include "ui/pages/ParamPage.h"
 #include "ui/pages/ProbePage.h"
+#include "ui/pages/RecordPage.h"
+#include "ui/pages/ProgramPage.h"
 #include "ui/pages/SystemPage.h"
 #include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
@@ -84,6 +89,11 @@ void MainWindow::addPages() {
     addPage(new MdiPage(context_, stack_));
     addPage(new IoPage(context_, stack_));
     addPage(new ProbePage(context_, stack_));
+    addPage(new LogPage(context_, stack_));
+    addPage(new CoordPage(context_, stack_));
+    addPage(new MiddlePage(context_, stack_));
+    addPage(new RecordPage(context_, stack_));
+    addPage(new ProgramPage(context_, stack_));
     addPage(new ParamPage(context_, stack_));
     addPage(new SystemPage(context_, stack_));
 }

@@ -56,6 +56,7 @@ void MachineSession::setWorkPosition(int axis, double value) {
 void MachineSession::setVariable(int number, double value) {
     post([=](SessionWorker& w) { w.setVariable(number, value); });
 }
+void MachineSession::clearWorkRecord() { post([](SessionWorker& w) { w.clearWorkRecord(); }); }
 void MachineSession::jogPress(int axis, int direction) {
     post([axis, direction](SessionWorker& w) { w.jogPress(axis, direction); });
 }

@@ -56,6 +56,7 @@ public:
     void zeroAxes(const QVector<int>& axes); // 清零: the current position becomes work zero
     void setWorkPosition(int axis, double value); // 坐标管理 / 分中: the current position gets this work coordinate
     void setVariable(int number, double value);   // #50-#499, the offsets #800-#844 ...
+    void clearWorkRecord();                       // 清除加工记录: the counters and the run times
     void jogPress(int axis, int direction);
     void jogRelease(int axis);
     void cycleJogMode(); // CONT -> STEP -> MPG

@@ -3,6 +3,7 @@
 #include "ui/session/SimulationView.h"
 
 #include "core/config/ParameterPages.h"
+#include "core/config/SystemLog.h"
 #include "core/controller/PanelStatus.h"
 
 #include <QMetaType>
@@ -11,11 +12,21 @@
 #include <QVector>
 
 #include <memory>
+#include <vector>
 
 namespace m350::ui {
 
 // What the session is doing on the operator's behalf, for the mode field of the status line.
 enum class Activity { None, Auto, Mdi, Homing, Probe, SpindleKey };
+
+// 加工统计: what the automatic runs of this session took (the counters are params 201/202).
+struct WorkRecord {
+    QString file;           // 当前加工程序
+    QString startedAt;      // 开始日期时间 of the first run since the record was cleared
+    double lastPiece = 0.0; // 单件加工时间 of the last finished run, virtual seconds
+    double total = 0.0;     // 总加工时间
+    int finished = 0;       // runs finished since the record was cleared
+};
 
 // One immutable picture of the machine, published by the session from its worker thread. Widgets
 // keep the latest one and read nothing else.
@@ -30,6 +41,8 @@ struct PanelSnapshot {
     SimulationView simulation; // the Program page's 仿真, beside the machine (Off when none)
     config::UserLevel userLevel = config::UserLevel::Guest; // 访客 / 操作员 / 管理员 / 超级管理
     QVector<double> userVariables; // #50-#499 while the Param page watches them (NaN: vacant), else empty
+    std::shared_ptr<const std::vector<config::LogEntry>> log; // 系统日志, oldest first (shared, never changed)
+    WorkRecord workRecord;
     qint64 publishedNs = 0;    // steady clock when the worker published it (the panel's latency meter)
 };
 

@@ -5,6 +5,9 @@
 #include "core/config/MachineConfig.h"
 #include "core/controller/Controller.h"
 #include "core/gcode/Diagnostic.h"
+#include "core/config/ParameterNumbers.h"
+
+#include <QDateTime>
 
 #include <chrono>
 #include <cmath>
@@ -38,11 +41,21 @@ QString diagnosticsText(const std::vector<gcode::Diagnostic>& diagnostics) {
     return lines.join('\n');
 }
 
+QString axisNames(const std::vector<int>& axes) {
+    static const char* const names[] = {"X", "Y", "Z", "4th", "5th"};
+    QStringList out;
+    for (int axis : axes) {
+        out << QString::fromLatin1(names[axis]);
+    }
+    return out.join(QLatin1Char(' '));
+}
+
 } // namespace
 
 SessionWorker::SessionWorker(config::MachineConfig config, MachineSession::Options options) : options_(options) {
     machineName_ = QString::fromStdString(config.name);
     folder_ = config.folder;
+    log_ = std::make_unique<SessionLog>(config.folder);
     controller_ = std::make_unique<Controller>(std::move(config), settingsFor(options));
 }
 
@@ -91,10 +104,31 @@ void SessionWorker::advanceManual(double seconds) {
 void SessionWorker::advance(double seconds) {
     advanceSimulation(seconds);
     Controller::RunState state = controller_->advance(seconds);
+    noteAlarm();
+    if (state == Controller::RunState::Finished && activity_ == Activity::Auto) {
+        // a piece is done: 加工统计 counts it with its run time
+        workRecord_.lastPiece = controller_->panelStatus().runSeconds;
+        workRecord_.total += workRecord_.lastPiece;
+        ++workRecord_.finished;
+    }
     if (state != Controller::RunState::Running && state != Controller::RunState::Hold &&
         activity_ != Activity::Homing) {
         activity_ = Activity::None;
     }
+}
+
+// An alarm enters the system log once, when the run falls into it.
+void SessionWorker::noteAlarm() {
+    Controller::RunState run = controller_->runState();
+    bool alarmed = run == Controller::RunState::Alarm || run == Controller::RunState::EStop;
+    if (alarmed && !alarmLogged_) {
+        if (auto alarm = controller_->panelStatus().alarm) {
+            QString where = alarm->file.empty() ? QString()
+                                                : QStringLiteral("%1:%2: ").arg(QString::fromStdString(alarm->file)).arg(alarm->line);
+            log_->record("alarm", where + QString::fromStdString(alarm->message));
+        }
+    }
+    alarmLogged_ = alarmed;
 }
 
 bool SessionWorker::busy() const {
@@ -115,6 +149,8 @@ void SessionWorker::publish() {
     snapshot->lastError = lastError_;
     snapshot->machineName = machineName_;
     snapshot->homingPrompt = controller_->needsBootHomingPrompt();
+    snapshot->log = log_->entries();
+    snapshot->workRecord = workRecord_;
     snapshot->userLevel = userLevel_;
     if (watchVariables_) {
         snapshot->userVariables = userVariables();
@@ -144,6 +180,7 @@ void SessionWorker::start() {
     lastError_.clear();
     if (controller_->runState() == Controller::RunState::Hold) {
         controller_->resume();
+        log_->record("resume", programFile_);
     } else if (busy()) {
         return;
     } else if (programFile_.isEmpty()) {
@@ -152,6 +189,11 @@ void SessionWorker::start() {
     } else if (loadCurrentFile()) {
         if (controller_->start()) {
             activity_ = Activity::Auto;
+            log_->record("start_work", programFile_);
+            workRecord_.file = programFile_;
+            if (workRecord_.startedAt.isEmpty()) {
+                workRecord_.startedAt = QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
+            }
         }
     }
     publish();
@@ -159,11 +201,15 @@ void SessionWorker::start() {
 
 void SessionWorker::pause() {
     lastError_.clear();
+    if (controller_->runState() == Controller::RunState::Running) {
+        log_->record("pause", QString::fromStdString(controller_->panelStatus().file));
+    }
     controller_->hold();
     publish();
 }
 
 void SessionWorker::reset() {
+    log_->record("reset");
     controller_->reset();
     activity_ = Activity::None;
     lastError_.clear();
@@ -173,6 +219,8 @@ void SessionWorker::reset() {
 void SessionWorker::emergencyStop() {
     lastError_.clear();
     controller_->emergencyStop();
+    log_->record("estop");
+    noteAlarm();
     activity_ = Activity::None;
     publish();
 }
@@ -206,6 +254,7 @@ void SessionWorker::runMdi(const QStringList& lines, Activity activity) {
     }
     if (controller_->start()) {
         activity_ = activity;
+        log_->record(activity == Activity::Probe ? "probe" : "mdi", lines.join(QStringLiteral("; ")));
     }
     publish();
 }
@@ -232,6 +281,7 @@ void SessionWorker::home(const QVector<int>& axes) {
         which = controller_->homeableAxes();
     }
     lastError_.clear();
+    log_->record(axes.isEmpty() ? "home_all" : "home_axis", axisNames(which));
     if (auto alarm = controller_->home(which)) {
         lastError_ = QString::fromStdString(alarm->message);
     }
@@ -247,6 +297,8 @@ void SessionWorker::zeroAxes(const QVector<int>& axes) {
     for (int axis : axes) {
         controller_->zeroWorkAxis(axis);
     }
+    log_->record(axes.size() > 1 ? "zero_all" : "coord_set",
+                 axisNames(std::vector<int>(axes.begin(), axes.end())) + QStringLiteral(" = 0"));
     publish();
 }
 
@@ -257,6 +309,7 @@ void SessionWorker::setWorkPosition(int axis, double value) {
         return;
     }
     controller_->setWorkPosition(axis, value);
+    log_->record("coord_set", axisNames({axis}) + QStringLiteral(" = %1").arg(value, 0, 'f', 3));
     publish();
 }
 
@@ -267,6 +320,16 @@ void SessionWorker::setVariable(int number, double value) {
         refuse(QString::fromStdString(why));
         return;
     }
+    publish();
+}
+
+void SessionWorker::clearWorkRecord() {
+    lastError_.clear();
+    controller_->setParameter(config::param::kTotalRunCount, 0.0);
+    controller_->setParameter(config::param::kPieceCount, 0.0);
+    saveParameters({{config::param::kTotalRunCount, 0.0}, {config::param::kPieceCount, 0.0}});
+    workRecord_ = {};
+    log_->record("work_record_cleared");
     publish();
 }
 
@@ -357,6 +420,7 @@ void SessionWorker::setOutput(int port, int level) {
 
 void SessionWorker::setParameter(int number, double value) {
     lastError_.clear();
+    const double before = controller_->parameter(number);
     if (!controller_->setParameter(number, value)) {
         refuse(tr("Parameter %1: invalid value").arg(number));
         return;
@@ -364,6 +428,7 @@ void SessionWorker::setParameter(int number, double value) {
     if (!saveParameters({{number, value}})) {
         return;
     }
+    log_->record("param", QStringLiteral("[%1] %2 -> %3").arg(number).arg(before).arg(value));
     publish();
 }
 

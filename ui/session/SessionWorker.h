@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/session/MachineSession.h"
+#include "ui/session/SessionLog.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -39,6 +40,7 @@ public:
     void zeroAxes(const QVector<int>& axes);
     void setWorkPosition(int axis, double value);
     void setVariable(int number, double value);
+    void clearWorkRecord();
     void jogPress(int axis, int direction);
     void jogRelease(int axis);
     void cycleJogMode();
@@ -73,6 +75,7 @@ private:
     void advance(double seconds);
     void advanceSimulation(double seconds);
     bool busy() const;
+    void noteAlarm();
     void refuse(const QString& why);
     bool loadCurrentFile();
     bool saveParameters(const std::map<int, double>& values); // into params.toml; refuses when it cannot
@@ -88,6 +91,9 @@ private:
     Activity activity_ = Activity::None;
     QString programFile_;
     bool fileLoaded_ = false; // the controller holds programFile_ (not MDI lines)
+    std::unique_ptr<SessionLog> log_;
+    WorkRecord workRecord_;
+    bool alarmLogged_ = false; // the alarm in force is in the system log
     QString lastError_; // why the last command was refused; every command clears it first
     double feedOverride_ = 100.0;
     double spindleOverride_ = 100.0;

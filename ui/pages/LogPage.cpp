@@ -1,0 +1,136 @@
+#include "ui/pages/LogPage.h"
+
+#include "ui/panel/PanelContext.h"
+
+#include <QHeaderView>
+#include <QJsonArray>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace m350::ui {
+
+namespace {
+
+constexpr int kShownRows = 500; // the newest; the file keeps more
+
+} // namespace
+
+LogPage::LogPage(PanelContext& context, QWidget* parent) : Page(context, parent) {
+    setObjectName("logPage");
+    auto* column = new QVBoxLayout(this);
+    column->setContentsMargins(4, 4, 4, 4);
+    table_ = new QTableWidget(0, 2, this);
+    table_->setObjectName("systemLog");
+    table_->setFocusPolicy(Qt::NoFocus);
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->verticalHeader()->hide();
+    table_->verticalHeader()->setDefaultSectionSize(22);
+    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
+    column->addWidget(table_);
+    retranslate();
+}
+
+QString LogPage::title() const { return tr("System Log", "msg 304"); }
+
+void LogPage::retranslate() {
+    table_->setHorizontalHeaderLabels({tr("Time", "msg 100"), tr("Event", "msg 101")});
+    shown_ = nullptr;
+    if (auto s = context().snapshot()) {
+        render(*s);
+    }
+}
+
+// Built on each call: the words follow the language in force.
+QHash<QString, QString> LogPage::eventTable() {
+    QHash<QString, QString> w;
+    w["start_work"] = tr("Start working", "msg 112");
+    w["resume"] = tr("Resume", "msg 113");
+    w["pause"] = tr("Pause", "msg 114");
+    w["mdi"] = tr("MDI", "msg 129");
+    w["probe"] = tr("Probe", "msg 108");
+    w["home_all"] = tr("Home All Axes", "msg 107");
+    w["home_axis"] = tr("Axis mach zero", "msg 119");
+    w["zero_all"] = tr("All axis clear", "msg 120");
+    w["coord_set"] = tr("Axis Coord set", "msg 118");
+    w["go_work_zero"] = tr("All axes go to zero", "msg 115");
+    w["middle"] = tr("Axes Middle", "msg 109");
+    w["simulate"] = tr("Start Simulating", "msg 111");
+    w["simulation_over"] = tr("SL over", "msg 125");
+    w["select_file"] = tr("Select file", "msg 110");
+    w["start_line"] = tr("Line start", "msg 126");
+    w["break_run"] = tr("Break run", "msg 128");
+    w["reset"] = tr("RESET", "msg 22");
+    w["estop"] = tr("ESP", "msg 749");
+    w["alarm"] = tr("ERROR", "msg 23");
+    w["param"] = tr("Parameter changed");
+    w["variable"] = tr("Variable changed");
+    w["output"] = tr("Output switched");
+    w["fault"] = tr("Simulator: input fault");
+    w["level"] = tr("User level changed");
+    w["work_record_cleared"] = tr("Clear Record", "msg 548");
+    return w;
+}
+
+QString LogPage::eventWords(const std::string& event) {
+    QString key = QString::fromStdString(event);
+    return eventTable().value(key, key);
+}
+
+QVector<Page::Softkey> LogPage::softkeys() const { return {{}, {}, {}, {}, {}, {}}; }
+
+void LogPage::softkey(int) {}
+
+bool LogPage::key(const QString& name) {
+    if (name != QLatin1String("UP") && name != QLatin1String("DOWN")) {
+        return false;
+    }
+    int row = table_->currentRow() + (name == QLatin1String("UP") ? -1 : 1);
+    if (table_->rowCount() > 0) {
+        table_->selectRow(std::clamp(row, 0, table_->rowCount() - 1));
+    }
+    return true;
+}
+
+void LogPage::render(const PanelSnapshot& snapshot) {
+    if (snapshot.log && snapshot.log.get() != shown_) {
+        fill(snapshot);
+    }
+}
+
+void LogPage::fill(const PanelSnapshot& snapshot) {
+    shown_ = snapshot.log.get();
+    const auto& entries = *snapshot.log;
+    const QHash<QString, QString> words = eventTable();
+    int count = std::min<int>(kShownRows, static_cast<int>(entries.size()));
+    table_->setRowCount(count);
+    for (int row = 0; row < count; ++row) {
+        const config::LogEntry& e = entries[entries.size() - 1 - static_cast<std::size_t>(row)];
+        QString key = QString::fromStdString(e.event);
+        QString text = words.value(key, key);
+        if (!e.detail.empty()) {
+            text += QStringLiteral(": ") + QString::fromStdString(e.detail);
+        }
+        auto* time = new QTableWidgetItem(QString::fromStdString(e.time));
+        auto* event = new QTableWidgetItem(text);
+        if (e.event == "alarm" || e.event == "estop") {
+            event->setForeground(QColor(255, 120, 120));
+        }
+        table_->setItem(row, 0, time);
+        table_->setItem(row, 1, event);
+    }
+}
+
+int LogPage::rows() const { return table_->rowCount(); }
+QString LogPage::eventText(int row) const { return table_->item(row, 1) ? table_->item(row, 1)->text() : QString(); }
+
+QJsonObject LogPage::state() const {
+    QJsonArray newest;
+    for (int row = 0; row < std::min(rows(), 20); ++row) {
+        newest.append(eventText(row));
+    }
+    return {{"log_newest", newest}};
+}
+
+} // namespace m350::ui

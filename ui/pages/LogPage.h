@@ -1,0 +1,39 @@
+#pragma once
+
+#include "ui/pages/Page.h"
+
+#include <QHash>
+
+class QTableWidget;
+
+namespace m350::ui {
+
+// 系统日志 System Log: 时刻 / 事件明细 rows for every operation and alarm, newest first, in the
+// firmware's event words. The log lives in the machine folder (system-log.tsv) and stays bounded.
+class LogPage : public Page {
+    Q_OBJECT
+public:
+    explicit LogPage(PanelContext& context, QWidget* parent = nullptr);
+    QString id() const override { return QStringLiteral("log"); }
+    QString title() const override;
+    QVector<Softkey> softkeys() const override;
+    void softkey(int number) override;
+    bool key(const QString& name) override;
+    void render(const PanelSnapshot& snapshot) override;
+    void retranslate() override;
+    QJsonObject state() const override;
+
+    int rows() const;
+    QString eventText(int row) const; // row 0 is the newest
+
+    // The words of a logged event: "start_work" -> 开始加工 / Start working.
+    static QString eventWords(const std::string& event);
+    static QHash<QString, QString> eventTable();
+
+private:
+    void fill(const PanelSnapshot& snapshot);
+    QTableWidget* table_;
+    const void* shown_ = nullptr; // the log list last shown (lists are replaced, never changed)
+};
+
+} // namespace m350::ui

@@ -1,0 +1,27 @@
+#include "ui/session/SessionLog.h"
+
+#include <QDateTime>
+#include <QDir>
+
+namespace m350::ui {
+
+SessionLog::SessionLog(const std::string& machineFolder)
+    : log_(QDir(QString::fromStdString(machineFolder)).filePath(QStringLiteral("system-log.tsv")).toStdString()) {
+    std::string error;
+    if (!log_.load(&error)) {
+        problem_ = QString::fromStdString(error);
+    }
+    entries_ = std::make_shared<const std::vector<config::LogEntry>>(log_.entries());
+}
+
+void SessionLog::record(const char* event, const QString& detail) {
+    config::LogEntry entry{QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")).toStdString(),
+                           event, detail.toStdString()};
+    std::string error;
+    if (!log_.append(std::move(entry), &error)) {
+        problem_ = QString::fromStdString(error);
+    }
+    entries_ = std::make_shared<const std::vector<config::LogEntry>>(log_.entries());
+}
+
+} // namespace m350::ui

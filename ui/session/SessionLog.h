@@ -1,0 +1,31 @@
+#pragma once
+
+#include "core/config/SystemLog.h"
+
+#include <QString>
+
+#include <memory>
+#include <vector>
+
+namespace m350::ui {
+
+using LogEntries = std::shared_ptr<const std::vector<config::LogEntry>>;
+
+// The session's side of the 系统日志: every operation and alarm, stamped with the wall clock,
+// appended to the machine folder's log, and offered to snapshots as an immutable list that is
+// replaced (not changed) when an entry arrives.
+class SessionLog {
+public:
+    explicit SessionLog(const std::string& machineFolder);
+    // Event keys: see LogPage for their words (start_work, resume, pause, mdi, home_all ...).
+    void record(const char* event, const QString& detail = {});
+    LogEntries entries() const { return entries_; }
+    const QString& problem() const { return problem_; } // why the log cannot be read or written
+
+private:
+    config::SystemLog log_;
+    LogEntries entries_;
+    QString problem_;
+};
+
+} // namespace m350::ui
