@@ -153,4 +153,18 @@ TEST(HmiReplay, AParameterEditAtGuestLevelAsksForThePasswordAndRefusesAnOutOfRan
     EXPECT_EQ(run.state["param_value"].toString(), "12.500") << "150 was refused, 12.5 taken";
 }
 
+TEST(HmiReplay, ASimulationTypedInTheEditorRunsBesideTheMachine) {
+    HmiRun run = runHmi({"--replay", replay("program-simulation.jsonl")});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_EQ(run.state["page"].toString(), "program");
+    EXPECT_EQ(run.state["program_mode"].toString(), "simulation");
+    EXPECT_EQ(run.state["mode"].toString(), "SL");
+    EXPECT_EQ(run.state["state"].toString(), "BUSY");
+    EXPECT_GE(run.state["simulation_line"].toInt(), 3);
+    EXPECT_GT(run.state["simulation_points"].toInt(), 50); // the arcs in chords
+    for (const char* axis : {"X", "Y", "Z"}) {
+        EXPECT_EQ(run.state["machine"].toObject()[axis].toDouble(), 0.0) << axis; // the machine never moved
+    }
+}
+
 } // namespace m350::test

@@ -116,7 +116,7 @@ void ProgramPage::copyToOtherDisk() {
     if (ProgramFiles::checkName(folder, name) == ProgramFiles::NameProblem::None) {
         copy(name);
     } else {
-        askName(tr("File exists, please re-enter!", "msg 803"), name, folder, copy);
+        askName(tr("File exists, please re-enter!", "msg 803"), {}, folder, copy);
     }
 }
 
@@ -141,7 +141,7 @@ void ProgramPage::pasteFile() {
     if (ProgramFiles::checkName(folder, name) == ProgramFiles::NameProblem::None) {
         paste(name);
     } else {
-        askName(tr("File exists, please re-enter!", "msg 803"), name, folder, paste);
+        askName(tr("File exists, please re-enter!", "msg 803"), {}, folder, paste);
     }
 }
 

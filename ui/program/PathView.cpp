@@ -49,7 +49,7 @@ QPointF PathView::toScreen(const PathPoint& p) const {
     return {centre.x() + (p.x - bounds_.center().x()) * scale, centre.y() - (p.y - bounds_.center().y()) * scale};
 }
 
-// A new scale: the path's box, doubled about its centre so that growth rarely forces another.
+// A new scale: the path's box and a margin of 15 % around it, so growth seldom forces another.
 void PathView::redrawAll() {
     image_ = QImage(size().expandedTo({1, 1}), QImage::Format_RGB32);
     image_.fill(QColor("#060a10"));
@@ -67,7 +67,7 @@ void PathView::redrawAll() {
     });
     const double side = std::max({maxX - minX, maxY - minY, 1.0});
     const QPointF centre((minX + maxX) / 2.0, (minY + maxY) / 2.0);
-    bounds_ = QRectF(centre.x() - side, centre.y() - side, 2.0 * side, 2.0 * side);
+    bounds_ = QRectF(centre.x() - 0.65 * side, centre.y() - 0.65 * side, 1.3 * side, 1.3 * side);
     drawFrom(0);
 }
 

@@ -10,7 +10,7 @@ namespace m350::ui {
 
 // The simulated tool path seen from above (XY, machine coordinates): feeds solid, rapids dashed
 // and dim, the tool's place a cross. It grows as the simulation runs: new segments are drawn onto
-// a kept image, and the whole path again only when it leaves the scale (which then doubles) or
+// a kept image, and the whole path again only when it leaves the scale (a margin of 15 % is kept) or
 // the widget is resized.
 class PathView : public QWidget {
     Q_OBJECT

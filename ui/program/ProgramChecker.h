@@ -29,6 +29,8 @@ public:
     static QVector<CodeView::Mark> diagnose(const gcode::Dialect& dialect,
                                             const std::vector<config::LibraryFile>& libraries, const QString& path,
                                             const QString& text);
+    const gcode::Dialect& dialect() const { return dialect_; }
+    const std::vector<config::LibraryFile>& libraries() const { return libraries_; }
     bool pending() const { return timer_.isActive() || running_ > 0; }
 
 signals:

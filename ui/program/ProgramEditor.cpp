@@ -51,7 +51,12 @@ bool ProgramEditor::open(const QString& path, QString* error) {
     view_->document()->setModified(false);
     findings_->clear();
     retranslate();
-    checker_->schedule(file_.path, file_.text);
+    // a file of usual size shows its findings as it opens; a large one a moment later
+    if (file_.text.size() < kCheckAtOnceChars) {
+        showMarks(ProgramChecker::diagnose(checker_->dialect(), checker_->libraries(), file_.path, file_.text));
+    } else {
+        checker_->schedule(file_.path, file_.text);
+    }
     return true;
 }
 

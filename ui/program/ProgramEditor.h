@@ -20,6 +20,7 @@ class ProgramEditor : public QWidget {
 public:
     ProgramEditor(const gcode::Dialect& dialect, std::vector<config::LibraryFile> libraries, QWidget* parent = nullptr);
 
+    static constexpr qsizetype kCheckAtOnceChars = 256 * 1024;
     static constexpr qint64 kMaxBytes = 64LL * 1024 * 1024; // 文件过大,无法进行编辑操作! beyond
     bool open(const QString& path, QString* error);
     bool save(QString* error);
