@@ -25,6 +25,9 @@ inline constexpr int kCurrentWorkSystem = 78;      // #578: 0 = G92, 1..6 = G54.
 inline constexpr int kPauseLift = 70;              // mm Z rises on pause when param 91 = 1
 inline constexpr int kStopSpindleOnPause = 84;     // 1 = the spindle stops while paused
 inline constexpr int kPauseZMode = 91;             // 0 = Z stays, 1 = Z rises by param 70
+inline constexpr int kSafeZ = 69;                  // Z轴安全位置, work Z
+inline constexpr int kLiftBeforeStart = 90;        // 0 = no action, 1 = Z to the safe height (param 69) first
+inline constexpr int kPauseResumeMode = 93;        // 0 = from the block's start point, 1 = from the current point
 inline constexpr int kHomePositionX = 122;         // 122-126: machine position after homing (G28 goes here)
 inline constexpr int kHomingCycles = 106;          // approaches to the switch
 inline constexpr int kHomingSpeedX = 107;          // 107-111, mm/min (deg/min)

@@ -18,7 +18,7 @@ namespace param = config::param;
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? this : nullptr),
-      interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, machine_), store_(*config_.dialect, config_.parameters),
+      interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, scan_), store_(*config_.dialect, config_.parameters),
       magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}) {
     if (settings_.trace) {
         trace_ = std::make_unique<TraceWriter>(*settings_.trace);
@@ -118,6 +118,7 @@ bool Controller::load(const std::string& path, std::string_view text, gcode::Fil
     // Each load replaces the program (a panel loads one file after another, MDI line after line);
     // the machine, the variables and the magazine carry on.
     executor_.reset();
+    paused_.reset();
     program_ = gcode::Program{};
     diagnostics_.clear();
     gcode::Parser parser(*config_.dialect);
@@ -263,6 +264,7 @@ bool Controller::start() {
     alarm_.reset();
     pendingDialog_.reset();
     sensorWatch_.clear();
+    paused_.reset();
     if (!executor_) {
         state_ = RunState::Idle;
         return false;
@@ -277,6 +279,7 @@ bool Controller::start() {
     auto unit = program_.mainUnit();
     displayTime_ = machine_.time();
     runStartedAt_ = displayTime_;
+    runStartedFrom_ = machine_.position();
     if (!unit || !executor_->start(*unit)) {
         state_ = RunState::Finished;
         return true;

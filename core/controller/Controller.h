@@ -12,6 +12,7 @@
 #include "core/gcode/Program.h"
 #include "core/interp/ModalInterpreter.h"
 #include "core/interp/WorkOffsets.h"
+#include "core/machine/ScanMachine.h"
 #include "core/machine/SimulatedMachine.h"
 #include "core/macro/Executor.h"
 #include "core/macro/MachineAccess.h"
@@ -89,6 +90,27 @@ public:
     // not finite.
     double parameter(int n) const;
     bool setParameter(int n, double value);
+    // 断点加工 Break Run (StartAtLine.cpp). startAtLine starts the loaded program at `line` of the
+    // main file (the first block at or after it, the first time the program reaches it): the
+    // blocks before it run as a scan (ScanMachine: variables, IF/GOTO/WHILE, modal codes, F, S,
+    // spindle, coolant, outputs, tool; no motion, time or events), then the machine goes from where
+    // it stands to where the program is (Z up to the higher of the two, and param 90's safe Z; XY
+    // over; Z down at feed) and the run goes on. Refused (false, `why`) while running or holding,
+    // for a line beyond the file or in a subprogram, one the program never reaches, param 220
+    // unhomed, G41/G42 active at the line, and for what a scan cannot follow before it: a tool
+    // change with a magazine device, G31, a PMC M code, a sensor wait, an operator dialog, an alarm.
+    // A refusal moves nothing; the modal state and offsets are as before, variables as scanned.
+    bool startAtLine(std::uint32_t line, std::string* why);
+    // After 暂停 and RESET: starts again at the main file's block that ran when paused (the same
+    // pass of a loop), rebuilt as above. Param 93 = 0 runs that block from its start point; 1 from
+    // the point where the hold stopped it (a move of the main file; otherwise from its start).
+    bool resumeAtPause(std::string* why);
+    // Where the last 暂停 stopped the main file (kept through RESET until the next start).
+    struct BreakPoint {
+        std::string file;
+        std::uint32_t line = 0;
+    };
+    std::optional<BreakPoint> pauseBreakPoint() const;
     double displayTime() const { return displayTime_; }
     machine::Axes displayPosition() const { return machine_.positionAt(displayTime_); }
     RunReport snapshot() const;
@@ -210,6 +232,7 @@ private:
     interp::WorkOffsets offsets_;
     interp::ToolOffsets toolOffsets_;
     machine::SimulatedMachine machine_;
+    machine::ScanMachine scan_{machine_}; // what the interpreter drives: machine_, or a scan of it
     interp::ModalInterpreter interp_;
     macro::VariableStore store_;
     gcode::Program program_;
@@ -236,6 +259,25 @@ private:
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
+
+    // 断点加工 (StartAtLine.cpp): the main block a hold stopped, which pass over it, where it stopped
+    struct PausePoint {
+        std::uint32_t block = 0;
+        std::uint64_t pass = 0;
+        machine::Axes stoppedAt = machine::Axes::Zero();
+        machine::SimulatedMachine::Remainder rest;
+        bool mainMove = false; // the hold cut a move of that block itself, not of a call
+        machine::Axes runFrom = machine::Axes::Zero(); // where the run began (G91 programs count from it)
+    };
+    std::optional<PausePoint> paused_;
+    machine::Axes runStartedFrom_ = machine::Axes::Zero();
+    void rememberPause(const machine::SimulatedMachine::Remainder& rest);
+    bool startAt(std::uint32_t block, std::uint64_t pass, bool fromStopPoint, std::string* why);
+    std::optional<std::string> scanTo(std::uint32_t block, std::uint64_t pass, bool through, const machine::Axes& from);
+    bool inToolChange() const;
+    std::string lineText(std::uint32_t block) const;
+    void approach(const machine::Axes& target, machine::SpindleState spindle, double rpm);
+    void continueRemainder(const machine::SimulatedMachine::Remainder& rest);
 
     // manual motion and the handwheel guide (ManualMotion.cpp, HandwheelGuide.cpp)
     ManualMotionState manual_;

@@ -23,13 +23,13 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
     const int axis = info.index & 7;
     switch (info.kind) {
     case VariableKind::WorkOffset: return Value::of(offsets_.get(info.index >> 3, axis));
-    case VariableKind::MachinePosition: return Value::of(machine_.position()(info.index));
+    case VariableKind::MachinePosition: return Value::of(scan_.position()(info.index));
     case VariableKind::WorkPosition: {
         if (info.index < 0 || (info.index >> 3) == interp_.activeSlot()) {
             return Value::of(interp_.workPosition()(info.index < 0 ? info.index + 8 : axis));
         }
         double tool = axis == 2 ? interp_.toolZOffset() : 0.0;
-        return Value::of(machine_.position()(axis) - offsets_.get(info.index >> 3, axis) - tool);
+        return Value::of(scan_.position()(axis) - offsets_.get(info.index >> 3, axis) - tool);
     }
     case VariableKind::BlockEnd: return Value::of(interp_.workPosition()(info.index));
     case VariableKind::SkipPosition: // FANUC #5061-#5065: where the skip signal came, work coordinates
@@ -47,7 +47,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         watchInput(info.index, level);
         return Value::of(level);
     }
-    case VariableKind::Output: return Value::of(machine_.output(info.index));
+    case VariableKind::Output: return Value::of(scan_.output(info.index));
     case VariableKind::Homed: return Value::of(homed_[static_cast<std::size_t>(info.index)]);
     case VariableKind::Dialog: return Value::of(dialogAnswer_);
     case VariableKind::Message: return Value::of(0);
@@ -86,7 +86,7 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
                                                    std::string_view text) {
     switch (info.kind) {
     case VariableKind::WorkOffset: offsets_.set(info.index >> 3, info.index & 7, value); return std::nullopt;
-    case VariableKind::Output: machine_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
+    case VariableKind::Output: scan_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
     case VariableKind::ToolOffset: toolOffsets_.set(info.index, value); return std::nullopt;
     case VariableKind::Homed: homed_[static_cast<std::size_t>(info.index)] = value != 0.0 ? 1 : 0; return std::nullopt;
     case VariableKind::Message:

@@ -25,6 +25,7 @@ void Controller::hold() {
         return;
     }
     remainder_ = machine_.interrupt(displayTime_, false);
+    rememberPause(remainder_);
     const config::ParameterTable& p = config_.parameters;
     if (p.get(param::kStopSpindleOnPause) != 0.0 && machine_.spindleState() != machine::SpindleState::Stop) {
         spindleBeforeHold_ = std::make_pair(machine_.spindleState(), machine_.spindleRpm());
@@ -62,33 +63,38 @@ void Controller::resume() {
         machine_.spindle(spindleBeforeHold_->first, spindleBeforeHold_->second);
         spindleBeforeHold_.reset();
     }
+    continueRemainder(remainder_);
+    remainder_ = {};
+    programStop_.clear();
+    state_ = RunState::Running;
+}
+
+// The rest of what a hold cut short: the move to its end (an arc about the same center, from
+// where it stopped) or the dwell's remaining time.
+void Controller::continueRemainder(const machine::SimulatedMachine::Remainder& rest) {
     using Kind = machine::SimulatedMachine::Remainder::Kind;
-    switch (remainder_.kind) {
-    case Kind::Rapid: machine_.rapid(remainder_.target); break;
-    case Kind::Feed: machine_.feed(remainder_.target, remainder_.feed); break;
-    case Kind::Dwell: machine_.dwell(remainder_.seconds); break;
+    switch (rest.kind) {
+    case Kind::Rapid: machine_.rapid(rest.target); break;
+    case Kind::Feed: machine_.feed(rest.target, rest.feed); break;
+    case Kind::Dwell: machine_.dwell(rest.seconds); break;
     case Kind::Arc: {
-        // the rest of the arc, about the same center, from where it stopped
-        const machine::Arc& arc = *remainder_.arc;
+        const machine::Arc& arc = *rest.arc;
         machine::ArcSpec spec;
         spec.start = machine_.position();
-        spec.end = remainder_.target;
+        spec.end = rest.target;
         spec.plane = arc.plane;
         spec.clockwise = arc.sweep < 0;
         spec.centerOffset = arc.center - spec.start.head<3>();
-        auto rest = machine::makeArc(spec);
-        if (auto* done = std::get_if<machine::Arc>(&rest)) {
-            machine_.arc(*done, remainder_.feed);
+        auto remaining = machine::makeArc(spec);
+        if (auto* done = std::get_if<machine::Arc>(&remaining)) {
+            machine_.arc(*done, rest.feed);
         } else {
-            machine_.feed(remainder_.target, remainder_.feed);
+            machine_.feed(rest.target, rest.feed);
         }
         break;
     }
     case Kind::None: break;
     }
-    remainder_ = {};
-    programStop_.clear();
-    state_ = RunState::Running;
 }
 
 void Controller::reset() {

@@ -45,6 +45,7 @@ bool Executor::start(std::uint32_t unit) {
     frames_.push_back({unit, program_.units[unit].begin, 1, false, -1});
     alarm_.reset();
     hasCurrent_ = false;
+    mainStarted_ = 0;
     state_ = State::Running;
     return true;
 }
@@ -86,6 +87,10 @@ Executor::State Executor::step() {
     }
     current_ = frame.pc;
     hasCurrent_ = true;
+    if (frameIndex == 0) {
+        mainBlock_ = current_;
+        ++mainStarted_;
+    }
     const gcode::Block& block = program_.blocks[current_];
     ++blocksExecuted_;
     try {

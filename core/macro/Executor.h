@@ -42,6 +42,14 @@ public:
     std::optional<gcode::SourceLocation> location() const;
     std::size_t callDepth() const { return frames_.size(); }
     std::uint64_t blocksExecuted() const { return blocksExecuted_; }
+    // The main program's side of the run, for 断点加工: the block of the started unit that runs
+    // now (the call that is running, when inside one), how many of its blocks have started, and
+    // the block it will start next while no call is active.
+    std::optional<std::uint32_t> mainBlock() const { return mainStarted_ ? std::optional(mainBlock_) : std::nullopt; }
+    std::uint64_t mainBlocksStarted() const { return mainStarted_; }
+    std::optional<std::uint32_t> nextMainBlock() const {
+        return frames_.size() == 1 && state_ == State::Running ? std::optional(frames_.front().pc) : std::nullopt;
+    }
 
     // Stops at once with an alarm raised from outside (sim-time limit, E-stop, a device).
     void raise(AlarmCode code, std::string message);
@@ -99,6 +107,8 @@ private:
     std::uint32_t current_ = 0;
     bool hasCurrent_ = false;
     std::uint64_t blocksExecuted_ = 0;
+    std::uint32_t mainBlock_ = 0;
+    std::uint64_t mainStarted_ = 0;
     // The canned cycle a handler program runs, kept modal until G80 or G00-G03.
     struct HandlerCycle {
         std::int32_t key = 0;
