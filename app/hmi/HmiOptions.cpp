@@ -14,7 +14,9 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
     app.add_option("--config", o.configDir, "machine folder (default: the bundled M350 16-pocket linear rack)")
         ->check(CLI::ExistingDirectory);
     app.add_option("--lang", o.language, "language of the panel")->check(CLI::IsMember({"zh_CN", "en"}));
-    app.add_option("--page", o.page, "page to show")->check(CLI::IsMember({"monitor", "mdi", "io", "probe", "param", "system"}));
+    app.add_option("--page", o.page, "page to show")->check(CLI::IsMember({"monitor", "mdi", "io", "probe", "param", "system", "program"}));
+    app.add_option("--programs", o.programs, "the Program page's U disk (default: the home folder)")
+        ->check(CLI::ExistingDirectory);
     app.add_option("--screenshot", o.screenshot, "save the window as a PNG and exit");
     app.add_option("--replay", o.replay, "play operator actions (JSON Lines) in virtual time, then exit")
         ->check(CLI::ExistingFile);
