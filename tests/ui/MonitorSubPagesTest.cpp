@@ -115,13 +115,7 @@ TEST(MiddlePage, ThreePointsOnACircleCentreItsWorkZero) {
 
 TEST(RecordPage, AFinishedProgramCountsAndClearAsksFirst) {
     PanelHarness panel;
-    QTemporaryDir dir;
-    QString program = dir.filePath("piece.nc");
-    QFile file(program);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write("G91 G1 X10 F600\nM30\n");
-    file.close();
-    panel.session().loadProgram(program);
+    panel.loadProgram("piece.nc", "G91 G1 X10 F600\nM30\n");
     panel.key("START");
     panel.advance(3.0);
     panel.page("record");

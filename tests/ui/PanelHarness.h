@@ -13,6 +13,8 @@
 #include "ui/session/MachineSession.h"
 
 #include <QCoreApplication>
+#include <QDir>
+#include <QFile>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -67,6 +69,17 @@ public:
             session_->advance(kFrame);
             QCoreApplication::processEvents();
         }
+        ui::settle(*session_);
+    }
+
+    // Writes a program beside the machine folder and loads it, as the Program page's NC读取 does.
+    void loadProgram(const QString& name, const QByteArray& text) {
+        QString path = QDir(dir_.path()).filePath(name);
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(text);
+        file.close();
+        session_->loadProgram(path);
         ui::settle(*session_);
     }
 

@@ -49,14 +49,7 @@ TEST(PanelInput, CtrlArrowJogsWhileHeldAndStopsOnRelease) {
 
 TEST(PanelInput, ClickingTheOnScreenStartKeyRunsTheLoadedProgram) {
     PanelHarness panel;
-    QTemporaryDir dir;
-    QString program = dir.filePath("part.nc");
-    QFile file(program);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write("G90 G0 X12.5\nM30\n");
-    file.close();
-    panel.session().loadProgram(program);
-    ui::settle(panel.session());
+    panel.loadProgram("part.nc", "G90 G0 X12.5\nM30\n");
     QTest::mouseClick(panel.window().keyPad()->button("START"), Qt::LeftButton);
     ui::settle(panel.session());
     EXPECT_EQ(panel.window().statusLine()->modeText(), QStringLiteral("自动"));
