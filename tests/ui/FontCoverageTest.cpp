@@ -53,7 +53,7 @@ TEST(FontCoverage, APanelFontWithChineseIsPicked) {
 
 TEST(FontCoverage, EveryChineseCharacterOnEachScreenHasAGlyph) {
     PanelHarness panel;
-    for (const char* page : {"monitor", "mdi", "io", "probe"}) {
+    for (const char* page : {"monitor", "mdi", "io", "probe", "param", "system"}) {
         panel.page(QString::fromLatin1(page));
         QStringList missing = missingGlyphs(&panel.window());
         EXPECT_TRUE(missing.isEmpty()) << page << ": " << missing.join("; ").toStdString();

@@ -107,7 +107,7 @@ TEST(HmiReplay, ABadReplayFileIsRefusedWithItsLine) {
 }
 
 TEST(HmiReplay, EveryPageRendersInBothLanguages) {
-    for (const char* page : {"monitor", "mdi", "io", "probe"}) {
+    for (const char* page : {"monitor", "mdi", "io", "probe", "param", "system"}) {
         for (const char* lang : {"zh_CN", "en"}) {
             HmiRun run = runHmi({"--page", page, "--lang", lang});
             ASSERT_EQ(run.exitCode, 0) << page << " " << lang << ": " << run.errors.toStdString();

@@ -5,6 +5,7 @@
 #include "ui/panel/PanelContext.h"
 #include "ui/session/UserAccess.h"
 
+#include <QApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QJsonObject>
@@ -43,6 +44,7 @@ ParamPage::ParamPage(PanelContext& context, QWidget* parent) : Page(context, par
     auto* header = new QHBoxLayout;
     tabs_ = new QLabel(this);
     tabs_->setObjectName("paramTabs");
+    tabs_->setTextFormat(Qt::RichText);
     group_ = new QLabel(this);
     group_->setObjectName("paramGroup");
     group_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -59,15 +61,18 @@ ParamPage::ParamPage(PanelContext& context, QWidget* parent) : Page(context, par
     table_->verticalHeader()->hide();
     table_->verticalHeader()->setDefaultSectionSize(22);
     table_->horizontalHeader()->setSectionResizeMode(Note, QHeaderView::Stretch);
-    table_->setColumnWidth(Number, 56);
-    table_->setColumnWidth(Value, 110);
-    table_->setColumnWidth(Unit, 80);
+    table_->setColumnWidth(Number, 44);
+    table_->setColumnWidth(Value, 100);
+    table_->setColumnWidth(Unit, 62);
+    // the panel's own (proportional, CJK) face: the names are long and the tables' monospace one cuts them short
+    table_->setStyleSheet(QStringLiteral("QTableWidget { font-family: \"%1\"; font-size: 11pt; }")
+                              .arg(QApplication::font().family()));
     connect(table_, &QTableWidget::currentCellChanged, this, [this] { fillInfo(); });
     info_ = new QLabel(this);
     info_->setObjectName("paramInfo");
     info_->setWordWrap(true);
     info_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    info_->setFixedWidth(230);
+    info_->setFixedWidth(205);
     info_->setTextFormat(Qt::PlainText);
     row->addWidget(table_, 1);
     row->addWidget(info_);
@@ -198,7 +203,7 @@ void ParamPage::showCategory(std::size_t category) {
     for (int row = 0; row < table_->rowCount(); ++row) {
         const config::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
         table_->setItem(row, Number, new QTableWidgetItem(QString::number(info.number)));
-        table_->setItem(row, Note, new QTableWidgetItem(localName(info.nameZh, info.nameEn)));
+        table_->setItem(row, Note, new QTableWidgetItem);
         table_->setItem(row, Value, new QTableWidgetItem);
         table_->setItem(row, Unit, new QTableWidgetItem(QString::fromStdString(info.unit)));
         table_->item(row, Value)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -280,7 +285,10 @@ void ParamPage::retranslate() {
     }
     const QString factory = tr("Factory(N)", "msg 949");
     const QString user = tr("User(O)", "msg 950");
-    auto mark = [](const QString& text, bool on) { return on ? QStringLiteral("[%1]").arg(text) : text; };
+    auto mark = [](const QString& text, bool on) {
+        return on ? QStringLiteral("<span style='background:#3e5a8a;'>&nbsp;%1&nbsp;</span>").arg(text)
+                  : QStringLiteral("&nbsp;%1&nbsp;").arg(text);
+    };
     tabs_->setText(variables_ ? tr("#50-#499", "msg 388")
                               : mark(factory, tab() == Tab::Factory) + QStringLiteral("  ") + mark(user, tab() == Tab::User));
     if (variables_) {
@@ -298,6 +306,7 @@ void ParamPage::retranslate() {
         for (int row = 0; row < table_->rowCount(); ++row) {
             const config::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
             table_->item(row, Note)->setText(localName(info.nameZh, info.nameEn));
+            table_->item(row, Note)->setToolTip(localName(info.nameZh, info.nameEn));
         }
     }
     if (auto s = context().snapshot()) {
