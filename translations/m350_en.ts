@@ -1,6 +1,65 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="en_US">
 <context>
+    <name>m350::ui::BreakRunPage</name>
+    <message>
+        <source>Break Run</source>
+        <comment>msg 317</comment>
+        <translation>Break Run</translation>
+    </message>
+    <message>
+        <source>Start Line</source>
+        <comment>msg 456</comment>
+        <translation>Start Line</translation>
+    </message>
+    <message>
+        <source>Power Resume</source>
+        <comment>msg 457</comment>
+        <translation>Power Resume</translation>
+    </message>
+    <message>
+        <source>Pause Resume</source>
+        <comment>msg 458</comment>
+        <translation>Pause Resume</translation>
+    </message>
+    <message>
+        <source>Breakpoint find out, do you want to start ?/[%s]</source>
+        <comment>msg 860</comment>
+        <translation>Breakpoint find out, do you want to start ?/[%s]</translation>
+    </message>
+    <message>
+        <source>No program loaded: load one on the Program page</source>
+        <translation>No program loaded: load one on the Program page</translation>
+    </message>
+    <message>
+        <source>Start line no.:</source>
+        <comment>msg 94</comment>
+        <translation>Start line no.:</translation>
+    </message>
+    <message>
+        <source>Line %1 is not in the program</source>
+        <translation>Line %1 is not in the program</translation>
+    </message>
+    <message>
+        <source>No break point is kept in the machine folder</source>
+        <translation>No break point is kept in the machine folder</translation>
+    </message>
+    <message>
+        <source>No paused run to resume (PAUSE, then RESET)</source>
+        <translation>No paused run to resume (PAUSE, then RESET)</translation>
+    </message>
+    <message>
+        <source>BreakPoint%d:%s L:%d</source>
+        <comment>msg 102</comment>
+        <translation>BreakPoint%d:%s L:%d</translation>
+    </message>
+    <message>
+        <source>Current file:</source>
+        <comment>msg 876</comment>
+        <translation>Current file:</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::CompactDro</name>
     <message>
         <source>Mach</source>
@@ -1950,6 +2009,26 @@ STEP MPG</translation>
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>
         <translation>IN%1: no such input (IN01-IN24)</translation>
+    </message>
+    <message>
+        <source>No program loaded: load one on the Program page</source>
+        <translation>No program loaded: load one on the Program page</translation>
+    </message>
+    <message>
+        <source>Line %1 is not in the program</source>
+        <translation>Line %1 is not in the program</translation>
+    </message>
+    <message>
+        <source>No paused run to resume (PAUSE, then RESET)</source>
+        <translation>No paused run to resume (PAUSE, then RESET)</translation>
+    </message>
+    <message>
+        <source>No break point is kept in the machine folder</source>
+        <translation>No break point is kept in the machine folder</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: cannot write: %2</translation>
     </message>
     <message>
         <source>File save failed!</source>

@@ -1,6 +1,65 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>m350::ui::BreakRunPage</name>
+    <message>
+        <source>Break Run</source>
+        <comment>msg 317</comment>
+        <translation>断点加工</translation>
+    </message>
+    <message>
+        <source>Start Line</source>
+        <comment>msg 456</comment>
+        <translation>指定行加工</translation>
+    </message>
+    <message>
+        <source>Power Resume</source>
+        <comment>msg 457</comment>
+        <translation>断电断点加工</translation>
+    </message>
+    <message>
+        <source>Pause Resume</source>
+        <comment>msg 458</comment>
+        <translation>暂停断点加工</translation>
+    </message>
+    <message>
+        <source>Breakpoint find out, do you want to start ?/[%s]</source>
+        <comment>msg 860</comment>
+        <translation>文件扫描并定位成功,是否进行启动加工?/[%s]</translation>
+    </message>
+    <message>
+        <source>No program loaded: load one on the Program page</source>
+        <translation>未载入程序: 请在文件管理页面载入</translation>
+    </message>
+    <message>
+        <source>Start line no.:</source>
+        <comment>msg 94</comment>
+        <translation>起始加工行号:</translation>
+    </message>
+    <message>
+        <source>Line %1 is not in the program</source>
+        <translation>程序中没有第%1行</translation>
+    </message>
+    <message>
+        <source>No break point is kept in the machine folder</source>
+        <translation>机床目录中没有保存的断点</translation>
+    </message>
+    <message>
+        <source>No paused run to resume (PAUSE, then RESET)</source>
+        <translation>没有可恢复的暂停断点 (先暂停, 再复位)</translation>
+    </message>
+    <message>
+        <source>BreakPoint%d:%s L:%d</source>
+        <comment>msg 102</comment>
+        <translation>断点记录%d:%s第%d行</translation>
+    </message>
+    <message>
+        <source>Current file:</source>
+        <comment>msg 876</comment>
+        <translation>当前加工程序:</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::CompactDro</name>
     <message>
         <source>Mach</source>
@@ -1950,6 +2009,26 @@ STEP MPG</source>
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>
         <translation>IN%1: 无此输入口 (IN01-IN24)</translation>
+    </message>
+    <message>
+        <source>No program loaded: load one on the Program page</source>
+        <translation>未载入程序: 请在文件管理页面载入</translation>
+    </message>
+    <message>
+        <source>Line %1 is not in the program</source>
+        <translation>程序中没有第%1行</translation>
+    </message>
+    <message>
+        <source>No paused run to resume (PAUSE, then RESET)</source>
+        <translation>没有可恢复的暂停断点 (先暂停, 再复位)</translation>
+    </message>
+    <message>
+        <source>No break point is kept in the machine folder</source>
+        <translation>机床目录中没有保存的断点</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: 无法写入: %2</translation>
     </message>
     <message>
         <source>File save failed!</source>

@@ -101,11 +101,12 @@ public:
     // change with a magazine device, G31, a PMC M code, a sensor wait, an operator dialog, an alarm.
     // A refusal moves nothing; the modal state and offsets are as before, variables as scanned.
     bool startAtLine(std::uint32_t line, std::string* why);
-    // After 暂停 and RESET: starts again at the main file's block that ran when paused (the same
+    // After 暂停 and RESET (or RESET alone mid-run): starts again at the main file's block that ran when paused (the same
     // pass of a loop), rebuilt as above. Param 93 = 0 runs that block from its start point; 1 from
     // the point where the hold stopped it (a move of the main file; otherwise from its start).
     bool resumeAtPause(std::string* why);
-    // Where the last 暂停 stopped the main file (kept through RESET until the next start).
+    // Where the last 暂停 (or a RESET mid-run) stopped the main file, kept until the next start;
+    // `file` is the main file's path.
     struct BreakPoint {
         std::string file;
         std::uint32_t line = 0;

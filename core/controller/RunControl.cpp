@@ -98,7 +98,10 @@ void Controller::continueRemainder(const machine::SimulatedMachine::Remainder& r
 }
 
 void Controller::reset() {
-    machine_.interrupt(displayTime_, true);
+    machine::SimulatedMachine::Remainder rest = machine_.interrupt(displayTime_, true);
+    if (state_ == RunState::Running) {
+        rememberPause(rest); // a run stopped by RESET resumes as a paused one does
+    }
     if (machine_.time() < displayTime_) {
         machine_.blockTime(displayTime_ - machine_.time());
     }

@@ -167,4 +167,15 @@ TEST(HmiReplay, ASimulationTypedInTheEditorRunsBesideTheMachine) {
     }
 }
 
+TEST(HmiReplay, PauseResetAndPauseResumeFinishTheProgramWhereAnUninterruptedRunEnds) {
+    HmiRun run = runHmi({"--lang", "en", "--replay", replay("break-run.jsonl")});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_EQ(run.state["page"].toString(), "breakrun");
+    EXPECT_EQ(run.state["state"].toString(), "READY");
+    EXPECT_NEAR(run.state["work"].toObject()["X"].toDouble(), 60.0, 1e-6);
+    EXPECT_NEAR(run.state["work"].toObject()["Y"].toDouble(), 40.0, 1e-6);
+    EXPECT_TRUE(run.state["alarm"].isNull());
+    EXPECT_TRUE(run.state["break_points"].toString().contains("brk.nc L:5")) << run.state["break_points"].toString().toStdString();
+}
+
 } // namespace m350::test

@@ -145,7 +145,7 @@ QVector<Page::Softkey> MonitorPage::softkeys() const {
             {tr("Go Work Zero", "msg 314"), true, {}},
             {tr("Go Home", "msg 315"), true, {}},
             {tr("Clear", "msg 316"), true, {}},
-            {tr("Break Run", "msg 317"), false, later},
+            {tr("Break Run", "msg 317"), true, {}},
             {tr("Manual", "msg 318"), false, later},
             {tr("Coord Set", "msg 319"), true, {}},
             {tr("MDI", "msg 320"), true, {}},
@@ -169,6 +169,7 @@ void MonitorPage::softkey(int number) {
     case 3: openMenu(Menu::GoWorkZero); break;
     case 4: openMenu(Menu::GoHome); break;
     case 5: openMenu(Menu::Clear); break;
+    case 6: emit navigate(QStringLiteral("breakrun")); break;
     case 8: emit navigate(QStringLiteral("coord")); break;
     case 9: emit navigate(QStringLiteral("mdi")); break;
     case 10: emit navigate(QStringLiteral("middle")); break;

@@ -3,6 +3,7 @@
 #include "ui/actions/ActionRecorder.h"
 #include "ui/actions/KeyboardMap.h"
 #include "ui/i18n/Language.h"
+#include "ui/pages/BreakRunPage.h"
 #include "ui/pages/CoordPage.h"
 #include "ui/pages/IoPage.h"
 #include "ui/pages/LogPage.h"
@@ -93,6 +94,7 @@ void MainWindow::addPages() {
     addPage(new CoordPage(context_, stack_));
     addPage(new MiddlePage(context_, stack_));
     addPage(new RecordPage(context_, stack_));
+    addPage(new BreakRunPage(context_, stack_));
     addPage(new ProgramPage(context_, stack_));
     addPage(new ParamPage(context_, stack_));
     addPage(new SystemPage(context_, stack_));

@@ -57,6 +57,9 @@ void MachineSession::setVariable(int number, double value) {
     post([=](SessionWorker& w) { w.setVariable(number, value); });
 }
 void MachineSession::clearWorkRecord() { post([](SessionWorker& w) { w.clearWorkRecord(); }); }
+void MachineSession::startAtLine(int line) { post([line](SessionWorker& w) { w.startAtLine(line); }); }
+void MachineSession::resumeAtPause() { post([](SessionWorker& w) { w.resumeAtPause(); }); }
+void MachineSession::powerResume() { post([](SessionWorker& w) { w.powerResume(); }); }
 void MachineSession::jogPress(int axis, int direction) {
     post([axis, direction](SessionWorker& w) { w.jogPress(axis, direction); });
 }

@@ -57,6 +57,11 @@ public:
     void setWorkPosition(int axis, double value); // 坐标管理 / 分中: the current position gets this work coordinate
     void setVariable(int number, double value);   // #50-#499, the offsets #800-#844 ...
     void clearWorkRecord();                       // 清除加工记录: the counters and the run times
+    // 断点加工 (SessionWorkerBreakRun.cpp): the loaded file from a line (指定行加工), again at the block
+    // the last 暂停 stopped (暂停断点加工), at the break point kept in the machine folder (断电断点加工)
+    void startAtLine(int line);
+    void resumeAtPause();
+    void powerResume();
     void jogPress(int axis, int direction);
     void jogRelease(int axis);
     void cycleJogMode(); // CONT -> STEP -> MPG

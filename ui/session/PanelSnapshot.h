@@ -28,6 +28,15 @@ struct WorkRecord {
     int finished = 0;       // runs finished since the record was cleared
 };
 
+// 断点加工: where the last 暂停 stopped the loaded file (line 0: none), and the break point kept in
+// the machine folder for 断电断点加工 (it survives a restart).
+struct BreakPoints {
+    QString pauseFile;
+    int pauseLine = 0;
+    QString keptFile;
+    int keptLine = 0;
+};
+
 // One immutable picture of the machine, published by the session from its worker thread. Widgets
 // keep the latest one and read nothing else.
 struct PanelSnapshot {
@@ -43,6 +52,7 @@ struct PanelSnapshot {
     QVector<double> userVariables; // #50-#499 while the Param page watches them (NaN: vacant), else empty
     std::shared_ptr<const std::vector<config::LogEntry>> log; // 系统日志, oldest first (shared, never changed)
     WorkRecord workRecord;
+    BreakPoints breakPoints;
     qint64 publishedNs = 0;    // steady clock when the worker published it (the panel's latency meter)
 };
 

@@ -151,6 +151,7 @@ void SessionWorker::publish() {
     snapshot->homingPrompt = controller_->needsBootHomingPrompt();
     snapshot->log = log_->entries();
     snapshot->workRecord = workRecord_;
+    snapshot->breakPoints = breakPoints();
     snapshot->userLevel = userLevel_;
     if (watchVariables_) {
         snapshot->userVariables = userVariables();
@@ -205,12 +206,14 @@ void SessionWorker::pause() {
         log_->record("pause", QString::fromStdString(controller_->panelStatus().file));
     }
     controller_->hold();
+    keepBreakPoint();
     publish();
 }
 
 void SessionWorker::reset() {
     log_->record("reset");
     controller_->reset();
+    keepBreakPoint();
     activity_ = Activity::None;
     lastError_.clear();
     publish();

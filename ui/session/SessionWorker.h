@@ -8,6 +8,8 @@
 #include <QTimer>
 
 #include <memory>
+#include <optional>
+#include <utility>
 
 namespace m350::controller {
 class Controller;
@@ -41,6 +43,11 @@ public:
     void setWorkPosition(int axis, double value);
     void setVariable(int number, double value);
     void clearWorkRecord();
+    // 断点加工 (SessionWorkerBreakRun.cpp); a pause or a reset mid-run keeps the break point in the
+    // machine folder's `breakpoint` file
+    void startAtLine(int line);
+    void resumeAtPause();
+    void powerResume();
     void jogPress(int axis, int direction);
     void jogRelease(int axis);
     void cycleJogMode();
@@ -80,6 +87,10 @@ private:
     bool loadCurrentFile();
     bool saveParameters(const std::map<int, double>& values); // into params.toml; refuses when it cannot
     QVector<double> userVariables(); // #50-#499, NaN for a vacant one
+    void startedAt(const char* event, bool started, const std::string& why);
+    void keepBreakPoint();
+    BreakPoints breakPoints() const;
+    mutable std::optional<std::pair<QString, int>> keptBreak_; // the machine folder's `breakpoint`, read once
 
     std::unique_ptr<controller::Controller> controller_;
     std::unique_ptr<SimulationRun> simulation_;

@@ -1,0 +1,127 @@
+// 断点加工 through the session: start the loaded file at a line, resume at the paused block, and
+// the break point the machine folder keeps for 断电断点加工 (a file `breakpoint`: the program's
+// path on one line, the line number on the next, written atomically).
+#include "ui/session/SessionWorker.h"
+
+#include "core/controller/Controller.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QSaveFile>
+
+namespace m350::ui {
+
+using controller::Controller;
+
+namespace {
+
+QString breakPointPath(const std::string& folder) {
+    return QDir(QString::fromStdString(folder)).filePath(QStringLiteral("breakpoint"));
+}
+
+} // namespace
+
+void SessionWorker::startAtLine(int line) {
+    lastError_.clear();
+    if (busy()) {
+        refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
+        return;
+    }
+    if (programFile_.isEmpty()) {
+        refuse(tr("No program loaded: load one on the Program page"));
+        return;
+    }
+    if (line <= 0) {
+        refuse(tr("Line %1 is not in the program").arg(line));
+        return;
+    }
+    if (!loadCurrentFile()) {
+        return;
+    }
+    std::string why;
+    startedAt("start_line", controller_->startAtLine(static_cast<std::uint32_t>(line), &why), why);
+}
+
+void SessionWorker::resumeAtPause() {
+    lastError_.clear();
+    if (!fileLoaded_) {
+        refuse(tr("No paused run to resume (PAUSE, then RESET)"));
+        return;
+    }
+    std::string why;
+    startedAt("break_run", controller_->resumeAtPause(&why), why);
+}
+
+void SessionWorker::powerResume() {
+    lastError_.clear();
+    BreakPoints kept = breakPoints();
+    if (kept.keptLine <= 0) {
+        refuse(tr("No break point is kept in the machine folder"));
+        return;
+    }
+    if (busy()) {
+        refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
+        return;
+    }
+    if (kept.keptFile != programFile_) {
+        programFile_ = kept.keptFile;
+        fileLoaded_ = false;
+    }
+    if (!loadCurrentFile()) {
+        return;
+    }
+    std::string why;
+    startedAt("break_run", controller_->startAtLine(static_cast<std::uint32_t>(kept.keptLine), &why), why);
+}
+
+void SessionWorker::startedAt(const char* event, bool started, const std::string& why) {
+    if (!started) {
+        refuse(QString::fromStdString(why));
+        return;
+    }
+    activity_ = Activity::Auto;
+    log_->record(event, programFile_);
+    workRecord_.file = programFile_;
+    if (workRecord_.startedAt.isEmpty()) {
+        workRecord_.startedAt = QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
+    }
+    publish();
+}
+
+// After a pause or a reset mid-run: the break point goes to the machine folder, so a restart
+// can resume there.
+void SessionWorker::keepBreakPoint() {
+    auto point = controller_->pauseBreakPoint();
+    if (!point) {
+        return;
+    }
+    QSaveFile file(breakPointPath(folder_));
+    QByteArray text = QString::fromStdString(point->file).toUtf8() + '\n' + QByteArray::number(point->line) + '\n';
+    if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size() || !file.commit()) {
+        lastError_ = tr("%1: cannot write: %2").arg(file.fileName(), file.errorString());
+        return;
+    }
+    keptBreak_ = std::make_pair(QString::fromStdString(point->file), static_cast<int>(point->line));
+}
+
+BreakPoints SessionWorker::breakPoints() const {
+    BreakPoints out;
+    if (auto point = controller_->pauseBreakPoint()) {
+        out.pauseFile = QString::fromStdString(point->file);
+        out.pauseLine = static_cast<int>(point->line);
+    }
+    if (!keptBreak_) {
+        keptBreak_.emplace();
+        QFile file(breakPointPath(folder_));
+        QList<QByteArray> lines = file.open(QIODevice::ReadOnly) ? file.readAll().split('\n') : QList<QByteArray>{};
+        if (lines.size() >= 2) {
+            *keptBreak_ = {QString::fromUtf8(lines[0]), lines[1].trimmed().toInt()};
+        }
+    }
+    out.keptFile = keptBreak_->first;
+    out.keptLine = keptBreak_->second;
+    return out;
+}
+
+} // namespace m350::ui
