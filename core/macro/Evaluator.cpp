@@ -55,7 +55,7 @@ Value Evaluator::evaluate(gcode::ExprId id) {
         double v = number(node.lhs);
         return Value::of(node.op == static_cast<std::uint8_t>(gcode::UnaryOp::Negate) ? -v : v);
     }
-    case ExprKind::Binary: return binary(node);
+    case ExprKind::Binary: return binaryChain(id);
     case ExprKind::Function: return Value::of(function(node));
     }
     return Value::of(0);
@@ -117,10 +117,28 @@ void Evaluator::writeVariable(int number, Value value, std::string_view text, st
     }
 }
 
-Value Evaluator::binary(const ExprNode& node) {
+// `1+1+1+...` parses into a left-deep chain as long as the line: evaluated along its left spine
+// with a loop, so a chain of any length needs no deeper stack than one of its operands.
+Value Evaluator::binaryChain(gcode::ExprId id) {
+    spine_.clear();
+    while (pool_[id].kind == ExprKind::Binary) {
+        spine_.push_back(id);
+        id = pool_[id].lhs;
+    }
+    std::vector<gcode::ExprId> spine;
+    spine.swap(spine_); // the right operands may hold chains of their own
+    Value value = evaluate(id);
+    for (auto it = spine.rbegin(); it != spine.rend(); ++it) {
+        const ExprNode& node = pool_[*it];
+        value = binary(node, value, evaluate(node.rhs));
+    }
+    spine.clear();
+    spine_.swap(spine); // keep the capacity for the next expression
+    return value;
+}
+
+Value Evaluator::binary(const ExprNode& node, Value lhs, Value rhs) {
     auto op = static_cast<BinaryOp>(node.op);
-    Value lhs = evaluate(node.lhs);
-    Value rhs = evaluate(node.rhs);
     if (op == BinaryOp::Eq || op == BinaryOp::Ne) {
         bool equal = (lhs.vacant || rhs.vacant) ? (lhs.vacant && rhs.vacant) : lhs.number == rhs.number;
         return Value::of((op == BinaryOp::Eq) == equal ? 1.0 : 0.0);

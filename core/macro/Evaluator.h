@@ -6,6 +6,8 @@
 #include "core/macro/Value.h"
 #include "core/macro/VariableStore.h"
 
+#include <vector>
+
 namespace m350::macro {
 
 // Evaluates expression trees against the variables. FANUC's vacant rules: arithmetic and
@@ -28,13 +30,15 @@ public:
     void writeVariable(int number, Value value, std::string_view text, std::uint32_t column);
 
 private:
-    Value binary(const gcode::ExprNode& node);
+    Value binaryChain(gcode::ExprId id);
+    Value binary(const gcode::ExprNode& node, Value lhs, Value rhs);
     double function(const gcode::ExprNode& node);
 
     const gcode::ExpressionPool& pool_;
     const gcode::Dialect& dialect_;
     VariableStore& store_;
     MachineAccess& machine_;
+    std::vector<gcode::ExprId> spine_; // binaryChain's scratch, kept for its capacity
 };
 
 } // namespace m350::macro

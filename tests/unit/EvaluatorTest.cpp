@@ -339,3 +339,18 @@ TEST(EvaluatorFanuc, CStyleComparisonsAreRejected) {
 }
 
 } // namespace
+
+namespace m350::test {
+
+// Issue 13: a chain of 150,000 operators on one line crashed the evaluator (one stack frame each).
+TEST(EvaluatorChain, AVeryLongOperatorChainIsEvaluatedWithoutDeepRecursion) {
+    std::string line = "#1=1";
+    for (int i = 0; i < 150000; ++i) {
+        line += "+1";
+    }
+    auto run = runM350(line + "\nM30\n");
+    EXPECT_RUN_OK(run);
+    EXPECT_DOUBLE_EQ(run.number(1), 150001.0);
+}
+
+} // namespace m350::test
