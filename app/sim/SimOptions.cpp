@@ -19,8 +19,23 @@ double parseNumber(const std::string& text, const std::string& what) {
     if (ec != std::errc() || ptr != text.data() + text.size()) {
         throw CLI::ValidationError(what, "'" + text + "' is not a number");
     }
+    if (!std::isfinite(v)) {
+        throw CLI::ValidationError(what, "'" + text + "' is not a finite number");
+    }
     return v;
 }
+
+// CLI11's PositiveNumber lets "nan" through (nan <= 0 is false), which turned the runaway guard off.
+const CLI::Validator positiveFinite(
+    [](std::string& text) -> std::string {
+        double v = 0;
+        auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v) || v <= 0.0) {
+            return "'" + text + "' is not a positive finite number of seconds";
+        }
+        return {};
+    },
+    "POSITIVE");
 
 int parseWhole(const std::string& text, const std::string& what) {
     double v = parseNumber(text, what);
@@ -64,10 +79,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--print", printList, "variables to report, e.g. 1,100,1300");
         cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE");
         cmd->add_option("--max-sim-time", o.settings.maxSimTime, "simulated seconds before a runaway stops")
-            ->check(CLI::PositiveNumber);
+            ->check(positiveFinite);
         cmd->add_option("--sensor-timeout", o.settings.sensorTimeout,
                         "simulated seconds a macro may wait for a sensor input before an alarm (default 10)")
-            ->check(CLI::PositiveNumber);
+            ->check(positiveFinite);
     };
     CLI::App* run = app.add_subcommand("run", "run a program to its end");
     run->add_option("PROGRAM", o.program, "program file (.nc)")->required();

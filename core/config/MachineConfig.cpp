@@ -45,6 +45,11 @@ int numberKey(const fs::path& file, std::string_view key, int low, int high, con
 
 double numberValue(const fs::path& file, const toml::node& node, std::string_view key) {
     if (auto v = node.value<double>()) {
+        if (!std::isfinite(*v)) {
+            // nan or inf as a position, feed or time would stop virtual time from ever advancing
+            fail(file, "line " + std::to_string(node.source().begin.line) + ": '" + std::string(key) +
+                           "' must be a finite number, not " + (std::isnan(*v) ? "nan" : "inf"));
+        }
         return *v;
     }
     fail(file, "'" + std::string(key) + "' must be a number");

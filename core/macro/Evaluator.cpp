@@ -56,7 +56,7 @@ Value Evaluator::evaluate(gcode::ExprId id) {
         return Value::of(node.op == static_cast<std::uint8_t>(gcode::UnaryOp::Negate) ? -v : v);
     }
     case ExprKind::Binary: return binaryChain(id);
-    case ExprKind::Function: return Value::of(function(node));
+    case ExprKind::Function: return finite(Value::of(function(node)), node.column);
     }
     return Value::of(0);
 }
@@ -117,6 +117,17 @@ void Evaluator::writeVariable(int number, Value value, std::string_view text, st
     }
 }
 
+// A result that overflowed or is not a number never becomes a position, feed or time: FANUC
+// alarms here too.
+Value Evaluator::finite(Value value, std::uint32_t column) {
+    if (!value.vacant && !std::isfinite(value.number)) {
+        throw MacroError{AlarmCode::InvalidArgument,
+                         std::isnan(value.number) ? "the result is not a number (nan)" : "arithmetic overflow: the result is infinite",
+                         column};
+    }
+    return value;
+}
+
 // `1+1+1+...` parses into a left-deep chain as long as the line: evaluated along its left spine
 // with a loop, so a chain of any length needs no deeper stack than one of its operands.
 Value Evaluator::binaryChain(gcode::ExprId id) {
@@ -130,7 +141,7 @@ Value Evaluator::binaryChain(gcode::ExprId id) {
     Value value = evaluate(id);
     for (auto it = spine.rbegin(); it != spine.rend(); ++it) {
         const ExprNode& node = pool_[*it];
-        value = binary(node, value, evaluate(node.rhs));
+        value = finite(binary(node, value, evaluate(node.rhs)), node.column);
     }
     spine.clear();
     spine_.swap(spine); // keep the capacity for the next expression

@@ -30,6 +30,7 @@ public:
     void writeVariable(int number, Value value, std::string_view text, std::uint32_t column);
 
 private:
+    static Value finite(Value value, std::uint32_t column);
     Value binaryChain(gcode::ExprId id);
     Value binary(const gcode::ExprNode& node, Value lhs, Value rhs);
     double function(const gcode::ExprNode& node);

@@ -1,0 +1,49 @@
+// Issue 13: nan and infinity are never positions, feeds or times. Each of these hung m350-sim at
+// 100 % CPU (the virtual clock never passed the runaway guard) or turned the guard off.
+#include "tests/cli/CliFixture.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace m350::clitest {
+
+TEST_F(CliTest, ANanOrInfiniteValueOnTheCommandLineIsAUsageError) {
+    for (std::vector<std::string> args : {std::vector<std::string>{"mdi", "G1 X#1 F100", "--var", "1=nan"},
+                                          {"mdi", "T2", "--param", "811=nan"},
+                                          {"mdi", "G1 X1 F100", "--param", "61=inf"},
+                                          {"mdi", "G1 X1 F100", "--max-sim-time", "nan"},
+                                          {"mdi", "G1 X1 F100", "--sensor-timeout", "inf"}}) {
+        ProcessResult r = sim(args);
+        EXPECT_EQ(r.exitStatus, kExitUsage) << args[2] << " " << args[3] << ": " << r.err;
+        EXPECT_NE(r.err.find("finite"), std::string::npos) << r.err;
+    }
+}
+
+TEST_F(CliTest, ArithmeticThatOverflowsAlarmsOnItsLine) {
+    ProcessResult r = sim({"mdi", "#1=1000000000*1000000000", "#2=#1*#1*#1*#1*#1*#1*#1*#1*#1*#1*#1*#1*#1*#1*#1*#1*#1*#1",
+                           "G1 X#2 F100"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    json alarm = output(r)["alarm"];
+    EXPECT_EQ(alarm.value("code", ""), "invalid_argument");
+    EXPECT_EQ(alarm.value("line", 0), 2);
+    EXPECT_NE(alarm.value("message", "").find("overflow"), std::string::npos) << alarm;
+}
+
+TEST_F(CliTest, ANanInParamsTomlIsRefusedNamingTheLine) {
+    std::filesystem::path machine = std::filesystem::path(M350_MACHINES_DIR) / "m350-linear16";
+    std::filesystem::path copy = write("machine/keep", "").parent_path();
+    std::filesystem::copy(machine, copy,
+                          std::filesystem::copy_options::overwrite_existing | std::filesystem::copy_options::recursive);
+    std::ifstream in(copy / "params.toml");
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    text.replace(text.find("811 = "), 6, "811 = nan #");
+    write("machine/params.toml", text);
+    ProcessResult r = sim({"mdi", "G0 X1", "--config", copy.string()});
+    EXPECT_EQ(r.exitStatus, kExitError) << r.err;
+    EXPECT_NE(r.err.find("params.toml"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("'811' must be a finite number, not nan"), std::string::npos) << r.err;
+}
+
+} // namespace m350::clitest
