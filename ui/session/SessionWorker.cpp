@@ -336,91 +336,6 @@ void SessionWorker::clearWorkRecord() {
     publish();
 }
 
-void SessionWorker::jogPress(int axis, int direction) {
-    lastError_.clear();
-    controller_->jogPress(axis, direction);
-    publish();
-}
-
-void SessionWorker::jogRelease(int axis) {
-    lastError_.clear();
-    controller_->jogRelease(axis);
-    publish();
-}
-
-void SessionWorker::cycleJogMode() {
-    lastError_.clear();
-    using Mode = Controller::JogMode;
-    switch (controller_->jogMode()) {
-    case Mode::Continuous: controller_->setJogMode(Mode::Step); break;
-    case Mode::Step: controller_->setJogMode(Mode::Mpg); break;
-    case Mode::Mpg: controller_->setJogMode(Mode::Continuous); break;
-    }
-    publish();
-}
-
-void SessionWorker::setJogStep(double distance) {
-    lastError_.clear();
-    controller_->setJogStep(distance);
-    publish();
-}
-
-void SessionWorker::toggleJogHighSpeed() {
-    lastError_.clear();
-    jogHigh_ = !jogHigh_;
-    controller_->setJogHighSpeed(jogHigh_);
-    publish();
-}
-
-void SessionWorker::wheel(int axis, int multiplier, int detents, double seconds) {
-    lastError_.clear();
-    controller_->wheelTurn(axis, multiplier, detents, seconds);
-    publish();
-}
-
-void SessionWorker::toggleHandwheelGuide() {
-    lastError_.clear();
-    controller_->setHandwheelGuide(!controller_->handwheelGuide());
-    publish();
-}
-
-void SessionWorker::setGuideRetrace(bool retrace) {
-    lastError_.clear();
-    controller_->setGuideReverse(retrace ? Controller::GuideReverse::Retrace : Controller::GuideReverse::Hold);
-    publish();
-}
-
-// The override keys: 0 back to 100 %, else a step of `step` percent.
-void SessionWorker::feedOverrideKey(int step) {
-    lastError_.clear();
-    feedOverride_ = controller_->setFeedOverride(step == 0 ? 100.0 : feedOverride_ + step);
-    publish();
-}
-
-void SessionWorker::spindleOverrideKey(int step) {
-    lastError_.clear();
-    spindleOverride_ = controller_->setSpindleOverride(step == 0 ? 100.0 : spindleOverride_ + step);
-    publish();
-}
-
-// The panel's spindle keys run M-codes as MDI lines would (the M350 runs M3.nc for its M3 key).
-void SessionWorker::spindleKey(int code) {
-    if (code == 0) {
-        bool turning = controller_->spindleDisplay() != machine::SpindleState::Stop;
-        code = turning ? 5 : 3;
-    }
-    runMdi({QStringLiteral("M%1").arg(code)}, Activity::SpindleKey);
-}
-
-void SessionWorker::setOutput(int port, int level) {
-    lastError_.clear();
-    if (!controller_->setOutputByOperator(port, level)) {
-        refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
-        return;
-    }
-    publish();
-}
-
 void SessionWorker::setParameter(int number, double value) {
     lastError_.clear();
     const double before = controller_->parameter(number);
@@ -432,23 +347,6 @@ void SessionWorker::setParameter(int number, double value) {
         return;
     }
     log_->record("param", QStringLiteral("[%1] %2 -> %3").arg(number).arg(before).arg(value));
-    publish();
-}
-
-void SessionWorker::forceInput(int pin, MachineSession::Fault fault, int level, double seconds) {
-    lastError_.clear();
-    if (pin < 1 || pin > machine::kInputCount) {
-        refuse(tr("IN%1: no such input (IN01-IN24)").arg(pin));
-        return;
-    }
-    std::optional<machine::InputFault> put;
-    switch (fault) {
-    case MachineSession::Fault::None: break;
-    case MachineSession::Fault::Stuck: put = machine::InputFault::stuck(level); break;
-    case MachineSession::Fault::Slow: put = machine::InputFault::delayed(seconds); break;
-    case MachineSession::Fault::Bouncing: put = machine::InputFault::bouncing(seconds); break;
-    }
-    controller_->setInputFault(pin, put);
     publish();
 }
 
