@@ -131,6 +131,11 @@ Value Evaluator::finite(Value value, std::uint32_t column) {
 // `1+1+1+...` parses into a left-deep chain as long as the line: evaluated along its left spine
 // with a loop, so a chain of any length needs no deeper stack than one of its operands.
 Value Evaluator::binaryChain(gcode::ExprId id) {
+    const ExprNode& top = pool_[id];
+    if (pool_[top.lhs].kind != ExprKind::Binary) { // no chain: the common case, no bookkeeping
+        Value lhs = evaluate(top.lhs);
+        return finite(binary(top, lhs, evaluate(top.rhs)), top.column);
+    }
     spine_.clear();
     while (pool_[id].kind == ExprKind::Binary) {
         spine_.push_back(id);
