@@ -1,6 +1,7 @@
 // 参数管理 and 系统管理 as an operator uses them: levels and passwords, refused and accepted values,
 // params.toml after a restart, search, backup and restore, the #50-#499 view, 密码设置.
 #include "tests/ui/PanelHarness.h"
+#include "ui/panel/PromptBox.h"
 
 #include "ui/pages/ParamPage.h"
 #include "ui/pages/SystemPage.h"
@@ -111,6 +112,7 @@ TEST(ParamPage, AGuestIsAskedForAPasswordAndAWrongOneChangesNothing) {
     search(panel, 129);
     panel.key("ENTER");
     EXPECT_TRUE(panel.window().state()["prompt"].toString().contains(QStringLiteral("请输入[操作员]及以上密码")));
+    EXPECT_TRUE(panel.window().prompt()->secret()) << "a password is typed as dots";
     panel.type("wrong1");
     panel.key("ENTER");
     EXPECT_TRUE(panel.window().messageText().contains(QStringLiteral("解锁密码输入错误!")));

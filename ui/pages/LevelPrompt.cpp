@@ -19,7 +19,7 @@ QString passwordQuestion(config::UserLevel level) {
 } // namespace
 
 void LevelPrompt::askPassword(const PanelContext& context, Level level, std::function<void()> opened) {
-    context.askText(passwordQuestion(level), {}, [&context, level, opened](std::optional<QString> password) {
+    context.askSecret(passwordQuestion(level), [&context, level, opened](std::optional<QString> password) {
         if (!password) {
             return;
         }
@@ -61,7 +61,7 @@ void LevelPrompt::askNewPassword(const PanelContext& context) {
         askLevel(context);
         return;
     }
-    context.askText(tr("Pls input new password:", "msg 922"), {}, [&context](std::optional<QString> first) {
+    context.askSecret(tr("Pls input new password:", "msg 922"), [&context](std::optional<QString> first) {
         if (!first) {
             return;
         }
@@ -69,7 +69,7 @@ void LevelPrompt::askNewPassword(const PanelContext& context) {
             context.notify(tr("The No. of characters < 6,pls input again!", "msg 918"));
             return;
         }
-        context.askText(tr("Pls input password again:", "msg 921"), {},
+        context.askSecret(tr("Pls input password again:", "msg 921"),
                         [&context, first = *first](std::optional<QString> second) {
                             if (!second) {
                                 return;

@@ -15,4 +15,8 @@ void PanelContext::askText(const QString& question, const QString& initial,
     prompt_->ask(question, true, initial, std::move(answer));
 }
 
+void PanelContext::askSecret(const QString& question, std::function<void(std::optional<QString>)> answer) const {
+    prompt_->ask(question, true, {}, std::move(answer), true);
+}
+
 } // namespace m350::ui

@@ -27,6 +27,8 @@ public:
     // A value to type; nullopt when the operator pressed Esc.
     void askText(const QString& question, const QString& initial,
                  std::function<void(std::optional<QString>)> answer) const;
+    // A password: typed as dots.
+    void askSecret(const QString& question, std::function<void(std::optional<QString>)> answer) const;
     // A line on the message line (the panel's own notices, beside the macro's #1503 text).
     void notify(const QString& text) const {
         if (notify_) {

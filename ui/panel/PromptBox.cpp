@@ -25,12 +25,13 @@ PromptBox::PromptBox(QWidget* parent) : QDialog(parent) {
     setMinimumWidth(420);
 }
 
-void PromptBox::ask(const QString& question, bool withText, const QString& initial, Answer answer) {
+void PromptBox::ask(const QString& question, bool withText, const QString& initial, Answer answer, bool secret) {
     if (answer_) {
         finishWith(std::nullopt); // a newer question replaces an unanswered one
     }
     question_->setText(question);
     edit_->setVisible(withText);
+    edit_->setEchoMode(secret ? QLineEdit::Password : QLineEdit::Normal);
     edit_->setText(initial);
     hint_->setText(tr("[Enter] OK    [Esc] Cancel"));
     answer_ = std::move(answer);
@@ -39,6 +40,7 @@ void PromptBox::ask(const QString& question, bool withText, const QString& initi
 
 QString PromptBox::question() const { return question_->text(); }
 QString PromptBox::textValue() const { return edit_->text(); }
+bool PromptBox::secret() const { return edit_->echoMode() == QLineEdit::Password; }
 
 void PromptBox::type(const QString& text) {
     if (edit_->isVisible()) {

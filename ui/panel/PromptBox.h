@@ -19,10 +19,12 @@ public:
     explicit PromptBox(QWidget* parent);
 
     using Answer = std::function<void(std::optional<QString>)>; // nullopt: Esc
-    void ask(const QString& question, bool withText, const QString& initial, Answer answer);
+    // `secret`: the typed text shows as dots (passwords).
+    void ask(const QString& question, bool withText, const QString& initial, Answer answer, bool secret = false);
     bool active() const { return isVisible(); }
     QString question() const;
     QString textValue() const;
+    bool secret() const; // the text shows as dots
     void type(const QString& text);
     void backspace();
     void confirm(); // Enter
