@@ -60,6 +60,7 @@ private:
     void renameFile();
     void copyToOtherDisk();
     void pasteFile();
+    void copyInto(const QString& from, const QString& folder, bool selectCopy);
     void clearLocal();
     void askName(const QString& question, const QString& initial, const QString& folder,
                  std::function<void(const QString&)> done);

@@ -102,22 +102,7 @@ void ProgramPage::copyToOtherDisk() {
     const ProgramFiles::Disk other =
         list_->disk() == ProgramFiles::Disk::User ? ProgramFiles::Disk::Local : ProgramFiles::Disk::User;
     clipboard_ = from;
-    const QString folder = folderOf(other);
-    const QString name = QFileInfo(from).fileName();
-    auto copy = [this, from, folder](const QString& target) {
-        QString error;
-        if (!ProgramFiles::copy(from, QDir(folder).filePath(target), &error)) {
-            context().notify(error);
-            return;
-        }
-        context().notify(tr("Copy successful!", "msg 955"));
-        list_->refresh();
-    };
-    if (ProgramFiles::checkName(folder, name) == ProgramFiles::NameProblem::None) {
-        copy(name);
-    } else {
-        askName(tr("File exists, please re-enter!", "msg 803"), {}, folder, copy);
-    }
+    copyInto(from, folderOf(other), false);
 }
 
 void ProgramPage::pasteFile() {
@@ -125,10 +110,12 @@ void ProgramPage::pasteFile() {
         context().notify(tr("file does not exist!", "msg 842"));
         return;
     }
-    const QString from = clipboard_;
-    const QString folder = list_->folder();
-    const QString name = QFileInfo(from).fileName();
-    auto paste = [this, from, folder](const QString& target) {
+    copyInto(clipboard_, list_->folder(), true);
+}
+
+// Copies `from` into `folder` under its own name, or asks for another when that one is taken.
+void ProgramPage::copyInto(const QString& from, const QString& folder, bool selectCopy) {
+    auto copy = [this, from, folder, selectCopy](const QString& target) {
         QString error;
         if (!ProgramFiles::copy(from, QDir(folder).filePath(target), &error)) {
             context().notify(error);
@@ -136,12 +123,15 @@ void ProgramPage::pasteFile() {
         }
         context().notify(tr("Copy successful!", "msg 955"));
         list_->refresh();
-        list_->select(target);
+        if (selectCopy) {
+            list_->select(target);
+        }
     };
+    const QString name = QFileInfo(from).fileName();
     if (ProgramFiles::checkName(folder, name) == ProgramFiles::NameProblem::None) {
-        paste(name);
+        copy(name);
     } else {
-        askName(tr("File exists, please re-enter!", "msg 803"), {}, folder, paste);
+        askName(tr("File exists, please re-enter!", "msg 803"), {}, folder, copy);
     }
 }
 
