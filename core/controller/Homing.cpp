@@ -84,6 +84,14 @@ std::optional<Alarm> Controller::homeAxis(int axis) {
     moveBy(direction * distance, speed);
     machine_.setInput(pin, active);
     for (int cycle = 1; cycle < cycles; ++cycle) {
+        if (!(machine_.time() <= settings_.maxSimTime)) {
+            // param 106 = 1e9 asked for hours of approaches: the runaway guard holds here too
+            return Alarm{AlarmCode::SimulatedTimeLimit,
+                         std::string(1, name) + " homing ran " + std::to_string(static_cast<long long>(machine_.time())) +
+                             " s of simulated time (the limit) after " + std::to_string(cycle) + " of " +
+                             std::to_string(cycles) + " approaches: parameter 106 (homing cycle count) is 1 to 5 on the panel",
+                         "", 0, 0};
+        }
         moveBy(-direction * kBackOff, slow);
         machine_.setInput(pin, 1 - active);
         moveBy(direction * kBackOff, slow);

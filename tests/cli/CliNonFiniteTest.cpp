@@ -47,3 +47,17 @@ TEST_F(CliTest, ANanInParamsTomlIsRefusedNamingTheLine) {
 }
 
 } // namespace m350::clitest
+
+namespace m350::clitest {
+
+// Issue 13: `--home --param 106=1000000000` ran for hours of wall time; the runaway guard now
+// holds inside homing too.
+TEST_F(CliTest, HomingStopsAtTheSimulatedTimeLimit) {
+    ProcessResult r = sim({"mdi", "G0 X1", "--home", "--param", "106=1000000000", "--max-sim-time", "60"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    json alarm = output(r)["alarm"];
+    EXPECT_EQ(alarm.value("code", ""), "simulated_time_limit") << alarm;
+    EXPECT_NE(alarm.value("message", "").find("parameter 106"), std::string::npos) << alarm;
+}
+
+} // namespace m350::clitest
