@@ -71,8 +71,12 @@ int main(int argc, char** argv) {
     if (o.dialect) {
         machineConfig.dialect = gcode::Dialect::byName(*o.dialect);
     }
-    if (o.command != sim::SimOptions::Command::Mdi && !std::filesystem::is_regular_file(o.program)) {
-        return fail("file_error", "cannot open program: no such file", o.program);
+    if (o.command != sim::SimOptions::Command::Mdi) {
+        std::error_code ec; // a symlink loop or an unreadable folder is an error, not an abort
+        if (!std::filesystem::is_regular_file(o.program, ec)) {
+            return fail("file_error", "cannot open program: " + (ec ? ec.message() : std::string("no such file")),
+                        o.program);
+        }
     }
     std::ofstream trace;
     if (o.traceFile) {

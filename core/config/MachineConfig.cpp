@@ -232,6 +232,9 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         loadVariables(dir, config);
     } catch (const Failure& f) {
         return f.error;
+    } catch (const fs::filesystem_error& e) {
+        // a symlink loop, a dangling link, a folder that cannot be listed: an error, not an abort
+        return ConfigError{e.path1().empty() ? folder : e.path1().string(), e.code().message()};
     }
     return config;
 }

@@ -1,4 +1,5 @@
-// Issue 13: nan and infinity are never positions, feeds or times. Each of these hung m350-sim at
+// Issue 13, inputs that hung or crashed m350-sim. nan and infinity are never positions, feeds or
+// times: each of these hung m350-sim at
 // 100 % CPU (the virtual clock never passed the runaway guard) or turned the guard off.
 #include "tests/cli/CliFixture.h"
 
@@ -58,6 +59,32 @@ TEST_F(CliTest, HomingStopsAtTheSimulatedTimeLimit) {
     json alarm = output(r)["alarm"];
     EXPECT_EQ(alarm.value("code", ""), "simulated_time_limit") << alarm;
     EXPECT_NE(alarm.value("message", "").find("parameter 106"), std::string::npos) << alarm;
+}
+
+} // namespace m350::clitest
+
+namespace m350::clitest {
+
+// Issue 13: a symlink loop (as the program, the machine folder or a library) aborted m350-sim with
+// an uncaught filesystem exception; it is an error with a message and exit status 2.
+TEST_F(CliTest, ASymlinkLoopIsAnErrorNotAnAbort) {
+    std::filesystem::create_symlink("loop-b", dir_ / "loop-a");
+    std::filesystem::create_symlink("loop-a", dir_ / "loop-b");
+    ProcessResult program = sim({"run", "loop-a"});
+    EXPECT_EQ(program.exitStatus, kExitError) << program.err;
+    EXPECT_NE(program.err.find("symbolic links"), std::string::npos) << program.err;
+    ProcessResult folder = sim({"mdi", "G0 X1", "--config", "loop-a"});
+    EXPECT_EQ(folder.exitStatus, kExitError) << folder.err;
+    EXPECT_NE(folder.err.find("symbolic links"), std::string::npos) << folder.err;
+
+    std::filesystem::path machine = write("machine/keep", "").parent_path();
+    std::filesystem::copy(std::filesystem::path(M350_MACHINES_DIR) / "m350-linear16", machine,
+                          std::filesystem::copy_options::overwrite_existing | std::filesystem::copy_options::recursive);
+    std::filesystem::remove(machine / "slib-g.nc");
+    std::filesystem::create_symlink("slib-g.nc", machine / "slib-g.nc");
+    ProcessResult library = sim({"mdi", "G0 X1", "--config", machine.string()});
+    EXPECT_EQ(library.exitStatus, kExitError) << library.err;
+    EXPECT_NE(library.err.find("slib-g.nc"), std::string::npos) << library.err;
 }
 
 } // namespace m350::clitest
