@@ -1,6 +1,6 @@
-// Issue 13, inputs that hung or crashed m350-sim. nan and infinity are never positions, feeds or
-// times: each of these hung m350-sim at
-// 100 % CPU (the virtual clock never passed the runaway guard) or turned the guard off.
+// Issue 13: inputs that hung or crashed m350-sim. nan and infinity are never positions, feeds or
+// times (each of these hung it at 100 % CPU, the virtual clock never passing the runaway guard,
+// or turned the guard off); homing and symlink loops below.
 #include "tests/cli/CliFixture.h"
 
 #include <gtest/gtest.h>
