@@ -4,7 +4,9 @@
 #include "app/sim/SimOptions.h"
 
 #include "core/config/MachineConfig.h"
+#include "core/config/ParameterNumbers.h"
 #include "core/controller/Controller.h"
+#include "core/macro/VariableMap.h"
 
 #include <filesystem>
 #include <fstream>
@@ -51,6 +53,34 @@ int check(controller::Controller& controller, const sim::SimOptions& o) {
     return errors ? kExitError : kExitOk;
 }
 
+// What the command line asks of this machine: a tool it can hold, variables a run may set. Said
+// before the run, as a usage error, instead of being dropped or used as garbage.
+std::optional<std::string> checkAgainstMachine(const sim::SimOptions& o, const config::MachineConfig& machine) {
+    if (o.settings.tool) {
+        const int tool = *o.settings.tool;
+        const bool m350 = machine.dialect->id == gcode::DialectId::M350;
+        const int capacity = m350 ? static_cast<int>(machine.parameters.get(config::param::kMagazineCapacity))
+                                  : machine.magazineCapacity;
+        const int virtualTools = m350 && machine.parameters.get(config::param::kVirtualTools) != 0.0 ? 20 : 0;
+        const int most = capacity > 0 ? capacity + virtualTools : 9999;
+        if (tool < 0 || tool > most) {
+            return "--tool " + std::to_string(tool) + ": tools run from 0 (empty spindle) to " + std::to_string(most) +
+                   (capacity > 0 ? " on this machine (magazine capacity " + std::to_string(capacity) +
+                                       (virtualTools ? ", plus 20 virtual tools)" : ")")
+                                 : std::string());
+        }
+    }
+    macro::VariableMap variables(*machine.dialect);
+    for (const auto& [number, value] : o.settings.variables) {
+        macro::VariableInfo info = variables.describe(number);
+        if (info.kind == macro::VariableKind::Undefined || info.readOnly) {
+            return "--var " + std::to_string(number) + "=...: " + variables.describeText(number) +
+                   (info.readOnly ? " is read-only" : " is not a variable of this dialect");
+        }
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -85,6 +115,12 @@ int main(int argc, char** argv) {
             return fail("file_error", "cannot write the trace file", *o.traceFile);
         }
         o.settings.trace = &trace;
+    }
+    if (o.command != sim::SimOptions::Command::Check) {
+        if (auto problem = checkAgainstMachine(o, machineConfig)) {
+            std::cerr << "m350-sim: " << *problem << "\n";
+            return 64;
+        }
     }
     controller::Controller controller(std::move(machineConfig), o.settings);
     if (o.command == sim::SimOptions::Command::Check) {

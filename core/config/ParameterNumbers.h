@@ -46,6 +46,7 @@ inline constexpr int kFourthAxisType = 449;       // 0 linear, 1 rotary; 450 the
 inline constexpr int kCurrentTool = 800;           // #1300 当前刀具号
 inline constexpr int kMagazineCapacity = 801;      // #1301 刀库容量
 inline constexpr int kMagazineType = 802;          // #1302 刀库类型
+inline constexpr int kVirtualTools = 803;         // #1303 虚拟刀是否有效: tools above the capacity are changed by hand
 inline constexpr int kToolReleasedInput = 623;     // input triple 刀具松开检测 (M301)
 inline constexpr int kToolClampedInput = 626;      // input triple 刀具锁紧检测 (M302)
 inline constexpr int kDrawbarOutput = 750;         // output triple 刀具松开/锁紧 (M154/M155)

@@ -88,3 +88,21 @@ TEST_F(CliTest, ASymlinkLoopIsAnErrorNotAnAbort) {
 }
 
 } // namespace m350::clitest
+
+namespace m350::clitest {
+
+// Issue 13: --tool -1 / 99999 ran with garbage and --var 1520=1 was silently dropped.
+TEST_F(CliTest, AToolOrVariableTheMachineCannotHaveIsAUsageError) {
+    ProcessResult negative = sim({"mdi", "G0 X1", "--tool", "-1"});
+    EXPECT_EQ(negative.exitStatus, kExitUsage) << negative.err;
+    ProcessResult huge = sim({"mdi", "G0 X1", "--tool", "99999"});
+    EXPECT_EQ(huge.exitStatus, kExitUsage) << huge.err;
+    EXPECT_NE(huge.err.find("magazine capacity 16"), std::string::npos) << huge.err;
+    ProcessResult virtualTool = sim({"mdi", "G0 X1", "--tool", "30"});
+    EXPECT_EQ(virtualTool.exitStatus, kExitOk) << virtualTool.err << " (T17-T36 are the default machine's virtual tools)";
+    ProcessResult input = sim({"mdi", "G0 X1", "--var", "1520=1"});
+    EXPECT_EQ(input.exitStatus, kExitUsage) << input.err;
+    EXPECT_NE(input.err.find("#1520 (input IN01) is read-only"), std::string::npos) << input.err;
+}
+
+} // namespace m350::clitest
