@@ -1,4 +1,5 @@
 #include "ui/pages/IoPage.h"
+#include "ui/pages/PanelTable.h"
 
 #include "core/config/IoPorts.h"
 #include "ui/i18n/PanelText.h"
@@ -42,14 +43,7 @@ IoPage::IoPage(PanelContext& context, QWidget* parent) : Page(context, parent) {
     setObjectName("ioPage");
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(4, 4, 4, 4);
-    table_ = new QTableWidget(0, ColumnCount, this);
-    table_->setObjectName("ioPorts");
-    table_->setFocusPolicy(Qt::NoFocus);
-    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table_->setSelectionMode(QAbstractItemView::SingleSelection);
-    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    table_->verticalHeader()->hide();
-    table_->verticalHeader()->setDefaultSectionSize(22);
+    table_ = makePanelTable(this, ColumnCount, "ioPorts");
     table_->horizontalHeader()->setSectionResizeMode(Name, QHeaderView::Stretch);
     column->addWidget(table_, 1);
     auto* lamps = new QGridLayout;

@@ -1,4 +1,5 @@
 #include "ui/pages/LogPage.h"
+#include "ui/pages/PanelTable.h"
 
 #include "ui/panel/PanelContext.h"
 
@@ -19,13 +20,7 @@ LogPage::LogPage(PanelContext& context, QWidget* parent) : Page(context, parent)
     setObjectName("logPage");
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(4, 4, 4, 4);
-    table_ = new QTableWidget(0, 2, this);
-    table_->setObjectName("systemLog");
-    table_->setFocusPolicy(Qt::NoFocus);
-    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table_->verticalHeader()->hide();
-    table_->verticalHeader()->setDefaultSectionSize(22);
+    table_ = makePanelTable(this, 2, "systemLog");
     table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
     column->addWidget(table_);

@@ -1,4 +1,5 @@
 #include "ui/pages/ParamPage.h"
+#include "ui/pages/PanelTable.h"
 
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/LevelPrompt.h"
@@ -52,14 +53,7 @@ ParamPage::ParamPage(PanelContext& context, QWidget* parent) : Page(context, par
     header->addWidget(group_, 1);
     column->addLayout(header);
     auto* row = new QHBoxLayout;
-    table_ = new QTableWidget(0, ColumnCount, this);
-    table_->setObjectName("paramTable");
-    table_->setFocusPolicy(Qt::NoFocus);
-    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table_->setSelectionMode(QAbstractItemView::SingleSelection);
-    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    table_->verticalHeader()->hide();
-    table_->verticalHeader()->setDefaultSectionSize(22);
+    table_ = makePanelTable(this, ColumnCount, "paramTable");
     table_->horizontalHeader()->setSectionResizeMode(Note, QHeaderView::Stretch);
     table_->setColumnWidth(Number, 44);
     table_->setColumnWidth(Value, 100);

@@ -1,4 +1,5 @@
 #include "ui/program/ProgramList.h"
+#include "ui/pages/PanelTable.h"
 
 #include <QDir>
 #include <QHeaderView>
@@ -17,14 +18,7 @@ ProgramList::ProgramList(QWidget* parent) : QWidget(parent) {
     header_ = new QLabel(this);
     header_->setObjectName("programHeader");
     header_->setTextInteractionFlags(Qt::NoTextInteraction);
-    table_ = new QTableWidget(0, 3, this);
-    table_->setObjectName("programFiles");
-    table_->setFocusPolicy(Qt::NoFocus);
-    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table_->setSelectionMode(QAbstractItemView::SingleSelection);
-    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    table_->verticalHeader()->hide();
-    table_->verticalHeader()->setDefaultSectionSize(24);
+    table_ = makePanelTable(this, 3, "programFiles", 24);
     table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
