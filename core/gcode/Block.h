@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace m350::gcode {
@@ -51,7 +52,7 @@ struct Block {
     bool programEnd = false;         // holds M30 or M02 (ends the main program's scope)
     bool suspect = false;            // has a lint finding: Program::suspectMessage says which
     Control control = Control::None;
-    ExprId condition = kNoExpr;      // IF / WHILE
+    ExprId condition = kNoExpr;      // IF / WHILE (none for a bare DOm: it loops until a GOTO)
     ExprId target = kNoExpr;         // GOTO label expression
     std::int32_t loopId = 0;         // m of DOm / ENDm
     std::int32_t partner = -1;       // WHILE <-> END block index, -1 when unmatched
@@ -60,5 +61,10 @@ struct Block {
     std::span<const Word> words;
     std::string_view comment; // text of the first comment on the line
 };
+
+// How messages name the line that opens a loop: `WHILE ... DO2`, or `DO2` for the endless form.
+inline std::string loopOpening(const Block& block) {
+    return (block.condition == kNoExpr ? "DO" : "WHILE ... DO") + std::to_string(block.loopId);
+}
 
 } // namespace m350::gcode

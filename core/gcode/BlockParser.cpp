@@ -155,7 +155,13 @@ void BlockParser::parseStatement(Block& block) {
             block.control = Control::End;
             block.loopId = parseLoopId("END");
             break;
-        case Keyword::Do: fail(k, "DO without WHILE: write WHILE [condition] DO" + std::to_string(1));
+        case Keyword::Do:
+            // `DOm ... ENDm` without WHILE: an endless loop, left by a GOTO (or stopped by the
+            // runaway guard)
+            next();
+            block.control = Control::While;
+            block.loopId = parseLoopId("DO");
+            break;
         default: break;
         }
         if (block.control != Control::None) {

@@ -8,7 +8,7 @@
 
 namespace m350::gcode {
 
-// A WHILE or END line with a syntax error still opens or closes its loop, so the error is
+// A WHILE, DO or END line with a syntax error still opens or closes its loop, so the error is
 // reported once and not again as an unpaired END. The program cannot run with it anyway.
 std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
     std::size_t first = 0;
@@ -18,11 +18,12 @@ std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
         ++first; // N label
     }
     if (first >= tokens_.size() || tokens_[first].kind != TokenKind::Keyword ||
-        (tokens_[first].keyword != Keyword::While && tokens_[first].keyword != Keyword::End)) {
+        (tokens_[first].keyword != Keyword::While && tokens_[first].keyword != Keyword::End &&
+         tokens_[first].keyword != Keyword::Do)) {
         return std::nullopt;
     }
     bool isWhile = tokens_[first].keyword == Keyword::While;
-    block.control = isWhile ? Control::While : Control::End;
+    block.control = tokens_[first].keyword == Keyword::End ? Control::End : Control::While;
     block.controlColumn = tokens_[first].column;
     block.words = {};
     block.assignments = {};

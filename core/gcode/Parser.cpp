@@ -140,8 +140,8 @@ void Parser::pairLoops(Program& program) {
             Block& opener = program.blocks[open.back()];
             if (opener.loopId != block.loopId) {
                 report(program, block, block.controlColumn, DiagnosticKind::Flow,
-                       "END" + std::to_string(block.loopId) + " closes the loop WHILE ... DO" +
-                           std::to_string(opener.loopId) + " opened at line " +
+                       "END" + std::to_string(block.loopId) + " closes the loop " + loopOpening(opener) +
+                           " opened at line " +
                            std::to_string(opener.location.line) + " (expected END" +
                            std::to_string(opener.loopId) + ")");
                 continue;
@@ -154,7 +154,7 @@ void Parser::pairLoops(Program& program) {
     for (std::uint32_t b : open) {
         const Block& block = program.blocks[b];
         report(program, block, block.controlColumn, DiagnosticKind::Flow,
-               "WHILE ... DO" + std::to_string(block.loopId) + " has no END" + std::to_string(block.loopId));
+               loopOpening(block) + " has no END" + std::to_string(block.loopId));
     }
 }
 

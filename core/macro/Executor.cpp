@@ -139,11 +139,10 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
     case Control::While:
         if (block.partner < 0) {
             throw MacroError{AlarmCode::WhileWithoutEnd,
-                             "WHILE ... DO" + std::to_string(block.loopId) + " has no matching END" +
-                                 std::to_string(block.loopId),
+                             gcode::loopOpening(block) + " has no matching END" + std::to_string(block.loopId),
                              block.controlColumn};
         }
-        if (evaluator_.condition(block.condition)) {
+        if (block.condition == gcode::kNoExpr || evaluator_.condition(block.condition)) {
             ++frame.pc;
         } else {
             frame.pc = static_cast<std::uint32_t>(block.partner) + 1;

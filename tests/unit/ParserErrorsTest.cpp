@@ -296,7 +296,7 @@ TEST(ParserErrors, ThenAndIfNeedTheirParts) {
                "IF condition must be followed by GOTOn or THEN, found 'X'");
     expectOnly(parse("#1 ="), DiagnosticKind::Syntax, 1, 5,
                "expected a value after '=', found the end of the line");
-    expectOnly(parse("DO1"), DiagnosticKind::Syntax, 1, 1, "DO without WHILE");
+    expectOnly(parse("DO1"), DiagnosticKind::Flow, 1, 1, "DO1 has no END1"); // a bare DO is an endless loop
     expectOnly(parse("G1 GOTO5\nN5"), DiagnosticKind::Syntax, 1, 4,
                "GOTO must start the block (after the N number)");
 }
