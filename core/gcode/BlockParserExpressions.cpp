@@ -235,14 +235,15 @@ ExprId BlockParser::parseFunction() {
                          std::to_string(open.column) + ", found " + describe(peek()));
     }
     next();
-    if (f == Function::Atan && n.rhs == kNoExpr) {
-        if (dialect_.atanSlash && peek().kind == TokenKind::Slash && peek(1).kind == TokenKind::LBracket) {
-            next();
-            n.rhs = parseBracketed();
-        } else {
-            fail(name, std::string("ATAN takes two arguments: ") +
-                           (dialect_.atanSlash ? "ATAN[a]/[b]" : "ATAN[y,x]"));
+    // ATAN[a]/[b] where the dialect has it; otherwise ATAN[x] has one argument (the evaluator
+    // answers it as ATAN[x]/[1])
+    if (f == Function::Atan && n.rhs == kNoExpr && peek().kind == TokenKind::Slash &&
+        peek(1).kind == TokenKind::LBracket) {
+        if (!dialect_.atanSlash) {
+            fail(peek(), "ATAN[a]/[b] is not " + std::string(dialect_.name) + " syntax: write ATAN[a,b]");
         }
+        next();
+        n.rhs = parseBracketed();
     }
     return pool_.add(n);
 }

@@ -206,8 +206,10 @@ double Evaluator::function(const ExprNode& node) {
     case Function::Asin: domain(x >= -1 && x <= 1, "ASIN"); return std::asin(x) / kDegree;
     case Function::Acos: domain(x >= -1 && x <= 1, "ACOS"); return std::acos(x) / kDegree;
     case Function::Atan: {
-        double angle = std::atan2(x, number(node.rhs)) / kDegree;
-        // FANUC answers 0..360 degrees; the M350 follows atan2's -180..180.
+        // One argument, ATAN[x], is ATAN[x]/[1], so it follows its dialect's rule for the two-argument
+        // form. FANUC answers 0 <= angle < 360 (parameter 6004#0 NAT = 0, the default: ATAN[-1]/[-1]
+        // = 225, so ATAN[-1] = 315); the M350 follows atan2's -180..180 (ATAN[-1] = -45).
+        double angle = std::atan2(x, node.rhs == gcode::kNoExpr ? 1.0 : number(node.rhs)) / kDegree;
         return (dialect_.id == gcode::DialectId::Fanuc && angle < 0) ? angle + 360.0 : angle;
     }
     case Function::Sqrt: domain(x >= 0, "SQRT"); return std::sqrt(x);

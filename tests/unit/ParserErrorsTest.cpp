@@ -280,8 +280,9 @@ TEST(ParserErrors, LowerCaseKeywordsAreRejectedOnM350) {
 }
 
 TEST(ParserErrors, AtanSlashIsNotM350) {
-    expectOnly(parse("#1 = ATAN[#2]/[#3]"), DiagnosticKind::Syntax, 1, 6,
-               "ATAN takes two arguments: ATAN[y,x]");
+    // not ATAN[#2] divided by #3, which the line would silently mean if the one-argument ATAN took it
+    expectOnly(parse("#1 = ATAN[#2]/[#3]"), DiagnosticKind::Syntax, 1, 14,
+               "ATAN[a]/[b] is not m350 syntax: write ATAN[a,b]");
 }
 
 TEST(ParserErrors, EqualsEqualsIsRejectedOnFanuc) {

@@ -131,12 +131,11 @@ TEST(ParserFanuc, AtanWithSlash) {
     EXPECT_EQ(value(p, 2), "ATAN[1,2]");
 }
 
-TEST(ParserFanuc, AtanNeedsTwoArguments) {
-    Parsed p = parse("#1 = ATAN[#1]");
-    const Diagnostic* d = onlySyntaxError(p);
-    ASSERT_NE(d, nullptr);
-    EXPECT_EQ(d->message, "ATAN takes two arguments: ATAN[a]/[b]");
-    EXPECT_EQ(d->column, 6u);
+TEST(ParserFanuc, AtanWithOneArgument) {
+    Parsed p = parseClean("#1 = ATAN[#1]\n#2 = ATAN[#3] * 2\n#3 = ATAN[1]/2");
+    EXPECT_EQ(value(p, 0), "ATAN[#1]");
+    EXPECT_EQ(value(p, 1), "(ATAN[#3] * 2)");
+    EXPECT_EQ(value(p, 2), "(ATAN[1] / 2)"); // only /[b] is the second argument
 }
 
 TEST(ParserFanuc, ExtendedFunctionsAreAccepted) {
