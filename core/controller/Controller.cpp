@@ -327,6 +327,13 @@ void Controller::stepOnce() {
     if (auto stop = interp_.takeStop()) {
         stopForOperator(*stop);
     }
+    if (interp_.hasLookAheadChanges()) {
+        for (const std::string& code : interp_.takeLookAheadChanges()) {
+            if (trace_) {
+                trace_->lookAhead(machine_.time(), code, source());
+            }
+        }
+    }
     if (int toolAfter = spindleTool(); toolAfter != toolBefore) {
         syncToolLength();
         if (trace_) {

@@ -72,6 +72,12 @@ void TraceWriter::toolChange(double time, int from, int to, const TraceSource& s
     out_ << j.dump() << '\n';
 }
 
+void TraceWriter::lookAhead(double time, std::string_view code, const TraceSource& source) {
+    nlohmann::json j{{"t", time}, {"type", "lookahead"}, {"code", std::string(code)}};
+    withSource(j, source);
+    out_ << j.dump() << '\n';
+}
+
 void TraceWriter::runState(double time, std::string_view state) {
     nlohmann::json j{{"t", time}, {"type", std::string(state)}};
     out_ << j.dump() << '\n';

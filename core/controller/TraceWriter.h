@@ -29,6 +29,8 @@ public:
     void runState(double time, std::string_view state);
     // A pause the program asked for (M00, M01, G04 P-1): why, and the block that asked.
     void programStop(double time, std::string_view reason, const TraceSource& source);
+    // A look-ahead or contour-control mode switched (`G05.1 Q1`): recorded, it moves nothing.
+    void lookAhead(double time, std::string_view code, const TraceSource& source);
     // A macro began waiting for an input to reach `level` (the sensor watchdog's first notice).
     void sensorWait(double time, std::string_view port, int level, const TraceSource& source);
 

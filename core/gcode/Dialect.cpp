@@ -78,6 +78,7 @@ Dialect makeFanuc() {
                                {'U', 21}, {'V', 22}, {'W', 23}, {'X', 24}, {'Y', 25}, {'Z', 26}});
     d.handlerArguments = d.callArguments;
     d.dwellXSeconds = true;
+    d.lookAheadCodes = true;
     return d;
 }
 

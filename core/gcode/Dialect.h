@@ -48,6 +48,7 @@ struct Dialect {
     int tCodeProgram = -1;             // M350: `T5` runs O20000 with #1 = 5
     int gHandlerBase = -1;             // `Gxx` runs O(9000+xx) from the G library
     int mHandlerBase = -1;             // `Mn` runs O(10000+n) from the M library
+    bool lookAheadCodes = false;       // FANUC: G05.1 Q1/Q0, G08 P1/P0, G05 P10000/P0 (no geometry change)
     double dwellPScale = 0.001;        // G04 P units to seconds (both: milliseconds)
     bool dwellXSeconds = false;        // FANUC: G04 X<seconds>
 

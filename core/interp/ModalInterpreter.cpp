@@ -233,6 +233,9 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
 void ModalInterpreter::applyGCodes(const Words& words) {
     std::array<bool, 23> seen{};
     for (const WordValue& g : words.g) {
+        if (dialect_.lookAheadCodes && lookAheadCode(g, words)) {
+            continue;
+        }
         double value = g.value;
         int code = roundToInt(value);
         if (std::abs(value - code) > 1e-6) {

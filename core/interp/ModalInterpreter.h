@@ -74,6 +74,11 @@ public:
     };
     std::optional<OperatorStop> takeStop();
 
+    // The look-ahead and contour-control modes the last blocks switched (FANUC `G05.1 Q1`, `G08 P0`,
+    // `G05 P10000`), as written, for the trace; they change no geometry (LookAheadCodes.cpp).
+    bool hasLookAheadChanges() const { return !lookAheadChanges_.empty(); }
+    std::vector<std::string> takeLookAheadChanges();
+
 private:
     // The words of one block by letter. `present` says which letters were written; clearing it is
     // all a new block needs.
@@ -106,6 +111,8 @@ private:
     };
 
     void applyGCodes(const Words& words);
+    bool lookAheadCode(const macro::WordValue& g, const Words& words);
+    static bool isLookAheadBlock(const Words& words);
     void moveAxes(const Words& words);
     machine::Axes targetFor(const Words& words, bool machineCoordinates) const;
     void setCoordinateSystem(const Words& words); // G92, G52
@@ -150,6 +157,7 @@ private:
     ModalState state_;
     Words words_;
     std::optional<OperatorStop> stop_;
+    std::vector<std::string> lookAheadChanges_;
     const gcode::Block* block_ = nullptr; // the block being executed
     std::map<int, machine::Axes> referencePoints_;
     CutterCompensation compensation_;

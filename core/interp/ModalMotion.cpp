@@ -178,6 +178,9 @@ void ModalInterpreter::moveAxes(const Words& words) {
     if (words.hasG(4)) {
         return; // in a G04 block, X is the dwell time (FANUC), not a move
     }
+    if (dialect_.lookAheadCodes && isLookAheadBlock(words)) {
+        return; // its P and Q are the mode, not a canned cycle's data
+    }
     if (state_.group(9) != 80 && !words.hasG(53) && !words.hasG(28) && !words.hasG(30) && !words.hasG(31)) {
         cannedCycle(words);
         return;

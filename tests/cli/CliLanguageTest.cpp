@@ -34,4 +34,30 @@ TEST_F(CliTest, CheckReportsABareDoWithoutEnd) {
     EXPECT_NE(r.err.find("open.nc:2:4: DO2 has no END2"), std::string::npos) << r.err;
 }
 
+TEST_F(CliTest, LookAheadCodesAreInTheTraceOfAFanucRun) {
+    write("hpcc.nc", "G90 G1 X10 F1000\nG05.1 Q1 R3\nG1 X20\nG05.1 Q0\nM30\n");
+    ProcessResult r = sim({"run", "hpcc.nc", "--dialect", "fanuc", "--trace", "trace.jsonl"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    std::ifstream in(dir_ / "trace.jsonl");
+    std::vector<std::string> codes;
+    int moves = 0;
+    for (std::string line; std::getline(in, line);) {
+        json event = json::parse(line);
+        if (event["type"] == "lookahead") {
+            codes.push_back(event["code"].get<std::string>() + " " + event["file"].get<std::string>() + ":" +
+                            std::to_string(event["line"].get<int>()));
+        }
+        moves += event["type"] == "move" ? 1 : 0;
+    }
+    EXPECT_EQ(codes, (std::vector<std::string>{"G05.1 Q1 R3 hpcc.nc:2", "G05.1 Q0 hpcc.nc:4"}));
+    EXPECT_EQ(moves, 2);
+}
+
+TEST_F(CliTest, LookAheadCodesAreUnknownGCodesOnTheM350) {
+    write("hpcc.nc", "G90\nG05.1 Q1\nM30\n");
+    ProcessResult r = sim({"run", "hpcc.nc"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    EXPECT_NE(r.err.find("hpcc.nc:2:1: alarm: G5.1: not a G code this machine knows"), std::string::npos) << r.err;
+}
+
 } // namespace m350::clitest
