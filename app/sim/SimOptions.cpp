@@ -93,14 +93,18 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     CLI::App* check = app.add_subcommand("check", "parse only and list every error");
     check->add_option("PROGRAM", o.program, "program file (.nc)")->required();
     addMachineOptions(check);
+    CLI::App* import = app.add_subcommand("import", "make a machine folder from a copy of an M350's system disk");
+    import->add_option("BACKUP_DIR", o.backupDir, "the backup: the folder that holds setting, slib-g.nc ...")->required();
+    import->add_option("--into", o.intoDir, "the new machine folder (missing or empty)")->required();
 
     auto loaded = config::ParameterCatalogue::load(config::ParameterCatalogue::bundledPath());
     const auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded);
     try {
         app.parse(argc, argv);
         o.command = run->parsed() ? SimOptions::Command::Run
-                    : mdi->parsed() ? SimOptions::Command::Mdi
-                                    : SimOptions::Command::Check;
+                    : mdi->parsed()    ? SimOptions::Command::Mdi
+                    : import->parsed() ? SimOptions::Command::Import
+                                       : SimOptions::Command::Check;
         for (const std::string& p : params) {
             auto [n, v] = splitAssignment(p, "--param");
             int number = parseWhole(n, "--param");

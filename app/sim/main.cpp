@@ -1,5 +1,6 @@
 // m350-sim: the headless simulator. Exit status: 0 ok, 1 alarm, 2 error (syntax, file, config),
 // 64 usage.
+#include "app/sim/ImportCommand.h"
 #include "app/sim/ReportJson.h"
 #include "app/sim/SimOptions.h"
 
@@ -89,6 +90,9 @@ int main(int argc, char** argv) {
         return parsed.exitStatus;
     }
     sim::SimOptions& o = *parsed.options;
+    if (o.command == sim::SimOptions::Command::Import) {
+        return sim::runImport(o.backupDir, o.intoDir);
+    }
     std::string folder = machineFolder(o);
     auto loaded = config::loadMachineFolder(folder);
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {

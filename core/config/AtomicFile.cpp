@@ -82,7 +82,10 @@ std::optional<std::string> writeFileAtomically(const fs::path& path, std::string
         ::unlink(temp.c_str());
         return error;
     }
-    fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    return syncFolder(path.parent_path().empty() ? fs::path(".") : path.parent_path());
+}
+
+std::optional<std::string> syncFolder(const fs::path& folder) {
     Descriptor directory(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
     if (directory.get() < 0 || ::fsync(directory.get()) != 0) return failure(folder, "cannot sync the folder");
     return std::nullopt;

@@ -21,6 +21,9 @@ struct AtomicWriteHooks {
 std::optional<std::string> writeFileAtomically(const std::filesystem::path& path, std::string_view content,
                                                const AtomicWriteHooks& hooks = {});
 
+// Syncs a folder, so that a rename or a new file in it survives a power cut. nullopt on success.
+std::optional<std::string> syncFolder(const std::filesystem::path& folder);
+
 // The temp file writeFileAtomically uses for `path` (left behind only by a process killed mid-write;
 // the next write replaces it).
 std::filesystem::path atomicTempPath(const std::filesystem::path& path);

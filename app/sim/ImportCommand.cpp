@@ -1,0 +1,72 @@
+#include "app/sim/ImportCommand.h"
+
+#include "app/sim/ReportJson.h"
+
+#include "core/config/BackupImport.h"
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+
+namespace m350::sim {
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitError = 2;
+
+// Every key is present whatever happened, so a script can read any of them.
+nlohmann::json importJson(const config::BackupImport& r, const config::ImportError* error) {
+    nlohmann::json skipped = nlohmann::json::array();
+    for (const config::SkippedFile& file : r.skipped) {
+        skipped.push_back({{"file", file.name}, {"reason", file.reason}});
+    }
+    nlohmann::json review = nlohmann::json::array();
+    for (const config::ReviewItem& item : r.review) {
+        review.push_back({{"key", item.key}, {"value", item.value}, {"why", item.why}});
+    }
+    nlohmann::json alarm = nullptr;
+    if (error) {
+        alarm = {{"code", error->code}, {"message", error->message}, {"file", error->file}, {"line", 0}, {"column", 0}};
+    }
+    return {{"status", error ? "error" : "ok"},
+            {"alarm", alarm},
+            {"machine_folder", error ? nlohmann::json(nullptr) : nlohmann::json(r.machineFolder)},
+            {"unchanged", r.unchanged},
+            {"written", r.written},
+            {"copied", r.copied},
+            {"skipped", skipped},
+            {"libraries", r.libraries},
+            {"parameters", r.parameters},
+            {"changed_parameters", r.factoryCompared ? nlohmann::json(r.changedParameters) : nlohmann::json(nullptr)},
+            {"out_of_range", r.outOfRange},
+            {"offsets", r.offsets},
+            {"mdi_lines", r.mdiLines},
+            {"magazine", r.magazine},
+            {"review", review},
+            {"unsupported", r.unsupported},
+            {"notes", r.notes},
+            {"diagnostics", diagnosticsJson(r.diagnostics)}};
+}
+
+} // namespace
+
+int runImport(const std::string& backupDir, const std::string& intoDir) {
+    auto outcome = config::importControllerBackup(backupDir, intoDir);
+    if (auto* error = std::get_if<config::ImportError>(&outcome)) {
+        std::cerr << error->file << ": " << error->message << '\n';
+        std::cout << dump(importJson(config::BackupImport{}, error)) << '\n';
+        return kExitError;
+    }
+    const auto& result = std::get<config::BackupImport>(outcome);
+    if (result.unchanged) {
+        std::cerr << result.machineFolder << ": already holds this backup's import; nothing written\n";
+    } else {
+        std::cerr << "Imported " << backupDir << " into " << result.machineFolder << "\n";
+    }
+    std::cerr << config::formatImportReport(result);
+    std::cout << dump(importJson(result, nullptr)) << '\n';
+    return kExitOk;
+}
+
+} // namespace m350::sim
