@@ -146,6 +146,7 @@ std::vector<int> importLinks(const ParameterTable& p, bool device, ImportedWirin
     links.push_back({param::kMagazineSlideOutput, kMagazineInInput, false, kSlideDelayMs, "magazine in"});
     links.push_back({kDustCoverOutput, kDustCoverInput, true, kCoverDelayMs, "dust cover open"});
     std::vector<int> linked;
+    std::string sensors;
     for (const Link& link : links) {
         const PortAssignment output = portAssignment(p, link.outputParameter);
         const std::optional<PortAssignment> input = wiredInput(p, link.inputParameter);
@@ -160,9 +161,10 @@ std::vector<int> importLinks(const ParameterTable& p, bool device, ImportedWirin
                          "\ninput = " + std::to_string(input->pin) + "\ndelay_ms = " + tomlNumber(link.delayMs) +
                          "\ninverted = " + (link.follows != sameLevel ? "true" : "false") + "\n";
         linked.push_back(link.inputParameter);
+        sensors += (sensors.empty() ? "" : ", ") + inputName(input->pin) + " " + link.why;
     }
     if (!linked.empty()) {
-        out.review.push_back({"io_links", "the sensors of " + std::to_string(linked.size()) + " wired inputs",
+        out.review.push_back({"io_links", sensors,
                               "each sensor follows its actuator's output after a stroke time the backup does not "
                               "give (clamp: param 814 or 150 ms, slide 600 ms, dust cover 500 ms)"});
     }

@@ -1,0 +1,170 @@
+// m350-sim import, as an owner with a copy of their controller's system disk runs it: the machine
+// folder it makes loads, runs its MDI lines and its T.nc, and gives the #-variables the binary
+// files hold; a damaged backup and a folder that is not this import's are refused, nothing written.
+#include "tests/cli/CliFixture.h"
+#include "tests/support/ControllerBackupWriter.h"
+
+#include <gtest/gtest.h>
+
+namespace m350::clitest {
+
+using m350::testing::ControllerBackupWriter;
+
+namespace {
+
+std::vector<std::string> folderFiles(const fs::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+        if (entry.is_regular_file()) {
+            names.push_back(fs::relative(entry.path(), folder).generic_string());
+        }
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+} // namespace
+
+class CliImportTest : public CliTest {
+  protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        backup_ = ControllerBackupWriter::smallRouter();
+        backup_.writeTo(dir_ / "SYSDISK");
+    }
+    ProcessResult import(const std::string& into) { return sim({"import", "SYSDISK", "--into", into}); }
+
+    ControllerBackupWriter backup_;
+};
+
+TEST_F(CliImportTest, TheImportedMachineRunsItsMdiLinesAndTNcWithTheBackupsVariables) {
+    ProcessResult r = import("machine");
+    ASSERT_EQ(r.exitStatus, kExitOk) << r.err;
+    json j = output(r);
+    EXPECT_EQ(j.value("status", ""), "ok");
+    EXPECT_TRUE(j["alarm"].is_null());
+    EXPECT_NE(r.err.find("magazine type 4 (servo disc"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("The simulator cannot model:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("To review in machine.toml"), std::string::npos) << r.err;
+
+    // the MDI lines as the JSON gives them (UTF-8), run as the MDI page runs them
+    std::vector<std::string> args{"mdi"};
+    for (const json& line : j["mdi_lines"]) {
+        if (!line.get<std::string>().empty()) {
+            args.push_back(line);
+        }
+    }
+    ASSERT_EQ(args.size(), 5u) << j["mdi_lines"];
+    EXPECT_EQ(args[4], "(MDI 测试)");
+    for (const char* option : {"--config", "machine", "--print", "150,1300"}) {
+        args.emplace_back(option);
+    }
+    ProcessResult mdi = sim(args);
+    ASSERT_EQ(mdi.exitStatus, kExitOk) << mdi.err;
+    json m = output(mdi);
+    EXPECT_EQ(m["vars"]["150"], backup_.setting[129] + 1);
+    EXPECT_EQ(m["machine"]["X"], backup_.coordinate[5] + 20);
+    EXPECT_EQ(m["machine"]["Y"], backup_.coordinate[6] + 10);
+
+    // T.nc (T#1504) runs the backup's O20000 with the target tool
+    ProcessResult t = sim({"run", "machine/T.nc", "--config", "machine", "--var", "1504=5", "--print",
+                           "629,1300,1302,1306,805,806,807,811,812,842"});
+    ASSERT_EQ(t.exitStatus, kExitOk) << t.err;
+    json v = output(t)["vars"];
+    EXPECT_EQ(v["629"], backup_.setting[129]);
+    EXPECT_EQ(v["1300"], 5);
+    EXPECT_EQ(v["1302"], backup_.setting[802]);
+    EXPECT_EQ(v["1306"], backup_.setting[806]);
+    EXPECT_EQ(v["805"], backup_.coordinate[5]);
+    EXPECT_EQ(v["806"], backup_.coordinate[6]);
+    EXPECT_EQ(v["807"], backup_.coordinate[7]);
+    EXPECT_EQ(v["842"], backup_.coordinate[42]);
+    EXPECT_EQ(output(t)["machine"]["Z"], backup_.setting[806]); // O20000's G53 Z#1306
+
+    // with no T, the current tool is the backup's param 800
+    json start = output(sim({"mdi", "G4 P1", "--config", "machine", "--print", "1300,1301"}));
+    EXPECT_EQ(start["vars"]["1300"], backup_.setting[800]);
+    EXPECT_EQ(start["vars"]["1301"], backup_.setting[801]);
+}
+
+TEST_F(CliImportTest, TheResultListsWhatWasWrittenCopiedAndSkipped) {
+    json j = output(import("machine"));
+    EXPECT_EQ(j["machine_folder"], (dir_ / "machine").string());
+    EXPECT_EQ(j["copied"], json({"T.nc", "cam/cam1.nc", "pause.nc", "slib-g.nc", "slib-m.nc"}));
+    EXPECT_EQ(j["libraries"], json({"slib-g.nc", "slib-m.nc"}));
+    std::set<std::string> skipped;
+    for (const json& s : j["skipped"]) {
+        skipped.insert(s["file"].get<std::string>());
+        EXPECT_FALSE(s["reason"].get<std::string>().empty()) << s;
+    }
+    EXPECT_EQ(skipped, (std::set<std::string>{"cam/cam1.bmp", "ddcs", "drivers/m350io.ko", "eng", "logo.bmp",
+                                              "simsun.ttf", "sys.log"}));
+    EXPECT_EQ(j["parameters"], 1000);
+    EXPECT_EQ(j["unchanged"], false);
+    EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"];
+    std::vector<std::string> written = j["written"];
+    std::sort(written.begin(), written.end());
+    EXPECT_EQ(written, folderFiles(dir_ / "machine"));
+    EXPECT_EQ(m350::testing::readFile(dir_ / "machine/pause.nc"), backup_.files["pause.nc"]); // GBK stays GBK
+    EXPECT_EQ(m350::testing::readFile(dir_ / "machine/cam/cam1.nc"), "G0 X0 Y0\r\n");
+}
+
+TEST_F(CliImportTest, ImportingTwiceGivesTheSameFolderAndASecondRunIntoItChangesNothing) {
+    ASSERT_EQ(import("first").exitStatus, kExitOk);
+    ASSERT_EQ(import("second").exitStatus, kExitOk);
+    ASSERT_EQ(folderFiles(dir_ / "first"), folderFiles(dir_ / "second"));
+    for (const std::string& name : folderFiles(dir_ / "first")) {
+        EXPECT_EQ(m350::testing::readFile(dir_ / "first" / name), m350::testing::readFile(dir_ / "second" / name))
+            << name;
+    }
+    ProcessResult again = import("first");
+    EXPECT_EQ(again.exitStatus, kExitOk) << again.err;
+    EXPECT_EQ(output(again)["unchanged"], true);
+    EXPECT_NE(again.err.find("nothing written"), std::string::npos) << again.err;
+}
+
+TEST_F(CliImportTest, AFolderHoldingSomethingElseIsRefusedAndLeftAlone) {
+    write("mine/params.toml", "[params]\n61 = 1\n");
+    ProcessResult r = import("mine");
+    EXPECT_EQ(r.exitStatus, kExitError);
+    json j = output(r);
+    EXPECT_EQ(j.value("status", ""), "error");
+    EXPECT_EQ(j["alarm"]["code"], "machine_folder_not_empty");
+    EXPECT_NE(r.err.find("mine: is not empty"), std::string::npos) << r.err;
+    EXPECT_EQ(folderFiles(dir_ / "mine"), std::vector<std::string>{"params.toml"});
+    EXPECT_EQ(m350::testing::readFile(dir_ / "mine/params.toml"), "[params]\n61 = 1\n");
+}
+
+TEST_F(CliImportTest, ATruncatedSettingIsRefusedNamingTheFileAndNothingIsWritten) {
+    std::string setting = m350::testing::readFile(dir_ / "SYSDISK/setting");
+    write("SYSDISK/setting", setting.substr(0, 7992));
+    ProcessResult r = import("machine");
+    EXPECT_EQ(r.exitStatus, kExitError);
+    json j = output(r);
+    EXPECT_EQ(j["alarm"]["code"], "backup_error");
+    EXPECT_EQ(j["alarm"]["file"], "SYSDISK/setting");
+    EXPECT_NE(r.err.find("SYSDISK/setting: holds 7992 bytes"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("parameter 999"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "machine"));
+    EXPECT_EQ(folderFiles(dir_).size(), folderFiles(dir_ / "SYSDISK").size()); // no temp folder left
+}
+
+TEST_F(CliImportTest, ANanInSettingIsRefusedNamingItsOffsetAndParameter) {
+    backup_.setting[129] = std::nan("");
+    backup_.writeTo(dir_ / "SYSDISK");
+    ProcessResult r = import("machine");
+    EXPECT_EQ(r.exitStatus, kExitError);
+    EXPECT_NE(r.err.find("SYSDISK/setting: offset 1032, parameter 129 (浮动对刀仪厚度"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("nan"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "machine"));
+}
+
+TEST_F(CliImportTest, MissingArgumentsAreUsageErrors) {
+    EXPECT_EQ(sim({"import", "SYSDISK"}).exitStatus, kExitUsage);
+    EXPECT_EQ(sim({"import", "--into", "machine"}).exitStatus, kExitUsage);
+    ProcessResult none = sim({"import", "nowhere", "--into", "machine"});
+    EXPECT_EQ(none.exitStatus, kExitError);
+    EXPECT_NE(none.err.find("nowhere: not a folder"), std::string::npos) << none.err;
+}
+
+} // namespace m350::clitest
