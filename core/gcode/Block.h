@@ -39,6 +39,10 @@ struct Assignment {
 
 enum class Control : std::uint8_t { None, IfGoto, IfThen, Goto, While, End };
 
+// The largest N label and GOTO target: 8 digits, FANUC's longest sequence numbers. Larger ones are
+// refused, never rounded into another label.
+inline constexpr std::int32_t kMaxLabel = 99999999;
+
 // loopId of a WHILE or END line too damaged to say which loop it is.
 inline constexpr std::int32_t kUnknownLoop = -1;
 

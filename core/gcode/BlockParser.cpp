@@ -14,7 +14,7 @@ BlockParser::BlockParser(const Dialect& dialect, BlockStorage& storage, std::vec
       fileName_(std::move(fileName)), fileIndex_(fileIndex) {}
 
 std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lineNumber) {
-    if (plainPath_) {
+    if (plainPath_ && !comment_.open) {
         Block plain;
         switch (parsePlainBlock(line, dialect_, {fileIndex_, lineNumber, 0}, storage_, plain)) {
         case PlainResult::Parsed: return plain;
@@ -24,7 +24,10 @@ std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lin
     }
     line_ = line;
     lineNumber_ = lineNumber;
-    Lexer(dialect_).tokenize(line, tokens_);
+    Lexer(dialect_).tokenize(line, tokens_, comment_);
+    if (comment_.openedOnThisLine) {
+        commentStart_ = {fileIndex_, lineNumber, comment_.column};
+    }
     const Token end = tokens_.back();
     tokens_.insert(tokens_.end(), kLookahead, end);
     pos_ = 0;
@@ -78,6 +81,23 @@ void BlockParser::lint(std::uint32_t column, std::string message) {
     diagnostics_.push_back({Severity::Error, DiagnosticKind::Lint, fileName_, lineNumber_, column, std::move(message)});
 }
 
+// A finding that changes nothing: the line runs as written.
+void BlockParser::note(std::uint32_t column, std::string message) {
+    diagnostics_.push_back({Severity::Warning, DiagnosticKind::Lint, fileName_, lineNumber_, column, std::move(message)});
+}
+
+bool BlockParser::lastLineLabelled() const {
+    if (tokens_.empty()) {
+        return false;
+    }
+    std::size_t i = 0;
+    while (tokens_[i].kind == TokenKind::Comment) {
+        ++i;
+    }
+    i += tokens_[i].kind == TokenKind::Slash ? 1 : 0;
+    return tokens_[i].kind == TokenKind::Letter && (tokens_[i].letter == 'N' || tokens_[i].letter == 'O');
+}
+
 std::string BlockParser::source(const Token& token) const {
     return std::string(line_.substr(token.offset, token.length));
 }
@@ -92,13 +112,16 @@ std::string BlockParser::describe(const Token& token) const {
 
 void BlockParser::parseStatement(Block& block) {
     for (const Token& t : tokens_) {
-        if (t.issue != TokenIssue::None) {
+        if (isNote(t.issue)) {
+            note(t.column, Lexer(dialect_).issueMessage(t, line_));
+        } else if (t.issue != TokenIssue::None) {
             fail(t, Lexer(dialect_).issueMessage(t, line_));
         }
-        if (t.kind == TokenKind::Comment && block.comment.empty()) {
+        if (t.kind == TokenKind::Comment && t.issue == TokenIssue::None && block.comment.empty()) {
             block.comment = storage_.text.store(commentText(t, line_));
         }
     }
+    checkExponents();
     auto skipComments = [&] {
         while (peek().kind == TokenKind::Comment) {
             next();
@@ -132,11 +155,7 @@ void BlockParser::parseStatement(Block& block) {
     }
     if (peek().kind == TokenKind::Letter && peek().letter == 'N' && peek(1).kind == TokenKind::Number) {
         next();
-        const Token& n = next();
-        if (n.number != std::floor(n.number)) {
-            fail(n, "a sequence number must be a whole number");
-        }
-        block.label = saturatingInt(n.number);
+        block.label = labelNumber(next(), "N");
     }
     skipComments();
     if (peek().kind == TokenKind::Keyword) {
@@ -148,7 +167,7 @@ void BlockParser::parseStatement(Block& block) {
         case Keyword::Goto:
             next();
             block.control = Control::Goto;
-            block.target = parseUnary();
+            block.target = parseGotoTarget();
             break;
         case Keyword::End:
             next();
@@ -190,7 +209,7 @@ void BlockParser::parseIf(Block& block) {
     if (atKeyword(Keyword::Goto)) {
         next();
         block.control = Control::IfGoto;
-        block.target = parseUnary();
+        block.target = parseGotoTarget();
     } else if (atKeyword(Keyword::Then)) {
         next();
         block.control = Control::IfThen;
@@ -226,6 +245,31 @@ void BlockParser::parseWhile(Block& block) {
     if (peek().kind != TokenKind::End) {
         fail(peek(), "unexpected " + describe(peek()) + " after WHILE ... DO" + std::to_string(block.loopId));
     }
+}
+
+// Labels are exact: N and GOTO numbers beyond kMaxLabel are refused rather than rounded into
+// another label.
+std::int32_t BlockParser::labelNumber(const Token& number, const char* what) {
+    if (number.number != std::floor(number.number)) {
+        fail(number, "a sequence number must be a whole number");
+    }
+    if (number.number > kMaxLabel) {
+        fail(number, what + source(number) + ": sequence numbers run from 0 to " + std::to_string(kMaxLabel) +
+                         " (8 digits)");
+    }
+    return static_cast<std::int32_t>(number.number);
+}
+
+ExprId BlockParser::parseGotoTarget() {
+    const Token& first = peek();
+    ExprId target = parseUnary();
+    const ExprNode& value = pool_[target];
+    if (value.kind == ExprKind::Number && (value.number < 0 || value.number > kMaxLabel)) {
+        const Token& last = tokens_[pos_ - 1];
+        fail(first, "GOTO" + std::string(line_.substr(first.offset, last.offset + last.length - first.offset)) +
+                        ": sequence numbers run from 0 to " + std::to_string(kMaxLabel) + " (8 digits)");
+    }
+    return target;
 }
 
 int BlockParser::parseLoopId(const char* keyword) {
@@ -315,11 +359,18 @@ Word BlockParser::parseWord() {
         k != TokenKind::Plus) {
         fail(letter, std::string("address ") + letter.letter + " needs a value, found " + describe(peek()));
     }
+    auto arithmeticAhead = [this] {
+        TokenKind k = peek().kind;
+        return k == TokenKind::Plus || k == TokenKind::Minus || k == TokenKind::Star || k == TokenKind::Slash;
+    };
+    const std::size_t valueStart = pos_;
     if (!plainNumber(w)) {
-        w.value = parseUnary();
+        w.value = dialect_.unbracketedAddressValues ? parseAdditive() : parseUnary();
+    } else if (dialect_.unbracketedAddressValues && arithmeticAhead()) {
+        pos_ = valueStart; // `Z10+#5`: the value runs up to the next address letter
+        w.value = parseAdditive();
     }
-    if (peek().kind == TokenKind::Plus || peek().kind == TokenKind::Minus || peek().kind == TokenKind::Star ||
-        (peek().kind == TokenKind::Slash)) {
+    if (arithmeticAhead()) {
         fail(peek(), "arithmetic in an address value needs brackets: " + std::string(1, letter.letter) + "[...]");
     }
     return w;

@@ -5,6 +5,7 @@
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Diagnostic.h"
 #include "core/gcode/Expression.h"
+#include "core/gcode/Lexer.h"
 #include "core/gcode/Token.h"
 
 #include <optional>
@@ -36,6 +37,14 @@ public:
     // The lint finding of the block just parsed (empty when none).
     const std::string& lastLint() const { return lastLint_; }
 
+    // Whether the line just parsed, when it had an error, begins with an N or O number (a line a
+    // jump or a call may reach).
+    bool lastLineLabelled() const;
+
+    // A `/* */` comment still open after the last line parsed, and where its `/*` is.
+    bool commentOpen() const { return comment_.open; }
+    SourceLocation commentStart() const { return commentStart_; }
+
 private:
     struct Failure {};
 
@@ -46,6 +55,7 @@ private:
     [[noreturn]] void fail(const Token& at, std::string message);
     [[noreturn]] void fail(std::uint32_t column, std::string message);
     void lint(std::uint32_t column, std::string message);
+    void note(std::uint32_t column, std::string message);
 
     void parseStatement(Block& block);
     void parseIf(Block& block);
@@ -55,6 +65,8 @@ private:
     Word parseWord();
     ExprId parseCondition(const char* statement);
     int parseLoopId(const char* keyword);
+    ExprId parseGotoTarget();
+    std::int32_t labelNumber(const Token& number, const char* what);
 
     bool plainNumber(Word& word); // a signed number alone: kept in the word
     ExprId parseExpression();
@@ -77,6 +89,7 @@ private:
     std::optional<BinaryOp> termAhead();
 
     [[noreturn]] void failStrayBracket(const Token& at, const char* context);
+    void checkExponents();
     std::string hashBracketHint(std::size_t fromToken, std::size_t toToken) const;
     void lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken);
     std::optional<Block> brokenLoopBlock(Block block) const;
@@ -95,6 +108,8 @@ private:
     std::vector<Token> tokens_;
     std::vector<Assignment> assignments_; // of the block being parsed, stored when it parses
     std::size_t pos_ = 0;
+    BlockCommentState comment_;
+    SourceLocation commentStart_;
     int depth_ = 0; // nesting of brackets, signs and indirections in the current expression
     std::string lastLint_;
     bool plainPath_ = true;

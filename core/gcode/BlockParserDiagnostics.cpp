@@ -39,6 +39,44 @@ std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
     return block;
 }
 
+// `#1=1E308`, `G4 P1E3`: G-code has no exponent notation, and FANUC refuses it too. Read as a
+// number and an E word, the E would be silently ignored. On FANUC, a G65 line's `A1E2` is A and
+// the argument E (#8), as FANUC reads it.
+void BlockParser::checkExponents() {
+    auto adjacent = [this](std::size_t a, std::size_t b) {
+        return tokens_[a].offset + tokens_[a].length == tokens_[b].offset;
+    };
+    bool eArgument = false;
+    if (dialect_.callArgument('E')) {
+        for (std::size_t i = 0; i + 1 < tokens_.size(); ++i) {
+            eArgument |= tokens_[i].kind == TokenKind::Letter && tokens_[i].letter == 'G' &&
+                         tokens_[i + 1].kind == TokenKind::Number && tokens_[i + 1].number == 65;
+        }
+    }
+    for (std::size_t i = 0; i + 2 < tokens_.size(); ++i) {
+        const Token& e = tokens_[i + 1];
+        if (tokens_[i].kind != TokenKind::Number || e.kind != TokenKind::Letter || e.letter != 'E' ||
+            !adjacent(i, i + 1)) {
+            continue;
+        }
+        std::size_t exponent = i + 2;
+        if ((tokens_[exponent].kind == TokenKind::Plus || tokens_[exponent].kind == TokenKind::Minus) &&
+            adjacent(i + 1, exponent)) {
+            ++exponent;
+        }
+        if (tokens_[exponent].kind != TokenKind::Number || !adjacent(exponent - 1, exponent)) {
+            continue;
+        }
+        if (eArgument && i > 0 && tokens_[i - 1].kind == TokenKind::Letter) {
+            continue;
+        }
+        const Token& end = tokens_[exponent];
+        std::string written(line_.substr(tokens_[i].offset, end.offset + end.length - tokens_[i].offset));
+        fail(tokens_[i], "'" + written + "' is not a G-code number: there is no exponent (E) notation; " +
+                             "write the number in digits");
+    }
+}
+
 void BlockParser::failStrayBracket(const Token& at, const char* context) {
     std::size_t stray = pos_;
     std::size_t open = 0;
@@ -97,6 +135,8 @@ void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, 
             std::string meant = written;
             if (auto at = meant.find("[#"); at != std::string::npos) {
                 meant.replace(at, 2, "#[");
+            } else if (meant.size() > 2 && meant[1] == '#') { // unbracketed (m350): `X#1330+#1300-1`
+                meant = meant.substr(0, 2) + "[" + meant.substr(2) + "]";
             }
             std::string b = std::to_string(table.base);
             lint(word.column, written + " adds the value of #" + b + " instead of indexing " +

@@ -21,8 +21,11 @@ Dialect makeM350() {
     d.name = "m350";
     d.slashSlashComments = true;
     d.semicolonComments = true;
+    d.blockComments = true;
+    d.dotAfterComment = true;
     d.cStyleComparisons = true;
     d.unbracketedConditions = true;
+    d.unbracketedAddressValues = true; // the vendor's own libraries: `G91G01Z#2-#1502`
     d.upperCaseKeywords = true;
     d.atanComma = true;
     d.maxLoopId = 16; // the factory macros use DO1..DO16

@@ -27,9 +27,12 @@ struct Dialect {
     bool spacesInsignificant = false;  // FANUC: `GO TO 290` == `GOTO290`
     bool slashSlashComments = false;   // M350: `// ...`
     bool semicolonComments = false;    // M350: `; ...`
+    bool blockComments = false;        // M350: `/* ... */`, also over several lines (factory slib-m.nc)
+    bool dotAfterComment = false;      // M350: `#1503=-3000(text).` (published macros): the `.` is ignored
     bool cStyleComparisons = false;    // == != < > <= >=
     bool bitwiseKeywords = false;      // AND OR XOR MOD
     bool unbracketedConditions = false; // M350: `IF#1300 != 0 GOTO56`, `WHILE#13>0DO13`
+    bool unbracketedAddressValues = false; // M350: `G1X#63+#44Y#64+#45` (an expression up to the next address)
     bool upperCaseKeywords = false;    // M350: `while` is not WHILE
     bool atanComma = false;            // ATAN[y,x]
     bool atanSlash = false;            // ATAN[a]/[b]

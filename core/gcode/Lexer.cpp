@@ -1,61 +1,40 @@
 #include "core/gcode/Lexer.h"
 
 #include "core/gcode/DecimalScan.h"
+#include "core/gcode/LexerText.h"
 
+#include <array>
 #include <charconv>
-#include <optional>
 
 namespace m350::gcode {
 
 namespace {
 
-bool isLetter(char c) {
-    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
-}
 bool isDigit(char c) {
     return c >= '0' && c <= '9';
 }
 bool isSpace(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
-char upper(char c) {
-    return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
-}
 
-// Keywords are at most 5 letters; longer runs are never keywords.
-std::optional<Keyword> keywordFor(std::string_view upperWord) {
-    for (int k = 0; k <= static_cast<int>(Keyword::Bcd); ++k) {
-        if (upperWord == keywordSpelling(static_cast<Keyword>(k))) {
-            return static_cast<Keyword>(k);
-        }
-    }
-    return std::nullopt;
-}
-
-// Full-width punctuation typed with a Chinese input method looks right but is not G-code.
-const char* asciiFor(std::string_view character) {
-    static constexpr std::pair<std::string_view, const char*> table[] = {
-        {"（", "("}, {"）", ")"}, {"［", "["}, {"］", "]"}, {"＃", "#"}, {"，", ","}, {"＝", "="},
-        {"＋", "+"}, {"－", "-"}, {"＊", "*"}, {"／", "/"}, {"；", ";"}, {"　", " "}, {"＜", "<"}, {"＞", ">"}};
-    for (auto [wide, ascii] : table) {
-        if (character == wide) {
-            return ascii;
-        }
-    }
-    return nullptr;
-}
-
-// Plain decimals, the bulk of every program, in one pass: when the digits form an integer below
-// 2^53 and there are at most 22 after the point, mantissa / 10^k is one correctly rounded
-// division, so the result equals what from_chars gives (Clinger's fast path).
 // The general conversion, for numbers scanDecimal leaves alone.
 bool parseNumber(std::string_view digits, double& value) {
-    if (digits.back() == '.') {
+    if (!digits.empty() && digits.back() == '.') {
         digits.remove_suffix(1); // `1.` is FANUC's 1.0
     }
     auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    return ec == std::errc() && ptr == digits.data() + digits.size();
+    return !digits.empty() && ec == std::errc() && ptr == digits.data() + digits.size();
 }
+
+// The letters of one run (`G`, `GOTO`, `LEABS`; on FANUC also `GO TO`), where each one stands.
+struct LetterRun {
+    static constexpr std::size_t kMaxLetters = 16; // longer runs are never keywords
+    std::array<char, kMaxLetters> upper{};
+    std::array<std::uint32_t, kMaxLetters> offset{};
+    std::array<std::uint32_t, kMaxLetters> column{};
+    std::size_t count = 0; // may exceed kMaxLetters
+    bool lowerCase = false;
+};
 
 } // namespace
 
@@ -65,10 +44,16 @@ std::vector<Token> Lexer::tokenize(std::string_view line) const {
     return tokens;
 }
 
+void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens) const {
+    BlockCommentState comment;
+    tokenize(line, tokens, comment);
+}
+
 // One pass over the bytes. Columns count characters: every byte of ASCII is one, and a multi-byte
 // UTF-8 character (possible only in comments and invalid tokens) counts once.
-void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens) const {
+void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens, BlockCommentState& comment) const {
     tokens.clear();
+    comment.openedOnThisLine = false;
     const char* text = line.data();
     const std::size_t size = line.size();
     std::size_t i = 0;
@@ -90,67 +75,116 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens) const {
         }
         ++column;
     };
+    auto closeBlockComment = [&] {
+        while (i < size) {
+            if (text[i] == '*' && at(i + 1) == '/') {
+                i += 2;
+                column += 2;
+                return true;
+            }
+            step();
+        }
+        return false;
+    };
+    auto nextNonSpace = [&](std::size_t k) {
+        while (k < size && isSpace(text[k])) {
+            ++k;
+        }
+        return k;
+    };
+    if (comment.open && !closeBlockComment()) {
+        emit(TokenKind::End, i, column);
+        return;
+    }
+    comment.open = false;
     while (i < size) {
         const char ch = text[i];
         const std::size_t start = i;
         const std::uint32_t startColumn = column;
-        if (ch == ' ' || ch == '\t' || ch == '\r' || ch == '\n') {
+        if (isSpace(ch)) {
             ++i;
             ++column;
             continue;
         }
         if (isLetter(ch)) {
-            char word[8];
-            std::size_t letters = 0;
-            bool lowerCase = false;
+            LetterRun run;
             while (i < size) {
                 char c = text[i];
                 if (isLetter(c)) {
-                    lowerCase |= c >= 'a';
-                    if (letters < sizeof word) {
-                        word[letters] = upper(c);
+                    run.lowerCase |= c >= 'a';
+                    if (run.count < LetterRun::kMaxLetters) {
+                        run.upper[run.count] = upperCase(c);
+                        run.offset[run.count] = static_cast<std::uint32_t>(i);
+                        run.column[run.count] = column;
                     }
-                    ++letters;
+                    ++run.count;
                     ++i;
                     ++column;
-                } else if (dialect_.spacesInsignificant && isSpace(c)) {
-                    std::size_t ahead = i + 1;
-                    while (isSpace(at(ahead))) {
-                        ++ahead;
-                    }
-                    if (!isLetter(at(ahead))) {
-                        break;
-                    }
+                } else if (dialect_.spacesInsignificant && isSpace(c) && isLetter(at(nextNonSpace(i)))) {
+                    std::size_t ahead = nextNonSpace(i);
                     column += static_cast<std::uint32_t>(ahead - i);
                     i = ahead;
                 } else {
                     break;
                 }
             }
-            if (letters == 1) {
-                emit(TokenKind::Letter, start, startColumn).letter = word[0];
+            if (run.count == 1) {
+                emit(TokenKind::Letter, start, startColumn).letter = run.upper[0];
                 continue;
             }
-            auto keyword = letters <= sizeof word ? keywordFor(std::string_view(word, letters)) : std::nullopt;
-            if (!keyword) {
+            KeywordSplit split;
+            if (run.count <= LetterRun::kMaxLetters) {
+                split = splitKeywords(std::string_view(run.upper.data(), run.count));
+            }
+            if (split.count == 0) {
                 emit(TokenKind::Invalid, start, startColumn).issue = TokenIssue::UnknownWord;
                 continue;
             }
-            Token& t = emit(TokenKind::Keyword, start, startColumn);
-            t.keyword = *keyword;
-            if (dialect_.upperCaseKeywords && lowerCase) {
-                t.issue = TokenIssue::LowerCaseKeyword;
+            const std::size_t end = i;
+            std::size_t first = 0;
+            for (std::size_t part = 0; part < split.count; ++part) {
+                const std::size_t last = first + split.length[part] - 1;
+                const bool whole = split.count == 1; // keeps the spaces of `GO TO` in its length
+                i = whole ? end : run.offset[last] + 1;
+                Token& t = emit(TokenKind::Keyword, run.offset[first], run.column[first]);
+                t.keyword = split.keyword[part];
+                bool lowerCase = false;
+                for (std::size_t k = first; k <= last; ++k) {
+                    lowerCase |= text[run.offset[k]] >= 'a';
+                }
+                if (dialect_.upperCaseKeywords && lowerCase) {
+                    t.issue = TokenIssue::LowerCaseKeyword;
+                }
+                first = last + 1;
             }
+            i = end;
             continue;
         }
-        if (isDigit(ch) || (ch == '.' && isDigit(at(i + 1)))) {
+        const bool spacedPoint = dialect_.spacesInsignificant && ch == '.' && isDigit(at(nextNonSpace(i + 1)));
+        if (isDigit(ch) || (ch == '.' && isDigit(at(i + 1))) || spacedPoint) {
             double value = 0.0;
             bool converted = scanDecimal(text, size, i, value);
+            std::string packed; // FANUC: `1 0 . 5` is 10.5
+            for (std::size_t k = nextNonSpace(i); dialect_.spacesInsignificant && k > i &&
+                                                  (isDigit(at(k)) || at(k) == '.');
+                 k = nextNonSpace(i)) {
+                if (packed.empty()) {
+                    packed.assign(text + start, i - start);
+                }
+                for (i = k; i < size && (isDigit(text[i]) || text[i] == '.'); ++i) {
+                    packed.push_back(text[i]);
+                }
+            }
+            if (!packed.empty()) {
+                std::size_t k = 0;
+                converted = scanDecimal(packed.data(), packed.size(), k, value);
+            }
             column += static_cast<std::uint32_t>(i - start);
             Token& t = emit(TokenKind::Number, start, startColumn);
             if (converted) {
                 t.number = value;
-            } else if (!parseNumber(line.substr(start, i - start), t.number)) {
+            } else if (!parseNumber(packed.empty() ? line.substr(start, i - start) : std::string_view(packed),
+                                    t.number)) {
                 t.kind = TokenKind::Invalid;
                 t.issue = TokenIssue::MalformedNumber;
             }
@@ -158,6 +192,15 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens) const {
         }
         if ((ch == '/' && at(i + 1) == '/' && dialect_.slashSlashComments) || ch == ';') {
             break; // comment (M350) or end of block (FANUC) up to the end of the line
+        }
+        if (ch == '/' && at(i + 1) == '*' && dialect_.blockComments) {
+            i += 2;
+            column += 2;
+            if (!closeBlockComment()) {
+                comment = {true, true, startColumn};
+                break;
+            }
+            continue;
         }
         if (ch == '(') {
             while (i < size && text[i] != ')') {
@@ -200,11 +243,19 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens) const {
                 continue;
             }
             break;
+        case '.':
+            if (dialect_.dotAfterComment && !tokens.empty() && tokens.back().kind == TokenKind::Comment) {
+                single(TokenKind::Comment); // `(Relay test, press any key to exit).`
+                tokens.back().issue = TokenIssue::StrayDot;
+                continue;
+            }
+            break;
         default: break;
         }
         step();
         Token& t = emit(TokenKind::Invalid, start, startColumn);
-        t.issue = asciiFor(line.substr(start, i - start)) ? TokenIssue::FullWidth : TokenIssue::UnexpectedCharacter;
+        t.issue = fullWidthAscii(line.substr(start, i - start)) ? TokenIssue::FullWidth
+                                                                 : TokenIssue::UnexpectedCharacter;
     }
     emit(TokenKind::End, i, column);
 }
@@ -217,18 +268,19 @@ std::string Lexer::issueMessage(const Token& token, std::string_view line) const
     case TokenIssue::MalformedNumber: return "malformed number '" + text + "'";
     case TokenIssue::UnclosedComment: return "comment '(' is not closed with ')'";
     case TokenIssue::FullWidth:
-        return "full-width '" + text + "' is not G-code (did you mean '" + asciiFor(text) + "'?)";
+        return "full-width '" + text + "' is not G-code (did you mean '" + fullWidthAscii(text) + "'?)";
     case TokenIssue::UnexpectedCharacter: return "unexpected character '" + text + "'";
     case TokenIssue::LowerCaseKeyword: {
         std::string upperText;
         for (char ch : text) {
             if (isLetter(ch)) {
-                upperText.push_back(upper(ch));
+                upperText.push_back(upperCase(ch));
             }
         }
         return "keywords are upper case in the " + std::string(dialect_.name) + " dialect: write " + upperText +
                ", not " + text;
     }
+    case TokenIssue::StrayDot: return "the '.' after the comment is not G-code: it is ignored";
     }
     return {};
 }

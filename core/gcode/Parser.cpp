@@ -2,6 +2,7 @@
 #include "core/common/Numeric.h"
 
 #include "core/gcode/BlockParser.h"
+#include "core/gcode/LineSplitter.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -36,24 +37,28 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
     if (program.blocks.empty()) {
         // Size for the program (the first and largest file) plus headroom for the macro libraries,
         // so adding a library never copies a 200,000-block program.
-        auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+        auto lines = static_cast<std::size_t>(std::max(std::count(text.begin(), text.end(), '\n'),
+                                                       std::count(text.begin(), text.end(), '\r'))) + 1;
         program.blocks.reserve(lines + 4096);
     }
     const bool checksCalls = role == FileRole::Main || role == FileRole::Mdi;
     bool unitOpen = false;
     std::uint32_t lineNumber = 0;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        std::size_t end = text.find('\n', start);
-        if (end == std::string_view::npos) {
-            end = text.size();
-        }
+    Unreachable unreachable;
+    LineSplitter lines(text);
+    std::string_view line;
+    while (lines.next(line)) {
         ++lineNumber;
-        auto block = blockParser.parse(text.substr(start, end - start), lineNumber);
-        start = end + 1;
+        const std::size_t diagnosticsBefore = diagnostics_.size();
+        auto block = blockParser.parse(line, lineNumber);
         if (!block) {
+            if (diagnostics_.size() > diagnosticsBefore && unreachable.afterLine != 0 &&
+                !blockParser.lastLineLabelled()) {
+                demoteUnreachable(diagnosticsBefore, unreachable);
+            }
             continue;
         }
+        unreachable.update(*block, lineNumber);
         if (block->programNumber >= 0 || !unitOpen) {
             if (unitOpen) {
                 closeUnit(program, static_cast<std::uint32_t>(program.units.size() - 1));
@@ -79,6 +84,43 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
     }
     if (unitOpen) {
         closeUnit(program, static_cast<std::uint32_t>(program.units.size() - 1));
+    }
+    if (blockParser.commentOpen()) {
+        SourceLocation at = blockParser.commentStart();
+        diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, program.files[fileIndex].name, at.line,
+                                at.column, "the comment '/*' is not closed with '*/' before the end of the file"});
+    }
+}
+
+void Parser::Unreachable::update(const Block& block, std::uint32_t lineNumber) {
+    if (block.label >= 0 || block.programNumber >= 0 || block.control == Control::End) {
+        afterLine = 0; // a jump, a call or a loop's exit may land here
+    }
+    if (block.blockDelete) {
+        return;
+    }
+    const char* ends = block.control == Control::Goto ? "GOTO" : nullptr;
+    for (const Word& w : block.words) {
+        if (isNumberWord(w, 'M', 30) || isNumberWord(w, 'M', 2) || isNumberWord(w, 'M', 99)) {
+            ends = w.number == 30 ? "M30" : w.number == 2 ? "M2" : "M99";
+        }
+    }
+    if (ends) {
+        afterLine = lineNumber;
+        what = ends;
+    }
+}
+
+// FANUC runs a program whose text after M30 or an unconditional GOTO is not G-code, as long as
+// nothing can reach it (a line with an N number can be jumped to): for `check` a lint finding.
+void Parser::demoteUnreachable(std::size_t firstNew, const Unreachable& unreachable) {
+    for (std::size_t i = firstNew; i < diagnostics_.size(); ++i) {
+        Diagnostic& d = diagnostics_[i];
+        if (d.kind == DiagnosticKind::Syntax) {
+            d.kind = DiagnosticKind::Lint;
+            d.message += " (never reached after the " + std::string(unreachable.what) + " on line " +
+                         std::to_string(unreachable.afterLine) + ", so the program still runs)";
+        }
     }
 }
 

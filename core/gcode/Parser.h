@@ -26,6 +26,14 @@ public:
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
 private:
+    // Where the lines that no block reaches begin: after an M30, M2, M99 or GOTO, up to the next
+    // N or O number or END.
+    struct Unreachable {
+        std::uint32_t afterLine = 0; // the line of that block, 0 while lines are reachable
+        const char* what = "";
+        void update(const Block& block, std::uint32_t lineNumber);
+    };
+    void demoteUnreachable(std::size_t firstNew, const Unreachable& unreachable);
     void closeUnit(Program& program, std::uint32_t unitIndex);
     void pairLoops(Program& program);
     void checkGotos(const Program& program, const ProgramUnit& unit);

@@ -96,12 +96,13 @@ PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, Sourc
         if (!scanDecimal(text, size, i, value)) {
             return PlainResult::Declined;
         }
-        if (i < size && !isSpace(text[i]) && !isLetter(text[i]) && text[i] != '(' && text[i] != ';' &&
-            text[i] != '/') {
-            return PlainResult::Declined;
+        if (i < size && ((!isSpace(text[i]) && !isLetter(text[i]) && text[i] != '(' && text[i] != ';' &&
+                          text[i] != '/') ||
+                         (text[i] | 0x20) == 'e')) {
+            return PlainResult::Declined; // `P1E3` is an error the full parser explains
         }
         if (letter == 'N' && first && sign == 0) {
-            if (value != static_cast<double>(static_cast<std::int64_t>(value)) || value > 2147483647.0) {
+            if (value != static_cast<double>(static_cast<std::int64_t>(value)) || value > kMaxLabel) {
                 return PlainResult::Declined;
             }
             label = static_cast<std::int32_t>(value);

@@ -20,9 +20,14 @@ enum class Keyword : std::uint8_t {
 };
 
 // Why a token cannot be used; the message is built from it only when an error is reported.
+// StrayDot is only a note: the token is ignored and the line still runs.
 enum class TokenIssue : std::uint8_t {
-    None, UnknownWord, MalformedNumber, UnclosedComment, FullWidth, UnexpectedCharacter, LowerCaseKeyword
+    None, UnknownWord, MalformedNumber, UnclosedComment, FullWidth, UnexpectedCharacter, LowerCaseKeyword, StrayDot
 };
+
+inline bool isNote(TokenIssue issue) {
+    return issue == TokenIssue::StrayDot;
+}
 
 // A token refers to its text by position in the line, so lexing a line allocates nothing.
 struct Token {

@@ -1,9 +1,20 @@
 #include "core/macro/Executor.h"
 #include "core/common/Numeric.h"
 
+#include <charconv>
 #include <cmath>
 
 namespace m350::macro {
+
+namespace {
+
+std::string shortest(double value) {
+    char buffer[32];
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+} // namespace
 
 Executor::Executor(const gcode::Program& program, const gcode::Dialect& dialect, VariableStore& store,
                    MachineAccess& machine, BlockSink& sink, Options options)
@@ -163,6 +174,12 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
 void Executor::jumpToLabel(std::size_t frameIndex, double label, std::uint32_t column) {
     Frame& frame = frames_[frameIndex];
     const gcode::ProgramUnit& unit = program_.units[frame.unit];
+    if (!(std::round(label) >= 0 && std::round(label) <= gcode::kMaxLabel)) { // NaN too
+        throw MacroError{AlarmCode::GotoMissingLabel,
+                         "GOTO" + shortest(label) + ": sequence numbers run from 0 to " +
+                             std::to_string(gcode::kMaxLabel),
+                         column};
+    }
     auto n = roundToInt(label);
     if (auto target = program_.findLabel(frame.unit, n, frame.pc)) {
         frame.pc = *target;

@@ -245,10 +245,15 @@ TEST(ParserErrors, AddressWithoutValue) {
     expectOnly(parse("G1 X Y2"), DiagnosticKind::Syntax, 1, 4, "address X needs a value, found 'Y'");
 }
 
-TEST(ParserErrors, ArithmeticInAnAddressNeedsBrackets) {
-    expectOnly(parse("G1 X10+5"), DiagnosticKind::Syntax, 1, 7,
-               "arithmetic in an address value needs brackets: X[...]");
-    expectOnly(parse("G1 Y#1*2"), DiagnosticKind::Syntax, 1, 7, "needs brackets: Y[...]");
+// The M350 reads `X10+5` up to the next address (the vendor's own libraries write `G91G01Z#2-#1502`,
+// FactoryLanguageTest); FANUC needs the brackets.
+TEST(ParserErrors, ArithmeticInAnAddressNeedsBracketsOnFanuc) {
+    Parsed p = support::parse("G1 X10+5", Dialect::fanuc());
+    ASSERT_EQ(p.diagnostics.size(), 1u) << listDiagnostics(p.diagnostics);
+    EXPECT_EQ(formatDiagnostic(p.diagnostics[0]), "test.nc:1:7: arithmetic in an address value needs brackets: X[...]");
+    p = support::parse("G1 Y#1*2", Dialect::fanuc());
+    ASSERT_EQ(p.diagnostics.size(), 1u) << listDiagnostics(p.diagnostics);
+    EXPECT_EQ(formatDiagnostic(p.diagnostics[0]), "test.nc:1:7: arithmetic in an address value needs brackets: Y[...]");
 }
 
 TEST(ParserErrors, FractionalVariableNumber) {
@@ -336,7 +341,7 @@ TEST(ParserErrors, OnlyTheFirstErrorOfALineIsReported) {
 
 TEST(ParserErrors, ColumnsCountCharactersAfterChineseText) {
     Parsed p = parse("(换刀程序)G1 X\n"
-                     "#1503 = 1(当前刀具号) G1 X10+5\n"
+                     "#1503 = 1(当前刀具号) G1 X10]\n"
                      "(等待) WHILE [#1520+#13-1] NE 0] DO1\nEND1\n"
                      "(跳转)GOTO9\n"
                      "(刀)G53 X[#1330+#1300-1]");
