@@ -27,7 +27,7 @@ public:
             done_ = true;
             return true;
         }
-        start_ = end + 1 + (end == cr && cr + 1 == lf ? 1 : 0); // CRLF is one line end
+        start_ = end + 1 + (end == cr && cr + 1 == lf && lf < text_.size() ? 1 : 0); // CRLF: one line end
         return true;
     }
 

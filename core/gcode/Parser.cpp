@@ -37,9 +37,13 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
     if (program.blocks.empty()) {
         // Size for the program (the first and largest file) plus headroom for the macro libraries,
         // so adding a library never copies a 200,000-block program.
-        auto lines = static_cast<std::size_t>(std::max(std::count(text.begin(), text.end(), '\n'),
-                                                       std::count(text.begin(), text.end(), '\r'))) + 1;
-        program.blocks.reserve(lines + 4096);
+        std::size_t lineFeeds = 0;
+        std::size_t carriageReturns = 0; // a file may end its lines with CR alone
+        for (char c : text) {
+            lineFeeds += c == '\n' ? 1 : 0;
+            carriageReturns += c == '\r' ? 1 : 0;
+        }
+        program.blocks.reserve(std::max(lineFeeds, carriageReturns) + 1 + 4096);
     }
     const bool checksCalls = role == FileRole::Main || role == FileRole::Mdi;
     bool unitOpen = false;
@@ -101,7 +105,7 @@ void Parser::Unreachable::update(const Block& block, std::uint32_t lineNumber) {
     }
     const char* ends = block.control == Control::Goto ? "GOTO" : nullptr;
     for (const Word& w : block.words) {
-        if (isNumberWord(w, 'M', 30) || isNumberWord(w, 'M', 2) || isNumberWord(w, 'M', 99)) {
+        if (w.letter == 'M' && w.isNumber() && (w.number == 30 || w.number == 2 || w.number == 99)) {
             ends = w.number == 30 ? "M30" : w.number == 2 ? "M2" : "M99";
         }
     }

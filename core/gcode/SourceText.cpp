@@ -1,5 +1,7 @@
 #include "core/gcode/SourceText.h"
 
+#include "core/gcode/LineSplitter.h"
+
 #include <iconv.h>
 
 #if defined(__unix__)
@@ -105,12 +107,18 @@ std::variant<std::string, std::size_t> decodeGbk(const Iconv& cd, std::string_vi
     return out;
 }
 
+// Lines end as the parser ends them (LF, CRLF or CR alone), so the line agrees with its diagnostics.
 std::string position(std::string_view bytes, std::size_t offset) {
     const std::string_view before = bytes.substr(0, offset);
-    const auto line = std::count(before.begin(), before.end(), '\n') + 1;
-    const std::size_t lastNewline = before.rfind('\n');
-    const std::size_t lineStart = lastNewline == std::string_view::npos ? 0 : lastNewline + 1;
-    return "line " + std::to_string(line) + ", column " + std::to_string(offset - lineStart + 1);
+    LineSplitter lines(before);
+    std::string_view line;
+    std::size_t count = 0;
+    std::size_t lineStart = 0;
+    while (lines.next(line)) {
+        ++count;
+        lineStart = lines.lineStart(line);
+    }
+    return "line " + std::to_string(count) + ", column " + std::to_string(offset - lineStart + 1);
 }
 
 std::string errnoMessage(int err) { return std::error_code(err, std::generic_category()).message(); }

@@ -114,7 +114,7 @@ TEST_F(CliTest, CheckListsEveryErrorOfTheFile) {
     write("three.nc", "#1=1\n"
                       "#2=[#1+1\n" // line 2: ']' missing
                       "G00 X1\n"
-                      "G01 X#1+2 F100\n" // line 4: arithmetic without brackets
+                      "G01 X#1+ F100\n" // line 4: the sum has no second operand
                       "#3=#1\n"
                       "#1552+#20-1] = 1\n" // line 6: the manual's damaged release line
                       "M30\n");
