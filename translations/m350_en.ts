@@ -1,6 +1,65 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="en_US">
 <context>
+    <name>m350::ui::BackupImportFlow</name>
+    <message>
+        <source>Controller backup: the folder that holds setting, slib-g.nc ...</source>
+        <translation>Controller backup: the folder that holds setting, slib-g.nc ...</translation>
+    </message>
+    <message>
+        <source>New machine folder (a new or empty folder)</source>
+        <translation>New machine folder (a new or empty folder)</translation>
+    </message>
+    <message>
+        <source>Import refused:
+%1: %2</source>
+        <translation>Import refused:
+%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 already holds this backup's import; nothing written</source>
+        <translation>%1 already holds this backup's import; nothing written</translation>
+    </message>
+    <message>
+        <source>Machine folder made from the backup:
+%1</source>
+        <translation>Machine folder made from the backup:
+%1</translation>
+    </message>
+    <message>
+        <source>%1 parameters, %2 differ from the factory values</source>
+        <translation>%1 parameters, %2 differ from the factory values</translation>
+    </message>
+    <message>
+        <source>%1 .nc files copied as they were, %2 files not copied</source>
+        <translation>%1 .nc files copied as they were, %2 files not copied</translation>
+    </message>
+    <message>
+        <source>%1 stated values to review in machine.toml</source>
+        <translation>%1 stated values to review in machine.toml</translation>
+    </message>
+    <message>
+        <source>The simulator cannot model:</source>
+        <translation>The simulator cannot model:</translation>
+    </message>
+    <message>
+        <source>%1 syntax errors the simulator does not accept yet</source>
+        <translation>%1 syntax errors the simulator does not accept yet</translation>
+    </message>
+    <message>
+        <source>The whole report: %1</source>
+        <translation>The whole report: %1</translation>
+    </message>
+    <message>
+        <source>Open it with: m350-hmi --config %1</source>
+        <translation>Open it with: m350-hmi --config %1</translation>
+    </message>
+    <message>
+        <source>Switch the panel to this machine now?</source>
+        <translation>Switch the panel to this machine now?</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::BreakRunPage</name>
     <message>
         <source>Break Run</source>
@@ -665,6 +724,10 @@ STEP MPG</translation>
     <message>
         <source>MPG RUN: reverse wheel retraces the path</source>
         <translation>MPG RUN: reverse wheel retraces the path</translation>
+    </message>
+    <message>
+        <source>Import controller backup...</source>
+        <translation>Import controller backup...</translation>
     </message>
 </context>
 <context>
@@ -1909,14 +1972,14 @@ STEP MPG</translation>
         <translation>Do you want to delete the selected file?</translation>
     </message>
     <message>
-        <source>Copy successful!</source>
-        <comment>msg 955</comment>
-        <translation>Copy successful!</translation>
-    </message>
-    <message>
         <source>file does not exist!</source>
         <comment>msg 842</comment>
         <translation>file does not exist!</translation>
+    </message>
+    <message>
+        <source>Copy successful!</source>
+        <comment>msg 955</comment>
+        <translation>Copy successful!</translation>
     </message>
     <message>
         <source>Delete all?</source>
@@ -2007,10 +2070,6 @@ STEP MPG</translation>
         <translation>Parameter %1: invalid value</translation>
     </message>
     <message>
-        <source>IN%1: no such input (IN01-IN24)</source>
-        <translation>IN%1: no such input (IN01-IN24)</translation>
-    </message>
-    <message>
         <source>No program loaded: load one on the Program page</source>
         <translation>No program loaded: load one on the Program page</translation>
     </message>
@@ -2029,6 +2088,10 @@ STEP MPG</translation>
     <message>
         <source>%1: cannot write: %2</source>
         <translation>%1: cannot write: %2</translation>
+    </message>
+    <message>
+        <source>IN%1: no such input (IN01-IN24)</source>
+        <translation>IN%1: no such input (IN01-IN24)</translation>
     </message>
     <message>
         <source>File save failed!</source>

@@ -1,6 +1,65 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>m350::ui::BackupImportFlow</name>
+    <message>
+        <source>Controller backup: the folder that holds setting, slib-g.nc ...</source>
+        <translation>控制器备份: 包含 setting、slib-g.nc 等文件的文件夹</translation>
+    </message>
+    <message>
+        <source>New machine folder (a new or empty folder)</source>
+        <translation>新机床文件夹 (新建或空文件夹)</translation>
+    </message>
+    <message>
+        <source>Import refused:
+%1: %2</source>
+        <translation>导入被拒绝:
+%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 already holds this backup's import; nothing written</source>
+        <translation>%1 已是此备份的导入结果, 未写入任何文件</translation>
+    </message>
+    <message>
+        <source>Machine folder made from the backup:
+%1</source>
+        <translation>已由备份生成机床文件夹:
+%1</translation>
+    </message>
+    <message>
+        <source>%1 parameters, %2 differ from the factory values</source>
+        <translation>%1 个参数, 其中 %2 个与出厂值不同</translation>
+    </message>
+    <message>
+        <source>%1 .nc files copied as they were, %2 files not copied</source>
+        <translation>%1 个 .nc 文件原样复制, %2 个文件未复制</translation>
+    </message>
+    <message>
+        <source>%1 stated values to review in machine.toml</source>
+        <translation>machine.toml 中有 %1 项设定值需要核对</translation>
+    </message>
+    <message>
+        <source>The simulator cannot model:</source>
+        <translation>模拟器无法模拟:</translation>
+    </message>
+    <message>
+        <source>%1 syntax errors the simulator does not accept yet</source>
+        <translation>%1 处语法错误: 模拟器尚不接受</translation>
+    </message>
+    <message>
+        <source>The whole report: %1</source>
+        <translation>完整报告: %1</translation>
+    </message>
+    <message>
+        <source>Open it with: m350-hmi --config %1</source>
+        <translation>打开方式: m350-hmi --config %1</translation>
+    </message>
+    <message>
+        <source>Switch the panel to this machine now?</source>
+        <translation>是否将面板切换到此机床?</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::BreakRunPage</name>
     <message>
         <source>Break Run</source>
@@ -665,6 +724,10 @@ STEP MPG</source>
     <message>
         <source>MPG RUN: reverse wheel retraces the path</source>
         <translation>手轮试切: 反摇沿原路径回退</translation>
+    </message>
+    <message>
+        <source>Import controller backup...</source>
+        <translation>导入控制器备份...</translation>
     </message>
 </context>
 <context>
@@ -1909,14 +1972,14 @@ STEP MPG</source>
         <translation>是否删除当前选中文件?</translation>
     </message>
     <message>
-        <source>Copy successful!</source>
-        <comment>msg 955</comment>
-        <translation>文件拷贝成功!</translation>
-    </message>
-    <message>
         <source>file does not exist!</source>
         <comment>msg 842</comment>
         <translation>文件不存在!</translation>
+    </message>
+    <message>
+        <source>Copy successful!</source>
+        <comment>msg 955</comment>
+        <translation>文件拷贝成功!</translation>
     </message>
     <message>
         <source>Delete all?</source>
@@ -2007,10 +2070,6 @@ STEP MPG</source>
         <translation>[%1]号参数输入的数据非法!</translation>
     </message>
     <message>
-        <source>IN%1: no such input (IN01-IN24)</source>
-        <translation>IN%1: 无此输入口 (IN01-IN24)</translation>
-    </message>
-    <message>
         <source>No program loaded: load one on the Program page</source>
         <translation>未载入程序: 请在文件管理页面载入</translation>
     </message>
@@ -2029,6 +2088,10 @@ STEP MPG</source>
     <message>
         <source>%1: cannot write: %2</source>
         <translation>%1: 无法写入: %2</translation>
+    </message>
+    <message>
+        <source>IN%1: no such input (IN01-IN24)</source>
+        <translation>IN%1: 无此输入口 (IN01-IN24)</translation>
     </message>
     <message>
         <source>File save failed!</source>

@@ -4,6 +4,7 @@
 #include "core/config/MachineConfig.h"
 #include "ui/i18n/Language.h"
 #include "ui/pages/ProgramPage.h"
+#include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/MainWindow.h"
 #include "ui/panel/PanelMeter.h"
 #include "ui/session/MachineFolderCopy.h"
@@ -13,6 +14,7 @@
 #include <QApplication>
 #include <QFile>
 #include <QJsonDocument>
+#include <QProcess>
 #include <QSaveFile>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -119,8 +121,21 @@ int main(int argc, char** argv) {
         return measure(app, window, session, o.measure, startNs);
     }
     if (!o.headlessRun()) {
+        // The import's "switch to this machine": the panel starts again on the new folder.
+        QString switchTo;
+        window.backupImport().setSwitcher([&app, &switchTo](const QString& machine) {
+            switchTo = machine;
+            app.quit();
+        });
         window.show();
-        return app.exec();
+        const int status = app.exec();
+        if (switchTo.isEmpty()) {
+            return status;
+        }
+        const QStringList args{QStringLiteral("--config"), switchTo, QStringLiteral("--lang"), language.current()};
+        return QProcess::startDetached(QCoreApplication::applicationFilePath(), args)
+                   ? 0
+                   : fail(QStringLiteral("cannot start the panel again on %1").arg(switchTo));
     }
     window.show();
     ui::settle(session);

@@ -15,6 +15,7 @@
 #include "ui/pages/RecordPage.h"
 #include "ui/pages/ProgramPage.h"
 #include "ui/pages/SystemPage.h"
+#include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
 #include "ui/panel/PanelMode.h"
@@ -296,6 +297,9 @@ void MainWindow::buildMenu() {
     retrace->setCheckable(true);
     retrace->setChecked(true);
     connect(retrace, &QAction::toggled, this, [this](bool on) { session_.setGuideRetrace(on); });
+    panelMenu_->addSeparator();
+    backupImport_ = new BackupImportFlow(context_, this);
+    panelMenu_->addAction(QString(), backupImport_, &BackupImportFlow::start)->setObjectName("importBackupAction");
 }
 
 bool MainWindow::startRecording(const QString& path, QString* error) { return recorder_->start(path, error); }
@@ -315,6 +319,8 @@ void MainWindow::retranslate() {
             action->setText(tr("Record operator actions..."));
         } else if (action->objectName() == QLatin1String("retraceAction")) {
             action->setText(tr("MPG RUN: reverse wheel retraces the path"));
+        } else if (action->objectName() == QLatin1String("importBackupAction")) {
+            action->setText(tr("Import controller backup..."));
         }
     }
     refreshSoftkeys();

@@ -13,6 +13,7 @@ class QStackedWidget;
 
 namespace m350::ui {
 
+class BackupImportFlow;
 class KeyPad;
 class Language;
 class Page;
@@ -39,6 +40,7 @@ public:
     void askJogStep();
     void notify(const QString& text);
     bool startRecording(const QString& path, QString* error); // --record
+    BackupImportFlow& backupImport() { return *backupImport_; } // the Panel menu's 导入控制器备份
 
     StatusLine* statusLine() const { return status_; }
     SoftkeyBar* softkeys() const { return softkeys_; }
@@ -80,6 +82,7 @@ private:
     bool bootPromptAsked_ = false;
     QMenu* panelMenu_ = nullptr;
     class ActionRecorder* recorder_ = nullptr;
+    BackupImportFlow* backupImport_ = nullptr;
 };
 
 } // namespace m350::ui

@@ -1,0 +1,92 @@
+#include "ui/panel/BackupImportFlow.h"
+
+#include "core/config/BackupImport.h"
+#include "ui/panel/PanelContext.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+
+namespace m350::ui {
+
+namespace {
+
+constexpr int kUnsupportedShown = 3; // the rest is in import-report.txt
+constexpr int kLineLength = 200;
+
+QString shortLine(const std::string& line) {
+    QString text = QString::fromStdString(line);
+    return text.size() > kLineLength ? text.left(kLineLength - 1) + QChar(0x2026) : text;
+}
+
+} // namespace
+
+BackupImportFlow::BackupImportFlow(PanelContext& context, QWidget* window)
+    : QObject(window), context_(context), window_(window) {}
+
+QString BackupImportFlow::chooseFolder(const QString& caption, const QString& start, bool existing) const {
+    if (chooser_) {
+        return chooser_(caption, start, existing);
+    }
+    return existing ? QFileDialog::getExistingDirectory(window_, caption, start)
+                    : QFileDialog::getSaveFileName(window_, caption, start, {}, nullptr,
+                                                   QFileDialog::DontConfirmOverwrite | QFileDialog::ShowDirsOnly);
+}
+
+void BackupImportFlow::start() {
+    const QString backup = chooseFolder(tr("Controller backup: the folder that holds setting, slib-g.nc ..."),
+                                        QDir::homePath(), true);
+    if (backup.isEmpty()) {
+        return;
+    }
+    const QString machines = QFileInfo(context_.machineFolder()).absolutePath();
+    const QString into = chooseFolder(tr("New machine folder (a new or empty folder)"),
+                                      QDir(machines).filePath(QFileInfo(backup).fileName()), false);
+    if (!into.isEmpty()) {
+        importInto(backup, into);
+    }
+}
+
+void BackupImportFlow::importInto(const QString& backup, const QString& machineFolder) {
+    auto outcome = config::importControllerBackup(backup.toStdString(), machineFolder.toStdString());
+    if (auto* error = std::get_if<config::ImportError>(&outcome)) {
+        context_.ask(tr("Import refused:\n%1: %2")
+                         .arg(QString::fromStdString(error->file), QString::fromStdString(error->message)),
+                     [](bool) {});
+        return;
+    }
+    const config::BackupImport& r = std::get<config::BackupImport>(outcome);
+    const QString folder = QString::fromStdString(r.machineFolder);
+    QStringList lines;
+    lines << (r.unchanged ? tr("%1 already holds this backup's import; nothing written").arg(folder)
+                          : tr("Machine folder made from the backup:\n%1").arg(folder));
+    lines << shortLine(r.magazine);
+    if (r.factoryCompared) {
+        lines << tr("%1 parameters, %2 differ from the factory values").arg(r.parameters).arg(r.changedParameters.size());
+    }
+    lines << tr("%1 .nc files copied as they were, %2 files not copied").arg(r.copied.size()).arg(r.skipped.size());
+    lines << tr("%1 stated values to review in machine.toml").arg(r.review.size());
+    if (!r.unsupported.empty()) {
+        lines << tr("The simulator cannot model:");
+        for (std::size_t i = 0; i < r.unsupported.size() && i < kUnsupportedShown; ++i) {
+            lines << QStringLiteral("- ") + shortLine(r.unsupported[i]);
+        }
+    }
+    if (!r.diagnostics.empty()) {
+        lines << tr("%1 syntax errors the simulator does not accept yet").arg(r.diagnostics.size());
+    }
+    lines << tr("The whole report: %1").arg(QString::fromLatin1(config::kImportReportFile));
+    if (!switcher_) {
+        lines << QString() << tr("Open it with: m350-hmi --config %1").arg(folder);
+        context_.ask(lines.join(QLatin1Char('\n')), [](bool) {});
+        return;
+    }
+    lines << QString() << tr("Switch the panel to this machine now?");
+    context_.ask(lines.join(QLatin1Char('\n')), [this, folder](bool yes) {
+        if (yes && switcher_) {
+            switcher_(folder);
+        }
+    });
+}
+
+} // namespace m350::ui
