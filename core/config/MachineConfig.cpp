@@ -1,6 +1,7 @@
 #include "core/config/MachineConfig.h"
 #include "core/common/Numeric.h"
 
+#include "core/config/HookFiles.h"
 #include "core/config/MagazineToml.h"
 #include "core/config/ParameterCatalogue.h"
 
@@ -55,6 +56,22 @@ double numberValue(const fs::path& file, const toml::node& node, std::string_vie
     fail(file, "'" + std::string(key) + "' must be a number");
 }
 
+// slibuser.nc, the user's G-code handlers (O9100-O9199 = G100-G199), is loaded beside slib-g.nc
+// as the M350 does, whether or not machine.toml lists it.
+void addUserLibrary(const fs::path& folder, MachineConfig& config) {
+    auto path = hookPath(folder.string(), Hook::UserLibrary);
+    if (!path) {
+        return;
+    }
+    std::error_code ec;
+    for (const LibraryFile& library : config.libraries) {
+        if (fs::equivalent(library.path, *path, ec)) {
+            return;
+        }
+    }
+    config.libraries.push_back({*path, gcode::FileRole::GLibrary});
+}
+
 void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     fs::path file = folder / "machine.toml";
     if (!fs::exists(file)) {
@@ -91,6 +108,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
             }
         }
     }
+    addUserLibrary(folder, config);
     if (auto codes = t["codes"].as_table()) {
         for (auto&& [key, value] : *codes) {
             std::string_view k = key.str();

@@ -28,6 +28,8 @@ struct LibraryFile {
 //   params.toml    [params] N = value (parameters 0-999; the rest stay 0)
 //   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
+//   hook files     optional: the M350's fndzero.nc, probe.nc, key-1.nc ... (HookFiles.h); slibuser.nc
+//                  is loaded as a G library beside the listed ones
 struct MachineConfig {
     std::string folder;
     std::string name;

@@ -20,6 +20,8 @@ inline constexpr int kSpindleStoppedInput = 620;   // input triple: pin, enable,
 inline constexpr int kFixedSetterInput = 575;      // input triple of the fixed tool setter (固定对刀信号)
 inline constexpr int kFixedSetterX = 135;          // 135-137: the fixed setter's machine X, Y and start Z
 inline constexpr int kFloatingSetterInput = 578;   // input triple of the floating setter (浮动对刀信号)
+inline constexpr int kUserKeyFunction = 210;       // 210-216: K1-K7: 0 key-N.nc, 1-21 an output, >1000 a panel key code
+inline constexpr int kExternKeyFunction = 272;     // 272-277: external keys 1-6, the same choices (extnc<N-1>-1.nc)
 inline constexpr int kExternStartInput = 599;      // input triple of the extern START key (外部启动)
 inline constexpr int kCurrentWorkSystem = 78;      // #578: 0 = G92, 1..6 = G54..G59
 inline constexpr int kPauseLift = 70;              // mm Z rises on pause when param 91 = 1

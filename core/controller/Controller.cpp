@@ -119,28 +119,14 @@ bool Controller::load(const std::string& path, std::string_view text, gcode::Fil
     // the machine, the variables and the magazine carry on.
     executor_.reset();
     paused_.reset();
+    hook_.reset();
     program_ = gcode::Program{};
     diagnostics_.clear();
-    gcode::Parser parser(*config_.dialect);
-    parser.addFile(program_, path, text, role, encoding);
-    for (const config::LibraryFile& library : config_.libraries) {
-        auto source = gcode::readSourceFile(library.path);
-        if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
-            diagnostics_.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, library.path, 0, 0,
-                                    error->message});
-            continue;
-        }
-        const auto& lib = std::get<gcode::SourceText>(source);
-        parser.addFile(program_, lib.path, lib.text, library.role, std::string(gcode::encodingName(lib.encoding)));
-    }
-    parser.finish(program_);
-    diagnostics_.insert(diagnostics_.end(), parser.diagnostics().begin(), parser.diagnostics().end());
+    parseWithLibraries(program_, path, text, role, encoding, diagnostics_);
     if (gcode::hasBlockingError(diagnostics_)) {
         return false;
     }
-    macro::Executor::Options options;
-    options.codePrograms = config_.codePrograms;
-    executor_ = std::make_unique<macro::Executor>(program_, *config_.dialect, store_, *this, interp_, options);
+    executor_ = newExecutor();
     for (auto [number, value] : settings_.variables) {
         macro::VariableInfo info = store_.map().describe(number);
         if (macro::VariableStore::ownsKind(info.kind)) {
@@ -150,6 +136,39 @@ bool Controller::load(const std::string& path, std::string_view text, gcode::Fil
         }
     }
     return true;
+}
+
+// The file, then the hook programs that programs call (ALL_T.nc for M101), then the machine's
+// libraries: what a run of that file needs.
+void Controller::parseWithLibraries(gcode::Program& program, const std::string& path, std::string_view text,
+                                    gcode::FileRole role, const std::string& encoding,
+                                    std::vector<gcode::Diagnostic>& diagnostics) const {
+    gcode::Parser parser(*config_.dialect);
+    parser.addFile(program, path, text, role, encoding);
+    addCalledHooks(parser, program, path, diagnostics);
+    for (const config::LibraryFile& library : config_.libraries) {
+        addSourceFile(parser, program, library.path, library.role, diagnostics);
+    }
+    parser.finish(program);
+    diagnostics.insert(diagnostics.end(), parser.diagnostics().begin(), parser.diagnostics().end());
+}
+
+bool Controller::addSourceFile(gcode::Parser& parser, gcode::Program& program, const std::string& path,
+                               gcode::FileRole role, std::vector<gcode::Diagnostic>& diagnostics) {
+    auto source = gcode::readSourceFile(path);
+    if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
+        diagnostics.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, path, 0, 0, error->message});
+        return false;
+    }
+    const auto& file = std::get<gcode::SourceText>(source);
+    parser.addFile(program, file.path, file.text, role, std::string(gcode::encodingName(file.encoding)));
+    return true;
+}
+
+std::unique_ptr<macro::Executor> Controller::newExecutor() {
+    macro::Executor::Options options;
+    options.codePrograms = config_.codePrograms;
+    return std::make_unique<macro::Executor>(program_, *config_.dialect, store_, *this, interp_, options);
 }
 
 bool Controller::loadFile(const std::string& path) {
@@ -269,7 +288,7 @@ bool Controller::start() {
         state_ = RunState::Idle;
         return false;
     }
-    if (!mdi_ && config_.parameters.get(param::kHomeBeforeProcessing) != 0.0 &&
+    if (!mdi_ && !hook_ && config_.parameters.get(param::kHomeBeforeProcessing) != 0.0 &&
         !(homed(0) && homed(1) && homed(2))) {
         // param 220: automatic runs need X, Y and Z homed (MDI does not)
         raiseAlarm(Alarm{AlarmCode::NotHomed, "机械未归零不能自动加工! (home X, Y and Z first: parameter 220)",
@@ -325,7 +344,11 @@ void Controller::stepOnce() {
         machine_.blockTime(settings_.blockTime);
     }
     if (auto stop = interp_.takeStop()) {
-        stopForOperator(*stop);
+        if (inEventHook_) {
+            postMessage(stop->what + ": START pressed (a hook file runs to its end)");
+        } else {
+            stopForOperator(*stop);
+        }
     }
     if (interp_.hasLookAheadChanges()) {
         for (const std::string& code : interp_.takeLookAheadChanges()) {
@@ -352,6 +375,7 @@ void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& s
     if (trace_) {
         trace_->programStop(machine_.time(), stop.what, where);
     }
+    runPauseHook();
 }
 
 bool Controller::optionalStopOn() {
@@ -372,6 +396,9 @@ void Controller::raiseAlarm(const Alarm& alarm) {
     enterSafeState();
     if (trace_) {
         trace_->alarm(machine_.time(), alarm);
+    }
+    if (alarm.code != AlarmCode::EmergencyStop) {
+        runEventHook(config::Hook::Error); // its own alarm is only a message: the first one stands
     }
 }
 

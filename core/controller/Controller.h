@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/config/HookFiles.h"
 #include "core/config/IoPorts.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/ManualMotionState.h"
@@ -25,6 +26,10 @@
 #include <string>
 #include <vector>
 
+namespace m350::gcode {
+class Parser;
+}
+
 namespace m350::controller {
 
 // The one façade the CLI (and later the panel) uses: load a program with the machine's macro
@@ -40,6 +45,35 @@ public:
     bool loadFile(const std::string& path);
     bool loadMdi(const std::vector<std::string>& lines);
     const std::vector<gcode::Diagnostic>& diagnostics() const { return diagnostics_; }
+
+    // Hook files (Hooks.cpp; the table in config/HookFiles.h): the machine folder's programs that
+    // the panel and the controller run when something happens. loadHook loads one as the program
+    // to run, with the machine's libraries (its alarms name the hook's file:line:col), and sets
+    // `variables` (#1504 for T.nc) after the run settings' ones; it runs like MDI lines: param 220
+    // does not ask for homing first. False, with diagnostics, when the folder has no such file or
+    // it does not parse. loadHookOrMdi is a panel key: its hook when the folder has one, else the
+    // `fallback` MDI lines, the built-in behaviour.
+    // The controller runs three itself: pause.nc when a run holds (PAUSE, M00, G04 P-1; START
+    // first brings the axes back to where the hold stopped them), error.nc after an alarm (not
+    // after 急停), each to its end at once beside the interrupted program; and ALL_T.nc as the
+    // handler of M101. The built-in O501 (`M98 P501 X<axis>`) homes one axis natively.
+    bool hasHook(config::Hook hook) const;
+    bool loadHook(config::Hook hook, const std::map<int, double>& variables = {});
+    bool loadHookOrMdi(config::Hook hook, const std::map<int, double>& variables,
+                       const std::vector<std::string>& fallback);
+    std::optional<config::Hook> loadedHook() const { return hook_; }
+    // The panel's K1-K7 (params 210-216) and the external keys 1-6 (params 272-277) (UserKeys.cpp):
+    // 0 loads key-N.nc / extnc<N-1>-1.nc (start() then runs it), 1-21 switches that output over,
+    // above 1000 is the code of the panel key it stands for, which the panel presses.
+    struct KeyPress {
+        enum class Kind { Hook, Output, PanelKey, Refused } kind = Kind::Refused;
+        int value = 0;   // the output or the panel key code
+        std::string why; // Refused: the reason
+    };
+    KeyPress pressUserKey(int key);
+    KeyPress pressExternKey(int key);
+    // FUNC K01-K14: #1996 = 249 + key, then ext_button.nc (`M#1996`), or that M code as MDI.
+    bool loadFunctionKey(int key);
 
     // Runs the loaded program to its end (or an alarm) as fast as it can: start() + advance(inf).
     RunReport run();
@@ -204,6 +238,7 @@ public:
     macro::Value readSystem(const macro::VariableInfo& info, int number) override;
     std::optional<std::string> writeSystem(const macro::VariableInfo& info, int number, double value,
                                            std::string_view text) override;
+    std::optional<HomingFailure> builtInHoming(int axis) override;
     // machine::MachineObserver
     void onMachineEvent(const machine::MachineEvent& event) override;
 
@@ -215,6 +250,19 @@ private:
     void enterSafeState();
     void stepOnce();
     void raiseAlarm(const Alarm& alarm);
+    void parseWithLibraries(gcode::Program& program, const std::string& path, std::string_view text,
+                            gcode::FileRole role, const std::string& encoding,
+                            std::vector<gcode::Diagnostic>& diagnostics) const;
+    static bool addSourceFile(gcode::Parser& parser, gcode::Program& program, const std::string& path,
+                              gcode::FileRole role, std::vector<gcode::Diagnostic>& diagnostics);
+    void addCalledHooks(gcode::Parser& parser, gcode::Program& program, const std::string& mainPath,
+                        std::vector<gcode::Diagnostic>& diagnostics) const;
+    std::unique_ptr<macro::Executor> newExecutor();
+    std::optional<Alarm> runEventHook(config::Hook hook);
+    std::optional<Alarm> runHookProgramToEnd(const std::string& name);
+    void runPauseHook();
+    void returnAfterPauseHook();
+    KeyPress pressKey(int function, config::Hook hook, const std::string& key);
     std::optional<Alarm> homeAxis(int axis);
     bool homeSwitchWired(int axis) const;
     void fill(RunReport& out) const;
@@ -249,6 +297,9 @@ private:
     double feedOverride_ = 100.0;
     double runStartedAt_ = 0.0;
     bool mdi_ = false;
+    std::optional<config::Hook> hook_;  // the loaded program is this hook file
+    bool inEventHook_ = false;          // pause.nc or error.nc runs: no hook starts inside it
+    std::optional<machine::Axes> beforePauseHook_; // where the hold stopped the axes, if pause.nc moved them
     RunState state_ = RunState::Idle;
     std::optional<Alarm> alarm_;
     double displayTime_ = 0.0;

@@ -89,6 +89,15 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
     case VariableKind::Output: scan_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
     case VariableKind::ToolOffset: toolOffsets_.set(info.index, value); return std::nullopt;
     case VariableKind::Homed: homed_[static_cast<std::size_t>(info.index)] = value != 0.0 ? 1 : 0; return std::nullopt;
+    case VariableKind::MachinePosition: {
+        // M350 #880-#884: the axis takes this machine position where it stands, without moving, and
+        // is no longer homed (a dual-Y gantry's fndzero.nc copies Y to A so, then sets #1518 = 1)
+        machine::Axes position = scan_.position();
+        position(info.index) = value;
+        scan_.setPosition(position);
+        homed_[static_cast<std::size_t>(info.index)] = 0;
+        return std::nullopt;
+    }
     case VariableKind::Message:
         if (value == kClearMessage) {
             statusMessage_.clear();

@@ -22,6 +22,7 @@ void Controller::hold() {
         if (trace_) {
             trace_->runState(displayTime_, "pause");
         }
+        runPauseHook();
         return;
     }
     remainder_ = machine_.interrupt(displayTime_, false);
@@ -41,6 +42,7 @@ void Controller::hold() {
     if (trace_) {
         trace_->runState(displayTime_, "pause");
     }
+    runPauseHook();
 }
 
 void Controller::resume() {
@@ -53,6 +55,7 @@ void Controller::resume() {
     if (trace_) {
         trace_->runState(machine_.time(), "resume");
     }
+    returnAfterPauseHook();
     if (liftedBy_ > 0.0) {
         machine::Axes down = machine_.position();
         down(2) -= liftedBy_;
@@ -108,6 +111,7 @@ void Controller::reset() {
     enterSafeState();
     remainder_ = {};
     liftedBy_ = 0.0;
+    beforePauseHook_.reset();
     spindleBeforeHold_.reset();
     alarm_.reset();
     programStop_.clear();

@@ -43,6 +43,7 @@ Dialect makeM350() {
                                   {'K', 9}, {'R', 10}, {'H', 12}, {'P', 13}, {'Q', 14}, {'D', 15}, {'F', 16},
                                   {'S', 17}});
     d.tCodeProgram = 20000;
+    d.homingProgram = 501;
     d.gHandlerBase = 9000;
     d.mHandlerBase = 10000;
     d.indexedTables = {

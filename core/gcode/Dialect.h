@@ -49,6 +49,9 @@ struct Dialect {
     std::array<std::int8_t, 26> callArguments{};    // G65/M98 address letter -> local number, -1 none
     std::array<std::int8_t, 26> handlerArguments{}; // arguments of G-code handlers (M350: X#0 Y#1 ...)
     int tCodeProgram = -1;             // M350: `T5` runs O20000 with #1 = 5
+    // M350: `M98 P501 X<axis>` homes one axis (0 X .. 4 B) with the firmware's own routine, unless
+    // a library defines O501 (fndX.nc .. fndB.nc and fndzero.nc call it)
+    int homingProgram = -1;
     int gHandlerBase = -1;             // `Gxx` runs O(9000+xx) from the G library
     int mHandlerBase = -1;             // `Mn` runs O(10000+n) from the M library
     bool lookAheadCodes = false;       // FANUC: G05.1 Q1/Q0, G08 P1/P0, G05 P10000/P0 (no geometry change)

@@ -245,7 +245,8 @@ void Parser::checkCalls(const Program& program) {
     for (std::uint32_t b : callBlocks_) {
         const Block& block = program.blocks[b];
         for (const Word& w : block.words) {
-            if (w.letter == 'P' && w.isNumber() && !program.findUnit(roundToInt(w.number))) {
+            if (w.letter == 'P' && w.isNumber() && !program.findUnit(roundToInt(w.number)) &&
+                roundToInt(w.number) != dialect_.homingProgram) {
                 report(program, block, w.column, DiagnosticKind::Flow,
                        "no O" + std::to_string(roundToInt(w.number)) + " in this file or the machine's macro libraries");
             }

@@ -22,6 +22,18 @@ bool wholeNumber(double v) {
     return std::abs(v - std::round(v)) < 1e-9 && v >= 0 && v < 65536;
 }
 
+// `M98 P501 X<axis>` without an O501 anywhere: the axis the firmware's own homing is asked for.
+int builtInHomingAxis(std::vector<WordValue>& words, std::uint32_t column) {
+    auto x = std::find_if(words.begin(), words.end(), [](const WordValue& w) { return w.letter == 'X'; });
+    if (x == words.end() || !wholeNumber(x->value) || x->value > 4) {
+        throw MacroError{AlarmCode::InvalidArgument,
+                         "M98 P501 (home one axis) needs X<axis>: 0 X, 1 Y, 2 Z, 3 the 4th, 4 the 5th", column};
+    }
+    int axis = roundToInt(x->value);
+    words.erase(x);
+    return axis;
+}
+
 } // namespace
 
 // Moves the words the argument specification maps into `out` (local number, value). G65 and M98
@@ -165,15 +177,20 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         calls.push_back(std::move(call));
         callColumn = g65->column;
     }
+    std::optional<int> homeAxis; // the dialect's built-in homing program, called by M98
     if (auto m98 = take([](const WordValue& w) { return isCode(w, 'M', 98); })) {
         WordValue p = needP(*m98, "M98");
         auto l = takeLetter('L');
-        Call call{programUnit(p.value, "M98", p.column), l ? std::llround(l->value) : 1,
-                  dialect_.m98OpensLocalLevel, -1, {}};
-        if (dialect_.m98OpensLocalLevel) {
-            takeArguments(words, dialect_.callArguments, call.arguments, true);
+        if (roundToInt(p.value) == dialect_.homingProgram && !program_.findUnit(dialect_.homingProgram)) {
+            homeAxis = builtInHomingAxis(words, m98->column);
+        } else {
+            Call call{programUnit(p.value, "M98", p.column), l ? std::llround(l->value) : 1,
+                      dialect_.m98OpensLocalLevel, -1, {}};
+            if (dialect_.m98OpensLocalLevel) {
+                takeArguments(words, dialect_.callArguments, call.arguments, true);
+            }
+            calls.push_back(std::move(call));
         }
-        calls.push_back(std::move(call));
         callColumn = m98->column;
     }
     if ((m99 = take([](const WordValue& w) { return isCode(w, 'M', 99); }))) {
@@ -235,6 +252,11 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
 
     if (!sendToSink(evaluated, frameIndex)) {
         return;
+    }
+    if (homeAxis) {
+        if (auto failure = machine_.builtInHoming(*homeAxis)) {
+            throw MacroError{failure->code, failure->message, callColumn};
+        }
     }
     if (m99) {
         returnFromFrame(m99Label ? std::optional<double>(m99Label->value) : std::nullopt,

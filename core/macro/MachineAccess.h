@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Alarm.h"
 #include "core/macro/Value.h"
 #include "core/macro/VariableMap.h"
 
@@ -22,6 +23,16 @@ public:
     // Returns a message when the machine refuses the write; the executor raises it as an alarm.
     virtual std::optional<std::string> writeSystem(const VariableInfo& info, int number, double value,
                                                    std::string_view text) = 0;
+
+    // The dialect's built-in homing program (M350 `M98 P501 X<axis>`) when no library defines it:
+    // homes `axis` (0 X .. 4 B) at once in virtual time. Returns the alarm when it cannot.
+    struct HomingFailure {
+        AlarmCode code;
+        std::string message;
+    };
+    virtual std::optional<HomingFailure> builtInHoming(int axis) {
+        return HomingFailure{AlarmCode::NotHomed, "axis " + std::to_string(axis) + ": this machine cannot home"};
+    }
 };
 
 } // namespace m350::macro

@@ -29,7 +29,7 @@ VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable +
         for (int slot = 1; slot <= 6; ++slot) {
             add(850 + (slot - 1) * 5, 854 + (slot - 1) * 5, K::WorkPosition, true, slot * 8);
         }
-        add(880, 884, K::MachinePosition, true);
+        add(880, 884, K::MachinePosition, false); // a write sets the axis's machine position (and un-homes it)
         add(885, 889, K::WorkPosition, true, kSlotG92 * 8);
         add(1500, 2999, K::System);
         add(1503, 1503, K::Message);

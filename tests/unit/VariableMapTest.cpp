@@ -86,9 +86,9 @@ TEST(VariableMapM350, WorkOffsetsAndPositions) {
         {850, K::WorkPosition, true, 8},  // work position in G54
         {852, K::WorkPosition, true, 10},
         {879, K::WorkPosition, true, 52},
-        {880, K::MachinePosition, true, 0},
-        {882, K::MachinePosition, true, 2},
-        {884, K::MachinePosition, true, 4},
+        {880, K::MachinePosition, false, 0}, // writable: a hook copies Y to A so
+        {882, K::MachinePosition, false, 2},
+        {884, K::MachinePosition, false, 4},
         {885, K::WorkPosition, true, 0},  // in the G92 system
         {889, K::WorkPosition, true, 4},
     });

@@ -1,0 +1,200 @@
+// Hook files: the machine folder's programs that the panel and the controller run when something
+// happens (config/HookFiles.h names them), and the built-in O501 that the homing hooks call.
+#include "core/controller/Controller.h"
+
+#include "core/gcode/Parser.h"
+#include "core/gcode/SourceText.h"
+
+#include <filesystem>
+#include <sstream>
+
+namespace m350::controller {
+
+namespace {
+
+bool moved(const machine::Axes& from, const machine::Axes& to) { return (from - to).cwiseAbs().maxCoeff() > 1e-9; }
+
+} // namespace
+
+bool Controller::hasHook(config::Hook hook) const { return config::hookPath(config_.folder, hook).has_value(); }
+
+bool Controller::loadHook(config::Hook hook, const std::map<int, double>& variables) {
+    const config::HookFile& file = config::hookFile(hook);
+    auto say = [this, &file](std::string why) {
+        diagnostics_.assign(1, {gcode::Severity::Error, gcode::DiagnosticKind::Syntax, std::string(file.fileName), 0, 0,
+                                std::move(why)});
+        return false;
+    };
+    if (state_ == RunState::Running || state_ == RunState::Hold) {
+        // the running program stays loaded
+        return say("a program is running: " + std::string(file.fileName) + " waits until it ends or is reset");
+    }
+    auto refuse = [this, &say](std::string why) {
+        executor_.reset();
+        hook_.reset();
+        return say(std::move(why));
+    };
+    auto path = config::hookPath(config_.folder, hook);
+    if (!path || !file.runnable) {
+        return refuse("the machine folder " + config_.folder + " has no " + std::string(file.fileName) + " (" +
+                      std::string(file.runsWhen) + ")");
+    }
+    if (!loadFile(*path)) {
+        return false;
+    }
+    hook_ = hook;
+    for (auto [number, value] : variables) {
+        std::string why;
+        if (!setVariable(number, value, &why)) {
+            return refuse(why);
+        }
+    }
+    return true;
+}
+
+bool Controller::loadHookOrMdi(config::Hook hook, const std::map<int, double>& variables,
+                               const std::vector<std::string>& fallback) {
+    if (hasHook(hook)) {
+        return loadHook(hook, variables);
+    }
+    if (!loadMdi(fallback)) {
+        return false;
+    }
+    for (auto [number, value] : variables) {
+        std::string why;
+        if (!setVariable(number, value, &why)) {
+            executor_.reset();
+            diagnostics_.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, "MDI", 0, 0, why});
+            return false;
+        }
+    }
+    return true;
+}
+
+// ALL_T.nc is what M101 runs: its program (a file of blocks without an O number) becomes the M101
+// handler, ahead of any O10101 in the machine's M library.
+void Controller::addCalledHooks(gcode::Parser& parser, gcode::Program& program, const std::string& mainPath,
+                                std::vector<gcode::Diagnostic>& diagnostics) const {
+    const int base = config_.dialect->mHandlerBase;
+    auto path = config::hookPath(config_.folder, config::Hook::AllTools);
+    std::error_code ec;
+    if (base < 0 || !path || std::filesystem::equivalent(*path, mainPath, ec)) {
+        return;
+    }
+    const std::size_t first = program.units.size();
+    if (addSourceFile(parser, program, *path, gcode::FileRole::MLibrary, diagnostics) && first < program.units.size() &&
+        program.units[first].number < 0) {
+        program.units[first].number = base + config::kAllToolsMCode;
+        program.indexUnit(static_cast<std::uint32_t>(first));
+    }
+}
+
+// pause.nc and error.nc run beside the program they interrupt: the hook's program and executor
+// take the place of the interrupted ones (which wait untouched) and run to the end at once in
+// virtual time, over the same variables, interpreter and machine. Nobody answers inside: a dialog
+// gets Enter and a wait for the extern START key gets it, as in run(). Returns the hook's alarm.
+std::optional<Alarm> Controller::runEventHook(config::Hook hook) {
+    auto path = config::hookPath(config_.folder, hook);
+    if (inEventHook_ || scan_.scanning() || !path) {
+        return std::nullopt;
+    }
+    const std::string name(config::hookFile(hook).fileName);
+    auto source = gcode::readSourceFile(*path);
+    if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
+        postMessage(name + ": not run: " + error->message);
+        return std::nullopt;
+    }
+    const auto& text = std::get<gcode::SourceText>(source);
+    gcode::Program program;
+    std::vector<gcode::Diagnostic> diagnostics;
+    parseWithLibraries(program, text.path, text.text, gcode::FileRole::Main,
+                       std::string(gcode::encodingName(text.encoding)), diagnostics);
+    if (gcode::hasBlockingError(diagnostics)) {
+        for (const gcode::Diagnostic& d : diagnostics) {
+            if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
+                postMessage(gcode::formatDiagnostic(d) + " (" + name + " not run)");
+                break;
+            }
+        }
+        return std::nullopt;
+    }
+    inEventHook_ = true;
+    std::swap(program_, program);
+    std::unique_ptr<macro::Executor> interrupted = std::exchange(executor_, newExecutor());
+    std::optional<Alarm> alarm = runHookProgramToEnd(name);
+    executor_ = std::move(interrupted);
+    std::swap(program_, program);
+    inEventHook_ = false;
+    return alarm;
+}
+
+std::optional<Alarm> Controller::runHookProgramToEnd(const std::string& name) {
+    auto unit = program_.mainUnit();
+    if (!unit || !executor_->start(*unit)) {
+        return std::nullopt;
+    }
+    if (trace_) {
+        trace_->message(machine_.time(), name + " runs", source());
+    }
+    const bool startPressed = std::exchange(pressStartWhenAwaited_, true);
+    sensorWatch_.clear();
+    while (executor_->state() == macro::Executor::State::Running) {
+        if (!(machine_.time() <= settings_.maxSimTime)) {
+            executor_->raise(AlarmCode::SimulatedTimeLimit, name + " ran until the simulated time limit");
+            break;
+        }
+        stepOnce();
+    }
+    sensorWatch_.clear();
+    pressStartWhenAwaited_ = startPressed;
+    if (executor_->state() != macro::Executor::State::Alarmed) {
+        return std::nullopt;
+    }
+    const Alarm& alarm = *executor_->alarm();
+    std::ostringstream where;
+    where << alarm.file << ':' << alarm.line << ':' << alarm.column << ": " << alarm.message;
+    postMessage(where.str() + " (alarm in " + name + ")");
+    return alarm;
+}
+
+// PAUSE, M00, G04 P-1: pause.nc may move the axes (lift Z, park); START brings them back first.
+void Controller::runPauseHook() {
+    const machine::Axes stoppedAt = machine_.position();
+    std::optional<Alarm> alarm = runEventHook(config::Hook::Pause);
+    if (moved(stoppedAt, machine_.position())) {
+        beforePauseHook_ = stoppedAt;
+    }
+    if (alarm) {
+        raiseAlarm(*alarm);
+    }
+}
+
+// Z up to the higher of the two, over at that height, then down to where the hold stopped.
+void Controller::returnAfterPauseHook() {
+    if (!beforePauseHook_) {
+        return;
+    }
+    const machine::Axes back = *beforePauseHook_;
+    beforePauseHook_.reset();
+    machine::Axes step = machine_.position();
+    const double safeZ = std::max(step(2), back(2));
+    for (int stage = 0; stage < 3; ++stage) {
+        machine::Axes target = stage == 0 ? step : back;
+        target(2) = stage == 2 ? back(2) : safeZ;
+        if (moved(machine_.position(), target)) {
+            machine_.rapid(target);
+        }
+    }
+}
+
+std::optional<macro::MachineAccess::HomingFailure> Controller::builtInHoming(int axis) {
+    if (scan_.scanning()) {
+        return HomingFailure{AlarmCode::NotHomed, "homing (M98 P501) cannot be scanned: start after it"};
+    }
+    if (auto alarm = homeAxis(axis)) {
+        return HomingFailure{alarm->code, alarm->message};
+    }
+    return std::nullopt;
+}
+
+} // namespace m350::controller
