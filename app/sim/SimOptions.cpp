@@ -1,5 +1,6 @@
 #include "app/sim/SimOptions.h"
 
+#include "core/config/HookFiles.h"
 #include "core/config/ParameterCatalogue.h"
 
 #include <CLI/CLI.hpp>
@@ -96,14 +97,28 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     CLI::App* import = app.add_subcommand("import", "make a machine folder from a copy of an M350's system disk");
     import->add_option("BACKUP_DIR", o.backupDir, "the backup: the folder that holds setting, slib-g.nc ...")->required();
     import->add_option("--into", o.intoDir, "the new machine folder (missing or empty)")->required();
+    CLI::App* hook = app.add_subcommand("hook", "run one of the machine folder's hook files as the panel would");
+    hook->add_option("NAME", o.hookName, "fndzero, key-3, probe, T (#1504 = the target tool: --var 1504=5) ...")
+        ->required()
+        ->check(CLI::Validator(
+            [](std::string& name) -> std::string {
+                const config::HookFile* found = config::findHook(name);
+                if (!found || !found->runnable) {
+                    return "'" + name + "' is no hook file; the hooks are: " + config::runnableHookNames();
+                }
+                return {};
+            },
+            "HOOK"));
+    addRunOptions(hook);
 
     auto loaded = config::ParameterCatalogue::load(config::ParameterCatalogue::bundledPath());
     const auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded);
     try {
         app.parse(argc, argv);
-        o.command = run->parsed() ? SimOptions::Command::Run
+        o.command = run->parsed()      ? SimOptions::Command::Run
                     : mdi->parsed()    ? SimOptions::Command::Mdi
                     : import->parsed() ? SimOptions::Command::Import
+                    : hook->parsed()   ? SimOptions::Command::Hook
                                        : SimOptions::Command::Check;
         for (const std::string& p : params) {
             auto [n, v] = splitAssignment(p, "--param");

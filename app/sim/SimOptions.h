@@ -10,9 +10,10 @@ namespace m350::sim {
 
 // The command line of `m350-sim`, parsed and checked.
 struct SimOptions {
-    enum class Command { Run, Mdi, Check, Import } command = Command::Run;
+    enum class Command { Run, Mdi, Check, Import, Hook } command = Command::Run;
     std::string program;                 // run / check
     std::vector<std::string> mdiLines;   // mdi
+    std::string hookName;                // hook: a name of config/HookFiles.h ("fndzero", "key-3")
     std::string configDir;               // empty: the bundled machine for the dialect
     std::string backupDir, intoDir;      // import: the controller backup and the new machine folder
     std::optional<std::string> dialect;

@@ -1,5 +1,6 @@
 // m350-sim: the headless simulator. Exit status: 0 ok, 1 alarm, 2 error (syntax, file, config),
 // 64 usage.
+#include "app/sim/HookCommand.h"
 #include "app/sim/ImportCommand.h"
 #include "app/sim/ReportJson.h"
 #include "app/sim/SimOptions.h"
@@ -105,7 +106,7 @@ int main(int argc, char** argv) {
     if (o.dialect) {
         machineConfig.dialect = gcode::Dialect::byName(*o.dialect);
     }
-    if (o.command != sim::SimOptions::Command::Mdi) {
+    if (o.command == sim::SimOptions::Command::Run || o.command == sim::SimOptions::Command::Check) {
         std::error_code ec; // a symlink loop or an unreadable folder is an error, not an abort
         if (!std::filesystem::is_regular_file(o.program, ec)) {
             return fail("file_error", "cannot open program: " + (ec ? ec.message() : std::string("no such file")),
@@ -121,7 +122,7 @@ int main(int argc, char** argv) {
         o.settings.trace = &trace;
     }
     if (o.command != sim::SimOptions::Command::Check) {
-        if (auto problem = checkAgainstMachine(o, machineConfig)) {
+        if (auto problem = checkAgainstMachine(o, machineConfig); problem || (problem = sim::missingHook(o, machineConfig))) {
             std::cerr << "m350-sim: " << *problem << "\n";
             return 64;
         }
@@ -130,14 +131,10 @@ int main(int argc, char** argv) {
     if (o.command == sim::SimOptions::Command::Check) {
         return check(controller, o);
     }
-    bool ready = o.command == sim::SimOptions::Command::Run ? controller.loadFile(o.program)
-                                                            : controller.loadMdi(o.mdiLines);
-    std::optional<Alarm> homing;
-    if (o.home) {
-        homing = controller.home(controller.homeableAxes());
-    }
-    controller::RunReport report = homing ? controller.snapshot() : controller.run();
-    if (!ready) {
+    std::optional<controller::RunReport> homing = o.home ? sim::homeBeforeRun(controller) : std::nullopt;
+    bool ready = !homing && sim::loadForCommand(controller, o);
+    controller::RunReport report = homing ? *homing : controller.run();
+    if (!homing && !ready) {
         report.status = controller::RunStatus::Error;
     }
     printDiagnostics(report.diagnostics);
