@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <limits>
 #include <set>
 
@@ -163,16 +164,16 @@ TEST_F(HookMachine, AKeyWithoutItsHookRunsTheBuiltInLines) {
 
 TEST_F(HookMachine, AMissingHookIsRefusedNamingItsFile) {
     Controller c(machine(), {});
-    EXPECT_FALSE(c.loadHook(Hook::Probe));
+    EXPECT_FALSE(c.loadHook(Hook::PowerOn));
     ASSERT_EQ(c.diagnostics().size(), 1u);
-    EXPECT_NE(c.diagnostics()[0].message.find("has no probe.nc"), std::string::npos) << diagnosticsOf(c);
+    EXPECT_NE(c.diagnostics()[0].message.find("has no sysstart.nc"), std::string::npos) << diagnosticsOf(c);
     EXPECT_FALSE(c.start());
 }
 
 TEST_F(HookMachine, AHookFoundInAnotherCaseRuns) {
-    write("FNDZ.NC", lines({"#100=3"}));
+    write("KEY-3.NC", lines({"#100=3"}));
     Controller c(machine(), {});
-    ASSERT_TRUE(c.loadHook(Hook::HomeZ)) << diagnosticsOf(c);
+    ASSERT_TRUE(c.loadHook(Hook::Key3)) << diagnosticsOf(c);
     EXPECT_EQ(c.run().status, controller::RunStatus::Ok);
     EXPECT_DOUBLE_EQ(c.variable(100).number, 3);
 }
@@ -316,6 +317,37 @@ TEST_F(HookMachine, NoHookLoadsWhileAProgramRuns) {
     EXPECT_NE(diagnosticsOf(c).find("a program is running"), std::string::npos);
     EXPECT_EQ(c.advance(std::numeric_limits<double>::infinity()), Controller::RunState::Finished);
     EXPECT_DOUBLE_EQ(c.variable(100).number, 0);
+}
+
+} // namespace
+
+namespace {
+
+// Our bundled machine folders ship their own hooks (fndzero.nc, T.nc, M3.nc, probe.nc ...): each
+// runs to its end on its machine as the panel would run it.
+TEST(BundledHooks, EveryShippedHookRunsOnItsMachine) {
+    const std::map<Hook, std::map<int, double>> panelSets{
+        {Hook::ToolWord, {{1504, 2}}}, {Hook::Probe, {{1502, 2}}}, {Hook::MultiProbe, {{1970, 2}, {1971, 3}}}};
+    int ran = 0;
+    for (const auto& entry : fs::directory_iterator(config::bundledMachinesDirectory())) {
+        const std::string name = entry.path().filename().string();
+        for (const config::HookFile& file : config::hookFiles()) {
+            if (!file.runnable || !config::hookPath(entry.path().string(), file.hook)) {
+                continue;
+            }
+            controller::RunSettings settings;
+            settings.homed = !(file.hook >= Hook::HomeAll && file.hook <= Hook::HomeB);
+            Controller c(bundledMachine(name), settings);
+            auto set = panelSets.find(file.hook);
+            ASSERT_TRUE(c.loadHook(file.hook, set == panelSets.end() ? std::map<int, double>{} : set->second))
+                << name << "/" << file.fileName;
+            controller::RunReport r = c.run();
+            EXPECT_EQ(r.status, controller::RunStatus::Ok)
+                << name << "/" << file.fileName << ": " << (r.alarm ? r.alarm->message : "");
+            ++ran;
+        }
+    }
+    EXPECT_GE(ran, 37); // 6 M350 machines x T, gotozero, M3-M5; the default one also homes, probes, parks
 }
 
 } // namespace

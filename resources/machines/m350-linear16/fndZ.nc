@@ -1,0 +1,2 @@
+// 回机械原点 Go Home, Z only (written for M350 Studio): the firmware's single-axis homing O501.
+M98 P501 X2
