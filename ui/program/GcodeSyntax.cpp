@@ -1,6 +1,7 @@
 #include "ui/program/GcodeSyntax.h"
 
 #include "core/gcode/Dialect.h"
+#include "core/gcode/LexerText.h"
 
 #include <QLatin1StringView>
 
@@ -39,10 +40,11 @@ int skipNumber(QStringView line, int i) {
 } // namespace
 
 GcodeSyntax::GcodeSyntax(const gcode::Dialect& dialect)
-    : m350_(dialect.slashSlashComments), upperOnly_(dialect.upperCaseKeywords) {}
+    : m350_(dialect.slashSlashComments), blockComments_(dialect.blockComments),
+      upperOnly_(dialect.upperCaseKeywords) {}
 
 bool GcodeSyntax::blockCommentAfter(QStringView line, bool inBlockComment) const {
-    if (!m350_ || (!inBlockComment && !line.contains(u"/*"))) {
+    if (!blockComments_ || (!inBlockComment && !line.contains(u"/*"))) {
         return inBlockComment;
     }
     std::vector<Span> spans;
@@ -69,7 +71,7 @@ bool GcodeSyntax::scan(QStringView line, bool inBlockComment, std::vector<Span>&
             out.push_back({i, n - i, Kind::Comment});
             break;
         }
-        if (m350_ && c == u'/' && next == u'*') {
+        if (blockComments_ && c == u'/' && next == u'*') {
             inBlockComment = true;
             continue;
         }
@@ -106,6 +108,22 @@ bool GcodeSyntax::scan(QStringView line, bool inBlockComment, std::vector<Span>&
     return inBlockComment;
 }
 
+// Keywords written together, as the parser splits them: `LEABS` in `IF[#10LEABS[#11]]`.
+bool GcodeSyntax::packedKeywords(QStringView letters, int start, std::vector<Span>& out) const {
+    if (letters.size() > 16 || (upperOnly_ && letters != letters.toString().toUpper())) {
+        return false;
+    }
+    const std::string upper = letters.toString().toUpper().toStdString();
+    gcode::KeywordSplit split = gcode::splitKeywords(upper);
+    for (std::size_t part = 0; part < split.count; ++part) {
+        const int length = split.length[part];
+        const bool function = gcode::isFunctionKeyword(split.keyword[part]);
+        out.push_back({start, length, function ? Kind::Function : Kind::Keyword});
+        start += length;
+    }
+    return split.count != 0;
+}
+
 // A run of letters: a keyword or function, else an address letter and its number.
 int GcodeSyntax::word(QStringView line, int i, std::vector<Span>& out) const {
     const int n = static_cast<int>(line.size());
@@ -121,6 +139,9 @@ int GcodeSyntax::word(QStringView line, int i, std::vector<Span>& out) const {
         }
         if (among(kFunctions, letters, upperOnly_)) {
             out.push_back({i, end - i, Kind::Function});
+            return end;
+        }
+        if (packedKeywords(letters, i, out)) {
             return end;
         }
     }
