@@ -150,6 +150,24 @@ TEST(ProgramPage, AGbkFileIsSavedInGbk) {
               QByteArray(again.encode(QStringLiteral("(主轴)\r\n") + original)));
 }
 
+// Old Mac files and some panel exports end lines with CR alone: the editor shows the lines the
+// parser reads and writes CR back.
+TEST(ProgramPage, ACrOnlyFileShowsItsLinesAndKeepsItsLineEnds) {
+    PanelHarness panel;
+    auto* page = openProgramPage(panel);
+    writeFile(QDir(programs(panel)).filePath("cr.nc"), "G0 X1\rG0 X\rM30\r");
+    selectFile(panel, page, "cr.nc");
+    panel.key("ENTER");
+    EXPECT_EQ(page->editor()->view()->toPlainText(), "G0 X1\nG0 X\nM30\n");
+    ASSERT_TRUE(checked(page));
+    ASSERT_FALSE(page->editor()->view()->marks().isEmpty());
+    EXPECT_EQ(page->editor()->view()->marks().front().line, 2);
+    panel.type(QStringLiteral("(a)"));
+    panel.key("ENTER");
+    panel.softkey(1);
+    EXPECT_EQ(readFile(QDir(programs(panel)).filePath("cr.nc")), QByteArray("(a)\rG0 X1\rG0 X\rM30\r"));
+}
+
 TEST(ProgramPage, NewRenameAndDeleteWithTheirRefusals) {
     PanelHarness panel;
     auto* page = openProgramPage(panel);

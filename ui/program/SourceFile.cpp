@@ -32,11 +32,15 @@ std::optional<SourceFile> SourceFile::read(const QString& path, QString* error) 
     if (out.crlf) {
         out.text.replace(QStringLiteral("\r\n"), QStringLiteral("\n"));
     }
+    out.cr = !out.crlf && out.text.contains(QLatin1Char('\r'));
+    out.text.replace(QLatin1Char('\r'), QLatin1Char('\n')); // a lone CR ends a line, as for the parser
     return out;
 }
 
 QByteArray SourceFile::encode(QString* error) const {
-    QString lines = crlf ? QString(text).replace(QStringLiteral("\n"), QStringLiteral("\r\n")) : text;
+    QString lines = crlf ? QString(text).replace(QStringLiteral("\n"), QStringLiteral("\r\n"))
+                    : cr ? QString(text).replace(QLatin1Char('\n'), QLatin1Char('\r'))
+                         : text;
     if (encoding == Encoding::Utf8) {
         return (bom ? QByteArray("\xEF\xBB\xBF") : QByteArray()) + lines.toUtf8();
     }

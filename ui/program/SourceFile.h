@@ -15,6 +15,7 @@ struct SourceFile {
     Encoding encoding = Encoding::Utf8;
     bool bom = false;  // a UTF-8 file that began with a BOM keeps it
     bool crlf = false; // lines end in CR LF (the editor holds LF only)
+    bool cr = false;   // lines end in CR alone (old Mac files, some panel exports)
 
     // Reads and decodes as the parser does (core/gcode/SourceText: strict UTF-8, else GBK).
     static std::optional<SourceFile> read(const QString& path, QString* error);
