@@ -37,6 +37,7 @@ nlohmann::json importJson(const config::BackupImport& r, const config::ImportErr
             {"copied", r.copied},
             {"skipped", skipped},
             {"libraries", r.libraries},
+            {"hooks", r.hooks},
             {"parameters", r.parameters},
             {"changed_parameters", r.factoryCompared ? nlohmann::json(r.changedParameters) : nlohmann::json(nullptr)},
             {"out_of_range", r.outOfRange},

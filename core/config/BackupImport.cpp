@@ -4,6 +4,7 @@
 #include "core/config/BackupMachineToml.h"
 #include "core/config/BackupParamsToml.h"
 #include "core/config/BackupPrograms.h"
+#include "core/config/HookFiles.h"
 #include "core/config/MachineConfig.h"
 
 #include <algorithm>
@@ -65,6 +66,10 @@ Files plan(const ControllerBackup& backup, const ParameterCatalogue& catalogue, 
     for (const BackupFile& program : backup.programs) {
         files.emplace_back(program.name, program.bytes);
         result.copied.push_back(program.name);
+        const HookFile* hook = program.name.find('/') == std::string::npos ? findHook(program.name) : nullptr;
+        if (hook && hook->runnable) {
+            result.hooks.push_back(program.name + ": " + std::string(hook->runsWhen));
+        }
     }
     result.skipped = backup.skipped;
     result.diagnostics = checkPrograms(backup, result.libraries);

@@ -19,6 +19,7 @@ struct BackupImport {
     std::vector<std::string> copied;   // the .nc files among them, byte for byte as in the backup
     std::vector<SkippedFile> skipped;  // files of the backup the simulator does not use
     std::vector<std::string> libraries;
+    std::vector<std::string> hooks;    // "T.nc: a T word set from the panel ...": the hook files it has
     int parameters = 0;                // written to params.toml
     bool factoryCompared = false;      // the backup had default_setting
     std::vector<int> changedParameters; // differ from default_setting

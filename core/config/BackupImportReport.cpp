@@ -69,6 +69,7 @@ std::string formatImportReport(const BackupImport& r) {
     }
     out += "  copied as they were: " + std::to_string(r.copied.size()) + " .nc files" +
            (r.copied.empty() ? "" : " (" + joined(r.copied) + ")") + "\n";
+    section(out, "Hook files (the panel and the controller run them as the M350 does):", r.hooks);
     std::vector<std::string> skipped;
     for (const SkippedFile& file : r.skipped) {
         skipped.push_back(file.name + ": " + file.reason);

@@ -59,7 +59,7 @@ void libraries(const ControllerBackup& backup, ImportedMachine& out) {
         }
     }
     if (hasProgram(backup, "slibuser.nc")) {
-        text += "other = [\"slibuser.nc\"]\n";
+        text += "# slibuser.nc (G100-G199) is loaded beside slib-g.nc because it is in the folder\n";
         out.libraries.push_back("slibuser.nc");
     }
     out.text += text;

@@ -9,7 +9,7 @@
 namespace m350::config {
 
 // machine.toml for an imported backup: dialect m350, the libraries the backup has (slib-g.nc,
-// slib-m.nc, slibuser.nc), the magazine and IO links (importWiring), and the simulated world's
+// slib-m.nc; slibuser.nc loads because it is in the folder), the magazine and IO links (importWiring), and the simulated world's
 // facts no file gives, each stated with a comment and listed for review:
 //   [homing] switch_distance   how far each axis stands from its home switch at power-on
 //   [tool_setter] top, radius  chosen so that the tools' stored Z offsets (params 930-945,

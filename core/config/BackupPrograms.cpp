@@ -13,9 +13,7 @@ constexpr std::size_t kRecords = 6;
 constexpr std::size_t kRecordBytes = kMdiBlockBytes / kRecords;
 
 gcode::FileRole libraryRole(const std::string& name) {
-    return name == "slib-g.nc" ? gcode::FileRole::GLibrary
-           : name == "slib-m.nc" ? gcode::FileRole::MLibrary
-                                 : gcode::FileRole::Library;
+    return name == "slib-m.nc" ? gcode::FileRole::MLibrary : gcode::FileRole::GLibrary; // slib-g.nc, slibuser.nc
 }
 
 // Parses `files` into one program and keeps the syntax errors (the findings that stop a run).

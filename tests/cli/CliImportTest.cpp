@@ -66,8 +66,8 @@ TEST_F(CliImportTest, TheImportedMachineRunsItsMdiLinesAndTNcWithTheBackupsVaria
     EXPECT_EQ(m["machine"]["X"], backup_.coordinate[5] + 20);
     EXPECT_EQ(m["machine"]["Y"], backup_.coordinate[6] + 10);
 
-    // T.nc (T#1504) runs the backup's O20000 with the target tool
-    ProcessResult t = sim({"run", "machine/T.nc", "--config", "machine", "--var", "1504=5", "--print",
+    // T.nc (T#1504), run as the panel runs it for a T word, calls the backup's O20000
+    ProcessResult t = sim({"hook", "T", "--config", "machine", "--var", "1504=5", "--print",
                            "629,1300,1302,1306,805,806,807,811,812,842"});
     ASSERT_EQ(t.exitStatus, kExitOk) << t.err;
     json v = output(t)["vars"];
@@ -87,11 +87,31 @@ TEST_F(CliImportTest, TheImportedMachineRunsItsMdiLinesAndTNcWithTheBackupsVaria
     EXPECT_EQ(start["vars"]["1301"], backup_.setting[801]);
 }
 
+TEST_F(CliImportTest, WithoutAMagazineDeviceTheMachineStillHomesJogsAndProbesItsToolsWhereTheyWereSet) {
+    ASSERT_EQ(import("machine").exitStatus, kExitOk);
+    ProcessResult home = sim({"mdi", "G91 G0 X5 Y-5", "--config", "machine", "--unhomed", "--home", "--print",
+                              "1515,1516,1517"});
+    ASSERT_EQ(home.exitStatus, kExitOk) << home.err;
+    json h = output(home);
+    for (const char* flag : {"1515", "1516", "1517"}) {
+        EXPECT_EQ(h["vars"][flag], 1) << flag;
+    }
+    // the stated tool lengths and setter top give back the Z offset the controller stored for T2
+    ProcessResult probe = sim({"mdi", "#1502=2", "M98 P502", "--config", "machine", "--print", "1431,1927"});
+    ASSERT_EQ(probe.exitStatus, kExitOk) << probe.err;
+    json p = output(probe);
+    EXPECT_NEAR(p["vars"]["1431"].get<double>(), backup_.setting[931], 1e-9) << p;
+    EXPECT_NEAR(p["machine"]["Z"].get<double>(), backup_.setting[931] + backup_.setting[140], 1e-9) << p;
+}
+
 TEST_F(CliImportTest, TheResultListsWhatWasWrittenCopiedAndSkipped) {
     json j = output(import("machine"));
     EXPECT_EQ(j["machine_folder"], (dir_ / "machine").string());
     EXPECT_EQ(j["copied"], json({"T.nc", "cam/cam1.nc", "pause.nc", "slib-g.nc", "slib-m.nc"}));
     EXPECT_EQ(j["libraries"], json({"slib-g.nc", "slib-m.nc"}));
+    ASSERT_EQ(j["hooks"].size(), 2u) << j["hooks"];
+    EXPECT_EQ(j["hooks"][0].get<std::string>().rfind("T.nc: a T word", 0), 0u) << j["hooks"];
+    EXPECT_EQ(j["hooks"][1].get<std::string>().rfind("pause.nc: ", 0), 0u) << j["hooks"];
     std::set<std::string> skipped;
     for (const json& s : j["skipped"]) {
         skipped.insert(s["file"].get<std::string>());

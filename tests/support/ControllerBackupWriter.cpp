@@ -80,6 +80,16 @@ ControllerBackupWriter ControllerBackupWriter::smallRouter() {
                            "G53 Z#1306 F#1312\n"
                            "#1300 = #1\n"
                            "N9 #1503 = 1000\n"
+                           "M99\n"
+                           "O502(fixed setter, one pass)\n"
+                           "G53 Z#641 F#1312\n"
+                           "G53 X#635 Y#636 F#1311\n"
+                           "G53 Z#637 F#1312\n"
+                           "G91 G31 Z-200 F#632 P#1075 L#1077 K0 Q1\n"
+                           "G90\n"
+                           "#[1430+#1300-1] = #1927\n"
+                           "G91 G01 Z#640 F#632\n"
+                           "G90\n"
                            "M99\n";
     b.files["slib-m.nc"] = "O10006(M6: empty, as the factory's)\nM99\n";
     b.files["T.nc"] = "T#1504\n";

@@ -21,7 +21,7 @@ struct ControllerBackupWriter {
 
     // A small router: a servo disc (magazine type 4, which the import cannot model) of 6 pockets,
     // home switches, fixed and floating setters, a clamp on OUT01/IN11, offsets in G54, G55 and
-    // the common offset, three MDI lines (one GBK comment), slib-g.nc with O20000 (T) and O502,
+    // the common offset, three MDI lines (one GBK comment), slib-g.nc with O20000 (T) and O502 (one pass on the fixed setter),
     // slib-m.nc with O10006 (M6), T.nc, a GBK pause.nc, and bitmaps, a module, logs and a
     // string table that the import skips.
     static ControllerBackupWriter smallRouter();

@@ -90,6 +90,18 @@ TEST_F(BackupImportTest, EveryParameterAndOffsetLoadsExactlyAsTheBinaryFilesHold
     EXPECT_EQ(machine.libraries[1].role, gcode::FileRole::MLibrary);
 }
 
+TEST_F(BackupImportTest, SlibuserNcLoadsBesideSlibGOnceAndTheHookFilesAreListed) {
+    backup_.files["slibuser.nc"] = "O9199(G199)\nG90 G01 X#0 Y#1 F1000\nM99\n";
+    BackupImport result = imported();
+    EXPECT_EQ(result.libraries, (std::vector<std::string>{"slib-g.nc", "slib-m.nc", "slibuser.nc"}));
+    MachineConfig machine = load();
+    ASSERT_EQ(machine.libraries.size(), 3u);
+    EXPECT_EQ(fs::path(machine.libraries[2].path).filename(), "slibuser.nc");
+    EXPECT_EQ(machine.libraries[2].role, gcode::FileRole::GLibrary);
+    ASSERT_EQ(result.hooks.size(), 2u); // T.nc and pause.nc; slibuser.nc is a library, cam/cam1.nc no hook
+    EXPECT_THAT(formatImportReport(result), HasSubstr("\n  pause.nc: "));
+}
+
 TEST_F(BackupImportTest, ParamsTomlNamesEachParameterAndMarksWhatDiffersFromTheFactory) {
     BackupImport result = imported();
     const std::string params = readFile(dir_ / "machine/params.toml");
