@@ -19,6 +19,7 @@ struct SimOptions {
     std::optional<std::string> dialect;
     std::vector<int> printVariables;
     std::optional<std::string> traceFile;
+    std::optional<std::string> outputFile; // --dprnt: where POPEN/DPRNT/BPRNT/PCLOS output goes
     bool home = false;                   // 回零 every axis that has a home switch before the run
     controller::RunSettings settings;
 };

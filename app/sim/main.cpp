@@ -5,6 +5,7 @@
 #include "app/sim/ReportJson.h"
 #include "app/sim/SimOptions.h"
 
+#include "core/config/AtomicFile.h"
 #include "core/config/MachineConfig.h"
 #include "core/config/ParameterNumbers.h"
 #include "core/controller/Controller.h"
@@ -83,6 +84,27 @@ std::optional<std::string> checkAgainstMachine(const sim::SimOptions& o, const c
     return std::nullopt;
 }
 
+// What the program sent to the external output device (POPEN ... PCLOS), into --dprnt FILE or
+// dprnt.txt beside the program, written whole and atomically after the run; what went wrong, if
+// anything (said on stderr).
+std::optional<std::string> writeExternalOutput(const controller::Controller& controller, const sim::SimOptions& o) {
+    if (!controller.externalOutputOpened()) {
+        return std::nullopt;
+    }
+    namespace fs = std::filesystem;
+    fs::path file = o.outputFile ? fs::path(*o.outputFile)
+                    : o.command == sim::SimOptions::Command::Mdi
+                        ? fs::path("dprnt.txt")
+                        : fs::path(o.program).parent_path() / "dprnt.txt";
+    if (auto problem = config::writeFileAtomically(file, controller.externalOutput())) {
+        std::cerr << "m350-sim: cannot write the external output (DPRNT) to " << file.string() << ": " << *problem
+                  << '\n';
+        return problem;
+    }
+    std::cerr << "m350-sim: external output (POPEN/DPRNT/PCLOS) written to " << file.string() << '\n';
+    return std::nullopt;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -137,12 +159,16 @@ int main(int argc, char** argv) {
     if (!homing && !ready) {
         report.status = controller::RunStatus::Error;
     }
+    std::optional<std::string> outputProblem = writeExternalOutput(controller, o);
     printDiagnostics(report.diagnostics);
     if (report.alarm) {
         const Alarm& a = *report.alarm;
         std::cerr << a.file << ':' << a.line << ':' << a.column << ": alarm: " << a.message << '\n';
     }
     std::cout << sim::dump(sim::reportJson(report, controller, o.printVariables)) << '\n';
+    if (outputProblem) {
+        return kExitError;
+    }
     switch (report.status) {
     case controller::RunStatus::Ok: return kExitOk;
     case controller::RunStatus::Alarm: return kExitAlarm;

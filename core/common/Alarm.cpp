@@ -23,6 +23,7 @@ std::string_view alarmKey(AlarmCode code) {
     case AlarmCode::SkipNotTriggered: return "skip_not_triggered";
     case AlarmCode::SensorTimeout: return "sensor_timeout";
     case AlarmCode::Crash: return "crash";
+    case AlarmCode::DeviceError: return "device_error";
     case AlarmCode::OperatorReset: return "reset";
     case AlarmCode::EmergencyStop: return "emergency_stop";
     }

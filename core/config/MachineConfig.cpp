@@ -248,6 +248,9 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         loadParams(dir, config);
         loadOffsets(dir, config);
         loadVariables(dir, config);
+        if (auto wrong = loadModbusSlaves((dir / "modbus.toml").string(), config.modbus)) {
+            fail(dir / "modbus.toml", *wrong);
+        }
     } catch (const Failure& f) {
         return f.error;
     } catch (const fs::filesystem_error& e) {

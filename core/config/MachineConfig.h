@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/config/MagazineConfig.h"
+#include "core/config/ModbusSlaves.h"
 #include "core/config/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
@@ -30,6 +31,7 @@ struct LibraryFile {
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
 //   hook files     optional: the M350's fndzero.nc, probe.nc, key-1.nc ... (HookFiles.h); slibuser.nc
 //                  is loaded as a G library beside the listed ones
+//   modbus.toml    optional: the Modbus RTU slaves' holding registers (ModbusSlaves.h)
 struct MachineConfig {
     std::string folder;
     std::string name;
@@ -55,6 +57,7 @@ struct MachineConfig {
     // work, as spindle-nose machine Z at contact with a zero-length tool; none when not given.
     std::optional<double> floatingSetterTop;
     std::vector<double> toolLengths;
+    ModbusSlaves modbus; // modbus.toml
 };
 
 struct ConfigError {

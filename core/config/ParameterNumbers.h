@@ -37,6 +37,7 @@ inline constexpr int kHomingDirectionX = 112;      // 112-116: 0 negative, 1 pos
 inline constexpr int kHomingSecondSpeed = 118;     // mm/min of the precise approaches (0: a tenth of the first)
 inline constexpr int kHomeAfterBooting = 127;      // 0 = prompt 是否进行开机寻零操作? at boot
 inline constexpr int kHomeSwitchX = 545;           // input triples 545, 548, 551, 554, 557: pin, enable, level
+inline constexpr int kModbusRtu = 279;              // Modbus RTU: 0 off, 1 on (MSETDATA / MGETDATA)
 inline constexpr int kHomeBeforeProcessing = 220;  // 0 = not required
 inline constexpr int kDrillingRetraction = 224;    // 钻孔循环退刀量, mm: G73/G83 retraction
 inline constexpr int kSoftLimitsEnabled = 155;     // 0 = off

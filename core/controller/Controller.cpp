@@ -19,7 +19,9 @@ namespace param = config::param;
 Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? this : nullptr),
       interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, scan_), store_(*config_.dialect, config_.parameters),
-      magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}) {
+      magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}),
+      devices_({config_.parameters, scan_, trace_, [this] { return machine_.time(); }, [this] { return source(); }},
+               config_.modbus) {
     if (settings_.trace) {
         trace_ = std::make_unique<TraceWriter>(*settings_.trace);
     }
@@ -168,6 +170,7 @@ bool Controller::addSourceFile(gcode::Parser& parser, gcode::Program& program, c
 std::unique_ptr<macro::Executor> Controller::newExecutor() {
     macro::Executor::Options options;
     options.codePrograms = config_.codePrograms;
+    options.peripherals = &devices_;
     return std::make_unique<macro::Executor>(program_, *config_.dialect, store_, *this, interp_, options);
 }
 
@@ -284,6 +287,7 @@ bool Controller::start() {
     pendingDialog_.reset();
     sensorWatch_.clear();
     paused_.reset();
+    devices_.closeOutputDevice();
     if (!executor_) {
         state_ = RunState::Idle;
         return false;

@@ -3,6 +3,7 @@
 #include "core/config/HookFiles.h"
 #include "core/config/IoPorts.h"
 #include "core/config/MachineConfig.h"
+#include "core/controller/ExternalDevices.h"
 #include "core/controller/ManualMotionState.h"
 #include "core/controller/PanelStatus.h"
 #include "core/controller/RunReport.h"
@@ -232,6 +233,10 @@ public:
     // Reads any variable as a macro would, for --print and the panel.
     macro::Value variable(int number);
     const gcode::Dialect& dialect() const { return *config_.dialect; }
+    // What the external output device (POPEN, DPRNT, BPRNT, PCLOS) received since the controller
+    // started; whether a program ever opened it.
+    const std::string& externalOutput() const { return devices_.received(); }
+    bool externalOutputOpened() const { return devices_.outputOpened(); }
     const config::MachineConfig& config() const { return config_; }
 
     // macro::MachineAccess
@@ -310,6 +315,7 @@ private:
     bool pressStartWhenAwaited_ = false; // run(): no operator, the controller presses START
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
+    ExternalDevices devices_; // the external output device and the Modbus slaves
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 
     // 断点加工 (StartAtLine.cpp): the main block a hold stopped, which pass over it, where it stopped

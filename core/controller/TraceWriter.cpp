@@ -78,6 +78,32 @@ void TraceWriter::lookAhead(double time, std::string_view code, const TraceSourc
     out_ << j.dump() << '\n';
 }
 
+void TraceWriter::externalOutput(double time, std::string_view statement, std::string_view record,
+                                 const TraceSource& source) {
+    nlohmann::json j{{"t", time}, {"type", "output"}, {"statement", std::string(statement)}};
+    if (statement == "DPRNT") {
+        j["text"] = std::string(record.substr(0, record.find_last_not_of('\n') + 1));
+    } else if (statement == "BPRNT") {
+        static constexpr char kHex[] = "0123456789ABCDEF";
+        std::string bytes;
+        for (char c : record) {
+            const auto b = static_cast<unsigned char>(c);
+            bytes += std::string(bytes.empty() ? "" : " ") + kHex[b >> 4] + kHex[b & 0xF];
+        }
+        j["bytes"] = bytes;
+    }
+    withSource(j, source);
+    out_ << j.dump() << '\n';
+}
+
+void TraceWriter::modbus(double time, std::string_view operation, int slave, int address, int value,
+                         const TraceSource& source) {
+    nlohmann::json j{{"t", time},       {"type", "modbus"},    {"op", std::string(operation)},
+                     {"slave", slave},  {"register", address}, {"value", value}};
+    withSource(j, source);
+    out_ << j.dump() << '\n';
+}
+
 void TraceWriter::runState(double time, std::string_view state) {
     nlohmann::json j{{"t", time}, {"type", std::string(state)}};
     out_ << j.dump() << '\n';

@@ -31,6 +31,11 @@ public:
     void programStop(double time, std::string_view reason, const TraceSource& source);
     // A look-ahead or contour-control mode switched (`G05.1 Q1`): recorded, it moves nothing.
     void lookAhead(double time, std::string_view code, const TraceSource& source);
+    // The external output device: POPEN and PCLOS (no record), a DPRNT record (as text) or a BPRNT
+    // record (as hexadecimal bytes).
+    void externalOutput(double time, std::string_view statement, std::string_view record, const TraceSource& source);
+    // A Modbus transfer: "read" or "write" of a slave's holding register.
+    void modbus(double time, std::string_view operation, int slave, int address, int value, const TraceSource& source);
     // A macro began waiting for an input to reach `level` (the sensor watchdog's first notice).
     void sensorWait(double time, std::string_view port, int level, const TraceSource& source);
 

@@ -37,7 +37,21 @@ struct Assignment {
     std::uint32_t column = 0;
 };
 
-enum class Control : std::uint8_t { None, IfGoto, IfThen, Goto, While, End };
+// One item of a DPRNT or BPRNT (a text, or a variable with its digit format), or one argument of
+// a Modbus statement (an expression).
+struct StatementItem {
+    std::string_view text;      // DPRNT/BPRNT text as output (`*` already a space); in the TextArena
+    ExprId value = kNoExpr;     // the variable printed, or the argument
+    std::uint8_t integerDigits = 0;  // DPRNT #v[cd]: c
+    std::uint8_t fractionDigits = 0; // DPRNT #v[cd]: d; BPRNT #v[c]: c
+    std::uint32_t column = 0;
+};
+
+enum class Control : std::uint8_t {
+    None, IfGoto, IfThen, Goto, While, End,
+    Popen, Pclos, Dprnt, Bprnt,            // FANUC external output
+    MSetData, MGetData, ModbusConversion   // M350 Modbus (MBYTE2DATA and MDATA2BYTE: conversions)
+};
 
 // The largest N label and GOTO target: 8 digits, FANUC's longest sequence numbers. Larger ones are
 // refused, never rounded into another label.
@@ -61,6 +75,7 @@ struct Block {
     std::int32_t loopId = 0;         // m of DOm / ENDm
     std::int32_t partner = -1;       // WHILE <-> END block index, -1 when unmatched
     std::uint32_t controlColumn = 0; // where the control keyword starts
+    std::uint32_t statement = 0;     // DPRNT, BPRNT, Modbus: its items in BlockStorage::statements
     std::span<const Assignment> assignments; // these three are stored in the program's arenas
     std::span<const Word> words;
     std::string_view comment; // text of the first comment on the line

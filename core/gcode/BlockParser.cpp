@@ -112,6 +112,9 @@ std::string BlockParser::describe(const Token& token) const {
 
 void BlockParser::parseStatement(Block& block) {
     for (const Token& t : tokens_) {
+        if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::Dprnt || t.keyword == Keyword::Bprnt)) {
+            break; // its text is read from the line itself (parsePrintItems), not as tokens
+        }
         if (isNote(t.issue)) {
             note(t.column, Lexer(dialect_).issueMessage(t, line_));
         } else if (t.issue != TokenIssue::None) {
@@ -163,6 +166,14 @@ void BlockParser::parseStatement(Block& block) {
         block.controlColumn = k.column;
         switch (k.keyword) {
         case Keyword::If: next(); parseIf(block); return;
+        case Keyword::Popen:
+        case Keyword::Pclos:
+        case Keyword::Dprnt:
+        case Keyword::Bprnt:
+        case Keyword::MSetData:
+        case Keyword::MGetData:
+        case Keyword::MByte2Data:
+        case Keyword::MData2Byte: next(); parseDeviceStatement(block, k); return;
         case Keyword::While: next(); parseWhile(block); return;
         case Keyword::Goto:
             next();

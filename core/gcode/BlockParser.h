@@ -67,6 +67,12 @@ private:
     int parseLoopId(const char* keyword);
     ExprId parseGotoTarget();
     std::int32_t labelNumber(const Token& number, const char* what);
+    // POPEN PCLOS DPRNT BPRNT and the Modbus statements (BlockParserStatements.cpp)
+    void parseDeviceStatement(Block& block, const Token& keyword);
+    void parsePrintItems(Block& block, const Token& keyword);
+    void parseModbusArguments(Block& block, const Token& keyword);
+    std::uint32_t storeStatement(const std::vector<StatementItem>& items);
+    std::uint32_t columnAt(std::size_t offset) const;
 
     bool plainNumber(Word& word); // a signed number alone: kept in the word
     ExprId parseExpression();

@@ -4,6 +4,9 @@
 #include "core/gcode/Block.h"
 #include "core/gcode/Expression.h"
 
+#include <span>
+#include <vector>
+
 namespace m350::gcode {
 
 // Where parsed blocks keep what they refer to: expression trees, words, assignments and text.
@@ -14,6 +17,10 @@ struct BlockStorage {
     Arena<Word> words;
     Arena<Assignment> assignments;
     TextArena text;
+    // The items of the DPRNT, BPRNT and Modbus statements, by Block::statement (few blocks have
+    // any, so a block holds an index instead of a span).
+    Arena<StatementItem> statementItems;
+    std::vector<std::span<const StatementItem>> statements;
 };
 
 } // namespace m350::gcode

@@ -42,6 +42,7 @@ Dialect makeM350() {
     d.handlerArguments = letters({{'X', 0}, {'Y', 1}, {'Z', 2}, {'A', 3}, {'B', 4}, {'C', 5}, {'I', 7}, {'J', 8},
                                   {'K', 9}, {'R', 10}, {'H', 12}, {'P', 13}, {'Q', 14}, {'D', 15}, {'F', 16},
                                   {'S', 17}});
+    d.modbusStatements = true;
     d.tCodeProgram = 20000;
     d.homingProgram = 501;
     d.gHandlerBase = 9000;
@@ -83,6 +84,7 @@ Dialect makeFanuc() {
     d.handlerArguments = d.callArguments;
     d.dwellXSeconds = true;
     d.lookAheadCodes = true;
+    d.externalOutput = true;
     return d;
 }
 

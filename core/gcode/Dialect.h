@@ -54,6 +54,8 @@ struct Dialect {
     int homingProgram = -1;
     int gHandlerBase = -1;             // `Gxx` runs O(9000+xx) from the G library
     int mHandlerBase = -1;             // `Mn` runs O(10000+n) from the M library
+    bool externalOutput = false;       // FANUC: POPEN, DPRNT[...], BPRNT[...], PCLOS
+    bool modbusStatements = false;     // M350: MSETDATA[...], MGETDATA[...] (and MBYTE2DATA, MDATA2BYTE)
     bool lookAheadCodes = false;       // FANUC: G05.1 Q1/Q0, G08 P1/P0, G05 P10000/P0 (no geometry change)
     double dwellPScale = 0.001;        // G04 P units to seconds (both: milliseconds)
     bool dwellXSeconds = false;        // FANUC: G04 X<seconds>

@@ -120,6 +120,15 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens, BlockCom
                     ++run.count;
                     ++i;
                     ++column;
+                } else if (c == '2' && run.count == 5 && isLetter(at(i + 1)) &&
+                           (std::string_view(run.upper.data(), 5) == "MBYTE" ||
+                            std::string_view(run.upper.data(), 5) == "MDATA")) {
+                    run.upper[run.count] = c; // the M350's MBYTE2DATA and MDATA2BYTE
+                    run.offset[run.count] = static_cast<std::uint32_t>(i);
+                    run.column[run.count] = column;
+                    ++run.count;
+                    ++i;
+                    ++column;
                 } else if (dialect_.spacesInsignificant && isSpace(c) && isLetter(at(nextNonSpace(i)))) {
                     std::size_t ahead = nextNonSpace(i);
                     column += static_cast<std::uint32_t>(ahead - i);

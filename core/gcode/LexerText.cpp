@@ -16,7 +16,7 @@ std::optional<Keyword> keywordFor(std::string_view upperWord) {
     return std::nullopt;
 }
 
-constexpr std::size_t kLongestKeyword = 5; // WHILE, ROUND
+constexpr std::size_t kLongestKeyword = 10; // MBYTE2DATA
 
 bool split(std::string_view rest, KeywordSplit& out) {
     if (rest.empty()) {

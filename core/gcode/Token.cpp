@@ -13,6 +13,7 @@ Function functionOf(Keyword k) {
 const char* keywordSpelling(Keyword k) {
     static constexpr const char* spellings[] = {
         "IF", "GOTO", "THEN", "WHILE", "DO", "END", "EQ", "NE", "LT", "GT", "LE", "GE", "AND", "OR", "XOR", "MOD",
+        "POPEN", "PCLOS", "DPRNT", "BPRNT", "MSETDATA", "MGETDATA", "MBYTE2DATA", "MDATA2BYTE",
         "ABS", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ROUND", "FIX", "FUP", "LN", "EXP", "BIN", "BCD"};
     return spellings[static_cast<int>(k)];
 }

@@ -16,6 +16,8 @@ enum class TokenKind : std::uint8_t {
 enum class Keyword : std::uint8_t {
     If, Goto, Then, While, Do, End,
     Eq, Ne, Lt, Gt, Le, Ge, And, Or, Xor, Mod,
+    Popen, Pclos, Dprnt, Bprnt,                  // FANUC external output
+    MSetData, MGetData, MByte2Data, MData2Byte,  // M350 Modbus
     Abs, Sin, Cos, Tan, Asin, Acos, Atan, Sqrt, Round, Fix, Fup, Ln, Exp, Bin, Bcd
 };
 

@@ -22,6 +22,8 @@ public:
     void endScan() { scanning_ = false; }
     bool scanning() const { return scanning_; }
     const std::optional<std::string>& refusal() const { return refusal_; }
+    // Something outside the machine the scanned blocks reached (a Modbus slave) that a scan cannot follow.
+    void refuse(std::string why) { refusal_ = std::move(why); }
     // The output levels the scanned blocks set (nullopt: not written).
     std::optional<int> scannedOutput(int port) const { return outputs_[static_cast<std::size_t>(port - 1)]; }
 

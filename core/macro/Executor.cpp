@@ -168,6 +168,16 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
         }
         frame.pc = static_cast<std::uint32_t>(block.partner);
         return;
+    case Control::Popen:
+    case Control::Pclos:
+    case Control::Dprnt:
+    case Control::Bprnt:
+    case Control::MSetData:
+    case Control::MGetData:
+    case Control::ModbusConversion:
+        executeDeviceStatement(block);
+        ++frame.pc;
+        return;
     }
 }
 

@@ -6,6 +6,7 @@
 #include "core/macro/BlockSink.h"
 #include "core/macro/Evaluator.h"
 #include "core/macro/MachineAccess.h"
+#include "core/macro/Peripherals.h"
 #include "core/macro/VariableStore.h"
 
 #include <array>
@@ -25,6 +26,8 @@ public:
         // Codes the machine maps to programs beyond the dialect's own rules, e.g. {'M', 6} -> 9001.
         std::map<std::pair<char, int>, int> codePrograms;
         bool blockDelete = false; // optional block skip switch: skip '/' blocks when on
+        // The external output device and Modbus slaves (none: their statements alarm).
+        Peripherals* peripherals = nullptr;
     };
 
     enum class State { Idle, Running, Finished, Alarmed };
@@ -72,6 +75,7 @@ private:
 
     void executeBlock(const gcode::Block& block, std::size_t frameIndex);
     void executeOrdinary(const gcode::Block& block, std::size_t frameIndex);
+    void executeDeviceStatement(const gcode::Block& block); // ExecutorStatements.cpp
     bool mayCall(const EvaluatedBlock& block) const;
     bool sendToSink(const EvaluatedBlock& block, std::size_t frameIndex);
     void jumpToLabel(std::size_t frameIndex, double label, std::uint32_t column);

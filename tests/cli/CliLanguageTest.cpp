@@ -60,4 +60,132 @@ TEST_F(CliTest, LookAheadCodesAreUnknownGCodesOnTheM350) {
     EXPECT_NE(r.err.find("hpcc.nc:2:1: alarm: G5.1: not a G code this machine knows"), std::string::npos) << r.err;
 }
 
+namespace {
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+const char* const kReportProgram = "#2=128.47398\n#5=-91.2\nPOPEN\nDPRNT[X#2[53]*Y#5[53]]\n"
+                                   "DPRNT[*PART*OK]\nPCLOS\nM30\n";
+
+} // namespace
+
+TEST_F(CliTest, DprntOutputIsWrittenBesideTheProgram) {
+    write("jobs/report.nc", kReportProgram);
+    ProcessResult r = sim({"run", "jobs/report.nc", "--dialect", "fanuc", "--trace", "trace.jsonl"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_EQ(output(r).value("status", ""), "ok");
+    EXPECT_EQ(readFile(dir_ / "jobs" / "dprnt.txt"), "X   128.474 Y-   91.200\n PART OK\n");
+    EXPECT_NE(r.err.find("written to jobs/dprnt.txt"), std::string::npos) << r.err;
+    std::ifstream trace(dir_ / "trace.jsonl");
+    std::vector<std::string> sent;
+    for (std::string line; std::getline(trace, line);) {
+        json event = json::parse(line);
+        if (event["type"] == "output") {
+            sent.push_back(event["statement"].get<std::string>() + ":" + event.value("text", "") + "@" +
+                           std::to_string(event["line"].get<int>()));
+        }
+    }
+    EXPECT_EQ(sent, (std::vector<std::string>{"POPEN:@3", "DPRNT:X   128.474 Y-   91.200@4", "DPRNT: PART OK@5",
+                                              "PCLOS:@6"}));
+}
+
+TEST_F(CliTest, DprntOptionNamesTheFile) {
+    write("report.nc", kReportProgram);
+    ProcessResult r = sim({"run", "report.nc", "--dialect", "fanuc", "--dprnt", "measured.txt"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_EQ(readFile(dir_ / "measured.txt"), "X   128.474 Y-   91.200\n PART OK\n");
+    EXPECT_FALSE(fs::exists(dir_ / "dprnt.txt"));
+}
+
+TEST_F(CliTest, DprntFileThatCannotBeWrittenIsAnError) {
+    write("report.nc", kReportProgram);
+    ProcessResult r = sim({"run", "report.nc", "--dialect", "fanuc", "--dprnt", "no/such/folder/out.txt"});
+    EXPECT_EQ(r.exitStatus, kExitError) << r.err;
+    EXPECT_NE(r.err.find("cannot write the external output"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("no/such/folder/out.txt"), std::string::npos) << r.err;
+}
+
+TEST_F(CliTest, MdiDprntGoesToTheCurrentFolder) {
+    ProcessResult r = sim({"mdi", "POPEN", "DPRNT[MDI*#1[20]]", "PCLOS", "--dialect", "fanuc", "--var", "1=7"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_EQ(readFile(dir_ / "dprnt.txt"), "MDI   7\n");
+}
+
+TEST_F(CliTest, DprntWithoutPopenIsAnAlarmAndWritesNoFile) {
+    write("report.nc", "#1=2\nN10 DPRNT[A#1[10]]\nM30\n");
+    ProcessResult r = sim({"run", "report.nc", "--dialect", "fanuc"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    EXPECT_EQ(output(r)["alarm"].value("code", ""), "device_error");
+    EXPECT_NE(r.err.find("report.nc:2:5: alarm: DPRNT without POPEN"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "dprnt.txt"));
+}
+
+namespace {
+
+// A copy of the bundled M350 with a Modbus slave table in its folder.
+fs::path machineWithModbus(const fs::path& into, const std::string& modbusToml) {
+    fs::create_directories(into);
+    fs::copy(fs::path(M350_MACHINES_DIR) / "m350-linear16", into,
+             fs::copy_options::overwrite_existing | fs::copy_options::recursive);
+    std::ofstream(into / "modbus.toml", std::ios::binary) << modbusToml;
+    return into;
+}
+
+} // namespace
+
+TEST_F(CliTest, ModbusStatementsRunAgainstTheMachineFoldersSlaves) {
+    fs::path machine = machineWithModbus(dir_ / "machine", "[slave.1.holding]\n8192 = 0\n8193 = 1500\n");
+    write("vfd.nc", "MGETDATA[1,8193,#100]\nMSETDATA[1,8192,#100*2]\nMGETDATA[1,8192,#101]\nM30\n");
+    ProcessResult r = sim({"run", "vfd.nc", "--config", machine.string(), "--param", "279=1", "--print", "100,101",
+                           "--trace", "trace.jsonl"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    json j = output(r);
+    EXPECT_EQ(j["vars"].value("100", json()), 1500) << r.out;
+    EXPECT_EQ(j["vars"].value("101", json()), 3000) << r.out;
+    std::ifstream trace(dir_ / "trace.jsonl");
+    std::vector<std::string> transfers;
+    for (std::string line; std::getline(trace, line);) {
+        json event = json::parse(line);
+        if (event["type"] == "modbus") {
+            transfers.push_back(event["op"].get<std::string>() + " " + std::to_string(event["slave"].get<int>()) + ":" +
+                                std::to_string(event["register"].get<int>()) + "=" +
+                                std::to_string(event["value"].get<int>()) + " @" +
+                                std::to_string(event["line"].get<int>()));
+        }
+    }
+    EXPECT_EQ(transfers, (std::vector<std::string>{"read 1:8193=1500 @1", "write 1:8192=3000 @2", "read 1:8192=3000 @3"}));
+    // the run works in memory: the folder's table is as it was
+    std::ifstream in(machine / "modbus.toml");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
+              "[slave.1.holding]\n8192 = 0\n8193 = 1500\n");
+}
+
+TEST_F(CliTest, ModbusNeedsParameter279) {
+    fs::path machine = machineWithModbus(dir_ / "machine", "[slave.1.holding]\n8192 = 0\n");
+    write("vfd.nc", "G0 X1\nMSETDATA[1,8192,5]\nM30\n");
+    ProcessResult r = sim({"run", "vfd.nc", "--config", machine.string()});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    EXPECT_NE(r.err.find("vfd.nc:2:1: alarm: MSETDATA: Modbus RTU is off (parameter 279 = 0)"), std::string::npos)
+        << r.err;
+}
+
+TEST_F(CliTest, ABrokenModbusTableIsAConfigError) {
+    fs::path machine = machineWithModbus(dir_ / "machine", "[slave.1.holding]\n8192 = 99999\n");
+    write("vfd.nc", "M30\n");
+    ProcessResult r = sim({"run", "vfd.nc", "--config", machine.string()});
+    EXPECT_EQ(r.exitStatus, kExitError) << r.err;
+    EXPECT_EQ(output(r).value("status", ""), "error");
+    EXPECT_NE(r.err.find("modbus.toml: line 2: slave 1 register '8192'"), std::string::npos) << r.err;
+}
+
+TEST_F(CliTest, CheckFlagsTheModbusConversions) {
+    write("conv.nc", "#1=0\nMBYTE2DATA[#1,#2]\nM30\n");
+    ProcessResult r = sim({"check", "conv.nc"});
+    EXPECT_EQ(r.exitStatus, kExitError);
+    EXPECT_NE(r.err.find("conv.nc:2:1: MBYTE2DATA is not simulated"), std::string::npos) << r.err;
+}
+
 } // namespace m350::clitest

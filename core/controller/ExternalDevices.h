@@ -1,0 +1,55 @@
+#pragma once
+
+#include "core/config/ModbusSlaves.h"
+#include "core/config/ParameterTable.h"
+#include "core/controller/TraceWriter.h"
+#include "core/machine/ScanMachine.h"
+#include "core/macro/Peripherals.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace m350::controller {
+
+// The devices beside the CNC that macro statements reach (macro::Peripherals):
+// - FANUC's external output device (an RS-232 punch or printer): POPEN opens it, DPRNT and BPRNT
+//   send records, PCLOS closes it. What it received collects in received() (m350-sim writes it into
+//   a file) and each record goes to the trace as it is sent. DPRNT or BPRNT while it is closed is
+//   an alarm, as on the FANUC-compatible controls that document it.
+// - the M350's Modbus RTU slaves (modbus.toml): MSETDATA and MGETDATA read and write their holding
+//   registers in memory, with parameter 279 on; each transfer goes to the trace.
+// While 断点加工 scans the blocks before its start line, output is not sent and a Modbus transfer
+// makes the scan refuse (it is the world outside, which a scan does not reach).
+class ExternalDevices : public macro::Peripherals {
+public:
+    struct Context {
+        const config::ParameterTable& parameters;
+        machine::ScanMachine& scan;
+        const std::unique_ptr<TraceWriter>& trace;
+        std::function<double()> time;
+        std::function<TraceSource()> source;
+    };
+    ExternalDevices(Context context, config::ModbusSlaves slaves);
+
+    const std::string& received() const { return received_; }
+    bool outputOpened() const { return opened_; } // POPEN ran at least once
+    void closeOutputDevice() { open_ = false; }   // a new run starts with the device closed
+
+    std::optional<std::string> openOutput() override;
+    std::optional<std::string> closeOutput() override;
+    std::optional<std::string> output(std::string_view statement, std::string_view record) override;
+    std::optional<std::string> writeRegister(int slave, int address, std::uint16_t value) override;
+    std::variant<std::uint16_t, std::string> readRegister(int slave, int address) override;
+
+private:
+    std::optional<std::string> modbusRefusal(const char* statement, int slave, int address);
+
+    Context context_;
+    config::ModbusSlaves slaves_;
+    std::string received_;
+    bool open_ = false;
+    bool opened_ = false;
+};
+
+} // namespace m350::controller
