@@ -54,6 +54,10 @@ void BlockParser::checkExponents() {
         }
     }
     for (std::size_t i = 0; i + 2 < tokens_.size(); ++i) {
+        if (tokens_[i].kind == TokenKind::Keyword &&
+            (tokens_[i].keyword == Keyword::Dprnt || tokens_[i].keyword == Keyword::Bprnt)) {
+            break; // DPRNT text (`DPRNT[1E5]`) is no number
+        }
         const Token& e = tokens_[i + 1];
         if (tokens_[i].kind != TokenKind::Number || e.kind != TokenKind::Letter || e.letter != 'E' ||
             !adjacent(i, i + 1)) {

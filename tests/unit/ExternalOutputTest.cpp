@@ -76,6 +76,14 @@ TEST(ExternalOutputParse, DprntItemsTextAndVariables) {
     EXPECT_EQ(items[3].fractionDigits, 0);
 }
 
+TEST(ExternalOutputParse, TextIsNoGCode) {
+    // an exponent, a block comment's marks and words that are keywords are all plain text here
+    auto p = gcode::support::parseClean("DPRNT[1E5*C*/X*/*END*IF*GOTO]", Dialect::fanuc());
+    const auto items = p.program.statements[p.program.blocks[0].statement];
+    ASSERT_EQ(items.size(), 1u);
+    EXPECT_EQ(items[0].text, "1E5 C /X / END IF GOTO");
+}
+
 TEST(ExternalOutputParse, BprntHasOneDigitFormats) {
     auto p = gcode::support::parseClean("BPRNT[C*/X#110[3]M#112[0]]", Dialect::fanuc());
     const auto items = p.program.statements[p.program.blocks[0].statement];
