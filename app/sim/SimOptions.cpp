@@ -81,7 +81,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE");
         cmd->add_option("--dprnt", o.outputFile,
                         "write what the program sends with POPEN/DPRNT/BPRNT/PCLOS to FILE (default: dprnt.txt "
-                        "beside the program; for mdi, in the current folder)");
+                        "beside the program; for mdi and hook, in the current folder)");
         cmd->add_option("--max-sim-time", o.settings.maxSimTime, "simulated seconds before a runaway stops")
             ->check(positiveFinite);
         cmd->add_option("--sensor-timeout", o.settings.sensorTimeout,

@@ -92,10 +92,9 @@ std::optional<std::string> writeExternalOutput(const controller::Controller& con
         return std::nullopt;
     }
     namespace fs = std::filesystem;
-    fs::path file = o.outputFile ? fs::path(*o.outputFile)
-                    : o.command == sim::SimOptions::Command::Mdi
-                        ? fs::path("dprnt.txt")
-                        : fs::path(o.program).parent_path() / "dprnt.txt";
+    fs::path file = o.outputFile                                  ? fs::path(*o.outputFile)
+                    : o.command == sim::SimOptions::Command::Run ? fs::path(o.program).parent_path() / "dprnt.txt"
+                                                                 : fs::path("dprnt.txt"); // mdi, hook
     if (auto problem = config::writeFileAtomically(file, controller.externalOutput())) {
         std::cerr << "m350-sim: cannot write the external output (DPRNT) to " << file.string() << ": " << *problem
                   << '\n';

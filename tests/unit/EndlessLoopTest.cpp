@@ -21,15 +21,9 @@ using gcode::support::listDiagnostics;
 using gcode::support::parse;
 using test::lines;
 
-// The program must have exactly one diagnostic, of this kind, at this line and column.
 void expectOnly(const gcode::support::Parsed& p, DiagnosticKind kind, std::uint32_t line, std::uint32_t column,
                 const std::string& message) {
-    ASSERT_EQ(p.diagnostics.size(), 1u) << listDiagnostics(p.diagnostics);
-    const gcode::Diagnostic& d = p.diagnostics.front();
-    EXPECT_EQ(d.kind, kind) << listDiagnostics(p.diagnostics);
-    EXPECT_EQ(d.line, line);
-    EXPECT_EQ(d.column, column);
-    EXPECT_EQ(d.message, message);
+    gcode::support::expectOneDiagnostic(p, kind, line, column, message);
 }
 
 TEST(EndlessLoop, BareDoPairsWithItsEndInBothDialects) {

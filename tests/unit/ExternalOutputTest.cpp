@@ -116,11 +116,8 @@ TEST(ExternalOutputParse, ErrorsNameTheColumn) {
         {"G1 X1 DPRNT[A]", 7, "DPRNT must start the block (after the N number)"},
     };
     for (const BadLine& b : bad) {
-        auto p = gcode::support::parse(b.line, Dialect::fanuc());
-        ASSERT_EQ(p.diagnostics.size(), 1u) << b.line << "\n" << listDiagnostics(p.diagnostics);
-        EXPECT_EQ(p.diagnostics[0].kind, gcode::DiagnosticKind::Syntax) << b.line;
-        EXPECT_EQ(p.diagnostics[0].column, b.column) << b.line << ": " << p.diagnostics[0].message;
-        EXPECT_EQ(p.diagnostics[0].message.rfind(b.message, 0), 0u) << b.line << ": " << p.diagnostics[0].message;
+        gcode::support::expectOneDiagnostic(gcode::support::parse(b.line, Dialect::fanuc()),
+                                            gcode::DiagnosticKind::Syntax, 1, b.column, b.message, b.line);
     }
 }
 

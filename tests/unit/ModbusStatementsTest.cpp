@@ -104,11 +104,8 @@ TEST(ModbusStatements, ParseErrorsNameTheColumn) {
         {"msetdata[1, 2, 3]", &Dialect::m350(), 1, "keywords are upper case in the m350 dialect: write MSETDATA"},
     };
     for (const Bad& b : bad) {
-        auto p = gcode::support::parse(b.line, *b.dialect);
-        ASSERT_EQ(p.diagnostics.size(), 1u) << b.line << "\n" << listDiagnostics(p.diagnostics);
-        EXPECT_EQ(p.diagnostics[0].kind, gcode::DiagnosticKind::Syntax) << b.line;
-        EXPECT_EQ(p.diagnostics[0].column, b.column) << b.line << ": " << p.diagnostics[0].message;
-        EXPECT_EQ(p.diagnostics[0].message.rfind(b.message, 0), 0u) << b.line << ": " << p.diagnostics[0].message;
+        gcode::support::expectOneDiagnostic(gcode::support::parse(b.line, *b.dialect), gcode::DiagnosticKind::Syntax,
+                                            1, b.column, b.message, b.line);
     }
 }
 

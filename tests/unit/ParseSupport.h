@@ -45,6 +45,18 @@ inline Parsed parseClean(std::string_view text, const Dialect& dialect, const st
     return p;
 }
 
+// The program must have exactly one diagnostic, of `kind` at `line`:`column`, whose message starts
+// with `messageStart`; `context` names the case in a failure.
+inline void expectOneDiagnostic(const Parsed& p, DiagnosticKind kind, std::uint32_t line, std::uint32_t column,
+                                const std::string& messageStart, const std::string& context = {}) {
+    ASSERT_EQ(p.diagnostics.size(), 1u) << context << "\n" << listDiagnostics(p.diagnostics);
+    const Diagnostic& d = p.diagnostics.front();
+    EXPECT_EQ(d.kind, kind) << context << ": " << d.message;
+    EXPECT_EQ(d.line, line) << context << ": " << d.message;
+    EXPECT_EQ(d.column, column) << context << ": " << d.message;
+    EXPECT_EQ(d.message.rfind(messageStart, 0), 0u) << context << ": " << d.message;
+}
+
 // Renders an expression tree with every binary node parenthesised: `(#1 + (2 * 3))`.
 inline std::string show(const Program& program, ExprId id) {
     if (id == kNoExpr) {
