@@ -573,6 +573,10 @@ STEP MPG</translation>
         <translation>MDI</translation>
     </message>
     <message>
+        <source>Hook file run</source>
+        <translation>Hook file run</translation>
+    </message>
+    <message>
         <source>Probe</source>
         <comment>msg 108</comment>
         <translation>Probe</translation>
@@ -2088,6 +2092,10 @@ STEP MPG</translation>
     <message>
         <source>%1: cannot write: %2</source>
         <translation>%1: cannot write: %2</translation>
+    </message>
+    <message>
+        <source>K%1 stands for the panel key %2, which this panel does not press for it</source>
+        <translation>K%1 stands for the panel key %2, which this panel does not press for it</translation>
     </message>
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>

@@ -573,6 +573,10 @@ STEP MPG</source>
         <translation>MDI运行</translation>
     </message>
     <message>
+        <source>Hook file run</source>
+        <translation>执行系统宏文件</translation>
+    </message>
+    <message>
         <source>Probe</source>
         <comment>msg 108</comment>
         <translation>对刀操作</translation>
@@ -2088,6 +2092,10 @@ STEP MPG</source>
     <message>
         <source>%1: cannot write: %2</source>
         <translation>%1: 无法写入: %2</translation>
+    </message>
+    <message>
+        <source>K%1 stands for the panel key %2, which this panel does not press for it</source>
+        <translation>K%1 定义为面板按键 %2, 本面板不支持由它触发</translation>
     </message>
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>

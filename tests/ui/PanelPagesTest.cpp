@@ -268,7 +268,10 @@ TEST(Panel, AtPowerOnThePanelAsksToHomeAndEnterHomesEveryAxis) {
     EXPECT_EQ(panel.window().prompt()->question(), QStringLiteral("是否进行开机寻零操作?"));
     EXPECT_FALSE(panel.session().latest()->status.homed[0]);
     panel.key("ENTER");
+    // the default machine's fndzero.nc homes Z, X and Y one after another in virtual time
     panel.advance(0.1);
+    EXPECT_EQ(panel.session().latest()->activity, ui::Activity::Homing);
+    panel.advance(30.0);
     for (int axis = 0; axis < 3; ++axis) {
         EXPECT_TRUE(panel.session().latest()->status.homed[static_cast<std::size_t>(axis)]) << axis;
     }

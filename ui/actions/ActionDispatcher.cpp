@@ -66,8 +66,10 @@ bool ActionDispatcher::machineKey(const OperatorAction& action) {
         session_.toggleJogHighSpeed();
     } else if (key == QLatin1String("SPINDLE")) {
         session_.spindleKey(0);
-    } else if (key == QLatin1String("M3") || key == QLatin1String("M4") || key == QLatin1String("M5")) {
+    } else if (KeyPad::mCodeKeys().contains(key)) {
         session_.spindleKey(key.mid(1).toInt());
+    } else if (KeyPad::userKeys().contains(key)) {
+        session_.userKey(key.mid(1).toInt());
     } else if (key.startsWith(QLatin1String("FRO_")) || key.startsWith(QLatin1String("SRO_"))) {
         QString how = key.mid(4);
         int step = how == QLatin1String("UP") ? 10 : how == QLatin1String("DOWN") ? -10 : 0;

@@ -44,6 +44,7 @@ QHash<QString, QString> LogPage::eventTable() {
     w["resume"] = tr("Resume", "msg 113");
     w["pause"] = tr("Pause", "msg 114");
     w["mdi"] = tr("MDI", "msg 129");
+    w["hook"] = tr("Hook file run");
     w["probe"] = tr("Probe", "msg 108");
     w["home_all"] = tr("Home All Axes", "msg 107");
     w["home_axis"] = tr("Axis mach zero", "msg 119");

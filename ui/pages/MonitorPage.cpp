@@ -3,6 +3,7 @@
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/CompactDro.h"
 #include "ui/panel/PanelContext.h"
+#include "ui/session/HookSteps.h"
 
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -197,25 +198,13 @@ void MonitorPage::axisCommand(int number) {
     switch (menu_) {
     case Menu::GoHome: session.home(number == 6 ? QVector<int>{} : axes); break;
     case Menu::Clear: session.zeroAxes(axes); break;
-    case Menu::GoWorkZero: {
-        // Z last when going down to zero, first when it is all axes: up to the safe height first
-        QStringList lines;
-        const char* const names = "XYZAB";
+    case Menu::GoWorkZero:
         if (number == 6) {
-            lines << QStringLiteral("G90 G00 Z#569"); // param 69: the Z safe height
-            QString xy = QStringLiteral("G00");
-            for (int axis : axes) {
-                if (axis != 2) {
-                    xy += QStringLiteral(" %1 0").arg(QChar(names[axis]));
-                }
-            }
-            lines << xy << QStringLiteral("G00 Z0");
+            session.runHooks({goToWorkZeroStep(axes)}, Activity::Mdi); // gotozero.nc when the folder has it
         } else {
-            lines << QStringLiteral("G90 G00 %1 0").arg(QChar(names[axes.front()]));
+            session.runMdi({QStringLiteral("G90 G00 %1 0").arg(QChar("XYZAB"[axes.front()]))}, Activity::Mdi);
         }
-        session.runMdi(lines, Activity::Mdi);
         break;
-    }
     case Menu::Main: break;
     }
 }

@@ -21,6 +21,9 @@ constexpr int kToolOffset = 930;   // 930-945: T1..T16 Z offset
 constexpr int kCapacity = 801;
 constexpr int kVirtualTools = 803;
 constexpr int kSelectedTools = 1970; // #1970-#1989: the tools of a multi-tool setting
+constexpr int kToolSlots = 20;
+constexpr int kTargetTool = 1504;    // #1504: the tool T.nc changes to
+constexpr int kProbeMode = 1502;     // #1502: 0 floating, 1 first fixed setting, 2 fixed again
 constexpr int kSelectable = 16;
 
 QString number(double value) { return QString::number(value, 'f', 3); }
@@ -167,19 +170,22 @@ void ProbePage::fixed() {
 }
 
 // Mode 1 (first fixed setting) also fixes the work Z relative to the setter, so it needs a work
-// Z zero already set; mode 2 records only the tool's Z offset.
+// Z zero already set; mode 2 records only the tool's Z offset. Another tool is changed to first
+// (T.nc with #1504, or its T word), then probe.nc runs (or M98 P502) with #1502 set.
 void ProbePage::fixedFor(int tool) {
     context().ask(tr("Is the workpiece zero set for the Z axis?", "msg 983"), [this, tool](bool zeroSet) {
         auto s = context().snapshot();
-        QStringList lines;
+        QVector<MachineSession::HookStep> steps;
         if (s && s->status.tool != tool) {
-            lines << QStringLiteral("T%1").arg(tool);
+            steps.push_back({config::Hook::ToolWord, {{kTargetTool, tool}}, {QStringLiteral("T%1").arg(tool)}});
         }
-        lines << QStringLiteral("#1502=%1").arg(zeroSet ? 1 : 2) << QStringLiteral("M98 P502");
+        const int mode = zeroSet ? 1 : 2;
+        steps.push_back({config::Hook::Probe, {{kProbeMode, mode}},
+                         {QStringLiteral("#1502=%1").arg(mode), QStringLiteral("M98 P502")}});
         if (!zeroSet) {
             context().notify(tr("Pls determine the Z-axis workpiece zero!", "msg 869"));
         }
-        context().session().runMdi(lines, Activity::Probe);
+        context().session().runHooks(steps, Activity::Probe);
     });
 }
 
@@ -188,26 +194,26 @@ void ProbePage::multi() {
         showGrid(true);
         return;
     }
-    QStringList lines;
+    // the chosen tools in #1970-#1989 (0: none), then mulprobe.nc (or M98 P505)
+    std::map<int, double> tools;
     int count = 0;
     for (int tool = 1; tool <= kSelectable; ++tool) {
         if (selected_[static_cast<std::size_t>(tool - 1)]) {
-            lines << QStringLiteral("#%1=%2").arg(kSelectedTools + count).arg(tool);
-            ++count;
+            tools[kSelectedTools + count++] = tool;
         }
     }
     if (count == 0) {
         context().notify(tr("Select the tools first (arrows move, Enter selects)"));
         return;
     }
-    for (int slot = count; slot < 20; ++slot) {
-        lines << QStringLiteral("#%1=0").arg(kSelectedTools + slot);
+    for (int slot = count; slot < kToolSlots; ++slot) {
+        tools[kSelectedTools + slot] = 0;
     }
-    lines << QStringLiteral("M98 P%1").arg(kMultiToolProgram);
-    context().ask(tr("One Key probe for the selected tool?", "msg 866"), [this, lines](bool yes) {
+    MachineSession::HookStep step{config::Hook::MultiProbe, tools, {QStringLiteral("M98 P%1").arg(kMultiToolProgram)}};
+    context().ask(tr("One Key probe for the selected tool?", "msg 866"), [this, step](bool yes) {
         if (yes) {
             showGrid(false);
-            context().session().runMdi(lines, Activity::Probe);
+            context().session().runHooks({step}, Activity::Probe);
         }
     });
 }

@@ -23,6 +23,8 @@ const QVector<QStringList>& keyRows() {
         {"JOG_X-", "JOG_Y-", "JOG_Z-", "JOG_A-", "JOG_B-", "PAUSE"},
         {"FRO_100", "FRO_UP", "FRO_DOWN", "SRO_100", "SRO_UP", "SRO_DOWN"},
         {"SPINDLE", "M3", "M4", "M5", "RESET"},
+        {"K1", "K2", "K3", "K4", "K5", "K6"},
+        {"K7", "M8", "M9", "M10", "M11", "M19"},
     };
     return rows;
 }
@@ -93,9 +95,7 @@ void KeyPad::retranslate() {
         {"FRO_UP", tr("FRO\n+10%")},            {"FRO_DOWN", tr("FRO\n-10%")},
         {"SRO_100", tr("SRO\n100%")},           {"SRO_UP", tr("SRO\n+10%")},
         {"SRO_DOWN", tr("SRO\n-10%")},          {"SPINDLE", tr("Spindle")},
-        {"M3", "M3"},                          {"M4", "M4"},
-        {"M5", "M5"},
-    };
+    }; // the others (M3, K1 ...) are labelled with their names
     for (auto it = buttons_.begin(); it != buttons_.end(); ++it) {
         QString key = it.key();
         if (isJogKey(key)) {
@@ -123,6 +123,16 @@ const QMap<QString, QString>& KeyPad::pageKeys() {
     static const QMap<QString, QString> keys{{"MONITOR", "monitor"}, {"PROGRAM", "program"}, {"PARAM", "param"},
                                              {"IO", "io"},           {"LOG", "log"},         {"SYSTEM", "system"},
                                              {"MDI", "mdi"},         {"PROBE", "probe"}};
+    return keys;
+}
+
+const QStringList& KeyPad::mCodeKeys() {
+    static const QStringList keys{"M3", "M4", "M5", "M8", "M9", "M10", "M11", "M19"};
+    return keys;
+}
+
+const QStringList& KeyPad::userKeys() {
+    static const QStringList keys{"K1", "K2", "K3", "K4", "K5", "K6", "K7"};
     return keys;
 }
 

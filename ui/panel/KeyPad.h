@@ -28,6 +28,8 @@ public:
     // The page keys of pages the window has are enabled; the others say they come later.
     void setAvailablePages(const QStringList& ids);
     static const QMap<QString, QString>& pageKeys(); // key name -> page id
+    static const QStringList& mCodeKeys();           // M3 M4 M5 M8 M9 M10 M11 M19: their hook or the M code
+    static const QStringList& userKeys();            // K1-K7: what params 210-216 make of them
 
 protected:
     void changeEvent(QEvent* event) override;

@@ -13,7 +13,8 @@ PanelText::Mode displayedMode(const PanelSnapshot& snapshot, const QString& page
         return PanelText::Mode::Simulate; // 仿真 while the machine itself does nothing
     }
     switch (snapshot.activity) {
-    case Activity::Auto: return PanelText::Mode::Auto;
+    case Activity::Auto:
+    case Activity::Hook: return PanelText::Mode::Auto;
     case Activity::Mdi:
     case Activity::SpindleKey: return PanelText::Mode::Mdi;
     case Activity::Homing: return PanelText::Mode::Home;

@@ -48,6 +48,10 @@ void MachineSession::runMdi(const QStringList& lines, Activity activity) {
 }
 void MachineSession::answerDialog(bool enter) { post([enter](SessionWorker& w) { w.answerDialog(enter); }); }
 void MachineSession::pressExternStart() { post([](SessionWorker& w) { w.pressExternStart(); }); }
+void MachineSession::runHooks(const QVector<HookStep>& steps, Activity activity) {
+    post([steps, activity](SessionWorker& w) { w.runHooks(steps, activity); });
+}
+void MachineSession::userKey(int key) { post([key](SessionWorker& w) { w.userKey(key); }); }
 void MachineSession::home(const QVector<int>& axes) { post([axes](SessionWorker& w) { w.home(axes); }); }
 void MachineSession::zeroAxes(const QVector<int>& axes) { post([axes](SessionWorker& w) { w.zeroAxes(axes); }); }
 void MachineSession::setWorkPosition(int axis, double value) {

@@ -3,6 +3,8 @@
 #include "ui/session/PanelSnapshot.h"
 #include "ui/session/UserAccess.h"
 
+#include "core/config/HookFiles.h"
+
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -50,9 +52,22 @@ public:
     void runMdi(const QStringList& lines, Activity activity = Activity::Mdi);
     void answerDialog(bool enter);
     void pressExternStart();
+    // A key or softkey that has a hook file (core/config/HookFiles.h): each step runs its hook when
+    // the machine folder has one, else its fallback MDI lines (the built-in behaviour), with
+    // `variables` set first either way; the next step starts when one ends without an alarm.
+    struct HookStep {
+        config::Hook hook;
+        std::map<int, double> variables;
+        QStringList fallback;
+    };
+    void runHooks(const QVector<HookStep>& steps, Activity activity);
+    // K1-K7: what params 210-216 make of them (key-N.nc, an output, a panel key).
+    void userKey(int key);
 
     // manual work
-    void home(const QVector<int>& axes); // 回机械原点 (empty: every axis with a home switch)
+    // 回机械原点 (empty: all axes): fndzero.nc / fndX.nc .. when the machine folder has it, else
+    // every axis with a home switch (or the one given) at once
+    void home(const QVector<int>& axes);
     void zeroAxes(const QVector<int>& axes); // 清零: the current position becomes work zero
     void setWorkPosition(int axis, double value); // 坐标管理 / 分中: the current position gets this work coordinate
     void setVariable(int number, double value);   // #50-#499, the offsets #800-#844 ...
@@ -72,7 +87,7 @@ public:
     void setGuideRetrace(bool retrace);
     void feedOverrideKey(int step);    // 0: 100 %, +10 / -10
     void spindleOverrideKey(int step); // 0: 100 %, +10 / -10
-    void spindleKey(int code);         // 3, 4, 5; 0 = SPINDLE (toggle)
+    void spindleKey(int code);         // the M-code keys 3 4 5 8 9 10 11 19 (their hooks); 0 = SPINDLE (toggle)
 
     // IO page and parameters
     void setOutput(int port, int level);

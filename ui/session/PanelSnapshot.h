@@ -17,7 +17,8 @@
 namespace m350::ui {
 
 // What the session is doing on the operator's behalf, for the mode field of the status line.
-enum class Activity { None, Auto, Mdi, Homing, Probe, SpindleKey };
+// Hook: a hook file a key or power-on started (K1-K7, sysstart.nc), which the panel shows as AUTO.
+enum class Activity { None, Auto, Mdi, Homing, Probe, SpindleKey, Hook };
 
 // 加工统计: what the automatic runs of this session took (the counters are params 201/202).
 struct WorkRecord {

@@ -71,7 +71,7 @@ void SessionWorker::begin() {
         lastTickNs_ = 0;
         scheduleTick();
     }
-    publish();
+    powerOn();
 }
 
 void SessionWorker::finish() {
@@ -111,10 +111,10 @@ void SessionWorker::advance(double seconds) {
         workRecord_.total += workRecord_.lastPiece;
         ++workRecord_.finished;
     }
-    if (state != Controller::RunState::Running && state != Controller::RunState::Hold &&
-        activity_ != Activity::Homing) {
+    if (state != Controller::RunState::Running && state != Controller::RunState::Hold) {
         activity_ = Activity::None;
     }
+    continueSteps();
 }
 
 // An alarm enters the system log once, when the run falls into it.
@@ -136,6 +136,8 @@ bool SessionWorker::busy() const {
     return state == Controller::RunState::Running || state == Controller::RunState::Hold;
 }
 
+QString SessionWorker::loadErrors() const { return diagnosticsText(controller_->diagnostics()); }
+
 void SessionWorker::refuse(const QString& why) {
     lastError_ = why;
     publish();
@@ -148,7 +150,7 @@ void SessionWorker::publish() {
     snapshot->programFile = programFile_;
     snapshot->lastError = lastError_;
     snapshot->machineName = machineName_;
-    snapshot->homingPrompt = controller_->needsBootHomingPrompt();
+    snapshot->homingPrompt = controller_->needsBootHomingPrompt() && !busy(); // after sysstart.nc
     snapshot->log = log_->entries();
     snapshot->workRecord = workRecord_;
     snapshot->breakPoints = breakPoints();
@@ -277,6 +279,14 @@ void SessionWorker::pressExternStart() {
 void SessionWorker::home(const QVector<int>& axes) {
     if (busy()) {
         refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
+        return;
+    }
+    // the panel's Go Home runs the machine folder's fndzero.nc / fndX.nc when it has one
+    std::optional<config::Hook> hook =
+        axes.isEmpty() ? std::optional(config::Hook::HomeAll)
+                       : axes.size() == 1 ? config::homeAxisHook(axes.front()) : std::nullopt;
+    if (hook && controller_->hasHook(*hook)) {
+        runHooks({{*hook, {}, {}}}, Activity::Homing);
         return;
     }
     std::vector<int> which(axes.begin(), axes.end());

@@ -27,7 +27,7 @@ public:
     SessionWorker(config::MachineConfig config, MachineSession::Options options);
     ~SessionWorker() override;
 
-    void begin();  // in the worker thread: starts the display clock
+    void begin();  // in the worker thread: starts the display clock, runs sysstart.nc
     void finish(); // in the worker thread: stops it
 
     void start();
@@ -38,7 +38,10 @@ public:
     void runMdi(const QStringList& lines, Activity activity);
     void answerDialog(bool enter);
     void pressExternStart();
+    // SessionWorkerHooks.cpp: the keys and events that run the machine folder's hook files
     void home(const QVector<int>& axes);
+    void runHooks(const QVector<MachineSession::HookStep>& steps, Activity activity);
+    void userKey(int key);
     void zeroAxes(const QVector<int>& axes);
     void setWorkPosition(int axis, double value);
     void setVariable(int number, double value);
@@ -84,10 +87,17 @@ private:
     bool busy() const;
     void noteAlarm();
     void refuse(const QString& why);
+    QString loadErrors() const; // why the controller's last load failed
     bool loadCurrentFile();
     bool saveParameters(const std::map<int, double>& values); // into params.toml; refuses when it cannot
     QVector<double> userVariables(); // #50-#499, NaN for a vacant one
     void startedAt(const char* event, bool started, const std::string& why);
+    void startNextStep();
+    void continueSteps(); // after a frame: the next step of runHooks when one ended well
+    void panelKey(int key, int code);
+    void powerOn();
+    QVector<MachineSession::HookStep> pendingSteps_; // of runHooks, after the one that runs
+    Activity stepsActivity_ = Activity::None;
     void keepBreakPoint();
     BreakPoints breakPoints() const;
     mutable std::optional<std::pair<QString, int>> keptBreak_; // the machine folder's `breakpoint`, read once

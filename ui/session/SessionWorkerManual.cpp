@@ -2,6 +2,8 @@
 // the override and spindle keys, the IO page's output switches and the trainer's input faults.
 #include "ui/session/SessionWorker.h"
 
+#include "ui/session/HookSteps.h"
+
 #include "core/controller/Controller.h"
 
 namespace m350::ui {
@@ -75,13 +77,14 @@ void SessionWorker::spindleOverrideKey(int step) {
     publish();
 }
 
-// The panel's spindle keys run M-codes as MDI lines would (the M350 runs M3.nc for its M3 key).
+// The panel's M-code keys run their hook file (M3.nc ...) when the machine folder has one, else
+// the M code as an MDI line. SPINDLE is M3 or M5.
 void SessionWorker::spindleKey(int code) {
     if (code == 0) {
         bool turning = controller_->spindleDisplay() != machine::SpindleState::Stop;
         code = turning ? 5 : 3;
     }
-    runMdi({QStringLiteral("M%1").arg(code)}, Activity::SpindleKey);
+    runHooks({mCodeKeyStep(code)}, Activity::SpindleKey);
 }
 
 void SessionWorker::setOutput(int port, int level) {
