@@ -8,35 +8,29 @@ ExternalDevices::ExternalDevices(Context context, config::ModbusSlaves slaves)
     : context_(std::move(context)), slaves_(std::move(slaves)) {}
 
 std::optional<std::string> ExternalDevices::openOutput() {
-    if (context_.scan.scanning()) {
-        return std::nullopt;
-    }
     open_ = true;
     opened_ = true;
-    if (context_.trace) {
+    if (context_.trace && !context_.scan.scanning()) {
         context_.trace->externalOutput(context_.time(), "POPEN", {}, context_.source());
     }
     return std::nullopt;
 }
 
 std::optional<std::string> ExternalDevices::closeOutput() {
-    if (context_.scan.scanning()) {
-        return std::nullopt;
-    }
     open_ = false;
-    if (context_.trace) {
+    if (context_.trace && !context_.scan.scanning()) {
         context_.trace->externalOutput(context_.time(), "PCLOS", {}, context_.source());
     }
     return std::nullopt;
 }
 
 std::optional<std::string> ExternalDevices::output(std::string_view statement, std::string_view record) {
-    if (context_.scan.scanning()) {
-        return std::nullopt;
-    }
     if (!open_) {
         return std::string(statement) + " without POPEN: the external output device is closed (open it with POPEN "
                                         "before " + std::string(statement) + ", close it with PCLOS)";
+    }
+    if (context_.scan.scanning()) {
+        return std::nullopt; // sent when the program ran up to here, not again
     }
     received_ += record;
     if (context_.trace) {

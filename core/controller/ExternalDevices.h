@@ -19,8 +19,9 @@ namespace m350::controller {
 //   an alarm, as on the FANUC-compatible controls that document it.
 // - the M350's Modbus RTU slaves (modbus.toml): MSETDATA and MGETDATA read and write their holding
 //   registers in memory, with parameter 279 on; each transfer goes to the trace.
-// While 断点加工 scans the blocks before its start line, output is not sent and a Modbus transfer
-// makes the scan refuse (it is the world outside, which a scan does not reach).
+// While 断点加工 scans the blocks before its start line, POPEN and PCLOS open and close the device
+// (its state, as outputs are scanned) but no record is sent, and a Modbus transfer makes the scan
+// refuse (the slave is the world outside, which a scan does not reach).
 class ExternalDevices : public macro::Peripherals {
 public:
     struct Context {

@@ -115,6 +115,7 @@ bool Controller::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopP
     pendingDialog_.reset();
     sensorWatch_.clear();
     programStop_.clear();
+    devices_.closeOutputDevice(); // the scan opens it again where the program does (POPEN)
     executor_->start(*program_.mainUnit());
     // a new start counts from where the machine stands; a resume from where the paused run began
     const machine::Axes from = pass == 0 || !paused_ ? machine_.position() : paused_->runFrom;
