@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -21,6 +23,12 @@ const std::vector<std::string> kPieces = {
     "G65", "M98", "M99", "P1", "P2", "L3", "X", "Y-", "Z1.5", "F100", "T2", "M3", "M5", "M30", "SIN[", "SQRT[",
     "ATAN[", ",", "1", "0", "2.5", "-1", "(c)", "(", ")", "//", ";", "O1", "O2", "AND", "MOD", "%", "（", " ",
     "1e999", "99999999999999999999", "#99999"};
+
+// A file of this process only: the simulator maps the program it reads, and another test run
+// rewriting a shared temp file under that mapping (other worktrees' ctest) kills it with SIGBUS.
+std::string processTempFile(const std::string& name) {
+    return (std::filesystem::path(testing::TempDir()) / (std::to_string(::getpid()) + "-" + name)).string();
+}
 
 std::string randomProgram(std::mt19937& rng) {
     std::uniform_int_distribution<std::size_t> piece(0, kPieces.size() - 1);
@@ -60,7 +68,7 @@ void runOne(const std::string& text, const gcode::Dialect& dialect, const std::s
 
 TEST(Robustness, RandomProgramsNeverCrashOrHangInEitherDialect) {
     std::mt19937 rng(350);
-    std::string path = (std::filesystem::path(testing::TempDir()) / "robustness.nc").string();
+    std::string path = processTempFile("robustness.nc");
     for (int i = 0; i < 1500; ++i) {
         std::string text = randomProgram(rng);
         runOne(text, gcode::Dialect::m350(), path);
@@ -74,7 +82,7 @@ TEST(Robustness, RandomProgramsNeverCrashOrHangInEitherDialect) {
 TEST(Robustness, ArbitraryBytesAreReportedNotCrashedOn) {
     std::mt19937 rng(7);
     std::uniform_int_distribution<int> byte(0, 255);
-    std::string path = (std::filesystem::path(testing::TempDir()) / "bytes.nc").string();
+    std::string path = processTempFile("bytes.nc");
     for (int i = 0; i < 300; ++i) {
         std::string text;
         for (int n = 0; n < 200; ++n) {
