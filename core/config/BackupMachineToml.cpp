@@ -20,11 +20,6 @@ constexpr double kSetterBelowStart = 20.0;    // a tool of the assumed length tr
 constexpr int kVirtualTools = 20;
 constexpr double kSwitchDistance[] = {100.0, 100.0, 50.0, 30.0, 30.0};
 
-bool hasProgram(const ControllerBackup& backup, const std::string& name) {
-    return std::any_of(backup.programs.begin(), backup.programs.end(),
-                       [&name](const BackupFile& f) { return f.name == name; });
-}
-
 std::string list(const std::vector<double>& values) {
     std::string text = "[";
     for (std::size_t i = 0; i < values.size(); ++i) {
@@ -48,9 +43,9 @@ std::optional<double> storedOffset(const ParameterTable& p, int tool, int capaci
 void libraries(const ControllerBackup& backup, ImportedMachine& out) {
     std::string text = "[libraries]\n";
     for (auto [key, name] : {std::pair{"g", "slib-g.nc"}, std::pair{"m", "slib-m.nc"}}) {
-        if (hasProgram(backup, name)) {
-            text += std::string(key) + " = \"" + name + "\"\n";
-            out.libraries.push_back(name);
+        if (const BackupFile* library = findProgram(backup, name)) {
+            text += std::string(key) + " = \"" + library->name + "\"\n";
+            out.libraries.push_back(library->name);
         } else {
             out.unsupported.push_back(std::string("the backup has no ") + name + ": " +
                                       (key == std::string("g") ? "T (O20000), probing (O502) and the G-code handlers"
@@ -58,9 +53,9 @@ void libraries(const ControllerBackup& backup, ImportedMachine& out) {
                                       " have nothing to run");
         }
     }
-    if (hasProgram(backup, "slibuser.nc")) {
-        text += "# slibuser.nc (G100-G199) is loaded beside slib-g.nc because it is in the folder\n";
-        out.libraries.push_back("slibuser.nc");
+    if (const BackupFile* user = findProgram(backup, "slibuser.nc")) {
+        text += "# " + user->name + " (G100-G199) is loaded beside slib-g.nc because it is in the folder\n";
+        out.libraries.push_back(user->name);
     }
     out.text += text;
 }

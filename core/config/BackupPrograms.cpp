@@ -13,7 +13,8 @@ constexpr std::size_t kRecords = 6;
 constexpr std::size_t kRecordBytes = kMdiBlockBytes / kRecords;
 
 gcode::FileRole libraryRole(const std::string& name) {
-    return name == "slib-m.nc" ? gcode::FileRole::MLibrary : gcode::FileRole::GLibrary; // slib-g.nc, slibuser.nc
+    return sameNameAnyCase(name, "slib-m.nc") ? gcode::FileRole::MLibrary
+                                              : gcode::FileRole::GLibrary; // slib-g.nc, slibuser.nc
 }
 
 // Parses `files` into one program and keeps the syntax errors (the findings that stop a run).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -142,9 +143,23 @@ std::string skipReason(const fs::path& file) {
     return "not used by the simulator";
 }
 
+constexpr const char* kDataFiles[] = {"setting", "default_setting", "coordinate", "mdiblock"};
+
+// `folder`/`name`, or the top-level file with that name in another case.
+fs::path dataFile(const fs::path& folder, const char* name) {
+    if (fs::is_regular_file(folder / name)) {
+        return folder / name;
+    }
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+        if (entry.is_regular_file() && sameNameAnyCase(entry.path().filename().string(), name)) {
+            return entry.path();
+        }
+    }
+    return folder / name;
+}
+
 // Every .nc file (its bytes) and every other file (why it is skipped), in name order.
 void listFiles(const fs::path& folder, ControllerBackup& backup) {
-    static constexpr const char* data[] = {"setting", "default_setting", "coordinate", "mdiblock"};
     for (auto it = fs::recursive_directory_iterator(folder); it != fs::recursive_directory_iterator(); ++it) {
         const fs::directory_entry& entry = *it;
         const std::string name = fs::relative(entry.path(), folder).generic_string();
@@ -159,7 +174,8 @@ void listFiles(const fs::path& folder, ControllerBackup& backup) {
             backup.skipped.push_back({name, "not a regular file"});
             continue;
         }
-        if (std::find(std::begin(data), std::end(data), name) != std::end(data)) {
+        if (std::any_of(std::begin(kDataFiles), std::end(kDataFiles),
+                        [&name](const char* data) { return sameNameAnyCase(name, data); })) {
             continue; // read as data
         }
         if (lowercase(entry.path().extension().string()) == ".nc") {
@@ -175,6 +191,21 @@ void listFiles(const fs::path& folder, ControllerBackup& backup) {
 }
 
 } // namespace
+
+bool sameNameAnyCase(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+const BackupFile* findProgram(const ControllerBackup& backup, std::string_view name) {
+    for (const BackupFile& file : backup.programs) {
+        if (sameNameAnyCase(file.name, name)) {
+            return &file;
+        }
+    }
+    return nullptr;
+}
 
 std::optional<std::string> implausibleValue(double value) {
     if (std::isnan(value)) {
@@ -199,24 +230,24 @@ std::variant<ControllerBackup, BackupError> readControllerBackup(const fs::path&
         if (!fs::is_directory(folder)) {
             fail(folder, "not a folder: a controller backup is the folder that holds `setting`, slib-g.nc ...");
         }
-        if (!fs::is_regular_file(folder / "setting")) {
-            fail(folder / "setting",
-                 "not found: a controller backup (the M350's system disk) holds its parameters in `setting`");
+        const fs::path setting = dataFile(folder, "setting");
+        if (!fs::is_regular_file(setting)) {
+            fail(setting, "not found: a controller backup (the M350's system disk) holds its parameters in `setting`");
         }
-        backup.setting = parameterTable(
-            readTable(folder / "setting", ParameterTable::kCount, "a setting file", parameterName, catalogue));
-        if (fs::is_regular_file(folder / "default_setting")) {
-            backup.defaultSetting = parameterTable(readTable(folder / "default_setting", ParameterTable::kCount,
-                                                             "a setting file", parameterName, catalogue));
+        backup.setting =
+            parameterTable(readTable(setting, ParameterTable::kCount, "a setting file", parameterName, catalogue));
+        if (const fs::path defaults = dataFile(folder, "default_setting"); fs::is_regular_file(defaults)) {
+            backup.defaultSetting = parameterTable(
+                readTable(defaults, ParameterTable::kCount, "a setting file", parameterName, catalogue));
         }
-        if (fs::is_regular_file(folder / "coordinate")) {
+        if (const fs::path coordinate = dataFile(folder, "coordinate"); fs::is_regular_file(coordinate)) {
             std::vector<double> offsets =
-                readTable(folder / "coordinate", kCoordinateCount, "a coordinate file", offsetName, catalogue);
+                readTable(coordinate, kCoordinateCount, "a coordinate file", offsetName, catalogue);
             backup.coordinate.emplace();
             std::copy(offsets.begin(), offsets.end(), backup.coordinate->begin());
         }
-        if (fs::is_regular_file(folder / "mdiblock")) {
-            backup.mdiblock = readBytes(folder / "mdiblock");
+        if (const fs::path mdi = dataFile(folder, "mdiblock"); fs::is_regular_file(mdi)) {
+            backup.mdiblock = readBytes(mdi);
         }
         listFiles(folder, backup);
     } catch (const Failure& f) {

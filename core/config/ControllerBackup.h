@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -18,6 +19,7 @@ namespace m350::config {
 //   default_setting  the factory values, same layout (optional: marks what the owner changed)
 //   coordinate       45 float64 = #800-#844: G92, G54-G59, G52, the common offset, 5 axes each
 //   mdiblock         the six MDI lines, 120 bytes each, NUL-padded (GBK)
+// (each found in any case),
 // and its macros and hook files as .nc text. Everything else (bitmaps, kernel modules, logs,
 // string tables, fonts, the firmware) means nothing to the simulator and is only listed.
 inline constexpr int kCoordinateCount = 45;
@@ -53,6 +55,11 @@ struct BackupError {
 // parameter or offset; nothing else is read then.
 std::variant<ControllerBackup, BackupError> readControllerBackup(const std::filesystem::path& folder,
                                                                  const ParameterCatalogue* catalogue);
+
+// A file of the backup's top folder by its name in any case (a copy through a FAT-formatted USB
+// stick may have changed it: SLIB-G.NC), or nullptr.
+const BackupFile* findProgram(const ControllerBackup& backup, std::string_view name);
+bool sameNameAnyCase(std::string_view a, std::string_view b);
 
 // Why a value read from a float64 table is refused, or nullopt when it is a plausible value.
 std::optional<std::string> implausibleValue(double value);

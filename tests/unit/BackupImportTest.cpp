@@ -102,6 +102,25 @@ TEST_F(BackupImportTest, SlibuserNcLoadsBesideSlibGOnceAndTheHookFilesAreListed)
     EXPECT_THAT(formatImportReport(result), HasSubstr("\n  pause.nc: "));
 }
 
+TEST_F(BackupImportTest, NamesInAnotherCaseAsAFatStickLeavesThemAreFound) {
+    backup_.files["SLIB-G.NC"] = backup_.files["slib-g.nc"];
+    backup_.files.erase("slib-g.nc");
+    backup_.writeTo(dir_ / "SYSDISK");
+    fs::rename(dir_ / "SYSDISK/setting", dir_ / "SYSDISK/SETTING");
+    fs::rename(dir_ / "SYSDISK/coordinate", dir_ / "SYSDISK/COORDINATE");
+    auto result = importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    ASSERT_TRUE(std::holds_alternative<BackupImport>(result)) << std::get<ImportError>(result).message;
+    const BackupImport& r = std::get<BackupImport>(result);
+    EXPECT_EQ(r.libraries[0], "SLIB-G.NC");
+    EXPECT_TRUE(r.offsets);
+    EXPECT_TRUE(std::none_of(r.skipped.begin(), r.skipped.end(),
+                             [](const SkippedFile& f) { return f.name == "SETTING" || f.name == "COORDINATE"; }));
+    MachineConfig machine = load();
+    EXPECT_EQ(machine.parameters.get(129), backup_.setting[129]);
+    EXPECT_EQ(machine.offsets[1][0], backup_.coordinate[5]);
+    EXPECT_EQ(fs::path(machine.libraries[0].path).filename(), "SLIB-G.NC");
+}
+
 TEST_F(BackupImportTest, ParamsTomlNamesEachParameterAndMarksWhatDiffersFromTheFactory) {
     BackupImport result = imported();
     const std::string params = readFile(dir_ / "machine/params.toml");
