@@ -211,6 +211,12 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens, BlockCom
             }
             continue;
         }
+        if (ch == '*' && at(i + 1) == '/' && dialect_.blockComments) {
+            i += 2;
+            column += 2;
+            emit(TokenKind::Invalid, start, startColumn).issue = TokenIssue::StrayCommentEnd;
+            continue;
+        }
         if (ch == '(') {
             while (i < size && text[i] != ')') {
                 step();
@@ -276,6 +282,7 @@ std::string Lexer::issueMessage(const Token& token, std::string_view line) const
     case TokenIssue::UnknownWord: return "unknown word '" + text + "'";
     case TokenIssue::MalformedNumber: return "malformed number '" + text + "'";
     case TokenIssue::UnclosedComment: return "comment '(' is not closed with ')'";
+    case TokenIssue::StrayCommentEnd: return "'*/' closes no '/*' comment";
     case TokenIssue::FullWidth:
         return "full-width '" + text + "' is not G-code (did you mean '" + fullWidthAscii(text) + "'?)";
     case TokenIssue::UnexpectedCharacter: return "unexpected character '" + text + "'";

@@ -24,7 +24,8 @@ enum class Keyword : std::uint8_t {
 // Why a token cannot be used; the message is built from it only when an error is reported.
 // StrayDot is only a note: the token is ignored and the line still runs.
 enum class TokenIssue : std::uint8_t {
-    None, UnknownWord, MalformedNumber, UnclosedComment, FullWidth, UnexpectedCharacter, LowerCaseKeyword, StrayDot
+    None, UnknownWord, MalformedNumber, UnclosedComment, StrayCommentEnd, FullWidth, UnexpectedCharacter,
+    LowerCaseKeyword, StrayDot
 };
 
 inline bool isNote(TokenIssue issue) {

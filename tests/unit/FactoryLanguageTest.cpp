@@ -93,6 +93,12 @@ TEST(FactoryLanguage, AnUnclosedBlockCommentNamesItsOpening) {
     EXPECT_TRUE(hasBlockingError(p.diagnostics));
 }
 
+TEST(FactoryLanguage, ACommentEndWithoutItsStartIsAnError) {
+    Parsed p = parseM350("G1 X1\nM5 */ M9\n");
+    ASSERT_EQ(p.diagnostics.size(), 1u) << listDiagnostics(p.diagnostics);
+    EXPECT_EQ(formatDiagnostic(p.diagnostics[0]), "test.nc:2:4: '*/' closes no '/*' comment");
+}
+
 // The editor's colouring (ui/program/GcodeSyntax) follows the same rules: a `/*` inside ( ) or
 // after ; or // starts nothing, and the first */ closes the comment (they do not nest).
 TEST(FactoryLanguage, BlockCommentsFollowTheOtherCommentsRules) {
