@@ -148,7 +148,11 @@ void BlockParser::parseStatement(Block& block) {
         if (peek().kind != TokenKind::Number || peek().number != std::floor(peek().number)) {
             fail(o, "O must be followed by a whole program number, e.g. O20000");
         }
-        block.programNumber = saturatingInt(next().number);
+        if (peek().number > kMaxLabel) { // would be rounded into another program's number
+            fail(peek(), "O" + source(peek()) + ": program numbers run from 0 to " + std::to_string(kMaxLabel) +
+                             " (8 digits)");
+        }
+        block.programNumber = static_cast<std::int32_t>(next().number);
         skipComments();
         if (peek().kind != TokenKind::End) {
             fail(peek(), "unexpected " + describe(peek()) + " after the program number O" +

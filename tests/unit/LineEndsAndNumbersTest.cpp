@@ -118,6 +118,13 @@ TEST(Labels, BeyondEightDigitsAreRefused) {
     }
 }
 
+TEST(Labels, ProgramNumbersBeyondEightDigitsAreRefused) {
+    Parsed p = support::parse("M98 P1\nM30\nO99999999999\nM99\nO1\nM99", Dialect::m350());
+    ASSERT_EQ(p.diagnostics.size(), 1u) << listDiagnostics(p.diagnostics);
+    EXPECT_EQ(formatDiagnostic(p.diagnostics[0]),
+              "test.nc:3:2: O99999999999: program numbers run from 0 to 99999999 (8 digits)");
+}
+
 TEST(Labels, TheLargestLabelIsExact) {
     auto run = runM350("#1=0\nGOTO 99999999\nN99999998 #1=1\nN99999999 #2=2\nM30\n");
     EXPECT_RUN_OK(run);
