@@ -15,8 +15,12 @@ MachineSession::HookStep goToWorkZeroStep(const QVector<int>& axes) {
     return {config::Hook::GoToWorkZero, {}, lines};
 }
 
-MachineSession::HookStep mCodeKeyStep(int code) {
-    return {config::mCodeKeyHook(code).value_or(config::Hook::M3), {}, {QStringLiteral("M%1").arg(code)}};
+std::optional<MachineSession::HookStep> mCodeKeyStep(int code) {
+    auto hook = config::mCodeKeyHook(code);
+    if (!hook) {
+        return std::nullopt;
+    }
+    return MachineSession::HookStep{*hook, {}, {QStringLiteral("M%1").arg(code)}};
 }
 
 } // namespace m350::ui

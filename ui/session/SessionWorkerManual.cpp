@@ -84,7 +84,11 @@ void SessionWorker::spindleKey(int code) {
         bool turning = controller_->spindleDisplay() != machine::SpindleState::Stop;
         code = turning ? 5 : 3;
     }
-    runHooks({mCodeKeyStep(code)}, Activity::SpindleKey);
+    if (auto step = mCodeKeyStep(code)) {
+        runHooks({*step}, Activity::SpindleKey);
+    } else {
+        runMdi({QStringLiteral("M%1").arg(code)}, Activity::SpindleKey);
+    }
 }
 
 void SessionWorker::setOutput(int port, int level) {
