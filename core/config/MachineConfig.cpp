@@ -4,6 +4,9 @@
 #include "core/config/HookFiles.h"
 #include "core/config/MagazineToml.h"
 #include "core/config/ParameterCatalogue.h"
+#include "core/tools/ToolData.h"
+#include "core/tools/ToolTableFile.h"
+#include "core/tools/ToolTableText.h"
 
 #include <toml++/toml.h>
 
@@ -234,6 +237,40 @@ void loadVariables(const fs::path& folder, MachineConfig& config) {
     }
 }
 
+// tool.tbl: a refused line is a warning (the rest loads). On the M350 the table's Z replaces the
+// tool's parameter; a different non-zero value in params.toml is said.
+void loadToolTable(const fs::path& folder, MachineConfig& config) {
+    fs::path file = folder / tools::kToolTableFileName;
+    if (!fs::exists(file)) {
+        return;
+    }
+    auto read = tools::readToolTableFile(file);
+    if (std::holds_alternative<std::string>(read)) {
+        fail(file, "cannot read the tool table");
+    }
+    tools::ParsedToolTable& parsed = std::get<tools::ParsedToolTable>(read);
+    for (const tools::ToolTableIssue& issue : parsed.issues) {
+        config.warnings.push_back(tools::formatIssue(issue));
+    }
+    const std::vector<tools::ToolTable::Line>& lines = parsed.table.lines();
+    for (std::size_t i = 0; config.dialect->id == gcode::DialectId::M350 && i < lines.size(); ++i) {
+        const std::optional<tools::ToolEntry>& row = lines[i].entry;
+        std::optional<int> parameter = row ? tools::m350ZParameter(row->tool, config.parameters) : std::nullopt;
+        if (!parameter || !row->offsets[tools::kZ]) {
+            continue;
+        }
+        const double inParams = config.parameters.get(*parameter);
+        if (inParams != 0.0 && inParams != *row->offsets[tools::kZ]) {
+            config.warnings.push_back((folder / "params.toml").string() + ": warning: parameter " +
+                                      std::to_string(*parameter) + " (T" + std::to_string(row->tool) + " Z) is " +
+                                      tools::tableNumber(inParams) + " but " + file.string() + ":" +
+                                      std::to_string(i + 1) + " says " + tools::tableNumber(*row->offsets[tools::kZ]) +
+                                      "; the tool table is used");
+        }
+    }
+    config.toolTable = std::move(parsed.table);
+}
+
 } // namespace
 
 std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& folder) {
@@ -251,6 +288,7 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         if (auto wrong = loadModbusSlaves((dir / "modbus.toml").string(), config.modbus)) {
             fail(dir / "modbus.toml", *wrong);
         }
+        loadToolTable(dir, config);
     } catch (const Failure& f) {
         return f.error;
     } catch (const fs::filesystem_error& e) {

@@ -6,6 +6,7 @@
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
 #include "core/machine/SimulatedMachine.h"
+#include "core/tools/ToolTable.h"
 
 #include <array>
 #include <map>
@@ -29,6 +30,8 @@ struct LibraryFile {
 //   params.toml    [params] N = value (parameters 0-999; the rest stay 0)
 //   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
+//   tool.tbl       optional: the tool table in LinuxCNC's format (core/tools/ToolTableFile.h); on the
+//                  M350 its Z column replaces params 930-945 / 973-992 of params.toml
 //   hook files     optional: the M350's fndzero.nc, probe.nc, key-1.nc ... (HookFiles.h); slibuser.nc
 //                  is loaded as a G library beside the listed ones
 //   modbus.toml    optional: the Modbus RTU slaves' holding registers (ModbusSlaves.h)
@@ -58,6 +61,9 @@ struct MachineConfig {
     std::optional<double> floatingSetterTop;
     std::vector<double> toolLengths;
     ModbusSlaves modbus; // modbus.toml
+    // tool.tbl as read (refused lines are in `warnings` with file:line:col); nullopt when the folder
+    // has none: an M350 then starts its table from params 930-945 (tools::ToolData).
+    std::optional<tools::ToolTable> toolTable;
 };
 
 struct ConfigError {

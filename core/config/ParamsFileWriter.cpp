@@ -77,7 +77,8 @@ std::string tomlNumber(double value) {
     return text == "-0" ? "0" : text;
 }
 
-std::string setTomlNumbers(std::string_view text, std::string_view table, const std::map<int, double>& values) {
+std::string setTomlNumbers(std::string_view text, std::string_view table, const std::map<int, double>& values,
+                           bool addMissing) {
     std::vector<std::string> lines = splitLines(text);
     std::map<int, double> missing = values;
     bool inTable = false;
@@ -99,22 +100,27 @@ std::string setTomlNumbers(std::string_view text, std::string_view table, const 
         missing.erase(entry->key);
     }
     std::vector<std::string> added;
+    if (!addMissing) missing.clear();
     for (auto [key, value] : missing) added.push_back(std::to_string(key) + " = " + tomlNumber(value));
-    if (!header) {
+    if (!header && !added.empty()) {
         if (!lines.empty() && !trimmed(lines.back()).empty()) lines.emplace_back();
         lines.push_back("[" + std::string(table) + "]");
         header = lines.size() - 1;
     }
-    std::size_t at = (lastEntry ? *lastEntry : *header) + 1;
-    lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(at), added.begin(), added.end());
+    if (!added.empty()) {
+        std::size_t at = (lastEntry ? *lastEntry : *header) + 1;
+        lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(at), added.begin(), added.end());
+    }
     std::string out;
     for (const std::string& line : lines) out += line + '\n';
     return out;
 }
 
-std::optional<std::string> saveParameters(const fs::path& folder, const std::map<int, double>& values) {
+std::optional<std::string> saveParameters(const fs::path& folder, const std::map<int, double>& values,
+                                          bool addMissing) {
     fs::path file = folder / "params.toml";
     std::string text;
+    if (!addMissing && !fs::exists(file)) return std::nullopt;
     if (fs::exists(file)) {
         std::ifstream in(file, std::ios::binary);
         if (!in) return file.string() + ": cannot read";
@@ -122,7 +128,9 @@ std::optional<std::string> saveParameters(const fs::path& folder, const std::map
         buffer << in.rdbuf();
         text = buffer.str();
     }
-    return writeFileAtomically(file, setTomlNumbers(text, "params", values));
+    std::string updated = setTomlNumbers(text, "params", values, addMissing);
+    if (!addMissing && updated == text) return std::nullopt;
+    return writeFileAtomically(file, updated);
 }
 
 } // namespace m350::config

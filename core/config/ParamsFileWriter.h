@@ -12,7 +12,9 @@ namespace m350::config {
 // kept: comments, blank lines, order, the spacing around `=` and a comment after the value. A key
 // the table lacks is added after its last entry (in ascending order); a missing table is added at
 // the end. Only `N = number` lines are edited (the shape params.toml and variables.toml have).
-std::string setTomlNumbers(std::string_view text, std::string_view table, const std::map<int, double>& values);
+// With `addMissing` false, only keys the table lists change and nothing is added.
+std::string setTomlNumbers(std::string_view text, std::string_view table, const std::map<int, double>& values,
+                           bool addMissing = true);
 
 // A number as the writer puts it in a TOML file: the shortest text that reads back as the same
 // double ("3000", "0.5", "-30", "1e-07").
@@ -20,6 +22,8 @@ std::string tomlNumber(double value);
 
 // Writes `values` into the machine folder's params.toml ([params] N = value) in place and
 // atomically (see writeFileAtomically); creates the file when there is none. nullopt on success.
-std::optional<std::string> saveParameters(const std::filesystem::path& folder, const std::map<int, double>& values);
+// With `addMissing` false only the values the file lists change (no file: nothing is written).
+std::optional<std::string> saveParameters(const std::filesystem::path& folder, const std::map<int, double>& values,
+                                          bool addMissing = true);
 
 } // namespace m350::config

@@ -11,14 +11,16 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace m350::controller {
 
 namespace param = config::param;
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
-    : config_(std::move(config)), settings_(std::move(settings)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? this : nullptr),
-      interp_(*config_.dialect, config_.parameters, offsets_, toolOffsets_, scan_), store_(*config_.dialect, config_.parameters),
+    : config_(std::move(config)), settings_(std::move(settings)),
+      tools_(*config_.dialect, config_.parameters, std::exchange(config_.toolTable, std::nullopt)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? this : nullptr),
+      interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters),
       magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}),
       devices_({config_.parameters, scan_, trace_, [this] { return machine_.time(); }, [this] { return source(); }},
                config_.modbus) {
@@ -37,9 +39,16 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
         interp_.setReferencePoint(number, Eigen::Map<const machine::Axes>(position.data()));
     }
     applySettings();
+    savedToolMark_ = tools_.mark();
 }
 
 Controller::~Controller() = default;
+
+config::MachineConfig Controller::config() const {
+    config::MachineConfig out = config_;
+    out.toolTable = tools_.table();
+    return out;
+}
 
 // The machine's speeds, delays and spindle sensor, from the parameters as they stand.
 void Controller::configureMachine() {

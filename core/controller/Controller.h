@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/config/AtomicFile.h"
 #include "core/config/HookFiles.h"
 #include "core/config/IoPorts.h"
 #include "core/config/MachineConfig.h"
@@ -19,6 +20,7 @@
 #include "core/macro/Executor.h"
 #include "core/macro/MachineAccess.h"
 #include "core/macro/VariableStore.h"
+#include "core/tools/ToolData.h"
 
 #include <array>
 #include <map>
@@ -230,6 +232,27 @@ public:
     std::vector<int> homeableAxes() const;
     static constexpr const char* kBootHomingPrompt = "是否进行开机寻零操作?";
 
+    // The tool table (ToolTableEdits.cpp; one store, see tools::ToolData): on the M350 a tool's Z is
+    // its parameter 930-945 / 973-992, on a FANUC offset n is tool n's row. Edits are refused while
+    // a program runs or holds; `why` says why. A FANUC's active G43 length is not re-read (the next
+    // G43 or H does), as in LinuxCNC.
+    tools::ToolTable toolTable() const { return tools_.table(); }
+    bool putTool(const tools::ToolEntry& entry, std::string* why = nullptr);
+    bool removeTool(int tool, std::string* why = nullptr);
+    bool replaceToolTable(const tools::ToolTable& table, std::string* why = nullptr);
+    // Touch off (LinuxCNC's "Touch Off" to the tool table): with tool n in the spindle and its tip on
+    // a gauge or a cut surface whose work Z is `workZ` (in the program's unit), the tool's Z changes
+    // so that the display reads `workZ` there: on the M350 its parameter 930+ (applied at once), on
+    // a FANUC its row (G10 L10 P n Z`workZ`) followed by G43 H n. Refused with no tool, a tool the
+    // M350 has no Z parameter for, while a program runs or holds or a manual move is under way.
+    bool touchOffTool(double workZ, std::string* why = nullptr);
+    // Writes the table to the machine folder's tool.tbl atomically (and the M350's Z parameters
+    // params.toml already lists, so both files agree; tool.tbl is the one read). nullopt on success.
+    std::optional<std::string> saveToolTable(const config::AtomicWriteHooks& hooks = {});
+    // Whether the tool data changed since the start or the last save (by an edit, G10, a macro
+    // writing #1430 ...): what a panel saves after.
+    bool toolTableChanged() const { return !(tools_.mark() == savedToolMark_); }
+
     // Reads any variable as a macro would, for --print and the panel.
     macro::Value variable(int number);
     const gcode::Dialect& dialect() const { return *config_.dialect; }
@@ -237,7 +260,8 @@ public:
     // started; whether a program ever opened it.
     const std::string& externalOutput() const { return devices_.received(); }
     bool externalOutputOpened() const { return devices_.outputOpened(); }
-    const config::MachineConfig& config() const { return config_; }
+    // The machine's configuration as it stands: parameters, offsets of the folder, the tool table now.
+    config::MachineConfig config() const;
 
     // macro::MachineAccess
     macro::Value readSystem(const macro::VariableInfo& info, int number) override;
@@ -284,7 +308,8 @@ private:
     config::MachineConfig config_;
     RunSettings settings_;
     interp::WorkOffsets offsets_;
-    interp::ToolOffsets toolOffsets_;
+    tools::ToolData tools_; // before interp_, which reads it
+    tools::ToolData::Mark savedToolMark_;
     machine::SimulatedMachine machine_;
     machine::ScanMachine scan_{machine_}; // what the interpreter drives: machine_, or a scan of it
     interp::ModalInterpreter interp_;

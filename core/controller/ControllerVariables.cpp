@@ -74,7 +74,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         default: return Value::empty();
         }
     }
-    case VariableKind::ToolOffset: return Value::of(toolOffsets_.get(info.index));
+    case VariableKind::ToolOffset: return Value::of(tools_.offsetValue(info.index));
     case VariableKind::Alarm:
     case VariableKind::StopMessage: return Value::of(0);
     default: return Value::empty();
@@ -87,7 +87,7 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
     switch (info.kind) {
     case VariableKind::WorkOffset: offsets_.set(info.index >> 3, info.index & 7, value); return std::nullopt;
     case VariableKind::Output: scan_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
-    case VariableKind::ToolOffset: toolOffsets_.set(info.index, value); return std::nullopt;
+    case VariableKind::ToolOffset: return tools_.setOffsetValue(info.index, value);
     case VariableKind::Homed: homed_[static_cast<std::size_t>(info.index)] = value != 0.0 ? 1 : 0; return std::nullopt;
     case VariableKind::MachinePosition: {
         // M350 #880-#884: the axis takes this machine position where it stands, without moving, and

@@ -108,7 +108,7 @@ bool Controller::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopP
     // what a refusal puts back (variables stay as the scanned blocks set them)
     const interp::ModalState modal = interp_.state();
     const interp::WorkOffsets offsets = offsets_;
-    const interp::ToolOffsets tools = toolOffsets_;
+    const tools::ToolTable tools = tools_.table();
     const config::ParameterTable parameters = config_.parameters;
 
     alarm_.reset();
@@ -127,7 +127,7 @@ bool Controller::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopP
         scan_.endScan();
         interp_.state() = modal;
         offsets_ = offsets;
-        toolOffsets_ = tools;
+        tools_.replace(tools);
         config_.parameters = parameters;
         pendingDialog_.reset();
         syncToolLength();

@@ -21,7 +21,7 @@ machine::Axes ModalInterpreter::basePosition() const {
 }
 
 double ModalInterpreter::compensationRadius() const {
-    return toolOffsets_.get(state_.radiusOffset) * axisUnit(0);
+    return tools_.radiusOffset(state_.radiusOffset) * axisUnit(0);
 }
 
 ModalInterpreter::PlaneAxes ModalInterpreter::planeAxes(int planeCode) {

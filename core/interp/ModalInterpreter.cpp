@@ -54,9 +54,9 @@ int groupOf(int code) {
 } // namespace
 
 ModalInterpreter::ModalInterpreter(const gcode::Dialect& dialect, config::ParameterTable& parameters,
-                                   WorkOffsets& offsets, ToolOffsets& toolOffsets,
+                                   WorkOffsets& offsets, tools::ToolData& tools,
                                    machine::MachineInterface& machine)
-    : dialect_(dialect), parameters_(parameters), offsets_(offsets), toolOffsets_(toolOffsets), machine_(machine) {
+    : dialect_(dialect), parameters_(parameters), offsets_(offsets), tools_(tools), machine_(machine) {
     state_.feed = parameters_.get(param::kDefaultFeed);
     state_.spindleSpeed = parameters_.get(param::kDefaultSpindleSpeed); // M3 before any S
 }
@@ -70,25 +70,32 @@ double ModalInterpreter::toolZOffset() const {
     if (dialect_.id != gcode::DialectId::M350) {
         return 0.0;
     }
-    int tool = currentTool();
-    int capacity = saturatingInt(parameters_.get(param::kMagazineCapacity));
-    if (tool >= 1 && tool <= capacity && tool <= param::kToolZOffsetCount) {
-        return parameters_.get(param::kToolZOffsetFirst + tool - 1);
-    }
-    int virtualIndex = tool - capacity;
-    if (tool > capacity && virtualIndex >= 1 && virtualIndex <= param::kVirtualToolZOffsetCount) {
-        return parameters_.get(param::kVirtualToolZOffsetFirst + virtualIndex - 1);
-    }
-    return 0.0;
+    std::optional<int> parameter = tools::m350ZParameter(currentTool(), parameters_);
+    return parameter ? parameters_.get(*parameter) : 0.0;
 }
 
 double ModalInterpreter::toolLengthOffset() const {
     switch (state_.group(8)) {
     // FANUC offset memory holds numbers in the input unit of the moment (G20: inches)
-    case 43: return toolOffsets_.get(state_.lengthOffset) * axisUnit(2);
-    case 44: return -toolOffsets_.get(state_.lengthOffset) * axisUnit(2);
+    case 43: return state_.lengthOffsetValue * axisUnit(2);
+    case 44: return -state_.lengthOffsetValue * axisUnit(2);
     default: return 0.0;
     }
+}
+
+// FANUC reads the offset when G43/G44 or an H word under them is given (parameter EVO = 0), and
+// LinuxCNC when G43 is: changing the offset of the active H moves nothing until then.
+void ModalInterpreter::latchLengthOffset(const Words& words) {
+    const int mode = state_.group(8);
+    if ((mode == 43 || mode == 44) && (words.hasG(43) || words.hasG(44) || words.has('H'))) {
+        state_.lengthOffsetValue = tools_.offsetValue(state_.lengthOffset);
+    }
+}
+
+void ModalInterpreter::applyLengthOffset(int number) {
+    state_.groups[8] = 43;
+    state_.lengthOffset = number;
+    state_.lengthOffsetValue = tools_.offsetValue(number);
 }
 
 int ModalInterpreter::activeSlot() const {
@@ -201,6 +208,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         }
         // 3-6: modal codes and the non-modal ones
         applyGCodes(words);
+        latchLengthOffset(words);
         // 7. motion
         moveAxes(words);
         // 8. stops and program end

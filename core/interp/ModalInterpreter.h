@@ -5,11 +5,11 @@
 #include "core/interp/CutterCompensation.h"
 #include "core/interp/DrillingCycle.h"
 #include "core/interp/ModalState.h"
-#include "core/interp/ToolOffsets.h"
 #include "core/interp/WorkOffsets.h"
 #include "core/machine/ArcGeometry.h"
 #include "core/machine/MachineInterface.h"
 #include "core/macro/BlockSink.h"
+#include "core/tools/ToolData.h"
 
 #include <array>
 #include <map>
@@ -28,11 +28,13 @@ namespace m350::interp {
 //   3. plane, units, distance,      7. motion (G0 G1 G2 G3) with the axis words, or
 //      feed mode, return level,        the active canned cycle (G73 G74 G81-G84) at them
 //      canned cycle                 8. M0, M1, M2, M30
-//   4. (reserved: compensation)
+//   4. cutter compensation (G40-G42), tool length (G43 G44 G49: the H offset is read here),
+//      then G10 with the non-modal codes of 6, so `G43 H1 G10 L10 P1 Z0` applies tool 1's old
+//      length and then changes the table, as LinuxCNC orders it (a second G43 applies the new one)
 class ModalInterpreter : public macro::BlockSink {
 public:
     ModalInterpreter(const gcode::Dialect& dialect, config::ParameterTable& parameters, WorkOffsets& offsets,
-                     ToolOffsets& toolOffsets, machine::MachineInterface& machine);
+                     tools::ToolData& tools, machine::MachineInterface& machine);
 
     // G30 P2/P3 (and G28 on FANUC, point 1) go to these machine positions; G28 on the M350 goes to
     // the position after homing (params 122-126).
@@ -52,8 +54,11 @@ public:
     // The Z offset of the tool in the spindle (M350: params 930-945, virtual tools 973-992).
     double toolZOffset() const;
     int currentTool() const;
-    // FANUC G43/G44 H: + or - the length in tool offset H (0 under G49).
+    // FANUC G43/G44 H: + or - the length of offset H as G43/G44 (or the last H under them) read it;
+    // 0 under G49. A later change of the offset applies from the next G43/G44 or H word.
     double toolLengthOffset() const;
+    // What touch off does after writing the tool's length: G43 H`number`, reading it now.
+    void applyLengthOffset(int number);
     // mm per program unit for an axis: 25.4 under G20 for X Y Z and for a linear 4th/5th axis
     // (params 449/450 = 0); rotary axes (degrees) and G21 values are as written.
     double axisUnit(int axis) const;
@@ -117,6 +122,8 @@ private:
     machine::Axes targetFor(const Words& words, bool machineCoordinates) const;
     void setCoordinateSystem(const Words& words); // G92, G52
     void setOffsets(const Words& words);          // G10
+    void setToolTable(const Words& words, const macro::WordValue& g10, int kind); // G10 L1 / L10 / L11
+    void latchLengthOffset(const Words& words);
     void goToReference(const Words& words, int point);
     void probeMove(const Words& words);
     void moveTo(const machine::Axes& target, const Words& words);
@@ -152,7 +159,7 @@ private:
     const gcode::Dialect& dialect_;
     config::ParameterTable& parameters_;
     WorkOffsets& offsets_;
-    ToolOffsets& toolOffsets_;
+    tools::ToolData& tools_;
     machine::MachineInterface& machine_;
     ModalState state_;
     Words words_;

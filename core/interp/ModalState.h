@@ -14,6 +14,7 @@ struct ModalState {
     double spindleSpeed = 0.0; // S
     int selectedTool = 0;      // T as last commanded
     int lengthOffset = 0;      // H
+    double lengthOffsetValue = 0.0; // offset H as the last G43/G44 (or H under them) read it
     int radiusOffset = 0;      // D
     double lastM = 0.0;
 

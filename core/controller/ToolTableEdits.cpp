@@ -1,0 +1,120 @@
+// The tool table as the panel edits it: rows, an import, touch off, and saving to tool.tbl.
+#include "core/controller/Controller.h"
+
+#include "core/config/ParameterNumbers.h"
+#include "core/config/ParamsFileWriter.h"
+#include "core/tools/ToolTableFile.h"
+
+#include <cmath>
+#include <filesystem>
+
+namespace m350::controller {
+
+namespace {
+
+bool refuse(std::string* why, std::string reason) {
+    if (why) {
+        *why = std::move(reason);
+    }
+    return false;
+}
+
+constexpr const char* kRunning = "a program is running: the tool table changes once it has stopped (RESET)";
+
+} // namespace
+
+bool Controller::putTool(const tools::ToolEntry& entry, std::string* why) {
+    if (state_ == RunState::Running || state_ == RunState::Hold) {
+        return refuse(why, kRunning);
+    }
+    if (auto problem = tools_.put(entry)) {
+        return refuse(why, *problem);
+    }
+    return true;
+}
+
+bool Controller::removeTool(int tool, std::string* why) {
+    if (state_ == RunState::Running || state_ == RunState::Hold) {
+        return refuse(why, kRunning);
+    }
+    if (!tools_.remove(tool)) {
+        return refuse(why, "tool " + std::to_string(tool) + " is not in the tool table");
+    }
+    return true;
+}
+
+bool Controller::replaceToolTable(const tools::ToolTable& table, std::string* why) {
+    if (state_ == RunState::Running || state_ == RunState::Hold) {
+        return refuse(why, kRunning);
+    }
+    for (const tools::ToolEntry& entry : table.entries()) {
+        if (auto problem = tools::invalidEntry(entry)) {
+            return refuse(why, *problem);
+        }
+    }
+    tools_.replace(table);
+    return true;
+}
+
+bool Controller::touchOffTool(double workZ, std::string* why) {
+    if (!std::isfinite(workZ)) {
+        return refuse(why, "touch off: the measured Z is not a finite number");
+    }
+    if (state_ == RunState::Running || state_ == RunState::Hold) {
+        return refuse(why, kRunning);
+    }
+    if (jogging()) {
+        return refuse(why, "touch off: a manual move is under way; wait for the axes to stop");
+    }
+    const int tool = spindleTool();
+    if (tool == 0) {
+        return refuse(why, "touch off sets the length of the tool in the spindle, and it is empty: load a tool first");
+    }
+    const double machineZ = machine_.position()(2);
+    if (config_.dialect->id == gcode::DialectId::M350) {
+        if (!tools::m350ZParameter(tool, config_.parameters)) {
+            return refuse(why, "tool " + std::to_string(tool) +
+                                   " has no Z offset parameter on this M350 (params 930-945 for the magazine's tools, "
+                                   "973-992 for 20 virtual tools above its capacity)");
+        }
+        const double others = interp_.workOffset()(2) - interp_.toolZOffset();
+        if (auto problem = tools_.setZ(tool, machineZ - others - workZ)) {
+            return refuse(why, *problem);
+        }
+        return true;
+    }
+    const double unit = interp_.axisUnit(2);
+    const double others = interp_.workOffset()(2) - interp_.toolLengthOffset();
+    if (auto problem = tools_.setZ(tool, (machineZ - others - workZ * unit) / unit)) {
+        return refuse(why, *problem);
+    }
+    interp_.applyLengthOffset(tool);
+    return true;
+}
+
+std::optional<std::string> Controller::saveToolTable(const config::AtomicWriteHooks& hooks) {
+    if (config_.folder.empty()) {
+        return "this machine has no folder to keep its tool table in";
+    }
+    const std::filesystem::path folder(config_.folder);
+    if (auto error = tools::writeToolTableFile(folder / tools::kToolTableFileName, tools_.table(), hooks)) {
+        return error;
+    }
+    if (config_.dialect->id == gcode::DialectId::M350) {
+        std::map<int, double> zParameters;
+        for (int i = 0; i < config::param::kToolZOffsetCount; ++i) {
+            zParameters[config::param::kToolZOffsetFirst + i] = config_.parameters.get(config::param::kToolZOffsetFirst + i);
+        }
+        for (int i = 0; i < config::param::kVirtualToolZOffsetCount; ++i) {
+            const int number = config::param::kVirtualToolZOffsetFirst + i;
+            zParameters[number] = config_.parameters.get(number);
+        }
+        if (auto error = config::saveParameters(folder, zParameters, false)) {
+            return error;
+        }
+    }
+    savedToolMark_ = tools_.mark();
+    return std::nullopt;
+}
+
+} // namespace m350::controller

@@ -1,0 +1,190 @@
+#include "core/tools/ToolData.h"
+
+#include "core/common/Numeric.h"
+#include "core/config/ParameterNumbers.h"
+
+#include <algorithm>
+
+namespace m350::tools {
+
+namespace param = config::param;
+
+std::optional<int> m350ZParameter(int tool, const config::ParameterTable& parameters) {
+    const int capacity = saturatingInt(parameters.get(param::kMagazineCapacity));
+    if (tool >= 1 && tool <= capacity && tool <= param::kToolZOffsetCount) {
+        return param::kToolZOffsetFirst + tool - 1;
+    }
+    const int virtualIndex = tool - capacity;
+    if (tool > capacity && virtualIndex >= 1 && virtualIndex <= param::kVirtualToolZOffsetCount) {
+        return param::kVirtualToolZOffsetFirst + virtualIndex - 1;
+    }
+    return std::nullopt;
+}
+
+ToolData::ToolData(const gcode::Dialect& dialect, config::ParameterTable& parameters, std::optional<ToolTable> loaded)
+    : dialect_(&dialect), parameters_(&parameters) {
+    if (loaded) {
+        rows_ = std::move(*loaded);
+        for (const ToolEntry& entry : rows_.entries()) {
+            if (auto p = zParameter(entry.tool); p && entry.offsets[kZ]) {
+                parameters_->set(*p, *entry.offsets[kZ]);
+            }
+        }
+        return;
+    }
+    if (m350()) {
+        const int capacity = std::min(saturatingInt(parameters.get(param::kMagazineCapacity)), param::kToolZOffsetCount);
+        for (int tool = 1; tool <= capacity; ++tool) {
+            ToolEntry entry;
+            entry.tool = tool;
+            entry.pocket = tool;
+            entry.offsets[kZ] = parameters.get(param::kToolZOffsetFirst + tool - 1);
+            rows_.put(entry);
+        }
+    }
+}
+
+std::optional<int> ToolData::zParameter(int tool) const {
+    return m350() ? m350ZParameter(tool, *parameters_) : std::nullopt;
+}
+
+std::vector<int> ToolData::toolsWithZParameters() const {
+    std::vector<int> tools;
+    if (!m350()) {
+        return tools;
+    }
+    const int capacity = saturatingInt(parameters_->get(param::kMagazineCapacity));
+    for (int tool = 1; tool <= std::min(capacity, param::kToolZOffsetCount); ++tool) {
+        tools.push_back(tool);
+    }
+    for (int index = 1; index <= param::kVirtualToolZOffsetCount; ++index) {
+        tools.push_back(std::max(capacity, 0) + index);
+    }
+    return tools;
+}
+
+ToolTable ToolData::table() const {
+    ToolTable out = rows_;
+    if (!m350()) {
+        return out;
+    }
+    for (int tool : toolsWithZParameters()) {
+        const double value = parameters_->get(*zParameter(tool));
+        if (const ToolEntry* row = out.find(tool)) {
+            if (row->offsets[kZ] || value != 0.0) {
+                ToolEntry entry = *row;
+                entry.offsets[kZ] = value;
+                out.put(entry); // keeps the row's text when the value is the one it was read with
+            }
+        } else if (value != 0.0) {
+            if (std::optional<int> pocket = out.freePocket(tool)) {
+                ToolEntry entry;
+                entry.tool = tool;
+                entry.pocket = *pocket;
+                entry.offsets[kZ] = value;
+                out.put(entry);
+            }
+        }
+    }
+    return out;
+}
+
+std::optional<ToolEntry> ToolData::find(int tool) const {
+    const ToolEntry* row = rows_.find(tool);
+    std::optional<int> p = zParameter(tool);
+    if (!p) {
+        return row ? std::optional<ToolEntry>(*row) : std::nullopt;
+    }
+    ToolTable whole = table();
+    const ToolEntry* found = whole.find(tool);
+    return found ? std::optional<ToolEntry>(*found) : std::nullopt;
+}
+
+std::optional<std::string> ToolData::put(const ToolEntry& entry) {
+    if (auto why = rows_.put(entry)) {
+        return why;
+    }
+    if (auto p = zParameter(entry.tool)) {
+        parameters_->set(*p, entry.offset(kZ));
+    }
+    ++revision_;
+    return std::nullopt;
+}
+
+bool ToolData::remove(int tool) {
+    if (!rows_.remove(tool)) {
+        return false;
+    }
+    if (auto p = zParameter(tool)) {
+        parameters_->set(*p, 0.0);
+    }
+    ++revision_;
+    return true;
+}
+
+void ToolData::replace(const ToolTable& table) {
+    if (table == this->table()) {
+        return;
+    }
+    rows_ = table;
+    for (int tool : toolsWithZParameters()) {
+        const ToolEntry* row = rows_.find(tool);
+        parameters_->set(*zParameter(tool), row ? row->offset(kZ) : 0.0);
+    }
+    ++revision_;
+}
+
+double ToolData::z(int tool) const {
+    if (auto p = zParameter(tool)) {
+        return parameters_->get(*p);
+    }
+    const ToolEntry* row = rows_.find(tool);
+    return row ? row->offset(kZ) : 0.0;
+}
+
+std::optional<std::string> ToolData::setZ(int tool, double value) {
+    ToolEntry entry;
+    if (const ToolEntry* row = rows_.find(tool)) {
+        entry = *row;
+    } else {
+        std::optional<int> pocket = rows_.freePocket(tool);
+        if (!pocket) {
+            return "the tool table is full (" + std::to_string(ToolTable::kMaxTools) + " tools): no row for tool " +
+                   std::to_string(tool);
+        }
+        entry.tool = tool;
+        entry.pocket = *pocket;
+    }
+    entry.offsets[kZ] = value;
+    return put(entry);
+}
+
+std::optional<std::string> ToolData::setOffsetValue(int number, double value) {
+    if (!rows_.find(number) && value == 0.0) {
+        return std::nullopt; // an offset that is 0 needs no row
+    }
+    return setZ(number, value);
+}
+
+double ToolData::radiusOffset(int number) const {
+    const ToolEntry* row = rows_.find(number);
+    if (!row) {
+        return 0.0;
+    }
+    return row->diameter ? *row->diameter / 2.0 : row->offset(kZ);
+}
+
+ToolData::Mark ToolData::mark() const {
+    Mark out;
+    out.revision = revision_;
+    for (int i = 0; i < param::kToolZOffsetCount; ++i) {
+        out.zParameters[static_cast<std::size_t>(i)] = parameters_->get(param::kToolZOffsetFirst + i);
+    }
+    for (int i = 0; i < param::kVirtualToolZOffsetCount; ++i) {
+        out.zParameters[static_cast<std::size_t>(param::kToolZOffsetCount + i)] =
+            parameters_->get(param::kVirtualToolZOffsetFirst + i);
+    }
+    return out;
+}
+
+} // namespace m350::tools

@@ -1,0 +1,76 @@
+#pragma once
+
+#include "core/config/ParameterTable.h"
+#include "core/gcode/Dialect.h"
+#include "core/tools/ToolTable.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace m350::tools {
+
+// The M350 keeps each tool's Z offset (the machine Z where it touched the setter) in a parameter:
+// T1..T16 in 930-945 (#1430-#1445), the virtual tools above the magazine's capacity (param 801) in
+// 973-992. The parameter of `tool`, or nullopt when the M350 has none for it.
+std::optional<int> m350ZParameter(int tool, const config::ParameterTable& parameters);
+
+// A machine's tool data: its one tool table (tool.tbl), with one store for every value.
+//
+// On the M350 the Z of a tool that has a Z-offset parameter lives in that parameter and nowhere
+// else: table() reads it from there and put()/setZ() write it there, so a macro writing #1430
+// (O502 setting a tool), the Param page writing 930 and an edit of the table are the same change.
+// A tool with such a parameter that is not in the table yet appears in table() once its parameter
+// is not 0. The table's other columns (pocket, D, comment, extras ...) live in the rows.
+//
+// On a FANUC the table also is the offset memory (Memory A, #2001-#2400, G10 L11 P R, H and D):
+// offset number n is tool n's row, as LinuxCNC's G43 Hn and G41 Dn read tool n. Memory A has one
+// value per number: it is the row's Z; D n reads the row's diameter / 2 when the row has a D word
+// (LinuxCNC's radius), else that same value. Writing offset n makes the row when there is none.
+class ToolData {
+public:
+    static constexpr int kOffsetNumbers = 400; // FANUC Memory A: offsets 1-400
+
+    // `loaded`: the folder's tool.tbl, whose Z values then replace the M350's parameters; without
+    // one, an M350 starts from its parameters (rows T1..T16, pocket = tool).
+    ToolData(const gcode::Dialect& dialect, config::ParameterTable& parameters, std::optional<ToolTable> loaded);
+
+    ToolTable table() const;
+    std::optional<ToolEntry> find(int tool) const;
+    // Adds or replaces a row (see ToolTable::put); the reason when refused, nothing changed then.
+    std::optional<std::string> put(const ToolEntry& entry);
+    bool remove(int tool);
+    // The whole table at once (an import, or putting back a saved state): M350 tools it lacks get Z 0.
+    void replace(const ToolTable& table);
+    // A tool's Z (0 when it has none); setZ makes the row (pocket = tool when free) when missing.
+    double z(int tool) const;
+    std::optional<std::string> setZ(int tool, double z);
+
+    // FANUC offset memory over the table.
+    static bool validOffsetNumber(int number) { return number >= 1 && number <= kOffsetNumbers; }
+    double offsetValue(int number) const { return z(number); }
+    std::optional<std::string> setOffsetValue(int number, double value);
+    double radiusOffset(int number) const;
+
+    // Whether anything changed between two marks (edits here, and the M350's Z parameters however
+    // they were written).
+    struct Mark {
+        std::uint64_t revision = 0;
+        std::array<double, 36> zParameters{};
+        bool operator==(const Mark&) const = default;
+    };
+    Mark mark() const;
+
+private:
+    bool m350() const { return dialect_->id == gcode::DialectId::M350; }
+    std::optional<int> zParameter(int tool) const;
+    std::vector<int> toolsWithZParameters() const;
+
+    const gcode::Dialect* dialect_;
+    config::ParameterTable* parameters_;
+    ToolTable rows_; // M350: the Z of a tool with a Z parameter is not read from here
+    std::uint64_t revision_ = 0;
+};
+
+} // namespace m350::tools

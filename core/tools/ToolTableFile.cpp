@@ -1,0 +1,253 @@
+#include "core/tools/ToolTableFile.h"
+
+#include "core/tools/ToolTableText.h"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace m350::tools {
+
+namespace {
+
+bool blank(char c) { return c == ' ' || c == '\t'; }
+
+// The words of one line, checked as they are read. Throws nothing: the first problem ends the line.
+class RowReader {
+public:
+    RowReader(std::string_view line, const std::string& file, int lineNumber)
+        : line_(line), file_(file), lineNumber_(lineNumber) {}
+
+    // The row, or nullopt with `issues` holding why the line is skipped (and any warnings).
+    std::optional<ToolEntry> read(std::vector<ToolTableIssue>& issues) {
+        ToolEntry entry;
+        std::map<char, std::size_t> seen; // letter -> column
+        std::size_t i = 0;
+        while (true) {
+            while (i < line_.size() && blank(line_[i])) ++i;
+            if (i >= line_.size()) {
+                break;
+            }
+            if (line_[i] == ';') {
+                readComment(i + 1, entry, issues);
+                break;
+            }
+            const std::size_t start = i;
+            const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(line_[i])));
+            ++i;
+            while (i < line_.size() && !blank(line_[i]) && line_[i] != ';') ++i;
+            const std::string_view value = line_.substr(start + 1, i - start - 1);
+            if (auto [it, fresh] = seen.emplace(letter, start + 1); !fresh) {
+                return refuse(issues, start, std::string(1, letter) + " is given twice (first at column " +
+                                                 std::to_string(it->second) + ")");
+            }
+            if (auto why = setWord(entry, letter, value)) {
+                return refuse(issues, start, *why);
+            }
+        }
+        if (!seen.count('T') || !seen.count('P')) {
+            return refuse(issues, 0, std::string("a row needs T (the tool number) and P (its pocket)") +
+                                         (seen.count('T') ? ": P is missing" : ": T is missing"));
+        }
+        return entry;
+    }
+
+private:
+    std::optional<ToolEntry> refuse(std::vector<ToolTableIssue>& issues, std::size_t index, std::string why) const {
+        issues.push_back({ToolTableIssue::Severity::Error, file_, lineNumber_, static_cast<int>(index) + 1,
+                          std::move(why)});
+        return std::nullopt;
+    }
+
+    static std::optional<std::string> setWord(ToolEntry& entry, char letter, std::string_view text) {
+        const std::string word = std::string(1, letter) + std::string(text);
+        if (letter == 'T' || letter == 'P' || letter == 'Q') {
+            std::optional<int> n = parseWholeNumber(text);
+            if (!n) {
+                return "'" + word + "': " + std::string(1, letter) + " needs a whole number";
+            }
+            if (letter == 'T') {
+                if (*n < 1) {
+                    return "'" + word + "': tool numbers start at 1 (T0 is the empty spindle)";
+                }
+                entry.tool = *n;
+            } else if (letter == 'P') {
+                if (*n < 0 || *n > ToolTable::kMaxPocket) {
+                    return "'" + word + "': pockets run from 1 to 1000 (0 is the spindle)";
+                }
+                entry.pocket = *n;
+            } else {
+                if (*n < 0 || *n > 9) {
+                    return "'" + word + "': the orientation Q runs from 0 to 9";
+                }
+                entry.orientation = *n;
+            }
+            return std::nullopt;
+        }
+        std::optional<double>* target = nullptr;
+        for (std::size_t axis = 0; axis < kOffsetLetters.size(); ++axis) {
+            if (kOffsetLetters[axis] == letter) {
+                target = &entry.offsets[axis];
+            }
+        }
+        target = letter == 'D' ? &entry.diameter : letter == 'I' ? &entry.frontAngle
+                                               : letter == 'J' ? &entry.backAngle
+                                                               : target;
+        if (!target) {
+            if (!std::isalpha(static_cast<unsigned char>(letter))) {
+                return "'" + word + "' is no word: a row is T.. P.. then X Y Z A B C U V W D I J Q and a ;comment";
+            }
+            return "'" + std::string(1, letter) +
+                   "' is no tool table word (LinuxCNC reads T P X Y Z A B C U V W D I J Q and would skip the "
+                   "row); put maximum rpm, teeth and type in the comment: ;{rpm=24000 teeth=2 type=flat}";
+        }
+        std::optional<double> v = parseTableNumber(text);
+        if (!v) {
+            return "'" + word + "': " + std::string(1, letter) + " needs a number" +
+                   (text.empty() ? " right after the letter" : "");
+        }
+        *target = v;
+        return std::nullopt;
+    }
+
+    void readComment(std::size_t from, ToolEntry& entry, std::vector<ToolTableIssue>& issues) const {
+        CommentParts parts = splitComment(line_.substr(from), static_cast<int>(from) + 1);
+        entry.comment = parts.text;
+        for (const CommentProblem& problem : parts.problems) {
+            issues.push_back({ToolTableIssue::Severity::Warning, file_, lineNumber_, problem.column,
+                              problem.message + " (kept as comment text)"});
+        }
+        if (parts.problems.empty()) {
+            entry.maxRpm = parts.maxRpm;
+            entry.teeth = parts.teeth;
+            entry.type = parts.type;
+        }
+    }
+
+    std::string_view line_;
+    const std::string& file_;
+    int lineNumber_;
+};
+
+bool commentOrBlank(std::string_view line) {
+    std::size_t i = 0;
+    while (i < line.size() && blank(line[i])) ++i;
+    return i == line.size() || line[i] == ';';
+}
+
+} // namespace
+
+std::string formatIssue(const ToolTableIssue& issue) {
+    const bool error = issue.severity == ToolTableIssue::Severity::Error;
+    return issue.file + ":" + std::to_string(issue.line) + ":" + std::to_string(issue.column) +
+           (error ? ": error: " : ": warning: ") + issue.message + (error ? " (line skipped)" : "");
+}
+
+bool ParsedToolTable::skippedLines() const {
+    for (const ToolTableIssue& issue : issues) {
+        if (issue.severity == ToolTableIssue::Severity::Error) {
+            return true;
+        }
+    }
+    return false;
+}
+
+ParsedToolTable parseToolTable(std::string_view text, const std::string& fileName) {
+    ParsedToolTable out;
+    const bool crlf = text.find("\r\n") != std::string_view::npos;
+    out.table.setLineEnd(crlf ? "\r\n" : "\n");
+    out.table.setFinalLineEnd(text.empty() || text.back() == '\n');
+    std::map<int, int> toolLine, pocketLine;
+    int number = 0;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        std::string_view line = text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
+        start = end == std::string_view::npos ? text.size() : end + 1;
+        ++number;
+        if (!line.empty() && line.back() == '\r') {
+            line.remove_suffix(1);
+        }
+        if (commentOrBlank(line)) {
+            out.table.appendText(std::string(line));
+            continue;
+        }
+        std::optional<ToolEntry> entry = RowReader(line, fileName, number).read(out.issues);
+        auto refuse = [&](std::string why) {
+            out.issues.push_back({ToolTableIssue::Severity::Error, fileName, number, 1, std::move(why)});
+            entry.reset();
+        };
+        if (entry && toolLine.count(entry->tool)) {
+            refuse("tool " + std::to_string(entry->tool) + " is already in the table (line " +
+                   std::to_string(toolLine[entry->tool]) + "): tool numbers must be unique");
+        } else if (entry && pocketLine.count(entry->pocket)) {
+            refuse("pocket " + std::to_string(entry->pocket) + " already holds a tool (line " +
+                   std::to_string(pocketLine[entry->pocket]) + "): pocket numbers must be unique");
+        } else if (entry && out.table.size() >= static_cast<std::size_t>(ToolTable::kMaxTools)) {
+            refuse("more than " + std::to_string(ToolTable::kMaxTools) + " tools");
+        }
+        if (!entry) {
+            out.table.appendText(std::string(line));
+            continue;
+        }
+        toolLine[entry->tool] = number;
+        pocketLine[entry->pocket] = number;
+        out.table.appendRow(std::move(*entry), std::string(line));
+    }
+    return out;
+}
+
+std::string formatToolEntry(const ToolEntry& entry) {
+    std::string out = "T" + std::to_string(entry.tool) + " P" + std::to_string(entry.pocket);
+    auto word = [&out](char letter, const std::optional<double>& v) {
+        if (v) {
+            out += ' ';
+            out += letter;
+            out += tableNumber(*v);
+        }
+    };
+    for (std::size_t axis = 0; axis < kOffsetLetters.size(); ++axis) {
+        word(kOffsetLetters[axis], entry.offsets[axis]);
+    }
+    word('D', entry.diameter);
+    word('I', entry.frontAngle);
+    word('J', entry.backAngle);
+    if (entry.orientation) {
+        out += " Q" + std::to_string(*entry.orientation);
+    }
+    const std::string comment = joinComment(entry);
+    if (!comment.empty()) {
+        out += " ;" + comment;
+    }
+    return out;
+}
+
+std::string formatToolTable(const ToolTable& table) {
+    std::string out;
+    const std::vector<ToolTable::Line>& lines = table.lines();
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const ToolTable::Line& line = lines[i];
+        out += line.entry && line.text.empty() ? formatToolEntry(*line.entry) : line.text;
+        if (i + 1 < lines.size() || table.finalLineEnd()) {
+            out += table.lineEnd();
+        }
+    }
+    return out;
+}
+
+std::variant<ParsedToolTable, std::string> readToolTableFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        return path.string() + ": cannot read the tool table";
+    }
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return parseToolTable(bytes.str(), path.string());
+}
+
+std::optional<std::string> writeToolTableFile(const std::filesystem::path& path, const ToolTable& table,
+                                              const config::AtomicWriteHooks& hooks) {
+    return config::writeFileAtomically(path, formatToolTable(table), hooks);
+}
+
+} // namespace m350::tools
