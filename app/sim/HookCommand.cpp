@@ -17,7 +17,8 @@ bool loadForCommand(controller::Controller& controller, const SimOptions& o) {
     case SimOptions::Command::Hook: return controller.loadHook(hookOf(o));
     case SimOptions::Command::Run:
     case SimOptions::Command::Check:
-    case SimOptions::Command::Import: break;
+    case SimOptions::Command::Import:
+    case SimOptions::Command::Tools: break;
     }
     return controller.loadFile(o.program);
 }

@@ -82,6 +82,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--dprnt", o.outputFile,
                         "write what the program sends with POPEN/DPRNT/BPRNT/PCLOS to FILE (default: dprnt.txt "
                         "beside the program; for mdi and hook, in the current folder)");
+        cmd->add_option("--tool-table", o.toolTableFile, "use this tool.tbl instead of the machine folder's");
+        cmd->add_option("--tools-out", o.toolsOut, "write the tool table as the run left it to FILE (tool.tbl format)");
         cmd->add_option("--max-sim-time", o.settings.maxSimTime, "simulated seconds before a runaway stops")
             ->check(positiveFinite);
         cmd->add_option("--sensor-timeout", o.settings.sensorTimeout,
@@ -113,6 +115,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
             },
             "HOOK"));
     addRunOptions(hook);
+    CLI::App* toolsCmd = app.add_subcommand("tools", "list the machine's tool table (tool.tbl) as a run starts with it");
+    addMachineOptions(toolsCmd);
+    toolsCmd->add_option("--tool-table", o.toolTableFile, "read this tool.tbl instead of the machine folder's");
+    toolsCmd->add_flag("--tbl", o.toolsAsTable, "print the table in tool.tbl form instead of JSON");
 
     auto loaded = config::ParameterCatalogue::load(config::ParameterCatalogue::bundledPath());
     const auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded);
@@ -122,6 +128,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                     : mdi->parsed()    ? SimOptions::Command::Mdi
                     : import->parsed() ? SimOptions::Command::Import
                     : hook->parsed()   ? SimOptions::Command::Hook
+                    : toolsCmd->parsed() ? SimOptions::Command::Tools
                                        : SimOptions::Command::Check;
         for (const std::string& p : params) {
             auto [n, v] = splitAssignment(p, "--param");

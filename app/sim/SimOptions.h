@@ -10,7 +10,7 @@ namespace m350::sim {
 
 // The command line of `m350-sim`, parsed and checked.
 struct SimOptions {
-    enum class Command { Run, Mdi, Check, Import, Hook } command = Command::Run;
+    enum class Command { Run, Mdi, Check, Import, Hook, Tools } command = Command::Run;
     std::string program;                 // run / check
     std::vector<std::string> mdiLines;   // mdi
     std::string hookName;                // hook: a name of config/HookFiles.h ("fndzero", "key-3")
@@ -21,6 +21,9 @@ struct SimOptions {
     std::optional<std::string> traceFile;
     std::optional<std::string> outputFile; // --dprnt: where POPEN/DPRNT/BPRNT/PCLOS output goes
     bool home = false;                   // 回零 every axis that has a home switch before the run
+    std::optional<std::string> toolTableFile; // --tool-table: instead of the folder's tool.tbl
+    std::optional<std::string> toolsOut;      // --tools-out: the tool table after the run
+    bool toolsAsTable = false;                // tools --tbl: tool.tbl text instead of JSON
     controller::RunSettings settings;
 };
 

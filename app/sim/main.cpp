@@ -4,6 +4,7 @@
 #include "app/sim/ImportCommand.h"
 #include "app/sim/ReportJson.h"
 #include "app/sim/SimOptions.h"
+#include "app/sim/ToolsCommand.h"
 
 #include "core/config/AtomicFile.h"
 #include "core/config/MachineConfig.h"
@@ -127,6 +128,9 @@ int main(int argc, char** argv) {
     if (o.dialect) {
         machineConfig.dialect = gcode::Dialect::byName(*o.dialect);
     }
+    if (auto error = sim::useToolTableFile(o, machineConfig)) {
+        return fail("file_error", *error, *o.toolTableFile);
+    }
     if (o.command == sim::SimOptions::Command::Run || o.command == sim::SimOptions::Command::Check) {
         std::error_code ec; // a symlink loop or an unreadable folder is an error, not an abort
         if (!std::filesystem::is_regular_file(o.program, ec)) {
@@ -152,6 +156,9 @@ int main(int argc, char** argv) {
     if (o.command == sim::SimOptions::Command::Check) {
         return check(controller, o);
     }
+    if (o.command == sim::SimOptions::Command::Tools) {
+        return sim::listTools(controller, o);
+    }
     std::optional<controller::RunReport> homing = o.home ? sim::homeBeforeRun(controller) : std::nullopt;
     bool ready = !homing && sim::loadForCommand(controller, o);
     controller::RunReport report = homing ? *homing : controller.run();
@@ -163,6 +170,10 @@ int main(int argc, char** argv) {
     if (report.alarm) {
         const Alarm& a = *report.alarm;
         std::cerr << a.file << ':' << a.line << ':' << a.column << ": alarm: " << a.message << '\n';
+    }
+    if (auto error = sim::exportTools(controller, o)) {
+        std::cerr << "m350-sim: --tools-out: " << *error << '\n';
+        report.status = controller::RunStatus::Error;
     }
     std::cout << sim::dump(sim::reportJson(report, controller, o.printVariables)) << '\n';
     if (outputProblem) {
