@@ -134,8 +134,12 @@ Point axesOf(const json& axes) {
 
 SimRun runSim(const fs::path& program, const fs::path& scratch) {
     const fs::path trace = scratch / "trace.jsonl";
-    const std::vector<std::string> args{"run",     program.string(), "--dialect", "fanuc",
-                                        "--trace", trace.string(),   "--param",   kInstantAcceleration};
+    std::vector<std::string> args{"run",     program.string(), "--dialect", "fanuc",
+                                  "--trace", trace.string(),   "--param",   kInstantAcceleration};
+    // NAME.sim.tbl: m350-sim's tool table, for a case whose program writes the table itself
+    if (const fs::path table = fs::path(program).replace_extension(".sim.tbl"); fs::exists(table)) {
+        args.insert(args.end(), {"--tool-table", table.string()});
+    }
     const m350::testing::ProcessResult result =
         m350::testing::runProcess(M350_SIM_PATH, args, scratch.string());
     SimRun run;
