@@ -5,12 +5,14 @@
 #include "app/sim/ReportJson.h"
 #include "app/sim/SimOptions.h"
 #include "app/sim/ToolsCommand.h"
+#include "app/sim/ToolLifeJson.h"
 
 #include "core/config/AtomicFile.h"
 #include "core/config/MachineConfig.h"
 #include "core/config/ParameterNumbers.h"
 #include "core/controller/Controller.h"
 #include "core/macro/VariableMap.h"
+#include "core/tools/ToolLifeFile.h"
 
 #include <filesystem>
 #include <fstream>
@@ -105,6 +107,20 @@ std::optional<std::string> writeExternalOutput(const controller::Controller& con
     return std::nullopt;
 }
 
+// Tool life data the run used or entered (G10 L3) go back into the machine folder's toollife.txt.
+std::optional<std::string> saveToolLife(controller::Controller& controller, const std::string& folder) {
+    if (!controller.toolLife().changed()) {
+        return std::nullopt;
+    }
+    if (auto problem = tools::saveToolLife(folder, controller.toolLife().data())) {
+        std::cerr << "m350-sim: cannot write the tool life data to " << folder << "/" << tools::kToolLifeFile << ": "
+                  << *problem << '\n';
+        return problem;
+    }
+    controller.toolLife().markSaved();
+    return std::nullopt;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -166,6 +182,9 @@ int main(int argc, char** argv) {
         report.status = controller::RunStatus::Error;
     }
     std::optional<std::string> outputProblem = writeExternalOutput(controller, o);
+    if (auto lifeProblem = saveToolLife(controller, folder)) {
+        outputProblem = lifeProblem;
+    }
     printDiagnostics(report.diagnostics);
     if (report.alarm) {
         const Alarm& a = *report.alarm;
@@ -175,7 +194,11 @@ int main(int argc, char** argv) {
         std::cerr << "m350-sim: --tools-out: " << *error << '\n';
         report.status = controller::RunStatus::Error;
     }
-    std::cout << sim::dump(sim::reportJson(report, controller, o.printVariables)) << '\n';
+    nlohmann::json json = sim::reportJson(report, controller, o.printVariables);
+    if (controller.toolLife().enabled()) {
+        json["tool_life"] = sim::toolLifeJson(controller.toolLife());
+    }
+    std::cout << sim::dump(json) << '\n';
     if (outputProblem) {
         return kExitError;
     }

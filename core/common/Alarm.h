@@ -29,6 +29,7 @@ enum class AlarmCode : std::uint8_t {
     SensorTimeout,        // a macro waited longer than the sensor watchdog for an input
     Crash,                // the magazine hardware was hit, a tool dropped: what the real machine would suffer
     DeviceError,          // DPRNT without POPEN, a Modbus slave that does not answer or refuses a register
+    ToolLifeExpired,      // every tool of a tool life group has reached its life
     OperatorReset,
     EmergencyStop,
 };

@@ -1,4 +1,5 @@
 #include "core/config/MachineConfig.h"
+#include "core/tools/ToolLifeFile.h"
 #include "core/common/Numeric.h"
 
 #include "core/config/HookFiles.h"
@@ -289,6 +290,11 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
             fail(dir / "modbus.toml", *wrong);
         }
         loadToolTable(dir, config);
+        auto life = tools::loadToolLife(folder);
+        if (auto* wrong = std::get_if<tools::LifeFileError>(&life)) {
+            return ConfigError{wrong->file + ":" + std::to_string(wrong->line), wrong->message};
+        }
+        config.toolLife = std::move(std::get<tools::LifeData>(life));
     } catch (const Failure& f) {
         return f.error;
     } catch (const fs::filesystem_error& e) {

@@ -7,6 +7,7 @@
 #include "core/gcode/Program.h"
 #include "core/machine/SimulatedMachine.h"
 #include "core/tools/ToolTable.h"
+#include "core/tools/ToolLifeData.h"
 
 #include <array>
 #include <map>
@@ -35,6 +36,7 @@ struct LibraryFile {
 //   hook files     optional: the M350's fndzero.nc, probe.nc, key-1.nc ... (HookFiles.h); slibuser.nc
 //                  is loaded as a G library beside the listed ones
 //   modbus.toml    optional: the Modbus RTU slaves' holding registers (ModbusSlaves.h)
+//   toollife.txt   optional: tool life management groups (core/tools/ToolLifeFile.h)
 struct MachineConfig {
     std::string folder;
     std::string name;
@@ -64,6 +66,7 @@ struct MachineConfig {
     // tool.tbl as read (refused lines are in `warnings` with file:line:col); nullopt when the folder
     // has none: an M350 then starts its table from params 930-945 (tools::ToolData).
     std::optional<tools::ToolTable> toolTable;
+    tools::LifeData toolLife; // toollife.txt
 };
 
 struct ConfigError {

@@ -38,6 +38,10 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     for (const auto& [number, position] : config_.referencePoints) {
         interp_.setReferencePoint(number, Eigen::Map<const machine::Axes>(position.data()));
     }
+    toolLife_.setData(config_.toolLife);
+    if (toolLife_.enabled()) {
+        machine_.setObserver(this); // cutting time counts from the machine's feed events
+    }
     applySettings();
     savedToolMark_ = tools_.mark();
 }
@@ -236,6 +240,7 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
     if (magazine_.device() && state_ != RunState::Alarm && state_ != RunState::EStop) {
         magazine_.onMachineEvent(event);
     }
+    countCuttingTime(event);
 }
 
 void Controller::postMessage(std::string text) {
@@ -309,6 +314,7 @@ bool Controller::start() {
         return false;
     }
     auto unit = program_.mainUnit();
+    toolLife_.startRun();
     displayTime_ = machine_.time();
     runStartedAt_ = displayTime_;
     runStartedFrom_ = machine_.position();

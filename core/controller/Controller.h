@@ -21,6 +21,7 @@
 #include "core/macro/MachineAccess.h"
 #include "core/macro/VariableStore.h"
 #include "core/tools/ToolData.h"
+#include "core/tools/ToolLifeManager.h"
 
 #include <array>
 #include <map>
@@ -263,7 +264,15 @@ public:
     // The machine's configuration as it stands: parameters, offsets of the folder, the tool table now.
     config::MachineConfig config() const;
 
+    // FANUC tool life management (ToolLife.cpp; core/tools/ToolLifeManager.h): groups from the
+    // machine folder's toollife.txt or G10 L3; T<ignore+n> selects group n's tool, M06 (on the M350:
+    // the T word) starts counting, feed moves and arcs of a run count for a minutes group. The
+    // caller writes the data back (tools::saveToolLife) when changed().
+    tools::ToolLifeManager& toolLife() { return toolLife_; }
+    const tools::ToolLifeManager& toolLife() const { return toolLife_; }
+
     // macro::MachineAccess
+    bool manageTools(std::vector<macro::WordValue>& words) override;
     macro::Value readSystem(const macro::VariableInfo& info, int number) override;
     std::optional<std::string> writeSystem(const macro::VariableInfo& info, int number, double value,
                                            std::string_view text) override;
@@ -276,6 +285,7 @@ private:
     void applySettings();
     void configureMachine();
     void syncToolLength();
+    void countCuttingTime(const machine::MachineEvent& event);
     void enterSafeState();
     void stepOnce();
     void raiseAlarm(const Alarm& alarm);
@@ -341,6 +351,7 @@ private:
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     ExternalDevices devices_; // the external output device and the Modbus slaves
+    tools::ToolLifeManager toolLife_;
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 
     // 断点加工 (StartAtLine.cpp): the main block a hold stopped, which pass over it, where it stopped

@@ -26,6 +26,7 @@ void Controller::hold() {
         return;
     }
     remainder_ = machine_.interrupt(displayTime_, false);
+    toolLife_.cutShortAt(machine_.time());
     rememberPause(remainder_);
     const config::ParameterTable& p = config_.parameters;
     if (p.get(param::kStopSpindleOnPause) != 0.0 && machine_.spindleState() != machine::SpindleState::Stop) {
@@ -102,6 +103,7 @@ void Controller::continueRemainder(const machine::SimulatedMachine::Remainder& r
 
 void Controller::reset() {
     machine::SimulatedMachine::Remainder rest = machine_.interrupt(displayTime_, true);
+    toolLife_.cutShortAt(machine_.time());
     if (state_ == RunState::Running) {
         rememberPause(rest); // a run stopped by RESET resumes as a paused one does
     }
@@ -152,6 +154,7 @@ bool Controller::spindleJog(bool on) {
 
 void Controller::emergencyStop() {
     machine_.interrupt(displayTime_, true);
+    toolLife_.cutShortAt(machine_.time());
     if (machine_.time() < displayTime_) {
         machine_.blockTime(displayTime_ - machine_.time());
     }

@@ -28,6 +28,8 @@ struct IoLink {
 // kept so positionAt() can show where the axes were at any moment of it.
 class SimulatedMachine : public MachineInterface {
 public:
+    // The observer is told every event (and plays the PMC); none costs nothing per move.
+    void setObserver(MachineObserver* observer) { observer_ = observer; }
     explicit SimulatedMachine(MachineObserver* observer = nullptr) : observer_(observer) {
         inputChangedAt_.fill(-1e300); // never changed
     }

@@ -141,6 +141,10 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
             evaluated.words.push_back({w.letter, v.number, w.column});
         }
     }
+    if (machine_.manageTools(evaluated.words)) {
+        ++frames_[frameIndex].pc;
+        return;
+    }
     if (!mayCall(evaluated)) {
         sendToSink(evaluated, frameIndex);
         return;

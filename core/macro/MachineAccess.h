@@ -1,12 +1,14 @@
 #pragma once
 
 #include "core/common/Alarm.h"
+#include "core/macro/BlockSink.h"
 #include "core/macro/Value.h"
 #include "core/macro/VariableMap.h"
 
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace m350::macro {
 
@@ -32,6 +34,14 @@ public:
     };
     virtual std::optional<HomingFailure> builtInHoming(int axis) {
         return HomingFailure{AlarmCode::NotHomed, "axis " + std::to_string(axis) + ": this machine cannot home"};
+    }
+
+    // The machine's tool management sees each block's words before the executor takes its calls
+    // out (tool life management: a group's T becomes its tool, H99/D99, the tool change, G10 L3 ..
+    // G11 data). True when it took the whole block; throws MacroError to refuse it.
+    virtual bool manageTools(std::vector<WordValue>& words) {
+        (void)words;
+        return false;
     }
 };
 

@@ -1,0 +1,140 @@
+#include "core/tools/ToolLifeBlocks.h"
+
+#include "core/common/Numeric.h"
+#include "core/macro/MacroError.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace m350::tools {
+
+namespace {
+
+using macro::MacroError;
+using macro::WordValue;
+
+bool isCode(const WordValue& w, char letter, int number) {
+    return w.letter == letter && std::abs(w.value - number) < 1e-9;
+}
+
+const WordValue* find(const std::vector<WordValue>& words, char letter) {
+    auto it = std::find_if(words.begin(), words.end(), [letter](const WordValue& w) { return w.letter == letter; });
+    return it == words.end() ? nullptr : &*it;
+}
+
+int wholeValue(const WordValue& w) {
+    if (std::abs(w.value - std::round(w.value)) > 1e-9) {
+        throw MacroError{AlarmCode::InvalidWord,
+                         std::string(1, w.letter) + ": tool life data are whole numbers", w.column};
+    }
+    return roundToInt(w.value);
+}
+
+void check(const std::optional<std::string>& problem, std::uint32_t column) {
+    if (problem) {
+        throw MacroError{AlarmCode::InvalidWord, *problem, column};
+    }
+}
+
+// One block inside G10 L3 .. G11.
+void entryBlock(ToolLifeManager& manager, const std::vector<WordValue>& words) {
+    std::uint32_t column = words.empty() ? 0 : words.front().column;
+    if (std::any_of(words.begin(), words.end(), [](const WordValue& w) { return isCode(w, 'G', 11); })) {
+        if (words.size() != 1) {
+            throw MacroError{AlarmCode::InvalidWord, "G11 ends the tool life data: give it alone", column};
+        }
+        check(manager.endEntry(), column);
+        return;
+    }
+    ToolLifeManager::EntryLine line;
+    for (const WordValue& w : words) {
+        std::optional<int>* slot = nullptr;
+        switch (w.letter) {
+        case 'P': slot = &line.p; break;
+        case 'L': slot = &line.l; break;
+        case 'Q': slot = &line.q; break;
+        case 'T': slot = &line.t; break;
+        case 'H': slot = &line.h; break;
+        case 'D': slot = &line.d; break;
+        case 'N': continue;
+        default:
+            throw MacroError{AlarmCode::InvalidWord,
+                             std::string(1, w.letter) + ": inside G10 L3 tool life data only P L Q (a group) or "
+                                                        "T H D (a tool) are read; end the data with G11",
+                             w.column};
+        }
+        *slot = wholeValue(w);
+    }
+    check(manager.entryLine(line), column);
+}
+
+} // namespace
+
+bool applyToolLife(ToolLifeManager& manager, std::vector<WordValue>& words, const ToolLifeBlockContext& context) {
+    if (manager.entering()) {
+        entryBlock(manager, words);
+        return true;
+    }
+    bool relevant = false;
+    for (const WordValue& w : words) {
+        relevant |= w.letter == 'T' || w.letter == 'H' || w.letter == 'D' || isCode(w, 'G', 10) ||
+                    isCode(w, 'G', 11) || isCode(w, 'M', 6);
+    }
+    if (!relevant) {
+        return false;
+    }
+    const WordValue* g10 = nullptr;
+    for (const WordValue& w : words) {
+        if (isCode(w, 'G', 10)) {
+            g10 = &w;
+        } else if (isCode(w, 'G', 11)) {
+            throw MacroError{AlarmCode::InvalidWord, "G11 without G10 L3 (tool life data entry)", w.column};
+        }
+    }
+    if (const WordValue* l = find(words, 'L'); g10 && l && isCode(*l, 'L', 3)) {
+        const WordValue* p = find(words, 'P');
+        if (words.size() != (p ? 3u : 2u)) {
+            throw MacroError{AlarmCode::InvalidWord, "G10 L3 [P1|P2] opens tool life data entry: give it alone",
+                             g10->column};
+        }
+        check(manager.beginEntry(p ? wholeValue(*p) : 0), g10->column);
+        return true;
+    }
+    if (!manager.enabled()) {
+        return false;
+    }
+    for (WordValue& w : words) {
+        if (w.letter == 'T') {
+            int t = wholeValue(w);
+            if (!manager.isGroupCommand(t)) {
+                manager.selectOrdinaryTool();
+            } else {
+                ToolLifeManager::Selection chosen = manager.selectGroup(t);
+                if (chosen.refusal) {
+                    throw MacroError{chosen.expired ? AlarmCode::ToolLifeExpired : AlarmCode::InvalidWord,
+                                     *chosen.refusal, w.column};
+                }
+                w.value = chosen.tool;
+            }
+            if (context.tChangesTool) {
+                manager.changeTool(!context.scanning);
+            }
+        }
+    }
+    for (WordValue& w : words) {
+        if ((w.letter == 'H' || w.letter == 'D') && isCode(w, w.letter, 99)) {
+            auto offset = manager.offsetOfToolInUse(w.letter);
+            if (auto* why = std::get_if<std::string>(&offset)) {
+                throw MacroError{AlarmCode::InvalidWord, *why, w.column};
+            }
+            w.value = std::get<int>(offset);
+        }
+    }
+    if (!context.tChangesTool && std::any_of(words.begin(), words.end(), [](const WordValue& w) { return isCode(w, 'M', 6); })) {
+        manager.changeTool(!context.scanning);
+    }
+    return false;
+}
+
+} // namespace m350::tools

@@ -1,0 +1,131 @@
+#include "core/tools/ToolLifeManager.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace m350::tools {
+
+namespace {
+
+constexpr double kUnitSeconds = 4.0; // cutting time counts in 4 s units
+
+std::string usedText(const LifeGroup& g, const LifeTool& t) {
+    return "T" + std::to_string(t.tool) + " " + std::to_string(t.used) + "/" + std::to_string(g.lifeUnits());
+}
+
+} // namespace
+
+void ToolLifeManager::setData(LifeData data) {
+    data_ = std::move(data);
+    changed_ = false;
+    countedTools_.clear();
+    selected_.reset();
+    active_.reset();
+    entry_.reset();
+}
+
+void ToolLifeManager::startRun() {
+    countedTools_.clear();
+    entry_.reset(); // a G10 L3 without G11 enters nothing
+}
+
+const LifeTool* ToolLifeManager::findTool(const InUse& at) const {
+    const LifeGroup* group = data_.group(at.group);
+    if (!group) {
+        return nullptr;
+    }
+    auto it = std::find_if(group->tools.begin(), group->tools.end(), [&](const LifeTool& t) { return t.tool == at.tool; });
+    return it == group->tools.end() ? nullptr : &*it;
+}
+
+LifeTool* ToolLifeManager::findTool(const InUse& at) {
+    return const_cast<LifeTool*>(static_cast<const ToolLifeManager*>(this)->findTool(at));
+}
+
+ToolLifeManager::Selection ToolLifeManager::selectGroup(int t) {
+    const int number = t - data_.ignoreNumber;
+    const LifeGroup* group = data_.group(number);
+    if (!group) {
+        return {0, "T" + std::to_string(t) + ": tool life group " + std::to_string(number) + " is not entered (T" +
+               std::to_string(data_.ignoreNumber) + "+n selects group n; enter groups with G10 L3)", false};
+    }
+    if (auto counted = countedTools_.find(number); counted != countedTools_.end() && group->kind == LifeKind::Count) {
+        selected_ = InUse{number, counted->second}; // counted once this run: the same tool, no new one
+        return {counted->second, std::nullopt, false};
+    }
+    for (const LifeTool& tool : group->tools) {
+        if (!group->expired(tool)) {
+            selected_ = InUse{number, tool.tool};
+            return {tool.tool, std::nullopt, false};
+        }
+    }
+    std::string list;
+    for (const LifeTool& tool : group->tools) {
+        list += (list.empty() ? "" : ", ") + usedText(*group, tool);
+    }
+    return {0, "tool life: every tool of group " + std::to_string(number) + " has reached its life (" + list +
+           (group->kind == LifeKind::Count ? " uses" : " x 4 s") + "); replace the tools and enter the group again", true};
+}
+
+void ToolLifeManager::changeTool(bool count) {
+    active_ = selected_;
+    useSeconds_ = 0.0;
+    lastCutEnd_ = lastCutStart_ = 0.0;
+    if (!active_) {
+        return;
+    }
+    LifeTool* tool = findTool(*active_);
+    const LifeGroup* group = data_.group(active_->group);
+    if (!tool || !group) {
+        active_.reset();
+        return;
+    }
+    usedBefore_ = tool->used;
+    if (count && group->kind == LifeKind::Count && countedTools_.emplace(group->number, tool->tool).second) {
+        ++tool->used;
+        changed_ = true;
+    }
+}
+
+void ToolLifeManager::recount() {
+    LifeTool* tool = active_ ? findTool(*active_) : nullptr;
+    const LifeGroup* group = active_ ? data_.group(active_->group) : nullptr;
+    if (!tool || !group || group->kind != LifeKind::Minutes) {
+        return;
+    }
+    int used = usedBefore_ + static_cast<int>(std::floor(useSeconds_ / kUnitSeconds + 1e-9));
+    if (used != tool->used) {
+        tool->used = used;
+        changed_ = true;
+    }
+}
+
+void ToolLifeManager::cut(double start, double end) {
+    const LifeGroup* group = active_ ? data_.group(active_->group) : nullptr;
+    if (!group || group->kind != LifeKind::Minutes || end <= start) {
+        return;
+    }
+    useSeconds_ += end - start;
+    lastCutStart_ = start;
+    lastCutEnd_ = end;
+    recount();
+}
+
+void ToolLifeManager::cutShortAt(double t) {
+    if (lastCutEnd_ > t) {
+        useSeconds_ = std::max(0.0, useSeconds_ - (lastCutEnd_ - std::max(t, lastCutStart_)));
+        lastCutEnd_ = std::max(t, lastCutStart_);
+        recount();
+    }
+}
+
+std::variant<int, std::string> ToolLifeManager::offsetOfToolInUse(char letter) const {
+    const LifeTool* tool = active_ ? findTool(*active_) : nullptr;
+    if (!tool) {
+        return std::string(1, letter) + "99: no tool of a tool life group is in use (select a group with T" +
+               std::to_string(data_.ignoreNumber + 1) + ".. and change to it first)";
+    }
+    return letter == 'H' ? tool->h : tool->d;
+}
+
+} // namespace m350::tools

@@ -1,0 +1,78 @@
+// m350-sim and tool life management: G10 L3 data written into the machine folder's toollife.txt,
+// uses counted across runs, the run JSON's "tool_life", the expired-group alarm, a bad file.
+#include "tests/cli/CliFixture.h"
+
+namespace m350::clitest {
+
+namespace {
+
+class CliToolLifeTest : public CliTest {
+  protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        fs::copy(fs::path(M350_MACHINES_DIR) / "fanuc-0i", dir_ / "machine", fs::copy_options::recursive);
+    }
+    ProcessResult run(const std::string& program, const std::string& text) {
+        write(program, text);
+        return sim({"run", program, "--config", "machine", "--print", "4120"});
+    }
+    std::string lifeFile() const {
+        std::ifstream in(dir_ / "machine" / "toollife.txt");
+        std::stringstream text;
+        text << in.rdbuf();
+        return text.str();
+    }
+};
+
+} // namespace
+
+TEST_F(CliToolLifeTest, EnteredGroupsPersistAndEachRunCountsItsUse) {
+    ProcessResult entered = run("enter.nc", "G10 L3\nP1 L2 Q1\nT11 H11 D31\nT12 H12 D32\nG11\nM30\n");
+    ASSERT_EQ(entered.exitStatus, kExitOk) << entered.err;
+    EXPECT_NE(lifeFile().find("group 1 life 2 count\ntool 11 h 11 d 31 used 0\ntool 12 h 12 d 32 used 0\n"),
+              std::string::npos)
+        << lifeFile();
+
+    for (int pass = 1; pass <= 3; ++pass) {
+        ProcessResult r = run("cut.nc", "T101 M06\nT101 M06\nM30\n");
+        ASSERT_EQ(r.exitStatus, kExitOk) << r.err;
+        json j = output(r);
+        // T11 serves two runs (life 2), then T12
+        EXPECT_EQ(j["vars"]["4120"], pass <= 2 ? 11.0 : 12.0) << pass;
+        ASSERT_TRUE(j.contains("tool_life"));
+        EXPECT_EQ(j["tool_life"]["in_use"]["tool"], pass <= 2 ? 11 : 12);
+        EXPECT_EQ(j["tool_life"]["groups"][0]["tools"][0]["used"], std::min(pass, 2));
+        EXPECT_EQ(j["tool_life"]["groups"][0]["tools"][0]["expired"], pass >= 2);
+    }
+    EXPECT_NE(lifeFile().find("tool 11 h 11 d 31 used 2\ntool 12 h 12 d 32 used 1\n"), std::string::npos) << lifeFile();
+
+    ProcessResult spent = run("spent.nc", "T101 M06\nM30\n");
+    ASSERT_EQ(spent.exitStatus, kExitOk) << spent.err; // T12's second and last use
+    ProcessResult again = run("again.nc", "G0 X1\nT101 M06\nM30\n");
+    ASSERT_EQ(again.exitStatus, kExitAlarm) << again.err;
+    json j = output(again);
+    EXPECT_EQ(j["alarm"]["code"], "tool_life_expired");
+    EXPECT_EQ(j["alarm"]["line"], 2);
+    EXPECT_NE(again.err.find("again.nc:2:1: alarm: tool life: every tool of group 1 has reached its life"),
+              std::string::npos)
+        << again.err;
+}
+
+TEST_F(CliToolLifeTest, ABadLifeFileStopsWithItsLine) {
+    write("machine/toollife.txt", "gs 0\ngroup 1 life 2 count\ntool 11 h 11 d 31 used 0 extra\n");
+    ProcessResult r = run("p.nc", "M30\n");
+    EXPECT_EQ(r.exitStatus, kExitError);
+    EXPECT_NE(r.err.find("toollife.txt:3: unknown word 'extra'"), std::string::npos) << r.err;
+    EXPECT_EQ(output(r)["alarm"]["code"], "config_error");
+}
+
+TEST_F(CliToolLifeTest, AMachineWithoutGroupsKeepsTheContractAndWritesNothing) {
+    ProcessResult r = run("plain.nc", "T101 M06\nM30\n");
+    ASSERT_EQ(r.exitStatus, kExitOk) << r.err;
+    json j = output(r);
+    expectRunContract(j);
+    EXPECT_EQ(j["vars"]["4120"], 101.0);
+    EXPECT_FALSE(fs::exists(dir_ / "machine" / "toollife.txt"));
+}
+
+} // namespace m350::clitest

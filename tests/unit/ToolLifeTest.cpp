@@ -1,0 +1,243 @@
+// FANUC 0i tool life management through the controller: G10 L3 data entry up to G11, T101 picking
+// the group's first live tool, count life once per run at M06, minutes life in 4 s units of
+// cutting feed only, the whole-group-expired alarm, H99/D99, the toollife.txt file.
+#include "core/tools/ToolLifeFile.h"
+
+#include "RunProgram.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+using namespace m350;
+using namespace m350::test;
+
+tools::LifeGroup group(int number, int life, tools::LifeKind kind, std::vector<tools::LifeTool> list) {
+    tools::LifeGroup g;
+    g.number = number;
+    g.life = life;
+    g.kind = kind;
+    g.tools = std::move(list);
+    return g;
+}
+
+// Group 1: T11 (H11 D31) and T12 (H12 D32), 3 uses each; group 2: T21 (H21 D41), 1 minute.
+config::MachineConfig fanucWithGroups(int usedByT11 = 0) {
+    config::MachineConfig config = fanucMachine();
+    config.toolLife.putGroup(group(1, 3, tools::LifeKind::Count, {{11, 11, 31, usedByT11}, {12, 12, 32, 0}}));
+    config.toolLife.putGroup(group(2, 1, tools::LifeKind::Minutes, {{21, 21, 41, 0}}));
+    return config;
+}
+
+int used(const ProgramRun& run, int groupNumber, int tool) {
+    const tools::LifeGroup* g = run.controller->toolLife().data().group(groupNumber);
+    EXPECT_NE(g, nullptr);
+    for (const tools::LifeTool& t : g ? g->tools : std::vector<tools::LifeTool>{}) {
+        if (t.tool == tool) {
+            return t.used;
+        }
+    }
+    ADD_FAILURE() << "no T" << tool << " in group " << groupNumber;
+    return -1;
+}
+
+TEST(ToolLife, G10L3EntersGroupsAndToolsUpToG11) {
+    ProgramRun run = runFanuc(lines({"G10 L3", "P1 L3 Q1", "T11 H11 D31", "T12 H12 D32", "P2 L1 Q2", "T21 H21",
+                                     "G11", "M30"}));
+    EXPECT_RUN_OK(run);
+    const tools::LifeData& data = run.controller->toolLife().data();
+    ASSERT_EQ(data.groups.size(), 2u);
+    EXPECT_EQ(data.groups[0].kind, tools::LifeKind::Count);
+    EXPECT_EQ(data.groups[0].life, 3);
+    ASSERT_EQ(data.groups[0].tools.size(), 2u);
+    EXPECT_EQ(data.groups[0].tools[1].tool, 12);
+    EXPECT_EQ(data.groups[0].tools[1].h, 12);
+    EXPECT_EQ(data.groups[0].tools[1].d, 32);
+    EXPECT_EQ(data.groups[1].kind, tools::LifeKind::Minutes);
+    EXPECT_EQ(data.groups[1].tools[0].d, 0);
+    EXPECT_TRUE(run.controller->toolLife().changed());
+    // the T words of the data selected nothing
+    EXPECT_EQ(run.number(4120), 0);
+}
+
+TEST(ToolLife, G10L3ReplacesEverythingP1ChangesAGroupP2DeletesOne) {
+    ProgramRun replaced = runProgram(fanucWithGroups(2), lines({"G10 L3", "P3 L5", "T31", "G11", "M30"}));
+    EXPECT_RUN_OK(replaced);
+    ASSERT_EQ(replaced.controller->toolLife().data().groups.size(), 1u);
+    EXPECT_EQ(replaced.controller->toolLife().data().groups[0].number, 3);
+
+    ProgramRun changed = runProgram(fanucWithGroups(2), lines({"G10 L3 P1", "P1 L4", "T13", "T11", "G11", "M30"}));
+    EXPECT_RUN_OK(changed);
+    ASSERT_EQ(changed.controller->toolLife().data().groups.size(), 2u);
+    EXPECT_EQ(used(changed, 1, 11), 2); // a changed group keeps what its tools used
+    EXPECT_EQ(used(changed, 1, 13), 0);
+    EXPECT_EQ(changed.controller->toolLife().data().group(1)->life, 4);
+
+    ProgramRun deleted = runProgram(fanucWithGroups(), lines({"G10 L3 P2", "P2", "G11", "M30"}));
+    EXPECT_RUN_OK(deleted);
+    EXPECT_EQ(deleted.controller->toolLife().data().group(2), nullptr);
+    EXPECT_NE(deleted.controller->toolLife().data().group(1), nullptr);
+}
+
+TEST(ToolLife, BadDataBlocksAlarmAtTheirLine) {
+    ProgramRun beyond = runFanuc(lines({"G10 L3", "P17 L3", "G11", "M30"}));
+    ASSERT_EQ(beyond.report.status, controller::RunStatus::Alarm);
+    EXPECT_EQ(beyond.report.alarm->line, 2u);
+    EXPECT_NE(beyond.report.alarm->message.find("16 groups"), std::string::npos) << beyond.alarmText();
+
+    ProgramRun motion = runFanuc(lines({"G10 L3", "P1 L3", "G1 X10", "G11", "M30"}));
+    ASSERT_EQ(motion.report.status, controller::RunStatus::Alarm);
+    EXPECT_EQ(motion.report.alarm->line, 3u);
+    EXPECT_EQ(motion.controller->toolLife().data().groups.size(), 0u); // nothing entered without G11
+
+    ProgramRun noG10 = runFanuc(lines({"G11", "M30"}));
+    ASSERT_EQ(noG10.report.status, controller::RunStatus::Alarm);
+    EXPECT_NE(noG10.report.alarm->message.find("G11 without G10 L3"), std::string::npos);
+
+    // GS1 = 1: 32 groups of 8 tools
+    config::MachineConfig gs1 = fanucMachine();
+    gs1.toolLife.gs = 1;
+    std::string nine = "G10 L3\nP20 L1\n";
+    for (int t = 1; t <= 9; ++t) {
+        nine += "T" + std::to_string(t) + "\n";
+    }
+    ProgramRun tooMany = runProgram(gs1, nine + "G11\nM30\n");
+    ASSERT_EQ(tooMany.report.status, controller::RunStatus::Alarm);
+    EXPECT_EQ(tooMany.report.alarm->line, 11u);
+    EXPECT_NE(tooMany.report.alarm->message.find("at most 8 tools"), std::string::npos) << tooMany.alarmText();
+}
+
+TEST(ToolLife, T101SelectsTheGroupsFirstLiveToolAndOrdinaryTsStayTools) {
+    ProgramRun run = runProgram(fanucWithGroups(3), lines({"T101 M06", "#100 = #4120", "T7", "M30"}));
+    EXPECT_RUN_OK(run);
+    EXPECT_EQ(run.number(100), 12); // T11 has used its 3 uses
+    EXPECT_EQ(run.number(4120), 7);
+    EXPECT_EQ(used(run, 1, 12), 1);
+
+    ProgramRun unknown = runProgram(fanucWithGroups(), lines({"T105", "M30"}));
+    ASSERT_EQ(unknown.report.status, controller::RunStatus::Alarm);
+    EXPECT_NE(unknown.report.alarm->message.find("group 5 is not entered"), std::string::npos);
+}
+
+TEST(ToolLife, CountLifeCountsOncePerRunAtTheToolChange) {
+    ProgramRun run = runProgram(fanucWithGroups(1),
+                                lines({"T101", "#100 = 0", "M06", "T101 M06", "T102 M06", "T101 M06", "M30"}));
+    EXPECT_RUN_OK(run);
+    EXPECT_EQ(used(run, 1, 11), 2); // once this run, however often group 1 is named
+    EXPECT_EQ(used(run, 1, 12), 0);
+    run.report = run.controller->run(); // the next run counts again
+    EXPECT_RUN_OK(run);
+    EXPECT_EQ(used(run, 1, 11), 3);
+    // T11's life (3) is over: the third run takes T12
+    run.report = run.controller->run();
+    EXPECT_RUN_OK(run);
+    EXPECT_EQ(run.number(4120), 11 + 1);
+    EXPECT_EQ(used(run, 1, 11), 3);
+    EXPECT_EQ(used(run, 1, 12), 1);
+
+    // selecting without M06 counts nothing
+    ProgramRun noChange = runProgram(fanucWithGroups(), lines({"T101", "M30"}));
+    EXPECT_EQ(used(noChange, 1, 11), 0);
+}
+
+TEST(ToolLife, AWholeExpiredGroupIsAnAlarmAtTheTWord) {
+    config::MachineConfig config = fanucWithGroups(3);
+    config.toolLife.group(1)->tools[1].used = 3;
+    ProgramRun run = runProgram(config, lines({"G0 X0", "T101 M06", "M30"}));
+    ASSERT_EQ(run.report.status, controller::RunStatus::Alarm);
+    EXPECT_EQ(run.report.alarm->code, AlarmCode::ToolLifeExpired);
+    EXPECT_EQ(run.report.alarm->line, 2u);
+    EXPECT_EQ(run.report.alarm->column, 1u);
+    EXPECT_EQ(run.report.alarm->message,
+              "tool life: every tool of group 1 has reached its life (T11 3/3, T12 3/3 uses); replace the tools and "
+              "enter the group again");
+}
+
+TEST(ToolLife, MinutesLifeCountsCuttingFeedIn4SecondUnits) {
+    // F600: 100 mm take 10 s, 20 mm 2 s; the rapids and the 30 s dwell do not count
+    ProgramRun run = runProgram(fanucWithGroups(),
+                                lines({"T102 M06", "G1 X100 F600", "G0 X0", "G4 X30", "M30"}));
+    EXPECT_RUN_OK(run);
+    EXPECT_EQ(used(run, 2, 21), 2); // 10 s: two whole units, 2 s not counted
+    ProgramRun more = runProgram(fanucWithGroups(),
+                                 lines({"T102 M06", "G1 X100 F600", "G0 X0", "G1 X20", "M30"}));
+    EXPECT_EQ(used(more, 2, 21), 3); // 12 s
+    // a new use starts from whole units: 3 s under the next M06 is not counted
+    ProgramRun split = runProgram(fanucWithGroups(), lines({"T102 M06", "G1 X30 F600", "T102 M06", "G1 X0", "M30"}));
+    EXPECT_EQ(used(split, 2, 21), 0);
+}
+
+TEST(ToolLife, AMinutesToolPastItsLifeIsSkippedNextTime) {
+    config::MachineConfig config = fanucWithGroups();
+    config.toolLife.group(2)->tools.push_back({22, 22, 42, 0});
+    config.toolLife.group(2)->tools[0].used = 14; // one unit short of 1 minute
+    ProgramRun run = runProgram(config, lines({"T102 M06", "G1 X100 F600", "T102", "#100 = #4120", "M30"}));
+    EXPECT_RUN_OK(run);
+    EXPECT_EQ(used(run, 2, 21), 16);
+    EXPECT_EQ(run.number(100), 22);
+}
+
+TEST(ToolLife, H99AndD99TakeTheToolInUsesOffsets) {
+    ProgramRun run = runProgram(fanucWithGroups(3), lines({"T101 M06", "G43 H99 Z0", "D99", "#100 = #4111",
+                                                           "#101 = #4107", "M30"}));
+    EXPECT_RUN_OK(run);
+    EXPECT_EQ(run.number(100), 12);
+    EXPECT_EQ(run.number(101), 32);
+
+    ProgramRun none = runProgram(fanucWithGroups(), lines({"G43 H99 Z0", "M30"}));
+    ASSERT_EQ(none.report.status, controller::RunStatus::Alarm);
+    EXPECT_NE(none.report.alarm->message.find("H99: no tool of a tool life group is in use"), std::string::npos);
+}
+
+TEST(ToolLife, TheFileRoundTripsAndABadLineIsReportedWithItsLine) {
+    tools::LifeData data = fanucWithGroups(2).toolLife;
+    data.gs = 1;
+    data.ignoreNumber = 200;
+    auto parsed = tools::parseToolLife(tools::formatToolLife(data), "toollife.txt");
+    ASSERT_TRUE(std::holds_alternative<tools::LifeData>(parsed));
+    const tools::LifeData& back = std::get<tools::LifeData>(parsed);
+    EXPECT_EQ(tools::formatToolLife(back), tools::formatToolLife(data));
+    EXPECT_EQ(back.ignoreNumber, 200);
+    EXPECT_EQ(back.group(1)->tools[0].used, 2);
+
+    auto bad = tools::parseToolLife("gs 0\ngroup 1 life 3 count\ntool 11 h 11 d x used 0\n", "m/toollife.txt");
+    ASSERT_TRUE(std::holds_alternative<tools::LifeFileError>(bad));
+    EXPECT_EQ(std::get<tools::LifeFileError>(bad).text(),
+              "m/toollife.txt:3: d must be a whole number from 0 to 999, not 'x'");
+    auto orphan = tools::parseToolLife("tool 11 h 1 d 1 used 0\n", "f");
+    EXPECT_EQ(std::get<tools::LifeFileError>(orphan).line, 1u);
+    auto empty = tools::parseToolLife("; c\ngroup 4 life 3 minutes\n", "f");
+    EXPECT_EQ(std::get<tools::LifeFileError>(empty).text(), "f:2: group 4 has no tools");
+}
+
+TEST(ToolLife, TheMachineFolderLoadsItsLifeFileAndRefusesABadOne) {
+    namespace fs = std::filesystem;
+    fs::path folder = fs::path(::testing::TempDir()) / "m350_toollife_folder";
+    fs::remove_all(folder);
+    fs::copy(config::bundledMachinesDirectory() + "/fanuc-0i", folder);
+    ASSERT_FALSE(tools::saveToolLife(folder.string(), fanucWithGroups(1).toolLife));
+    auto loaded = config::loadMachineFolder(folder.string());
+    ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(loaded));
+    EXPECT_EQ(std::get<config::MachineConfig>(loaded).toolLife.group(1)->tools[0].used, 1);
+
+    std::ofstream(folder / tools::kToolLifeFile) << "group 1 life 3 count\ntool 11 h 1 d 1 used 0\ngroup 1 life 2 count\n";
+    auto refused = config::loadMachineFolder(folder.string());
+    ASSERT_TRUE(std::holds_alternative<config::ConfigError>(refused));
+    EXPECT_EQ(std::get<config::ConfigError>(refused).file, (folder / tools::kToolLifeFile).string() + ":3");
+    EXPECT_EQ(std::get<config::ConfigError>(refused).message, "group 1 is given twice");
+    fs::remove_all(folder);
+}
+
+TEST(ToolLife, OnTheM350TheTWordItselfChangesToTheGroupsTool) {
+    config::MachineConfig config = bundledMachine();
+    config.toolLife.putGroup(group(1, 5, tools::LifeKind::Count, {{3, 0, 0, 5}, {4, 0, 0, 0}}));
+    ProgramRun run = runProgram(config, lines({"T101", "M30"}));
+    EXPECT_RUN_OK(run);
+    EXPECT_EQ(run.controller->parameter(config::param::kCurrentTool), 4);
+    EXPECT_EQ(used(run, 1, 4), 1);
+}
+
+} // namespace
