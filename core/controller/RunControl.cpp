@@ -67,7 +67,12 @@ void Controller::resume() {
         machine_.spindle(spindleBeforeHold_->first, spindleBeforeHold_->second);
         spindleBeforeHold_.reset();
     }
+    const double remainderFrom = machine_.time();
     continueRemainder(remainder_);
+    if (remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Feed ||
+        remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Arc) {
+        toolLife_.cut(remainderFrom, machine_.time()); // the rest of the cut the hold stopped
+    }
     remainder_ = {};
     programStop_.clear();
     state_ = RunState::Running;

@@ -41,7 +41,9 @@ void check(const std::optional<std::string>& problem, std::uint32_t column) {
 void entryBlock(ToolLifeManager& manager, const std::vector<WordValue>& words) {
     std::uint32_t column = words.empty() ? 0 : words.front().column;
     if (std::any_of(words.begin(), words.end(), [](const WordValue& w) { return isCode(w, 'G', 11); })) {
-        if (words.size() != 1) {
+        auto g11OrN = [](const WordValue& w) { return w.letter == 'N' || isCode(w, 'G', 11); };
+        if (!std::all_of(words.begin(), words.end(), g11OrN) ||
+            std::count_if(words.begin(), words.end(), [](const WordValue& w) { return w.letter == 'G'; }) != 1) {
             throw MacroError{AlarmCode::InvalidWord, "G11 ends the tool life data: give it alone", column};
         }
         check(manager.endEntry(), column);
@@ -94,7 +96,8 @@ bool applyToolLife(ToolLifeManager& manager, std::vector<WordValue>& words, cons
     }
     if (const WordValue* l = find(words, 'L'); g10 && l && isCode(*l, 'L', 3)) {
         const WordValue* p = find(words, 'P');
-        if (words.size() != (p ? 3u : 2u)) {
+        auto counted = std::count_if(words.begin(), words.end(), [](const WordValue& w) { return w.letter != 'N'; });
+        if (counted != (p ? 3 : 2)) {
             throw MacroError{AlarmCode::InvalidWord, "G10 L3 [P1|P2] opens tool life data entry: give it alone",
                              g10->column};
         }

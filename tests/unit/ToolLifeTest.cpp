@@ -170,6 +170,24 @@ TEST(ToolLife, MinutesLifeCountsCuttingFeedIn4SecondUnits) {
     EXPECT_EQ(used(split, 2, 21), 0);
 }
 
+TEST(ToolLife, AFeedHoldCountsNeitherTheWaitNorTheCutTwice) {
+    ProgramRun run = loadProgram(fanucWithGroups(), lines({"T102 M06", "G1 X100 F600", "M30"}));
+    ASSERT_TRUE(run.loaded);
+    controller::Controller& c = *run.controller;
+    ASSERT_TRUE(c.start());
+    c.advance(5.0);
+    c.hold(); // half way along the 10 s cut
+    EXPECT_GT(c.displayPosition()(0), 10.0);
+    EXPECT_LT(c.displayPosition()(0), 90.0);
+    c.advance(60.0); // held for a minute: no cutting
+    c.resume();
+    while (c.advance(1.0) == controller::Controller::RunState::Running) {
+    }
+    EXPECT_EQ(c.runState(), controller::Controller::RunState::Finished);
+    const tools::LifeTool& t21 = c.toolLife().data().group(2)->tools[0];
+    EXPECT_EQ(t21.used, 2); // 10 s of cutting in all: 5 s before the hold, 5 s after
+}
+
 TEST(ToolLife, AMinutesToolPastItsLifeIsSkippedNextTime) {
     config::MachineConfig config = fanucWithGroups();
     config.toolLife.group(2)->tools.push_back({22, 22, 42, 0});
