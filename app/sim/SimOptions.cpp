@@ -54,13 +54,49 @@ std::pair<std::string, std::string> splitAssignment(const std::string& text, con
     return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
+// "IN11" (or "in11") -> 11, for the options that name an input.
+int parseInputName(const std::string& name, const std::string& item, const std::string& what, const char* example) {
+    if (name.size() < 3 || (name.rfind("IN", 0) != 0 && name.rfind("in", 0) != 0)) {
+        throw CLI::ValidationError(what, "'" + item + "' must look like " + example);
+    }
+    int port = parseWhole(name.substr(2), what);
+    if (port < 1 || port > 24) {
+        throw CLI::ValidationError(what, "inputs are IN01-IN24");
+    }
+    return port;
+}
+
+// --fault IN12=delayed:0.05 | bouncing:0.02 | stuck:0: what the IO page's fault menu puts on.
+machine::InputFault parseFault(const std::string& item) {
+    auto [port, fault] = splitAssignment(item, "--fault");
+    auto colon = fault.find(':');
+    std::string kind = fault.substr(0, colon);
+    if (colon == std::string::npos || colon + 1 == fault.size()) {
+        throw CLI::ValidationError("--fault", "'" + item + "' must look like IN12=delayed:0.05 (delayed, bouncing or stuck)");
+    }
+    double value = parseNumber(fault.substr(colon + 1), "--fault");
+    if (kind == "stuck") {
+        if (value != 0.0 && value != 1.0) {
+            throw CLI::ValidationError("--fault", "'" + item + "': a stuck input reads 0 or 1");
+        }
+        return machine::InputFault::stuck(static_cast<int>(value));
+    }
+    if (kind != "delayed" && kind != "bouncing") {
+        throw CLI::ValidationError("--fault", "'" + kind + "' is no fault: delayed, bouncing or stuck");
+    }
+    if (value <= 0.0) {
+        throw CLI::ValidationError("--fault", "'" + item + "': the seconds must be above 0");
+    }
+    return kind == "delayed" ? machine::InputFault::delayed(value) : machine::InputFault::bouncing(value);
+}
+
 } // namespace
 
 ParseOutcome parseCommandLine(int argc, char** argv) {
     SimOptions o;
     CLI::App app{"m350-sim: runs M350 / FANUC macro programs on a simulated machine, headless"};
     app.require_subcommand(1);
-    std::vector<std::string> params, vars, inputs;
+    std::vector<std::string> params, vars, inputs, faults;
     std::string printList;
     bool unhomed = false;
     std::optional<int> tool;
@@ -74,6 +110,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--param", params, "set parameter N to V (N=V), repeatable");
         cmd->add_option("--var", vars, "set variable #N to V before the run (N=V), repeatable");
         cmd->add_option("--input", inputs, "hold input INnn at 0 or 1 for the whole run (IN11=0), repeatable");
+        cmd->add_option("--fault", faults,
+                        "a fault on input INnn for the whole run: IN12=delayed:SECONDS, bouncing:SECONDS or stuck:LEVEL, "
+                        "repeatable");
         cmd->add_flag("--unhomed", unhomed, "start with no axis homed");
         cmd->add_flag("--home", o.home, "home (回零) every axis that has a home switch before the run");
         cmd->add_option("--tool", tool, "tool in the spindle at start");
@@ -150,15 +189,16 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         }
         for (const std::string& p : inputs) {
             auto [port, level] = splitAssignment(p, "--input");
-            if (port.size() < 3 || (port.rfind("IN", 0) != 0 && port.rfind("in", 0) != 0)) {
-                throw CLI::ValidationError("--input", "'" + p + "' must look like IN11=0");
-            }
-            int k = parseWhole(port.substr(2), "--input");
+            int k = parseInputName(port, p, "--input", "IN11=0");
             int l = parseWhole(level, "--input");
-            if (k < 1 || k > 24 || (l != 0 && l != 1)) {
+            if (l != 0 && l != 1) {
                 throw CLI::ValidationError("--input", "inputs are IN01-IN24 and levels 0 or 1");
             }
             o.settings.heldInputs[k] = l;
+        }
+        for (const std::string& f : faults) {
+            o.settings.inputFaults[parseInputName(splitAssignment(f, "--fault").first, f, "--fault", "IN12=delayed:0.05")] =
+                parseFault(f);
         }
         std::size_t start = 0;
         while (!printList.empty() && start <= printList.size()) {

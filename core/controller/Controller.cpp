@@ -101,6 +101,9 @@ void Controller::applySettings() {
     for (auto [port, level] : settings_.heldInputs) {
         machine_.forceInput(port, level);
     }
+    for (const auto& [port, fault] : settings_.inputFaults) {
+        machine_.setInputFault(port, fault);
+    }
     if (settings_.tool) {
         if (config_.dialect->id == gcode::DialectId::M350) {
             config_.parameters.set(param::kCurrentTool, *settings_.tool);

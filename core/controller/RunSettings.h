@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/machine/InputFault.h"
+
 #include <map>
 #include <optional>
 #include <ostream>
@@ -24,6 +26,7 @@ struct RunSettings {
     bool operatorPresent = false;
     std::optional<int> tool;    // tool in the spindle at start
     std::map<int, int> heldInputs;     // port -> level for the whole run
+    std::map<int, machine::InputFault> inputFaults; // port -> a fault for the whole run (a late setter signal)
     std::map<int, double> parameters;  // overrides of the machine folder's parameters
     std::map<int, double> variables;   // set before the run starts
     std::ostream* trace = nullptr;     // JSON Lines events

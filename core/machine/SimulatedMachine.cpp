@@ -268,48 +268,4 @@ void SimulatedMachine::coolant(bool on) {
     notify(event);
 }
 
-bool SimulatedMachine::setterPressed(const ToolSetter& setter, const Axes& at) const {
-    double dx = at(0) - setter.x;
-    double dy = at(1) - setter.y;
-    bool under = &setter == &floatingSetter_ || dx * dx + dy * dy <= setter.radius * setter.radius;
-    return setter.port != 0 && under && at(2) <= setter.top + toolLength_ + 1e-9;
-}
-
-// The setter whose switch is wired to `port`, if any.
-const ToolSetter* SimulatedMachine::setterOn(int port) const {
-    for (const ToolSetter* setter : {&setter_, &floatingSetter_}) {
-        if (setter->port != 0 && setter->port == port) {
-            return setter;
-        }
-    }
-    return nullptr;
-}
-
-// The signal can come from the setter (where the tip meets its top) or be there from the start.
-ProbeResult SimulatedMachine::probe(const Axes& target, double feed, int port, int level) {
-    ProbeResult result;
-    if (input(port) == level) {
-        result.triggered = true;
-        result.position = position_;
-        return result;
-    }
-    Axes stop = target;
-    const ToolSetter* setter = setterOn(port);
-    if (setter && level == setter->activeLevel && setterPressed(*setter, target)) {
-        // the first point of the straight move inside the setter's reach: where Z crosses the trip
-        // height, provided the tool is over the setter there
-        double contact = setter->top + toolLength_;
-        double dz = target(2) - position_(2);
-        double fraction = dz < 0 ? std::clamp((contact - position_(2)) / dz, 0.0, 1.0) : 0.0;
-        Axes at = position_ + (target - position_) * fraction;
-        if (setterPressed(*setter, at)) {
-            stop = at;
-            result.triggered = true;
-        }
-    }
-    feed == 0.0 ? rapid(stop) : this->feed(stop, feed);
-    result.position = position_;
-    return result;
-}
-
 } // namespace m350::machine

@@ -207,6 +207,7 @@ private:
     ToolSetter floatingSetter_; // its radius does not matter: it lies under the tool wherever it is
     double toolLength_ = 0.0;
     bool setterPressed(const ToolSetter& setter, const Axes& at) const;
+    std::optional<double> setterCrossing(const ToolSetter& setter, const Axes& target, int level) const;
     const ToolSetter* setterOn(int port) const;
     SpindleState spindle_ = SpindleState::Stop;
     double rpm_ = 0.0;

@@ -42,6 +42,9 @@ VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable +
         // #1970-#1989 the tools of a multi-tool setting (0 = none), #1993 1 while it runs
         add(1970, 1989, K::System);
         add(1993, 1993, K::System);
+        // a simulator extra: FANUC's macro alarm, so our tool-setting macros stop a run with an
+        // alarm where the firmware's only leave a message (the M350 has no variable above #2999)
+        add(3000, 3000, K::Alarm);
     } else {
         add(0, 0, K::Null, true);
         add(1, 33, K::Local);

@@ -337,6 +337,17 @@ TEST(ExecutorFanuc, Alarm3000StopsWithTheText) {
     EXPECT_TRUE(run.vacant(101));
 }
 
+TEST(ExecutorM350, Alarm3000StopsWithTheTextToo) {
+    // a simulator extra on the M350 (its firmware has no #3000): our tool-setting macros use it
+    auto run = runM350(lines({"#100 = 1", "#3000=4(固定对刀仪无效!)", "#101 = 1", "M30"}));
+    EXPECT_EQ(run.report.status, RunStatus::Alarm);
+    ASSERT_TRUE(run.report.alarm);
+    EXPECT_EQ(run.report.alarm->code, AlarmCode::MacroAlarm);
+    EXPECT_EQ(run.report.alarm->message, "macro alarm 3004: 固定对刀仪无效!");
+    EXPECT_EQ(run.report.alarm->line, 2u);
+    EXPECT_EQ(run.number(101), 0.0);
+}
+
 TEST(ExecutorFanuc, ModalGroupVariablesFollowTheModalState) {
     auto run = runFanuc(lines({
         "#101 = #4001", "#103 = #4003", "#106 = #4006",

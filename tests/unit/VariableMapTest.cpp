@@ -120,9 +120,16 @@ TEST(VariableMapM350, SystemMessagesAndIo) {
 
 TEST(VariableMapM350, UndefinedNumbers) {
     VariableMap map(Dialect::m350());
-    for (int n : {-1, 3000, 4001, 5021, 9999, 10000, 123456}) {
+    for (int n : {-1, 3001, 4001, 5021, 9999, 10000, 123456}) {
         EXPECT_EQ(map.describe(n).kind, K::Undefined) << "#" << n;
     }
+}
+
+// A simulator extra: FANUC's #3000 macro alarm, which our tool-setting macros raise.
+TEST(VariableMapM350, Variable3000IsTheMacroAlarm) {
+    VariableMap map(Dialect::m350());
+    EXPECT_EQ(map.describe(3000).kind, K::Alarm);
+    EXPECT_FALSE(map.describe(3000).readOnly);
 }
 
 TEST(VariableMapM350, DescribeText) {
@@ -135,7 +142,8 @@ TEST(VariableMapM350, DescribeText) {
     EXPECT_EQ(map.describeText(1), "#1 (local)");
     EXPECT_EQ(map.describeText(880), "#880 (machine position)");
     EXPECT_EQ(map.describeText(805), "#805 (work offset)");
-    EXPECT_EQ(map.describeText(3000), "#3000 (undefined)");
+    EXPECT_EQ(map.describeText(3000), "#3000 (alarm)");
+    EXPECT_EQ(map.describeText(3001), "#3001 (undefined)");
 }
 
 // ---------------------------------------------------------------- FANUC
