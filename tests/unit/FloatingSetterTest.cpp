@@ -1,7 +1,7 @@
 // 浮动对刀 on the default machine: a block of param 129's thickness lies on the work ([floating_setter]
 // top); O502 with #1502 = 0 probes it from where the tool stands and sets the active work system's
 // Z so that work Z 0 lies the thickness below the trip height.
-#include "RunProgram.h"
+#include "ToolSettingSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -67,22 +67,19 @@ TEST(FloatingSetter, TheActiveSystemAThinnerBlockAndAnotherToolAgree) {
     EXPECT_NEAR(r.report.machine(2) - length(cfg, 3), top - 5, 1e-9);
 }
 
-TEST(FloatingSetter, SwitchedOffByParam128TheMacroSaysSo) {
+TEST(FloatingSetter, SwitchedOffByParam128IsAnAlarm) {
     auto cfg = bundledMachine();
     cfg.parameters.set(128, 0);
     ProgramRun r = runProgram(cfg, lines({"G53 Z-40", "#1502 = 0", "M98 P502", "M30"}));
-    EXPECT_RUN_OK(r);
-    EXPECT_EQ(r.report.messages.back(), "浮动对刀仪无效! the floating setter is not valid: param 128");
+    expectMacroAlarm(r, 4, "浮动对刀仪无效! the floating setter is switched off: param 128");
     EXPECT_NEAR(r.number(807), -12.5, 1e-9);
 }
 
-TEST(FloatingSetter, WithoutTheInputTheMacroSaysSo) {
+TEST(FloatingSetter, WithoutTheInputIsAnAlarm) {
     auto cfg = bundledMachine();
     cfg.parameters.set(579, 0);
     ProgramRun r = runProgram(cfg, lines({"G53 Z-40", "#1502 = 0", "M98 P502", "M30"}));
-    EXPECT_RUN_OK(r);
-    EXPECT_EQ(r.report.messages.back(),
-              "浮动对刀信号未设置! the floating setter input, params 578-580, is not set");
+    expectMacroAlarm(r, 5, "浮动对刀信号未设置! the floating setter input, params 578-580, is not set");
 }
 
 TEST(FloatingSetter, AMachineWithoutTheBlockNeverTrips) {

@@ -43,5 +43,8 @@ M302
 M153                                //slide in: the fork leaves the tool
 M304
 G53 Z#1306 F#1312
-#1503 = 1000
+IF [#1305 == 0] + [#1300 == 0] GOTO6  //param 805: set the new tool on the fixed setter
+#1502 = 2
+M98 P502
+N6 #1503 = 1000
 N4 M99

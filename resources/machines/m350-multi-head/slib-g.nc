@@ -22,5 +22,8 @@ IF #1 == 0 GOTO5                    //T0: every head stays up
 M[168+[#1-1]*2]                     //the head asked for, down
 G04 P#1314
 N5 #1300 = #1                       //work Z uses its offset
-#1503 = 1000
+IF [#1305 == 0] + [#1300 == 0] GOTO6  //param 805: set the new tool on the fixed setter
+#1502 = 2
+M98 P502
+N6 #1503 = 1000
 N4 M99

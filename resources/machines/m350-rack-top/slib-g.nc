@@ -35,6 +35,9 @@ G04 P200
 M302                                //wait: clamped
 G53 Z#1306 F#1312                   //up with the new tool
 #1300 = #1                          //the current tool: work Z uses its offset
-#1503 = 1000
+IF [#1305 == 0] + [#1300 == 0] GOTO6  //param 805: set the new tool on the fixed setter
+#1502 = 2
+M98 P502
+N6 #1503 = 1000
 M99
 N4 M99

@@ -37,7 +37,10 @@ G04 P#1314
 M302
 G53 Z#1306 F#1312                   //up with the new tool
 N5 #1300 = #1                       //the current tool: work Z uses its offset
-IF #1315 == 0 GOTO7                 //param 815: back to where the change began
+IF [#1305 == 0] + [#1300 == 0] GOTO6  //param 805: set the new tool on the fixed setter
+#1502 = 2
+M98 P502
+N6 IF #1315 == 0 GOTO7                 //param 815: back to where the change began
 G53 X#2 Y#3 F#1311
 N7 #1503 = 1000
 N4 M99
