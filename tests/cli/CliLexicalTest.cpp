@@ -47,8 +47,13 @@ class CliLexicalTest : public CliTest {
         fs::copy(fs::path(M350_MACHINES_DIR) / "m350-linear16", machine, fs::copy_options::recursive);
         std::ifstream in(machine / "machine.toml");
         std::string toml((std::istreambuf_iterator<char>(in)), {});
-        const std::string key = "[libraries]\n";
-        toml.insert(toml.find(key) + key.size(), "other = [\"slib-demo.nc\"]\n");
+        const std::string other = "other = [";
+        if (auto at = toml.find(other); at != std::string::npos) {
+            toml.insert(at + other.size(), "\"slib-demo.nc\", ");
+        } else {
+            const std::string key = "[libraries]\n";
+            toml.insert(toml.find(key) + key.size(), other + "\"slib-demo.nc\"]\n");
+        }
         write("machine/machine.toml", toml);
         write("machine/slib-demo.nc", kDemoLibrary);
         return machine.string();

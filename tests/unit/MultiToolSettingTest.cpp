@@ -44,15 +44,27 @@ TEST(MultiToolSetting, EveryListedToolIsSetAndTheOthersAreLeft) {
     EXPECT_EQ(r.pockets.at(1), 1); // T1 went home first
 }
 
-TEST(MultiToolSetting, Flag1993IsOnWhileTheBatchRuns) {
+TEST(MultiToolSetting, Flag1993IsOnWhileTheBatchChangesATool) {
     controller::RunSettings settings;
     settings.variables = {{1970, 3}};
     controller::Controller c(bundledMachine(), settings);
     ASSERT_TRUE(c.loadMdi({"M98 P505"}));
     ASSERT_TRUE(c.start());
-    EXPECT_EQ(c.advance(5.0), RunState::Running);
-    EXPECT_EQ(c.variable(1993).number, 1.0);
-    EXPECT_EQ(c.advance(600.0), RunState::Finished);
+    bool onInTheChange = false;
+    bool offInTheSetting = false;
+    bool onInTheSetting = false;
+    while (c.advance(0.05) == RunState::Running) {
+        const bool flag = c.variable(1993).number == 1.0;
+        if (c.variable(1300).number == 3) { // changed: now the setting
+            (flag ? onInTheSetting : offInTheSetting) = true;
+        } else {
+            onInTheChange = onInTheChange || flag;
+        }
+    }
+    EXPECT_EQ(c.runState(), RunState::Finished);
+    EXPECT_TRUE(onInTheChange);
+    EXPECT_TRUE(offInTheSetting);
+    EXPECT_FALSE(onInTheSetting);
     EXPECT_EQ(c.variable(1993).number, 0.0);
     EXPECT_NEAR(c.variable(1432).number, tripHeight(bundledMachine(), 3), 1e-9);
 }
@@ -120,7 +132,7 @@ TEST(MultiToolSetting, AnAlarmStopsTheBatchKeepingTheToolsSetBeforeIt) {
     EXPECT_EQ(c.variable(1436).number, 0.0);                        // T7 not
     EXPECT_EQ(c.variable(1431).number, 0.0);                        // T2 never reached
     EXPECT_EQ(r.tool, 7);
-    EXPECT_EQ(c.variable(1993).number, 0.0); // error.nc ended the batch
+    EXPECT_EQ(c.variable(1993).number, 0.0); // the alarm came in the setting, after the change
     EXPECT_EQ(r.outputs[0], 0);              // the safe state: OUT01 (release) off, the tool clamped
 }
 

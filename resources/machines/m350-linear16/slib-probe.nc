@@ -113,9 +113,9 @@ M99
 O505(多刀固定对刀 multi-tool setting: every tool listed in #1970-#1989 on the fixed setter)
 // The Probe page lists the chosen tools in #1970-#1989 (0 = none, any order) and runs
 // mulprobe.nc (M98 P505). Each listed tool is changed to (T, O20000) and set on the fixed setter
-// (#1502 = 2, O502); #1993 is 1 while the batch runs. An alarm stops the batch: the tools set
-// before it keep their new offsets, and error.nc puts #1993 back to 0.
-#1993 = 1
+// (#1502 = 2, O502); #1993 is 1 while the batch changes a tool, so a change can tell it is part of
+// one (the factory's O20000 leaves the dust cover closed then). An alarm stops the batch where it
+// is: the tools set before it keep their new offsets.
 #30 = 0                             //how many tools are listed
 #31 = 0
 WHILE [#31 LT 20] DO1
@@ -135,16 +135,15 @@ IF #33 == 0 GOTO3                   //no tool in this place of the list
 #1512 = #30
 #1503 = 1(多刀对刀 T%.0f: %.0f/%.0f...)
 #34 = #1300                         //the tool before the change
+#1993 = 1
 T#33
-IF #1300 == #33 GOTO2
 #1993 = 0
+IF #1300 == #33 GOTO2
 #3000 = 8(多刀对刀停止: 换刀未完成! the change did not happen: see the message before this alarm)
 N2 IF [#1305 != 0] * [#34 != #33] GOTO3 //param 805: the change has set the tool already
 #1502 = 2
 M98 P502
-N3 #1993 = 1
-END2
-#1993 = 0
+N3 END2
 #1510 = #32
 #1503 = 1(多刀对刀完成! %.0f把刀)
 M99
