@@ -174,6 +174,7 @@ TEST(ProbePage, TeachStoresTheMachinePositionAsTheSetterPosition) {
     auto* probe = panel.page<ui::ProbePage>();
     panel.softkey(6); // Z位置教导
     panel.key("ENTER");
+    panel.advance(1.0); // O507 stores it
     double z = panel.session().latest()->status.machine(2);
     EXPECT_EQ(probe->fieldText("z"), QString::number(z, 'f', 3));
 }

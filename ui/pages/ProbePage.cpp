@@ -17,6 +17,8 @@ namespace {
 
 constexpr int kThickness = 129;    // 浮动对刀仪厚度
 constexpr int kSetterX = 135;      // 135-137: 固定对刀仪 X Y Z (machine)
+constexpr int kTeachXYProgram = 506; // slib-probe.nc: XY位置教导 into params 135, 136
+constexpr int kTeachZProgram = 507;  // Z位置教导 into param 137
 constexpr int kToolOffset = 930;   // 930-945: T1..T16 Z offset
 constexpr int kCapacity = 801;
 constexpr int kVirtualTools = 803;
@@ -218,18 +220,14 @@ void ProbePage::multi() {
     });
 }
 
+// The machine's O506 (XY) or O507 (Z) stores the position: the trainee sees the macro do it, and
+// an axis that is not homed is its alarm.
 void ProbePage::teach(bool xy) {
     QString question = xy ? tr("(XY)Mach pos is XY pos of Probe?", "msg 148") : tr("(Z)Mach pos is Z pos of Probe?", "msg 149");
     context().ask(question, [this, xy](bool yes) {
-        auto s = context().snapshot();
-        if (!yes || !s) {
-            return;
-        }
-        if (xy) {
-            context().session().setParameter(kSetterX, s->status.machine(0));
-            context().session().setParameter(kSetterX + 1, s->status.machine(1));
-        } else {
-            context().session().setParameter(kSetterX + 2, s->status.machine(2));
+        if (yes) {
+            context().session().runMdi({QStringLiteral("M98 P%1").arg(xy ? kTeachXYProgram : kTeachZProgram)},
+                                       Activity::Probe);
         }
     });
 }

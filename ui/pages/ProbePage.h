@@ -17,8 +17,8 @@ namespace m350::ui {
 // 对刀 Probe: the setter fields (coordinate system, current tool, floating setter thickness,
 // fixed setter X/Y/Z) and the tools' Z offsets (params 930-945), with the panel's softkeys:
 // 浮动对刀, 固定对刀 (asks the tool number), 多刀固定对刀 (a T1..T16 selection grid, then the
-// key again), XY位置教导 and Z位置教导. Each runs the machine's own O502 (the multi-tool loop
-// over #1970-#1989) so the trainee watches the macro do the work.
+// key again), XY位置教导 and Z位置教导. Each runs the machine's own macros (slib-probe.nc: O502 to
+// set a tool, O505 over #1970-#1989, O506/O507 to teach) so the trainee watches them do the work.
 class ProbePage : public Page {
     Q_OBJECT
 public:

@@ -55,6 +55,7 @@ QString axisNames(const std::vector<int>& axes) {
 SessionWorker::SessionWorker(config::MachineConfig config, MachineSession::Options options) : options_(options) {
     machineName_ = QString::fromStdString(config.name);
     folder_ = config.folder;
+    kept_ = config.parameters;
     log_ = std::make_unique<SessionLog>(config.folder);
     controller_ = std::make_unique<Controller>(std::move(config), settingsFor(options));
 }
@@ -103,8 +104,12 @@ void SessionWorker::advanceManual(double seconds) {
 
 void SessionWorker::advance(double seconds) {
     advanceSimulation(seconds);
+    const bool wasRunning = busy();
     Controller::RunState state = controller_->advance(seconds);
     noteAlarm();
+    if (wasRunning && !busy()) {
+        keepParametersTheRunChanged();
+    }
     if (state == Controller::RunState::Finished && activity_ == Activity::Auto) {
         // a piece is done: 加工统计 counts it with its run time
         workRecord_.lastPiece = controller_->panelStatus().runSeconds;

@@ -3,6 +3,8 @@
 #include "ui/session/MachineSession.h"
 #include "ui/session/SessionLog.h"
 
+#include "core/config/ParameterTable.h"
+
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
@@ -90,6 +92,7 @@ private:
     QString loadErrors() const; // why the controller's last load failed
     bool loadCurrentFile();
     bool saveParameters(const std::map<int, double>& values); // into params.toml; refuses when it cannot
+    void keepParametersTheRunChanged();
     QVector<double> userVariables(); // #50-#499, NaN for a vacant one
     void startedAt(const char* event, bool started, const std::string& why);
     void startNextStep();
@@ -120,6 +123,7 @@ private:
     double spindleOverride_ = 100.0;
     bool jogHigh_ = false;
     std::string folder_; // the machine folder, where params.toml is kept
+    config::ParameterTable kept_; // the parameters as params.toml holds them
     bool watchVariables_ = false;
     config::UserLevel userLevel_ = config::UserLevel::Guest;
 };

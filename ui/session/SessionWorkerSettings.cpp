@@ -25,7 +25,26 @@ bool SessionWorker::saveParameters(const std::map<int, double>& values) {
         refuse(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
         return false;
     }
+    for (auto [number, value] : values) {
+        kept_.set(number, value);
+    }
     return true;
+}
+
+// What a run writes into parameters stays, as on the controller: a tool's Z offset from 对刀
+// (params 930-945, 973-992), the setter's taught position (135-137), M30's counters. When a run
+// stops, the parameters it changed go into params.toml.
+void SessionWorker::keepParametersTheRunChanged() {
+    std::map<int, double> changed;
+    for (int number = 0; number < config::ParameterTable::kCount; ++number) {
+        const double now = controller_->parameter(number);
+        if (now != kept_.get(number)) {
+            changed[number] = now;
+        }
+    }
+    if (!changed.empty()) {
+        saveParameters(changed);
+    }
 }
 
 void SessionWorker::setParameters(const std::map<int, double>& values) {
