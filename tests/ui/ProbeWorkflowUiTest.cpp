@@ -9,6 +9,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QTemporaryDir>
 
 namespace m350::test {
 
@@ -50,6 +51,31 @@ TEST(ProbeWorkflow, MultiToolSettingSetsTheChosenToolsAndKeepsThem) {
     const QString params = paramsFile(panel);
     EXPECT_TRUE(params.contains(QStringLiteral("935 = -49.75"))) << params.toStdString();
     EXPECT_TRUE(params.contains(QStringLiteral("943 = -51"))) << params.toStdString();
+}
+
+TEST(ProbeWorkflow, WithAToolTableTheSettingGoesIntoToolTblToo) {
+    QTemporaryDir dir;
+    QString error;
+    auto copy = ui::copyBundledMachine(dir.path(), &error);
+    ASSERT_TRUE(copy) << error.toStdString();
+    const QString folder = *copy;
+    QFile table(QDir(folder).filePath("tool.tbl"));
+    ASSERT_TRUE(table.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    table.write("T1 P1 Z-50.000000 D6.000000 ;6 mm end mill\n");
+    table.close();
+    PanelHarness panel(folder); // the panel started again: T1's Z comes from tool.tbl
+    EXPECT_NEAR(parameter(panel, 930), -50.0, 1e-9);
+    panel.key("PROBE");
+    panel.softkey(3); // 固定对刀 T1
+    panel.key("ENTER");
+    panel.key("ESC"); // only the tool's Z offset
+    panel.advance(60.0);
+    EXPECT_NEAR(parameter(panel, 930), -53.677, 1e-9);
+    ASSERT_TRUE(table.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(table.readAll());
+    EXPECT_TRUE(text.contains(QStringLiteral("Z-53.677"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral(";6 mm end mill"))) << text.toStdString();
+    EXPECT_TRUE(paramsFile(panel).contains(QStringLiteral("930 = -53.677")));
 }
 
 TEST(ProbeWorkflow, TeachRunsTheMacroAndTheSetterPositionStays) {
