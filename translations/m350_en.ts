@@ -676,6 +676,14 @@ STEP MPG</translation>
         <comment>msg 548</comment>
         <translation>Clear Record</translation>
     </message>
+    <message>
+        <source>Tool table changed</source>
+        <translation>Tool table changed</translation>
+    </message>
+    <message>
+        <source>Tool touched off</source>
+        <translation>Tool touched off</translation>
+    </message>
 </context>
 <context>
     <name>m350::ui::MainWindow</name>
@@ -1660,6 +1668,10 @@ STEP MPG</translation>
         <translation>Floating Probe</translation>
     </message>
     <message>
+        <source>Tool Table</source>
+        <translation>Tool Table</translation>
+    </message>
+    <message>
         <source>Fixed Probe</source>
         <comment>msg 470</comment>
         <translation>Fixed Probe</translation>
@@ -2221,6 +2233,218 @@ STEP MPG</translation>
     <message>
         <source>%1 .nc files in the machine folder</source>
         <translation>%1 .nc files in the machine folder</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ToolTablePage</name>
+    <message>
+        <source>Tool Table</source>
+        <translation>Tool Table</translation>
+    </message>
+    <message>
+        <source>Flat end mill</source>
+        <translation>Flat end mill</translation>
+    </message>
+    <message>
+        <source>Ball nose</source>
+        <translation>Ball nose</translation>
+    </message>
+    <message>
+        <source>Bull nose</source>
+        <translation>Bull nose</translation>
+    </message>
+    <message>
+        <source>Drill</source>
+        <translation>Drill</translation>
+    </message>
+    <message>
+        <source>Tap</source>
+        <translation>Tap</translation>
+    </message>
+    <message>
+        <source>Chamfer</source>
+        <translation>Chamfer</translation>
+    </message>
+    <message>
+        <source>Engraver</source>
+        <translation>Engraver</translation>
+    </message>
+    <message>
+        <source>Face mill</source>
+        <translation>Face mill</translation>
+    </message>
+    <message>
+        <source>Reamer</source>
+        <translation>Reamer</translation>
+    </message>
+    <message>
+        <source>Touch probe</source>
+        <translation>Touch probe</translation>
+    </message>
+    <message>
+        <source>Other</source>
+        <translation>Other</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Tool</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>Pocket</translation>
+    </message>
+    <message>
+        <source>Z offset</source>
+        <translation>Z offset</translation>
+    </message>
+    <message>
+        <source>Diameter</source>
+        <translation>Diameter</translation>
+    </message>
+    <message>
+        <source>Max rpm</source>
+        <translation>Max rpm</translation>
+    </message>
+    <message>
+        <source>Teeth</source>
+        <translation>Teeth</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Comment</translation>
+    </message>
+    <message>
+        <source>UP/DOWN: tool, LEFT/RIGHT: field, ENTER: edit. Touch Off: with the tool loaded and its tip on a known height, enter that work Z; the tool's Z offset changes so the display reads it.</source>
+        <translation>UP/DOWN: tool, LEFT/RIGHT: field, ENTER: edit. Touch Off: with the tool loaded and its tip on a known height, enter that work Z; the tool's Z offset changes so the display reads it.</translation>
+    </message>
+    <message>
+        <source>The table is the machine folder's tool.tbl in LinuxCNC's format; rpm, teeth and type are kept in the comment as {rpm=... teeth=... type=...}.</source>
+        <translation>The table is the machine folder's tool.tbl in LinuxCNC's format; rpm, teeth and type are kept in the comment as {rpm=... teeth=... type=...}.</translation>
+    </message>
+    <message>
+        <source>Modify</source>
+        <translation>Modify</translation>
+    </message>
+    <message>
+        <source>The table is empty</source>
+        <translation>The table is empty</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <comment>msg 328</comment>
+        <translation>New</translation>
+    </message>
+    <message>
+        <source>Del</source>
+        <comment>msg 325</comment>
+        <translation>Del</translation>
+    </message>
+    <message>
+        <source>Touch Off</source>
+        <translation>Touch Off</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Import</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Export</translation>
+    </message>
+    <message>
+        <source>Cur Tool:</source>
+        <comment>msg 992</comment>
+        <translation>Cur Tool:</translation>
+    </message>
+    <message>
+        <source>%1 tools</source>
+        <translation>%1 tools</translation>
+    </message>
+    <message>
+        <source>tool.tbl not saved: %1</source>
+        <translation>tool.tbl not saved: %1</translation>
+    </message>
+    <message>
+        <source>A tool keeps its number: add the new number with New and delete this one</source>
+        <translation>A tool keeps its number: add the new number with New and delete this one</translation>
+    </message>
+    <message>
+        <source>empty: none</source>
+        <translation>empty: none</translation>
+    </message>
+    <message>
+        <source>not a valid value</source>
+        <translation>not a valid value</translation>
+    </message>
+    <message>
+        <source>T%1: %2</source>
+        <translation>T%1: %2</translation>
+    </message>
+    <message>
+        <source>New tool number:</source>
+        <translation>New tool number:</translation>
+    </message>
+    <message>
+        <source>Tool numbers start at 1</source>
+        <translation>Tool numbers start at 1</translation>
+    </message>
+    <message>
+        <source>T%1 is already in the table</source>
+        <translation>T%1 is already in the table</translation>
+    </message>
+    <message>
+        <source>The tool table is full (1000 tools)</source>
+        <translation>The tool table is full (1000 tools)</translation>
+    </message>
+    <message>
+        <source>Delete T%1 from the tool table?</source>
+        <translation>Delete T%1 from the tool table?</translation>
+    </message>
+    <message>
+        <source>The current tool No. is 0, this operation is invalid!</source>
+        <comment>msg 858</comment>
+        <translation>The current tool No. is 0, this operation is invalid!</translation>
+    </message>
+    <message>
+        <source>Touch off T%1: the work Z of its tip (gauge or cut surface):</source>
+        <translation>Touch off T%1: the work Z of its tip (gauge or cut surface):</translation>
+    </message>
+    <message>
+        <source>Not a number: %1</source>
+        <translation>Not a number: %1</translation>
+    </message>
+    <message>
+        <source>Import a tool.tbl (path; relative to the machine folder):</source>
+        <translation>Import a tool.tbl (path; relative to the machine folder):</translation>
+    </message>
+    <message>
+        <source>Replace the tool table with the %1 tools of %2?</source>
+        <translation>Replace the tool table with the %1 tools of %2?</translation>
+    </message>
+    <message>
+        <source>%1 lines skipped, the first: %2</source>
+        <translation>%1 lines skipped, the first: %2</translation>
+    </message>
+    <message>
+        <source>Tool table imported from %1</source>
+        <translation>Tool table imported from %1</translation>
+    </message>
+    <message>
+        <source>Export the tool table to (path; relative to the machine folder):</source>
+        <translation>Export the tool table to (path; relative to the machine folder):</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>File save failed!</translation>
+    </message>
+    <message>
+        <source>Tool table exported to %1</source>
+        <translation>Tool table exported to %1</translation>
     </message>
 </context>
 <context>

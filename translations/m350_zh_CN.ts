@@ -228,7 +228,7 @@
     </message>
     <message>
         <source>Not a number: %1</source>
-        <translation>不是数值: %1</translation>
+        <translation>不是数字: %1</translation>
     </message>
 </context>
 <context>
@@ -675,6 +675,14 @@ STEP MPG</source>
         <source>Clear Record</source>
         <comment>msg 548</comment>
         <translation>清除加工记录</translation>
+    </message>
+    <message>
+        <source>Tool table changed</source>
+        <translation>刀具表修改</translation>
+    </message>
+    <message>
+        <source>Tool touched off</source>
+        <translation>刀长设定</translation>
     </message>
 </context>
 <context>
@@ -1660,6 +1668,10 @@ STEP MPG</source>
         <translation>浮动对刀</translation>
     </message>
     <message>
+        <source>Tool Table</source>
+        <translation>刀具表</translation>
+    </message>
+    <message>
         <source>Fixed Probe</source>
         <comment>msg 470</comment>
         <translation>固定对刀</translation>
@@ -2221,6 +2233,218 @@ STEP MPG</source>
     <message>
         <source>%1 .nc files in the machine folder</source>
         <translation>机床文件夹中 %1 个 .nc 文件</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ToolTablePage</name>
+    <message>
+        <source>Tool Table</source>
+        <translation>刀具表</translation>
+    </message>
+    <message>
+        <source>Flat end mill</source>
+        <translation>平底铣刀</translation>
+    </message>
+    <message>
+        <source>Ball nose</source>
+        <translation>球头铣刀</translation>
+    </message>
+    <message>
+        <source>Bull nose</source>
+        <translation>圆鼻铣刀</translation>
+    </message>
+    <message>
+        <source>Drill</source>
+        <translation>钻头</translation>
+    </message>
+    <message>
+        <source>Tap</source>
+        <translation>丝锥</translation>
+    </message>
+    <message>
+        <source>Chamfer</source>
+        <translation>倒角刀</translation>
+    </message>
+    <message>
+        <source>Engraver</source>
+        <translation>雕刻刀</translation>
+    </message>
+    <message>
+        <source>Face mill</source>
+        <translation>面铣刀</translation>
+    </message>
+    <message>
+        <source>Reamer</source>
+        <translation>铰刀</translation>
+    </message>
+    <message>
+        <source>Touch probe</source>
+        <translation>测头</translation>
+    </message>
+    <message>
+        <source>Other</source>
+        <translation>其他</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>刀号</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>刀位</translation>
+    </message>
+    <message>
+        <source>Z offset</source>
+        <translation>Z偏置</translation>
+    </message>
+    <message>
+        <source>Diameter</source>
+        <translation>直径</translation>
+    </message>
+    <message>
+        <source>Max rpm</source>
+        <translation>最高转速</translation>
+    </message>
+    <message>
+        <source>Teeth</source>
+        <translation>齿数</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>UP/DOWN: tool, LEFT/RIGHT: field, ENTER: edit. Touch Off: with the tool loaded and its tip on a known height, enter that work Z; the tool's Z offset changes so the display reads it.</source>
+        <translation>上/下:选刀,左/右:选项,回车:修改。刀长设定:装上刀具,刀尖停在已知高度,输入该工件Z值;刀具Z偏置随之改变,使显示等于该值。</translation>
+    </message>
+    <message>
+        <source>The table is the machine folder's tool.tbl in LinuxCNC's format; rpm, teeth and type are kept in the comment as {rpm=... teeth=... type=...}.</source>
+        <translation>刀具表即机床文件夹中的tool.tbl(LinuxCNC格式);最高转速、齿数和类型保存在备注中:{rpm=... teeth=... type=...}。</translation>
+    </message>
+    <message>
+        <source>Modify</source>
+        <translation>修改</translation>
+    </message>
+    <message>
+        <source>The table is empty</source>
+        <translation>刀具表为空</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <comment>msg 328</comment>
+        <translation>新建</translation>
+    </message>
+    <message>
+        <source>Del</source>
+        <comment>msg 325</comment>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Touch Off</source>
+        <translation>刀长设定</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>导入</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <source>Cur Tool:</source>
+        <comment>msg 992</comment>
+        <translation>当前刀具号T:</translation>
+    </message>
+    <message>
+        <source>%1 tools</source>
+        <translation>共%1把刀</translation>
+    </message>
+    <message>
+        <source>tool.tbl not saved: %1</source>
+        <translation>tool.tbl未保存: %1</translation>
+    </message>
+    <message>
+        <source>A tool keeps its number: add the new number with New and delete this one</source>
+        <translation>刀号不能修改:用[新建]添加新刀号,再删除此刀</translation>
+    </message>
+    <message>
+        <source>empty: none</source>
+        <translation>留空:无</translation>
+    </message>
+    <message>
+        <source>not a valid value</source>
+        <translation>数值无效</translation>
+    </message>
+    <message>
+        <source>T%1: %2</source>
+        <translation>T%1: %2</translation>
+    </message>
+    <message>
+        <source>New tool number:</source>
+        <translation>新刀号:</translation>
+    </message>
+    <message>
+        <source>Tool numbers start at 1</source>
+        <translation>刀号从1开始</translation>
+    </message>
+    <message>
+        <source>T%1 is already in the table</source>
+        <translation>T%1已在刀具表中</translation>
+    </message>
+    <message>
+        <source>The tool table is full (1000 tools)</source>
+        <translation>刀具表已满(1000把刀)</translation>
+    </message>
+    <message>
+        <source>Delete T%1 from the tool table?</source>
+        <translation>从刀具表删除T%1?</translation>
+    </message>
+    <message>
+        <source>The current tool No. is 0, this operation is invalid!</source>
+        <comment>msg 858</comment>
+        <translation>当前刀具号为0或非法,操作无效!</translation>
+    </message>
+    <message>
+        <source>Touch off T%1: the work Z of its tip (gauge or cut surface):</source>
+        <translation>T%1刀长设定:刀尖所在的工件Z值(量块或试切面):</translation>
+    </message>
+    <message>
+        <source>Not a number: %1</source>
+        <translation>不是数字: %1</translation>
+    </message>
+    <message>
+        <source>Import a tool.tbl (path; relative to the machine folder):</source>
+        <translation>导入tool.tbl(路径,相对于机床文件夹):</translation>
+    </message>
+    <message>
+        <source>Replace the tool table with the %1 tools of %2?</source>
+        <translation>用%2中的%1把刀替换刀具表?</translation>
+    </message>
+    <message>
+        <source>%1 lines skipped, the first: %2</source>
+        <translation>跳过%1行,第一行: %2</translation>
+    </message>
+    <message>
+        <source>Tool table imported from %1</source>
+        <translation>已从%1导入刀具表</translation>
+    </message>
+    <message>
+        <source>Export the tool table to (path; relative to the machine folder):</source>
+        <translation>导出刀具表到(路径,相对于机床文件夹):</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>文件生成失败!</translation>
+    </message>
+    <message>
+        <source>Tool table exported to %1</source>
+        <translation>刀具表已导出到%1</translation>
     </message>
 </context>
 <context>

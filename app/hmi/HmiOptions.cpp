@@ -1,5 +1,7 @@
 #include "app/hmi/HmiOptions.h"
 
+#include "ui/actions/OperatorAction.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -8,13 +10,17 @@ namespace m350::hmi {
 
 HmiParse parseHmiCommandLine(int argc, char** argv) {
     HmiOptions o;
+    std::vector<std::string> pages; // every page a replay may open
+    for (const QString& id : ui::pageIds()) {
+        pages.push_back(id.toStdString());
+    }
     CLI::App app{"m350-hmi: the M350 panel (desktop). With --screenshot, --replay or --state it renders "
                  "and exits, for tests and docs."};
     app.add_option("program", o.program, "G-code file to load; START runs it")->check(CLI::ExistingFile);
     app.add_option("--config", o.configDir, "machine folder (default: the bundled M350 16-pocket linear rack)")
         ->check(CLI::ExistingDirectory);
     app.add_option("--lang", o.language, "language of the panel")->check(CLI::IsMember({"zh_CN", "en"}));
-    app.add_option("--page", o.page, "page to show")->check(CLI::IsMember({"monitor", "mdi", "io", "probe", "param", "system", "program"}));
+    app.add_option("--page", o.page, "page to show")->check(CLI::IsMember(pages));
     app.add_option("--programs", o.programs, "the Program page's U disk (default: the home folder)")
         ->check(CLI::ExistingDirectory);
     app.add_option("--screenshot", o.screenshot, "save the window as a PNG and exit");

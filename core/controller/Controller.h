@@ -253,6 +253,8 @@ public:
     // Whether the tool data changed since the start or the last save (by an edit, G10, a macro
     // writing #1430 ...): what a panel saves after.
     bool toolTableChanged() const { return !(tools_.mark() == savedToolMark_); }
+    // Changes when the tool data does (for a view that redraws only then).
+    tools::ToolData::Mark toolTableMark() const { return tools_.mark(); }
 
     // Reads any variable as a macro would, for --print and the panel.
     macro::Value variable(int number);

@@ -66,26 +66,28 @@ bool Controller::touchOffTool(double workZ, std::string* why) {
     if (jogging()) {
         return refuse(why, "touch off: a manual move is under way; wait for the axes to stop");
     }
-    const int tool = spindleTool();
+    // the tool whose offset the display applies: #1300 on the M350, the spindle's on a FANUC
+    const bool m350 = config_.dialect->id == gcode::DialectId::M350;
+    const int tool = m350 ? interp_.currentTool() : spindleTool();
     if (tool == 0) {
         return refuse(why, "touch off sets the length of the tool in the spindle, and it is empty: load a tool first");
     }
     const double machineZ = machine_.position()(2);
-    if (config_.dialect->id == gcode::DialectId::M350) {
+    if (m350) {
         if (!tools::m350ZParameter(tool, config_.parameters)) {
             return refuse(why, "tool " + std::to_string(tool) +
                                    " has no Z offset parameter on this M350 (params 930-945 for the magazine's tools, "
                                    "973-992 for 20 virtual tools above its capacity)");
         }
         const double others = interp_.workOffset()(2) - interp_.toolZOffset();
-        if (auto problem = tools_.setZ(tool, machineZ - others - workZ)) {
+        if (auto problem = tools_.setZ(tool, tools::roundedOffset(machineZ - others - workZ))) {
             return refuse(why, *problem);
         }
         return true;
     }
     const double unit = interp_.axisUnit(2);
     const double others = interp_.workOffset()(2) - interp_.toolLengthOffset();
-    if (auto problem = tools_.setZ(tool, (machineZ - others - workZ * unit) / unit)) {
+    if (auto problem = tools_.setZ(tool, tools::roundedOffset((machineZ - others - workZ * unit) / unit))) {
         return refuse(why, *problem);
     }
     interp_.applyLengthOffset(tool);

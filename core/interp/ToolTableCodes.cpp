@@ -49,7 +49,7 @@ void ModalInterpreter::setToolTable(const Words& words, const WordValue& g10, in
         double value = w->value;
         if (kind != 1) {
             const double from = kind == 10 ? workOffsets(axis) : 0.0;
-            value = (position(axis) - from - w->value * unit) / unit;
+            value = tools::roundedOffset((position(axis) - from - w->value * unit) / unit);
         }
         entry.offsets[static_cast<std::size_t>(axis)] = value;
     }

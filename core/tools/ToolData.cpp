@@ -4,6 +4,7 @@
 #include "core/config/ParameterNumbers.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace m350::tools {
 
@@ -20,6 +21,8 @@ std::optional<int> m350ZParameter(int tool, const config::ParameterTable& parame
     }
     return std::nullopt;
 }
+
+double roundedOffset(double value) { return std::round(value * 1e6) / 1e6; }
 
 ToolData::ToolData(const gcode::Dialect& dialect, config::ParameterTable& parameters, std::optional<ToolTable> loaded)
     : dialect_(&dialect), parameters_(&parameters) {

@@ -16,6 +16,10 @@ namespace m350::tools {
 // 973-992. The parameter of `tool`, or nullopt when the M350 has none for it.
 std::optional<int> m350ZParameter(int tool, const config::ParameterTable& parameters);
 
+// An offset computed from a position (touch off, G10 L10/L11), kept to 1e-6 of its unit as
+// LinuxCNC writes tool.tbl (%f), so that 0 - (-12.5) - 2 is 10.5 and not 10.499999999999998.
+double roundedOffset(double value);
+
 // A machine's tool data: its one tool table (tool.tbl), with one store for every value.
 //
 // On the M350 the Z of a tool that has a Z-offset parameter lives in that parameter and nowhere

@@ -107,7 +107,7 @@ TEST(HmiReplay, ABadReplayFileIsRefusedWithItsLine) {
 }
 
 TEST(HmiReplay, EveryPageRendersInBothLanguages) {
-    for (const char* page : {"monitor", "mdi", "io", "probe", "param", "system"}) {
+    for (const char* page : {"monitor", "mdi", "io", "probe", "param", "system", "tools"}) {
         for (const char* lang : {"zh_CN", "en"}) {
             HmiRun run = runHmi({"--page", page, "--lang", lang});
             ASSERT_EQ(run.exitCode, 0) << page << " " << lang << ": " << run.errors.toStdString();
@@ -176,6 +176,18 @@ TEST(HmiReplay, PauseResetAndPauseResumeFinishTheProgramWhereAnUninterruptedRunE
     EXPECT_NEAR(run.state["work"].toObject()["Y"].toDouble(), 40.0, 1e-6);
     EXPECT_TRUE(run.state["alarm"].isNull());
     EXPECT_TRUE(run.state["break_points"].toString().contains("brk.nc L:5")) << run.state["break_points"].toString().toStdString();
+}
+
+TEST(HmiReplay, TouchOffFromTheToolTableRewritesTheLoadedToolsZ) {
+    HmiRun run = runHmi({"--replay", replay("tool-table-touch-off.jsonl")});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_EQ(run.state["page"].toString(), "tools");
+    const QJsonArray rows = run.state["tool_table"].toArray();
+    ASSERT_GE(rows.size(), 2);
+    // T1 in the spindle at machine Z 0, G54 Z -12.5: Z offset = 0 - (-12.5) - 2 = 10.5
+    EXPECT_EQ(rows.at(0).toString(), QStringLiteral("T1 P1 Z10.5")) << rows.at(0).toString().toStdString();
+    EXPECT_EQ(rows.at(1).toString(), QStringLiteral("T2 P2 Z-48.12 ;{teeth=3}"));
+    EXPECT_EQ(run.state["tool_table_selected"].toInt(), 2);
 }
 
 } // namespace m350::test

@@ -66,6 +66,8 @@ QHash<QString, QString> LogPage::eventTable() {
     w["fault"] = tr("Simulator: input fault");
     w["level"] = tr("User level changed");
     w["work_record_cleared"] = tr("Clear Record", "msg 548");
+    w["tool_table"] = tr("Tool table changed");
+    w["touch_off"] = tr("Tool touched off");
     return w;
 }
 

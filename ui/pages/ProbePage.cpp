@@ -123,7 +123,7 @@ void ProbePage::retranslate() {
 }
 
 QVector<Page::Softkey> ProbePage::softkeys() const {
-    return {{tr("Floating Probe", "msg 468"), true, {}}, {},
+    return {{tr("Floating Probe", "msg 468"), true, {}}, {tr("Tool Table"), true, {}},
             {tr("Fixed Probe", "msg 470"), true, {}},    {tr("Mult Probe", "msg 471"), true, {}},
             {tr("XY Teach", "msg 472"), true, {}},       {tr("Z Teach", "msg 473"), true, {}}};
 }
@@ -131,6 +131,7 @@ QVector<Page::Softkey> ProbePage::softkeys() const {
 void ProbePage::softkey(int number) {
     switch (number) {
     case 1: floating(); break;
+    case 2: emit navigate(QStringLiteral("tools")); break;
     case 3: fixed(); break;
     case 4: multi(); break;
     case 5: teach(true); break;

@@ -15,6 +15,7 @@
 #include "ui/pages/RecordPage.h"
 #include "ui/pages/ProgramPage.h"
 #include "ui/pages/SystemPage.h"
+#include "ui/pages/ToolTablePage.h"
 #include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
@@ -99,6 +100,7 @@ void MainWindow::addPages() {
     addPage(new ProgramPage(context_, stack_));
     addPage(new ParamPage(context_, stack_));
     addPage(new SystemPage(context_, stack_));
+    addPage(new ToolTablePage(context_, stack_));
 }
 
 void MainWindow::addPage(Page* page) {

@@ -89,6 +89,14 @@ void MachineSession::forceInput(int pin, Fault fault, int level, double seconds)
 void MachineSession::setParameters(const std::map<int, double>& values) {
     post([values](SessionWorker& w) { w.setParameters(values); });
 }
+void MachineSession::putTool(const tools::ToolEntry& entry) {
+    post([entry](SessionWorker& w) { w.putTool(entry); });
+}
+void MachineSession::removeTool(int tool) { post([tool](SessionWorker& w) { w.removeTool(tool); }); }
+void MachineSession::replaceToolTable(const tools::ToolTable& table, const QString& from) {
+    post([table, from](SessionWorker& w) { w.replaceToolTable(table, from); });
+}
+void MachineSession::touchOffTool(double workZ) { post([workZ](SessionWorker& w) { w.touchOffTool(workZ); }); }
 void MachineSession::watchVariables(bool on) { post([on](SessionWorker& w) { w.watchVariables(on); }); }
 bool MachineSession::login(config::UserLevel level, const QString& password) {
     if (!access_.login(level, password)) {

@@ -4,6 +4,7 @@
 #include "ui/session/UserAccess.h"
 
 #include "core/config/HookFiles.h"
+#include "core/tools/ToolTable.h"
 
 #include <QObject>
 #include <QString>
@@ -96,6 +97,12 @@ public:
     void forceInput(int pin, Fault fault, int level, double seconds);
     // 参数恢复: every value at once, one write of params.toml (setParameter writes it each time).
     void setParameters(const std::map<int, double>& values);
+    // 刀具表 (the tool table page): a row added or replaced, taken out, the whole table from an
+    // imported file (`from` names it for the log), and touch off of the loaded tool at work Z.
+    void putTool(const tools::ToolEntry& entry);
+    void removeTool(int tool);
+    void replaceToolTable(const tools::ToolTable& table, const QString& from);
+    void touchOffTool(double workZ);
     // The #50-#499 view: while on, each snapshot carries those variables (userVariables).
     void watchVariables(bool on);
 

@@ -5,6 +5,7 @@
 #include "core/config/ParameterPages.h"
 #include "core/config/SystemLog.h"
 #include "core/controller/PanelStatus.h"
+#include "core/tools/ToolTable.h"
 
 #include <QMetaType>
 #include <QString>
@@ -54,6 +55,10 @@ struct PanelSnapshot {
     std::shared_ptr<const std::vector<config::LogEntry>> log; // 系统日志, oldest first (shared, never changed)
     WorkRecord workRecord;
     BreakPoints breakPoints;
+    // The tool table as it stands (a new object only when it changed), and why the last save of
+    // tool.tbl failed (empty when it is saved).
+    std::shared_ptr<const tools::ToolTable> toolTable;
+    QString toolTableProblem;
     qint64 publishedNs = 0;    // steady clock when the worker published it (the panel's latency meter)
 };
 

@@ -149,6 +149,7 @@ void SessionWorker::refuse(const QString& why) {
 }
 
 void SessionWorker::publish() {
+    keepToolTable();
     auto snapshot = std::make_shared<PanelSnapshot>();
     snapshot->status = controller_->panelStatus();
     snapshot->activity = activity_;
@@ -159,6 +160,8 @@ void SessionWorker::publish() {
     snapshot->log = log_->entries();
     snapshot->workRecord = workRecord_;
     snapshot->breakPoints = breakPoints();
+    snapshot->toolTable = toolTable_;
+    snapshot->toolTableProblem = toolTableProblem_;
     snapshot->userLevel = userLevel_;
     if (watchVariables_) {
         snapshot->userVariables = userVariables();

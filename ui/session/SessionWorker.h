@@ -4,6 +4,7 @@
 #include "ui/session/SessionLog.h"
 
 #include "core/config/ParameterTable.h"
+#include "core/tools/ToolData.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -71,6 +72,13 @@ public:
     void setParameters(const std::map<int, double>& values);
     void watchVariables(bool on);
     void setUserLevel(config::UserLevel level);
+    // SessionWorkerTools.cpp: the tool table page's edits, import and touch off. Every change of
+    // the tool data (these, G10 L1, a macro's #1430, the Param page's 930) is saved to the machine
+    // folder's tool.tbl before the next snapshot.
+    void putTool(const tools::ToolEntry& entry);
+    void removeTool(int tool);
+    void replaceToolTable(const tools::ToolTable& table, const QString& from);
+    void touchOffTool(double workZ);
     void advanceManual(double seconds);
     void publish();
     // 仿真 (SimulationRun.cpp): the file on a second controller; speed 0 = as fast as the core goes.
@@ -101,6 +109,11 @@ private:
     void powerOn();
     QVector<MachineSession::HookStep> pendingSteps_; // of runHooks, after the one that runs
     Activity stepsActivity_ = Activity::None;
+    void keepToolTable(); // saves a changed table; the table snapshots carry
+    std::shared_ptr<const tools::ToolTable> toolTable_;
+    std::optional<tools::ToolData::Mark> shownToolMark_;
+    std::optional<tools::ToolData::Mark> failedToolMark_;
+    QString toolTableProblem_;
     void keepBreakPoint();
     BreakPoints breakPoints() const;
     mutable std::optional<std::pair<QString, int>> keptBreak_; // the machine folder's `breakpoint`, read once

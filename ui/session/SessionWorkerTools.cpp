@@ -1,0 +1,71 @@
+// The tool table side of the session: the page's edits, an imported tool.tbl, touch off, and
+// keeping the machine folder's tool.tbl in step with the tool data however it changed.
+#include "ui/session/SessionWorker.h"
+
+#include "core/controller/Controller.h"
+
+namespace m350::ui {
+
+void SessionWorker::putTool(const tools::ToolEntry& entry) {
+    lastError_.clear();
+    std::string why;
+    if (!controller_->putTool(entry, &why)) {
+        refuse(QString::fromStdString(why));
+        return;
+    }
+    log_->record("tool_table", QStringLiteral("T%1").arg(entry.tool));
+    publish();
+}
+
+void SessionWorker::removeTool(int tool) {
+    lastError_.clear();
+    std::string why;
+    if (!controller_->removeTool(tool, &why)) {
+        refuse(QString::fromStdString(why));
+        return;
+    }
+    log_->record("tool_table", QStringLiteral("T%1 -").arg(tool));
+    publish();
+}
+
+void SessionWorker::replaceToolTable(const tools::ToolTable& table, const QString& from) {
+    lastError_.clear();
+    std::string why;
+    if (!controller_->replaceToolTable(table, &why)) {
+        refuse(QString::fromStdString(why));
+        return;
+    }
+    log_->record("tool_table", from);
+    publish();
+}
+
+void SessionWorker::touchOffTool(double workZ) {
+    lastError_.clear();
+    std::string why;
+    if (!controller_->touchOffTool(workZ, &why)) {
+        refuse(QString::fromStdString(why));
+        return;
+    }
+    log_->record("touch_off", QStringLiteral("T%1 Z = %2").arg(controller_->panelStatus().tool).arg(workZ, 0, 'f', 3));
+    publish();
+}
+
+// A save that failed is tried again when the data changes again, not at every frame.
+void SessionWorker::keepToolTable() {
+    const tools::ToolData::Mark mark = controller_->toolTableMark();
+    if (!folder_.empty() && controller_->toolTableChanged() && !(failedToolMark_ && *failedToolMark_ == mark)) {
+        if (auto error = controller_->saveToolTable()) {
+            toolTableProblem_ = QString::fromStdString(*error);
+            failedToolMark_ = mark;
+        } else {
+            toolTableProblem_.clear();
+            failedToolMark_.reset();
+        }
+    }
+    if (!shownToolMark_ || !(*shownToolMark_ == mark)) {
+        toolTable_ = std::make_shared<const tools::ToolTable>(controller_->toolTable());
+        shownToolMark_ = mark;
+    }
+}
+
+} // namespace m350::ui
