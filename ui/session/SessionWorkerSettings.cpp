@@ -4,10 +4,8 @@
 
 #include "core/config/ParamsFileWriter.h"
 #include "core/controller/Controller.h"
-#include "core/tools/ToolTableFile.h"
 
 #include <cmath>
-#include <filesystem>
 #include <limits>
 
 namespace m350::ui {
@@ -35,7 +33,7 @@ bool SessionWorker::saveParameters(const std::map<int, double>& values) {
 
 // What a run writes into parameters stays, as on the controller: a tool's Z offset from 对刀
 // (params 930-945, 973-992), the setter's taught position (135-137), M30's counters. When a run
-// stops, the parameters it changed go into params.toml (and a changed tool Z into tool.tbl).
+// stops, the parameters it changed go into params.toml (tool.tbl is kept by keepToolTable).
 void SessionWorker::keepParametersTheRunChanged() {
     std::map<int, double> changed;
     for (int number = 0; number < config::ParameterTable::kCount; ++number) {
@@ -44,14 +42,8 @@ void SessionWorker::keepParametersTheRunChanged() {
             changed[number] = now;
         }
     }
-    if (!changed.empty() && !saveParameters(changed)) {
-        return;
-    }
-    // with tool.tbl in the folder, its Z is what the next start reads: the new offsets go there too
-    if (controller_->toolTableChanged() && std::filesystem::exists(std::filesystem::path(folder_) / tools::kToolTableFileName)) {
-        if (auto error = controller_->saveToolTable()) {
-            refuse(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
-        }
+    if (!changed.empty()) {
+        saveParameters(changed);
     }
 }
 
