@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
     }
     auto loaded = config::loadMachineFolder(folder.toStdString());
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
-        return fail(QString::fromStdString(error->file + ": " + error->message));
+        return fail(QString::fromStdString(error->where() + ": " + error->message));
     }
     ui::MachineSession::Options sessionOptions;
     sessionOptions.clock = o.headlessRun() ? ui::MachineSession::Clock::Manual : ui::MachineSession::Clock::RealTime;

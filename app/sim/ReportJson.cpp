@@ -75,9 +75,10 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
 }
 
 // Every key of the contract is present even when nothing ran, so scripts can read any of them.
-nlohmann::json errorJson(const std::string& code, const std::string& message, const std::string& file) {
+nlohmann::json errorJson(const std::string& code, const std::string& message, const std::string& file, int line,
+                         int column) {
     return {{"status", "error"},
-            {"alarm", {{"code", code}, {"message", message}, {"file", file}, {"line", 0}, {"column", 0}}},
+            {"alarm", {{"code", code}, {"message", message}, {"file", file}, {"line", line}, {"column", column}}},
             {"vars", nlohmann::json::object()},
             {"machine", controller::axesJson(machine::Axes::Zero())},
             {"work", controller::axesJson(machine::Axes::Zero())},

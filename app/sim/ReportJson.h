@@ -15,7 +15,8 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
                           const std::vector<int>& printVariables);
 
 // For errors found before anything runs (bad file, bad machine folder).
-nlohmann::json errorJson(const std::string& code, const std::string& message, const std::string& file);
+nlohmann::json errorJson(const std::string& code, const std::string& message, const std::string& file, int line = 0,
+                         int column = 0);
 
 nlohmann::json diagnosticsJson(const std::vector<gcode::Diagnostic>& diagnostics);
 

@@ -2,6 +2,7 @@
 
 #include "core/config/HookFiles.h"
 #include "core/config/ParameterCatalogue.h"
+#include "core/config/ParameterLimits.h"
 
 #include <CLI/CLI.hpp>
 
@@ -176,6 +177,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                 throw CLI::ValidationError("--param", "parameter numbers run from 0 to 999");
             }
             double value = parseNumber(v, "--param");
+            if (auto refused = config::refusedParameterValue(number, value)) {
+                throw CLI::ValidationError("--param", *refused);
+            }
             if (catalogue && catalogue->find(number)) {
                 if (auto problem = catalogue->validate(number, value)) {
                     std::cerr << "m350-sim: warning: --param " << p << ": " << *problem << " (used as given)\n";

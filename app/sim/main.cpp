@@ -135,7 +135,10 @@ int main(int argc, char** argv) {
     std::string folder = machineFolder(o);
     auto loaded = config::loadMachineFolder(folder);
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
-        return fail("config_error", error->message, error->file);
+        std::cerr << error->where() << ": " << error->message << '\n';
+        std::cout << sim::dump(sim::errorJson("config_error", error->message, error->file, error->line, error->column))
+                  << '\n';
+        return kExitError;
     }
     config::MachineConfig machineConfig = std::move(std::get<config::MachineConfig>(loaded));
     for (const std::string& warning : machineConfig.warnings) {
@@ -149,8 +152,13 @@ int main(int argc, char** argv) {
     }
     if (o.command == sim::SimOptions::Command::Run || o.command == sim::SimOptions::Command::Check) {
         std::error_code ec; // a symlink loop or an unreadable folder is an error, not an abort
-        if (!std::filesystem::is_regular_file(o.program, ec)) {
+        const std::filesystem::file_status status = std::filesystem::status(o.program, ec);
+        if (ec || !std::filesystem::exists(status)) {
             return fail("file_error", "cannot open program: " + (ec ? ec.message() : std::string("no such file")),
+                        o.program);
+        }
+        if (!std::filesystem::is_regular_file(status)) {
+            return fail("file_error", "cannot open program: it is a folder, FIFO or device, not a program file",
                         o.program);
         }
     }

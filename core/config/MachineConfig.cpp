@@ -5,14 +5,14 @@
 #include "core/config/HookFiles.h"
 #include "core/config/MagazineToml.h"
 #include "core/config/ParameterCatalogue.h"
+#include "core/config/ParameterLimits.h"
+#include "core/config/TomlReading.h"
 #include "core/tools/ToolData.h"
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
 
 #include <toml++/toml.h>
 
-#include <charconv>
-#include <cmath>
 #include <filesystem>
 
 namespace m350::config {
@@ -21,44 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Failure {
-    ConfigError error;
-};
-
-[[noreturn]] void fail(const fs::path& file, std::string message) {
-    throw Failure{{file.string(), std::move(message)}};
-}
-
-toml::table parseToml(const fs::path& file) {
-    try {
-        return toml::parse_file(file.string());
-    } catch (const toml::parse_error& e) {
-        fail(file, std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column) + ": " +
-                       std::string(e.description()));
-    }
-}
-
-int numberKey(const fs::path& file, std::string_view key, int low, int high, const char* what) {
-    int n = 0;
-    auto [ptr, ec] = std::from_chars(key.data(), key.data() + key.size(), n);
-    if (ec != std::errc() || ptr != key.data() + key.size() || n < low || n > high) {
-        fail(file, std::string(what) + " '" + std::string(key) + "' is not a number from " + std::to_string(low) +
-                       " to " + std::to_string(high));
-    }
-    return n;
-}
-
-double numberValue(const fs::path& file, const toml::node& node, std::string_view key) {
-    if (auto v = node.value<double>()) {
-        if (!std::isfinite(*v)) {
-            // nan or inf as a position, feed or time would stop virtual time from ever advancing
-            fail(file, "line " + std::to_string(node.source().begin.line) + ": '" + std::string(key) +
-                           "' must be a finite number, not " + (std::isnan(*v) ? "nan" : "inf"));
-        }
-        return *v;
-    }
-    fail(file, "'" + std::string(key) + "' must be a number");
-}
+using namespace toml_reading;
 
 // slibuser.nc, the user's G-code handlers (O9100-O9199 = G100-G199), is loaded beside slib-g.nc
 // as the M350 does, whether or not machine.toml lists it.
@@ -76,12 +39,30 @@ void addUserLibrary(const fs::path& folder, MachineConfig& config) {
     config.libraries.push_back({*path, gcode::FileRole::GLibrary});
 }
 
+bool isInside(const fs::path& path, const fs::path& folder) {
+    const fs::path relative = fs::weakly_canonical(path).lexically_relative(fs::weakly_canonical(folder));
+    return !relative.empty() && *relative.begin() != "..";
+}
+
 void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     fs::path file = folder / "machine.toml";
     if (!fs::exists(file)) {
         fail(file, "not found: a machine folder needs machine.toml");
     }
     toml::table t = parseToml(file);
+    warnUnknownKeys(file, t,
+                    {"name", "dialect", "libraries", "libraries.g", "libraries.m", "libraries.other", "codes", "codes.*",
+                     "io_links", "io_links.output", "io_links.input", "io_links.delay_ms", "io_links.inverted",
+                     "magazine", "magazine.device", "magazine.capacity", "magazine.loading", "magazine.opening",
+                     "magazine.carried", "magazine.slide_travel", "magazine.fork_depth", "magazine.tolerance",
+                     "magazine.seconds_per_pocket", "magazine.settle_s", "magazine.clamp_ms",
+                     "magazine.in_position_input", "magazine.select_outputs", "magazine.strobe_output",
+                     "magazine.pockets", "magazine.slide_s", "magazine.slide_output", "magazine.at_spindle_input",
+                     "magazine.away_input", "magazine.drawbar_output", "magazine.released_input",
+                     "magazine.clamped_input", "magazine.change_xy", "homing", "homing.switch_distance",
+                     "tool_setter", "tool_setter.top", "tool_setter.radius", "floating_setter", "floating_setter.top",
+                     "tools", "tools.length", "reference_points", "reference_points.*"},
+                    config.warnings);
     config.name = t["name"].value_or(folder.filename().string());
     std::string dialect = t["dialect"].value_or(std::string("m350"));
     config.dialect = gcode::Dialect::byName(dialect);
@@ -91,11 +72,23 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     auto addLibrary = [&](const toml::node& node, gcode::FileRole role) {
         auto name = node.value<std::string>();
         if (!name) {
-            fail(file, "library entries must be file names");
+            fail(file, "library entries must be file names", node.source());
         }
         fs::path path = folder / *name;
-        if (!fs::exists(path)) {
-            fail(file, "library '" + *name + "' not found in " + folder.string());
+        if (fs::path(*name).is_absolute() && !isInside(path, folder)) {
+            // a machine folder copied from elsewhere must not make the simulator read (and echo in
+            // its messages) any file of this computer
+            fail(file,
+                 "library '" + *name + "' lies outside the machine folder: name it relative to " + folder.string(),
+                 node.source());
+        }
+        std::error_code ec;
+        const fs::file_status status = fs::status(path, ec);
+        if (!fs::exists(status)) {
+            fail(file, "library '" + *name + "' not found in " + folder.string(), node.source());
+        }
+        if (!fs::is_regular_file(status)) {
+            fail(file, "library '" + *name + "' is a folder, FIFO or device, not a program file", node.source());
         }
         config.libraries.push_back({path.string(), role});
     };
@@ -119,7 +112,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
             if (k.size() < 2 || (k[0] != 'M' && k[0] != 'G')) {
                 fail(file, "[codes] key '" + std::string(k) + "' must be an M or G code such as M6");
             }
-            int code = numberKey(file, k.substr(1), 0, 9999, "code");
+            int code = numberKey(file, k.substr(1), key.source(), 0, 9999, "code");
             config.codePrograms[{k[0], code}] = roundToInt(numberValue(file, value, k));
         }
     }
@@ -140,7 +133,9 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
             config.ioLinks.push_back(l);
         }
     }
-    config.magazineCapacity = t["magazine"]["capacity"].value_or(0);
+    if (const toml::table* magazine = t["magazine"].as_table()) {
+        config.magazineCapacity = wholeValue(file, *magazine, "capacity", 0, kMostPockets, 0);
+    }
     if (const toml::table* magazine = t["magazine"].as_table(); magazine && magazine->contains("device")) {
         if (auto wrong = readMagazine(*magazine, config.magazine)) {
             fail(file, *wrong);
@@ -166,7 +161,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     }
     if (auto points = t["reference_points"].as_table()) {
         for (auto&& [key, value] : *points) {
-            int number = numberKey(file, key.str(), 1, 4, "reference point");
+            int number = numberKey(file, key.str(), key.source(), 1, 4, "reference point");
             const toml::array* axes = value.as_array();
             if (!axes || axes->size() > 5) {
                 fail(file, "reference point " + std::to_string(number) + " must be [X, Y, Z, A, B]");
@@ -186,12 +181,16 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
         return;
     }
     toml::table t = parseToml(file);
+    warnUnknownKeys(file, t, {"params", "params.*"}, config.warnings);
     auto catalogue = ParameterCatalogue::load(ParameterCatalogue::bundledPath());
     const auto* known = std::get_if<ParameterCatalogue>(&catalogue);
     if (auto params = t["params"].as_table()) {
         for (auto&& [key, value] : *params) {
-            int n = numberKey(file, key.str(), 0, ParameterTable::kCount - 1, "parameter");
+            int n = numberKey(file, key.str(), key.source(), 0, ParameterTable::kCount - 1, "parameter");
             double v = numberValue(file, value, key.str());
+            if (auto refused = refusedParameterValue(n, v)) {
+                fail(file, *refused, value.source());
+            }
             // A value the panel would refuse is kept (a simulator may be asked for it) but said; the
             // other members of the IO triples (enable, level) are not catalogued and pass as written.
             if (known && known->find(n)) {
@@ -210,13 +209,17 @@ void loadOffsets(const fs::path& folder, MachineConfig& config) {
         return;
     }
     toml::table t = parseToml(file);
+    warnUnknownKeys(file, t, {"G92", "G54", "G55", "G56", "G57", "G58", "G59", "G52", "common"}, config.warnings);
     static constexpr std::pair<const char*, int> slots[] = {{"G92", 0}, {"G54", 1}, {"G55", 2}, {"G56", 3},
                                                             {"G57", 4}, {"G58", 5}, {"G59", 6}, {"G52", 7},
                                                             {"common", 8}};
     for (auto [name, slot] : slots) {
+        if (const toml::node* given = t.get(name); given && !given->is_array()) {
+            fail(file, std::string(name) + " must be [X, Y, Z, A, B]", given->source());
+        }
         if (auto axes = t[name].as_array()) {
             if (axes->size() > 5) {
-                fail(file, std::string(name) + " has more than 5 axes");
+                fail(file, std::string(name) + " has more than 5 axes", axes->source());
             }
             for (std::size_t i = 0; i < axes->size(); ++i) {
                 config.offsets[static_cast<std::size_t>(slot)][i] = numberValue(file, *axes->get(i), name);
@@ -231,9 +234,10 @@ void loadVariables(const fs::path& folder, MachineConfig& config) {
         return;
     }
     toml::table t = parseToml(file);
+    warnUnknownKeys(file, t, {"variables", "variables.*"}, config.warnings);
     if (auto vars = t["variables"].as_table()) {
         for (auto&& [key, value] : *vars) {
-            config.variables[numberKey(file, key.str(), 1, 9999, "variable")] = numberValue(file, value, key.str());
+            config.variables[numberKey(file, key.str(), key.source(), 1, 9999, "variable")] = numberValue(file, value, key.str());
         }
     }
 }
@@ -292,7 +296,7 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         loadToolTable(dir, config);
         auto life = tools::loadToolLife(folder);
         if (auto* wrong = std::get_if<tools::LifeFileError>(&life)) {
-            return ConfigError{wrong->file + ":" + std::to_string(wrong->line), wrong->message};
+            return ConfigError{wrong->file, wrong->message, static_cast<int>(wrong->line)};
         }
         config.toolLife = std::move(std::get<tools::LifeData>(life));
     } catch (const Failure& f) {
@@ -302,6 +306,13 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         return ConfigError{e.path1().empty() ? folder : e.path1().string(), e.code().message()};
     }
     return config;
+}
+
+std::string ConfigError::where() const {
+    if (line <= 0) {
+        return file;
+    }
+    return file + ":" + std::to_string(line) + (column > 0 ? ":" + std::to_string(column) : std::string());
 }
 
 std::string bundledMachinesDirectory() {

@@ -72,6 +72,10 @@ struct MachineConfig {
 struct ConfigError {
     std::string file;
     std::string message;
+    int line = 0; // 1-based where the file says what is wrong; 0 when the whole file is
+    int column = 0;
+    // "file:line:col", "file:line" or "file", as messages name a place
+    std::string where() const;
 };
 
 std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& folder);

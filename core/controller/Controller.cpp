@@ -2,6 +2,7 @@
 #include "core/config/IoPorts.h"
 #include "core/common/Numeric.h"
 
+#include "core/config/ParameterLimits.h"
 #include "core/config/ParameterNumbers.h"
 #include "core/devices/Magazine.h"
 #include "core/gcode/Parser.h"
@@ -452,8 +453,8 @@ void Controller::fill(RunReport& out) const {
     out.tool = spindleTool();
     const devices::Magazine* magazine = magazine_.device();
     int capacity = config_.dialect->id == gcode::DialectId::M350
-                       ? saturatingInt(config_.parameters.get(param::kMagazineCapacity))
-                       : magazine ? magazine->pocketCount() : config_.magazineCapacity;
+                       ? config::magazineCapacity(config_.parameters)
+                       : magazine ? magazine->pocketCount() : std::clamp(config_.magazineCapacity, 0, config::kMostPockets);
     // Without a magazine device every tool has its own pocket, empty while it is in the spindle.
     for (int pocket = 1; pocket <= capacity; ++pocket) {
         if (magazine) {

@@ -124,8 +124,8 @@ public:
     // virtual-tool prompt asks; nothing when the key is not wired.
     void pressExternStart();
     // Parameters 0-999 as they stand, for the panel's teach buttons (135-137) and IO page. A write
-    // takes effect at once (setters, sensors, speeds); false for other numbers or a value that is
-    // not finite.
+    // takes effect at once (setters, sensors, speeds); false for other numbers, a value that is
+    // not finite or one that config::refusedParameterValue refuses.
     double parameter(int n) const;
     bool setParameter(int n, double value);
     // 断点加工 Break Run (StartAtLine.cpp). startAtLine starts the loaded program at `line` of the

@@ -2,6 +2,7 @@
 
 #include "core/common/Numeric.h"
 #include "core/config/IoPorts.h"
+#include "core/config/ParameterLimits.h"
 #include "core/config/ParameterNumbers.h"
 #include "core/devices/LinearRack.h"
 #include "core/devices/MultiHead.h"
@@ -61,7 +62,7 @@ void MagazineDriver::build() {
 void MagazineDriver::buildMultiHead() {
     const config::MagazineConfig& m = context_.config.magazine;
     const config::ParameterTable& p = context_.config.parameters;
-    multiHead_ = install(std::make_unique<devices::MultiHead>(saturatingInt(p.get(param::kMagazineCapacity)),
+    multiHead_ = install(std::make_unique<devices::MultiHead>(config::magazineCapacity(p),
                                                               p.get(param::kChangeZUp), m.tolerance,
                                                               saturatingInt(p.get(param::kCurrentTool))));
     // the head in use (param 800) was left down: its cylinder's output is on

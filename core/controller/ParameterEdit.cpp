@@ -1,5 +1,6 @@
 // Parameters as the panel reads and writes them (teach buttons, the IO page's polarity).
 #include "core/controller/Controller.h"
+#include "core/config/ParameterLimits.h"
 
 #include <cmath>
 
@@ -10,7 +11,7 @@ double Controller::parameter(int n) const {
 }
 
 bool Controller::setParameter(int n, double value) {
-    if (!config::ParameterTable::valid(n) || !std::isfinite(value)) {
+    if (!config::ParameterTable::valid(n) || !std::isfinite(value) || config::refusedParameterValue(n, value)) {
         return false;
     }
     config_.parameters.set(n, value);

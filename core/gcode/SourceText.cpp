@@ -210,6 +210,27 @@ std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::st
 
 std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path) {
 #if M350_HAVE_MMAP
+    // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below anyway.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return SourceReadError{path, "cannot open file: " + errnoMessage(errno)};
+    struct stat info {};
+    const bool statted = ::fstat(fd, &info) == 0;
+    ::close(fd);
+    if (!statted) return SourceReadError{path, "cannot read file: " + errnoMessage(errno)};
+    if (!S_ISREG(info.st_mode)) {
+        // /dev/zero or a FIFO never ends: reading one allocated until memory ran out
+        return SourceReadError{path, std::string("cannot read file: it is ") +
+                                         (S_ISDIR(info.st_mode)    ? "a folder"
+                                          : S_ISFIFO(info.st_mode) ? "a FIFO (named pipe)"
+                                          : S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode) ? "a device"
+                                                                                             : "not a regular file") +
+                                         ", not a program file"};
+    }
+    if (static_cast<std::uintmax_t>(info.st_size) > kMostSourceBytes) {
+        return SourceReadError{path, "cannot read file: it is " + std::to_string(info.st_size / (1024 * 1024)) +
+                                         " MiB; program files above " + std::to_string(kMostSourceBytes / (1024 * 1024)) +
+                                         " MiB are refused (they would not fit in memory once parsed)"};
+    }
     if (auto mapped = mapFile(path)) {
         std::string_view bytes = mapped->bytes();
         return decodeOwned(path, bytes, std::move(mapped));
@@ -220,7 +241,13 @@ std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path
     auto bytes = std::make_shared<std::string>();
     char buffer[16384];
     std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) bytes->append(buffer, n);
+    while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) {
+        if (bytes->size() + n > kMostSourceBytes) {
+            return SourceReadError{path, "cannot read file: it is longer than " +
+                                             std::to_string(kMostSourceBytes / (1024 * 1024)) + " MiB, the most a program file may be"};
+        }
+        bytes->append(buffer, n);
+    }
     if (std::ferror(file.get())) return SourceReadError{path, "cannot read file: " + errnoMessage(errno)};
     std::string_view view = *bytes;
     return decodeOwned(path, view, std::move(bytes));

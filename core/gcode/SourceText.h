@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -27,7 +28,11 @@ struct SourceReadError {
     std::string message;
 };
 
+// The largest program or library file read: parsed programs take many times their size.
+inline constexpr std::uintmax_t kMostSourceBytes = std::uintmax_t{256} * 1024 * 1024;
+
 // Maps the file (reads it where mapping is not possible) and decodes it as decodeSource does.
+// Folders, FIFOs, devices and files above kMostSourceBytes are refused with a message.
 std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path);
 
 // Strips a UTF-8 BOM, accepts strictly valid UTF-8 (pure ASCII included) as

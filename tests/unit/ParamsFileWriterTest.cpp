@@ -21,6 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::HasSubstr;
+using testing::EndsWith;
 using testing::StartsWith;
 
 std::string readText(const fs::path& file) {
@@ -95,7 +96,8 @@ TEST(ParamsFileWriter, AHandBrokenFileIsStillReportedWithItsLine) {
     ASSERT_TRUE(std::holds_alternative<ConfigError>(loaded));
     const ConfigError& error = std::get<ConfigError>(loaded);
     EXPECT_THAT(error.file, HasSubstr("params.toml"));
-    EXPECT_THAT(error.message, StartsWith("3:"));
+    EXPECT_EQ(error.line, 3);
+    EXPECT_THAT(error.where(), EndsWith("params.toml:3:6"));
 }
 
 // Runs `write` in a child process that the hook kills with SIGKILL, as a crash would.

@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <variant>
+
+#include <sys/stat.h>
 
 using namespace m350::gcode;
 
@@ -147,4 +150,23 @@ TEST(SourceText, ReadEmptyFile) {
     std::remove(path.c_str());
     EXPECT_EQ(text.text, "");
     EXPECT_EQ(text.encoding, TextEncoding::Utf8);
+}
+
+// Issue 13: /dev/zero or a FIFO as a program read until memory ran out (or waited for a writer
+// forever); a huge file is refused before it is mapped.
+TEST(SourceText, ReadRefusesFifosDevicesAndHugeFiles) {
+    EXPECT_EQ(expectError(readSourceFile("/dev/zero")), "cannot read file: it is a device, not a program file");
+    const std::string fifo = tempPath(".fifo");
+    std::remove(fifo.c_str());
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_EQ(expectError(readSourceFile(fifo)), "cannot read file: it is a FIFO (named pipe), not a program file");
+    std::remove(fifo.c_str());
+
+    const std::string huge = tempPath("_huge.nc");
+    {
+        std::ofstream out(huge, std::ios::binary);
+    }
+    std::filesystem::resize_file(huge, kMostSourceBytes + 1); // sparse: no disk used
+    EXPECT_NE(expectError(readSourceFile(huge)).find("program files above 256 MiB are refused"), std::string::npos);
+    std::remove(huge.c_str());
 }

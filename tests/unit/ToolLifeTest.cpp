@@ -244,7 +244,7 @@ TEST(ToolLife, TheMachineFolderLoadsItsLifeFileAndRefusesABadOne) {
     std::ofstream(folder / tools::kToolLifeFile) << "group 1 life 3 count\ntool 11 h 1 d 1 used 0\ngroup 1 life 2 count\n";
     auto refused = config::loadMachineFolder(folder.string());
     ASSERT_TRUE(std::holds_alternative<config::ConfigError>(refused));
-    EXPECT_EQ(std::get<config::ConfigError>(refused).file, (folder / tools::kToolLifeFile).string() + ":3");
+    EXPECT_EQ(std::get<config::ConfigError>(refused).where(), (folder / tools::kToolLifeFile).string() + ":3");
     EXPECT_EQ(std::get<config::ConfigError>(refused).message, "group 1 is given twice");
     fs::remove_all(folder);
 }

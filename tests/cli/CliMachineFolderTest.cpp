@@ -1,0 +1,123 @@
+// Issue 13: machine-folder values that hung m350-sim, allocated until memory ran out, read files
+// outside the folder or were silently ignored. Each is refused (or warned about) naming
+// file:line:col.
+#include "tests/cli/CliFixture.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <algorithm>
+
+namespace m350::clitest {
+
+namespace {
+
+class MachineFolderTest : public CliTest {
+  protected:
+    // A copy of a bundled machine in the scratch folder, as "machine".
+    fs::path copyMachine(const std::string& name = "m350-linear16") {
+        fs::path copy = dir_ / "machine";
+        fs::copy(fs::path(M350_MACHINES_DIR) / name, copy, fs::copy_options::recursive);
+        return copy;
+    }
+    static std::string read(const fs::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        return {std::istreambuf_iterator<char>(in), {}};
+    }
+    // Replaces the first `from` in `file` by `to`.
+    static void edit(const fs::path& file, const std::string& from, const std::string& to) {
+        std::string text = read(file);
+        ASSERT_NE(text.find(from), std::string::npos) << from;
+        text.replace(text.find(from), from.size(), to);
+        std::ofstream(file, std::ios::binary) << text;
+    }
+    // The run refuses the folder as a config error placed at `where` (file:line:col).
+    void expectConfigError(const std::vector<std::string>& args, const std::string& where, const std::string& says) {
+        ProcessResult r = sim(args);
+        EXPECT_EQ(r.exitStatus, kExitError) << r.err;
+        EXPECT_NE(r.err.find(where + ": "), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+        json alarm = output(r)["alarm"];
+        EXPECT_EQ(alarm.value("code", ""), "config_error") << alarm;
+        EXPECT_GT(alarm.value("line", 0), 0) << alarm;
+        EXPECT_GT(alarm.value("column", 0), 0) << alarm;
+    }
+};
+
+} // namespace
+
+// A capacity of 1e9 built a table of a billion pockets (1.7 GB in 20 s, then on); inf was ignored.
+TEST_F(MachineFolderTest, AHugeMagazineCapacityIsRefusedWhereverItIsGiven) {
+    fs::path machine = copyMachine();
+    edit(machine / "params.toml", "801 = 16", "801 = 1000000000");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:69:7", "magazine capacity");
+
+    ProcessResult option = sim({"mdi", "G0 X1", "--param", "801=1e9"});
+    EXPECT_EQ(option.exitStatus, kExitUsage) << option.err;
+    EXPECT_NE(option.err.find("parameter 801 (magazine capacity) must be a whole number from 0 to 999"),
+              std::string::npos)
+        << option.err;
+
+    fs::remove_all(machine);
+    machine = copyMachine("fanuc-0i");
+    const std::string text = read(fs::path(M350_MACHINES_DIR) / "fanuc-0i" / "machine.toml");
+    const std::string capacityLine = std::to_string(std::count(text.begin(), text.end(), '\n') + 2);
+    for (const char* capacity : {"1000000000", "inf", "-5", "2.5"}) {
+        std::ofstream(machine / "machine.toml", std::ios::binary) << text << "[magazine]\ncapacity = " << capacity << "\n";
+        expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:" + capacityLine + ":12",
+                          "'capacity' must be a whole number from 0 to 999");
+    }
+}
+
+// A library at /dev/zero or a FIFO read (or waited) forever; an absolute path outside the folder
+// was read and its lines echoed in the syntax errors.
+TEST_F(MachineFolderTest, ALibraryMustBeAProgramFileInsideTheFolder) {
+    fs::path machine = copyMachine();
+    edit(machine / "machine.toml", "g = \"slib-g.nc\"", "g = \"/dev/zero\"");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:7:5", "outside the machine folder");
+    edit(machine / "machine.toml", "g = \"/dev/zero\"", "g = \"/etc/passwd\"");
+    ProcessResult passwd = sim({"mdi", "G0 X1", "--config", "machine"});
+    EXPECT_EQ(passwd.exitStatus, kExitError);
+    EXPECT_EQ(passwd.err.find("root:"), std::string::npos) << passwd.err;
+    EXPECT_EQ(passwd.out.find("root:"), std::string::npos) << passwd.out;
+
+    ASSERT_EQ(::mkfifo((machine / "pipe.nc").c_str(), 0600), 0);
+    edit(machine / "machine.toml", "g = \"/etc/passwd\"", "g = \"pipe.nc\"");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:7:5", "FIFO");
+    fs::create_symlink("/dev/zero", machine / "zero.nc");
+    edit(machine / "machine.toml", "g = \"pipe.nc\"", "g = \"zero.nc\"");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:7:5", "device");
+
+    ProcessResult program = sim({"run", "machine/pipe.nc"});
+    EXPECT_EQ(program.exitStatus, kExitError) << program.err;
+    EXPECT_NE(program.err.find("not a program file"), std::string::npos) << program.err;
+}
+
+// Typos in the machine folder were silently ignored; `G54 = "abc"` too.
+TEST_F(MachineFolderTest, UnknownKeysAreWarnedAboutAndAWrongOffsetIsAnError) {
+    fs::path machine = copyMachine();
+    edit(machine / "machine.toml", "fork_depth = 30.0", "fork_dept = 30.0");
+    std::ofstream(machine / "params.toml", std::ios::app) << "[parms]\n61 = 3000\n";
+    ProcessResult r = sim({"mdi", "G0 X1", "--config", "machine"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_NE(r.err.find("machine/machine.toml:20:1: warning: unknown key 'magazine.fork_dept'"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("machine/params.toml:151:2: warning: unknown key 'parms'"), std::string::npos) << r.err;
+
+    std::ofstream(machine / "offsets.toml", std::ios::binary) << "# offsets\nG54 = \"abc\"\n";
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/offsets.toml:2:7", "G54 must be [X, Y, Z, A, B]");
+    std::ofstream(machine / "offsets.toml", std::ios::binary) << "G54 = [1.0, \"abc\"]\n";
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/offsets.toml:1:13", "must be a number");
+}
+
+// A TOML error or a nan named the line only inside the message, with line 0 in the JSON.
+TEST_F(MachineFolderTest, TomlErrorsAndBadValuesArePlacedByLineAndColumn) {
+    fs::path machine = copyMachine();
+    edit(machine / "params.toml", "811 = 6000", "811 = nan");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:77:7", "must be a finite number");
+    edit(machine / "params.toml", "811 = nan", "811 = = 6000");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:77:7", "");
+}
+
+} // namespace m350::clitest
