@@ -342,7 +342,7 @@ Controller::RunState Controller::advance(double seconds) {
     }
     while (state_ == RunState::Running && executor_->state() == macro::Executor::State::Running &&
            machine_.time() <= displayTime_ && !pendingDialog_) {
-        if (!(machine_.time() <= settings_.maxSimTime)) { // a clock gone nan stops here too
+        if (passedTimeLimit()) {
             std::ostringstream why;
             why << "the program ran " << settings_.maxSimTime
                 << " s of simulated time without ending (a loop waiting for an input that never comes?)";

@@ -290,6 +290,9 @@ private:
     void countCuttingTime(const machine::MachineEvent& event);
     void enterSafeState();
     void stepOnce();
+    // True once the machine's clock has passed --max-sim-time (or gone nan); the move or dwell
+    // under way is then stopped where the limit found it, so the report shows that moment.
+    bool passedTimeLimit();
     void raiseAlarm(const Alarm& alarm);
     void parseWithLibraries(gcode::Program& program, const std::string& path, std::string_view text,
                             gcode::FileRole role, const std::string& encoding,

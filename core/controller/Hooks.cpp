@@ -139,7 +139,7 @@ std::optional<Alarm> Controller::runHookProgramToEnd(const std::string& name) {
     const bool startPressed = std::exchange(pressStartWhenAwaited_, true);
     sensorWatch_.clear();
     while (executor_->state() == macro::Executor::State::Running) {
-        if (!(machine_.time() <= settings_.maxSimTime)) {
+        if (passedTimeLimit()) {
             executor_->raise(AlarmCode::SimulatedTimeLimit, name + " ran until the simulated time limit");
             break;
         }

@@ -171,4 +171,14 @@ void Controller::emergencyStop() {
     }
 }
 
+bool Controller::passedTimeLimit() {
+    if (machine_.time() <= settings_.maxSimTime) {
+        return false; // a clock gone nan fails this test too
+    }
+    if (std::isfinite(machine_.time())) {
+        machine_.interrupt(settings_.maxSimTime, true); // a move of years would report its end
+    }
+    return true;
+}
+
 } // namespace m350::controller

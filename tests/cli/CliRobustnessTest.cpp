@@ -106,3 +106,22 @@ TEST_F(CliTest, AToolOrVariableTheMachineCannotHaveIsAUsageError) {
 }
 
 } // namespace m350::clitest
+
+namespace m350::clitest {
+
+// Issue 13: a move of years (F0.001 over 100 m) ran to its end in one step; the report said the
+// limit's 10 s but showed 6e9 s and the move's end point.
+TEST_F(CliTest, ALongMoveStopsWhereTheTimeLimitFindsIt) {
+    ProcessResult r = sim({"mdi", "G1 X100000 F0.001", "--param", "166=1000000000", "--max-sim-time", "10"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    json j = output(r);
+    EXPECT_EQ(j["alarm"].value("code", ""), "simulated_time_limit") << j["alarm"];
+    EXPECT_DOUBLE_EQ(j.value("sim_time_s", 0.0), 10.0);
+    EXPECT_LT(j["machine"].value("X", 1e9), 1.0) << "X moves 0.001 mm/min from 0: " << j["machine"];
+
+    ProcessResult dwell = sim({"mdi", "G4 P99999999", "--max-sim-time", "10"});
+    EXPECT_EQ(dwell.exitStatus, kExitAlarm) << dwell.err;
+    EXPECT_DOUBLE_EQ(output(dwell).value("sim_time_s", 0.0), 10.0);
+}
+
+} // namespace m350::clitest
