@@ -2,21 +2,25 @@
 // 64 usage.
 #include "app/sim/HookCommand.h"
 #include "app/sim/ImportCommand.h"
+#include "app/sim/OutputPaths.h"
 #include "app/sim/ReportJson.h"
 #include "app/sim/SimOptions.h"
 #include "app/sim/ToolsCommand.h"
 #include "app/sim/ToolLifeJson.h"
 
-#include "core/config/AtomicFile.h"
+#include "core/config/OutputFile.h"
 #include "core/config/MachineConfig.h"
 #include "core/config/ParameterNumbers.h"
 #include "core/controller/Controller.h"
 #include "core/macro/VariableMap.h"
 #include "core/tools/ToolLifeFile.h"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <memory>
 
 namespace {
 
@@ -94,16 +98,12 @@ std::optional<std::string> writeExternalOutput(const controller::Controller& con
     if (!controller.externalOutputOpened()) {
         return std::nullopt;
     }
-    namespace fs = std::filesystem;
-    fs::path file = o.outputFile                                  ? fs::path(*o.outputFile)
-                    : o.command == sim::SimOptions::Command::Run ? fs::path(o.program).parent_path() / "dprnt.txt"
-                                                                 : fs::path("dprnt.txt"); // mdi, hook
-    if (auto problem = config::writeFileAtomically(file, controller.externalOutput())) {
-        std::cerr << "m350-sim: cannot write the external output (DPRNT) to " << file.string() << ": " << *problem
-                  << '\n';
+    const std::string file = sim::externalOutputPath(o);
+    if (auto problem = config::writeOutputFile(file, controller.externalOutput())) {
+        std::cerr << "m350-sim: cannot write the external output (DPRNT) to " << file << ": " << *problem << '\n';
         return problem;
     }
-    std::cerr << "m350-sim: external output (POPEN/DPRNT/PCLOS) written to " << file.string() << '\n';
+    std::cerr << "m350-sim: external output (POPEN/DPRNT/PCLOS) written to " << file << '\n';
     return std::nullopt;
 }
 
@@ -121,9 +121,18 @@ std::optional<std::string> saveToolLife(controller::Controller& controller, cons
     return std::nullopt;
 }
 
-} // namespace
+// A full disk or a closed pipe under stdout must not end the run with status 0.
+bool flushedStdout() {
+    errno = 0;
+    std::cout.flush();
+    if (std::cout && std::fflush(stdout) == 0) {
+        return true;
+    }
+    std::cerr << "m350-sim: cannot write the result to stdout: " << std::strerror(errno != 0 ? errno : EIO) << '\n';
+    return false;
+}
 
-int main(int argc, char** argv) {
+int runCommand(int argc, char** argv) {
     auto parsed = sim::parseCommandLine(argc, argv);
     if (!parsed.options) {
         return parsed.exitStatus;
@@ -162,13 +171,18 @@ int main(int argc, char** argv) {
                         o.program);
         }
     }
-    std::ofstream trace;
+    if (auto refused = sim::outputNamingAnInput(o, machineConfig)) {
+        std::cerr << "m350-sim: " << *refused << '\n';
+        return 64;
+    }
+    std::unique_ptr<config::OutputFile> trace;
     if (o.traceFile) {
-        trace.open(*o.traceFile, std::ios::trunc);
-        if (!trace) {
-            return fail("file_error", "cannot write the trace file", *o.traceFile);
+        auto opened = config::OutputFile::open(*o.traceFile);
+        if (auto* error = std::get_if<std::string>(&opened)) {
+            return fail("file_error", "cannot write the trace file: " + *error, *o.traceFile);
         }
-        o.settings.trace = &trace;
+        trace = std::move(std::get<std::unique_ptr<config::OutputFile>>(opened));
+        o.settings.trace = &trace->stream();
     }
     if (o.command != sim::SimOptions::Command::Check) {
         if (auto problem = checkAgainstMachine(o, machineConfig); problem || (problem = sim::missingHook(o, machineConfig))) {
@@ -206,6 +220,16 @@ int main(int argc, char** argv) {
     if (controller.toolLife().enabled()) {
         json["tool_life"] = sim::toolLifeJson(controller.toolLife());
     }
+    if (trace) {
+        if (auto problem = trace->commit()) {
+            std::cerr << "m350-sim: --trace: " << *problem << '\n';
+            outputProblem = problem;
+        }
+    }
+    if (outputProblem && json["alarm"].is_null()) { // what the run did was not all written: no success
+        json["status"] = "error";
+        json["alarm"] = sim::errorJson("file_error", *outputProblem, "")["alarm"];
+    }
     std::cout << sim::dump(json) << '\n';
     if (outputProblem) {
         return kExitError;
@@ -216,4 +240,11 @@ int main(int argc, char** argv) {
     case controller::RunStatus::Error: return kExitError;
     }
     return kExitError;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const int status = runCommand(argc, argv);
+    return flushedStdout() ? status : kExitError;
 }

@@ -1,0 +1,58 @@
+#include "app/sim/OutputPaths.h"
+
+#include <filesystem>
+#include <utility>
+#include <vector>
+
+namespace m350::sim {
+
+namespace fs = std::filesystem;
+
+std::string externalOutputPath(const SimOptions& o) {
+    if (o.outputFile) {
+        return *o.outputFile;
+    }
+    return o.command == SimOptions::Command::Run ? (fs::path(o.program).parent_path() / "dprnt.txt").string()
+                                                 : std::string("dprnt.txt");
+}
+
+std::optional<std::string> outputNamingAnInput(const SimOptions& o, const config::MachineConfig& machine) {
+    std::vector<std::pair<std::string, std::string>> outputs; // option, path
+    if (o.traceFile) {
+        outputs.emplace_back("--trace", *o.traceFile);
+    }
+    outputs.emplace_back(o.outputFile ? "--dprnt" : "the DPRNT output", externalOutputPath(o));
+    if (o.toolsOut) {
+        outputs.emplace_back("--tools-out", *o.toolsOut);
+    }
+    std::vector<std::pair<std::string, fs::path>> inputs; // what, path
+    if (!o.program.empty()) {
+        inputs.emplace_back("the program", o.program);
+    }
+    for (const config::LibraryFile& library : machine.libraries) {
+        inputs.emplace_back("a library", library.path);
+    }
+    if (o.toolTableFile) {
+        inputs.emplace_back("the --tool-table file", *o.toolTableFile);
+    }
+    std::error_code ec;
+    for (const fs::directory_entry& entry : fs::directory_iterator(machine.folder, ec)) {
+        if (entry.is_regular_file(ec) && entry.path().filename() != "dprnt.txt") { // dprnt.txt: an output
+            inputs.emplace_back("a file of the machine folder", entry.path());
+        }
+    }
+    for (const auto& [option, output] : outputs) {
+        if (!fs::is_regular_file(output, ec)) {
+            continue; // a new file, or /dev/null: no input of the run
+        }
+        for (const auto& [what, input] : inputs) {
+            if (fs::equivalent(output, input, ec)) {
+                return option + " " + output + " is " + what + " of this run (" + input.string() +
+                       "): refused, nothing was written";
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace m350::sim
