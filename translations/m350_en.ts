@@ -232,6 +232,40 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::CustomKeysPage</name>
+    <message>
+        <source>Manual</source>
+        <comment>msg 318</comment>
+        <translation>Manual</translation>
+    </message>
+    <message>
+        <source>%1 runs M#1996 (#1996 = M250-M263 for K01-K14). UP/DOWN/LEFT/RIGHT: key, ENTER: press.</source>
+        <translation>%1 runs M#1996 (#1996 = M250-M263 for K01-K14). UP/DOWN/LEFT/RIGHT: key, ENTER: press.</translation>
+    </message>
+    <message>
+        <source>No %1 in the machine folder: a key runs its M code (M250-M263) as MDI. UP/DOWN/LEFT/RIGHT: key, ENTER: press.</source>
+        <translation>No %1 in the machine folder: a key runs its M code (M250-M263) as MDI. UP/DOWN/LEFT/RIGHT: key, ENTER: press.</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <comment>msg 480</comment>
+        <translation>Manual</translation>
+    </message>
+    <message>
+        <source>Presses the selected FUNC key</source>
+        <translation>Presses the selected FUNC key</translation>
+    </message>
+    <message>
+        <source>CAM</source>
+        <comment>msg 482</comment>
+        <translation>CAM</translation>
+    </message>
+    <message>
+        <source>The CAM wizard pages (CAM.nc) are not simulated</source>
+        <translation>The CAM wizard pages (CAM.nc) are not simulated</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::IoPage</name>
     <message>
         <source>IO</source>
@@ -318,6 +352,14 @@
     <message>
         <source>Sim: clear fault</source>
         <translation>Sim: clear fault</translation>
+    </message>
+    <message>
+        <source>Sim: press</source>
+        <translation>Sim: press</translation>
+    </message>
+    <message>
+        <source>Simulator only: the selected input reads its active level for 0.3 s, as a key pressed</source>
+        <translation>Simulator only: the selected input reads its active level for 0.3 s, as a key pressed</translation>
     </message>
     <message>
         <source>Select a port first (UP/DOWN)</source>
@@ -2106,8 +2148,12 @@ STEP MPG</translation>
         <translation>%1: cannot write: %2</translation>
     </message>
     <message>
-        <source>K%1 stands for the panel key %2, which this panel does not press for it</source>
-        <translation>K%1 stands for the panel key %2, which this panel does not press for it</translation>
+        <source>External key %1</source>
+        <translation>External key %1</translation>
+    </message>
+    <message>
+        <source>%1 stands for the panel key %2, which this panel does not press for it</source>
+        <translation>%1 stands for the panel key %2, which this panel does not press for it</translation>
     </message>
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>
@@ -2483,6 +2529,79 @@ STEP MPG</translation>
         <source>File save failed!</source>
         <comment>msg 907</comment>
         <translation>File save failed!</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::CustomKeysPage</name>
+    <message>
+        <source>FUNC K01</source>
+        <comment>msg 150</comment>
+        <translation>FUNC K01</translation>
+    </message>
+    <message>
+        <source>FUNC K02</source>
+        <comment>msg 151</comment>
+        <translation>FUNC K02</translation>
+    </message>
+    <message>
+        <source>FUNC K03</source>
+        <comment>msg 152</comment>
+        <translation>FUNC K03</translation>
+    </message>
+    <message>
+        <source>FUNC K04</source>
+        <comment>msg 153</comment>
+        <translation>FUNC K04</translation>
+    </message>
+    <message>
+        <source>FUNC K05</source>
+        <comment>msg 154</comment>
+        <translation>FUNC K05</translation>
+    </message>
+    <message>
+        <source>FUNC K06</source>
+        <comment>msg 155</comment>
+        <translation>FUNC K06</translation>
+    </message>
+    <message>
+        <source>FUNC K07</source>
+        <comment>msg 156</comment>
+        <translation>FUNC K07</translation>
+    </message>
+    <message>
+        <source>FUNC K08</source>
+        <comment>msg 157</comment>
+        <translation>FUNC K08</translation>
+    </message>
+    <message>
+        <source>FUNC K09</source>
+        <comment>msg 158</comment>
+        <translation>FUNC K09</translation>
+    </message>
+    <message>
+        <source>FUNC K10</source>
+        <comment>msg 159</comment>
+        <translation>FUNC K10</translation>
+    </message>
+    <message>
+        <source>FUNC K11</source>
+        <comment>msg 160</comment>
+        <translation>FUNC K11</translation>
+    </message>
+    <message>
+        <source>FUNC K12</source>
+        <comment>msg 161</comment>
+        <translation>FUNC K12</translation>
+    </message>
+    <message>
+        <source>FUNC K13</source>
+        <comment>msg 162</comment>
+        <translation>FUNC K13</translation>
+    </message>
+    <message>
+        <source>FUNC K14</source>
+        <comment>msg 163</comment>
+        <translation>FUNC K14</translation>
     </message>
 </context>
 </TS>

@@ -232,6 +232,40 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::CustomKeysPage</name>
+    <message>
+        <source>Manual</source>
+        <comment>msg 318</comment>
+        <translation>定制功能</translation>
+    </message>
+    <message>
+        <source>%1 runs M#1996 (#1996 = M250-M263 for K01-K14). UP/DOWN/LEFT/RIGHT: key, ENTER: press.</source>
+        <translation>%1 执行 M#1996 (K01-K14 对应 #1996 = M250-M263)。上/下/左/右:选键,回车:按下。</translation>
+    </message>
+    <message>
+        <source>No %1 in the machine folder: a key runs its M code (M250-M263) as MDI. UP/DOWN/LEFT/RIGHT: key, ENTER: press.</source>
+        <translation>机床文件夹中没有 %1:按键以MDI方式执行其M代码(M250-M263)。上/下/左/右:选键,回车:按下。</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <comment>msg 480</comment>
+        <translation>手动操作</translation>
+    </message>
+    <message>
+        <source>Presses the selected FUNC key</source>
+        <translation>按下所选扩展按键</translation>
+    </message>
+    <message>
+        <source>CAM</source>
+        <comment>msg 482</comment>
+        <translation>CAM加工</translation>
+    </message>
+    <message>
+        <source>The CAM wizard pages (CAM.nc) are not simulated</source>
+        <translation>模拟器不提供CAM加工向导页面(CAM.nc)</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::IoPage</name>
     <message>
         <source>IO</source>
@@ -318,6 +352,14 @@
     <message>
         <source>Sim: clear fault</source>
         <translation>模拟:清除故障</translation>
+    </message>
+    <message>
+        <source>Sim: press</source>
+        <translation>模拟:按下</translation>
+    </message>
+    <message>
+        <source>Simulator only: the selected input reads its active level for 0.3 s, as a key pressed</source>
+        <translation>仅模拟:所选输入以有效电平保持0.3秒,如同按下按键</translation>
     </message>
     <message>
         <source>Select a port first (UP/DOWN)</source>
@@ -2106,8 +2148,12 @@ STEP MPG</source>
         <translation>%1: 无法写入: %2</translation>
     </message>
     <message>
-        <source>K%1 stands for the panel key %2, which this panel does not press for it</source>
-        <translation>K%1 定义为面板按键 %2, 本面板不支持由它触发</translation>
+        <source>External key %1</source>
+        <translation>扩展按键%1</translation>
+    </message>
+    <message>
+        <source>%1 stands for the panel key %2, which this panel does not press for it</source>
+        <translation>%1 定义为面板按键 %2, 本面板不支持由它触发</translation>
     </message>
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>
@@ -2483,6 +2529,79 @@ STEP MPG</source>
         <source>File save failed!</source>
         <comment>msg 907</comment>
         <translation>文件生成失败!</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::CustomKeysPage</name>
+    <message>
+        <source>FUNC K01</source>
+        <comment>msg 150</comment>
+        <translation>扩展按键01</translation>
+    </message>
+    <message>
+        <source>FUNC K02</source>
+        <comment>msg 151</comment>
+        <translation>扩展按键02</translation>
+    </message>
+    <message>
+        <source>FUNC K03</source>
+        <comment>msg 152</comment>
+        <translation>扩展按键03</translation>
+    </message>
+    <message>
+        <source>FUNC K04</source>
+        <comment>msg 153</comment>
+        <translation>扩展按键04</translation>
+    </message>
+    <message>
+        <source>FUNC K05</source>
+        <comment>msg 154</comment>
+        <translation>扩展按键05</translation>
+    </message>
+    <message>
+        <source>FUNC K06</source>
+        <comment>msg 155</comment>
+        <translation>扩展按键06</translation>
+    </message>
+    <message>
+        <source>FUNC K07</source>
+        <comment>msg 156</comment>
+        <translation>扩展按键07</translation>
+    </message>
+    <message>
+        <source>FUNC K08</source>
+        <comment>msg 157</comment>
+        <translation>扩展按键08</translation>
+    </message>
+    <message>
+        <source>FUNC K09</source>
+        <comment>msg 158</comment>
+        <translation>扩展按键09</translation>
+    </message>
+    <message>
+        <source>FUNC K10</source>
+        <comment>msg 159</comment>
+        <translation>扩展按键10</translation>
+    </message>
+    <message>
+        <source>FUNC K11</source>
+        <comment>msg 160</comment>
+        <translation>扩展按键11</translation>
+    </message>
+    <message>
+        <source>FUNC K12</source>
+        <comment>msg 161</comment>
+        <translation>扩展按键12</translation>
+    </message>
+    <message>
+        <source>FUNC K13</source>
+        <comment>msg 162</comment>
+        <translation>扩展按键13</translation>
+    </message>
+    <message>
+        <source>FUNC K14</source>
+        <comment>msg 163</comment>
+        <translation>扩展按键14</translation>
     </message>
 </context>
 </TS>

@@ -332,6 +332,7 @@ bool Controller::start() {
 
 Controller::RunState Controller::advance(double seconds) {
     displayTime_ += displayStep(seconds); // the handwheel guide may slow it, stop it or run it back
+    watchOperatorInputs();
     if (state_ != RunState::Running) {
         // Between runs the machine's clock follows the display's, so what devices drive in time
         // (a clamp cylinder the operator switched from the IO page) arrives while the panel watches.

@@ -5,6 +5,7 @@
 #include "core/config/IoPorts.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/ExternalDevices.h"
+#include "core/controller/KeyPress.h"
 #include "core/controller/ManualMotionState.h"
 #include "core/controller/PanelStatus.h"
 #include "core/controller/RunReport.h"
@@ -69,11 +70,7 @@ public:
     // The panel's K1-K7 (params 210-216) and the external keys 1-6 (params 272-277) (UserKeys.cpp):
     // 0 loads key-N.nc / extnc<N-1>-1.nc (start() then runs it), 1-21 switches that output over,
     // above 1000 is the code of the panel key it stands for, which the panel presses.
-    struct KeyPress {
-        enum class Kind { Hook, Output, PanelKey, Refused } kind = Kind::Refused;
-        int value = 0;   // the output or the panel key code
-        std::string why; // Refused: the reason
-    };
+    using KeyPress = controller::KeyPress;
     KeyPress pressUserKey(int key);
     KeyPress pressExternKey(int key);
     // FUNC K01-K14: #1996 = 249 + key, then ext_button.nc (`M#1996`), or that M code as MDI.
@@ -93,7 +90,7 @@ public:
     void hold();
     void resume();
     void reset();
-    void emergencyStop();
+    void emergencyStop(const std::string& why = {});
     RunState runState() const { return state_; }
     // Why the run holds when the program itself stopped (M00, M01 with the optional stop on, the
     // M350's G04 P-1): "M00 program stop (main.nc:12)"; empty for 暂停 or when running. resume()
@@ -123,6 +120,19 @@ public:
     // The operator presses the extern START key (param 599's input) for a moment, as the
     // virtual-tool prompt asks; nothing when the key is not wired.
     void pressExternStart();
+    // The operator's keys wired to inputs (OperatorInputs.cpp), read at every advance(): the extern
+    // E-stop (param 605) stops the machine while its input is active (RESET does not clear it while
+    // the key is held); a press of the extern START (599), PAUSE (602) or an external key 1-6
+    // (581-596) is queued for the panel, which acts on it as on its own key. START is no key press
+    // while a program runs: macros read it (the virtual-tool prompt). At most kOperatorKeyQueue
+    // presses wait; older ones are dropped.
+    struct OperatorKey {
+        enum class Kind { Start, Pause, ExternKey } kind;
+        int key = 0; // ExternKey: 1-6
+        bool operator==(const OperatorKey&) const = default;
+    };
+    static constexpr std::size_t kOperatorKeyQueue = 16;
+    std::vector<OperatorKey> takeOperatorKeys();
     // Parameters 0-999 as they stand, for the panel's teach buttons (135-137) and IO page. A write
     // takes effect at once (setters, sensors, speeds); false for other numbers, a value that is
     // not finite or one that config::refusedParameterValue refuses.
@@ -228,6 +238,8 @@ public:
     // Fault injection for training: input `pin` (1-24) stuck, delayed or bouncing from now on;
     // nullopt takes the fault off. `RunSettings::heldInputs` puts stuck faults on before a run.
     void setInputFault(int pin, std::optional<machine::InputFault> fault) { machine_.setInputFault(pin, fault); }
+    // A trainer presses what is wired to input `pin` for a moment: it reads `level` for `seconds`.
+    void pressInput(int pin, int level, double seconds) { machine_.pulseInput(pin, level, seconds); }
 
     // X, Y and Z always; the 4th and 5th axes when their home switch is set.
     std::vector<int> homeableAxes() const;
@@ -353,6 +365,10 @@ private:
     std::string programStop_;                        // see programStop()
     SensorWatch sensorWatch_;
     bool pressStartWhenAwaited_ = false; // run(): no operator, the controller presses START
+    void watchOperatorInputs();
+    std::array<bool, 9> operatorInputActive_{}; // the operator inputs' last state (OperatorInputs.cpp)
+    std::array<int, 9> operatorInputWiring_{};  // and the pin and level each was read on
+    std::vector<OperatorKey> operatorKeys_;
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     ExternalDevices devices_; // the external output device and the Modbus slaves

@@ -157,14 +157,16 @@ bool Controller::spindleJog(bool on) {
     return true;
 }
 
-void Controller::emergencyStop() {
+void Controller::emergencyStop(const std::string& why) {
     machine_.interrupt(displayTime_, true);
     toolLife_.cutShortAt(machine_.time());
     if (machine_.time() < displayTime_) {
         machine_.blockTime(displayTime_ - machine_.time());
     }
     remainder_ = {};
-    raiseAlarm(Alarm{AlarmCode::EmergencyStop, "急停 emergency stop: motion stopped at once, outputs off", "", 0, 0});
+    raiseAlarm(Alarm{AlarmCode::EmergencyStop,
+                     (why.empty() ? std::string("急停 emergency stop") : why) + ": motion stopped at once, outputs off",
+                     "", 0, 0});
     state_ = RunState::EStop;
     if (trace_) {
         trace_->runState(displayTime_, "estop");

@@ -99,7 +99,7 @@ QVector<Page::Softkey> IoPage::softkeys() const {
             {tr("Sim: slow 2 s"), true, extra},
             {tr("Sim: bouncing"), true, extra},
             {tr("Sim: clear fault"), true, extra},
-            {}};
+            {tr("Sim: press"), true, tr("Simulator only: the selected input reads its active level for 0.3 s, as a key pressed")}};
 }
 
 void IoPage::softkey(int number) {
@@ -122,6 +122,7 @@ void IoPage::softkey(int number) {
     case 9: forceSelected(MachineSession::Fault::Slow, 0); break;
     case 10: forceSelected(MachineSession::Fault::Bouncing, 0); break;
     case 11: forceSelected(MachineSession::Fault::None, 0); break;
+    case 12: pressSelected(); break;
     default: break;
     }
 }
@@ -154,6 +155,23 @@ void IoPage::forceSelected(MachineSession::Fault fault, int level) {
     constexpr double kBounceSeconds = 0.05;
     double seconds = fault == MachineSession::Fault::Slow ? kSlowSeconds : kBounceSeconds;
     context().session().forceInput(pin, fault, level, seconds);
+}
+
+// A key wired to the input (an external key, extern START) pressed once: its active level a moment.
+void IoPage::pressSelected() {
+    int row = table_->currentRow();
+    if (row < 0 || !rows_[row].input) {
+        context().notify(tr("Select an input port first (UP/DOWN)"));
+        return;
+    }
+    auto s = context().snapshot();
+    if (!s) {
+        return;
+    }
+    const config::ParameterTable& p = s->status.parameters;
+    constexpr double kPressSeconds = 0.3;
+    context().session().forceInput(pinOf(p, rows_[row].parameter), MachineSession::Fault::Pressed,
+                                   static_cast<int>(p.get(rows_[row].parameter + 2)), kPressSeconds);
 }
 
 bool IoPage::key(const QString& name) {

@@ -44,6 +44,7 @@ private:
     void rebuildTable(const PanelSnapshot& snapshot);
     void fillRow(int row, const PanelSnapshot& snapshot);
     void switchOutput(bool on);
+    void pressSelected();
     void forceSelected(MachineSession::Fault fault, int level);
     QTableWidget* table_;
     std::array<QLabel*, 24> inputs_{};

@@ -147,7 +147,7 @@ QVector<Page::Softkey> MonitorPage::softkeys() const {
             {tr("Go Home", "msg 315"), true, {}},
             {tr("Clear", "msg 316"), true, {}},
             {tr("Break Run", "msg 317"), true, {}},
-            {tr("Manual", "msg 318"), false, later},
+            {tr("Manual", "msg 318"), true, {}},
             {tr("Coord Set", "msg 319"), true, {}},
             {tr("MDI", "msg 320"), true, {}},
             {tr("Middle", "msg 321"), true, {}},
@@ -171,6 +171,7 @@ void MonitorPage::softkey(int number) {
     case 4: openMenu(Menu::GoHome); break;
     case 5: openMenu(Menu::Clear); break;
     case 6: emit navigate(QStringLiteral("breakrun")); break;
+    case 7: emit navigate(QStringLiteral("custom")); break;
     case 8: emit navigate(QStringLiteral("coord")); break;
     case 9: emit navigate(QStringLiteral("mdi")); break;
     case 10: emit navigate(QStringLiteral("middle")); break;

@@ -5,6 +5,7 @@
 #include "ui/i18n/Language.h"
 #include "ui/pages/BreakRunPage.h"
 #include "ui/pages/CoordPage.h"
+#include "ui/pages/CustomKeysPage.h"
 #include "ui/pages/IoPage.h"
 #include "ui/pages/LogPage.h"
 #include "ui/pages/MdiPage.h"
@@ -101,6 +102,7 @@ void MainWindow::addPages() {
     addPage(new ParamPage(context_, stack_));
     addPage(new SystemPage(context_, stack_));
     addPage(new ToolTablePage(context_, stack_));
+    addPage(new CustomKeysPage(context_, stack_));
 }
 
 void MainWindow::addPage(Page* page) {

@@ -52,6 +52,7 @@ void MachineSession::runHooks(const QVector<HookStep>& steps, Activity activity)
     post([steps, activity](SessionWorker& w) { w.runHooks(steps, activity); });
 }
 void MachineSession::userKey(int key) { post([key](SessionWorker& w) { w.userKey(key); }); }
+void MachineSession::functionKey(int key) { post([key](SessionWorker& w) { w.functionKey(key); }); }
 void MachineSession::home(const QVector<int>& axes) { post([axes](SessionWorker& w) { w.home(axes); }); }
 void MachineSession::zeroAxes(const QVector<int>& axes) { post([axes](SessionWorker& w) { w.zeroAxes(axes); }); }
 void MachineSession::setWorkPosition(int axis, double value) {

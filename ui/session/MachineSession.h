@@ -64,6 +64,8 @@ public:
     void runHooks(const QVector<HookStep>& steps, Activity activity);
     // K1-K7: what params 210-216 make of them (key-N.nc, an output, a panel key).
     void userKey(int key);
+    // FUNC K01-K14 of the 定制功能 page: ext_button.nc with #1996 = M250-M263, or that M code.
+    void functionKey(int key);
 
     // manual work
     // 回机械原点 (empty: all axes): fndzero.nc / fndX.nc .. when the machine folder has it, else
@@ -93,7 +95,7 @@ public:
     // IO page and parameters
     void setOutput(int port, int level);
     void setParameter(int number, double value);
-    enum class Fault { None, Stuck, Slow, Bouncing };
+    enum class Fault { None, Stuck, Slow, Bouncing, Pressed }; // Pressed: `level` for `seconds`, once
     void forceInput(int pin, Fault fault, int level, double seconds);
     // 参数恢复: every value at once, one write of params.toml (setParameter writes it each time).
     void setParameters(const std::map<int, double>& values);

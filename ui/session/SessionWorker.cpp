@@ -120,6 +120,7 @@ void SessionWorker::advance(double seconds) {
         activity_ = Activity::None;
     }
     continueSteps();
+    operatorKeys();
 }
 
 // An alarm enters the system log once, when the run falls into it.

@@ -4,6 +4,7 @@
 #include "ui/session/SessionLog.h"
 
 #include "core/config/ParameterTable.h"
+#include "core/controller/KeyPress.h"
 #include "core/tools/ToolData.h"
 
 #include <QElapsedTimer>
@@ -45,6 +46,7 @@ public:
     void home(const QVector<int>& axes);
     void runHooks(const QVector<MachineSession::HookStep>& steps, Activity activity);
     void userKey(int key);
+    void functionKey(int key);
     void zeroAxes(const QVector<int>& axes);
     void setWorkPosition(int axis, double value);
     void setVariable(int number, double value);
@@ -105,7 +107,9 @@ private:
     void startedAt(const char* event, bool started, const std::string& why);
     void startNextStep();
     void continueSteps(); // after a frame: the next step of runHooks when one ended well
-    void panelKey(int key, int code);
+    void panelKey(const QString& key, int code);
+    void keyPressed(const controller::KeyPress& press, const QString& key, const QString& hookFile);
+    void operatorKeys(); // the keys wired to inputs (extern START, PAUSE, external keys 1-6)
     void powerOn();
     QVector<MachineSession::HookStep> pendingSteps_; // of runHooks, after the one that runs
     Activity stepsActivity_ = Activity::None;

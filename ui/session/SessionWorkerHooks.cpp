@@ -97,16 +97,61 @@ void SessionWorker::userKey(int key) {
         return;
     }
     fileLoaded_ = false;
-    Controller::KeyPress press = controller_->pressUserKey(key);
+    keyPressed(controller_->pressUserKey(key), QStringLiteral("K%1").arg(key), QStringLiteral("key-%1.nc").arg(key));
+}
+
+void SessionWorker::functionKey(int key) {
+    lastError_.clear();
+    if (busy()) {
+        refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
+        return;
+    }
+    fileLoaded_ = false;
+    const bool hookRan = controller_->hasHook(config::Hook::ExtButton);
+    if (!controller_->loadFunctionKey(key)) {
+        refuse(loadErrors());
+        return;
+    }
+    if (controller_->start()) {
+        activity_ = Activity::Hook;
+        const QString name = QStringLiteral("FUNC K%1").arg(key, 2, 10, QLatin1Char('0'));
+        log_->record(hookRan ? "hook" : "mdi", hookRan ? name + QStringLiteral(": ext_button.nc") : name);
+    }
+    publish();
+}
+
+// A press of a key wired to an input, as the controller read it: START and PAUSE act as the
+// panel's own keys, an external key as a K key does (params 272-277 say what it does).
+void SessionWorker::operatorKeys() {
+    for (const Controller::OperatorKey& key : controller_->takeOperatorKeys()) {
+        switch (key.kind) {
+        case Controller::OperatorKey::Kind::Start: start(); break;
+        case Controller::OperatorKey::Kind::Pause: pause(); break;
+        case Controller::OperatorKey::Kind::ExternKey: {
+            const QString name = tr("External key %1").arg(key.key);
+            if (busy()) {
+                refuse(name + QStringLiteral(": ") + tr("A program is running: wait for it, or PAUSE / RESET first"));
+                break;
+            }
+            lastError_.clear();
+            fileLoaded_ = false;
+            keyPressed(controller_->pressExternKey(key.key), name, QStringLiteral("extnc%1-1.nc").arg(key.key - 1));
+            break;
+        }
+        }
+    }
+}
+
+void SessionWorker::keyPressed(const controller::KeyPress& press, const QString& key, const QString& hookFile) {
     switch (press.kind) {
     case Controller::KeyPress::Kind::Hook:
         if (controller_->start()) {
             activity_ = Activity::Hook;
-            log_->record("hook", QStringLiteral("K%1: key-%1.nc").arg(key));
+            log_->record("hook", key + QStringLiteral(": ") + hookFile);
         }
         break;
     case Controller::KeyPress::Kind::Output:
-        log_->record("output", QStringLiteral("K%1: OUT%2").arg(key).arg(press.value, 2, 10, QLatin1Char('0')));
+        log_->record("output", key + QStringLiteral(": OUT%1").arg(press.value, 2, 10, QLatin1Char('0')));
         break;
     case Controller::KeyPress::Kind::PanelKey: panelKey(key, press.value); return;
     case Controller::KeyPress::Kind::Refused: refuse(QString::fromStdString(press.why)); return;
@@ -115,7 +160,7 @@ void SessionWorker::userKey(int key) {
 }
 
 // A K key set to a panel key code acts as that key, for the keys that act on the machine.
-void SessionWorker::panelKey(int key, int code) {
+void SessionWorker::panelKey(const QString& key, int code) {
     switch (code) {
     case kGoWorkZero: // the Monitor page's softkey for all axes
         runHooks({goToWorkZeroStep({0, 1, 2})}, Activity::Mdi);
@@ -128,7 +173,7 @@ void SessionWorker::panelKey(int key, int code) {
     case kM5: spindleKey(5); return;
     case kM4: spindleKey(4); return;
     case kM3: spindleKey(3); return;
-    default: refuse(tr("K%1 stands for the panel key %2, which this panel does not press for it").arg(key).arg(code));
+    default: refuse(tr("%1 stands for the panel key %2, which this panel does not press for it").arg(key).arg(code));
     }
 }
 

@@ -112,6 +112,10 @@ void SessionWorker::forceInput(int pin, MachineSession::Fault fault, int level, 
     case MachineSession::Fault::Stuck: put = machine::InputFault::stuck(level); break;
     case MachineSession::Fault::Slow: put = machine::InputFault::delayed(seconds); break;
     case MachineSession::Fault::Bouncing: put = machine::InputFault::bouncing(seconds); break;
+    case MachineSession::Fault::Pressed:
+        controller_->pressInput(pin, level, seconds);
+        publish();
+        return;
     }
     controller_->setInputFault(pin, put);
     publish();

@@ -1,0 +1,14 @@
+#pragma once
+
+#include <string>
+
+namespace m350::controller {
+
+// What a press of a K key or an external key did (Controller::pressUserKey, pressExternKey).
+struct KeyPress {
+    enum class Kind { Hook, Output, PanelKey, Refused } kind = Kind::Refused;
+    int value = 0;   // the output or the panel key code
+    std::string why; // Refused: the reason
+};
+
+} // namespace m350::controller
