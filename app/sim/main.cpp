@@ -50,9 +50,8 @@ int fail(const std::string& code, const std::string& message, const std::string&
     return kExitError;
 }
 
-int check(controller::Controller& controller, const sim::SimOptions& o) {
-    controller.loadFile(o.program);
-    const auto& diagnostics = controller.diagnostics();
+// check's layout: every finding on stderr, {"status", "diagnostics"} on stdout.
+int checkResult(const std::vector<gcode::Diagnostic>& diagnostics) {
     printDiagnostics(diagnostics);
     bool errors = false;
     for (const gcode::Diagnostic& d : diagnostics) {
@@ -61,6 +60,16 @@ int check(controller::Controller& controller, const sim::SimOptions& o) {
     nlohmann::json j{{"status", errors ? "error" : "ok"}, {"diagnostics", sim::diagnosticsJson(diagnostics)}};
     std::cout << sim::dump(j) << '\n';
     return errors ? kExitError : kExitOk;
+}
+
+int check(controller::Controller& controller, const sim::SimOptions& o) {
+    controller.loadFile(o.program);
+    std::vector<gcode::Diagnostic> diagnostics = controller.diagnostics();
+    if (!gcode::hasBlockingError(diagnostics)) {
+        std::vector<gcode::Diagnostic> findings = controller.checkWithoutRunning();
+        diagnostics.insert(diagnostics.end(), findings.begin(), findings.end());
+    }
+    return checkResult(diagnostics);
 }
 
 // What the command line asks of this machine: a tool it can hold, variables a run may set. Said
@@ -162,13 +171,17 @@ int runCommand(int argc, char** argv) {
     if (o.command == sim::SimOptions::Command::Run || o.command == sim::SimOptions::Command::Check) {
         std::error_code ec; // a symlink loop or an unreadable folder is an error, not an abort
         const std::filesystem::file_status status = std::filesystem::status(o.program, ec);
+        std::optional<std::string> unreadable;
         if (ec || !std::filesystem::exists(status)) {
-            return fail("file_error", "cannot open program: " + (ec ? ec.message() : std::string("no such file")),
-                        o.program);
+            unreadable = "cannot open program: " + (ec ? ec.message() : std::string("no such file"));
+        } else if (!std::filesystem::is_regular_file(status)) {
+            unreadable = "cannot open program: it is a folder, FIFO or device, not a program file";
         }
-        if (!std::filesystem::is_regular_file(status)) {
-            return fail("file_error", "cannot open program: it is a folder, FIFO or device, not a program file",
-                        o.program);
+        if (unreadable && o.command == sim::SimOptions::Command::Check) {
+            return checkResult({{gcode::Severity::Error, gcode::DiagnosticKind::Syntax, o.program, 0, 0, *unreadable}});
+        }
+        if (unreadable) {
+            return fail("file_error", *unreadable, o.program);
         }
     }
     if (auto refused = sim::outputNamingAnInput(o, machineConfig)) {

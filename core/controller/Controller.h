@@ -137,6 +137,10 @@ public:
     // takes effect at once (setters, sensors, speeds); false for other numbers, a value that is
     // not finite or one that config::refusedParameterValue refuses.
     double parameter(int n) const;
+    // What the loaded program (its main or MDI file) would alarm on that is knowable without
+    // running it: a word twice in a block, an unknown G code, a variable that does not exist or is
+    // read-only, 1/0 in constants, an O program calling itself unconditionally (StaticCheck.cpp).
+    std::vector<gcode::Diagnostic> checkWithoutRunning();
     bool setParameter(int n, double value);
     // 断点加工 Break Run (StartAtLine.cpp). startAtLine starts the loaded program at `line` of the
     // main file (the first block at or after it, the first time the program reaches it): the

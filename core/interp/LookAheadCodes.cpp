@@ -44,6 +44,8 @@ const ModeCode* modeOf(double value) {
 
 } // namespace
 
+bool ModalInterpreter::isLookAheadCode(double value) { return modeOf(value) != nullptr; }
+
 bool ModalInterpreter::isLookAheadBlock(const Words& words) {
     for (const WordValue& g : words.g) {
         if (modeOf(g.value)) {

@@ -238,6 +238,20 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
     }
 }
 
+bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, double value) {
+    if (dialect.lookAheadCodes && isLookAheadCode(value)) {
+        return true;
+    }
+    const int code = roundToInt(value);
+    if (std::abs(value - code) > 1e-6) {
+        return false;
+    }
+    switch (code) {
+    case 4: case 10: case 28: case 30: case 31: case 52: case 53: case 92: return true; // applyGCodes, moveAxes
+    default: return groupOf(code) > 0;
+    }
+}
+
 void ModalInterpreter::applyGCodes(const Words& words) {
     std::array<bool, 23> seen{};
     for (const WordValue& g : words.g) {

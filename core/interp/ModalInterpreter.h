@@ -42,6 +42,9 @@ public:
 
     macro::BlockOutcome execute(const macro::EvaluatedBlock& block) override;
     CycleContext cycleContext() const override;
+    // Whether execute() acts on G`value` itself (not a macro call or a library's handler): what
+    // `check` uses to say a G code is unknown without running.
+    static bool knowsGCode(const gcode::Dialect& dialect, double value);
 
     const ModalState& state() const { return state_; }
     ModalState& state() { return state_; }
@@ -118,6 +121,7 @@ private:
     void applyGCodes(const Words& words);
     bool lookAheadCode(const macro::WordValue& g, const Words& words);
     static bool isLookAheadBlock(const Words& words);
+    static bool isLookAheadCode(double value);
     void moveAxes(const Words& words);
     machine::Axes targetFor(const Words& words, bool machineCoordinates) const;
     void setCoordinateSystem(const Words& words); // G92, G52

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 namespace m350::macro {
 
@@ -61,13 +62,25 @@ Value Evaluator::evaluate(gcode::ExprId id) {
     return Value::of(0);
 }
 
+namespace {
+
+// 99999999 or 1e+308, not std::to_string's 309 digits and six decimals.
+std::string readableNumber(double n) {
+    std::ostringstream text;
+    text.precision(15);
+    text << n;
+    return text.str();
+}
+
+} // namespace
+
 int Evaluator::variableNumber(gcode::ExprId variableNode) {
     const ExprNode& node = pool_[variableNode];
     double n = node.lhs == gcode::kNoExpr ? node.number : number(node.lhs);
     double rounded = std::round(n);
     if (std::abs(n - rounded) > 1e-6 || rounded < 0 || rounded > VariableMap::kMaxVariable) {
         throw MacroError{AlarmCode::UndefinedVariable,
-                         "#[" + std::to_string(n) + "]: variable numbers are whole numbers from 0 to " +
+                         "#[" + readableNumber(n) + "]: variable numbers are whole numbers from 0 to " +
                              std::to_string(VariableMap::kMaxVariable),
                          node.column};
     }

@@ -1,0 +1,73 @@
+// Issue 13: `check` said ok to programs that alarm on line 1. What is knowable without running is
+// reported in check's layout, at the place the run's alarm names.
+#include "tests/cli/CliFixture.h"
+
+#include <gtest/gtest.h>
+
+namespace m350::clitest {
+
+namespace {
+
+struct Expected {
+    const char* program;
+    int line;
+    int column;
+    const char* message;
+};
+
+} // namespace
+
+TEST_F(CliTest, CheckReportsWhatWouldAlarmWithoutRunning) {
+    const Expected cases[] = {
+        {"G1 X1 X2\n", 1, 7, "X appears twice in one block"},
+        {"G999999\n", 1, 1, "G999999: not a G code this machine knows"},
+        {"#99999999=5\n", 1, 1, "#[99999999]: variable numbers are whole numbers from 0 to 9999"},
+        {"#1=#[1E0]\n", 0, 0, ""}, // an E exponent is a parse error already (not checked further)
+        {"#1520=1\n", 1, 1, "cannot write #1520 (input IN01): it is read-only"},
+        {"#1=1/0\n", 1, 5, "division by zero"},
+        {"G0 X1\n#2=#[2+3]+#[99999+1]\n", 2, 11, "#[100000]: variable numbers are whole numbers from 0 to 9999"},
+        {"M98 P200\nM30\nO200\nG0 X1\nM98 P200\nM99\n", 5, 5, "O200 calls itself on every pass"},
+    };
+    for (const Expected& c : cases) {
+        write("c.nc", c.program);
+        ProcessResult r = sim({"check", "c.nc"});
+        EXPECT_EQ(r.exitStatus, kExitError) << c.program << r.err;
+        json j = output(r);
+        EXPECT_EQ(j.value("status", ""), "error") << c.program;
+        ASSERT_FALSE(j["diagnostics"].empty()) << c.program;
+        if (c.line == 0) {
+            continue;
+        }
+        const json& d = j["diagnostics"][0];
+        EXPECT_EQ(d.value("line", 0), c.line) << c.program << d;
+        EXPECT_EQ(d.value("column", 0), c.column) << c.program << d;
+        EXPECT_NE(d.value("message", "").find(c.message), std::string::npos) << c.program << d;
+        EXPECT_NE(r.err.find("c.nc:" + std::to_string(c.line) + ":" + std::to_string(c.column) + ": " + c.message),
+                  std::string::npos)
+            << r.err;
+        ProcessResult run = sim({"run", "c.nc", "--max-sim-time", "5"});
+        EXPECT_EQ(run.exitStatus, kExitAlarm) << c.program << " the run alarms too: " << run.err;
+    }
+}
+
+TEST_F(CliTest, CheckDoesNotFlagWhatMayBeFine) {
+    for (const char* program : {"G65 P100 I1 J2 K3 I4 J5 K6\nM30\nO100\nM99\n", // argument spec II repeats I J K
+                                "O100\n#1=#1+1\nIF [#1 LT 3] GOTO 9\nM99\nN9 M98 P100\nM99\n", // a guarded self-call
+                                "#1=#100/#101\nG1 X#[#1+1] F100\nM30\n", "G54 G0 X1\nG4 P100\nM30\n"}) {
+        write("ok.nc", program);
+        ProcessResult r = sim({"check", "ok.nc"});
+        EXPECT_EQ(r.exitStatus, kExitOk) << program << r.err;
+    }
+}
+
+TEST_F(CliTest, CheckOnAMissingFileKeepsTheCheckLayout) {
+    ProcessResult r = sim({"check", "missing.nc"});
+    EXPECT_EQ(r.exitStatus, kExitError);
+    json j = output(r);
+    EXPECT_EQ(keysOf(j), (std::set<std::string>{"status", "diagnostics"})) << j;
+    ASSERT_EQ(j["diagnostics"].size(), 1u);
+    EXPECT_EQ(j["diagnostics"][0].value("file", ""), "missing.nc");
+    EXPECT_NE(j["diagnostics"][0].value("message", "").find("cannot open program"), std::string::npos);
+}
+
+} // namespace m350::clitest
