@@ -132,6 +132,12 @@ std::optional<std::string> hookPath(const std::string& folder, Hook hook) {
 
 std::optional<Hook> homeAxisHook(int axis) { return offset(Hook::HomeX, axis, 5); }
 std::optional<Hook> absoluteAxisHook(int axis) { return offset(Hook::AbsX, axis, 5); }
+std::optional<Hook> goHomeHook(std::optional<int> axis, bool absoluteEncoders) {
+    if (!axis) {
+        return absoluteEncoders ? Hook::AbsZero : Hook::HomeAll;
+    }
+    return absoluteEncoders ? absoluteAxisHook(*axis) : homeAxisHook(*axis);
+}
 std::optional<Hook> userKeyHook(int key) { return offset(Hook::Key1, key - 1, 7); }
 std::optional<Hook> externKeyHook(int key) { return offset(Hook::ExtKey1, key - 1, 6); }
 

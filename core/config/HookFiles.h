@@ -83,6 +83,9 @@ std::optional<std::string> hookPath(const std::string& folder, Hook hook);
 // The hooks of numbered keys and axes; nullopt outside their range.
 std::optional<Hook> homeAxisHook(int axis);     // 0 X .. 4 B
 std::optional<Hook> absoluteAxisHook(int axis); // 0 X .. 4 B
+// The panel's Go Home: all axes (axis nullopt) or one; fndzero.nc / fndX.nc, or with absolute
+// servos (param 100 = 1) abszero.nc / absX.nc.
+std::optional<Hook> goHomeHook(std::optional<int> axis, bool absoluteEncoders);
 std::optional<Hook> userKeyHook(int key);       // K1-K7
 std::optional<Hook> externKeyHook(int key);     // external keys 1-6
 std::optional<Hook> mCodeKeyHook(int code);     // 3 4 5 8 9 10 11 19

@@ -35,6 +35,7 @@ inline constexpr int kHomingCycles = 106;          // approaches to the switch
 inline constexpr int kHomingSpeedX = 107;          // 107-111, mm/min (deg/min)
 inline constexpr int kHomingDirectionX = 112;      // 112-116: 0 negative, 1 positive
 inline constexpr int kHomingSecondSpeed = 118;     // mm/min of the precise approaches (0: a tenth of the first)
+inline constexpr int kHomeMode = 100;              // 机械零点方式: 0 home switches, 1 absolute servos
 inline constexpr int kHomeAfterBooting = 127;      // 0 = prompt 是否进行开机寻零操作? at boot
 inline constexpr int kHomeSwitchX = 545;           // input triples 545, 548, 551, 554, 557: pin, enable, level
 inline constexpr int kModbusRtu = 279;              // Modbus RTU: 0 off, 1 on (MSETDATA / MGETDATA)

@@ -69,9 +69,11 @@ void Controller::configureMachine() {
     limits.maxSpindleRpm = positive(p.get(param::kMaxSpindleRpm), 24000.0);
     machine_.setLimits(limits);
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
-        if (auto home = config::wiredInput(p, param::kHomeSwitchX + 3 * axis)) {
-            machine_.presetInput(home->pin, 1 - home->activeLevel); // released: not the active level
-        }
+        machine::HomeSwitch homeSwitch = machine_.homeSwitch(axis); // it stays where it is
+        auto home = config::wiredInput(p, param::kHomeSwitchX + 3 * axis);
+        homeSwitch.port = home ? home->pin : 0;
+        homeSwitch.activeLevel = home ? home->activeLevel : 0;
+        machine_.setHomeSwitch(axis, homeSwitch);
     }
     machine::ToolSetter setter;
     if (auto input = config::wiredInput(p, param::kFixedSetterInput)) {
@@ -127,6 +129,7 @@ void Controller::applySettings() {
         }
     }
     machine_.setPosition(start);
+    placeHomeSwitches();
     for (auto [number, value] : config_.variables) {
         store_.write(store_.map().describe(number), number, macro::Value::of(value));
     }

@@ -370,6 +370,7 @@ private:
     SensorWatch sensorWatch_;
     bool pressStartWhenAwaited_ = false; // run(): no operator, the controller presses START
     void watchOperatorInputs();
+    void placeHomeSwitches(); // Homing.cpp
     std::array<bool, 9> operatorInputActive_{}; // the operator inputs' last state (OperatorInputs.cpp)
     std::array<int, 9> operatorInputWiring_{};  // and the pin and level each was read on
     std::vector<OperatorKey> operatorKeys_;

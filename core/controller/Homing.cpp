@@ -52,6 +52,21 @@ std::optional<Alarm> Controller::home(const std::vector<int>& axes) {
     return std::nullopt;
 }
 
+// The home switches of the simulated world: before the first homing each lies the machine folder's
+// switch distance ([homing] switch_distance) away in the homing direction; a machine that starts
+// homed stands kBackOff off them, where homing leaves it. A macro that homes by G31 or by reading
+// the switch while it moves (a factory O501) finds them there too.
+void Controller::placeHomeSwitches() {
+    const machine::Axes position = machine_.position();
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        machine::HomeSwitch homeSwitch = machine_.homeSwitch(axis);
+        homeSwitch.side = config_.parameters.get(param::kHomingDirectionX + axis) != 0.0 ? 1.0 : -1.0;
+        homeSwitch.at = position(axis) + homeSwitch.side * (settings_.homed ? kBackOff
+                                                                             : config_.homeSwitchDistance[static_cast<std::size_t>(axis)]);
+        machine_.setHomeSwitch(axis, homeSwitch);
+    }
+}
+
 std::optional<Alarm> Controller::homeAxis(int axis) {
     const config::ParameterTable& p = config_.parameters;
     const char name = machine::kAxisNames[static_cast<std::size_t>(axis)];
@@ -71,12 +86,10 @@ std::optional<Alarm> Controller::homeAxis(int axis) {
     const int cycles = std::max(1, saturatingInt(p.get(param::kHomingCycles)));
     const double home = p.get(param::kHomePositionX + axis);
 
-    // Where the switch is, seen from here: the simulated world says so before the first homing;
-    // afterwards the switch sits kBackOff beyond the home position.
+    // the switch is where the simulated world has it (placeHomeSwitches); from beyond it the
+    // approach starts at once
     machine::Axes position = machine_.position();
-    double distance = homed_[static_cast<std::size_t>(axis)]
-                          ? std::abs(home + direction * kBackOff - position(axis))
-                          : config_.homeSwitchDistance[static_cast<std::size_t>(axis)];
+    const double distance = std::max(0.0, (machine_.homeSwitch(axis).at - position(axis)) * direction);
     auto moveBy = [&](double delta, double feed) {
         position(axis) += delta;
         machine_.feed(position, feed);

@@ -34,6 +34,18 @@ struct ToolSetter {
     double top = -100.0;   // machine Z the spindle nose would have at contact with a zero-length tool
 };
 
+// A home switch of the simulated world on one axis: pressed while the axis stands at `at` or
+// beyond it on the switch's side (`side` -1 or +1, the homing direction). `at` is a machine
+// coordinate; when homing gives the axes new coordinates the switch stays where it physically is.
+struct HomeSwitch {
+    int port = 0; // input 1-24, 0 when none
+    int activeLevel = 0;
+    double at = 0.0;
+    double side = -1.0;
+
+    bool pressedAt(double position) const { return (position - at) * side >= -1e-9; }
+};
+
 // The result of a G31 move.
 struct ProbeResult {
     bool triggered = false;

@@ -67,6 +67,8 @@ public:
     void setToolSetter(const ToolSetter& setter) { setter_ = setter; }
     // The floating setter (浮动对刀块): a block lying on the work; its `top` trips wherever X and Y are.
     void setFloatingSetter(const ToolSetter& setter) { floatingSetter_ = setter; }
+    void setHomeSwitch(int axis, const HomeSwitch& homeSwitch) { homeSwitches_[static_cast<std::size_t>(axis)] = homeSwitch; }
+    const HomeSwitch& homeSwitch(int axis) const { return homeSwitches_[static_cast<std::size_t>(axis)]; }
     // The true length of the tool in the spindle (the simulated world's fact, not a parameter).
     void setToolLength(double length) { toolLength_ = length; }
     void dwell(double seconds) override;
@@ -82,7 +84,8 @@ public:
     int input(int port) override;
 
     Axes position() const override { return position_; }
-    void setPosition(const Axes& position) override { position_ = position; }
+    // New coordinates for where the axes stand (homing): the home switches stay where they are.
+    void setPosition(const Axes& position) override;
     double time() const override { return time_; }
     SpindleState spindleState() const override { return spindle_; }
     double spindleRpm() const override { return rpm_; }
@@ -209,6 +212,9 @@ private:
     bool setterPressed(const ToolSetter& setter, const Axes& at) const;
     std::optional<double> setterCrossing(const ToolSetter& setter, const Axes& target, int level) const;
     const ToolSetter* setterOn(int port) const;
+    std::array<HomeSwitch, kAxisCount> homeSwitches_{};
+    std::optional<int> homeSwitchAxisOn(int port) const;
+    std::optional<double> homeSwitchCrossing(int axis, const Axes& target, int level) const;
     SpindleState spindle_ = SpindleState::Stop;
     double rpm_ = 0.0;
     double spindleStopsAt_ = 0.0;

@@ -126,6 +126,11 @@ SimulatedMachine::Signal SimulatedMachine::signalAt(int port, double t) const {
         int level = setterPressed(*setter, positionAt(t)) ? setter->activeLevel : 1 - setter->activeLevel;
         return {level, 1 - level, -1e300};
     }
+    if (auto axis = homeSwitchAxisOn(port)) {
+        const HomeSwitch& s = homeSwitches_[static_cast<std::size_t>(*axis)];
+        int level = s.pressedAt(positionAt(t)(*axis)) ? s.activeLevel : 1 - s.activeLevel;
+        return {level, 1 - level, -1e300};
+    }
     if (auto driven = drivenSignal(index, t)) {
         return *driven;
     }

@@ -1,4 +1,4 @@
-// The tool setters of the simulated world and G31 against them.
+// The tool setters and home switches of the simulated world, and G31 against them.
 #include "core/machine/SimulatedMachine.h"
 
 #include <algorithm>
@@ -20,6 +20,39 @@ const ToolSetter* SimulatedMachine::setterOn(int port) const {
         }
     }
     return nullptr;
+}
+
+void SimulatedMachine::setPosition(const Axes& position) {
+    for (int axis = 0; axis < kAxisCount; ++axis) {
+        homeSwitches_[static_cast<std::size_t>(axis)].at += position(axis) - position_(axis);
+    }
+    position_ = position;
+}
+
+std::optional<int> SimulatedMachine::homeSwitchAxisOn(int port) const {
+    for (int axis = 0; axis < kAxisCount; ++axis) {
+        if (port != 0 && homeSwitches_[static_cast<std::size_t>(axis)].port == port) {
+            return axis;
+        }
+    }
+    return std::nullopt;
+}
+
+// Where along the move from here to `target` (0..1) the axis reaches its switch (pressing it) or
+// leaves it (releasing it).
+std::optional<double> SimulatedMachine::homeSwitchCrossing(int axis, const Axes& target, int level) const {
+    const HomeSwitch& s = homeSwitches_[static_cast<std::size_t>(axis)];
+    const double d = target(axis) - position_(axis);
+    const bool pressing = level == s.activeLevel;
+    if (pressing ? d * s.side <= 0.0 : d * s.side >= 0.0) {
+        return std::nullopt;
+    }
+    constexpr double kRelease = 1e-6; // mm past the switch point, where it reads released
+    const double fraction = (s.at - (pressing ? 0.0 : s.side * kRelease) - position_(axis)) / d;
+    if (fraction < 0.0 || fraction > 1.0) {
+        return std::nullopt;
+    }
+    return fraction;
 }
 
 // Where along the straight move from here to `target` (0..1) the setter's switch comes to `level`:
@@ -53,8 +86,14 @@ ProbeResult SimulatedMachine::probe(const Axes& target, double feed, int port, i
     Axes stop = target;
     const std::optional<InputFault>& fault = faults_[static_cast<std::size_t>(port - 1)];
     const ToolSetter* setter = setterOn(port);
+    const std::optional<int> homeAxis = homeSwitchAxisOn(port);
     const bool stuck = fault && fault->kind == InputFault::Kind::Stuck;
-    if (auto crossing = setter && !stuck ? setterCrossing(*setter, target, level) : std::nullopt) {
+    std::optional<double> crossing;
+    if (!stuck) {
+        crossing = setter ? setterCrossing(*setter, target, level)
+                          : homeAxis ? homeSwitchCrossing(*homeAxis, target, level) : std::nullopt;
+    }
+    if (crossing) {
         const double length = (target - position_).norm();
         const double lateness = fault && fault->kind == InputFault::Kind::Delayed ? fault->seconds : 0.0;
         const double along = *crossing * length + feed * feedOverride_ / 60.0 * lateness;

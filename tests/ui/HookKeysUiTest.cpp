@@ -53,6 +53,25 @@ TEST(HookKeys, GoHomeAllRunsTheFoldersFndzeroAndOneAxisItsFndFile) {
     EXPECT_EQ(panel.session().latest()->activity, ui::Activity::None);
 }
 
+TEST(HookKeys, GoHomeWithAbsoluteServosRunsAbszeroAndAbsZ) {
+    PanelHarness panel(unhomed());
+    panel.advance(0.1);
+    panel.key("ESC"); // the boot homing prompt: not now
+    panel.session().setParameter(100, 1); // 机械零点方式: absolute servos
+    writeHook(panel.folder(), "fndzero.nc", "#1560=1\nM98P501X2\n");
+    writeHook(panel.folder(), "abszero.nc", "#1562=1\nM98P501X2\nM98P501X0\nM98P501X1\n");
+    writeHook(panel.folder(), "absZ.nc", "#1563=1\nM98P501X2\n");
+    panel.key("F4"); // 回机械原点
+    panel.key("F3"); // Z only
+    panel.advance(10.0);
+    EXPECT_EQ(output(panel, 12), 1);
+    panel.key("F6");
+    panel.advance(30.0);
+    EXPECT_EQ(output(panel, 11), 1);
+    EXPECT_EQ(output(panel, 9), 0) << "fndzero.nc is for home switches";
+    EXPECT_TRUE(panel.session().latest()->status.homed[0]);
+}
+
 TEST(HookKeys, GoWorkZeroAllRunsGotozero) {
     PanelHarness panel;
     writeHook(panel.folder(), "gotozero.nc", "#1560=1\nG90 G53 G00 Z0\n");

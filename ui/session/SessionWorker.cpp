@@ -290,10 +290,12 @@ void SessionWorker::home(const QVector<int>& axes) {
         refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
         return;
     }
-    // the panel's Go Home runs the machine folder's fndzero.nc / fndX.nc when it has one
+    // the panel's Go Home runs the machine folder's fndzero.nc / fndX.nc (abszero.nc / absX.nc with
+    // absolute servos) when it has one
+    const bool absolute = controller_->parameter(config::param::kHomeMode) != 0.0;
     std::optional<config::Hook> hook =
-        axes.isEmpty() ? std::optional(config::Hook::HomeAll)
-                       : axes.size() == 1 ? config::homeAxisHook(axes.front()) : std::nullopt;
+        axes.isEmpty() ? config::goHomeHook(std::nullopt, absolute)
+                       : axes.size() == 1 ? config::goHomeHook(axes.front(), absolute) : std::nullopt;
     if (hook && controller_->hasHook(*hook)) {
         runHooks({{*hook, {}, {}}}, Activity::Homing);
         return;
