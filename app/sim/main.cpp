@@ -203,6 +203,7 @@ int runCommand(int argc, char** argv) {
             return 64;
         }
     }
+    const std::vector<tools::LifeFileIssue> lifeIssues = machineConfig.toolLifeIssues;
     controller::Controller controller(std::move(machineConfig), o.settings);
     if (o.command == sim::SimOptions::Command::Check) {
         return check(controller, o);
@@ -230,8 +231,8 @@ int runCommand(int argc, char** argv) {
         report.status = controller::RunStatus::Error;
     }
     nlohmann::json json = sim::reportJson(report, controller, o.printVariables);
-    if (controller.toolLife().enabled()) {
-        json["tool_life"] = sim::toolLifeJson(controller.toolLife());
+    if (controller.toolLife().enabled() || !lifeIssues.empty()) {
+        json["tool_life"] = sim::toolLifeJson(controller.toolLife(), lifeIssues);
     }
     if (trace) {
         if (auto problem = trace->commit()) {

@@ -295,10 +295,15 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         }
         loadToolTable(dir, config);
         auto life = tools::loadToolLife(folder);
-        if (auto* wrong = std::get_if<tools::LifeFileError>(&life)) {
-            return ConfigError{wrong->file, wrong->message, static_cast<int>(wrong->line)};
+        if (auto* unreadable = std::get_if<std::string>(&life)) {
+            fail(dir / tools::kToolLifeFile, *unreadable);
         }
-        config.toolLife = std::move(std::get<tools::LifeData>(life));
+        tools::ParsedToolLife& parsed = std::get<tools::ParsedToolLife>(life);
+        for (const tools::LifeFileIssue& issue : parsed.issues) {
+            config.warnings.push_back(issue.text());
+        }
+        config.toolLife = std::move(parsed.data);
+        config.toolLifeIssues = std::move(parsed.issues);
     } catch (const Failure& f) {
         return f.error;
     } catch (const fs::filesystem_error& e) {

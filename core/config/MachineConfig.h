@@ -7,7 +7,7 @@
 #include "core/gcode/Program.h"
 #include "core/machine/SimulatedMachine.h"
 #include "core/tools/ToolTable.h"
-#include "core/tools/ToolLifeData.h"
+#include "core/tools/ToolLifeFile.h"
 
 #include <array>
 #include <map>
@@ -67,6 +67,8 @@ struct MachineConfig {
     // has none: an M350 then starts its table from params 930-945 (tools::ToolData).
     std::optional<tools::ToolTable> toolTable;
     tools::LifeData toolLife; // toollife.txt
+    // its skipped lines (also in `warnings` as text); the lines themselves stay in toolLife.unreadLines
+    std::vector<tools::LifeFileIssue> toolLifeIssues;
 };
 
 struct ConfigError {

@@ -52,6 +52,7 @@ Controller::~Controller() = default;
 config::MachineConfig Controller::config() const {
     config::MachineConfig out = config_;
     out.toolTable = tools_.table();
+    out.toolLife = toolLife_.data(); // a 仿真 run selects the sister tools the machine would
     return out;
 }
 

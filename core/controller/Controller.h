@@ -288,6 +288,9 @@ public:
     // caller writes the data back (tools::saveToolLife) when changed().
     tools::ToolLifeManager& toolLife() { return toolLife_; }
     const tools::ToolLifeManager& toolLife() const { return toolLife_; }
+    // The operator's tool life reset of a group (its tools' used life to 0). Refused (false, with
+    // the reason) while a program runs or holds, or for a group that is not entered.
+    bool resetToolLife(int group, std::string* why = nullptr);
 
     // macro::MachineAccess
     bool manageTools(std::vector<macro::WordValue>& words) override;

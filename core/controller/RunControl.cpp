@@ -69,8 +69,9 @@ void Controller::resume() {
     }
     const double remainderFrom = machine_.time();
     continueRemainder(remainder_);
-    if (remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Feed ||
-        remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Arc) {
+    const bool cutting = remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Feed ||
+                         remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Arc;
+    if (cutting && !(executor_ && executor_->changingTool())) {
         toolLife_.cut(remainderFrom, machine_.time()); // the rest of the cut the hold stopped
     }
     remainder_ = {};

@@ -13,12 +13,29 @@ bool Controller::manageTools(std::vector<macro::WordValue>& words) {
     return took;
 }
 
-// Only the feed moves and arcs of a program run cut: not rapids, dwells, manual moves, or a hold.
+// Only the feed moves and arcs of a program run cut: not rapids, dwells, manual moves, a hold (its
+// cut short by RunControl), waits for an input (no move is made), or a tool change program's moves.
+// The panel has no machine lock, Z lock, dry run or single block: when they come, their time must
+// be left out here too (the FANUC 0i manual excludes it).
 void Controller::countCuttingTime(const machine::MachineEvent& event) {
     using Type = machine::MachineEvent::Type;
-    if (state_ == RunState::Running && (event.type == Type::Feed || event.type == Type::Arc)) {
+    if (state_ == RunState::Running && (event.type == Type::Feed || event.type == Type::Arc) && executor_ &&
+        !executor_->changingTool()) {
         toolLife_.cut(event.start, event.end);
     }
+}
+
+bool Controller::resetToolLife(int group, std::string* why) {
+    std::optional<std::string> refusal;
+    if (state_ == RunState::Running || state_ == RunState::Hold) {
+        refusal = "a program runs: reset the tool life of group " + std::to_string(group) + " when it has stopped";
+    } else {
+        refusal = toolLife_.resetGroup(group);
+    }
+    if (refusal && why) {
+        *why = *refusal;
+    }
+    return !refusal;
 }
 
 } // namespace m350::controller

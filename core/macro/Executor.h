@@ -44,6 +44,9 @@ public:
     // The block being executed (or last executed).
     std::optional<gcode::SourceLocation> location() const;
     std::size_t callDepth() const { return frames_.size(); }
+    // Whether a tool change program runs: the M350's T program (O20000) or the machine's M06
+    // handler (FANUC's O9001). Its moves carry the tool, they do not cut with it.
+    bool changingTool() const;
     std::uint64_t blocksExecuted() const { return blocksExecuted_; }
     // The main program's side of the run, for 断点加工: the block of the started unit that runs
     // now (the call that is running, when inside one), how many of its blocks have started, and

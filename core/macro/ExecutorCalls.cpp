@@ -36,6 +36,10 @@ int builtInHomingAxis(std::vector<WordValue>& words, std::uint32_t column) {
 
 } // namespace
 
+bool Executor::changingTool() const {
+    return handlingCode(codeKey('T', 0)) || handlingCode(codeKey('M', 6));
+}
+
 // Moves the words the argument specification maps into `out` (local number, value). G65 and M98
 // take every letter mapped (FANUC: M#13, T#20); a handler called for a G or M code leaves the
 // block's other codes alone.

@@ -42,6 +42,8 @@ struct LifeData {
     int ignoreNumber = 100;     // parameter 6810: T101 = group 1
     LifeKind defaultKind = LifeKind::Count; // parameter 6800 #2 LTM: the kind when G10 L3 gives no Q
     std::vector<LifeGroup> groups; // by ascending number
+    // Lines of toollife.txt the reader skipped, as they were: kept so that saving loses nothing.
+    std::vector<std::string> unreadLines;
 
     LifeGroup* group(int number);
     const LifeGroup* group(int number) const;

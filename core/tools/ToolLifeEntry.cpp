@@ -109,7 +109,7 @@ std::optional<std::string> ToolLifeManager::endEntry() {
             data_.removeGroup(number);
         }
     }
-    changed_ = true;
+    dataChanged();
     countedTools_.clear();
     if (active_ && !findTool(*active_)) {
         active_.reset();

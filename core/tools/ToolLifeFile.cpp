@@ -1,31 +1,31 @@
 #include "core/tools/ToolLifeFile.h"
 
-#include "core/config/AtomicFile.h"
-
 #include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <vector>
 
 namespace m350::tools {
 
 namespace {
 
+// A bad item of a line: what is wrong and the field it is in (its column).
 struct LineError {
     std::string message;
+    std::string_view at;
 };
 
 std::vector<std::string_view> fieldsOf(std::string_view line) {
     std::vector<std::string_view> fields;
     std::size_t i = 0;
+    auto blank = [&](std::size_t k) { return line[k] == ' ' || line[k] == '\t' || line[k] == '\r'; };
     while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) {
+        while (i < line.size() && blank(i)) {
             ++i;
         }
         std::size_t start = i;
-        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') {
+        while (i < line.size() && !blank(i)) {
             ++i;
         }
         if (i > start) {
@@ -40,7 +40,8 @@ int number(std::string_view text, int low, int high, std::string_view what) {
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec != std::errc{} || end != text.data() + text.size() || value < low || value > high) {
         throw LineError{std::string(what) + " must be a whole number from " + std::to_string(low) + " to " +
-                        std::to_string(high) + ", not '" + std::string(text) + "'"};
+                            std::to_string(high) + ", not '" + std::string(text) + "'",
+                        text};
     }
     return value;
 }
@@ -52,7 +53,7 @@ LifeKind kindOf(std::string_view text) {
     if (text == "minutes") {
         return LifeKind::Minutes;
     }
-    throw LineError{"the life is counted in 'count' or 'minutes', not '" + std::string(text) + "'"};
+    throw LineError{"the life is counted in 'count' or 'minutes', not '" + std::string(text) + "'", text};
 }
 
 // `key value key value ...` after the item's own number; every key once, all required.
@@ -66,13 +67,17 @@ std::vector<int> namedNumbers(const std::vector<std::string_view>& f, std::size_
         }
         if (k == keys.size() || i + 1 >= f.size()) {
             throw LineError{k == keys.size() ? "unknown word '" + std::string(f[i]) + "'"
-                                             : "'" + std::string(f[i]) + "' needs a value"};
+                                             : "'" + std::string(f[i]) + "' needs a value",
+                            f[i]};
+        }
+        if (values[k] >= 0) {
+            throw LineError{"'" + std::string(f[i]) + "' is given twice", f[i]};
         }
         values[k] = number(f[i + 1], 0, keys[k].second, f[i]);
     }
     for (std::size_t k = 0; k < keys.size(); ++k) {
         if (values[k] < 0) {
-            throw LineError{"missing '" + std::string(keys[k].first) + "'"};
+            throw LineError{"missing '" + std::string(keys[k].first) + "'", f.back()};
         }
     }
     return values;
@@ -87,27 +92,37 @@ void parseSetting(const std::vector<std::string_view>& f, LifeData& data) {
         data.defaultKind = kindOf(f[1]);
     } else {
         throw LineError{"expected 'gs N', 'ignore N', 'ltm count|minutes', 'group N life L count|minutes' or "
-                        "'tool T h H d D used U'"};
+                        "'tool T h H d D used U'",
+                        f[0]};
     }
 }
 
 LifeGroup parseGroup(const std::vector<std::string_view>& f, const LifeData& data) {
     if (f.size() != 5 || f[2] != "life") {
-        throw LineError{"a group line is 'group N life L count|minutes'"};
+        throw LineError{"a group line is 'group N life L count|minutes'", f.size() > 2 ? f[2] : f[0]};
     }
     LifeGroup group;
     group.number = number(f[1], 1, 128, "the group number");
     group.life = number(f[3], 1, 99999, "the life");
     group.kind = kindOf(f[4]);
     if (data.group(group.number)) {
-        throw LineError{"group " + std::to_string(group.number) + " is given twice"};
+        throw LineError{"group " + std::to_string(group.number) + " is given twice", f[1]};
     }
     return group;
 }
 
-LifeTool parseTool(const std::vector<std::string_view>& f) {
+LifeTool parseTool(const std::vector<std::string_view>& f, const LifeGroup& group) {
+    if (f.size() < 2) {
+        throw LineError{"a tool line is 'tool T h H d D used U'", f[0]};
+    }
     LifeTool tool;
-    tool.tool = number(f.size() > 1 ? f[1] : std::string_view(), 1, 9999, "the tool number");
+    tool.tool = number(f[1], 1, 9999, "the tool number");
+    for (const LifeTool& sister : group.tools) {
+        if (sister.tool == tool.tool) {
+            throw LineError{"T" + std::to_string(tool.tool) + " is already in group " + std::to_string(group.number),
+                            f[1]};
+        }
+    }
     std::vector<int> v = namedNumbers(f, 2, {{"h", 999}, {"d", 999}, {"used", 9999999}});
     tool.h = v[0];
     tool.d = v[1];
@@ -115,66 +130,105 @@ LifeTool parseTool(const std::vector<std::string_view>& f) {
     return tool;
 }
 
-} // namespace
+// Reads the lines one by one, keeping each group's own lines so that a group refused at the end
+// (no tools, beyond the capacity) is kept as text with them.
+class LifeReader {
+public:
+    explicit LifeReader(std::string file) : file_(std::move(file)) {}
 
-std::variant<LifeData, LifeFileError> parseToolLife(std::string_view text, const std::string& file) {
-    LifeData data;
-    int currentGroup = 0;
-    std::map<int, std::uint32_t> groupLines;
-    std::uint32_t lineNumber = 0;
-    std::size_t at = 0;
-    while (at <= text.size()) {
-        std::size_t end = text.find('\n', at);
-        std::string_view line = text.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at);
-        at = end == std::string_view::npos ? text.size() + 1 : end + 1;
-        ++lineNumber;
-        line = line.substr(0, line.find(';'));
-        std::vector<std::string_view> f = fieldsOf(line);
+    void line(std::string_view raw, std::uint32_t number) {
+        std::string_view text = raw.substr(0, raw.find_last_not_of("\r") + 1);
+        if (text.substr(0, kUnreadPrefix.size()) == kUnreadPrefix) {
+            out_.data.unreadLines.emplace_back(text.substr(kUnreadPrefix.size()));
+            return;
+        }
+        std::vector<std::string_view> f = fieldsOf(text.substr(0, text.find(';')));
         if (f.empty()) {
-            continue;
+            return;
         }
         try {
             if (f[0] == "tool") {
-                LifeGroup* group = data.group(currentGroup);
+                LifeGroup* group = out_.data.group(currentGroup_);
                 if (!group) {
-                    throw LineError{"a tool line must follow its 'group' line"};
+                    throw LineError{"a tool line must follow its 'group' line", f[0]};
                 }
-                group->tools.push_back(parseTool(f));
+                group->tools.push_back(parseTool(f, *group));
+                groupLines_[currentGroup_].emplace_back(text);
             } else if (f[0] == "group") {
-                LifeGroup group = parseGroup(f, data);
-                currentGroup = group.number;
-                groupLines[group.number] = lineNumber;
-                data.putGroup(std::move(group));
+                currentGroup_ = 0; // a bad group line takes its tool lines with it
+                LifeGroup group = parseGroup(f, out_.data);
+                currentGroup_ = group.number;
+                groupFirstLine_[group.number] = number;
+                groupLines_[group.number] = {std::string(text)};
+                out_.data.putGroup(std::move(group));
             } else {
-                parseSetting(f, data);
+                parseSetting(f, out_.data);
             }
         } catch (const LineError& e) {
-            return LifeFileError{file, lineNumber, e.message};
+            const auto column = static_cast<std::uint32_t>(e.at.data() - text.data()) + 1;
+            out_.issues.push_back({file_, number, column, e.message});
+            out_.data.unreadLines.emplace_back(text);
         }
     }
-    for (const LifeGroup& g : data.groups) {
-        if (g.tools.empty()) {
-            return LifeFileError{file, groupLines[g.number], "group " + std::to_string(g.number) + " has no tools"};
+
+    ParsedToolLife finish() {
+        std::vector<int> refused;
+        for (const LifeGroup& g : out_.data.groups) {
+            std::optional<std::string> problem = g.tools.empty()
+                                                     ? std::optional("group " + std::to_string(g.number) + " has no tools")
+                                                     : out_.data.capacityProblem(g);
+            if (problem) {
+                out_.issues.push_back({file_, groupFirstLine_[g.number], 1, *problem});
+                refused.push_back(g.number);
+            }
         }
-        if (auto problem = data.capacityProblem(g)) {
-            return LifeFileError{file, groupLines[g.number], *problem};
+        for (int number : refused) {
+            out_.data.removeGroup(number);
+            for (std::string& text : groupLines_[number]) {
+                out_.data.unreadLines.push_back(std::move(text));
+            }
         }
+        return std::move(out_);
     }
-    return data;
+
+private:
+    std::string file_;
+    ParsedToolLife out_;
+    int currentGroup_ = 0;
+    std::map<int, std::uint32_t> groupFirstLine_;
+    std::map<int, std::vector<std::string>> groupLines_;
+};
+
+} // namespace
+
+std::string LifeFileIssue::text() const {
+    return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: " + message + " (line skipped)";
 }
 
-std::variant<LifeData, LifeFileError> loadToolLife(const std::string& folder) {
+ParsedToolLife parseToolLife(std::string_view text, const std::string& file) {
+    LifeReader reader(file);
+    std::uint32_t lineNumber = 0;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = text.find('\n', at);
+        std::string_view line = text.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at);
+        at = end == std::string_view::npos ? text.size() : end + 1;
+        reader.line(line, ++lineNumber);
+    }
+    return reader.finish();
+}
+
+std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder) {
     std::filesystem::path path = std::filesystem::path(folder) / kToolLifeFile;
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) {
-        return LifeData{};
+        return ParsedToolLife{};
     }
     std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        return LifeFileError{path.string(), 0, "cannot read the file"};
-    }
     std::ostringstream text;
-    text << in.rdbuf();
+    if (!in || !(text << in.rdbuf())) {
+        return std::string("cannot read the file");
+    }
     return parseToolLife(text.str(), path.string());
 }
 
@@ -191,11 +245,15 @@ std::string formatToolLife(const LifeData& data) {
             out << "tool " << t.tool << " h " << t.h << " d " << t.d << " used " << t.used << '\n';
         }
     }
+    for (const std::string& line : data.unreadLines) {
+        out << kUnreadPrefix << line << '\n';
+    }
     return out.str();
 }
 
-std::optional<std::string> saveToolLife(const std::string& folder, const LifeData& data) {
-    return config::writeFileAtomically(std::filesystem::path(folder) / kToolLifeFile, formatToolLife(data));
+std::optional<std::string> saveToolLife(const std::string& folder, const LifeData& data,
+                                        const config::AtomicWriteHooks& hooks) {
+    return config::writeFileAtomically(std::filesystem::path(folder) / kToolLifeFile, formatToolLife(data), hooks);
 }
 
 } // namespace m350::tools

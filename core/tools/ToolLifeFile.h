@@ -1,11 +1,14 @@
 #pragma once
 
+#include "core/config/AtomicFile.h"
 #include "core/tools/ToolLifeData.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace m350::tools {
 
@@ -16,21 +19,34 @@ namespace m350::tools {
 //   ltm count         parameter 6800 #2: the kind of a group G10 L3 enters without Q (count|minutes)
 //   group 1 life 100 count
 //   tool 12 h 12 d 32 used 5        uses, or cutting time in 4 s units for a minutes group
+// A line the reader cannot take is reported with file:line:col and skipped; the rest loads. A
+// group that ends up without tools, or beyond the GS1/GS2 capacity, is skipped with its tool
+// lines. Skipped lines are kept (LifeData::unreadLines) and written back as `; not read: ...`
+// comments, so that saving the data the controller counted deletes nothing the operator typed.
 inline constexpr const char* kToolLifeFile = "toollife.txt";
+inline constexpr std::string_view kUnreadPrefix = "; not read: ";
 
-struct LifeFileError {
+struct LifeFileIssue {
     std::string file;
-    std::uint32_t line = 0;
+    std::uint32_t line = 0;   // 1-based
+    std::uint32_t column = 0; // 1-based
     std::string message;
-    std::string text() const { return file + ":" + std::to_string(line) + ": " + message; }
+    // "toollife.txt:3:26: error: unknown word 'extra' (line skipped)"
+    std::string text() const;
 };
 
-// The whole text is checked: any bad line is an error naming it, and no data are taken.
-std::variant<LifeData, LifeFileError> parseToolLife(std::string_view text, const std::string& file);
-// No file is no groups.
-std::variant<LifeData, LifeFileError> loadToolLife(const std::string& folder);
+struct ParsedToolLife {
+    LifeData data;
+    std::vector<LifeFileIssue> issues;
+};
+
+ParsedToolLife parseToolLife(std::string_view text, const std::string& file);
+// No file is no groups; a file that cannot be read is an error (the text says what), since saving
+// over it would lose it.
+std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder);
 std::string formatToolLife(const LifeData& data);
 // Written atomically (temp file, sync, rename); the reason when it cannot be.
-std::optional<std::string> saveToolLife(const std::string& folder, const LifeData& data);
+std::optional<std::string> saveToolLife(const std::string& folder, const LifeData& data,
+                                        const config::AtomicWriteHooks& hooks = {});
 
 } // namespace m350::tools

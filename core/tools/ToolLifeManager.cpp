@@ -18,6 +18,7 @@ std::string usedText(const LifeGroup& g, const LifeTool& t) {
 void ToolLifeManager::setData(LifeData data) {
     data_ = std::move(data);
     changed_ = false;
+    ++revision_;
     countedTools_.clear();
     selected_.reset();
     active_.reset();
@@ -51,11 +52,13 @@ ToolLifeManager::Selection ToolLifeManager::selectGroup(int t) {
     }
     if (auto counted = countedTools_.find(number); counted != countedTools_.end() && group->kind == LifeKind::Count) {
         selected_ = InUse{number, counted->second}; // counted once this run: the same tool, no new one
+        ++revision_;
         return {counted->second, std::nullopt, false};
     }
     for (const LifeTool& tool : group->tools) {
         if (!group->expired(tool)) {
             selected_ = InUse{number, tool.tool};
+            ++revision_;
             return {tool.tool, std::nullopt, false};
         }
     }
@@ -69,6 +72,7 @@ ToolLifeManager::Selection ToolLifeManager::selectGroup(int t) {
 
 void ToolLifeManager::changeTool(bool count) {
     active_ = selected_;
+    ++revision_;
     useSeconds_ = 0.0;
     lastCutEnd_ = lastCutStart_ = 0.0;
     if (!active_) {
@@ -83,7 +87,7 @@ void ToolLifeManager::changeTool(bool count) {
     usedBefore_ = tool->used;
     if (count && group->kind == LifeKind::Count && countedTools_.emplace(group->number, tool->tool).second) {
         ++tool->used;
-        changed_ = true;
+        dataChanged();
     }
 }
 
@@ -96,7 +100,7 @@ void ToolLifeManager::recount() {
     int used = usedBefore_ + static_cast<int>(std::floor(useSeconds_ / kUnitSeconds + 1e-9));
     if (used != tool->used) {
         tool->used = used;
-        changed_ = true;
+        dataChanged();
     }
 }
 
@@ -117,6 +121,24 @@ void ToolLifeManager::cutShortAt(double t) {
         lastCutEnd_ = std::max(t, lastCutStart_);
         recount();
     }
+}
+
+std::optional<std::string> ToolLifeManager::resetGroup(int number) {
+    LifeGroup* group = data_.group(number);
+    if (!group) {
+        return "tool life group " + std::to_string(number) + " is not entered";
+    }
+    for (LifeTool& tool : group->tools) {
+        tool.used = 0;
+    }
+    countedTools_.erase(number); // a count group's next selection in this run counts again
+    if (active_ && active_->group == number) {
+        usedBefore_ = 0;
+        useSeconds_ = 0.0;
+        lastCutEnd_ = lastCutStart_ = 0.0;
+    }
+    dataChanged();
+    return std::nullopt;
 }
 
 std::variant<int, std::string> ToolLifeManager::offsetOfToolInUse(char letter) const {

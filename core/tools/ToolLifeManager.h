@@ -2,6 +2,7 @@
 
 #include "core/tools/ToolLifeData.h"
 
+#include <cstdint>
 #include <optional>
 #include <map>
 #include <set>
@@ -32,6 +33,12 @@ public:
     // Whether the life data changed since setData / markSaved (to be written to the machine folder).
     bool changed() const { return changed_; }
     void markSaved() { changed_ = false; }
+    // Goes up whenever the data, the selection or the tool in use change (the panel redraws then).
+    std::uint64_t revision() const { return revision_; }
+
+    // The operator's tool life reset (counter clear) of one group: every tool's used life back to
+    // 0, the tool in use counting on from there. The reason when there is no such group.
+    std::optional<std::string> resetGroup(int number);
 
     // From reset into automatic operation: count groups count again.
     void startRun();
@@ -45,7 +52,10 @@ public:
         bool expired = false;
     };
     Selection selectGroup(int t);
-    void selectOrdinaryTool() { selected_.reset(); }
+    void selectOrdinaryTool() {
+        selected_.reset();
+        ++revision_;
+    }
     // The tool change: the selected group's tool becomes the one in use and counts (`count` false
     // while a run is only scanned for 断点加工).
     void changeTool(bool count);
@@ -77,9 +87,14 @@ private:
     const LifeTool* findTool(const InUse& at) const;
     LifeTool* findTool(const InUse& at);
     void recount();
+    void dataChanged() {
+        changed_ = true;
+        ++revision_;
+    }
 
     LifeData data_;
     bool changed_ = false;
+    std::uint64_t revision_ = 0;
     std::map<int, int> countedTools_; // count group -> the tool whose use this run has counted
     std::optional<InUse> selected_;
     std::optional<InUse> active_;

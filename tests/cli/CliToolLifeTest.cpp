@@ -1,5 +1,5 @@
 // m350-sim and tool life management: G10 L3 data written into the machine folder's toollife.txt,
-// uses counted across runs, the run JSON's "tool_life", the expired-group alarm, a bad file.
+// uses counted across runs, the run JSON's "tool_life", the expired-group alarm, a bad line.
 #include "tests/cli/CliFixture.h"
 
 namespace m350::clitest {
@@ -58,12 +58,29 @@ TEST_F(CliToolLifeTest, EnteredGroupsPersistAndEachRunCountsItsUse) {
         << again.err;
 }
 
-TEST_F(CliToolLifeTest, ABadLifeFileStopsWithItsLine) {
-    write("machine/toollife.txt", "gs 0\ngroup 1 life 2 count\ntool 11 h 11 d 31 used 0 extra\n");
-    ProcessResult r = run("p.nc", "M30\n");
-    EXPECT_EQ(r.exitStatus, kExitError);
-    EXPECT_NE(r.err.find("toollife.txt:3: unknown word 'extra'"), std::string::npos) << r.err;
-    EXPECT_EQ(output(r)["alarm"]["code"], "config_error");
+TEST_F(CliToolLifeTest, ABadLifeLineIsReportedWithFileLineColumnAndTheRestRuns) {
+    write("machine/toollife.txt", "gs 0\ngroup 1 life 2 count\ntool 11 h 11 d 31 used 0 extra\n"
+                                  "tool 12 h 12 d 32 used 1\n");
+    ProcessResult r = run("p.nc", "T101 M06\nM30\n");
+    ASSERT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_NE(r.err.find("toollife.txt:3:26: error: unknown word 'extra' (line skipped)"), std::string::npos) << r.err;
+    json j = output(r);
+    ASSERT_EQ(j["tool_life"]["issues"].size(), 1u);
+    const json& issue = j["tool_life"]["issues"][0];
+    EXPECT_EQ(issue["line"], 3);
+    EXPECT_EQ(issue["column"], 26);
+    EXPECT_EQ(issue["severity"], "error");
+    EXPECT_EQ(issue["message"], "unknown word 'extra'");
+    EXPECT_NE(issue["file"].get<std::string>().find("toollife.txt"), std::string::npos);
+    // T11's line was skipped: group 1 is T12 alone, which serves its second and last use
+    EXPECT_EQ(j["vars"]["4120"], 12.0);
+    EXPECT_EQ(j["tool_life"]["groups"][0]["tools"][0]["used"], 2);
+    EXPECT_EQ(j["tool_life"]["groups"][0]["tools"][0]["remaining"], 0);
+    EXPECT_EQ(j["tool_life"]["groups"][0]["tools"][0]["in_use"], true);
+    // the save kept the skipped line, as a comment
+    EXPECT_NE(lifeFile().find("tool 12 h 12 d 32 used 2\n; not read: tool 11 h 11 d 31 used 0 extra\n"),
+              std::string::npos)
+        << lifeFile();
 }
 
 TEST_F(CliToolLifeTest, AMachineWithoutGroupsKeepsTheContractAndWritesNothing) {

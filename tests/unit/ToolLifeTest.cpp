@@ -1,48 +1,14 @@
 // FANUC 0i tool life management through the controller: G10 L3 data entry up to G11, T101 picking
 // the group's first live tool, count life once per run at M06, minutes life in 4 s units of
-// cutting feed only, the whole-group-expired alarm, H99/D99, the toollife.txt file.
-#include "core/tools/ToolLifeFile.h"
-
-#include "RunProgram.h"
+// cutting feed only, the whole-group-expired alarm, H99/D99 (toollife.txt: ToolLifeFileTest.cpp).
+#include "ToolLifeFixture.h"
 
 #include <gtest/gtest.h>
-
-#include <filesystem>
-#include <fstream>
 
 namespace {
 
 using namespace m350;
 using namespace m350::test;
-
-tools::LifeGroup group(int number, int life, tools::LifeKind kind, std::vector<tools::LifeTool> list) {
-    tools::LifeGroup g;
-    g.number = number;
-    g.life = life;
-    g.kind = kind;
-    g.tools = std::move(list);
-    return g;
-}
-
-// Group 1: T11 (H11 D31) and T12 (H12 D32), 3 uses each; group 2: T21 (H21 D41), 1 minute.
-config::MachineConfig fanucWithGroups(int usedByT11 = 0) {
-    config::MachineConfig config = fanucMachine();
-    config.toolLife.putGroup(group(1, 3, tools::LifeKind::Count, {{11, 11, 31, usedByT11}, {12, 12, 32, 0}}));
-    config.toolLife.putGroup(group(2, 1, tools::LifeKind::Minutes, {{21, 21, 41, 0}}));
-    return config;
-}
-
-int used(const ProgramRun& run, int groupNumber, int tool) {
-    const tools::LifeGroup* g = run.controller->toolLife().data().group(groupNumber);
-    EXPECT_NE(g, nullptr);
-    for (const tools::LifeTool& t : g ? g->tools : std::vector<tools::LifeTool>{}) {
-        if (t.tool == tool) {
-            return t.used;
-        }
-    }
-    ADD_FAILURE() << "no T" << tool << " in group " << groupNumber;
-    return -1;
-}
 
 TEST(ToolLife, G10L3EntersGroupsAndToolsUpToG11) {
     ProgramRun run = runFanuc(lines({"G10 L3", "P1 L3 Q1", "T11 H11 D31", "T12 H12 D32", "P2 L1 Q2", "T21 H21",
@@ -208,45 +174,6 @@ TEST(ToolLife, H99AndD99TakeTheToolInUsesOffsets) {
     ProgramRun none = runProgram(fanucWithGroups(), lines({"G43 H99 Z0", "M30"}));
     ASSERT_EQ(none.report.status, controller::RunStatus::Alarm);
     EXPECT_NE(none.report.alarm->message.find("H99: no tool of a tool life group is in use"), std::string::npos);
-}
-
-TEST(ToolLife, TheFileRoundTripsAndABadLineIsReportedWithItsLine) {
-    tools::LifeData data = fanucWithGroups(2).toolLife;
-    data.gs = 1;
-    data.ignoreNumber = 200;
-    auto parsed = tools::parseToolLife(tools::formatToolLife(data), "toollife.txt");
-    ASSERT_TRUE(std::holds_alternative<tools::LifeData>(parsed));
-    const tools::LifeData& back = std::get<tools::LifeData>(parsed);
-    EXPECT_EQ(tools::formatToolLife(back), tools::formatToolLife(data));
-    EXPECT_EQ(back.ignoreNumber, 200);
-    EXPECT_EQ(back.group(1)->tools[0].used, 2);
-
-    auto bad = tools::parseToolLife("gs 0\ngroup 1 life 3 count\ntool 11 h 11 d x used 0\n", "m/toollife.txt");
-    ASSERT_TRUE(std::holds_alternative<tools::LifeFileError>(bad));
-    EXPECT_EQ(std::get<tools::LifeFileError>(bad).text(),
-              "m/toollife.txt:3: d must be a whole number from 0 to 999, not 'x'");
-    auto orphan = tools::parseToolLife("tool 11 h 1 d 1 used 0\n", "f");
-    EXPECT_EQ(std::get<tools::LifeFileError>(orphan).line, 1u);
-    auto empty = tools::parseToolLife("; c\ngroup 4 life 3 minutes\n", "f");
-    EXPECT_EQ(std::get<tools::LifeFileError>(empty).text(), "f:2: group 4 has no tools");
-}
-
-TEST(ToolLife, TheMachineFolderLoadsItsLifeFileAndRefusesABadOne) {
-    namespace fs = std::filesystem;
-    fs::path folder = fs::path(::testing::TempDir()) / "m350_toollife_folder";
-    fs::remove_all(folder);
-    fs::copy(config::bundledMachinesDirectory() + "/fanuc-0i", folder);
-    ASSERT_FALSE(tools::saveToolLife(folder.string(), fanucWithGroups(1).toolLife));
-    auto loaded = config::loadMachineFolder(folder.string());
-    ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(loaded));
-    EXPECT_EQ(std::get<config::MachineConfig>(loaded).toolLife.group(1)->tools[0].used, 1);
-
-    std::ofstream(folder / tools::kToolLifeFile) << "group 1 life 3 count\ntool 11 h 1 d 1 used 0\ngroup 1 life 2 count\n";
-    auto refused = config::loadMachineFolder(folder.string());
-    ASSERT_TRUE(std::holds_alternative<config::ConfigError>(refused));
-    EXPECT_EQ(std::get<config::ConfigError>(refused).where(), (folder / tools::kToolLifeFile).string() + ":3");
-    EXPECT_EQ(std::get<config::ConfigError>(refused).message, "group 1 is given twice");
-    fs::remove_all(folder);
 }
 
 TEST(ToolLife, OnTheM350TheTWordItselfChangesToTheGroupsTool) {
