@@ -726,6 +726,10 @@ STEP MPG</translation>
         <source>Tool touched off</source>
         <translation>Tool touched off</translation>
     </message>
+    <message>
+        <source>Tool life reset</source>
+        <translation>Tool life reset</translation>
+    </message>
 </context>
 <context>
     <name>m350::ui::MainWindow</name>
@@ -2282,6 +2286,129 @@ STEP MPG</translation>
     </message>
 </context>
 <context>
+    <name>m350::ui::ToolLifePage</name>
+    <message>
+        <source>Tool Life</source>
+        <translation>Tool Life</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Group</translation>
+    </message>
+    <message>
+        <source>Life type</source>
+        <translation>Life type</translation>
+    </message>
+    <message>
+        <source>Life</source>
+        <translation>Life</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Tool</translation>
+    </message>
+    <message>
+        <source>Used</source>
+        <translation>Used</translation>
+    </message>
+    <message>
+        <source>Remaining</source>
+        <translation>Remaining</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>State</translation>
+    </message>
+    <message>
+        <source>UP/DOWN: tool (and its group). Reset Life: the group's tools start again from 0 used. Minutes count cutting feed only (no rapids, dwells, holds or tool changes), in whole 4 s units, shown as min:s. @ in use, # life reached.</source>
+        <translation>UP/DOWN: tool (and its group). Reset Life: the group's tools start again from 0 used. Minutes count cutting feed only (no rapids, dwells, holds or tool changes), in whole 4 s units, shown as min:s. @ in use, # life reached.</translation>
+    </message>
+    <message>
+        <source>Reset Life</source>
+        <translation>Reset Life</translation>
+    </message>
+    <message>
+        <source>No tool life groups</source>
+        <translation>No tool life groups</translation>
+    </message>
+    <message>
+        <source>Tool Table</source>
+        <translation>Tool Table</translation>
+    </message>
+    <message>
+        <source>Simulator extra: the M350 itself has no tool life management. Here T%1 and up select a group (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.</source>
+        <translation>Simulator extra: the M350 itself has no tool life management. Here T%1 and up select a group (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.</translation>
+    </message>
+    <message>
+        <source>FANUC 0i: T%1 selects group 1 (the ignore number plus the group); M06 ends the counting of the old tool and starts it for the selected one.</source>
+        <translation>FANUC 0i: T%1 selects group 1 (the ignore number plus the group); M06 ends the counting of the old tool and starts it for the selected one.</translation>
+    </message>
+    <message>
+        <source>In use, life reached</source>
+        <translation>In use, life reached</translation>
+    </message>
+    <message>
+        <source>In use</source>
+        <translation>In use</translation>
+    </message>
+    <message>
+        <source>Life reached</source>
+        <translation>Life reached</translation>
+    </message>
+    <message>
+        <source>Selected, waits for the tool change</source>
+        <translation>Selected, waits for the tool change</translation>
+    </message>
+    <message>
+        <source>Waiting</source>
+        <translation>Waiting</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Count</translation>
+    </message>
+    <message>
+        <source>Minutes</source>
+        <translation>Minutes</translation>
+    </message>
+    <message>
+        <source>In use: group %1 T%2</source>
+        <translation>In use: group %1 T%2</translation>
+    </message>
+    <message>
+        <source>In use: none</source>
+        <translation>In use: none</translation>
+    </message>
+    <message>
+        <source>Ignore No. %1</source>
+        <translation>Ignore No. %1</translation>
+    </message>
+    <message>
+        <source>Capacity: %1 groups x %2 tools</source>
+        <translation>Capacity: %1 groups x %2 tools</translation>
+    </message>
+    <message>
+        <source>No tool life groups. Enter them in a program or MDI: G10 L3, then P&lt;group&gt; L&lt;life&gt; Q&lt;1 count | 2 minutes&gt; and T&lt;tool&gt; H&lt;h&gt; D&lt;d&gt; blocks, then G11. They are kept in toollife.txt.</source>
+        <translation>No tool life groups. Enter them in a program or MDI: G10 L3, then P&lt;group&gt; L&lt;life&gt; Q&lt;1 count | 2 minutes&gt; and T&lt;tool&gt; H&lt;h&gt; D&lt;d&gt; blocks, then G11. They are kept in toollife.txt.</translation>
+    </message>
+    <message>
+        <source>Every tool has reached its life in group %1: selecting it is an alarm.</source>
+        <translation>Every tool has reached its life in group %1: selecting it is an alarm.</translation>
+    </message>
+    <message>
+        <source>toollife.txt: %1 line(s) could not be read; they are kept in the file as comments.</source>
+        <translation>toollife.txt: %1 line(s) could not be read; they are kept in the file as comments.</translation>
+    </message>
+    <message>
+        <source>toollife.txt not saved: %1</source>
+        <translation>toollife.txt not saved: %1</translation>
+    </message>
+    <message>
+        <source>Reset the tool life of group %1: every tool's used life back to 0?</source>
+        <translation>Reset the tool life of group %1: every tool's used life back to 0?</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::ToolTablePage</name>
     <message>
         <source>Tool Table</source>
@@ -2400,6 +2527,10 @@ STEP MPG</translation>
     <message>
         <source>Export</source>
         <translation>Export</translation>
+    </message>
+    <message>
+        <source>Tool Life</source>
+        <translation>Tool Life</translation>
     </message>
     <message>
         <source>Cur Tool:</source>

@@ -726,6 +726,10 @@ STEP MPG</source>
         <source>Tool touched off</source>
         <translation>刀长设定</translation>
     </message>
+    <message>
+        <source>Tool life reset</source>
+        <translation>刀具寿命清零</translation>
+    </message>
 </context>
 <context>
     <name>m350::ui::MainWindow</name>
@@ -2282,6 +2286,129 @@ STEP MPG</source>
     </message>
 </context>
 <context>
+    <name>m350::ui::ToolLifePage</name>
+    <message>
+        <source>Tool Life</source>
+        <translation>刀具寿命</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>组号</translation>
+    </message>
+    <message>
+        <source>Life type</source>
+        <translation>寿命类型</translation>
+    </message>
+    <message>
+        <source>Life</source>
+        <translation>寿命</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>刀号</translation>
+    </message>
+    <message>
+        <source>Used</source>
+        <translation>已用</translation>
+    </message>
+    <message>
+        <source>Remaining</source>
+        <translation>剩余</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>UP/DOWN: tool (and its group). Reset Life: the group's tools start again from 0 used. Minutes count cutting feed only (no rapids, dwells, holds or tool changes), in whole 4 s units, shown as min:s. @ in use, # life reached.</source>
+        <translation>上/下: 选择刀具(及其所在组)。寿命清零: 该组所有刀具的已用寿命归零。按分钟计的寿命只累计切削进给时间(快速移动、暂停、进给保持和换刀不计), 以4秒为单位, 显示为 分:秒。@ 使用中, # 寿命已到。</translation>
+    </message>
+    <message>
+        <source>Reset Life</source>
+        <translation>寿命清零</translation>
+    </message>
+    <message>
+        <source>No tool life groups</source>
+        <translation>没有刀具寿命组</translation>
+    </message>
+    <message>
+        <source>Tool Table</source>
+        <translation>刀具表</translation>
+    </message>
+    <message>
+        <source>Simulator extra: the M350 itself has no tool life management. Here T%1 and up select a group (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.</source>
+        <translation>模拟器扩展功能: M350本身没有刀具寿命管理。此处T%1以上的T指令选择刀具组(T%2 = 第1组), T指令本身即换刀, 相当于FANUC的M06。</translation>
+    </message>
+    <message>
+        <source>FANUC 0i: T%1 selects group 1 (the ignore number plus the group); M06 ends the counting of the old tool and starts it for the selected one.</source>
+        <translation>FANUC 0i: T%1 选择第1组(忽略号加组号); M06 结束旧刀的寿命计数, 开始计数所选的新刀。</translation>
+    </message>
+    <message>
+        <source>In use, life reached</source>
+        <translation>使用中(寿命已到)</translation>
+    </message>
+    <message>
+        <source>In use</source>
+        <translation>使用中</translation>
+    </message>
+    <message>
+        <source>Life reached</source>
+        <translation>寿命已到</translation>
+    </message>
+    <message>
+        <source>Selected, waits for the tool change</source>
+        <translation>已选中,等待换刀</translation>
+    </message>
+    <message>
+        <source>Waiting</source>
+        <translation>待用</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>次数</translation>
+    </message>
+    <message>
+        <source>Minutes</source>
+        <translation>分钟</translation>
+    </message>
+    <message>
+        <source>In use: group %1 T%2</source>
+        <translation>使用中: 第%1组 T%2</translation>
+    </message>
+    <message>
+        <source>In use: none</source>
+        <translation>使用中: 无</translation>
+    </message>
+    <message>
+        <source>Ignore No. %1</source>
+        <translation>寿命管理忽略号 %1</translation>
+    </message>
+    <message>
+        <source>Capacity: %1 groups x %2 tools</source>
+        <translation>容量: %1组 x 每组%2把</translation>
+    </message>
+    <message>
+        <source>No tool life groups. Enter them in a program or MDI: G10 L3, then P&lt;group&gt; L&lt;life&gt; Q&lt;1 count | 2 minutes&gt; and T&lt;tool&gt; H&lt;h&gt; D&lt;d&gt; blocks, then G11. They are kept in toollife.txt.</source>
+        <translation>没有刀具寿命组。请在程序或MDI中输入: G10 L3, 然后 P&lt;组号&gt; L&lt;寿命&gt; Q&lt;1 次数 | 2 分钟&gt; 及 T&lt;刀号&gt; H&lt;h&gt; D&lt;d&gt; 程序段, 最后 G11。数据保存在 toollife.txt 中。</translation>
+    </message>
+    <message>
+        <source>Every tool has reached its life in group %1: selecting it is an alarm.</source>
+        <translation>第%1组所有刀具寿命已到: 选择该组将报警。</translation>
+    </message>
+    <message>
+        <source>toollife.txt: %1 line(s) could not be read; they are kept in the file as comments.</source>
+        <translation>toollife.txt: 有%1行无法读取, 已作为注释保留在文件中。</translation>
+    </message>
+    <message>
+        <source>toollife.txt not saved: %1</source>
+        <translation>toollife.txt 未保存: %1</translation>
+    </message>
+    <message>
+        <source>Reset the tool life of group %1: every tool's used life back to 0?</source>
+        <translation>第%1组刀具寿命清零: 所有刀具的已用寿命归零?</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::ToolTablePage</name>
     <message>
         <source>Tool Table</source>
@@ -2400,6 +2527,10 @@ STEP MPG</source>
     <message>
         <source>Export</source>
         <translation>导出</translation>
+    </message>
+    <message>
+        <source>Tool Life</source>
+        <translation>刀具寿命</translation>
     </message>
     <message>
         <source>Cur Tool:</source>

@@ -107,7 +107,7 @@ TEST(HmiReplay, ABadReplayFileIsRefusedWithItsLine) {
 }
 
 TEST(HmiReplay, EveryPageRendersInBothLanguages) {
-    for (const char* page : {"monitor", "mdi", "io", "probe", "param", "system", "tools"}) {
+    for (const char* page : {"monitor", "mdi", "io", "probe", "param", "system", "tools", "toollife"}) {
         for (const char* lang : {"zh_CN", "en"}) {
             HmiRun run = runHmi({"--page", page, "--lang", lang});
             ASSERT_EQ(run.exitCode, 0) << page << " " << lang << ": " << run.errors.toStdString();
@@ -188,6 +188,37 @@ TEST(HmiReplay, TouchOffFromTheToolTableRewritesTheLoadedToolsZ) {
     EXPECT_EQ(rows.at(0).toString(), QStringLiteral("T1 P1 Z10.5")) << rows.at(0).toString().toStdString();
     EXPECT_EQ(rows.at(1).toString(), QStringLiteral("T2 P2 Z-48.12 ;{teeth=3}"));
     EXPECT_EQ(run.state["tool_table_selected"].toInt(), 2);
+}
+
+} // namespace m350::test
+
+namespace m350::test {
+
+// The 刀具寿命 view's replay (docs/replays/toollife.jsonl, its program written here): G10 L3 enters
+// the groups, T6 cuts 70 s of its 1 minute, the next T102 brings in T7, and the view, opened through
+// 刀具表's Shift+F1, shows T6 spent and T7 in use.
+TEST(HmiReplay, ToolLifeViewShowsTheSisterAProgramBroughtIn) {
+    QTemporaryDir dir;
+    QFile program(dir.filePath("life.nc"));
+    ASSERT_TRUE(program.open(QIODevice::WriteOnly));
+    program.write("G10 L3\nP2 L1 Q2\nT6 H6\nT7 H7\nG11\nT102\nG90 G54 G0 X10 Y10\nG91 G1 X50 F300\nX-50\nX50\n"
+                  "X-50\nX50\nX-50\nX50\nT102\nM30\n");
+    program.close();
+    QFile replayFile(dir.filePath("life.jsonl"));
+    ASSERT_TRUE(replayFile.open(QIODevice::WriteOnly));
+    replayFile.write(QStringLiteral("{\"t\":0,\"load\":\"%1\"}\n{\"t\":0.1,\"key\":\"START\"}\n"
+                                    "{\"t\":150,\"page\":\"probe\"}\n{\"t\":150.1,\"softkey\":2}\n"
+                                    "{\"t\":150.2,\"softkey\":7}\n")
+                         .arg(program.fileName())
+                         .toUtf8());
+    replayFile.close();
+    HmiRun run = runHmi({"--replay", replayFile.fileName(), "--lang", "en"});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_EQ(run.state["page"].toString(), "toollife");
+    const QJsonArray rows = run.state["tool_life"].toArray();
+    ASSERT_EQ(rows.size(), 2);
+    EXPECT_EQ(rows.at(0).toString(), "2|Minutes|1:00|T6|6|0|1:08|0:00|# Life reached") << "17 units of 4 s";
+    EXPECT_EQ(rows.at(1).toString(), "|||T7|7|0|0:00|1:00|@ In use");
 }
 
 } // namespace m350::test

@@ -24,6 +24,17 @@
 
 namespace m350::test {
 
+// A file's text (empty when it cannot be read), and a file written whole.
+inline QString fileText(const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+}
+inline void putFile(const QString& path, const QByteArray& text) {
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly | QIODevice::Truncate)) << path.toStdString();
+    file.write(text);
+}
+
 class PanelHarness {
 public:
     explicit PanelHarness(ui::MachineSession::Options options = {}) {

@@ -16,17 +16,6 @@ namespace {
 
 using Column = ui::ToolTablePage::Column;
 
-QString readFile(const QString& path) {
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
-}
-
-void writeFile(const QString& path, const QByteArray& text) {
-    QFile file(path);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
-    file.write(text);
-}
-
 double parameter(PanelHarness& panel, int number) { return panel.session().latest()->status.parameters.get(number); }
 
 // Clears the prompt's text and types `text`, then Enter.
@@ -80,9 +69,9 @@ TEST(ToolTablePage, AFieldEditedInThePromptIsTheToolsParameterAndIsSavedInToolTb
     answer(panel, "0");
     EXPECT_TRUE(panel.window().messageText().contains(QStringLiteral("at least 1 tooth")))
         << panel.window().messageText().toStdString();
-    const QString saved = readFile(QDir(panel.folder()).filePath("tool.tbl"));
+    const QString saved = fileText(QDir(panel.folder()).filePath("tool.tbl"));
     EXPECT_TRUE(saved.contains(QStringLiteral("\nT2 P2 Z-50.5 ;{type=ball}\n"))) << saved.toStdString();
-    EXPECT_TRUE(readFile(QDir(panel.folder()).filePath("params.toml")).contains(QStringLiteral("931 = -50.5")));
+    EXPECT_TRUE(fileText(QDir(panel.folder()).filePath("params.toml")).contains(QStringLiteral("931 = -50.5")));
 }
 
 TEST(ToolTablePage, TouchOffMakesTheDisplayReadTheMeasuredZ) {
@@ -119,7 +108,7 @@ TEST(ToolTablePage, ALinuxCncFileImportsAsItIsTheTableExportsAndBothSurviveARest
                                 "T1 P1 Z+60.000000 D+6.000000 ;6 mm end mill {rpm=24000 teeth=2 type=flat}\n"
                                 "T5 P5 Z-12.5 S100 ;a word LinuxCNC does not know\n"
                                 "T7 P7 Z55.25 ;drill\n";
-    writeFile(QDir(dir.path()).filePath("router.tbl"), linuxCnc);
+    putFile(QDir(dir.path()).filePath("router.tbl"), linuxCnc);
     {
         PanelHarness panel(*folder);
         ui::ToolTablePage* page = openTable(panel);
@@ -133,7 +122,7 @@ TEST(ToolTablePage, ALinuxCncFileImportsAsItIsTheTableExportsAndBothSurviveARest
         EXPECT_EQ(parameter(panel, 930), 60.0);
         EXPECT_EQ(parameter(panel, 931), 0.0) << "T2 is not in the imported table";
         EXPECT_EQ(parameter(panel, 973), 0.0) << "nor the virtual T17";
-        EXPECT_EQ(readFile(QDir(*folder).filePath("tool.tbl")), QString::fromUtf8(linuxCnc))
+        EXPECT_EQ(fileText(QDir(*folder).filePath("tool.tbl")), QString::fromUtf8(linuxCnc))
             << "the file as the user wrote it, the skipped line too";
         panel.key("DOWN");
         panel.softkey(3);
@@ -141,7 +130,7 @@ TEST(ToolTablePage, ALinuxCncFileImportsAsItIsTheTableExportsAndBothSurviveARest
         EXPECT_EQ(page->rowCount(), 1);
         panel.softkey(6);
         answer(panel, "export.tbl");
-        EXPECT_EQ(readFile(QDir(*folder).filePath("export.tbl")),
+        EXPECT_EQ(fileText(QDir(*folder).filePath("export.tbl")),
                   QStringLiteral(";from the LinuxCNC router\n"
                                  "T1 P1 Z+60.000000 D+6.000000 ;6 mm end mill {rpm=24000 teeth=2 type=flat}\n"
                                  "T5 P5 Z-12.5 S100 ;a word LinuxCNC does not know\n"));

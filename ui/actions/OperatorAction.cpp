@@ -50,7 +50,8 @@ bool isKnownKey(const QString& name) { return keyNames().contains(name); }
 
 const QStringList& pageIds() {
     static const QStringList ids{"monitor", "mdi",    "io",     "probe",  "program", "param",
-                                 "log",     "system", "coord",  "middle", "record",  "breakrun", "tools"};
+                                 "log",     "system", "coord",  "middle", "record",  "breakrun", "tools",
+                                 "toollife"};
     return ids;
 }
 

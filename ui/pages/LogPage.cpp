@@ -68,6 +68,7 @@ QHash<QString, QString> LogPage::eventTable() {
     w["work_record_cleared"] = tr("Clear Record", "msg 548");
     w["tool_table"] = tr("Tool table changed");
     w["touch_off"] = tr("Tool touched off");
+    w["tool_life_reset"] = tr("Tool life reset");
     return w;
 }
 

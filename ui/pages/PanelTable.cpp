@@ -1,7 +1,9 @@
 #include "ui/pages/PanelTable.h"
 
 #include <QHeaderView>
+#include <QLabel>
 #include <QTableWidget>
+#include <QVBoxLayout>
 
 namespace m350::ui {
 
@@ -14,6 +16,24 @@ QTableWidget* makePanelTable(QWidget* parent, int columns, const char* objectNam
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table->verticalHeader()->hide();
     table->verticalHeader()->setDefaultSectionSize(rowHeight);
+    return table;
+}
+
+QLabel* addPanelLabel(QVBoxLayout* column, QWidget* page, const char* objectName, bool wrap) {
+    auto* label = new QLabel(page);
+    label->setObjectName(objectName);
+    label->setWordWrap(wrap);
+    column->addWidget(label);
+    return label;
+}
+
+QTableWidget* addPanelTable(QVBoxLayout* column, QWidget* page, int columns, const char* objectName) {
+    QTableWidget* table = makePanelTable(page, columns, objectName);
+    for (int c = 0; c < columns - 1; ++c) {
+        table->horizontalHeader()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
+    }
+    table->horizontalHeader()->setSectionResizeMode(columns - 1, QHeaderView::Stretch);
+    column->addWidget(table, 1);
     return table;
 }
 

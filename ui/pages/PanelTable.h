@@ -1,6 +1,8 @@
 #pragma once
 
+class QLabel;
 class QTableWidget;
+class QVBoxLayout;
 class QWidget;
 
 namespace m350::ui {
@@ -9,5 +11,10 @@ namespace m350::ui {
 // selected one at a time, no row numbers, compact rows. It never takes the keyboard focus: UP and
 // DOWN reach it through the dispatcher like every other key.
 QTableWidget* makePanelTable(QWidget* parent, int columns, const char* objectName, int rowHeight = 22);
+
+// A table page's parts in a column: labels above (header) and below (info, help), wrapped text, and
+// a table whose columns fit their text but the last, which takes the rest of the width.
+QLabel* addPanelLabel(QVBoxLayout* column, QWidget* page, const char* objectName, bool wrap);
+QTableWidget* addPanelTable(QVBoxLayout* column, QWidget* page, int columns, const char* objectName);
 
 } // namespace m350::ui

@@ -5,7 +5,6 @@
 #include "ui/pages/PanelTable.h"
 #include "ui/panel/PanelContext.h"
 
-#include <QHeaderView>
 #include <QJsonArray>
 #include <QLabel>
 #include <QTableWidget>
@@ -27,24 +26,11 @@ ToolTablePage::ToolTablePage(PanelContext& context, QWidget* parent) : Page(cont
     setObjectName("toolTablePage");
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(4, 4, 4, 4);
-    header_ = new QLabel(this);
-    header_->setObjectName("toolTableHeader");
-    column->addWidget(header_);
-    table_ = makePanelTable(this, kColumns, "toolTable");
+    header_ = addPanelLabel(column, this, "toolTableHeader", false);
+    table_ = addPanelTable(column, this, kColumns, "toolTable");
     table_->setSelectionBehavior(QAbstractItemView::SelectItems); // the field Enter edits
-    for (int c = 0; c < kColumns - 1; ++c) {
-        table_->horizontalHeader()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
-    }
-    table_->horizontalHeader()->setSectionResizeMode(kColumns - 1, QHeaderView::Stretch);
-    column->addWidget(table_, 1);
-    info_ = new QLabel(this);
-    info_->setObjectName("toolTableInfo");
-    info_->setWordWrap(true);
-    column->addWidget(info_);
-    help_ = new QLabel(this);
-    help_->setObjectName("pageHelp");
-    help_->setWordWrap(true);
-    column->addWidget(help_);
+    info_ = addPanelLabel(column, this, "toolTableInfo", true);
+    help_ = addPanelLabel(column, this, "pageHelp", true);
     retranslate();
 }
 
@@ -105,7 +91,13 @@ QVector<Page::Softkey> ToolTablePage::softkeys() const {
             {tr("Del", "msg 325"), any, any ? QString() : tr("The table is empty")},
             {tr("Touch Off"), true, {}},
             {tr("Import"), true, {}},
-            {tr("Export"), true, {}}};
+            {tr("Export"), true, {}},
+            {tr("Tool Life"), true, {}}, // Shift+F1: the tool life groups (ToolLifePage)
+            {},
+            {},
+            {},
+            {},
+            {}};
 }
 
 void ToolTablePage::softkey(int number) {
@@ -116,6 +108,7 @@ void ToolTablePage::softkey(int number) {
     case 4: touchOff(); break;
     case 5: importTable(); break;
     case 6: exportTable(); break;
+    case 7: emit navigate(QStringLiteral("toollife")); break;
     default: break;
     }
 }

@@ -16,8 +16,9 @@ namespace m350::ui {
 // Z, diameter, maximum rpm, teeth, type and comment. UP/DOWN choose the tool, LEFT/RIGHT the field,
 // Enter or 修改 edits it through the prompt; 新建 adds a tool, 删除 takes one out, 对刀 touches the
 // loaded tool off (its Z so that the display reads the measured work Z), 导入 / 导出 read and write
-// a tool.tbl file (a path typed in the prompt, relative to the machine folder). ESC returns to the
-// Probe page. Every change goes to the session, which saves tool.tbl.
+// a tool.tbl file (a path typed in the prompt, relative to the machine folder); the second row's
+// 刀具寿命 (Shift+F1) opens the tool life groups (ToolLifePage). ESC returns to the Probe page.
+// Every change goes to the session, which saves tool.tbl.
 class ToolTablePage : public Page {
     Q_OBJECT
 public:

@@ -16,6 +16,7 @@
 #include "ui/pages/RecordPage.h"
 #include "ui/pages/ProgramPage.h"
 #include "ui/pages/SystemPage.h"
+#include "ui/pages/ToolLifePage.h"
 #include "ui/pages/ToolTablePage.h"
 #include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/HandwheelWidget.h"
@@ -103,6 +104,7 @@ void MainWindow::addPages() {
     addPage(new SystemPage(context_, stack_));
     addPage(new ToolTablePage(context_, stack_));
     addPage(new CustomKeysPage(context_, stack_));
+    addPage(new ToolLifePage(context_, stack_));
 }
 
 void MainWindow::addPage(Page* page) {

@@ -105,6 +105,8 @@ public:
     void removeTool(int tool);
     void replaceToolTable(const tools::ToolTable& table, const QString& from);
     void touchOffTool(double workZ);
+    // 刀具寿命: the operator's reset (counter clear) of a tool life group's used life.
+    void resetToolLife(int group);
     // The #50-#499 view: while on, each snapshot carries those variables (userVariables).
     void watchVariables(bool on);
 

@@ -5,6 +5,7 @@
 #include "core/config/ParameterPages.h"
 #include "core/config/SystemLog.h"
 #include "core/controller/PanelStatus.h"
+#include "core/tools/ToolLifeView.h"
 #include "core/tools/ToolTable.h"
 
 #include <QMetaType>
@@ -59,6 +60,12 @@ struct PanelSnapshot {
     // tool.tbl failed (empty when it is saved).
     std::shared_ptr<const tools::ToolTable> toolTable;
     QString toolTableProblem;
+    // Tool life management (core/tools/ToolLifeView.h; a new object only when it changed), why the
+    // last save of toollife.txt failed, and whether the T word itself changes the tool (the M350,
+    // where the manager is a simulator extra) rather than M06 (FANUC).
+    std::shared_ptr<const tools::LifeView> toolLife;
+    QString toolLifeProblem;
+    bool tWordChangesTool = false;
     qint64 publishedNs = 0;    // steady clock when the worker published it (the panel's latency meter)
 };
 

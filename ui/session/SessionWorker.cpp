@@ -151,6 +151,7 @@ void SessionWorker::refuse(const QString& why) {
 
 void SessionWorker::publish() {
     keepToolTable();
+    keepToolLife();
     auto snapshot = std::make_shared<PanelSnapshot>();
     snapshot->status = controller_->panelStatus();
     snapshot->activity = activity_;
@@ -163,6 +164,9 @@ void SessionWorker::publish() {
     snapshot->breakPoints = breakPoints();
     snapshot->toolTable = toolTable_;
     snapshot->toolTableProblem = toolTableProblem_;
+    snapshot->toolLife = toolLife_;
+    snapshot->toolLifeProblem = toolLifeProblem_;
+    snapshot->tWordChangesTool = controller_->dialect().tCodeProgram >= 0;
     snapshot->userLevel = userLevel_;
     if (watchVariables_) {
         snapshot->userVariables = userVariables();

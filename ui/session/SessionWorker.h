@@ -81,6 +81,8 @@ public:
     void removeTool(int tool);
     void replaceToolTable(const tools::ToolTable& table, const QString& from);
     void touchOffTool(double workZ);
+    // The 刀具寿命 view's reset of a group's used life; toollife.txt is saved like tool.tbl.
+    void resetToolLife(int group);
     void advanceManual(double seconds);
     void publish();
     // 仿真 (SimulationRun.cpp): the file on a second controller; speed 0 = as fast as the core goes.
@@ -118,6 +120,11 @@ private:
     std::optional<tools::ToolData::Mark> shownToolMark_;
     std::optional<tools::ToolData::Mark> failedToolMark_;
     QString toolTableProblem_;
+    void keepToolLife(); // saves changed tool life data; the view snapshots carry
+    std::shared_ptr<const tools::LifeView> toolLife_;
+    std::optional<std::uint64_t> shownLifeRevision_;
+    std::optional<std::uint64_t> failedLifeRevision_;
+    QString toolLifeProblem_;
     void keepBreakPoint();
     BreakPoints breakPoints() const;
     mutable std::optional<std::pair<QString, int>> keptBreak_; // the machine folder's `breakpoint`, read once

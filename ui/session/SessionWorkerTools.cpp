@@ -1,8 +1,10 @@
 // The tool table side of the session: the page's edits, an imported tool.tbl, touch off, and
-// keeping the machine folder's tool.tbl in step with the tool data however it changed.
+// keeping the machine folder's tool.tbl in step with the tool data however it changed; likewise
+// the tool life data (toollife.txt) and its view.
 #include "ui/session/SessionWorker.h"
 
 #include "core/controller/Controller.h"
+#include "core/tools/ToolLifeFile.h"
 
 namespace m350::ui {
 
@@ -65,6 +67,38 @@ void SessionWorker::keepToolTable() {
     if (!shownToolMark_ || !(*shownToolMark_ == mark)) {
         toolTable_ = std::make_shared<const tools::ToolTable>(controller_->toolTable());
         shownToolMark_ = mark;
+    }
+}
+
+void SessionWorker::resetToolLife(int group) {
+    lastError_.clear();
+    std::string why;
+    if (!controller_->resetToolLife(group, &why)) {
+        refuse(QString::fromStdString(why));
+        return;
+    }
+    log_->record("tool_life_reset", QStringLiteral("P%1").arg(group)); // the group as G10 L3 names it
+    publish();
+}
+
+// Counting changes the data every 4 s of cutting: a save that failed is tried again only when
+// the data changed since.
+void SessionWorker::keepToolLife() {
+    tools::ToolLifeManager& life = controller_->toolLife();
+    const std::uint64_t revision = life.revision();
+    if (!folder_.empty() && life.changed() && failedLifeRevision_ != revision) {
+        if (auto error = tools::saveToolLife(folder_, life.data())) {
+            toolLifeProblem_ = QString::fromStdString(*error);
+            failedLifeRevision_ = revision;
+        } else {
+            toolLifeProblem_.clear();
+            failedLifeRevision_.reset();
+            life.markSaved();
+        }
+    }
+    if (shownLifeRevision_ != revision) {
+        toolLife_ = std::make_shared<const tools::LifeView>(tools::makeLifeView(life));
+        shownLifeRevision_ = revision;
     }
 }
 
