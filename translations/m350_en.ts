@@ -2336,8 +2336,8 @@ STEP MPG</translation>
         <translation>Tool Table</translation>
     </message>
     <message>
-        <source>Simulator extra: the M350 itself has no tool life management. Here T%1 and up select a group (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.</source>
-        <translation>Simulator extra: the M350 itself has no tool life management. Here T%1 and up select a group (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.</translation>
+        <source>Simulator extra: the M350 itself has no tool life management. Here T%1+n selects group n (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.</source>
+        <translation>Simulator extra: the M350 itself has no tool life management. Here T%1+n selects group n (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.</translation>
     </message>
     <message>
         <source>FANUC 0i: T%1 selects group 1 (the ignore number plus the group); M06 ends the counting of the old tool and starts it for the selected one.</source>

@@ -2336,8 +2336,8 @@ STEP MPG</source>
         <translation>刀具表</translation>
     </message>
     <message>
-        <source>Simulator extra: the M350 itself has no tool life management. Here T%1 and up select a group (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.</source>
-        <translation>模拟器扩展功能: M350本身没有刀具寿命管理。此处T%1以上的T指令选择刀具组(T%2 = 第1组), T指令本身即换刀, 相当于FANUC的M06。</translation>
+        <source>Simulator extra: the M350 itself has no tool life management. Here T%1+n selects group n (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.</source>
+        <translation>模拟器扩展功能: M350本身没有刀具寿命管理。此处T%1+n选择第n组(T%2 = 第1组), T指令本身即换刀, 相当于FANUC的M06。</translation>
     </message>
     <message>
         <source>FANUC 0i: T%1 selects group 1 (the ignore number plus the group); M06 ends the counting of the old tool and starts it for the selected one.</source>

@@ -58,7 +58,9 @@ void ToolLifePage::retranslate() {
     help_->setText(tr("UP/DOWN: tool (and its group). Reset Life: the group's tools start again from 0 used. "
                       "Minutes count cutting feed only (no rapids, dwells, holds or tool changes), in whole 4 s "
                       "units, shown as min:s. @ in use, # life reached."));
-    shown_.reset();
+    if (shown_) {
+        fill(); // the words of the cells (life type, state) in the new language
+    }
     if (auto s = context().snapshot()) {
         render(*s);
     }
@@ -103,8 +105,8 @@ void ToolLifePage::render(const PanelSnapshot& snapshot) {
     header_->setText(headerText());
     const int first = shown_ ? shown_->ignoreNumber + 1 : 101;
     note_->setText(tWordChangesTool_
-                       ? tr("Simulator extra: the M350 itself has no tool life management. Here T%1 and up select a "
-                            "group (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.")
+                       ? tr("Simulator extra: the M350 itself has no tool life management. Here T%1+n selects group "
+                            "n (T%2 = group 1) and the T word changes the tool, as M06 does on FANUC.")
                              .arg(first - 1)
                              .arg(first)
                        : tr("FANUC 0i: T%1 selects group 1 (the ignore number plus the group); M06 ends the counting "
@@ -134,7 +136,7 @@ void ToolLifePage::fill() {
                 item->setBackground(QBrush(QColor(30, 110, 60)));
                 item->setForeground(QBrush(Qt::white));
                 item->setFont(bold);
-            } else if (rows_[static_cast<std::size_t>(row)].tool->expired) {
+            } else if (rows_[static_cast<std::size_t>(row)].tool->expired && c >= static_cast<int>(Column::Tool)) {
                 item->setForeground(QBrush(QColor(255, 120, 120)));
             }
             table_->setItem(row, c, item);
