@@ -11,7 +11,7 @@ namespace {
 nlohmann::json firstError(const std::vector<gcode::Diagnostic>& diagnostics) {
     for (const gcode::Diagnostic& d : diagnostics) {
         if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
-            return {{"code", "syntax_error"}, {"message", d.message}, {"file", d.file}, {"line", d.line},
+            return {{"code", d.unreadable ? "file_error" : "syntax_error"}, {"message", d.message}, {"file", d.file}, {"line", d.line},
                     {"column", d.column}};
         }
     }

@@ -39,6 +39,11 @@ const CLI::Validator positiveFinite(
     },
     "POSITIVE");
 
+// `--config ""` silently ran the default machine: an empty name is no file or folder.
+const CLI::Validator nonEmptyPath(
+    [](std::string& text) -> std::string { return text.empty() ? "an empty name is no file or folder" : std::string(); },
+    "PATH");
+
 int parseWhole(const std::string& text, const std::string& what) {
     double v = parseNumber(text, what);
     if (!(v >= -1e9 && v <= 1e9) || v != std::trunc(v)) {
@@ -103,7 +108,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     std::optional<int> tool;
 
     auto addMachineOptions = [&](CLI::App* cmd) {
-        cmd->add_option("--config", o.configDir, "machine folder (default: the bundled M350 16-pocket linear rack)");
+        cmd->add_option("--config", o.configDir, "machine folder (default: the bundled M350 16-pocket linear rack)")
+            ->check(nonEmptyPath);
         cmd->add_option("--dialect", o.dialect, "m350 or fanuc")->check(CLI::IsMember({"m350", "fanuc"}));
     };
     auto addRunOptions = [&](CLI::App* cmd) {
@@ -118,12 +124,15 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_flag("--home", o.home, "home (回零) every axis that has a home switch before the run");
         cmd->add_option("--tool", tool, "tool in the spindle at start");
         cmd->add_option("--print", printList, "variables to report, e.g. 1,100,1300");
-        cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE");
+        cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE")->check(nonEmptyPath);
         cmd->add_option("--dprnt", o.outputFile,
                         "write what the program sends with POPEN/DPRNT/BPRNT/PCLOS to FILE (default: dprnt.txt "
-                        "beside the program; for mdi and hook, in the current folder)");
-        cmd->add_option("--tool-table", o.toolTableFile, "use this tool.tbl instead of the machine folder's");
-        cmd->add_option("--tools-out", o.toolsOut, "write the tool table as the run left it to FILE (tool.tbl format)");
+                        "beside the program; for mdi and hook, in the current folder)")
+            ->check(nonEmptyPath);
+        cmd->add_option("--tool-table", o.toolTableFile, "use this tool.tbl instead of the machine folder's")
+            ->check(nonEmptyPath);
+        cmd->add_option("--tools-out", o.toolsOut, "write the tool table as the run left it to FILE (tool.tbl format)")
+            ->check(nonEmptyPath);
         cmd->add_option("--max-sim-time", o.settings.maxSimTime, "simulated seconds before a runaway stops")
             ->check(positiveFinite);
         cmd->add_option("--sensor-timeout", o.settings.sensorTimeout,
@@ -157,7 +166,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     addRunOptions(hook);
     CLI::App* toolsCmd = app.add_subcommand("tools", "list the machine's tool table (tool.tbl) as a run starts with it");
     addMachineOptions(toolsCmd);
-    toolsCmd->add_option("--tool-table", o.toolTableFile, "read this tool.tbl instead of the machine folder's");
+    toolsCmd->add_option("--tool-table", o.toolTableFile, "read this tool.tbl instead of the machine folder's")
+        ->check(nonEmptyPath);
     toolsCmd->add_flag("--tbl", o.toolsAsTable, "print the table in tool.tbl form instead of JSON");
 
     auto loaded = config::ParameterCatalogue::load(config::ParameterCatalogue::bundledPath());

@@ -224,7 +224,10 @@ int runCommand(int argc, char** argv) {
     printDiagnostics(report.diagnostics);
     if (report.alarm) {
         const Alarm& a = *report.alarm;
-        std::cerr << a.file << ':' << a.line << ':' << a.column << ": alarm: " << a.message << '\n';
+        // an alarm with no line (a native homing alarm names params.toml) is not placed at :0:0
+        std::cerr << (a.file.empty() ? std::string("m350-sim") : a.file)
+                  << (a.line > 0 ? ":" + std::to_string(a.line) + ":" + std::to_string(a.column) : std::string())
+                  << ": alarm: " << a.message << '\n';
     }
     if (auto error = sim::exportTools(controller, o)) {
         std::cerr << "m350-sim: --tools-out: " << *error << '\n';

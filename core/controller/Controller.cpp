@@ -180,7 +180,7 @@ bool Controller::addSourceFile(gcode::Parser& parser, gcode::Program& program, c
                                gcode::FileRole role, std::vector<gcode::Diagnostic>& diagnostics) {
     auto source = gcode::readSourceFile(path);
     if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
-        diagnostics.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, path, 0, 0, error->message});
+        diagnostics.push_back(gcode::diagnosticOf(*error));
         return false;
     }
     const auto& file = std::get<gcode::SourceText>(source);
@@ -199,7 +199,7 @@ bool Controller::loadFile(const std::string& path) {
     mdi_ = false;
     auto source = gcode::readSourceFile(path);
     if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
-        diagnostics_.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, path, 0, 0, error->message});
+        diagnostics_.push_back(gcode::diagnosticOf(*error));
         return false;
     }
     const auto& text = std::get<gcode::SourceText>(source);

@@ -312,6 +312,8 @@ private:
     // True once the machine's clock has passed --max-sim-time (or gone nan); the move or dwell
     // under way is then stopped where the limit found it, so the report shows that moment.
     bool passedTimeLimit();
+    // The machine folder's params.toml, which native homing alarms name (their cause is a parameter).
+    std::string parametersFile() const;
     void raiseAlarm(const Alarm& alarm);
     void parseWithLibraries(gcode::Program& program, const std::string& path, std::string_view text,
                             gcode::FileRole role, const std::string& encoding,

@@ -67,6 +67,10 @@ void Controller::placeHomeSwitches() {
     }
 }
 
+std::string Controller::parametersFile() const {
+    return config_.folder.empty() ? std::string("params.toml") : config_.folder + "/params.toml";
+}
+
 std::optional<Alarm> Controller::homeAxis(int axis) {
     const config::ParameterTable& p = config_.parameters;
     const char name = machine::kAxisNames[static_cast<std::size_t>(axis)];
@@ -75,7 +79,7 @@ std::optional<Alarm> Controller::homeAxis(int axis) {
         return Alarm{AlarmCode::NotHomed,
                      std::string(1, name) + " cannot home: no home switch is set (params " + std::to_string(first) +
                          "-" + std::to_string(first + 2) + ": pin, enable, level)",
-                     "", 0, 0};
+                     parametersFile(), 0, 0};
     }
     const config::PortAssignment homeSwitch = *config::wiredInput(p, param::kHomeSwitchX + 3 * axis);
     const int pin = homeSwitch.pin;
@@ -103,7 +107,7 @@ std::optional<Alarm> Controller::homeAxis(int axis) {
                          std::string(1, name) + " homing ran " + std::to_string(static_cast<long long>(machine_.time())) +
                              " s of simulated time (the limit) after " + std::to_string(cycle) + " of " +
                              std::to_string(cycles) + " approaches: parameter 106 (homing cycle count) is 1 to 5 on the panel",
-                         "", 0, 0};
+                         parametersFile(), 0, 0};
         }
         moveBy(-direction * kBackOff, slow);
         machine_.setInput(pin, 1 - active);

@@ -28,6 +28,7 @@ struct Diagnostic {
     std::uint32_t line = 0;
     std::uint32_t column = 0;
     std::string message;
+    bool unreadable = false; // the file could not be read or decoded: a file error, not a syntax error
 };
 
 // "file:line:col: message", the form compilers use, so editors can jump to it.

@@ -108,7 +108,7 @@ std::variant<std::string, std::size_t> decodeGbk(const Iconv& cd, std::string_vi
 }
 
 // Lines end as the parser ends them (LF, CRLF or CR alone), so the line agrees with its diagnostics.
-std::string position(std::string_view bytes, std::size_t offset) {
+std::pair<std::uint32_t, std::uint32_t> lineAndColumn(std::string_view bytes, std::size_t offset) {
     const std::string_view before = bytes.substr(0, offset);
     LineSplitter lines(before);
     std::string_view line;
@@ -118,7 +118,21 @@ std::string position(std::string_view bytes, std::size_t offset) {
         ++count;
         lineStart = lines.lineStart(line);
     }
-    return "line " + std::to_string(count) + ", column " + std::to_string(offset - lineStart + 1);
+    return {static_cast<std::uint32_t>(count), static_cast<std::uint32_t>(offset - lineStart + 1)};
+}
+
+// A UTF-16 file (Windows Notepad's "Unicode") is neither UTF-8 nor GBK, but saying so helps more
+// than a bad byte at column 1: a byte-order mark, or ASCII text with every other byte 0.
+bool looksUtf16(std::string_view bytes) {
+    if (bytes.starts_with("\xFF\xFE") || bytes.starts_with("\xFE\xFF")) {
+        return true;
+    }
+    const std::size_t sample = std::min<std::size_t>(bytes.size(), 256);
+    std::size_t zeros = 0;
+    for (std::size_t i = 0; i < sample; ++i) {
+        zeros += bytes[i] == '\0';
+    }
+    return sample >= 4 && zeros * 3 >= sample;
 }
 
 std::string errnoMessage(int err) { return std::error_code(err, std::generic_category()).message(); }
@@ -138,6 +152,9 @@ namespace {
 // Decodes `bytes`, which `owner` keeps alive: valid UTF-8 becomes the text as it lies.
 std::variant<SourceText, SourceReadError> decodeOwned(std::string path, std::string_view bytes,
                                                       std::shared_ptr<const void> owner) {
+    if (looksUtf16(bytes)) { // its NUL bytes would pass as UTF-8
+        return SourceReadError{std::move(path), "file is UTF-16: save it as UTF-8 or GBK", 1, 1};
+    }
     const std::size_t bomSize = bytes.starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0;
     const std::string_view body = bytes.substr(bomSize);
     const auto utf8Bad = firstInvalidUtf8(body);
@@ -160,8 +177,11 @@ std::variant<SourceText, SourceReadError> decodeOwned(std::string path, std::str
     // The encoding that got further is most likely the intended one, so its
     // failure point is the byte worth showing to the user.
     const std::size_t bad = bomSize + std::max(*utf8Bad, std::get<std::size_t>(gbk));
-    return SourceReadError{std::move(path), "file is neither valid UTF-8 nor GBK (first bad byte at " +
-                                                position(bytes, bad) + ")"};
+    const auto [line, column] = lineAndColumn(bytes, bad);
+    return SourceReadError{std::move(path),
+                           "file is neither valid UTF-8 nor GBK (first bad byte at line " + std::to_string(line) +
+                               ", column " + std::to_string(column) + ")",
+                           line, column};
 }
 
 #if M350_HAVE_MMAP
@@ -206,6 +226,12 @@ std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::st
     auto copy = std::make_shared<const std::string>(bytes);
     std::string_view view = *copy;
     return decodeOwned(std::move(path), view, std::move(copy));
+}
+
+Diagnostic diagnosticOf(const SourceReadError& error) {
+    Diagnostic d{Severity::Error, DiagnosticKind::Syntax, error.path, error.line, error.column, error.message};
+    d.unreadable = true;
+    return d;
 }
 
 std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/gcode/Diagnostic.h"
+
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -26,7 +28,12 @@ struct SourceText {
 struct SourceReadError {
     std::string path;
     std::string message;
+    std::uint32_t line = 0; // of the first byte that is neither UTF-8 nor GBK; 0 when the file could not be read
+    std::uint32_t column = 0;
 };
+
+// The error as a diagnostic: placed at the bad byte (or 0:0), marked unreadable.
+Diagnostic diagnosticOf(const SourceReadError& error);
 
 // The largest program or library file read: parsed programs take many times their size.
 inline constexpr std::uintmax_t kMostSourceBytes = std::uintmax_t{256} * 1024 * 1024;

@@ -125,3 +125,45 @@ TEST_F(CliTest, ALongMoveStopsWhereTheTimeLimitFindsIt) {
 }
 
 } // namespace m350::clitest
+
+namespace m350::clitest {
+
+// Issue 13: `--config ""` ran the default machine as if nothing was said.
+TEST_F(CliTest, AnEmptyFileOrFolderNameIsAUsageError) {
+    for (std::vector<std::string> args : {std::vector<std::string>{"mdi", "G0 X1", "--config", ""},
+                                          {"check", "p.nc", "--config", ""},
+                                          {"mdi", "G0 X1", "--trace", ""},
+                                          {"mdi", "G0 X1", "--dprnt", ""},
+                                          {"mdi", "G0 X1", "--tools-out", ""},
+                                          {"tools", "--tool-table", ""}}) {
+        ProcessResult r = sim(args);
+        EXPECT_EQ(r.exitStatus, kExitUsage) << args[0] << " " << args[args.size() - 2] << ": " << r.err;
+        EXPECT_NE(r.err.find("an empty name is no file or folder"), std::string::npos) << r.err;
+    }
+}
+
+} // namespace m350::clitest
+
+namespace m350::clitest {
+
+// Issue 13: an unreadable program was a syntax_error at 0:0, and a native homing alarm printed
+// ":0:0: alarm:".
+TEST_F(CliTest, UnreadableFilesAndHomingAlarmsSayWhere) {
+    write("bad.nc", "G0 X1\n(\xFF\xFF)\nM30\n");
+    ProcessResult bad = sim({"run", "bad.nc"});
+    EXPECT_EQ(bad.exitStatus, kExitError);
+    json alarm = output(bad)["alarm"];
+    EXPECT_EQ(alarm.value("code", ""), "file_error") << alarm;
+    EXPECT_EQ(alarm.value("line", 0), 2) << alarm;
+    EXPECT_NE(bad.err.find("bad.nc:2:2: file is neither valid UTF-8 nor GBK"), std::string::npos) << bad.err;
+
+    const std::string fanuc = std::string(M350_MACHINES_DIR) + "/fanuc-0i";
+    ProcessResult homing = sim({"mdi", "G0 X1", "--home", "--config", fanuc});
+    EXPECT_EQ(homing.exitStatus, kExitAlarm) << homing.err;
+    EXPECT_EQ(homing.err.find(":0:0"), std::string::npos) << homing.err;
+    EXPECT_NE(homing.err.find(fanuc + "/params.toml: alarm: Z cannot home: no home switch is set (params 551-553"),
+              std::string::npos)
+        << homing.err;
+}
+
+} // namespace m350::clitest

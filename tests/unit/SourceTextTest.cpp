@@ -170,3 +170,19 @@ TEST(SourceText, ReadRefusesFifosDevicesAndHugeFiles) {
     EXPECT_NE(expectError(readSourceFile(huge)).find("program files above 256 MiB are refused"), std::string::npos);
     std::remove(huge.c_str());
 }
+
+// Issue 13: encoding errors were placed at 0:0 and a UTF-16 file was "neither UTF-8 nor GBK".
+TEST(SourceText, EncodingErrorsArePlacedAndUtf16IsNamed) {
+    const auto bad = decodeSource("bad.nc", "G0 X1\n(\xFF\xFF)\n");
+    ASSERT_TRUE(std::holds_alternative<SourceReadError>(bad));
+    EXPECT_EQ(std::get<SourceReadError>(bad).line, 2u);
+    EXPECT_EQ(std::get<SourceReadError>(bad).column, 2u);
+    const Diagnostic d = diagnosticOf(std::get<SourceReadError>(bad));
+    EXPECT_TRUE(d.unreadable);
+    EXPECT_EQ(formatDiagnostic(d), "bad.nc:2:2: file is neither valid UTF-8 nor GBK (first bad byte at line 2, column 2)");
+
+    using namespace std::string_view_literals;
+    for (std::string_view utf16 : {"\xFF\xFEG\0" "0\0 \0X\0" "1\0\n\0"sv, "G\0" "0\0 \0X\0" "1\0\n\0"sv}) {
+        EXPECT_EQ(expectError(decodeSource("u16.nc", utf16)), "file is UTF-16: save it as UTF-8 or GBK");
+    }
+}
