@@ -228,6 +228,9 @@ int runCommand(int argc, char** argv) {
         std::cerr << (a.file.empty() ? std::string("m350-sim") : a.file)
                   << (a.line > 0 ? ":" + std::to_string(a.line) + ":" + std::to_string(a.column) : std::string())
                   << ": alarm: " << a.message << '\n';
+        if (a.callerLine > 0) {
+            std::cerr << a.callerFile << ':' << a.callerLine << ": note: the alarm is in the library this line called\n";
+        }
     }
     if (auto error = sim::exportTools(controller, o)) {
         std::cerr << "m350-sim: --tools-out: " << *error << '\n';

@@ -44,6 +44,10 @@ struct Alarm {
     std::string file;
     std::uint32_t line = 0;
     std::uint32_t column = 0;
+    // When the alarm is in a library (slib-g.nc's O20000 for `T2.5`), the line of the user's
+    // program or MDI that called it; callerLine 0 when the alarm is on the user's own line.
+    std::string callerFile{};
+    std::uint32_t callerLine = 0;
 };
 
 } // namespace m350

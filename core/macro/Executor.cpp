@@ -68,6 +68,29 @@ std::optional<gcode::SourceLocation> Executor::location() const {
     return program_.blocks[current_].location;
 }
 
+bool Executor::isUserFile(std::uint32_t file) const {
+    const gcode::FileRole role = program_.files[file].role;
+    return role == gcode::FileRole::Main || role == gcode::FileRole::Mdi;
+}
+
+// The innermost frame of the user's program below the library frame that alarmed: its call is the
+// block before its pc (the pc moves on before the callee's frame is pushed).
+void Executor::nameCaller(Alarm& alarm) const {
+    if (isUserFile(program_.blocks[current_].location.file) || frames_.size() < 2) {
+        return;
+    }
+    for (std::size_t i = frames_.size() - 1; i-- > 0;) {
+        const Frame& caller = frames_[i];
+        const gcode::ProgramUnit& unit = program_.units[caller.unit];
+        if (isUserFile(unit.file) && caller.pc > unit.begin) {
+            const gcode::Block& call = program_.blocks[caller.pc - 1];
+            alarm.callerFile = program_.fileName(call.location);
+            alarm.callerLine = call.location.line;
+            return;
+        }
+    }
+}
+
 void Executor::raise(AlarmCode code, std::string message) {
     Alarm alarm;
     alarm.code = code;
@@ -77,6 +100,7 @@ void Executor::raise(AlarmCode code, std::string message) {
         alarm.file = program_.fileName(block.location);
         alarm.line = block.location.line;
         alarm.column = block.location.column;
+        nameCaller(alarm);
     }
     alarm_ = std::move(alarm);
     state_ = State::Alarmed;

@@ -88,6 +88,8 @@ private:
     std::uint32_t programUnit(double number, const char* how, std::uint32_t column) const;
     std::optional<std::uint32_t> handlerFor(char letter, int code) const;
     void indexHandlers();
+    bool isUserFile(std::uint32_t file) const;
+    void nameCaller(Alarm& alarm) const;
     static void takeArguments(std::vector<WordValue>& words, const std::array<std::int8_t, 26>& map,
                               std::vector<std::pair<int, double>>& out, bool codesAreArguments);
     // Canned cycles run by handler programs (ExecutorCycles.cpp).

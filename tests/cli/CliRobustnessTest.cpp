@@ -167,3 +167,21 @@ TEST_F(CliTest, UnreadableFilesAndHomingAlarmsSayWhere) {
 }
 
 } // namespace m350::clitest
+
+namespace m350::clitest {
+
+// Issue 13: `T2.5` alarms inside slib-g.nc's O20000; the message named only slib-g.nc:51, not the
+// user's line that called it.
+TEST_F(CliTest, AnAlarmInALibraryAlsoNamesTheUsersLine) {
+    write("prog.nc", "G0 X1\nT2.5\nM30\n");
+    ProcessResult r = sim({"run", "prog.nc"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    EXPECT_EQ(output(r)["alarm"].value("file", ""), "slib-g.nc");
+    EXPECT_NE(r.err.find("prog.nc:2: note: the alarm is in the library this line called"), std::string::npos) << r.err;
+
+    write("own.nc", "G0 X1\n#1=1/0\nM30\n");
+    ProcessResult own = sim({"run", "own.nc"});
+    EXPECT_EQ(own.err.find("note:"), std::string::npos) << own.err;
+}
+
+} // namespace m350::clitest
