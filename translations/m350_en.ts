@@ -11,6 +11,14 @@
         <translation>New machine folder (a new or empty folder)</translation>
     </message>
     <message>
+        <source>An import is under way: wait for its report</source>
+        <translation>An import is under way: wait for its report</translation>
+    </message>
+    <message>
+        <source>Importing %1 ...</source>
+        <translation>Importing %1 ...</translation>
+    </message>
+    <message>
         <source>Import refused:
 %1: %2</source>
         <translation>Import refused:
@@ -729,6 +737,10 @@ STEP MPG</translation>
     <message>
         <source>Tool life reset</source>
         <translation>Tool life reset</translation>
+    </message>
+    <message>
+        <source>DPRNT output</source>
+        <translation>DPRNT output</translation>
     </message>
 </context>
 <context>
@@ -2152,6 +2164,11 @@ STEP MPG</translation>
         <translation>%1: cannot write: %2</translation>
     </message>
     <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>File save failed!</translation>
+    </message>
+    <message>
         <source>External key %1</source>
         <translation>External key %1</translation>
     </message>
@@ -2162,11 +2179,6 @@ STEP MPG</translation>
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>
         <translation>IN%1: no such input (IN01-IN24)</translation>
-    </message>
-    <message>
-        <source>File save failed!</source>
-        <comment>msg 907</comment>
-        <translation>File save failed!</translation>
     </message>
 </context>
 <context>

@@ -11,6 +11,14 @@
         <translation>新机床文件夹 (新建或空文件夹)</translation>
     </message>
     <message>
+        <source>An import is under way: wait for its report</source>
+        <translation>正在导入,请等待导入报告</translation>
+    </message>
+    <message>
+        <source>Importing %1 ...</source>
+        <translation>正在导入 %1 ...</translation>
+    </message>
+    <message>
         <source>Import refused:
 %1: %2</source>
         <translation>导入被拒绝:
@@ -729,6 +737,10 @@ STEP MPG</source>
     <message>
         <source>Tool life reset</source>
         <translation>刀具寿命清零</translation>
+    </message>
+    <message>
+        <source>DPRNT output</source>
+        <translation>DPRNT输出</translation>
     </message>
 </context>
 <context>
@@ -2152,6 +2164,11 @@ STEP MPG</source>
         <translation>%1: 无法写入: %2</translation>
     </message>
     <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>文件生成失败!</translation>
+    </message>
+    <message>
         <source>External key %1</source>
         <translation>扩展按键%1</translation>
     </message>
@@ -2162,11 +2179,6 @@ STEP MPG</source>
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>
         <translation>IN%1: 无此输入口 (IN01-IN24)</translation>
-    </message>
-    <message>
-        <source>File save failed!</source>
-        <comment>msg 907</comment>
-        <translation>文件生成失败!</translation>
     </message>
 </context>
 <context>

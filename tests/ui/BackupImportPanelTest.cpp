@@ -30,6 +30,7 @@ void triggerMenuEntry(PanelHarness& panel) {
     ASSERT_NE(action, nullptr);
     EXPECT_EQ(action->text(), QStringLiteral("导入控制器备份..."));
     action->trigger();
+    ASSERT_TRUE(panel.window().backupImport().waitForImport(30000));
     ui::settle(panel.session());
 }
 
@@ -75,6 +76,8 @@ TEST(PanelBackupImport, EscKeepsThePanelOnItsMachineAndADamagedBackupIsRefusedIn
     bool switched = false;
     panel.window().backupImport().setSwitcher([&switched](const QString&) { switched = true; });
     panel.window().backupImport().importInto(QDir(dir.path()).filePath("SYSDISK"), QDir(dir.path()).filePath("a"));
+    EXPECT_TRUE(panel.window().backupImport().importing()); // the panel goes on meanwhile
+    ASSERT_TRUE(panel.window().backupImport().waitForImport(30000));
     ASSERT_TRUE(panel.window().prompt()->active());
     panel.key("ESC");
     EXPECT_FALSE(switched);
@@ -83,6 +86,7 @@ TEST(PanelBackupImport, EscKeepsThePanelOnItsMachineAndADamagedBackupIsRefusedIn
     backup.setting[129] = std::nan("");
     backup.writeTo(QDir(dir.path()).filePath("SYSDISK").toStdString());
     panel.window().backupImport().importInto(QDir(dir.path()).filePath("SYSDISK"), QDir(dir.path()).filePath("b"));
+    ASSERT_TRUE(panel.window().backupImport().waitForImport(30000));
     ASSERT_TRUE(panel.window().prompt()->active());
     const QString refusal = panel.window().prompt()->question();
     EXPECT_TRUE(refusal.startsWith(QStringLiteral("导入被拒绝:"))) << refusal.toStdString();

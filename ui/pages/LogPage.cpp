@@ -69,6 +69,7 @@ QHash<QString, QString> LogPage::eventTable() {
     w["tool_table"] = tr("Tool table changed");
     w["touch_off"] = tr("Tool touched off");
     w["tool_life_reset"] = tr("Tool life reset");
+    w["dprnt"] = tr("DPRNT output");
     return w;
 }
 

@@ -3,9 +3,14 @@
 #include "core/config/BackupImport.h"
 #include "ui/panel/PanelContext.h"
 
+#include <QCoreApplication>
+#include <QDeadlineTimer>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QThread>
+
+#include <memory>
 
 namespace m350::ui {
 
@@ -23,6 +28,20 @@ QString shortLine(const std::string& line) {
 
 BackupImportFlow::BackupImportFlow(PanelContext& context, QWidget* window)
     : QObject(window), context_(context), window_(window) {}
+
+BackupImportFlow::~BackupImportFlow() {
+    if (worker_) {
+        worker_->wait();
+    }
+}
+
+bool BackupImportFlow::waitForImport(int milliseconds) {
+    QDeadlineTimer deadline(milliseconds);
+    while (worker_ && !deadline.hasExpired()) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+    }
+    return worker_ == nullptr;
+}
 
 QString BackupImportFlow::chooseFolder(const QString& caption, const QString& start, bool existing) const {
     if (chooser_) {
@@ -48,7 +67,26 @@ void BackupImportFlow::start() {
 }
 
 void BackupImportFlow::importInto(const QString& backup, const QString& machineFolder) {
-    auto outcome = config::importControllerBackup(backup.toStdString(), machineFolder.toStdString());
+    if (worker_) {
+        context_.notify(tr("An import is under way: wait for its report"));
+        return;
+    }
+    context_.notify(tr("Importing %1 ...").arg(backup));
+    using Outcome = std::variant<config::BackupImport, config::ImportError>;
+    auto outcome = std::make_shared<Outcome>();
+    worker_ = QThread::create([outcome, from = backup.toStdString(), into = machineFolder.toStdString()] {
+        *outcome = config::importControllerBackup(from, into);
+    });
+    connect(worker_, &QThread::finished, this, [this, outcome] {
+        worker_->deleteLater();
+        worker_ = nullptr;
+        report(*outcome);
+        emit importFinished();
+    });
+    worker_->start();
+}
+
+void BackupImportFlow::report(const std::variant<config::BackupImport, config::ImportError>& outcome) {
     if (auto* error = std::get_if<config::ImportError>(&outcome)) {
         context_.ask(tr("Import refused:\n%1: %2")
                          .arg(QString::fromStdString(error->file), QString::fromStdString(error->message)),

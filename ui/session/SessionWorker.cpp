@@ -152,6 +152,7 @@ void SessionWorker::refuse(const QString& why) {
 void SessionWorker::publish() {
     keepToolTable();
     keepToolLife();
+    keepExternalOutput();
     auto snapshot = std::make_shared<PanelSnapshot>();
     snapshot->status = controller_->panelStatus();
     snapshot->activity = activity_;

@@ -125,6 +125,8 @@ private:
     std::optional<std::uint64_t> shownLifeRevision_;
     std::optional<std::uint64_t> failedLifeRevision_;
     QString toolLifeProblem_;
+    void keepExternalOutput(); // DPRNT / BPRNT records: the system log and the folder's dprnt.txt
+    std::size_t externalOutputKept_ = 0;
     void keepBreakPoint();
     BreakPoints breakPoints() const;
     mutable std::optional<std::pair<QString, int>> keptBreak_; // the machine folder's `breakpoint`, read once
