@@ -96,7 +96,10 @@ TEST(MdiPage, EscDropsAnEditAndASyntaxErrorShowsWithItsPosition) {
     panel.type("G1 X[1+");
     panel.key("ENTER");
     panel.softkey(1);
-    EXPECT_TRUE(mdi->resultText().contains("MDI:1:")) << "[" << mdi->resultText().toStdString() << "] " << panel.window().messageText().toStdString();
+    EXPECT_TRUE(mdi->resultText().contains("mdi.nc:1:")) << "[" << mdi->resultText().toStdString() << "] " << panel.window().messageText().toStdString();
+    QFile kept(QDir(panel.folder()).filePath("mdi.nc")); // the line ran from mdi.nc, as on the M350
+    ASSERT_TRUE(kept.open(QIODevice::ReadOnly));
+    EXPECT_EQ(kept.readAll(), QByteArray("G1 X[1+\n"));
     panel.key("ENTER");
     panel.type("G0 X1");
     panel.key("ESC");

@@ -77,7 +77,7 @@ void MdiPage::run(int line) {
     }
     running_ = line;
     started_ = false;
-    context().session().runMdi({text}, Activity::Mdi);
+    context().session().runMdiPageLine(text);
 }
 
 bool MdiPage::key(const QString& name) {

@@ -43,6 +43,10 @@ void MachineSession::emergencyStop() { post([](SessionWorker& w) { w.emergencySt
 void MachineSession::loadProgram(const QString& path) {
     post([path](SessionWorker& w) { w.loadProgram(path); });
 }
+void MachineSession::runMdiPageLine(const QString& line) {
+    post([line](SessionWorker& w) { w.runMdi({line}, Activity::Mdi, true); });
+}
+
 void MachineSession::runMdi(const QStringList& lines, Activity activity) {
     post([lines, activity](SessionWorker& w) { w.runMdi(lines, activity); });
 }

@@ -51,6 +51,7 @@ public:
     void emergencyStop(); // E-stop (急停)
     void loadProgram(const QString& path);
     void runMdi(const QStringList& lines, Activity activity = Activity::Mdi);
+    void runMdiPageLine(const QString& line); // the MDI page: written into mdi.nc, which runs
     void answerDialog(bool enter);
     void pressExternStart();
     // A key or softkey that has a hook file (core/config/HookFiles.h): each step runs its hook when

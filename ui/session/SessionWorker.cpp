@@ -2,6 +2,8 @@
 
 #include "ui/session/SimulationRun.h"
 
+#include "core/config/AtomicFile.h"
+#include "core/config/HookFiles.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/Controller.h"
 #include "core/gcode/Diagnostic.h"
@@ -10,6 +12,7 @@
 #include <QDateTime>
 
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -256,18 +259,24 @@ void SessionWorker::loadProgram(const QString& path) {
     publish();
 }
 
-void SessionWorker::runMdi(const QStringList& lines, Activity activity) {
+void SessionWorker::runMdi(const QStringList& lines, Activity activity, bool throughMdiFile) {
     if (busy()) {
         refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
         return;
     }
     std::vector<std::string> text;
+    std::string body;
     for (const QString& line : lines) {
         text.push_back(line.toStdString());
+        body += text.back() + "\n";
     }
     lastError_.clear();
     fileLoaded_ = false;
-    if (!controller_->loadMdi(text)) {
+    // The MDI page's line goes into the system disk's mdi.nc, which then runs, as on the M350 (its
+    // messages name mdi.nc); a folder that cannot be written runs the line directly.
+    const std::filesystem::path mdiFile = std::filesystem::path(folder_) / config::hookFile(config::Hook::Mdi).fileName;
+    const bool viaFile = throughMdiFile && !folder_.empty() && !config::writeFileAtomically(mdiFile, body);
+    if (!(viaFile ? controller_->loadHook(config::Hook::Mdi) : controller_->loadMdi(text))) {
         refuse(diagnosticsText(controller_->diagnostics()));
         return;
     }

@@ -39,7 +39,7 @@ public:
     void reset();
     void emergencyStop();
     void loadProgram(const QString& path);
-    void runMdi(const QStringList& lines, Activity activity);
+    void runMdi(const QStringList& lines, Activity activity, bool throughMdiFile = false);
     void answerDialog(bool enter);
     void pressExternStart();
     // SessionWorkerHooks.cpp: the keys and events that run the machine folder's hook files
