@@ -43,6 +43,7 @@ bool Controller::loadHook(config::Hook hook, const std::map<int, double>& variab
         return false;
     }
     hook_ = hook;
+    mdi_ = hook == config::Hook::Mdi; // mdi.nc is the MDI page's line: the panel is in MDI
     for (auto [number, value] : variables) {
         std::string why;
         if (!setVariable(number, value, &why)) {
