@@ -1,0 +1,90 @@
+// Loading what runs: a program file, MDI lines or a hook, parsed with the machine's libraries,
+// and the executor that runs it.
+#include "core/controller/Controller.h"
+
+#include "core/gcode/Parser.h"
+#include "core/gcode/SourceText.h"
+
+namespace m350::controller {
+
+bool Controller::load(const std::string& path, std::string_view text, gcode::FileRole role,
+                      const std::string& encoding) {
+    // Each load replaces the program (a panel loads one file after another, MDI line after line);
+    // the machine, the variables and the magazine carry on.
+    executor_.reset();
+    paused_.reset();
+    hook_.reset();
+    program_ = gcode::Program{};
+    diagnostics_.clear();
+    parseWithLibraries(program_, path, text, role, encoding, diagnostics_);
+    if (gcode::hasBlockingError(diagnostics_)) {
+        return false;
+    }
+    executor_ = newExecutor();
+    for (auto [number, value] : settings_.variables) {
+        macro::VariableInfo info = store_.map().describe(number);
+        if (macro::VariableStore::ownsKind(info.kind)) {
+            store_.write(info, number, macro::Value::of(value));
+        } else {
+            writeSystem(info, number, value, {});
+        }
+    }
+    return true;
+}
+
+// The file, then the hook programs that programs call (ALL_T.nc for M101), then the machine's
+// libraries: what a run of that file needs.
+void Controller::parseWithLibraries(gcode::Program& program, const std::string& path, std::string_view text,
+                                    gcode::FileRole role, const std::string& encoding,
+                                    std::vector<gcode::Diagnostic>& diagnostics) const {
+    gcode::Parser parser(*config_.dialect);
+    parser.addFile(program, path, text, role, encoding);
+    addCalledHooks(parser, program, path, diagnostics);
+    for (const config::LibraryFile& library : config_.libraries) {
+        addSourceFile(parser, program, library.path, library.role, diagnostics);
+    }
+    parser.finish(program);
+    diagnostics.insert(diagnostics.end(), parser.diagnostics().begin(), parser.diagnostics().end());
+}
+
+bool Controller::addSourceFile(gcode::Parser& parser, gcode::Program& program, const std::string& path,
+                               gcode::FileRole role, std::vector<gcode::Diagnostic>& diagnostics) {
+    auto source = gcode::readSourceFile(path);
+    if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
+        diagnostics.push_back(gcode::diagnosticOf(*error));
+        return false;
+    }
+    const auto& file = std::get<gcode::SourceText>(source);
+    parser.addFile(program, file.path, file.text, role, std::string(gcode::encodingName(file.encoding)));
+    return true;
+}
+
+std::unique_ptr<macro::Executor> Controller::newExecutor() {
+    macro::Executor::Options options;
+    options.codePrograms = config_.codePrograms;
+    options.peripherals = &devices_;
+    return std::make_unique<macro::Executor>(program_, *config_.dialect, store_, *this, interp_, options);
+}
+
+bool Controller::loadFile(const std::string& path) {
+    mdi_ = false;
+    auto source = gcode::readSourceFile(path);
+    if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
+        diagnostics_.push_back(gcode::diagnosticOf(*error));
+        return false;
+    }
+    const auto& text = std::get<gcode::SourceText>(source);
+    return load(text.path, text.text, gcode::FileRole::Main, std::string(gcode::encodingName(text.encoding)));
+}
+
+bool Controller::loadMdi(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& line : lines) {
+        text += line;
+        text += '\n';
+    }
+    mdi_ = true;
+    return load("MDI", text, gcode::FileRole::Mdi, "UTF-8");
+}
+
+} // namespace m350::controller
