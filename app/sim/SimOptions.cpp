@@ -1,4 +1,5 @@
 #include "app/sim/SimOptions.h"
+#include "app/sim/BreakageOptions.h"
 
 #include "core/config/HookFiles.h"
 #include "core/config/ParameterCatalogue.h"
@@ -102,7 +103,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     SimOptions o;
     CLI::App app{"m350-sim: runs M350 / FANUC macro programs on a simulated machine, headless"};
     app.require_subcommand(1);
-    std::vector<std::string> params, vars, inputs, faults;
+    std::vector<std::string> params, vars, inputs, faults, breaks, loadLimits;
     std::string printList;
     bool unhomed = false;
     std::optional<int> tool;
@@ -120,6 +121,11 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--fault", faults,
                         "a fault on input INnn for the whole run: IN12=delayed:SECONDS, bouncing:SECONDS or stuck:LEVEL, "
                         "repeatable");
+        cmd->add_option("--break", breaks,
+                        "tool N breaks in the simulated world, L mm shorter: T1=0.62 (before the run) or "
+                        "T1=0.62@4.5 (at 4.5 s), repeatable");
+        cmd->add_option("--load-limits", loadLimits,
+                        "spindle load limits of tool N, lower:upper % (T1=8:60), over spindle-load.toml, repeatable");
         cmd->add_flag("--unhomed", unhomed, "start with no axis homed");
         cmd->add_flag("--home", o.home, "home (回零) every axis that has a home switch before the run");
         cmd->add_option("--tool", tool, "tool in the spindle at start");
@@ -213,6 +219,12 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         for (const std::string& f : faults) {
             o.settings.inputFaults[parseInputName(splitAssignment(f, "--fault").first, f, "--fault", "IN12=delayed:0.05")] =
                 parseFault(f);
+        }
+        for (const std::string& b : breaks) {
+            o.settings.toolBreaks.push_back(parseToolBreak(b));
+        }
+        for (const std::string& l : loadLimits) {
+            o.settings.loadLimits.insert_or_assign(parseLoadLimits(l).first, parseLoadLimits(l).second);
         }
         std::size_t start = 0;
         while (!printList.empty() && start <= printList.size()) {

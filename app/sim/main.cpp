@@ -7,6 +7,7 @@
 #include "app/sim/SimOptions.h"
 #include "app/sim/ToolsCommand.h"
 #include "app/sim/ToolLifeJson.h"
+#include "app/sim/SpindleLoadJson.h"
 
 #include "core/config/OutputFile.h"
 #include "core/config/MachineConfig.h"
@@ -239,6 +240,9 @@ int runCommand(int argc, char** argv) {
     nlohmann::json json = sim::reportJson(report, controller, o.printVariables);
     if (controller.toolLife().enabled() || !lifeIssues.empty()) {
         json["tool_life"] = sim::toolLifeJson(controller.toolLife(), lifeIssues);
+    }
+    if (controller.spindleLoad().model()) {
+        json["spindle_load"] = sim::spindleLoadJson(controller.spindleLoad(), controller.dialect().id == gcode::DialectId::Fanuc);
     }
     if (trace) {
         if (auto problem = trace->commit()) {

@@ -25,6 +25,7 @@ std::string_view alarmKey(AlarmCode code) {
     case AlarmCode::Crash: return "crash";
     case AlarmCode::DeviceError: return "device_error";
     case AlarmCode::ToolLifeExpired: return "tool_life_expired";
+    case AlarmCode::SpindleLoad: return "spindle_load";
     case AlarmCode::OperatorReset: return "reset";
     case AlarmCode::EmergencyStop: return "emergency_stop";
     }

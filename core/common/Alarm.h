@@ -30,6 +30,7 @@ enum class AlarmCode : std::uint8_t {
     Crash,                // the magazine hardware was hit, a tool dropped: what the real machine would suffer
     DeviceError,          // DPRNT without POPEN, a Modbus slave that does not answer or refuses a register
     ToolLifeExpired,      // every tool of a tool life group has reached its life
+    SpindleLoad,          // the breakage monitor: the spindle load stayed out of the tool's limits
     OperatorReset,
     EmergencyStop,
 };

@@ -7,6 +7,7 @@
 #include "core/config/ParameterCatalogue.h"
 #include "core/config/ParameterLimits.h"
 #include "core/config/TomlReading.h"
+#include "core/config/SpindleLoadToml.h"
 #include "core/tools/ToolData.h"
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
@@ -44,6 +45,26 @@ bool isInside(const fs::path& path, const fs::path& folder) {
     return !relative.empty() && *relative.begin() != "..";
 }
 
+// [tools.97] length = ..., diameter = ...: one tool beyond the lists (a reference tool).
+void readNumberedTools(const fs::path& file, const toml::table& t, MachineConfig& config) {
+    const toml::table* tools = t["tools"].as_table();
+    for (auto&& [key, value] : tools ? *tools : toml::table{}) {
+        const toml::table* tool = value.as_table();
+        if (!tool) {
+            continue; // the length and diameter lists
+        }
+        auto index = static_cast<std::size_t>(numberKey(file, key.str(), value.source(), 1, 9999, "[tools.N] tool"));
+        auto set = [&](std::vector<double>& values, const char* name) {
+            if (const toml::node* v = tool->get(name)) {
+                values.resize(std::max(values.size(), index), 0.0);
+                values[index - 1] = std::abs(numberValue(file, *v, name));
+            }
+        };
+        set(config.toolLengths, "length");
+        set(config.toolDiameters, "diameter");
+    }
+}
+
 void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     fs::path file = folder / "machine.toml";
     if (!fs::exists(file)) {
@@ -61,7 +82,10 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                      "magazine.away_input", "magazine.drawbar_output", "magazine.released_input",
                      "magazine.clamped_input", "magazine.change_xy", "homing", "homing.switch_distance",
                      "tool_setter", "tool_setter.top", "tool_setter.radius", "floating_setter", "floating_setter.top",
-                     "tools", "tools.length", "reference_points", "reference_points.*"},
+                     "tools", "tools.*", // tools.length, tools.diameter, [tools.N]
+                     "stock", "stock.top", "stock.x", "stock.y", "spindle_load", "spindle_load.lambda",
+                     "spindle_load.idle", "spindle_load.per_krpm", "spindle_load.per_cm3", "spindle_load.spike_factor",
+                     "spindle_load.spike_ms", "reference_points", "reference_points.*"},
                     config.warnings);
     config.name = t["name"].value_or(folder.filename().string());
     std::string dialect = t["dialect"].value_or(std::string("m350"));
@@ -159,6 +183,13 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
             config.toolLengths.push_back(numberValue(file, length, "tools.length"));
         }
     }
+    if (auto diameters = t["tools"]["diameter"].as_array()) {
+        for (const toml::node& diameter : *diameters) {
+            config.toolDiameters.push_back(std::abs(numberValue(file, diameter, "tools.diameter")));
+        }
+    }
+    readNumberedTools(file, t, config);
+    readSpindleLoadWorld(file, t, config.spindleLoad);
     if (auto points = t["reference_points"].as_table()) {
         for (auto&& [key, value] : *points) {
             int number = numberKey(file, key.str(), key.source(), 1, 4, "reference point");
@@ -304,6 +335,9 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         }
         config.toolLife = std::move(parsed.data);
         config.toolLifeIssues = std::move(parsed.issues);
+        if (auto wrong = tools::readLoadMonitorSettings((dir / tools::kSpindleLoadFileName).string(), config.loadMonitor)) {
+            return ConfigError{(dir / tools::kSpindleLoadFileName).string(), wrong->message, wrong->line, wrong->column};
+        }
     } catch (const Failure& f) {
         return f.error;
     } catch (const fs::filesystem_error& e) {

@@ -6,6 +6,8 @@
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
 #include "core/machine/SimulatedMachine.h"
+#include "core/machine/SpindleLoadModel.h"
+#include "core/tools/SpindleLoadLimits.h"
 #include "core/tools/ToolTable.h"
 #include "core/tools/ToolLifeFile.h"
 
@@ -37,6 +39,7 @@ struct LibraryFile {
 //                  is loaded as a G library beside the listed ones
 //   modbus.toml    optional: the Modbus RTU slaves' holding registers (ModbusSlaves.h)
 //   toollife.txt   optional: tool life management groups (core/tools/ToolLifeFile.h)
+//   spindle-load.toml optional: the breakage monitor's per-tool load limits (core/tools/SpindleLoadLimits.h)
 struct MachineConfig {
     std::string folder;
     std::string name;
@@ -62,6 +65,10 @@ struct MachineConfig {
     // work, as spindle-nose machine Z at contact with a zero-length tool; none when not given.
     std::optional<double> floatingSetterTop;
     std::vector<double> toolLengths;
+    std::vector<double> toolDiameters; // [tools] diameter = [T1, T2, ...], mm: how wide they cut
+    // [stock] and [spindle_load]: where the simulated spindle load comes from (none: no load signal)
+    std::optional<machine::SpindleLoadModel> spindleLoad;
+    tools::LoadMonitorSettings loadMonitor; // spindle-load.toml
     ModbusSlaves modbus; // modbus.toml
     // tool.tbl as read (refused lines are in `warnings` with file:line:col); nullopt when the folder
     // has none: an M350 then starts its table from params 930-945 (tools::ToolData).

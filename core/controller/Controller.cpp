@@ -41,7 +41,9 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     if (toolLife_.enabled()) {
         machine_.setObserver(this); // cutting time counts from the machine's feed events
     }
+    setUpBreakageWatch();
     applySettings();
+    loadWatch_.startAt(machine_.time());
     savedToolMark_ = tools_.mark();
 }
 
@@ -167,6 +169,7 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
         magazine_.onMachineEvent(event);
     }
     countCuttingTime(event);
+    watchSpindleLoad(event);
 }
 
 void Controller::postMessage(std::string text) {
@@ -348,11 +351,12 @@ void Controller::raiseAlarm(const Alarm& alarm) {
     }
 }
 
-// The tool in the spindle decides where the setter trips: the simulated world's tool length.
+// The tool in the spindle decides where the setter trips: the simulated world's tool length (as
+// it is now: a broken tool is shorter) and radius.
 void Controller::syncToolLength() {
     int tool = spindleTool();
-    bool known = tool >= 1 && static_cast<std::size_t>(tool) <= config_.toolLengths.size();
-    machine_.setToolLength(known ? config_.toolLengths[static_cast<std::size_t>(tool - 1)] : 0.0);
+    machine_.setToolLength(world_.length(tool, machine_.time()));
+    machine_.setToolRadius(world_.diameter(tool).value_or(0.0) / 2.0);
 }
 
 int Controller::spindleTool() const {

@@ -11,6 +11,7 @@
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
 #include "core/controller/SensorWatch.h"
+#include "core/controller/SpindleLoadWatch.h"
 #include "core/controller/MagazineDriver.h"
 #include "core/controller/TraceWriter.h"
 #include "core/gcode/Program.h"
@@ -291,6 +292,10 @@ public:
     // The operator's tool life reset of a group (its tools' used life to 0). Refused (false, with
     // the reason) while a program runs or holds, or for a group that is not entered.
     bool resetToolLife(int group, std::string* why = nullptr);
+    // Tool breakage (SpindleLoad.cpp): the spindle load as the PMC reads it, its monitor and history;
+    // the tools as they really are (a break from RunSettings::toolBreaks shortens one at its time).
+    const SpindleLoadWatch& spindleLoad() const { return loadWatch_; }
+    const machine::ToolWorld& toolWorld() const { return world_; }
 
     // macro::MachineAccess
     bool manageTools(std::vector<macro::WordValue>& words) override;
@@ -307,6 +312,8 @@ private:
     void configureMachine();
     void syncToolLength();
     void countCuttingTime(const machine::MachineEvent& event);
+    void setUpBreakageWatch();
+    void watchSpindleLoad(const machine::MachineEvent& event);
     void enterSafeState();
     void stepOnce();
     // True once the machine's clock has passed --max-sim-time (or gone nan); the move or dwell
@@ -383,6 +390,8 @@ private:
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     ExternalDevices devices_; // the external output device and the Modbus slaves
     tools::ToolLifeManager toolLife_;
+    machine::ToolWorld world_;
+    SpindleLoadWatch loadWatch_;
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 
     // 断点加工 (StartAtLine.cpp): the main block a hold stopped, which pass over it, where it stopped

@@ -75,6 +75,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         }
     }
     case VariableKind::ToolOffset: return Value::of(tools_.offsetValue(info.index));
+    case VariableKind::SpindleLoad: return Value::of(loadWatch_.reg());
     case VariableKind::Alarm:
     case VariableKind::StopMessage: return Value::of(0);
     default: return Value::empty();

@@ -14,6 +14,7 @@ bool Controller::load(const std::string& path, std::string_view text, gcode::Fil
     executor_.reset();
     paused_.reset();
     hook_.reset();
+    loadWatch_.monitor().restart();
     program_ = gcode::Program{};
     diagnostics_.clear();
     parseWithLibraries(program_, path, text, role, encoding, diagnostics_);

@@ -113,7 +113,7 @@ void Controller::reset() {
     if (state_ == RunState::Running) {
         rememberPause(rest); // a run stopped by RESET resumes as a paused one does
     }
-    if (machine_.time() < displayTime_) {
+    if (std::isfinite(displayTime_) && machine_.time() < displayTime_) { // after run() the display is at infinity
         machine_.blockTime(displayTime_ - machine_.time());
     }
     enterSafeState();

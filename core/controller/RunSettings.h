@@ -1,10 +1,13 @@
 #pragma once
 
 #include "core/machine/InputFault.h"
+#include "core/machine/ToolWorld.h"
+#include "core/tools/SpindleLoadLimits.h"
 
 #include <map>
 #include <optional>
 #include <ostream>
+#include <vector>
 
 namespace m350::machine {
 class MachineObserver;
@@ -29,6 +32,9 @@ struct RunSettings {
     std::map<int, machine::InputFault> inputFaults; // port -> a fault for the whole run (a late setter signal)
     std::map<int, double> parameters;  // overrides of the machine folder's parameters
     std::map<int, double> variables;   // set before the run starts
+    // Tools that break in the simulated world (`--break T1=0.62@4`): shorter from then on, cutting nothing.
+    std::vector<machine::ToolBreak> toolBreaks;
+    std::map<int, tools::LoadLimits> loadLimits; // per tool, over spindle-load.toml's (`--load-limits`)
     std::ostream* trace = nullptr;     // JSON Lines events
     // Told every machine event as it happens (the panel's simulation draws the path from them).
     machine::MachineObserver* observer = nullptr;

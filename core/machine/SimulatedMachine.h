@@ -71,6 +71,10 @@ public:
     const HomeSwitch& homeSwitch(int axis) const { return homeSwitches_[static_cast<std::size_t>(axis)]; }
     // The true length of the tool in the spindle (the simulated world's fact, not a parameter).
     void setToolLength(double length) { toolLength_ = length; }
+    // Its true radius: a setter's stylus is touched from the side when the axes come within the
+    // stylus radius plus this (0: only from above, as for a tool whose diameter nobody gave).
+    void setToolRadius(double radius) { toolRadius_ = radius; }
+    double toolLength() const { return toolLength_; }
     void dwell(double seconds) override;
     void blockTime(double seconds) override { time_ += seconds; }
 
@@ -209,6 +213,7 @@ private:
     ToolSetter setter_;
     ToolSetter floatingSetter_; // its radius does not matter: it lies under the tool wherever it is
     double toolLength_ = 0.0;
+    double toolRadius_ = 0.0;
     bool setterPressed(const ToolSetter& setter, const Axes& at) const;
     std::optional<double> setterCrossing(const ToolSetter& setter, const Axes& target, int level) const;
     const ToolSetter* setterOn(int port) const;

@@ -2,13 +2,56 @@
 #include "core/machine/SimulatedMachine.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace m350::machine {
+
+namespace {
+
+// A range of fractions along a move, [from, to]; empty when from > to.
+struct Span {
+    double from = 0.0;
+    double to = 1.0;
+    bool empty() const { return from > to; }
+    Span within(const Span& other) const { return {std::max(from, other.from), std::min(to, other.to)}; }
+};
+
+constexpr Span kNone{1.0, 0.0};
+
+// Where along p0 + (p1 - p0) f a value v(f) = v0 + dv f stays at or below `limit`.
+Span atOrBelow(double v0, double dv, double limit) {
+    if (std::abs(dv) < 1e-12) {
+        return v0 <= limit + 1e-9 ? Span{0.0, 1.0} : kNone;
+    }
+    double f = (limit - v0) / dv;
+    return dv < 0.0 ? Span{f, 1.0} : Span{0.0, f};
+}
+
+// Where the XY path comes within `reach` of (cx, cy): a quadratic in f.
+Span withinReach(const Axes& from, const Axes& to, double cx, double cy, double reach) {
+    const double px = from(0) - cx, py = from(1) - cy;
+    const double dx = to(0) - from(0), dy = to(1) - from(1);
+    const double a = dx * dx + dy * dy;
+    const double c = px * px + py * py - reach * reach;
+    if (a < 1e-18) {
+        return c <= 1e-9 ? Span{0.0, 1.0} : kNone;
+    }
+    const double b = 2.0 * (dx * px + dy * py);
+    const double discriminant = b * b - 4.0 * a * c;
+    if (discriminant < 0.0) {
+        return kNone;
+    }
+    const double root = std::sqrt(discriminant);
+    return {(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)};
+}
+
+} // namespace
 
 bool SimulatedMachine::setterPressed(const ToolSetter& setter, const Axes& at) const {
     double dx = at(0) - setter.x;
     double dy = at(1) - setter.y;
-    bool under = &setter == &floatingSetter_ || dx * dx + dy * dy <= setter.radius * setter.radius;
+    double reach = setter.radius + toolRadius_;
+    bool under = &setter == &floatingSetter_ || dx * dx + dy * dy <= reach * reach + 1e-9;
     return setter.port != 0 && under && at(2) <= setter.top + toolLength_ + 1e-9;
 }
 
@@ -55,21 +98,26 @@ std::optional<double> SimulatedMachine::homeSwitchCrossing(int axis, const Axes&
     return fraction;
 }
 
-// Where along the straight move from here to `target` (0..1) the setter's switch comes to `level`:
-// pressed where Z comes down to the trip height over the setter, released where it rises above it.
+// Where along the straight move from here to `target` (0..1) the setter's switch comes to `level`.
+// It is pressed while the tool tip is at or below the setter's top and the tool's side within the
+// stylus (a disc stylus is touched from above and from the side, as a TS27R's is); the switch
+// opens where the move leaves that region.
 std::optional<double> SimulatedMachine::setterCrossing(const ToolSetter& setter, const Axes& target, int level) const {
     const bool pressing = level == setter.activeLevel;
-    const double dz = target(2) - position_(2);
-    if (pressing ? dz >= 0.0 : dz <= 0.0) {
+    Span contact = atOrBelow(position_(2), target(2) - position_(2), setter.top + toolLength_).within({0.0, 1.0});
+    if (&setter != &floatingSetter_) {
+        contact = contact.within(withinReach(position_, target, setter.x, setter.y, setter.radius + toolRadius_));
+    }
+    if (contact.empty()) {
         return std::nullopt;
     }
-    const double contact = setter.top + toolLength_;
-    const double fraction = std::clamp((contact - position_(2)) / dz, 0.0, 1.0);
-    const Axes at = position_ + (target - position_) * fraction;
-    if (pressing ? !setterPressed(setter, at) : setterPressed(setter, target)) {
-        return std::nullopt;
+    if (pressing) {
+        return contact.from;
     }
-    return fraction;
+    if (contact.from > 1e-9 || setterPressed(setter, target)) {
+        return std::nullopt; // not pressed where it starts, or still pressed where it ends
+    }
+    return contact.to;
 }
 
 // The signal can come from a setter (where the tip meets its top, or leaves it) or be there from

@@ -121,6 +121,11 @@ void Evaluator::writeVariable(int number, Value value, std::string_view text, st
             values[i] = readVariable(kMessageValueFirst + i, column).asNumber();
         }
         formatted = formatMessageText(text, values);
+    } else if (info.kind == VariableKind::Alarm) {
+        formatted = expandVariableFields(text, [&](int n) -> std::optional<double> {
+            Value v = readVariable(n, column);
+            return v.vacant ? std::nullopt : std::optional<double>(v.number);
+        });
     } else {
         formatted = std::string(text);
     }

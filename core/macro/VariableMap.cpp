@@ -45,12 +45,16 @@ VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable +
         // a simulator extra: FANUC's macro alarm, so our tool-setting macros stop a run with an
         // alarm where the firmware's only leave a message (the M350 has no variable above #2999)
         add(3000, 3000, K::Alarm);
+        add(2990, 2990, K::SpindleLoad, true); // a simulator extra, as FANUC's #1032 below
     } else {
         add(0, 0, K::Null, true);
         add(1, 33, K::Local);
         add(100, 199, K::Common);
         add(500, 999, K::Retained);
         add(1000, 1015, K::PmcSignal, true, 0);
+        // the PMC copies the spindle load register (the article's R1212-R1213) to G54-G55,
+        // which macros read as one 16-bit word
+        add(1032, 1032, K::SpindleLoad, true);
         add(1100, 1115, K::System);
         add(2001, 2400, K::ToolOffset, false, 1);
         add(3000, 3000, K::Alarm);
@@ -115,6 +119,7 @@ std::string_view kindName(VariableKind kind) {
     case VariableKind::ModalGroup: return "modal group";
     case VariableKind::ModalWord: return "modal word";
     case VariableKind::ToolOffset: return "tool offset";
+    case VariableKind::SpindleLoad: return "spindle load % x 100";
     case VariableKind::System: return "system";
     }
     return "undefined";

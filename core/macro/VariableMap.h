@@ -36,6 +36,7 @@ enum class VariableKind : std::uint8_t {
     ModalGroup,      // FANUC #4001-#4022
     ModalWord,       // FANUC #4107-#4120 (D E F H M N O S T ...)
     ToolOffset,      // FANUC #2001-#2400: tool offset memory 1-400
+    SpindleLoad,     // FANUC #1032, M350 #2990 (a simulator extra): spindle load % x 100, read-only
     System           // other system values, kept as plain storage
 };
 

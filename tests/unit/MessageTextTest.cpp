@@ -111,3 +111,21 @@ TEST(MessageVariable, ValuesAreReadWhenTheMessageIsWritten) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(AlarmTextFields, VariablesAreFilledInWithAtMostThreeDecimals) {
+    auto read = [](int n) -> std::optional<double> {
+        if (n == 20) {
+            return 1.0;
+        }
+        if (n == 32) {
+            return 0.6200000000001;
+        }
+        return std::nullopt;
+    };
+    EXPECT_EQ(m350::macro::expandVariableFields("tool {#20} broken: {#32} mm short", read), "tool 1 broken: 0.62 mm short");
+    EXPECT_EQ(m350::macro::expandVariableFields("{#7} {#} {x} {#12345} {#20", read), "vacant {#} {x} {#12345} {#20");
+}
+
+} // namespace

@@ -1,0 +1,80 @@
+#include "core/tools/SpindleLoadLimits.h"
+
+#include <toml++/toml.h>
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+
+namespace m350::tools {
+
+namespace {
+
+LoadSettingsError at(const toml::node& node, std::string message) {
+    return {static_cast<int>(node.source().begin.line), static_cast<int>(node.source().begin.column), std::move(message)};
+}
+
+std::optional<double> number(const toml::node* node) {
+    if (!node) {
+        return std::nullopt;
+    }
+    auto v = node->value<double>();
+    return v && std::isfinite(*v) ? v : std::nullopt;
+}
+
+} // namespace
+
+std::optional<LoadSettingsError> readLoadMonitorSettings(const std::string& path, LoadMonitorSettings& out) {
+    if (!std::filesystem::exists(path)) {
+        return std::nullopt;
+    }
+    toml::table t;
+    try {
+        t = toml::parse_file(path);
+    } catch (const toml::parse_error& e) {
+        return LoadSettingsError{static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column),
+                                 std::string(e.description())};
+    }
+    if (const toml::table* monitor = t["monitor"].as_table()) {
+        if (const toml::node* ms = monitor->get("sample_ms")) {
+            auto v = number(ms);
+            if (!v || *v < 1.0 || *v > 10000.0) {
+                return at(*ms, "sample_ms must be a number from 1 to 10000");
+            }
+            out.sampleSeconds = *v / 1000.0;
+        }
+        if (const toml::node* n = monitor->get("samples")) {
+            auto v = n->value<std::int64_t>();
+            if (!v || *v < 1 || *v > 1000) {
+                return at(*n, "samples must be a whole number from 1 to 1000");
+            }
+            out.samples = static_cast<int>(*v);
+        }
+    }
+    if (const toml::table* tools = t["tool"].as_table()) {
+        for (auto&& [key, value] : *tools) {
+            int tool = 0;
+            std::string_view k = key.str();
+            auto [end, ec] = std::from_chars(k.data(), k.data() + k.size(), tool);
+            const toml::table* limits = value.as_table();
+            if (ec != std::errc() || end != k.data() + k.size() || tool < 1 || tool > 9999 || !limits) {
+                return at(value, "[tool." + std::string(k) + "] must name a tool 1-9999 and hold lower and upper");
+            }
+            LoadLimits l;
+            auto lower = number(limits->get("lower"));
+            auto upper = number(limits->get("upper"));
+            if ((limits->contains("lower") && !lower) || (limits->contains("upper") && !upper)) {
+                return at(value, "tool " + std::to_string(tool) + ": lower and upper must be numbers (load %)");
+            }
+            l.lower = lower.value_or(0.0);
+            l.upper = upper.value_or(0.0);
+            if (l.lower < 0.0 || l.upper < 0.0 || (l.upper > 0.0 && l.upper <= l.lower)) {
+                return at(value, "tool " + std::to_string(tool) + ": need 0 <= lower < upper (upper 0: none)");
+            }
+            out.tools[tool] = l;
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace m350::tools
