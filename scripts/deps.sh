@@ -8,6 +8,7 @@ REQUIRED_PACKAGES=(
     libeigen3-dev nlohmann-json3-dev libcli11-dev libtomlplusplus-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+    qt6-charts-dev libqt6opengl6-dev  # Qt Charts (the breakage monitor); its CMake config needs Qt6OpenGL
     xvfb xauth
     fonts-wqy-microhei fonts-dejavu-core
 )

@@ -1,13 +1,24 @@
 #!/usr/bin/env bash
 # Renders the README's screenshots: each replay of docs/replays/ played by m350-hmi under Xvfb,
-# in Chinese and in English, into docs/screenshots/PAGE-LANG.png.
+# in Chinese and in English, into docs/screenshots/PAGE-LANG.png. A replay with a PAGE.args beside
+# it runs on a copy of the bundled machine its first word names, with the rest as extra options.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 BUILD=${1:-build}
 for replay in docs/replays/*.jsonl; do
     page=$(basename "$replay" .jsonl)
     for lang in zh_CN en; do
-        xvfb-run -a "$BUILD/app/m350-hmi" --lang "$lang" --replay "$replay" --screenshot "docs/screenshots/$page-$lang.png" 2>/dev/null
+        extra=()
+        if [[ -f "docs/replays/$page.args" ]]; then
+            read -r -a words < "docs/replays/$page.args"
+            scratch=$(mktemp -d)
+            cp -r "resources/machines/${words[0]}" "$scratch/machine"
+            extra=(--config "$scratch/machine" "${words[@]:1}")
+        fi
+        xvfb-run -a "$BUILD/app/m350-hmi" --lang "$lang" --replay "$replay" "${extra[@]}" \
+            --screenshot "docs/screenshots/$page-$lang.png" 2>/dev/null
+        [[ -z "${scratch:-}" ]] || rm -rf "$scratch"
+        scratch=
     done
 done
 ls docs/screenshots

@@ -127,6 +127,89 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::BreakageMonitorPage</name>
+    <message>
+        <source>Breakage Monitor</source>
+        <translation>Breakage Monitor</translation>
+    </message>
+    <message>
+        <source>Tool Table</source>
+        <translation>Tool Table</translation>
+    </message>
+    <message>
+        <source>Current tool:</source>
+        <translation>Current tool:</translation>
+    </message>
+    <message>
+        <source>Spindle load:</source>
+        <translation>Spindle load:</translation>
+    </message>
+    <message>
+        <source>Register:</source>
+        <translation>Register:</translation>
+    </message>
+    <message>
+        <source>Lambda (param 4127):</source>
+        <translation>Lambda (param 4127):</translation>
+    </message>
+    <message>
+        <source>Limits:</source>
+        <translation>Limits:</translation>
+    </message>
+    <message>
+        <source>Rule:</source>
+        <translation>Rule:</translation>
+    </message>
+    <message>
+        <source>Alarm:</source>
+        <translation>Alarm:</translation>
+    </message>
+    <message>
+        <source>Load %</source>
+        <translation>Load %</translation>
+    </message>
+    <message>
+        <source>Lower limit</source>
+        <translation>Lower limit</translation>
+    </message>
+    <message>
+        <source>Upper limit</source>
+        <translation>Upper limit</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Time (s)</translation>
+    </message>
+    <message>
+        <source>Load (%)</source>
+        <translation>Load (%)</translation>
+    </message>
+    <message>
+        <source>Load% = L / 32767 x lambda, kept x100 in a 16-bit register. Limits per tool in spindle-load.toml; the lower one counts only while the tool cuts.</source>
+        <translation>Load% = L / 32767 x lambda, kept x100 in a 16-bit register. Limits per tool in spindle-load.toml; the lower one counts only while the tool cuts.</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>None</translation>
+    </message>
+    <message>
+        <source>This machine has no spindle load model ([spindle_load] in machine.toml).</source>
+        <translation>This machine has no spindle load model ([spindle_load] in machine.toml).</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>none for this tool</source>
+        <translation>none for this tool</translation>
+    </message>
+    <message>
+        <source>%1 samples in a row out of the limits, one every %2 ms</source>
+        <translation>%1 samples in a row out of the limits, one every %2 ms</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::CompactDro</name>
     <message>
         <source>Mach</source>
@@ -2543,6 +2626,10 @@ STEP MPG</translation>
     <message>
         <source>Tool Life</source>
         <translation>Tool Life</translation>
+    </message>
+    <message>
+        <source>Breakage Monitor</source>
+        <translation>Breakage Monitor</translation>
     </message>
     <message>
         <source>Cur Tool:</source>

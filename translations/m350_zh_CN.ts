@@ -127,6 +127,89 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::BreakageMonitorPage</name>
+    <message>
+        <source>Breakage Monitor</source>
+        <translation>破损监测</translation>
+    </message>
+    <message>
+        <source>Tool Table</source>
+        <translation>刀具表</translation>
+    </message>
+    <message>
+        <source>Current tool:</source>
+        <translation>当前刀具:</translation>
+    </message>
+    <message>
+        <source>Spindle load:</source>
+        <translation>主轴负载:</translation>
+    </message>
+    <message>
+        <source>Register:</source>
+        <translation>寄存器:</translation>
+    </message>
+    <message>
+        <source>Lambda (param 4127):</source>
+        <translation>λ(参数4127):</translation>
+    </message>
+    <message>
+        <source>Limits:</source>
+        <translation>限值:</translation>
+    </message>
+    <message>
+        <source>Rule:</source>
+        <translation>判定:</translation>
+    </message>
+    <message>
+        <source>Alarm:</source>
+        <translation>报警:</translation>
+    </message>
+    <message>
+        <source>Load %</source>
+        <translation>负载率 %</translation>
+    </message>
+    <message>
+        <source>Lower limit</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <source>Upper limit</source>
+        <translation>上限</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>时间(秒)</translation>
+    </message>
+    <message>
+        <source>Load (%)</source>
+        <translation>负载率(%)</translation>
+    </message>
+    <message>
+        <source>Load% = L / 32767 x lambda, kept x100 in a 16-bit register. Limits per tool in spindle-load.toml; the lower one counts only while the tool cuts.</source>
+        <translation>负载率 = L / 32767 × λ,放大100倍存入16位寄存器。各刀具的限值在 spindle-load.toml 中;下限只在切削时判定。</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>This machine has no spindle load model ([spindle_load] in machine.toml).</source>
+        <translation>本机床没有主轴负载模型(machine.toml 的 [spindle_load])。</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>none for this tool</source>
+        <translation>本刀具未设限值</translation>
+    </message>
+    <message>
+        <source>%1 samples in a row out of the limits, one every %2 ms</source>
+        <translation>连续%1次采样超出限值报警,每%2毫秒采样一次</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::CompactDro</name>
     <message>
         <source>Mach</source>
@@ -2543,6 +2626,10 @@ STEP MPG</source>
     <message>
         <source>Tool Life</source>
         <translation>刀具寿命</translation>
+    </message>
+    <message>
+        <source>Breakage Monitor</source>
+        <translation>破损监测</translation>
     </message>
     <message>
         <source>Cur Tool:</source>

@@ -30,6 +30,9 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
     app.add_option("--record", o.record, "record the operator's actions to this file (JSON Lines)");
     app.add_flag("--unhomed", o.unhomed, "start with no axis homed, as after power-on");
     app.add_option("--tool", o.tool, "tool in the spindle at start")->check(CLI::Range(0, 99));
+    app.add_option("--break", o.breaks,
+                   "tool N breaks in the simulated world, L mm shorter and cutting nothing: T1=0.62 or T1=0.62@12 "
+                   "(at 12 s of virtual time), repeatable");
     app.add_option("--rate", o.rate, "virtual seconds per wall second (faster for simulation)")
         ->check(CLI::Range(0.01, 1000.0));
     app.add_option("--measure", o.measure,

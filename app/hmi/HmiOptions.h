@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace m350::hmi {
 
@@ -18,6 +19,7 @@ struct HmiOptions {
     std::string record;      // record what the operator does (JSON Lines)
     bool unhomed = false;
     std::optional<int> tool;
+    std::vector<std::string> breaks; // --break T1=0.62@12: tools that break in the simulated world
     double rate = 1.0;       // virtual seconds per wall second
     double measure = 0.0;    // > 0: start the program, measure the panel for this long, print JSON, exit
     bool headlessRun() const { return !screenshot.empty() || !replay.empty() || !state.empty(); }

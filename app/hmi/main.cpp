@@ -1,6 +1,7 @@
 // m350-hmi: the desktop panel. Builds the session and the window, then either runs the event loop
 // or (with --screenshot / --replay / --state) renders in virtual time and exits.
 #include "app/hmi/HmiOptions.h"
+#include "app/sim/BreakageOptions.h"
 #include "core/config/MachineConfig.h"
 #include "ui/i18n/Language.h"
 #include "ui/pages/ProgramPage.h"
@@ -11,6 +12,7 @@
 #include "ui/replay/Replay.h"
 #include "ui/session/MachineSession.h"
 
+#include <CLI/CLI.hpp>
 #include <QApplication>
 #include <QFile>
 #include <QJsonDocument>
@@ -96,6 +98,13 @@ int main(int argc, char** argv) {
     sessionOptions.rate = o.rate;
     sessionOptions.homed = !o.unhomed;
     sessionOptions.tool = o.tool;
+    try {
+        for (const std::string& broken : o.breaks) {
+            sessionOptions.toolBreaks.push_back(sim::parseToolBreak(broken));
+        }
+    } catch (const CLI::ValidationError& e) {
+        return fail(QString::fromStdString(e.what()), 64);
+    }
     ui::MachineSession session(std::move(std::get<config::MachineConfig>(loaded)), sessionOptions);
     ui::MainWindow window(session, folder, &language);
     if (QFile style(QStringLiteral(":/panel/panel.qss")); style.open(QIODevice::ReadOnly)) {

@@ -73,4 +73,31 @@ std::optional<SpindleLoadWatch::Anomaly> SpindleLoadWatch::sampleUpTo(const mach
     return anomaly;
 }
 
+SpindleLoadView SpindleLoadWatch::view(int tool, bool fanuc) const {
+    SpindleLoadView v;
+    v.lambda = model_ ? model_->lambda : v.lambda;
+    v.registerVariable = fanuc ? 1032 : 2990;
+    v.tool = tool;
+    v.reg = reg_;
+    v.percent = reg_ / 100.0;
+    if (const tools::LoadLimits* limits = monitor_.settings().limitsFor(tool)) {
+        v.limits = *limits;
+    }
+    v.samplesToAlarm = monitor_.settings().samples;
+    v.sampleSeconds = monitor_.settings().sampleSeconds;
+    v.taken = monitor_.taken();
+    const std::deque<tools::LoadSample>& history = monitor_.history();
+    v.to = std::max(SpindleLoadView::kPlotSeconds, history.empty() ? 0.0 : history.back().time);
+    v.from = v.to - SpindleLoadView::kPlotSeconds;
+    double highest = v.limits ? std::max(v.limits->upper, v.limits->lower) : 0.0;
+    for (const tools::LoadSample& s : history) {
+        if (s.time >= v.from) {
+            v.points.emplace_back(s.time, s.percent);
+            highest = std::max(highest, s.percent);
+        }
+    }
+    v.top = std::max(100.0, std::ceil(highest * 1.1 / 10.0) * 10.0); // room above the upper limit
+    return v;
+}
+
 } // namespace m350::controller

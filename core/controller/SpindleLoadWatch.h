@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/controller/SpindleLoadView.h"
 #include "core/machine/SimulatedMachine.h"
 #include "core/machine/SpindleLoadModel.h"
 #include "core/machine/ToolWorld.h"
@@ -8,8 +9,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace m350::controller {
+
 
 // Samples the simulated spindle load as virtual time passes (every move, dwell and switch the
 // machine reports) and feeds the breakage monitor: the PMC side of the FANUC article. The load
@@ -35,6 +39,8 @@ public:
     void startAt(double t) { next_ = t; }
     // The register the macros read (FANUC #1032, M350 #2990): the last sample's load % x 100.
     std::uint16_t reg() const { return reg_; }
+    // The page's picture with `tool` in the spindle; `fanuc` picks the register's variable.
+    SpindleLoadView view(int tool, bool fanuc) const;
 
 private:
     tools::LoadSample measure(const machine::SimulatedMachine& machine, const machine::MachineEvent& event,

@@ -12,7 +12,7 @@ namespace {
 struct Span {
     double from = 0.0;
     double to = 1.0;
-    bool empty() const { return from > to; }
+    bool empty() const { return from > to + 1e-12; } // a tool resting exactly on the top touches it
     Span within(const Span& other) const { return {std::max(from, other.from), std::min(to, other.to)}; }
 };
 
@@ -112,12 +112,12 @@ std::optional<double> SimulatedMachine::setterCrossing(const ToolSetter& setter,
         return std::nullopt;
     }
     if (pressing) {
-        return contact.from;
+        return std::clamp(contact.from, 0.0, 1.0);
     }
     if (contact.from > 1e-9 || setterPressed(setter, target)) {
         return std::nullopt; // not pressed where it starts, or still pressed where it ends
     }
-    return contact.to;
+    return std::clamp(contact.to, 0.0, 1.0);
 }
 
 // The signal can come from a setter (where the tip meets its top, or leaves it) or be there from

@@ -93,7 +93,7 @@ QVector<Page::Softkey> ToolTablePage::softkeys() const {
             {tr("Import"), true, {}},
             {tr("Export"), true, {}},
             {tr("Tool Life"), true, {}}, // Shift+F1: the tool life groups (ToolLifePage)
-            {},
+            {tr("Breakage Monitor"), true, {}}, // Shift+F2: the spindle load monitor (BreakageMonitorPage)
             {},
             {},
             {},
@@ -109,6 +109,7 @@ void ToolTablePage::softkey(int number) {
     case 5: importTable(); break;
     case 6: exportTable(); break;
     case 7: emit navigate(QStringLiteral("toollife")); break;
+    case 8: emit navigate(QStringLiteral("breakage")); break;
     default: break;
     }
 }

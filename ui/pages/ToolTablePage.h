@@ -17,8 +17,9 @@ namespace m350::ui {
 // Enter or 修改 edits it through the prompt; 新建 adds a tool, 删除 takes one out, 对刀 touches the
 // loaded tool off (its Z so that the display reads the measured work Z), 导入 / 导出 read and write
 // a tool.tbl file (a path typed in the prompt, relative to the machine folder); the second row's
-// 刀具寿命 (Shift+F1) opens the tool life groups (ToolLifePage). ESC returns to the Probe page.
-// Every change goes to the session, which saves tool.tbl.
+// 刀具寿命 (Shift+F1) opens the tool life groups (ToolLifePage), 破损监测 (Shift+F2) the breakage
+// monitor (BreakageMonitorPage). ESC returns to the Probe page. Every change goes to the session,
+// which saves tool.tbl.
 class ToolTablePage : public Page {
     Q_OBJECT
 public:

@@ -18,6 +18,7 @@
 #include "ui/pages/SystemPage.h"
 #include "ui/pages/ToolLifePage.h"
 #include "ui/pages/ToolTablePage.h"
+#include "ui/pages/BreakageMonitorPage.h"
 #include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
@@ -105,6 +106,7 @@ void MainWindow::addPages() {
     addPage(new ToolTablePage(context_, stack_));
     addPage(new CustomKeysPage(context_, stack_));
     addPage(new ToolLifePage(context_, stack_));
+    addPage(new BreakageMonitorPage(context_, stack_));
 }
 
 void MainWindow::addPage(Page* page) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/machine/ToolWorld.h"
+
 #include "ui/session/PanelSnapshot.h"
 #include "ui/session/UserAccess.h"
 
@@ -40,6 +42,7 @@ public:
         double rate = 1.0;     // virtual seconds per wall second (faster for simulation)
         bool homed = true;     // start with every axis homed (--unhomed: as after power-on)
         std::optional<int> tool;
+        std::vector<machine::ToolBreak> toolBreaks; // --break: tools that break in the simulated world
     };
     MachineSession(config::MachineConfig config, Options options, QObject* parent = nullptr);
     ~MachineSession() override;

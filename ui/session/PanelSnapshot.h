@@ -6,6 +6,7 @@
 #include "core/config/SystemLog.h"
 #include "core/controller/PanelStatus.h"
 #include "core/tools/ToolLifeView.h"
+#include "core/controller/SpindleLoadView.h"
 #include "core/tools/ToolTable.h"
 
 #include <QMetaType>
@@ -66,6 +67,9 @@ struct PanelSnapshot {
     std::shared_ptr<const tools::LifeView> toolLife;
     QString toolLifeProblem;
     bool tWordChangesTool = false;
+    // The breakage monitor's spindle load (a new object only when a sample came or the tool
+    // changed); null on a machine without a spindle load model.
+    std::shared_ptr<const controller::SpindleLoadView> spindleLoad;
     qint64 publishedNs = 0;    // steady clock when the worker published it (the panel's latency meter)
 };
 

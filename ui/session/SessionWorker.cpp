@@ -30,6 +30,7 @@ controller::RunSettings settingsFor(const MachineSession::Options& options) {
     controller::RunSettings settings;
     settings.homed = options.homed;
     settings.tool = options.tool;
+    settings.toolBreaks = options.toolBreaks;
     settings.operatorPresent = true; // dialogs and START wait for the operator
     return settings;
 }
@@ -171,6 +172,8 @@ void SessionWorker::publish() {
     snapshot->toolLife = toolLife_;
     snapshot->toolLifeProblem = toolLifeProblem_;
     snapshot->tWordChangesTool = controller_->dialect().tCodeProgram >= 0;
+    keepSpindleLoad(snapshot->status.tool);
+    snapshot->spindleLoad = spindleLoad_;
     snapshot->userLevel = userLevel_;
     if (watchVariables_) {
         snapshot->userVariables = userVariables();

@@ -127,6 +127,8 @@ private:
     QString toolLifeProblem_;
     void keepExternalOutput(); // DPRNT / BPRNT records: the system log and the folder's dprnt.txt
     std::size_t externalOutputKept_ = 0;
+    void keepSpindleLoad(int tool); // SessionWorkerLoad.cpp: a new view when a sample came or the tool changed
+    std::shared_ptr<const controller::SpindleLoadView> spindleLoad_;
     void keepBreakPoint();
     BreakPoints breakPoints() const;
     mutable std::optional<std::pair<QString, int>> keptBreak_; // the machine folder's `breakpoint`, read once
