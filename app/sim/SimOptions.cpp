@@ -1,6 +1,7 @@
 #include "app/sim/SimOptions.h"
 #include "app/sim/BreakageOptions.h"
 
+#include "core/config/FanucParameters.h"
 #include "core/config/HookFiles.h"
 #include "core/config/ParameterCatalogue.h"
 #include "core/config/ParameterLimits.h"
@@ -189,12 +190,18 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         for (const std::string& p : params) {
             auto [n, v] = splitAssignment(p, "--param");
             int number = parseWhole(n, "--param");
-            if (number < 0 || number > 999) {
-                throw CLI::ValidationError("--param", "parameter numbers run from 0 to 999");
+            if (number < 0 || number > config::kLastFanucParameter) {
+                throw CLI::ValidationError("--param", "parameter numbers run from 0 to 999 (FANUC machines: to 99999)");
             }
             double value = parseNumber(v, "--param");
-            if (auto refused = config::refusedParameterValue(number, value)) {
+            auto refused = config::isFanucParameterNumber(number) ? config::refusedFanucParameter(number, value)
+                                                                 : config::refusedParameterValue(number, value);
+            if (refused) {
                 throw CLI::ValidationError("--param", *refused);
+            }
+            if (auto unread = config::isFanucParameterNumber(number) ? config::unreadFanucParameter(number)
+                                                                     : std::nullopt) {
+                std::cerr << "m350-sim: warning: --param " << p << ": " << *unread << '\n';
             }
             if (catalogue && catalogue->find(number)) {
                 if (auto problem = catalogue->validate(number, value)) {

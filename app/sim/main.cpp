@@ -9,6 +9,7 @@
 #include "app/sim/ToolLifeJson.h"
 #include "app/sim/SpindleLoadJson.h"
 
+#include "core/config/FanucParameters.h"
 #include "core/config/OutputFile.h"
 #include "core/config/MachineConfig.h"
 #include "core/config/ParameterNumbers.h"
@@ -165,6 +166,15 @@ int runCommand(int argc, char** argv) {
     }
     if (o.dialect) {
         machineConfig.dialect = gcode::Dialect::byName(*o.dialect);
+    }
+    if (machineConfig.dialect->id == gcode::DialectId::M350) {
+        for (const auto& [number, value] : o.settings.parameters) {
+            if (config::isFanucParameterNumber(number)) {
+                std::cerr << "m350-sim: --param " << number << ": parameters run from 0 to 999 on an M350 machine ("
+                          << machineConfig.name << "); 1000-99999 are FANUC parameters\n";
+                return 64;
+            }
+        }
     }
     if (auto error = sim::useToolTableFile(o, machineConfig)) {
         return fail("file_error", *error, *o.toolTableFile);

@@ -2,6 +2,7 @@
 #include "core/tools/ToolLifeFile.h"
 #include "core/common/Numeric.h"
 
+#include "core/config/FanucParameters.h"
 #include "core/config/HookFiles.h"
 #include "core/config/MagazineToml.h"
 #include "core/config/ParameterCatalogue.h"
@@ -83,7 +84,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                      "magazine.clamped_input", "magazine.change_xy", "homing", "homing.switch_distance",
                      "tool_setter", "tool_setter.top", "tool_setter.radius", "floating_setter", "floating_setter.top",
                      "tools", "tools.*", // tools.length, tools.diameter, [tools.N]
-                     "stock", "stock.top", "stock.x", "stock.y", "spindle_load", "spindle_load.lambda",
+                     "stock", "stock.top", "stock.x", "stock.y", "spindle_load",
                      "spindle_load.idle", "spindle_load.per_krpm", "spindle_load.per_cm3", "spindle_load.spike_factor",
                      "spindle_load.spike_ms", "reference_points", "reference_points.*"},
                     config.warnings);
@@ -217,8 +218,20 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
     const auto* known = std::get_if<ParameterCatalogue>(&catalogue);
     if (auto params = t["params"].as_table()) {
         for (auto&& [key, value] : *params) {
-            int n = numberKey(file, key.str(), key.source(), 0, ParameterTable::kCount - 1, "parameter");
+            const bool fanuc = config.dialect->id == gcode::DialectId::Fanuc;
+            int n = numberKey(file, key.str(), key.source(), 0,
+                              fanuc ? kLastFanucParameter : ParameterTable::kCount - 1, "parameter");
             double v = numberValue(file, value, key.str());
+            if (isFanucParameterNumber(n)) {
+                if (auto refused = refusedFanucParameter(n, v)) {
+                    fail(file, *refused, value.source());
+                }
+                if (auto unread = unreadFanucParameter(n)) {
+                    config.warnings.push_back(warningAt(file, value.source(), *unread));
+                }
+                config.fanucParameters[n] = v;
+                continue;
+            }
             if (auto refused = refusedParameterValue(n, v)) {
                 fail(file, *refused, value.source());
             }

@@ -30,7 +30,7 @@ struct LibraryFile {
 // offsets, and the wiring of its IO. Files:
 //   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine], [reference_points], [homing],
 //                  [tool_setter], [floating_setter], [tools]
-//   params.toml    [params] N = value (parameters 0-999; the rest stay 0)
+//   params.toml    [params] N = value (parameters 0-999; the rest stay 0; FANUC machines also 1000-99999)
 //   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
 //   tool.tbl       optional: the tool table in LinuxCNC's format (core/tools/ToolTableFile.h); on the
@@ -48,6 +48,7 @@ struct MachineConfig {
     std::map<std::pair<char, int>, int> codePrograms;
     std::vector<machine::IoLink> ioLinks;
     ParameterTable parameters;
+    std::map<int, double> fanucParameters; // FANUC machines' parameters 1000-99999 (FanucParameters.h)
     std::array<std::array<double, 5>, 9> offsets{}; // slots as interp::WorkOffsets numbers them
     std::map<int, double> variables;
     int magazineCapacity = 0; // machines whose capacity is not a parameter (FANUC)

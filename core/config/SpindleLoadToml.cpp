@@ -55,7 +55,10 @@ void readSpindleLoadWorld(const std::filesystem::path& file, const toml::table& 
     machine::SpindleLoadModel model;
     if (load) {
         double spikeMs = model.spikeSeconds * 1000.0;
-        readNumber(file, *load, "spindle_load", "lambda", 1.0, 1000.0, model.lambda);
+        if (const toml::node* lambda = load->get("lambda")) {
+            fail(file, "[spindle_load] lambda is FANUC parameter 4127: set it in params.toml (4127 = 143)",
+                 lambda->source());
+        }
         readNumber(file, *load, "spindle_load", "idle", 0.0, 100.0, model.idle);
         readNumber(file, *load, "spindle_load", "per_krpm", 0.0, 100.0, model.perKrpm);
         readNumber(file, *load, "spindle_load", "per_cm3", 0.0, 100.0, model.perCm3);

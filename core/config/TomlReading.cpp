@@ -31,8 +31,7 @@ void checkKeys(const fs::path& file, const toml::table& table, const std::string
             continue;
         }
         if (!isKnown(known, path)) {
-            warnings.push_back(file.string() + ":" + placed(key.source()) + ": warning: unknown key '" + path +
-                               "' (ignored; a typo?)");
+            warnings.push_back(warningAt(file, key.source(), "unknown key '" + path + "' (ignored; a typo?)"));
             continue;
         }
         if (const toml::table* inner = value.as_table()) {
@@ -46,6 +45,10 @@ void checkKeys(const fs::path& file, const toml::table& table, const std::string
 }
 
 } // namespace
+
+std::string warningAt(const fs::path& file, const toml::source_region& where, const std::string& message) {
+    return file.string() + ":" + placed(where) + ": warning: " + message;
+}
 
 void fail(const fs::path& file, std::string message, const toml::source_region& where) {
     ConfigError error{file.string(), std::move(message)};

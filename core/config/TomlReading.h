@@ -24,6 +24,9 @@ struct Failure {
 // The file parsed; refused when it is not a regular file or larger than a machine file can be.
 toml::table parseToml(const std::filesystem::path& file);
 
+// "file:line:col: warning: message", as the loaders list what they kept but doubt.
+std::string warningAt(const std::filesystem::path& file, const toml::source_region& where, const std::string& message);
+
 // A table key that must be a whole number low..high (parameter, variable, reference point numbers).
 int numberKey(const std::filesystem::path& file, std::string_view text, const toml::source_region& where, int low,
               int high, const char* what);

@@ -1,4 +1,5 @@
 #include "core/controller/Controller.h"
+#include "core/config/FanucParameters.h"
 #include "core/config/IoPorts.h"
 #include "core/common/Numeric.h"
 
@@ -41,6 +42,7 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     if (toolLife_.enabled()) {
         machine_.setObserver(this); // cutting time counts from the machine's feed events
     }
+    applyParameterOverrides();
     setUpBreakageWatch();
     applySettings();
     loadWatch_.startAt(machine_.time());
@@ -98,10 +100,17 @@ void Controller::configureMachine() {
     }
 }
 
-void Controller::applySettings() {
+void Controller::applyParameterOverrides() {
     for (auto [number, value] : settings_.parameters) {
-        config_.parameters.set(number, value);
+        if (config::isFanucParameterNumber(number)) {
+            config_.fanucParameters[number] = value;
+        } else if (config::ParameterTable::valid(number)) {
+            config_.parameters.set(number, value);
+        }
     }
+}
+
+void Controller::applySettings() {
     for (auto [port, level] : settings_.heldInputs) {
         machine_.forceInput(port, level);
     }
@@ -341,6 +350,9 @@ bool Controller::optionalStopOn() {
 void Controller::raiseAlarm(const Alarm& alarm) {
     alarm_ = alarm;
     pendingDialog_.reset();
+    if (executor_ && executor_->changingTool()) {
+        toolLife_.revertChange(); // the change never completed: its tool is not in use
+    }
     state_ = RunState::Alarm;
     enterSafeState();
     if (trace_) {

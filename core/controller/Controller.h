@@ -308,6 +308,7 @@ public:
 
 private:
     bool load(const std::string& path, std::string_view text, gcode::FileRole role, const std::string& encoding);
+    void applyParameterOverrides(); // --param, before anything reads the parameters
     void applySettings();
     void configureMachine();
     void syncToolLength();

@@ -1,6 +1,7 @@
 // Tool breakage in the simulated world and the spindle load monitor (the FANUC article's second
 // method): the load is sampled as virtual time passes and an anomaly stops the run like any alarm.
 #include "core/controller/Controller.h"
+#include "core/config/FanucParameters.h"
 
 namespace m350::controller {
 
@@ -14,6 +15,9 @@ void Controller::setUpBreakageWatch() {
         monitor.tools[tool] = limits;
     }
     loadWatch_.monitor().setSettings(std::move(monitor));
+    if (config_.spindleLoad) {
+        config_.spindleLoad->lambda = config::fanucParameter(config_.fanucParameters, config::kLoadMeterFullScale);
+    }
     loadWatch_.setModel(config_.spindleLoad);
     if (config_.spindleLoad || !world_.breaks().empty()) {
         machine_.setObserver(this); // the load follows every move; a break changes the tool's length

@@ -8,7 +8,9 @@
 #include "core/macro/Evaluator.h"
 #include "core/macro/MacroError.h"
 
+#include <algorithm>
 #include <array>
+#include <optional>
 
 namespace m350::controller {
 
@@ -53,39 +55,90 @@ public:
         }
     }
 
-    // A unit that calls itself (M98 P / G65 P its own number) with no IF, WHILE or GOTO that could
-    // stop it nests until the call limit.
-    void unit(const gcode::ProgramUnit& u) {
-        if (u.number < 0) {
-            return;
-        }
-        const Block* selfCall = nullptr;
-        const Word* callWord = nullptr;
-        for (std::uint32_t i = u.begin; i < u.end; ++i) {
-            const Block& b = program_.blocks[i];
-            if (b.control != Control::None) {
-                return; // a condition or jump may end the recursion
-            }
-            bool calls = false;
-            for (const Word& w : b.words) {
-                calls |= isWord(w, 'M', 98) || isWord(w, 'G', 65);
-            }
-            for (const Word& w : b.words) {
-                if (calls && w.letter == 'P' && w.isNumber() && w.number == u.number && !selfCall) {
-                    selfCall = &b;
-                    callWord = &w;
+    // Units that call one another (or themselves) on every pass, before any IF, WHILE, GOTO or
+    // program end could stop them, nest until the call limit. Reported at the call in `u`.
+    void callCycle(std::uint32_t unitIndex) {
+        auto call = firstCall(program_.units[unitIndex]);
+        std::vector<std::int32_t> chain{program_.units[unitIndex].number};
+        for (auto next = call; next; next = firstCall(program_.units[*program_.findUnit(next->callee)])) {
+            if (next->callee == chain.front()) {
+                for (std::int32_t other : chain) {
+                    std::uint32_t index = *program_.findUnit(other);
+                    if (index < unitIndex && checked(program_.units[index])) {
+                        return; // reported once, at the cycle's first unit in the checked file
+                    }
                 }
+                location_ = call->block->location;
+                report(call->word->column, cycleText(chain));
+                return;
             }
-        }
-        if (selfCall) {
-            location_ = selfCall->location;
-            report(callWord->column, "O" + std::to_string(u.number) +
-                                         " calls itself on every pass: the calls nest until the nesting limit "
-                                         "(no IF, WHILE or GOTO could stop them)");
+            if (std::find(chain.begin(), chain.end(), next->callee) != chain.end() || chain.size() > 64) {
+                return; // a cycle that does not pass through this unit: reported at its own units
+            }
+            chain.push_back(next->callee);
         }
     }
 
+    // The files `check` looks at: the program (or MDI lines), not the machine's libraries.
+    bool checked(const gcode::ProgramUnit& u) const {
+        const gcode::FileRole role = program_.files[u.file].role;
+        return role == gcode::FileRole::Main || role == gcode::FileRole::Mdi;
+    }
+
 private:
+    struct Call {
+        std::int32_t callee = 0;
+        const Block* block = nullptr;
+        const Word* word = nullptr;
+    };
+
+    // The call a unit makes on every pass: the first M98 P / G65 P of a constant program that
+    // exists, when no control statement or M99 / M30 / M02 comes before it.
+    std::optional<Call> firstCall(const gcode::ProgramUnit& u) const {
+        if (u.number < 0) {
+            return std::nullopt;
+        }
+        for (std::uint32_t i = u.begin; i < u.end; ++i) {
+            const Block& b = program_.blocks[i];
+            if (b.control != Control::None) {
+                return std::nullopt;
+            }
+            bool calls = false;
+            bool ends = false;
+            for (const Word& w : b.words) {
+                calls |= isWord(w, 'M', 98) || isWord(w, 'G', 65);
+                ends |= isWord(w, 'M', 99) || isWord(w, 'M', 30) || isWord(w, 'M', 2);
+                if (w.letter == 'L' && w.isNumber() && w.number == 0) {
+                    return std::nullopt; // L0: called no times
+                }
+            }
+            for (const Word& w : b.words) {
+                if (calls && w.letter == 'P' && w.isNumber() && program_.findUnit(roundToInt(w.number))) {
+                    return Call{roundToInt(w.number), &b, &w};
+                }
+            }
+            if (ends) {
+                return std::nullopt;
+            }
+        }
+        return std::nullopt;
+    }
+
+    static std::string cycleText(const std::vector<std::int32_t>& chain) {
+        if (chain.size() == 1) {
+            return "O" + std::to_string(chain.front()) +
+                   " calls itself on every pass: the calls nest until the nesting limit (no IF, WHILE or GOTO "
+                   "could stop them)";
+        }
+        std::string path;
+        for (std::int32_t n : chain) {
+            path += "O" + std::to_string(n) + " -> ";
+        }
+        return "O" + std::to_string(chain.front()) + " calls itself through " + path + "O" +
+               std::to_string(chain.front()) +
+               " on every pass: the calls nest until the nesting limit (no IF, WHILE or GOTO could stop them)";
+    }
+
     void report(std::uint32_t column, std::string message) {
         out_.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, program_.fileName(location_),
                         location_.line, column, std::move(message)});
@@ -216,14 +269,13 @@ std::vector<gcode::Diagnostic> Controller::checkWithoutRunning() {
     macro::Evaluator evaluator(program_.expressions, *config_.dialect, store_, *this);
     ProgramCheck check(program_, config_, evaluator, store_.map(), findings);
     for (const gcode::ProgramUnit& unit : program_.units) {
-        const gcode::FileRole role = program_.files[unit.file].role;
-        if (role != gcode::FileRole::Main && role != gcode::FileRole::Mdi) {
+        if (!check.checked(unit)) {
             continue;
         }
         for (std::uint32_t i = unit.begin; i < unit.end; ++i) {
             check.block(program_.blocks[i]);
         }
-        check.unit(unit);
+        check.callCycle(static_cast<std::uint32_t>(&unit - program_.units.data()));
     }
     return findings;
 }

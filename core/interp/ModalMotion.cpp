@@ -252,7 +252,10 @@ void ModalInterpreter::probeMove(const Words& words) {
     machine::ProbeResult result = machine_.probe(target, feedRate(g31.column), port, level);
     probe_.triggered = result.triggered;
     probe_.position = result.position;
-    if (!result.triggered) {
+    // A FANUC G31 that never sees the signal ends at its end point, which #5061-#5065 then hold: the
+    // TS27R macros move beside the stylus by G31 so that a touch on the way stops them. The M350
+    // alarms, as its probing hooks expect.
+    if (!result.triggered && dialect_.id == gcode::DialectId::M350) {
         std::string where;
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
             if (probe_.axes & (1u << axis)) {

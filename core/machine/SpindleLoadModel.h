@@ -23,7 +23,7 @@ struct Stock {
 // A tool that breaks spikes to spikeFactor x its cutting load for spikeSeconds, then cuts nothing.
 struct SpindleLoadModel {
     static constexpr int kSignalMax = 32767; // the PMC window's full scale (function 153)
-    double lambda = 143.0;                   // FANUC parameter 4127: the load % at full scale
+    double lambda = 143.0;                   // FANUC parameter 4127 (set by the controller): the load % at full scale
     double idle = 1.5;
     double perKrpm = 0.3;
     double perCm3 = 2.5;

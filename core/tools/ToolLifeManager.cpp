@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace m350::tools {
 
@@ -71,6 +72,7 @@ ToolLifeManager::Selection ToolLifeManager::selectGroup(int t) {
 }
 
 void ToolLifeManager::changeTool(bool count) {
+    beforeChange_ = BeforeChange{active_, useSeconds_, usedBefore_, lastCutStart_, lastCutEnd_, std::nullopt};
     active_ = selected_;
     ++revision_;
     useSeconds_ = 0.0;
@@ -87,8 +89,29 @@ void ToolLifeManager::changeTool(bool count) {
     usedBefore_ = tool->used;
     if (count && group->kind == LifeKind::Count && countedTools_.emplace(group->number, tool->tool).second) {
         ++tool->used;
+        beforeChange_->counted = active_;
         dataChanged();
     }
+}
+
+void ToolLifeManager::revertChange() {
+    if (!beforeChange_) {
+        return;
+    }
+    BeforeChange before = *std::exchange(beforeChange_, std::nullopt);
+    if (before.counted) {
+        if (LifeTool* tool = findTool(*before.counted)) {
+            --tool->used;
+            dataChanged();
+        }
+        countedTools_.erase(before.counted->group);
+    }
+    active_ = before.active;
+    useSeconds_ = before.useSeconds;
+    usedBefore_ = before.usedBefore;
+    lastCutStart_ = before.lastCutStart;
+    lastCutEnd_ = before.lastCutEnd;
+    ++revision_;
 }
 
 void ToolLifeManager::recount() {

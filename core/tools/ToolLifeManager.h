@@ -59,6 +59,9 @@ public:
     // The tool change: the selected group's tool becomes the one in use and counts (`count` false
     // while a run is only scanned for 断点加工).
     void changeTool(bool count);
+    // The last tool change did not happen (its program alarmed or was stopped): the tool in use is
+    // the one before it again, and a use it counted is taken back.
+    void revertChange();
 
     // Cutting feed from `start` to `end` (virtual seconds) with the tool in use.
     void cut(double start, double end);
@@ -103,6 +106,16 @@ private:
     int usedBefore_ = 0;
     double lastCutStart_ = 0.0;
     double lastCutEnd_ = 0.0;
+    // What the last changeTool replaced, until the next one.
+    struct BeforeChange {
+        std::optional<InUse> active;
+        double useSeconds = 0.0;
+        int usedBefore = 0;
+        double lastCutStart = 0.0;
+        double lastCutEnd = 0.0;
+        std::optional<InUse> counted; // the use it counted
+    };
+    std::optional<BeforeChange> beforeChange_;
 
     struct Entry {
         int mode = 0;

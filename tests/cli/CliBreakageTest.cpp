@@ -83,4 +83,26 @@ TEST_F(CliBreakageTest, BadBreakAndLimitOptionsAreUsageErrors) {
     }
 }
 
+// Lambda is FANUC parameter 4127 (params.toml holds 143): --param changes the conversion. At
+// lambda 200 the idling spindle's 3.3 % is L = round(3.3 / 200 x 32767) = 541 and the register
+// floor(100 x 200 x 541 / 32767) = 330.
+TEST_F(CliBreakageTest, LambdaIsParameter4127) {
+    write("cut.nc", kCut);
+    json j = simTs27r({"run", "cut.nc", "--print", "1032", "--param", "4127=200"}, kExitOk);
+    EXPECT_EQ(j["spindle_load"]["lambda"], 200.0);
+    EXPECT_EQ(j["vars"]["1032"], 330.0);
+
+    ProcessResult outOfRange = sim({"mdi", "G4 P1", "--config", kMachine, "--param", "4127=0"});
+    EXPECT_EQ(outOfRange.exitStatus, kExitUsage) << outOfRange.err;
+    EXPECT_NE(outOfRange.err.find("parameter 4127 must be from 1 to 1000"), std::string::npos) << outOfRange.err;
+
+    ProcessResult unread = sim({"mdi", "G4 P1", "--config", kMachine, "--param", "1320=5"});
+    EXPECT_EQ(unread.exitStatus, kExitOk) << unread.err;
+    EXPECT_NE(unread.err.find("FANUC parameter 1320 is not simulated"), std::string::npos) << unread.err;
+
+    ProcessResult m350 = sim({"mdi", "G4 P1", "--param", "4127=200"}); // the default machine speaks m350
+    EXPECT_EQ(m350.exitStatus, 64) << m350.err;
+    EXPECT_NE(m350.err.find("parameters run from 0 to 999 on an M350 machine"), std::string::npos) << m350.err;
+}
+
 } // namespace m350::clitest

@@ -27,6 +27,9 @@ TEST_F(CliTest, CheckReportsWhatWouldAlarmWithoutRunning) {
         {"#1=1/0\n", 1, 5, "division by zero"},
         {"G0 X1\n#2=#[2+3]+#[99999+1]\n", 2, 11, "#[100000]: variable numbers are whole numbers from 0 to 9999"},
         {"M98 P200\nM30\nO200\nG0 X1\nM98 P200\nM99\n", 5, 5, "O200 calls itself on every pass"},
+        // through another program, the call before a guard that comes too late
+        {"M98 P100\nM30\nO100\nG65 P200 A1\nM99\nO200\nM98 P100\nIF [#1 GT 5] GOTO 9\nN9 M99\n", 4, 5,
+         "O100 calls itself through O100 -> O200 -> O100 on every pass"},
     };
     for (const Expected& c : cases) {
         write("c.nc", c.program);
@@ -53,6 +56,8 @@ TEST_F(CliTest, CheckReportsWhatWouldAlarmWithoutRunning) {
 TEST_F(CliTest, CheckDoesNotFlagWhatMayBeFine) {
     for (const char* program : {"G65 P100 I1 J2 K3 I4 J5 K6\nM30\nO100\nM99\n", // argument spec II repeats I J K
                                 "O100\n#1=#1+1\nIF [#1 LT 3] GOTO 9\nM99\nN9 M98 P100\nM99\n", // a guarded self-call
+                                "O100\nM98 P200\nM99\nO200\nIF [#1 GT 0] GOTO 9\nM98 P100\nN9 M99\n", // guarded in O200
+                                "O100\nM99\nM98 P100\n", // M99 returns before the call
                                 "#1=#100/#101\nG1 X#[#1+1] F100\nM30\n", "G54 G0 X1\nG4 P100\nM30\n"}) {
         write("ok.nc", program);
         ProcessResult r = sim({"check", "ok.nc"});

@@ -120,4 +120,18 @@ TEST_F(MachineFolderTest, TomlErrorsAndBadValuesArePlacedByLineAndColumn) {
     expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:77:7", "");
 }
 
+// FANUC parameters above 999 live in params.toml on FANUC machines only; lambda is one of them,
+// not a machine.toml key.
+TEST_F(MachineFolderTest, FanucParametersAreParamsOfFanucMachinesOnly) {
+    fs::path m350 = copyMachine();
+    edit(m350 / "params.toml", "801 = 16", "801 = 16\n4127 = 143");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:70:1", "from 0 to 999");
+    fs::remove_all(m350);
+
+    fs::path fanuc = copyMachine("fanuc-ts27r");
+    edit(fanuc / "machine.toml", "[spindle_load]\n", "[spindle_load]\nlambda = 150\n");
+    expectConfigError({"mdi", "G4 P1", "--config", "machine"}, "machine/machine.toml:42:10",
+                      "[spindle_load] lambda is FANUC parameter 4127: set it in params.toml");
+}
+
 } // namespace m350::clitest

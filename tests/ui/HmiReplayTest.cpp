@@ -107,7 +107,8 @@ TEST(HmiReplay, ABadReplayFileIsRefusedWithItsLine) {
 }
 
 TEST(HmiReplay, EveryPageRendersInBothLanguages) {
-    for (const char* page : {"monitor", "mdi", "io", "probe", "param", "system", "tools", "toollife"}) {
+    for (const char* page : {"monitor", "mdi", "io", "probe", "program", "param", "log", "system", "coord", "middle",
+                             "record", "breakrun", "tools", "toollife", "breakage", "custom"}) {
         for (const char* lang : {"zh_CN", "en"}) {
             HmiRun run = runHmi({"--page", page, "--lang", lang});
             ASSERT_EQ(run.exitCode, 0) << page << " " << lang << ": " << run.errors.toStdString();

@@ -66,6 +66,31 @@ TEST(BreakageBySetter, AnUncalibratedSetterIsRefused) {
     EXPECT_EQ(run.report.alarm->message, "macro alarm 3092: the setter is not calibrated: run O9855, #520-#524 are empty");
 }
 
+TEST(BreakageBySetter, WithDAnEndMillIsMeasuredUnderItsEdge) {
+    // T2: 95.5 long, 16 wide. D16 puts its axis 8 mm beside the stylus centre (X400 + 8), where
+    // its edge stands over the stylus; the length is the same as measured at the centre.
+    auto run = runProgram(bundledMachine("fanuc-ts27r"),
+                          lines({"G91 G28 Z0", "G65 P9858 T2 H0.5 D16", "#100 = #5021", "#101 = #5022", "M30"}),
+                          withTool(2));
+    ASSERT_EQ(run.report.status, controller::RunStatus::Ok) << run.alarmText();
+    EXPECT_NEAR(run.number(100), 408.0, 1e-9);
+    EXPECT_NEAR(run.number(101), -50.0, 1e-9);
+    EXPECT_NEAR(run.number(135), 95.5, 1e-9);
+    EXPECT_NEAR(run.number(136), 0.0, 1e-9);
+}
+
+TEST(BreakageBySetter, ATouchOnTheWayToAStartPointStopsTheCalibration) {
+    // started 6.5 mm lower than the stylus top (nose -120 < -113.511): the first G31 to the X+
+    // start point touches at once, so its end is not where it was sent
+    auto run = runProgram(bundledMachine("fanuc-ts27r"),
+                          lines({"G90 G49", "G53 G00 X400 Y-50", "G53 G00 Z-120", "G65 P9855 T97 R10.016 D12.7",
+                                 "M30"}),
+                          withTool(97));
+    ASSERT_EQ(run.report.status, controller::RunStatus::Alarm);
+    EXPECT_EQ(run.report.alarm->message, "macro alarm 3096: the setter was touched on the way to a start point: "
+                                         "start with the tool about 10 mm above the stylus centre");
+}
+
 TEST(BreakageBySpindleLoad, TheCutReadsItsHandComputedLoadIn1032) {
     auto run = runProgram(bundledMachine("fanuc-ts27r"), lines({"G90 G49", "S6000 M03", "G00 X-150 Y0", "G00 Z-355",
                                                               "G01 Z-362 F300", "G01 X150 F600", "#100 = #1032",

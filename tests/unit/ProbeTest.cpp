@@ -32,7 +32,9 @@ TEST(ProbeM350, G31AwayFromTheSetterIsAnAlarmNamingTheInput) {
     EXPECT_NE(run.report.alarm->message.find("IN12 never became 1"), std::string::npos) << run.alarmText();
 }
 
-TEST(ProbeFanuc, SkipSignalGivesTheWorkPositionIn5061To5065) {
+// A FANUC machine whose skip signal is the setter's switch on IN12, the setter at X50 Y20 with its
+// top at -200 for a zero-length tool; T1 (100 mm) in the spindle.
+ProgramRun runWithSetter(const std::string& program) {
     auto cfg = fanucMachine();
     cfg.parameters.set(575, 12);
     cfg.parameters.set(576, 1);
@@ -43,12 +45,25 @@ TEST(ProbeFanuc, SkipSignalGivesTheWorkPositionIn5061To5065) {
     cfg.toolLengths = {100.0};
     controller::RunSettings settings;
     settings.tool = 1;
-    auto run = runProgram(cfg, lines({"G10 L2 P1 Z-50", "G54 G90 G00 X50 Y20 Z0", "G31 Z-200 F100", "#100 = #5063",
-                                      "#101 = #5023", "M30"}),
-                          settings);
+    return runProgram(cfg, program, settings);
+}
+
+TEST(ProbeFanuc, SkipSignalGivesTheWorkPositionIn5061To5065) {
+    auto run = runWithSetter(lines({"G10 L2 P1 Z-50", "G54 G90 G00 X50 Y20 Z0", "G31 Z-200 F100", "#100 = #5063",
+                                      "#101 = #5023", "M30"}));
     ASSERT_EQ(run.report.status, controller::RunStatus::Ok) << run.alarmText();
     EXPECT_NEAR(run.number(101), -100.0, 1e-9); // machine: top -200 + length 100
     EXPECT_NEAR(run.number(100), -50.0, 1e-9);  // work: -100 - G54 Z (-50)
+}
+
+TEST(ProbeFanuc, WithoutTheSignalG31EndsAtItsEndPointWhich5061Holds) {
+    // far from the setter (X 0): nothing stops the move
+    auto run = runWithSetter(lines({"G10 L2 P1 Z-50", "G54 G90 G00 X0 Y20 Z0", "G31 X10 Z-120 F100",
+                                    "#100 = #5061", "#101 = #5063", "#102 = #5023", "M30"}));
+    ASSERT_EQ(run.report.status, controller::RunStatus::Ok) << run.alarmText();
+    EXPECT_NEAR(run.number(100), 10.0, 1e-9);
+    EXPECT_NEAR(run.number(101), -120.0, 1e-9);
+    EXPECT_NEAR(run.number(102), -170.0, 1e-9); // machine: work -120 + G54 Z -50
 }
 
 } // namespace

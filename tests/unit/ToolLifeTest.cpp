@@ -185,4 +185,24 @@ TEST(ToolLife, OnTheM350TheTWordItselfChangesToTheGroupsTool) {
     EXPECT_EQ(used(run, 1, 4), 1);
 }
 
+TEST(ToolLife, AChangeThatNeverCompletesNeitherCountsNorPutsTheToolInUse) {
+    // The tool-released sensor (IN11) never reports: the sensor watchdog stops O20000 waiting in
+    // M301; T4 never reached the spindle, so its use is not counted and it is not in use.
+    config::MachineConfig config = bundledMachine();
+    config.toolLife.putGroup(group(1, 5, tools::LifeKind::Count, {{3, 0, 0, 5}, {4, 0, 0, 0}}));
+    controller::RunSettings settings;
+    settings.heldInputs[11] = 0;
+    ProgramRun refused = runProgram(config, lines({"T101", "M30"}), settings);
+    ASSERT_EQ(refused.report.status, controller::RunStatus::Alarm);
+    EXPECT_EQ(refused.report.alarm->code, AlarmCode::SensorTimeout);
+    EXPECT_EQ(used(refused, 1, 4), 0);
+    EXPECT_FALSE(refused.controller->toolLife().inUse().has_value());
+    EXPECT_TRUE(refused.controller->toolLife().selected().has_value()); // T4 stays selected for a retry
+
+    settings.heldInputs.clear(); // the sensor repaired: the same change counts once
+    ProgramRun retried = runProgram(config, lines({"T101", "M30"}), settings);
+    EXPECT_RUN_OK(retried);
+    EXPECT_EQ(used(retried, 1, 4), 1);
+}
+
 } // namespace

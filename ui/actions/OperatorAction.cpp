@@ -51,7 +51,7 @@ bool isKnownKey(const QString& name) { return keyNames().contains(name); }
 const QStringList& pageIds() {
     static const QStringList ids{"monitor", "mdi",    "io",     "probe",  "program", "param",
                                  "log",     "system", "coord",  "middle", "record",  "breakrun", "tools",
-                                 "toollife", "breakage"};
+                                 "toollife", "breakage", "custom"};
     return ids;
 }
 
