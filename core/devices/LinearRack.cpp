@@ -24,9 +24,25 @@ using text::tool;
 
 } // namespace
 
+namespace {
+
+// Over a tool standing in its pocket: where an empty nose reaches down onto its pull stud, and
+// where anything moving sideways hits it.
+LinearRack::Box column(const Vector3d& p, double tolerance, double height) {
+    return {p - Vector3d::Constant(tolerance), p + Vector3d(tolerance, tolerance, height)};
+}
+
+} // namespace
+
 LinearRack::LinearRack(Geometry geometry, std::vector<int> pocketTools, int spindleTool)
     : geometry_(std::move(geometry)), pockets_(std::move(pocketTools)), spindle_(spindleTool) {
     pockets_.resize(geometry_.pockets.size(), 0);
+    for (int k = 1; k <= pocketCount(); ++k) {
+        const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(k - 1)];
+        boxes_.push_back({region(k), column(p, geometry_.tolerance, geometry_.forkDepth), zone(k)});
+        const Box& z = boxes_.back().zone;
+        envelope_ = envelope_ ? Box{envelope_->low.cwiseMin(z.low), envelope_->high.cwiseMax(z.high)} : z;
+    }
 }
 
 LinearRack::Box LinearRack::region(int k) const {
@@ -42,16 +58,6 @@ LinearRack::Box LinearRack::region(int k) const {
     }
     return b;
 }
-
-namespace {
-
-// Over a tool standing in its pocket: where an empty nose reaches down onto its pull stud, and
-// where anything moving sideways hits it.
-LinearRack::Box column(const Vector3d& p, double tolerance, double height) {
-    return {p - Vector3d::Constant(tolerance), p + Vector3d(tolerance, tolerance, height)};
-}
-
-} // namespace
 
 // The magazine zone of a pocket: its fork, the tool standing in it and the room around and above.
 LinearRack::Box LinearRack::zone(int k) const {
@@ -102,7 +108,7 @@ bool LinearRack::alongEntry(const Vector3d& from, const Vector3d& to) const {
 
 int LinearRack::pocketAt(const Vector3d& p) const {
     for (int k = 1; k <= pocketCount(); ++k) {
-        if (inside(region(k), p)) {
+        if (inside(regionOf(k), p)) {
             return k;
         }
     }
@@ -114,8 +120,11 @@ std::optional<std::string> LinearRack::move(const Vector3d& from, const Vector3d
     if ((to - from).norm() < kStill) {
         return std::nullopt;
     }
+    if (engaged_ == 0 && (!envelope_ || !crosses(*envelope_, from, to))) {
+        return std::nullopt; // far from the rack: nothing to hit, nothing to engage
+    }
     for (int k = 1; rapid && k <= pocketCount(); ++k) {
-        if (crosses(zone(k), from, to)) {
+        if (crosses(zoneOf(k), from, to)) {
             return "rapid move through the magazine zone at " + pocket(k) + ", from " + at(from) + " to " + at(to) +
                    ": move near the rack at feed (G01 / G53 ... F)";
         }
@@ -132,26 +141,24 @@ std::optional<std::string> LinearRack::moveHolding(const Vector3d& from, const V
             return std::string("moved ") + axis + " while " + tool(held) + " was clamped in the fork of " + pocket(k) +
                    ": the fork and the tool are wrecked at " + at(from);
         }
-        if (!inside(region(k), to)) {
+        if (!inside(regionOf(k), to)) {
             engaged_ = 0; // slid out of its fork with the tool
         }
         return std::nullopt;
     }
     for (int k = 1; k <= pocketCount(); ++k) {
         const int standing = pockets_[static_cast<std::size_t>(k - 1)];
-        const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(k - 1)];
-        if (standing != 0 && (crosses(region(k), from, to) ||
-                              crosses(column(p, geometry_.tolerance, geometry_.forkDepth), from, to))) {
+        if (standing != 0 && (crosses(regionOf(k), from, to) || crosses(columnOf(k), from, to))) {
             return tool(held) + " in the spindle ran into " + tool(standing) + " in " + pocket(k) + " (moving from " +
                    at(from) + " to " + at(to) + ")";
         }
-        if (standing == 0 && crosses(region(k), from, to)) {
+        if (standing == 0 && crosses(regionOf(k), from, to)) {
             if (!alongEntry(from, to)) {
                 return tool(held) + " in the spindle hit the fork of " + pocket(k) + ": a tool enters it along " +
                        (geometry_.loading == Loading::Top ? "Z" : "Y") + " only (moving from " + at(from) + " to " +
                        at(to) + ")";
             }
-            if (inside(region(k), to)) {
+            if (inside(regionOf(k), to)) {
                 engaged_ = k;
             }
         }
@@ -163,8 +170,7 @@ std::optional<std::string> LinearRack::moveEmpty(const Vector3d& from, const Vec
     const bool vertical = std::abs(to.x() - from.x()) < kStill && std::abs(to.y() - from.y()) < kStill;
     if (engaged_ != 0 && vertical) {
         // the released nose rises off the tool it stood over (or goes back down onto it)
-        const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(engaged_ - 1)];
-        if (!inside(column(p, geometry_.tolerance, geometry_.forkDepth), to)) {
+        if (!inside(columnOf(engaged_), to)) {
             engaged_ = 0;
         }
         return std::nullopt;
@@ -173,8 +179,7 @@ std::optional<std::string> LinearRack::moveEmpty(const Vector3d& from, const Vec
     for (int k = 1; k <= pocketCount(); ++k) {
         const int standing = pockets_[static_cast<std::size_t>(k - 1)];
         const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(k - 1)];
-        const Box over = column(p, geometry_.tolerance, geometry_.forkDepth);
-        if (standing == 0 || !crosses(over, from, to)) {
+        if (standing == 0 || !crosses(columnOf(k), from, to)) {
             continue;
         }
         if (!vertical) {

@@ -56,6 +56,9 @@ public:
 private:
     Box region(int pocket) const;  // where the nose stands with a held tool engaged in the fork
     Box zone(int pocket) const;    // the magazine zone around one pocket
+    const Box& regionOf(int pocket) const { return boxes_[static_cast<std::size_t>(pocket - 1)].region; }
+    const Box& columnOf(int pocket) const { return boxes_[static_cast<std::size_t>(pocket - 1)].column; }
+    const Box& zoneOf(int pocket) const { return boxes_[static_cast<std::size_t>(pocket - 1)].zone; }
     static bool inside(const Box& box, const Eigen::Vector3d& p);
     static bool crosses(const Box& box, const Eigen::Vector3d& from, const Eigen::Vector3d& to);
     bool alongEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
@@ -64,6 +67,15 @@ private:
     std::optional<std::string> moveEmpty(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool spindleTurning);
 
     Geometry geometry_;
+    // Each pocket's boxes, made once (the rack does not move), and the box around every zone: a
+    // move that stays out of it touches nothing of the rack, which is decided at O(1) cost.
+    struct PocketBoxes {
+        Box region;
+        Box column; // over a tool standing in the pocket (see column() in LinearRack.cpp)
+        Box zone;
+    };
+    std::vector<PocketBoxes> boxes_;
+    std::optional<Box> envelope_;
     std::vector<int> pockets_; // tool in each pocket, 0 empty
     SpindleDrawbar spindle_;
     int engaged_ = 0;          // the pocket whose fork holds the spindle's tool (or whose tool the

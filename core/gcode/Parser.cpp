@@ -37,13 +37,11 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
     if (program.blocks.empty()) {
         // Size for the program (the first and largest file) plus headroom for the macro libraries,
         // so adding a library never copies a 200,000-block program.
-        std::size_t lineFeeds = 0;
-        std::size_t carriageReturns = 0; // a file may end its lines with CR alone
-        for (char c : text) {
-            lineFeeds += c == '\n' ? 1 : 0;
-            carriageReturns += c == '\r' ? 1 : 0;
+        auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+        if (lines < text.size() / 256) { // a file may end its lines with CR alone
+            lines = std::max(lines, static_cast<std::size_t>(std::count(text.begin(), text.end(), '\r')));
         }
-        program.blocks.reserve(std::max(lineFeeds, carriageReturns) + 1 + 4096);
+        program.blocks.reserve(lines + 1 + 4096);
     }
     const bool checksCalls = role == FileRole::Main || role == FileRole::Mdi;
     bool unitOpen = false;
