@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <new>
 
 namespace {
 
@@ -279,6 +280,15 @@ int runCommand(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    const int status = runCommand(argc, argv);
+    int status = kExitError;
+    try {
+        status = runCommand(argc, argv);
+    } catch (const std::bad_alloc&) {
+        // What the run held is freed by now, so there is room to say what happened.
+        const char* message = "out of memory: the program (or what it made) did not fit in the memory "
+                              "this process may use";
+        std::cerr << "m350-sim: " << message << '\n';
+        std::cout << sim::dump(sim::errorJson("out_of_memory", message, "")) << '\n';
+    }
     return flushedStdout() ? status : kExitError;
 }

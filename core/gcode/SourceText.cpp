@@ -1,13 +1,13 @@
 #include "core/gcode/SourceText.h"
 
 #include "core/gcode/LineSplitter.h"
+#include "core/gcode/MappedFile.h"
 
 #include <iconv.h>
 
 #if defined(__unix__)
 #define M350_HAVE_MMAP 1
 #include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #else
@@ -184,42 +184,6 @@ std::variant<SourceText, SourceReadError> decodeOwned(std::string path, std::str
                            line, column};
 }
 
-#if M350_HAVE_MMAP
-// A read-only private mapping of a whole file, unmapped with its last owner.
-class MappedFile {
-public:
-    MappedFile(void* address, std::size_t size) : address_(address), size_(size) {}
-    ~MappedFile() { ::munmap(address_, size_); }
-    MappedFile(const MappedFile&) = delete;
-    MappedFile& operator=(const MappedFile&) = delete;
-    std::string_view bytes() const { return {static_cast<const char*>(address_), size_}; }
-
-private:
-    void* address_;
-    std::size_t size_;
-};
-
-// The file mapped, or nothing when it cannot be (empty, not a regular file, no mmap): the caller
-// then reads it.
-std::shared_ptr<const MappedFile> mapFile(const std::string& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) {
-        return nullptr;
-    }
-    struct stat info {};
-    std::shared_ptr<const MappedFile> mapped;
-    if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
-        const auto size = static_cast<std::size_t>(info.st_size);
-        void* address = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-        if (address != MAP_FAILED) {
-            mapped = std::make_shared<const MappedFile>(address, size);
-        }
-    }
-    ::close(fd);
-    return mapped;
-}
-#endif
-
 }  // namespace
 
 std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::string_view bytes) {
@@ -257,9 +221,14 @@ std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path
                                          " MiB; program files above " + std::to_string(kMostSourceBytes / (1024 * 1024)) +
                                          " MiB are refused (they would not fit in memory once parsed)"};
     }
-    if (auto mapped = mapFile(path)) {
+    if (auto mapped = MappedFile::map(path)) {
         std::string_view bytes = mapped->bytes();
-        return decodeOwned(path, bytes, std::move(mapped));
+        auto decoded = decodeOwned(path, bytes, mapped);
+        if (mapped->truncated()) {
+            return SourceReadError{path, "cannot read file: it was cut short while it was read (another program "
+                                         "truncated or rewrote it); run again when it is complete"};
+        }
+        return decoded;
     }
 #endif
     const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
