@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <tuple>
+#include <utility>
 
 namespace m350::gcode {
 namespace {
@@ -76,7 +77,10 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
         if (block->suspect) {
             program.suspects[index] = blockParser.lastLint();
         }
-        if (block->label >= 0 || block->control != Control::None) {
+        if (block->label >= 0) {
+            labelBlocks_.emplace_back(block->label, index);
+        }
+        if (block->control != Control::None) {
             flowBlocks_.push_back(index);
         }
         if (checksCalls && isCall(*block)) {
@@ -137,11 +141,7 @@ void Parser::closeUnit(Program& program, std::uint32_t unitIndex) {
                        std::to_string(program.blocks[program.units[*existing].begin].location.line) + ")");
         }
     }
-    for (std::uint32_t b : flowBlocks_) {
-        if (program.blocks[b].label >= 0) {
-            unit.labels[program.blocks[b].label].push_back(b);
-        }
-    }
+    unit.labels.build(std::exchange(labelBlocks_, {}));
     program.indexUnit(unitIndex);
     pairLoops(program);
     checkGotos(program, unit);
@@ -213,7 +213,7 @@ void Parser::checkGotos(const Program& program, const ProgramUnit& unit) {
             continue;
         }
         auto label = roundToInt(target.number);
-        if (unit.labels.find(label) == unit.labels.end()) {
+        if (!unit.labels.contains(label)) {
             std::string where = unit.number >= 0 ? "O" + std::to_string(unit.number) : std::string("this program");
             report(program, block, target.column, DiagnosticKind::Flow,
                    "GOTO" + std::to_string(label) + ": there is no N" + std::to_string(label) + " in " + where);

@@ -44,7 +44,8 @@ private:
     const Dialect& dialect_;
     std::vector<Diagnostic> diagnostics_;
     // The passes over a unit look only at the blocks that matter to them, not at every G1 line:
-    std::vector<std::uint32_t> flowBlocks_; // of the open unit: labels and control statements
+    std::vector<std::uint32_t> flowBlocks_; // of the open unit: control statements
+    std::vector<std::pair<std::int32_t, std::uint32_t>> labelBlocks_; // of the open unit: (N label, block)
     std::vector<std::uint32_t> callBlocks_; // of main and MDI files: M98 / G65 with a P number
 };
 

@@ -57,17 +57,7 @@ std::optional<std::uint32_t> Program::mainUnit() const {
 }
 
 std::optional<std::uint32_t> Program::findLabel(std::uint32_t unit, std::int32_t label, std::uint32_t from) const {
-    const ProgramUnit& u = units[unit];
-    auto it = u.labels.find(label);
-    if (it == u.labels.end() || it->second.empty()) {
-        return std::nullopt;
-    }
-    for (std::uint32_t block : it->second) {
-        if (block >= from) {
-            return block;
-        }
-    }
-    return it->second.front();
+    return units[unit].labels.find(label, from);
 }
 
 std::uint32_t Program::unitOfBlock(std::uint32_t block) const {

@@ -3,6 +3,7 @@
 #include "core/common/LargeAllocation.h"
 #include "core/gcode/Block.h"
 #include "core/gcode/BlockStorage.h"
+#include "core/gcode/LabelIndex.h"
 
 #include <cstdint>
 #include <optional>
@@ -31,7 +32,7 @@ struct ProgramUnit {
     std::uint32_t file = 0;
     std::uint32_t begin = 0; // first block (the O line itself, when there is one)
     std::uint32_t end = 0;   // one past the last block
-    std::unordered_map<std::int32_t, std::vector<std::uint32_t>> labels;
+    LabelIndex labels;
 };
 
 // The parsed form of every file the run needs. Built once by the Parser; never re-scanned. The

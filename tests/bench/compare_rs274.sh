@@ -6,6 +6,7 @@
 #   g1-random  random X Y Z in +-100 mm, F on every line, default M350 machine              >= 20x
 #   g1-nof     the same random moves with F only on the first line                          >= 20x
 #   g1-seq     sequential coordinates (a 0.05 mm raster), default M350 machine              >= 20x
+#   g1-n       the g1 lines numbered N10, N20, ... (as CAM output is), default M350 machine  >= 20x
 #   loop       a 200,000-iteration WHILE loop with arithmetic, SIN and SQRT                 >= 20x
 # Each program is first run once untimed to prove it really executes (rs274's canonical calls are
 # counted; m350-sim must exit 0 and end where the program says), then timed best of 5 as whole
@@ -57,6 +58,8 @@ g1_lines() {
         for (i = 0; i < n; i++) {
             if (kind == "g1") {
                 printf "G1 X%d.123 Y%d.456 Z-%d.789 F1000\n", i % 100, (i * 7) % 100, i % 10
+            } else if (kind == "n") {
+                printf "N%d G1 X%d.123 Y%d.456 Z-%d.789 F1000\n", (i + 1) * 10, i % 100, (i * 7) % 100, i % 10
             } else if (kind == "seq") {
                 printf "G1 X%.3f Y%.3f Z-1.000 F1000\n", (i % 2000) * 0.05 - 50, int(i / 2000) * 0.05 - 50
             } else {
@@ -67,7 +70,7 @@ g1_lines() {
         print end
     }'
 }
-g1_kinds=(g1 random nof seq)
+g1_kinds=(g1 n random nof seq)
 for kind in "${g1_kinds[@]}"; do
     g1_lines "$kind" M2 > "$work/$kind.ngc"
     g1_lines "$kind" M30 > "$work/$kind.nc"
@@ -116,7 +119,7 @@ sim_command() {
     esac
 }
 g1_file() { [[ $1 == g1 || $1 == g1-m350 ]] && echo g1 || echo "${1#g1-}"; }
-g1_workloads=(g1 g1-m350 g1-random g1-nof g1-seq)
+g1_workloads=(g1 g1-m350 g1-n g1-random g1-nof g1-seq)
 
 for kind in "${g1_kinds[@]}"; do
     "$rs274" -g "$work/$kind.ngc" > "$work/rs-$kind.out" 2> "$work/rs-$kind.err" ||
