@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Builds and tests M350 Studio: a Release build with all tests, then (unless
-# M350_SKIP_SANITIZE=1) a Debug build of the core and CLI under ASan/UBSan.
+# M350_SKIP_SANITIZE=1) a Debug build of the core and CLI under ASan/UBSan, then (unless
+# M350_SKIP_FUZZ=1) a clang build of the core with the libFuzzer targets of tests/fuzz, each run
+# for M350_FUZZ_SECONDS (default 60) from its seed corpus. A crash, leak, UB or an input that runs
+# over 5 s fails the step; the input is kept in build-fuzz/findings/.
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -36,6 +39,20 @@ if [[ "${M350_SKIP_SANITIZE:-0}" != "1" ]]; then
         ctest --test-dir build-asan --output-on-failure -j2
 else
     header "Sanitizer build skipped (M350_SKIP_SANITIZE=1)"
+fi
+
+if [[ "${M350_SKIP_FUZZ:-0}" != "1" ]]; then
+    header "Configure build-fuzz (clang, libFuzzer, ASan/UBSan)"
+    cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+        -DM350_FUZZ=ON -DM350_BUILD_UI=OFF -DM350_BUILD_BENCH=OFF -DM350_WERROR=ON
+
+    header "Build build-fuzz"
+    cmake --build build-fuzz -j2
+
+    header "Fuzz (${M350_FUZZ_SECONDS:-60} s per target)"
+    bash scripts/fuzz.sh "${M350_FUZZ_SECONDS:-60}"
+else
+    header "Fuzzing skipped (M350_SKIP_FUZZ=1)"
 fi
 
 header "All tests passed"

@@ -24,7 +24,8 @@ void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double 
                             double feed, const std::optional<Arc>& arc) {
     double length = arc ? arc->length : (target - position_).norm();
     if (!lastMove_) {
-        lastMove_.emplace();
+        // not emplace(): clang decides LastMove is not default-constructible while the class is incomplete
+        lastMove_ = LastMove{};
     }
     LastMove& last = *lastMove_; // assigned in place: this runs for every move of a 200,000-line program
     last.from = position_;

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Runs each libFuzzer target of build-fuzz (scripts/test.sh configures it) for SECONDS from its
+# seeds in tests/fuzz/corpus/<target>/ and prints the executions. New inputs go to
+# build-fuzz/corpus/<target>/ (the seeds are not touched); a crash, leak, UB report or an input
+# running over 5 s is saved in build-fuzz/findings/ and fails the run.
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   (targets: parser evaluator machine-folder)
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+seconds=${1:-60}
+shift || true
+targets=("$@")
+[[ ${#targets[@]} -gt 0 ]] || targets=(parser evaluator machine-folder)
+
+mkdir -p build-fuzz/findings
+failed=0
+for target in "${targets[@]}"; do
+    fuzzer=build-fuzz/tests/fuzz/m350-fuzz-$target
+    log=build-fuzz/findings/$target.log
+    mkdir -p "build-fuzz/corpus/$target"
+    dictionary=()
+    [[ "$target" == machine-folder ]] || dictionary=(-dict=tests/fuzz/gcode.dict)
+    status=0
+    UBSAN_OPTIONS=print_stacktrace=1 "$fuzzer" "${dictionary[@]}" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
+        -print_final_stats=1 -artifact_prefix="build-fuzz/findings/$target-" \
+        "build-fuzz/corpus/$target" "tests/fuzz/corpus/$target" > "$log" 2>&1 || status=$?
+    runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+    speed=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+    if [[ $status -eq 0 ]]; then
+        echo "fuzz $target: ${runs:-?} executions in $seconds s (${speed:-?}/s), no finding"
+    else
+        echo "fuzz $target: FAILED (exit $status) after ${runs:-?} executions; log $log:"
+        grep -E '^(==[0-9]+==ERROR|SUMMARY|artifact_prefix|Test unit written|.*runtime error)' "$log" | head -20
+        failed=1
+    fi
+done
+exit $failed
