@@ -217,10 +217,9 @@ private:
             isWord(w, 'M', 98) || isWord(w, 'M', 99) || isWord(w, 'G', 10) || isWord(w, 'G', 11)) {
             return true; // G10/G11: FANUC tool life entry takes its own words
         }
-        const gcode::Dialect& d = *config_.dialect;
-        const int base = w.letter == 'G' ? d.gHandlerBase : d.mHandlerBase;
-        return base >= 0 && program_.findHandler(base + code, w.letter == 'G' ? gcode::FileRole::GLibrary
-                                                                             : gcode::FileRole::MLibrary);
+        const std::optional<std::int32_t> handler = config_.dialect->handlerProgram(w.letter, code);
+        return handler && program_.findHandler(*handler, w.letter == 'G' ? gcode::FileRole::GLibrary
+                                                                         : gcode::FileRole::MLibrary);
     }
 
     void words(const Block& b) {

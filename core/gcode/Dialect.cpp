@@ -120,4 +120,13 @@ std::optional<int> Dialect::handlerArgument(char letter) const {
     return v < 0 ? std::nullopt : std::optional<int>(v);
 }
 
+std::optional<std::int32_t> Dialect::handlerProgram(char letter, std::int32_t code) const {
+    constexpr std::int64_t kLargestProgram = 99999999; // O numbers have 8 digits
+    const int base = letter == 'M' ? mHandlerBase : gHandlerBase;
+    if (base < 0 || code < 0 || std::int64_t{base} + code > kLargestProgram) {
+        return std::nullopt;
+    }
+    return base + code;
+}
+
 } // namespace m350::gcode

@@ -68,6 +68,10 @@ struct Dialect {
 
     std::optional<int> callArgument(char letter) const;
     std::optional<int> handlerArgument(char letter) const;
+    // The O program that would handle `G<code>` or `M<code>` (letter 'G' or 'M'): gHandlerBase +
+    // code; none when the dialect has no handlers or the code is negative or beyond O99999999
+    // (`M9999999930` names no program rather than overflowing into one).
+    std::optional<std::int32_t> handlerProgram(char letter, std::int32_t code) const;
 };
 
 } // namespace m350::gcode

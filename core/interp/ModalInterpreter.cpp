@@ -199,8 +199,9 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
             case 0: case 1: case 2: case 30: case 6: break; // handled after motion (M6: empty on the M350)
             default:
                 if (dialect_.id == gcode::DialectId::M350) {
-                    invalid(m, "no such M code (and no O" + std::to_string(dialect_.mHandlerBase + code) +
-                                   " handler in slib-m.nc)");
+                    const std::optional<std::int32_t> handler = dialect_.handlerProgram('M', code);
+                    invalid(m, handler ? "no such M code (and no O" + std::to_string(*handler) + " handler in slib-m.nc)"
+                                       : std::string("no such M code"));
                 }
                 machine_.auxiliary(code); // FANUC: an M code the PMC answers (magazine, clamp ...)
                 break;

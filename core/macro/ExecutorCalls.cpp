@@ -64,11 +64,11 @@ std::optional<std::uint32_t> Executor::handlerFor(char letter, int code) const {
         std::int32_t unit = table[static_cast<std::size_t>(code)];
         return unit < 0 ? std::nullopt : std::optional<std::uint32_t>(static_cast<std::uint32_t>(unit));
     }
-    int base = letter == 'M' ? dialect_.mHandlerBase : dialect_.gHandlerBase;
-    if (base < 0) {
+    const std::optional<std::int32_t> handler = dialect_.handlerProgram(letter, code);
+    if (!handler) {
         return std::nullopt;
     }
-    return program_.findHandler(base + code, letter == 'M' ? gcode::FileRole::MLibrary : gcode::FileRole::GLibrary);
+    return program_.findHandler(*handler, letter == 'M' ? gcode::FileRole::MLibrary : gcode::FileRole::GLibrary);
 }
 
 // Whether any word of the block may start a call; most blocks (G1 X.. Y..) do not, and skip the

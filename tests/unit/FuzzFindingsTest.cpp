@@ -1,0 +1,58 @@
+// Regressions for what the libFuzzer targets of tests/fuzz found; each input is also kept in
+// tests/fuzz/corpus/<target>/found-* so that the fuzzers start from it.
+#include "RunProgram.h"
+
+#include "core/gcode/Dialect.h"
+
+#include <gtest/gtest.h>
+
+#include <climits>
+#include <string>
+
+namespace m350 {
+namespace {
+
+using test::bundledMachine;
+
+std::string joined(const std::vector<gcode::Diagnostic>& diagnostics) {
+    std::string out;
+    for (const gcode::Diagnostic& d : diagnostics) {
+        out += gcode::formatDiagnostic(d) + "\n";
+    }
+    return out;
+}
+
+// evaluator found-m-code-beyond-int: `M9999999930` saturates to INT_MAX, and the handler number
+// O(10000 + code) overflowed (UBSan: signed integer overflow in the static check and the run).
+TEST(FuzzFindingsTest, HandlerProgramOfAHugeOrNegativeCodeIsNone) {
+    const gcode::Dialect& m350 = gcode::Dialect::m350();
+    EXPECT_EQ(m350.handlerProgram('M', 150), 10150);
+    EXPECT_EQ(m350.handlerProgram('G', 81), 9081);
+    EXPECT_EQ(m350.handlerProgram('M', 99989999), 99999999);
+    EXPECT_FALSE(m350.handlerProgram('M', 99990000));
+    EXPECT_FALSE(m350.handlerProgram('M', INT_MAX));
+    EXPECT_FALSE(m350.handlerProgram('G', INT_MAX));
+    EXPECT_FALSE(m350.handlerProgram('M', -5)); // not O9995, a G handler
+    EXPECT_FALSE(gcode::Dialect::fanuc().handlerProgram('M', 150));
+}
+
+TEST(FuzzFindingsTest, MCodeBeyondIntIsCheckedAndAlarmsWithoutOverflow) {
+    controller::Controller controller(bundledMachine(), {});
+    ASSERT_TRUE(controller.loadMdi({"#100=1", "M9999999930"})) << joined(controller.diagnostics());
+    controller.checkWithoutRunning();
+    const controller::RunReport report = controller.run();
+    ASSERT_TRUE(report.alarm);
+    EXPECT_EQ(report.alarm->line, 2);
+    EXPECT_NE(report.alarm->message.find("no such M code"), std::string::npos) << report.alarm->message;
+    EXPECT_EQ(report.alarm->message.find("handler"), std::string::npos) << report.alarm->message;
+}
+
+TEST(FuzzFindingsTest, GCodeBeyondIntIsReportedByTheCheck) {
+    controller::Controller controller(bundledMachine(), {});
+    ASSERT_TRUE(controller.loadMdi({"G9999999930"})) << joined(controller.diagnostics());
+    const std::string found = joined(controller.checkWithoutRunning());
+    EXPECT_NE(found.find("not a G code this machine knows"), std::string::npos) << found;
+}
+
+} // namespace
+} // namespace m350
