@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace m350::controller {
 
@@ -63,12 +64,20 @@ std::optional<SpindleLoadWatch::Anomaly> SpindleLoadWatch::sampleUpTo(const mach
         next_ = until - period * kMaxSamplesPerEvent;
     }
     std::optional<Anomaly> anomaly;
-    for (; next_ <= until + 1e-12 && !anomaly; next_ += period) {
+    while (next_ <= until + 1e-12 && !anomaly) {
         tools::LoadSample sample = measure(machine, event, world, tool, next_);
         reg_ = sample.reg;
         if (auto message = monitor_.add(sample)) {
             anomaly = Anomaly{next_, *message};
         }
+        const double following = next_ + period;
+        if (!(following > next_)) {
+            // a move of 1e120 mm ends where a period is below the clock's resolution: adding it
+            // changes nothing, and the loop would sample that instant forever
+            next_ = std::nextafter(until, std::numeric_limits<double>::infinity());
+            break;
+        }
+        next_ = following;
     }
     return anomaly;
 }

@@ -54,5 +54,20 @@ TEST(FuzzFindingsTest, GCodeBeyondIntIsReportedByTheCheck) {
     EXPECT_NE(found.find("not a G code this machine knows"), std::string::npos) << found;
 }
 
+// evaluator found-spindle-load-huge-move: on a machine with a spindle load model (fanuc-ts27r) a
+// move of 1e128 mm ends at a virtual time where adding the sample period changes nothing; the load
+// watch sampled that instant forever, growing no memory but never returning to the runaway guard.
+TEST(FuzzFindingsTest, SpindleLoadSamplingEndsAfterAMoveBeyondTheClocksResolution) {
+    controller::RunSettings settings;
+    settings.maxSimTime = 30.0;
+    controller::Controller controller(bundledMachine("fanuc-ts27r"), settings);
+    const std::string huge = "1" + std::string(128, '0') + ".";
+    ASSERT_TRUE(controller.loadMdi({"G90 G01 X" + huge + " F500", "M30"})) << joined(controller.diagnostics());
+    const controller::RunReport report = controller.run();
+    ASSERT_TRUE(report.alarm);
+    EXPECT_EQ(report.alarm->line, 1) << report.alarm->message;
+    EXPECT_LE(report.simTime, 30.0 + 1e-9) << report.alarm->message;
+}
+
 } // namespace
 } // namespace m350
