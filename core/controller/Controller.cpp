@@ -6,6 +6,7 @@
 #include "core/config/ParameterLimits.h"
 #include "core/config/ParameterNumbers.h"
 #include "core/devices/Magazine.h"
+#include "core/macro/MacroError.h"
 
 #include <algorithm>
 #include <cmath>
@@ -174,11 +175,26 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
     if (settings_.observer) {
         settings_.observer->onMachineEvent(event);
     }
-    if (magazine_.device() && state_ != RunState::Alarm && state_ != RunState::EStop) {
-        magazine_.onMachineEvent(event);
+    if (magazine_.device()) {
+        feedMagazine(event);
     }
     countCuttingTime(event);
     watchSpindleLoad(event);
+}
+
+// The magazine sees every event, also the safe state an alarm drives the outputs to (the drawbar
+// clamps, the heads go up): what it holds must follow. Once an alarm stands, what the hardware
+// suffers besides is a message, the first alarm stays the one shown.
+void Controller::feedMagazine(const machine::MachineEvent& event) {
+    if (state_ != RunState::Alarm && state_ != RunState::EStop) {
+        magazine_.onMachineEvent(event);
+        return;
+    }
+    try {
+        magazine_.onMachineEvent(event);
+    } catch (const macro::MacroError& error) {
+        postMessage(error.message);
+    }
 }
 
 void Controller::postMessage(std::string text) {
@@ -255,6 +271,7 @@ bool Controller::start() {
     toolLife_.startRun();
     displayTime_ = machine_.time();
     runStartedAt_ = displayTime_;
+    timeLimitFrom_ = runStartedAt_;
     runStartedFrom_ = machine_.position();
     if (!unit || !executor_->start(*unit)) {
         state_ = RunState::Finished;
@@ -277,11 +294,10 @@ Controller::RunState Controller::advance(double seconds) {
     }
     while (state_ == RunState::Running && executor_->state() == macro::Executor::State::Running &&
            machine_.time() <= displayTime_ && !pendingDialog_) {
-        if (passedTimeLimit()) {
-            std::ostringstream why;
-            why << "the program ran " << settings_.maxSimTime
-                << " s of simulated time without ending (a loop waiting for an input that never comes?)";
-            executor_->raise(AlarmCode::SimulatedTimeLimit, why.str());
+        if (passedTimeLimit(timeLimitFrom_)) {
+            executor_->raise(AlarmCode::SimulatedTimeLimit,
+                             timeLimitText("the program", timeLimitFrom_) +
+                                 " without ending (a loop waiting for an input that never comes?)");
             break;
         }
         stepOnce();

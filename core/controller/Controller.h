@@ -188,6 +188,10 @@ public:
     // The panel's edits of a variable (#50-#499, offsets #800-#844 ...), as a macro would write it.
     // False with a reason for a read-only or unknown variable, or a value that is not finite.
     bool setVariable(int number, double value, std::string* why = nullptr);
+    // The operator says which tool the spindle holds (after an E-stop in a change the macro may
+    // have stopped before it recorded the tool): param 800 (#1300) on the M350, the PMC's spindle
+    // tool (what M85 stores) on a FANUC. False while a program runs or holds, or below 0.
+    bool setSpindleToolNumber(int tool);
 
     // The panel's feed override (进给倍率) in percent, from 0 up to param 295 (150 % when it is 0);
     // G00 follows it when param 253 = 1. Returns the percentage in effect.
@@ -305,6 +309,7 @@ public:
     std::optional<HomingFailure> builtInHoming(int axis) override;
     // machine::MachineObserver
     void onMachineEvent(const machine::MachineEvent& event) override;
+    void feedMagazine(const machine::MachineEvent& event);
 
 private:
     bool load(const std::string& path, std::string_view text, gcode::FileRole role, const std::string& encoding);
@@ -317,9 +322,17 @@ private:
     void watchSpindleLoad(const machine::MachineEvent& event);
     void enterSafeState();
     void stepOnce();
-    // True once the machine's clock has passed --max-sim-time (or gone nan); the move or dwell
-    // under way is then stopped where the limit found it, so the report shows that moment.
-    bool passedTimeLimit();
+    // True once what started at machine time `since` (a run, a hook, homing) has run longer than
+    // --max-sim-time (or the clock went nan); the move or dwell under way is then stopped where the
+    // limit found it, so the report shows that moment. A controller that has simulated hours
+    // before still gives each run the whole limit.
+    bool passedTimeLimit(double since);
+    // Stops the motion under way at virtual time t (SimulatedMachine::interrupt); the magazine
+    // learns where a move it was told of really stopped.
+    machine::SimulatedMachine::Remainder interruptMotion(double t, bool immediate);
+    // "the program ran 3600 s of simulated time without ending (stopped at 7250.5 s)": what ran
+    // over the limit, and the machine time it stopped at.
+    std::string timeLimitText(const std::string& what, double since) const;
     // The machine folder's params.toml, which native homing alarms name (their cause is a parameter).
     std::string parametersFile() const;
     void raiseAlarm(const Alarm& alarm);
@@ -336,7 +349,8 @@ private:
     void runPauseHook();
     void returnAfterPauseHook();
     KeyPress pressKey(int function, config::Hook hook, const std::string& key);
-    std::optional<Alarm> homeAxis(int axis);
+    // `since`: the machine time --max-sim-time counts from (the homing's or the run's start).
+    std::optional<Alarm> homeAxis(int axis, double since);
     bool homeSwitchWired(int axis) const;
     void fill(RunReport& out) const;
     int spindleTool() const;
@@ -370,6 +384,7 @@ private:
     std::string statusMessage_; // the #1503 text the status line shows now (cleared by #1503 = 1000)
     double feedOverride_ = 100.0;
     double runStartedAt_ = 0.0;
+    double timeLimitFrom_ = 0.0; // the run's start, moved on by its holds: --max-sim-time counts from here
     bool mdi_ = false;
     std::optional<config::Hook> hook_;  // the loaded program is this hook file
     bool inEventHook_ = false;          // pause.nc or error.nc runs: no hook starts inside it

@@ -40,11 +40,12 @@ bool Controller::needsBootHomingPrompt() const {
 }
 
 std::optional<Alarm> Controller::home(const std::vector<int>& axes) {
+    const double startedAt = machine_.time();
     for (int axis : kHomingOrder) {
         if (std::find(axes.begin(), axes.end(), axis) == axes.end()) {
             continue;
         }
-        if (auto alarm = homeAxis(axis)) {
+        if (auto alarm = homeAxis(axis, startedAt)) {
             raiseAlarm(*alarm);
             return alarm;
         }
@@ -71,7 +72,7 @@ std::string Controller::parametersFile() const {
     return config_.folder.empty() ? std::string("params.toml") : config_.folder + "/params.toml";
 }
 
-std::optional<Alarm> Controller::homeAxis(int axis) {
+std::optional<Alarm> Controller::homeAxis(int axis, double since) {
     const config::ParameterTable& p = config_.parameters;
     const char name = machine::kAxisNames[static_cast<std::size_t>(axis)];
     if (!homeSwitchWired(axis)) {
@@ -101,12 +102,12 @@ std::optional<Alarm> Controller::homeAxis(int axis) {
     moveBy(direction * distance, speed);
     machine_.setInput(pin, active);
     for (int cycle = 1; cycle < cycles; ++cycle) {
-        if (!(machine_.time() <= settings_.maxSimTime)) {
+        if (passedTimeLimit(since)) {
             // param 106 = 1e9 asked for hours of approaches: the runaway guard holds here too
             return Alarm{AlarmCode::SimulatedTimeLimit,
-                         std::string(1, name) + " homing ran " + std::to_string(static_cast<long long>(machine_.time())) +
-                             " s of simulated time (the limit) after " + std::to_string(cycle) + " of " +
-                             std::to_string(cycles) + " approaches: parameter 106 (homing cycle count) is 1 to 5 on the panel",
+                         timeLimitText(std::string(1, name) + " homing", since) + " (the limit) after " +
+                             std::to_string(cycle) + " of " + std::to_string(cycles) +
+                             " approaches: parameter 106 (homing cycle count) is 1 to 5 on the panel",
                          parametersFile(), 0, 0};
         }
         moveBy(-direction * kBackOff, slow);

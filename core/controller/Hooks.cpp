@@ -139,9 +139,10 @@ std::optional<Alarm> Controller::runHookProgramToEnd(const std::string& name) {
     }
     const bool startPressed = std::exchange(pressStartWhenAwaited_, true);
     sensorWatch_.clear();
+    const double startedAt = machine_.time();
     while (executor_->state() == macro::Executor::State::Running) {
-        if (passedTimeLimit()) {
-            executor_->raise(AlarmCode::SimulatedTimeLimit, name + " ran until the simulated time limit");
+        if (passedTimeLimit(startedAt)) {
+            executor_->raise(AlarmCode::SimulatedTimeLimit, timeLimitText(name, startedAt) + " (the limit)");
             break;
         }
         stepOnce();
@@ -192,7 +193,7 @@ std::optional<macro::MachineAccess::HomingFailure> Controller::builtInHoming(int
     if (scan_.scanning()) {
         return HomingFailure{AlarmCode::NotHomed, "homing (M98 P501) cannot be scanned: start after it"};
     }
-    if (auto alarm = homeAxis(axis)) {
+    if (auto alarm = homeAxis(axis, timeLimitFrom_)) {
         return HomingFailure{alarm->code, alarm->message};
     }
     return std::nullopt;

@@ -247,6 +247,12 @@ void MagazineDriver::onMachineEvent(const machine::MachineEvent& event) {
     }
 }
 
+void MagazineDriver::moveStoppedAt(const machine::Axes& position) {
+    if (device_) {
+        device_->stoppedAt(noseAt(position));
+    }
+}
+
 std::optional<std::string> MagazineDriver::output(int port, int level, double now) {
     const Eigen::Vector3d nose = noseAt(context_.machine.position());
     if (port == drawbar_.output) {
@@ -284,7 +290,7 @@ std::optional<std::string> MagazineDriver::output(int port, int level, double no
     }
     if (carousel_ && port == m.slideOutput) {
         devices::UmbrellaCarousel::Action slide = carousel_->slide(level == 1, nose, now);
-        if (!slide.crash && slide.seconds > 0.0) {
+        if (slide.seconds > 0.0) {
             driveSensor({m.awayInput, 1}, false, now);
             driveSensor({m.atSpindleInput, 1}, false, now);
             driveSensor({level == 1 ? m.atSpindleInput : m.awayInput, 1}, true, now + slide.seconds);

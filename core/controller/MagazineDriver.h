@@ -59,6 +59,8 @@ public:
     const devices::Magazine* device() const { return device_.get(); }
     // Feeds one machine event to the device; throws a `crash` or `sensor_timeout` MacroError.
     void onMachineEvent(const machine::MachineEvent& event);
+    // The move under way stopped short at `position` (Magazine::stoppedAt).
+    void moveStoppedAt(const machine::Axes& position);
     // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor.
     std::string describeInput(int pin) const;
 

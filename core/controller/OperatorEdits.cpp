@@ -1,6 +1,8 @@
 // What the operator edits from the panel rather than a program: work positions (清零, 坐标管理,
-// 分中) and variables.
+// 分中), variables and the spindle's tool number.
 #include "core/controller/Controller.h"
+
+#include "core/config/ParameterNumbers.h"
 
 #include <cmath>
 
@@ -10,6 +12,19 @@ void Controller::setWorkPosition(int axis, double value) {
     int slot = interp_.activeSlot();
     double others = interp_.workOffset()(axis) - offsets_.get(slot, axis);
     offsets_.set(slot, axis, machine_.position()(axis) - others - value);
+}
+
+bool Controller::setSpindleToolNumber(int tool) {
+    if (tool < 0 || state_ == RunState::Running || state_ == RunState::Hold) {
+        return false;
+    }
+    if (config_.dialect->id == gcode::DialectId::M350) {
+        config_.parameters.set(config::param::kCurrentTool, tool);
+    } else {
+        fanucSpindleTool_ = tool;
+    }
+    syncToolLength();
+    return true;
 }
 
 bool Controller::setVariable(int number, double value, std::string* why) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace m350::controller {
 
@@ -25,7 +26,7 @@ void Controller::hold() {
         runPauseHook();
         return;
     }
-    remainder_ = machine_.interrupt(displayTime_, false);
+    remainder_ = interruptMotion(displayTime_, false);
     toolLife_.cutShortAt(machine_.time());
     rememberPause(remainder_);
     const config::ParameterTable& p = config_.parameters;
@@ -51,6 +52,7 @@ void Controller::resume() {
         return;
     }
     if (machine_.time() < displayTime_) {
+        timeLimitFrom_ += displayTime_ - machine_.time(); // a long hold is no runaway
         machine_.blockTime(displayTime_ - machine_.time()); // the clock ran while paused
     }
     if (trace_) {
@@ -108,7 +110,7 @@ void Controller::continueRemainder(const machine::SimulatedMachine::Remainder& r
 }
 
 void Controller::reset() {
-    machine::SimulatedMachine::Remainder rest = machine_.interrupt(displayTime_, true);
+    machine::SimulatedMachine::Remainder rest = interruptMotion(displayTime_, true);
     toolLife_.cutShortAt(machine_.time());
     if (state_ == RunState::Running) {
         rememberPause(rest); // a run stopped by RESET resumes as a paused one does
@@ -159,7 +161,7 @@ bool Controller::spindleJog(bool on) {
 }
 
 void Controller::emergencyStop(const std::string& why) {
-    machine_.interrupt(displayTime_, true);
+    interruptMotion(displayTime_, true);
     toolLife_.cutShortAt(machine_.time());
     if (machine_.time() < displayTime_) {
         machine_.blockTime(displayTime_ - machine_.time());
@@ -174,14 +176,32 @@ void Controller::emergencyStop(const std::string& why) {
     }
 }
 
-bool Controller::passedTimeLimit() {
-    if (machine_.time() <= settings_.maxSimTime) {
+machine::SimulatedMachine::Remainder Controller::interruptMotion(double t, bool immediate) {
+    using Kind = machine::SimulatedMachine::Remainder::Kind;
+    machine::SimulatedMachine::Remainder rest = machine_.interrupt(t, immediate);
+    if (rest.kind == Kind::Rapid || rest.kind == Kind::Feed || rest.kind == Kind::Arc) {
+        magazine_.moveStoppedAt(machine_.position());
+    }
+    return rest;
+}
+
+bool Controller::passedTimeLimit(double since) {
+    if (machine_.time() - since <= settings_.maxSimTime) {
         return false; // a clock gone nan fails this test too
     }
     if (std::isfinite(machine_.time())) {
-        machine_.interrupt(settings_.maxSimTime, true); // a move of years would report its end
+        interruptMotion(since + settings_.maxSimTime, true); // a move of years would report its end
     }
     return true;
+}
+
+std::string Controller::timeLimitText(const std::string& what, double since) const {
+    std::ostringstream text;
+    text << what << " ran " << settings_.maxSimTime << " s of simulated time";
+    if (since != 0.0) {
+        text << " (from " << since << " s to " << machine_.time() << " s of the machine's clock)";
+    }
+    return text.str();
 }
 
 } // namespace m350::controller

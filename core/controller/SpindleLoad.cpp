@@ -33,7 +33,7 @@ void Controller::watchSpindleLoad(const machine::MachineEvent& event) {
     }
     auto anomaly = loadWatch_.sampleUpTo(machine_, event, world_, spindleTool());
     if (anomaly && state_ == RunState::Running && executor_) {
-        machine_.interrupt(anomaly->time, false); // the axes brake from where they were then
+        interruptMotion(anomaly->time, false); // the axes brake from where they were then
         throw macro::MacroError{AlarmCode::SpindleLoad, anomaly->message, 0};
     }
 }

@@ -148,6 +148,7 @@ bool Controller::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopP
     displayTime_ = std::max(displayTime_, machine_.time());
     machine_.blockTime(displayTime_ - machine_.time());
     runStartedAt_ = displayTime_;
+    timeLimitFrom_ = runStartedAt_;
     runStartedFrom_ = from;
     if (trace_) {
         trace_->runState(machine_.time(), "start at " + lineText(block));

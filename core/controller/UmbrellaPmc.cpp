@@ -3,7 +3,8 @@
 // never comes stops the run with `sensor_timeout` naming it, where the real machine would hang.
 //   M10 clamp / M11 release the tool (drawbar, released/clamped sensors)
 //   M81 magazine ready (enable), M82 turn the commanded tool's pocket to the spindle (in position)
-//   M83 carousel to the spindle / M84 back (slide, at-spindle/away sensors)
+//   M83 carousel to the spindle / M84 back (slide, at-spindle/away sensors; each starts once the
+//   carousel stands in position at the other end)
 //   M85 store the commanded tool as the spindle's tool (what #1000 and #1001 compare with)
 #include "core/controller/MagazineDriver.h"
 
@@ -68,6 +69,15 @@ void MagazineDriver::answerPmc(int code) {
     }
     case 83:
     case 84:
+        if (context_.machine.output(m.slideOutput) != (code == 83 ? 1 : 0)) {
+            // the ladder's interlock: the slide starts from rest, the carousel in position at the
+            // other end (after an E-stop it may still be turning or sliding back)
+            for (int pin : {m.inPositionInput, code == 83 ? m.awayInput : m.atSpindleInput}) {
+                if (pin > 0) {
+                    awaitSensor(pin, 1, code);
+                }
+            }
+        }
         context_.machine.setOutput(m.slideOutput, code == 83 ? 1 : 0);
         awaitSensor(code == 83 ? m.atSpindleInput : m.awayInput, 1, code);
         return;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace m350::devices {
 
@@ -120,6 +121,7 @@ std::optional<std::string> LinearRack::move(const Vector3d& from, const Vector3d
     if ((to - from).norm() < kStill) {
         return std::nullopt;
     }
+    lastMove_ = MoveUnderWay{from, rapid, spindleTurning, engaged_};
     if (engaged_ == 0 && (!envelope_ || !crosses(*envelope_, from, to))) {
         return std::nullopt; // far from the rack: nothing to hit, nothing to engage
     }
@@ -186,6 +188,9 @@ std::optional<std::string> LinearRack::moveEmpty(const Vector3d& from, const Vec
             return "the spindle nose ran into " + tool(standing) + " in " + pocket(k) + " (moving from " + at(from) +
                    " to " + at(to) + ")";
         }
+        if (to.z() > from.z()) {
+            continue; // rising from beside its pull stud (an E-stop stopped it there): nothing comes down
+        }
         if (spindleTurning) {
             return "came down onto " + tool(standing) + " in " + pocket(k) +
                    " with the spindle turning: stop it (M05) and wait for it (M300) first";
@@ -201,7 +206,16 @@ std::optional<std::string> LinearRack::moveEmpty(const Vector3d& from, const Vec
     return std::nullopt;
 }
 
+void LinearRack::stoppedAt(const Vector3d& nose) {
+    if (const std::optional<MoveUnderWay> cut = std::exchange(lastMove_, std::nullopt)) {
+        engaged_ = cut->engagedBefore;
+        (void)move(cut->from, nose, cut->rapid, cut->spindleTurning, 0.0); // what it hit, it hit on the way
+        lastMove_.reset();
+    }
+}
+
 std::optional<std::string> LinearRack::drawbar(bool released, const Vector3d& nose) {
+    lastMove_.reset(); // the nose stands still now
     int* pocket = engaged_ != 0 ? &pockets_[static_cast<std::size_t>(engaged_ - 1)] : nullptr;
     if (const int dropped = spindle_.change(released, pocket)) {
         return tool(dropped) + " dropped: the drawbar was released at " + at(nose) +

@@ -35,6 +35,7 @@ public:
     std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
                                     bool spindleTurning, double at) override;
     std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) override;
+    void stoppedAt(const Eigen::Vector3d& at) override;
 
     int spindleTool() const override { return spindle_.tool(); }
     int pocketTool(int pocket) const override { return pockets_[static_cast<std::size_t>(pocket - 1)]; }
@@ -80,6 +81,13 @@ private:
     SpindleDrawbar spindle_;
     int engaged_ = 0;          // the pocket whose fork holds the spindle's tool (or whose tool the
                                // released nose stands over), 0 when none
+    struct MoveUnderWay {
+        Eigen::Vector3d from;
+        bool rapid = false;
+        bool spindleTurning = false;
+        int engagedBefore = 0;
+    };
+    std::optional<MoveUnderWay> lastMove_; // taken again to where it stopped (stoppedAt)
 };
 
 } // namespace m350::devices

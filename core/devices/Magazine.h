@@ -22,6 +22,10 @@ public:
                                             bool spindleTurning, double at) = 0;
     // The drawbar was released (true) or clamped (false) with the nose at `at`.
     virtual std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) = 0;
+    // The last move stopped at `at`, short of its end (a hold, RESET, E-stop, the time limit): what
+    // the device took from where that move was going (the nose in a fork, over a tool) it takes
+    // from where the nose really stands.
+    virtual void stoppedAt(const Eigen::Vector3d& at) { (void)at; }
     // The spindle started, stopped or oriented (M19); only a device the spindle's keys meet cares.
     virtual void spindle(bool turning, bool oriented) {
         (void)turning;

@@ -24,7 +24,8 @@ public:
 
     int spindleTool() const override; // the head down, 0 when none (or when several are)
     int pocketCount() const override { return static_cast<int>(down_.size()); }
-    int pocketTool(int pocket) const override { return down_[static_cast<std::size_t>(pocket - 1)] ? 0 : pocket; }
+    // Head k is in its own place on the carriage, or in use: two down together are neither in use.
+    int pocketTool(int pocket) const override { return pocket == spindleTool() ? 0 : pocket; }
     const std::vector<int>& droppedTools() const override { return none_; }
 
     // Head k's cylinder moved it down (true) or up, with the nose at `nose`.

@@ -33,6 +33,7 @@ public:
     std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
                                     bool spindleTurning, double at) override;
     std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) override;
+    void stoppedAt(const Eigen::Vector3d& at) override { station_.stoppedAt(at); }
 
     int spindleTool() const override { return station_.spindleTool(); }
     int pocketCount() const override { return static_cast<int>(pockets_.size()); }

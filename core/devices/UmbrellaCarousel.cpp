@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace m350::devices {
 
@@ -46,12 +47,13 @@ std::optional<std::string> UmbrellaCarousel::move(const Vector3d& from, const Ve
     if (!slideIn_ || (to - from).norm() < kStill) {
         return std::nullopt;
     }
+    lastMove_ = MoveUnderWay{from, spindleTurning, at, engaged_};
     if (std::abs(to.x() - from.x()) >= kStill || std::abs(to.y() - from.y()) >= kStill) {
         const char* axis = std::abs(to.x() - from.x()) >= kStill ? "X" : "Y";
         return std::string("moved ") + axis + " while the carousel stood at the spindle (from " + where(from) +
                " to " + where(to) + "): slide it back (M84) first";
     }
-    if (at < busyUntil_ && to.z() < geometry_.clearZ - geometry_.tolerance) {
+    if (busy(at) && to.z() < geometry_.clearZ - geometry_.tolerance) {
         return "came down into the carousel at " + where(to) + " while it was still turning or sliding";
     }
     if (spindle_.tool() != 0) {
@@ -99,7 +101,16 @@ std::optional<std::string> UmbrellaCarousel::moveEmpty(const Vector3d& from, con
     return std::nullopt;
 }
 
+void UmbrellaCarousel::stoppedAt(const Vector3d& nose) {
+    if (const std::optional<MoveUnderWay> cut = std::exchange(lastMove_, std::nullopt)) {
+        engaged_ = cut->engagedBefore;
+        (void)move(cut->from, nose, false, cut->spindleTurning, cut->at); // what it hit, it hit on the way
+        lastMove_.reset();
+    }
+}
+
 std::optional<std::string> UmbrellaCarousel::drawbar(bool released, const Vector3d& nose) {
+    lastMove_.reset(); // the nose stands still now
     if (const int dropped = spindle_.change(released, engaged_ ? &clip() : nullptr)) {
         return tool(dropped) + " dropped: the spindle released it at " + where(nose) +
                (slideIn_ ? " out of its clip's reach (the change height is G30 P3)"
@@ -146,27 +157,28 @@ std::optional<std::string> UmbrellaCarousel::slideIn(const Vector3d& nose) {
 
 UmbrellaCarousel::Action UmbrellaCarousel::slide(bool toSpindle, const Vector3d& nose, double now) {
     Action action;
+    lastMove_.reset(); // the nose stands still now
     if (toSpindle == slideIn_) {
         return action;
     }
-    if (now < busyUntil_) {
+    if (busy(now)) {
         action.crash = std::string("the carousel slid ") + (toSpindle ? "in" : "back") +
                        " while it was still turning: wait for its in-position signal";
-        return action;
-    }
-    if (toSpindle) {
+    } else if (toSpindle) {
         action.crash = slideIn(nose);
     } else if (engaged_ && spindle_.tool() == 0 && clip() != 0) {
         action.crash = "the carousel pulled " + tool(clip()) + " sideways out of the open spindle nose at " +
                        where(nose) + ": raise Z (G30 P2) after releasing it, or clamp it (M10) first";
     }
-    if (action.crash) {
-        return action;
+    if (action.crash && toSpindle) {
+        return action; // it stopped against what it hit, short of the spindle
     }
+    // Back it goes whatever it meets (an E-stop drops its output at any moment), with what its clip holds.
     slideIn_ = toSpindle;
     engaged_ = toSpindle && engaged_;
     action.seconds = geometry_.slideSeconds;
-    busyUntil_ = now + action.seconds;
+    // a slide that reverses runs from now (an E-stop's clock may stand before the slide it stops)
+    slidingUntil_ = now + action.seconds;
     return action;
 }
 
@@ -190,7 +202,7 @@ UmbrellaCarousel::Action UmbrellaCarousel::turnTo(int target, const Vector3d& no
     const int forward = ((target - atSpindle_) % n + n) % n;
     action.seconds = std::min(forward, n - forward) * geometry_.secondsPerPocket;
     atSpindle_ = target;
-    busyUntil_ = std::max(busyUntil_, now + action.seconds);
+    turningUntil_ = now + action.seconds; // a new target replaces the old one, as its in-position signal does
     return action;
 }
 

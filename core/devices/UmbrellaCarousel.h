@@ -38,6 +38,7 @@ public:
     std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
                                     bool spindleTurning, double at) override;
     std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) override;
+    void stoppedAt(const Eigen::Vector3d& at) override;
 
     int spindleTool() const override { return spindle_.tool(); }
     int pocketCount() const override { return static_cast<int>(pockets_.size()); }
@@ -77,7 +78,16 @@ private:
     bool engaged_ = false;   // the nose is in the clip at the spindle (holding its tool, or over it)
     bool turning_ = false;
     bool oriented_ = false;
-    double busyUntil_ = -1.0; // turning or sliding until then
+    bool busy(double now) const { return now < turningUntil_ || now < slidingUntil_; }
+    double turningUntil_ = -1.0;
+    double slidingUntil_ = -1.0;
+    struct MoveUnderWay {
+        Eigen::Vector3d from;
+        bool spindleTurning = false;
+        double at = 0.0;
+        bool engagedBefore = false;
+    };
+    std::optional<MoveUnderWay> lastMove_; // taken again to where it stopped (stoppedAt)
 };
 
 } // namespace m350::devices
