@@ -2,7 +2,7 @@
 # Builds and tests M350 Studio: a Release build with all tests, then (unless
 # M350_SKIP_SANITIZE=1) a Debug build of the core and CLI under ASan/UBSan, then (unless
 # M350_SKIP_FUZZ=1) a clang build of the core with the libFuzzer targets of tests/fuzz, each run
-# for M350_FUZZ_SECONDS (default 60) from its seed corpus. A crash, leak, UB or an input that runs
+# for M350_FUZZ_SECONDS (default 30) from its seed corpus. A crash, leak, UB or an input that runs
 # over 5 s fails the step; the input is kept in build-fuzz/findings/.
 set -euo pipefail
 
@@ -50,8 +50,8 @@ if [[ "${M350_SKIP_FUZZ:-0}" != "1" ]]; then
     header "Build build-fuzz"
     cmake --build build-fuzz -j2
 
-    header "Fuzz (${M350_FUZZ_SECONDS:-60} s per target)"
-    bash scripts/fuzz.sh "${M350_FUZZ_SECONDS:-60}"
+    header "Fuzz (${M350_FUZZ_SECONDS:-30} s per target)"
+    bash scripts/fuzz.sh "${M350_FUZZ_SECONDS:-30}"
 else
     header "Fuzzing skipped (M350_SKIP_FUZZ=1)"
 fi
