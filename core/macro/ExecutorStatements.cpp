@@ -28,7 +28,11 @@ void Executor::executeDeviceStatement(const gcode::Block& block) {
     if (!devices) {
         throw MacroError{AlarmCode::DeviceError, "this machine has no external device or Modbus port", column};
     }
-    const std::span<const gcode::StatementItem> items = program_.statements[block.statement];
+    // POPEN and PCLOS have no items: their `statement` is 0, which names nothing when no DPRNT came before
+    const std::span<const gcode::StatementItem> items =
+        block.control == Control::Popen || block.control == Control::Pclos
+            ? std::span<const gcode::StatementItem>{}
+            : program_.statements[block.statement];
     // A Modbus argument: a whole number from `low` to `high`.
     auto whole = [&](std::size_t k, const char* what, double low, double high) {
         const double v = evaluator_.number(items[k].value);

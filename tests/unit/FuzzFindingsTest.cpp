@@ -69,5 +69,14 @@ TEST(FuzzFindingsTest, SpindleLoadSamplingEndsAfterAMoveBeyondTheClocksResolutio
     EXPECT_LE(report.simTime, 30.0 + 1e-9) << report.alarm->message;
 }
 
+// evaluator found-pclos-first-statement: a PCLOS (or POPEN) before any DPRNT looked up its items
+// as statements[0] of an empty table (UBSan: reference binding to null pointer).
+TEST(FuzzFindingsTest, PclosBeforeAnyDprntRunsWithoutReadingAStatementTable) {
+    controller::Controller controller(bundledMachine("fanuc-ts27r"), {});
+    ASSERT_TRUE(controller.loadMdi({"PCLOS", "POPEN", "PCLOS", "M30"})) << joined(controller.diagnostics());
+    const controller::RunReport report = controller.run();
+    EXPECT_EQ(report.status, controller::RunStatus::Ok) << (report.alarm ? report.alarm->message : "");
+}
+
 } // namespace
 } // namespace m350
