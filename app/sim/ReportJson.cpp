@@ -32,6 +32,9 @@ nlohmann::json diagnosticsJson(const std::vector<gcode::Diagnostic>& diagnostics
                         {"severity", d.severity == gcode::Severity::Error ? "error" : "warning"},
                         {"kind", kind},
                         {"message", d.message}});
+        if (d.omitted > 0) {
+            list.back()["omitted"] = d.omitted;
+        }
     }
     return list;
 }
@@ -69,6 +72,7 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
     j["pockets"] = pockets;
     j["outputs"] = report.outputs;
     j["messages"] = report.messages;
+    j["messages_omitted"] = report.messagesOmitted;
     j["sim_time_s"] = report.simTime;
     j["diagnostics"] = diagnosticsJson(report.diagnostics);
     return j;
@@ -86,6 +90,7 @@ nlohmann::json errorJson(const std::string& code, const std::string& message, co
             {"pockets", nlohmann::json::object()},
             {"outputs", std::vector<int>(machine::kOutputCount, 0)},
             {"messages", nlohmann::json::array()},
+            {"messages_omitted", 0},
             {"sim_time_s", 0.0},
             {"diagnostics", nlohmann::json::array()}};
 }

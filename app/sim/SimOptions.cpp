@@ -132,6 +132,11 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--tool", tool, "tool in the spindle at start");
         cmd->add_option("--print", printList, "variables to report, e.g. 1,100,1300");
         cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE")->check(nonEmptyPath);
+        cmd->add_option("--trace-limit", o.settings.traceLimit,
+                        "the most bytes the trace keeps (default 256MB; K, M, G suffixes): past it the first lines "
+                        "and the last ones, with a trace_truncated line between")
+            ->transform(CLI::AsSizeValue(false))
+            ->check(CLI::PositiveNumber);
         cmd->add_option("--dprnt", o.outputFile,
                         "write what the program sends with POPEN/DPRNT/BPRNT/PCLOS to FILE (default: dprnt.txt "
                         "beside the program; for mdi and hook, in the current folder)")

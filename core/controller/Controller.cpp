@@ -1,5 +1,7 @@
 #include "core/controller/Controller.h"
 #include "core/config/FanucParameters.h"
+
+#include "core/common/EchoText.h"
 #include "core/config/IoPorts.h"
 #include "core/common/Numeric.h"
 
@@ -24,9 +26,9 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
       interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters),
       magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}),
       devices_({config_.parameters, scan_, trace_, [this] { return machine_.time(); }, [this] { return source(); }},
-               config_.modbus) {
+               config_.modbus, settings_.externalOutputLimit) {
     if (settings_.trace) {
-        trace_ = std::make_unique<TraceWriter>(*settings_.trace);
+        trace_ = std::make_unique<TraceWriter>(*settings_.trace, settings_.traceLimit);
     }
     for (int slot = 0; slot < interp::WorkOffsets::kSlots; ++slot) {
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
@@ -198,10 +200,11 @@ void Controller::feedMagazine(const machine::MachineEvent& event) {
 }
 
 void Controller::postMessage(std::string text) {
+    text = clipEcho(std::move(text));
     if (trace_) {
         trace_->message(machine_.time(), text, source());
     }
-    messages_.push_back(std::move(text));
+    messages_.add(std::move(text));
 }
 
 // Alarms stop motion and drive every output to its safe (off) state, as the real controller does.
@@ -421,7 +424,8 @@ void Controller::fill(RunReport& out) const {
     for (int port = 1; port <= machine::kOutputCount; ++port) {
         out.outputs[static_cast<std::size_t>(port - 1)] = machine_.output(port);
     }
-    out.messages = messages_;
+    out.messages = messages_.list();
+    out.messagesOmitted = messages_.omitted();
     out.simTime = machine_.time();
     out.blocks = executor_ ? executor_->blocksExecuted() : 0;
 }

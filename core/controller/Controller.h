@@ -7,6 +7,7 @@
 #include "core/controller/ExternalDevices.h"
 #include "core/controller/KeyPress.h"
 #include "core/controller/ManualMotionState.h"
+#include "core/controller/MessageLog.h"
 #include "core/controller/PanelStatus.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
@@ -281,9 +282,14 @@ public:
     macro::Value variable(int number);
     const gcode::Dialect& dialect() const { return *config_.dialect; }
     // What the external output device (POPEN, DPRNT, BPRNT, PCLOS) received since the controller
-    // started; whether a program ever opened it.
-    const std::string& externalOutput() const { return devices_.received(); }
+    // started (bounded: RunSettings::externalOutputLimit); whether a program ever opened it.
+    std::string externalOutput() const { return devices_.received(); }
     bool externalOutputOpened() const { return devices_.outputOpened(); }
+    // Writes the end of a trace that reached its limit (RunSettings::traceLimit): call once the run
+    // is over, before the trace file is closed.
+    void finishTrace() {
+        if (trace_) trace_->finish();
+    }
     // The machine's configuration as it stands: parameters, offsets of the folder, the tool table now.
     config::MachineConfig config() const;
 
@@ -380,7 +386,7 @@ private:
     int fanucSpindleTool_ = 0;
     double dialogAnswer_ = 0.0;
     std::optional<Dialog> pendingDialog_; // see pendingDialog()
-    std::vector<std::string> messages_;
+    MessageLog messages_;
     std::string statusMessage_; // the #1503 text the status line shows now (cleared by #1503 = 1000)
     double feedOverride_ = 100.0;
     double runStartedAt_ = 0.0;

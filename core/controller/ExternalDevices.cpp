@@ -4,8 +4,22 @@
 
 namespace m350::controller {
 
-ExternalDevices::ExternalDevices(Context context, config::ModbusSlaves slaves)
-    : context_(std::move(context)), slaves_(std::move(slaves)) {}
+ExternalDevices::ExternalDevices(Context context, config::ModbusSlaves slaves, std::uint64_t limit)
+    : context_(std::move(context)), slaves_(std::move(slaves)),
+      receivedKept_(static_cast<std::size_t>(limit - limit / 4), static_cast<std::size_t>(limit / 4)) {}
+
+std::string ExternalDevices::received() const {
+    std::string out = receivedFirst_;
+    if (receivedKept_.omitted() > 0) {
+        out += "\n... " + std::to_string(receivedKept_.omitted()) + " records (" +
+               std::to_string(receivedKept_.omittedCost()) + " bytes) omitted: the output reached its limit; the "
+               "first and the last records are kept ...\n";
+    }
+    for (const auto& kept : receivedKept_.tail()) {
+        out += kept.piece;
+    }
+    return out;
+}
 
 std::optional<std::string> ExternalDevices::openOutput() {
     open_ = true;
@@ -32,7 +46,11 @@ std::optional<std::string> ExternalDevices::output(std::string_view statement, s
     if (context_.scan.scanning()) {
         return std::nullopt; // sent when the program ran up to here, not again
     }
-    received_ += record;
+    if (receivedKept_.takeIntoHead(record.size())) {
+        receivedFirst_ += record;
+    } else {
+        receivedKept_.keepInTail(std::string(record), record.size());
+    }
     if (context_.trace) {
         context_.trace->externalOutput(context_.time(), statement, record, context_.source());
     }

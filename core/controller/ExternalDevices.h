@@ -2,6 +2,7 @@
 
 #include "core/config/ModbusSlaves.h"
 #include "core/config/ParameterTable.h"
+#include "core/common/HeadTail.h"
 #include "core/controller/TraceWriter.h"
 #include "core/machine/ScanMachine.h"
 #include "core/macro/Peripherals.h"
@@ -15,8 +16,10 @@ namespace m350::controller {
 // The devices beside the CNC that macro statements reach (macro::Peripherals):
 // - FANUC's external output device (an RS-232 punch or printer): POPEN opens it, DPRNT and BPRNT
 //   send records, PCLOS closes it. What it received collects in received() (m350-sim writes it into
-//   a file) and each record goes to the trace as it is sent. DPRNT or BPRNT while it is closed is
-//   an alarm, as on the FANUC-compatible controls that document it.
+//   a file), bounded by `limit` bytes: past it the first records and the newest are kept with a
+//   line between them saying how much was left out. Each record goes to the trace as it is sent.
+//   DPRNT or BPRNT while it is closed is an alarm, as on the FANUC-compatible controls that
+//   document it.
 // - the M350's Modbus RTU slaves (modbus.toml): MSETDATA and MGETDATA read and write their holding
 //   registers in memory, with parameter 279 on; each transfer goes to the trace.
 // While 断点加工 scans the blocks before its start line, POPEN and PCLOS open and close the device
@@ -31,9 +34,9 @@ public:
         std::function<double()> time;
         std::function<TraceSource()> source;
     };
-    ExternalDevices(Context context, config::ModbusSlaves slaves);
+    ExternalDevices(Context context, config::ModbusSlaves slaves, std::uint64_t limit);
 
-    const std::string& received() const { return received_; }
+    std::string received() const;
     bool outputOpened() const { return opened_; } // POPEN ran at least once
     void closeOutputDevice() { open_ = false; }   // a new run starts with the device closed
 
@@ -48,7 +51,8 @@ private:
 
     Context context_;
     config::ModbusSlaves slaves_;
-    std::string received_;
+    std::string receivedFirst_;
+    HeadTail<std::string> receivedKept_;
     bool open_ = false;
     bool opened_ = false;
 };

@@ -25,7 +25,8 @@ struct RunReport {
     int tool = 0;
     std::map<int, int> pockets; // pocket -> tool (0 = empty)
     std::array<int, machine::kOutputCount> outputs{};
-    std::vector<std::string> messages;
+    std::vector<std::string> messages; // bounded (MessageLog): the first and the last
+    std::uint64_t messagesOmitted = 0;  // left out between them
     double simTime = 0.0;
     std::uint64_t blocks = 0;
 };

@@ -4,6 +4,7 @@
 #include "core/machine/ToolWorld.h"
 #include "core/tools/SpindleLoadLimits.h"
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <ostream>
@@ -36,6 +37,10 @@ struct RunSettings {
     std::vector<machine::ToolBreak> toolBreaks;
     std::map<int, tools::LoadLimits> loadLimits; // per tool, over spindle-load.toml's (`--load-limits`)
     std::ostream* trace = nullptr;     // JSON Lines events
+    // The most bytes the trace and the external output device's text keep (the first and the last
+    // lines; see TraceWriter and ExternalDevices): an endless loop must not fill the disk or memory.
+    std::uint64_t traceLimit = 256ull << 20;
+    std::uint64_t externalOutputLimit = 64ull << 20;
     // Told every machine event as it happens (the panel's simulation draws the path from them).
     machine::MachineObserver* observer = nullptr;
 };

@@ -4,6 +4,7 @@
 #include "core/controller/Controller.h"
 
 #include "core/common/Numeric.h"
+#include "core/gcode/DiagnosticCap.h"
 #include "core/interp/ModalInterpreter.h"
 #include "core/macro/Evaluator.h"
 #include "core/macro/MacroError.h"
@@ -267,15 +268,18 @@ std::vector<gcode::Diagnostic> Controller::checkWithoutRunning() {
     std::vector<gcode::Diagnostic> findings;
     macro::Evaluator evaluator(program_.expressions, *config_.dialect, store_, *this);
     ProgramCheck check(program_, config_, evaluator, store_.map(), findings);
+    gcode::DiagnosticCap cap; // a million lines of `#1=1/0` list the first and the last findings
     for (const gcode::ProgramUnit& unit : program_.units) {
         if (!check.checked(unit)) {
             continue;
         }
         for (std::uint32_t i = unit.begin; i < unit.end; ++i) {
+            cap.trimIfLarge(findings, program_);
             check.block(program_.blocks[i]);
         }
         check.callCycle(static_cast<std::uint32_t>(&unit - program_.units.data()));
     }
+    cap.finish(findings, program_, gcode::DiagnosticCap::Order::AsFiled);
     return findings;
 }
 

@@ -4,6 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdint>
+
 namespace m350::controller {
 
 namespace {
@@ -13,7 +16,48 @@ void withSource(nlohmann::json& j, const TraceSource& source) {
     j["line"] = source.line;
 }
 
+constexpr std::uint64_t kMostTailBytes = 16ull << 20;
+constexpr std::uint64_t kNoteBytes = 512; // room for the trace_truncated line
+
+std::size_t tailBudget(std::uint64_t limit) {
+    return static_cast<std::size_t>(std::min(limit / 4, kMostTailBytes));
+}
+
 } // namespace
+
+TraceWriter::TraceWriter(std::ostream& out, std::uint64_t limit)
+    : out_(out), limit_(limit),
+      kept_(static_cast<std::size_t>(limit - tailBudget(limit) - std::min(limit - tailBudget(limit), kNoteBytes)),
+            tailBudget(limit)) {}
+
+void TraceWriter::writeLine(std::string line) {
+    line += '\n';
+    if (kept_.takeIntoHead(line.size())) {
+        out_ << line;
+    } else {
+        const std::size_t size = line.size();
+        kept_.keepInTail(std::move(line), size);
+    }
+}
+
+void TraceWriter::finish() {
+    if (finished_) {
+        return;
+    }
+    finished_ = true;
+    if (kept_.omitted() > 0) {
+        nlohmann::json note{{"type", "trace_truncated"},
+                            {"omitted_lines", kept_.omitted()},
+                            {"omitted_bytes", kept_.omittedCost()},
+                            {"limit_bytes", limit_},
+                            {"note", "the trace reached its limit (--trace-limit): the first and the last lines "
+                                     "are kept"}};
+        out_ << note.dump() << '\n';
+    }
+    for (const auto& kept : kept_.tail()) {
+        out_ << kept.piece;
+    }
+}
 
 void TraceWriter::machineEvent(const machine::MachineEvent& e, const TraceSource& source) {
     using Type = machine::MachineEvent::Type;
@@ -57,25 +101,25 @@ void TraceWriter::machineEvent(const machine::MachineEvent& e, const TraceSource
         break;
     }
     withSource(j, source);
-    out_ << j.dump() << '\n';
+    writeLine(j.dump());
 }
 
 void TraceWriter::message(double time, std::string_view text, const TraceSource& source) {
     nlohmann::json j{{"t", time}, {"type", "message"}, {"text", std::string(text)}};
     withSource(j, source);
-    out_ << j.dump() << '\n';
+    writeLine(j.dump());
 }
 
 void TraceWriter::toolChange(double time, int from, int to, const TraceSource& source) {
     nlohmann::json j{{"t", time}, {"type", "toolchange"}, {"from", from}, {"to", to}};
     withSource(j, source);
-    out_ << j.dump() << '\n';
+    writeLine(j.dump());
 }
 
 void TraceWriter::lookAhead(double time, std::string_view code, const TraceSource& source) {
     nlohmann::json j{{"t", time}, {"type", "lookahead"}, {"code", std::string(code)}};
     withSource(j, source);
-    out_ << j.dump() << '\n';
+    writeLine(j.dump());
 }
 
 void TraceWriter::externalOutput(double time, std::string_view statement, std::string_view record,
@@ -93,7 +137,7 @@ void TraceWriter::externalOutput(double time, std::string_view statement, std::s
         j["bytes"] = bytes;
     }
     withSource(j, source);
-    out_ << j.dump() << '\n';
+    writeLine(j.dump());
 }
 
 void TraceWriter::modbus(double time, std::string_view operation, int slave, int address, int value,
@@ -101,31 +145,31 @@ void TraceWriter::modbus(double time, std::string_view operation, int slave, int
     nlohmann::json j{{"t", time},       {"type", "modbus"},    {"op", std::string(operation)},
                      {"slave", slave},  {"register", address}, {"value", value}};
     withSource(j, source);
-    out_ << j.dump() << '\n';
+    writeLine(j.dump());
 }
 
 void TraceWriter::runState(double time, std::string_view state) {
     nlohmann::json j{{"t", time}, {"type", std::string(state)}};
-    out_ << j.dump() << '\n';
+    writeLine(j.dump());
 }
 
 void TraceWriter::programStop(double time, std::string_view reason, const TraceSource& source) {
     nlohmann::json j{{"t", time}, {"type", "pause"}, {"reason", std::string(reason)}};
     withSource(j, source);
-    out_ << j.dump() << '\n';
+    writeLine(j.dump());
 }
 
 void TraceWriter::sensorWait(double time, std::string_view port, int level, const TraceSource& source) {
     nlohmann::json j{{"t", time}, {"type", "wait"}, {"port", std::string(port)}, {"level", level}};
     withSource(j, source);
-    out_ << j.dump() << '\n';
+    writeLine(j.dump());
 }
 
 void TraceWriter::alarm(double time, const Alarm& alarm) {
     nlohmann::json j{{"t", time},          {"type", "alarm"},      {"code", std::string(alarmKey(alarm.code))},
                      {"message", alarm.message}, {"file", alarm.file}, {"line", alarm.line},
                      {"column", alarm.column}};
-    out_ << j.dump() << '\n';
+    writeLine(j.dump());
 }
 
 } // namespace m350::controller

@@ -1,8 +1,10 @@
 #pragma once
 
 #include "core/common/Alarm.h"
+#include "core/common/HeadTail.h"
 #include "core/machine/MachineTypes.h"
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -17,9 +19,16 @@ struct TraceSource {
 
 // Writes one JSON object per line (JSON Lines) for each event, with its virtual time and the
 // source line that caused it: move, io, spindle, coolant, dwell, toolchange, message, alarm.
+// At most `limit` bytes are written: the lines go out as they come until the limit less the tail
+// budget (a quarter of the limit, at most 16 MiB) is reached; after that only the newest lines are
+// kept, and finish() writes a `trace_truncated` line (how many lines and bytes were left out) and
+// then those last lines.
 class TraceWriter {
 public:
-    explicit TraceWriter(std::ostream& out) : out_(out) {}
+    TraceWriter(std::ostream& out, std::uint64_t limit);
+    // Writes the kept last lines after the note about the left-out ones (once; nothing when the
+    // trace stayed under its limit).
+    void finish();
 
     void machineEvent(const machine::MachineEvent& event, const TraceSource& source);
     void message(double time, std::string_view text, const TraceSource& source);
@@ -40,7 +49,12 @@ public:
     void sensorWait(double time, std::string_view port, int level, const TraceSource& source);
 
 private:
+    void writeLine(std::string line);
+
     std::ostream& out_;
+    std::uint64_t limit_;
+    HeadTail<std::string> kept_;
+    bool finished_ = false;
 };
 
 } // namespace m350::controller

@@ -1,4 +1,5 @@
 #include "core/gcode/BlockParser.h"
+#include "core/common/EchoText.h"
 #include "core/common/Numeric.h"
 
 #include "core/gcode/Lexer.h"
@@ -72,18 +73,20 @@ void BlockParser::fail(const Token& at, std::string message) {
 }
 
 void BlockParser::fail(std::uint32_t column, std::string message) {
-    diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, fileName_, lineNumber_, column, std::move(message)});
+    diagnostics_.push_back(
+        {Severity::Error, DiagnosticKind::Syntax, fileName_, lineNumber_, column, clipEcho(std::move(message))});
     throw Failure{};
 }
 
 void BlockParser::lint(std::uint32_t column, std::string message) {
-    lastLint_ = message;
-    diagnostics_.push_back({Severity::Error, DiagnosticKind::Lint, fileName_, lineNumber_, column, std::move(message)});
+    lastLint_ = clipEcho(std::move(message));
+    diagnostics_.push_back({Severity::Error, DiagnosticKind::Lint, fileName_, lineNumber_, column, lastLint_});
 }
 
 // A finding that changes nothing: the line runs as written.
 void BlockParser::note(std::uint32_t column, std::string message) {
-    diagnostics_.push_back({Severity::Warning, DiagnosticKind::Lint, fileName_, lineNumber_, column, std::move(message)});
+    diagnostics_.push_back(
+        {Severity::Warning, DiagnosticKind::Lint, fileName_, lineNumber_, column, clipEcho(std::move(message))});
 }
 
 bool BlockParser::lastLineLabelled() const {

@@ -29,6 +29,7 @@ struct Diagnostic {
     std::uint32_t column = 0;
     std::string message;
     bool unreadable = false; // the file could not be read or decoded: a file error, not a syntax error
+    std::uint64_t omitted = 0; // > 0: this note stands for that many findings left out (DiagnosticCap)
 };
 
 // "file:line:col: message", the form compilers use, so editors can jump to it.

@@ -1,4 +1,5 @@
 #include "core/gcode/Parser.h"
+#include "core/common/EchoText.h"
 #include "core/common/Numeric.h"
 
 #include "core/gcode/BlockParser.h"
@@ -6,7 +7,7 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <tuple>
+#include <map>
 #include <utility>
 
 namespace m350::gcode {
@@ -52,6 +53,7 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
     std::string_view line;
     while (lines.next(line)) {
         ++lineNumber;
+        cap_.trimIfLarge(diagnostics_, program);
         const std::size_t diagnosticsBefore = diagnostics_.size();
         auto block = blockParser.parse(line, lineNumber);
         if (!block) {
@@ -151,7 +153,7 @@ void Parser::closeUnit(Program& program, std::uint32_t unitIndex) {
 void Parser::report(const Program& program, const Block& block, std::uint32_t column, DiagnosticKind kind,
                     std::string message) {
     diagnostics_.push_back({Severity::Error, kind, program.files[block.location.file].name, block.location.line,
-                            column, std::move(message)});
+                            column, clipEcho(std::move(message))});
 }
 
 // WHILE ... DOm and ENDm pair by nesting, as on FANUC: the innermost open DO must carry the same m.
@@ -163,17 +165,20 @@ void Parser::pairLoops(Program& program) {
         }
     }
     std::vector<std::uint32_t> open;
+    // The open loops of each number, innermost last: a DO reused inside itself is said once, naming
+    // the innermost open one (one finding per line however deep, so deep nesting stays linear).
+    std::map<std::int32_t, std::vector<std::uint32_t>> openById;
     for (std::uint32_t b : flowBlocks_) {
         Block& block = program.blocks[b];
         if (block.control == Control::While) {
-            for (std::uint32_t outer : open) {
-                if (program.blocks[outer].loopId == block.loopId) {
-                    report(program, block, block.controlColumn, DiagnosticKind::Flow,
-                           "DO" + std::to_string(block.loopId) + " is already open (line " +
-                               std::to_string(program.blocks[outer].location.line) +
-                               "): nested loops need different numbers");
-                }
+            std::vector<std::uint32_t>& sameNumber = openById[block.loopId];
+            if (!sameNumber.empty()) {
+                report(program, block, block.controlColumn, DiagnosticKind::Flow,
+                       "DO" + std::to_string(block.loopId) + " is already open (line " +
+                           std::to_string(program.blocks[sameNumber.back()].location.line) +
+                           "): nested loops need different numbers");
             }
+            sameNumber.push_back(b);
             open.push_back(b);
         } else if (block.control == Control::End) {
             if (open.empty()) {
@@ -192,6 +197,7 @@ void Parser::pairLoops(Program& program) {
             }
             opener.partner = static_cast<std::int32_t>(b);
             block.partner = static_cast<std::int32_t>(open.back());
+            openById[opener.loopId].pop_back();
             open.pop_back();
         }
     }
@@ -223,20 +229,7 @@ void Parser::checkGotos(const Program& program, const ProgramUnit& unit) {
 
 void Parser::finish(const Program& program) {
     checkCalls(program);
-    // Report in reading order: by file as parsed, then line and column.
-    std::stable_sort(diagnostics_.begin(), diagnostics_.end(), [&program](const Diagnostic& a, const Diagnostic& b) {
-        auto fileOrder = [&program](const std::string& name) {
-            for (std::size_t i = 0; i < program.files.size(); ++i) {
-                if (program.files[i].name == name) {
-                    return i;
-                }
-            }
-            return program.files.size();
-        };
-        auto ka = std::make_tuple(fileOrder(a.file), a.line, a.column);
-        auto kb = std::make_tuple(fileOrder(b.file), b.line, b.column);
-        return ka < kb;
-    });
+    cap_.finish(diagnostics_, program); // in reading order, bounded
 }
 
 void Parser::checkCalls(const Program& program) {

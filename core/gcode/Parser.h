@@ -2,6 +2,7 @@
 
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Diagnostic.h"
+#include "core/gcode/DiagnosticCap.h"
 #include "core/gcode/Program.h"
 
 #include <string>
@@ -20,7 +21,8 @@ public:
     void addFile(Program& program, const std::string& path, std::string_view utf8Text, FileRole role,
                  std::string encoding = "UTF-8");
 
-    // Checks that need every file: calls to O programs that exist nowhere.
+    // Checks that need every file: calls to O programs that exist nowhere. Then the diagnostics are
+    // put in reading order and bounded (DiagnosticCap).
     void finish(const Program& program);
 
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
@@ -43,6 +45,7 @@ private:
 
     const Dialect& dialect_;
     std::vector<Diagnostic> diagnostics_;
+    DiagnosticCap cap_;
     // The passes over a unit look only at the blocks that matter to them, not at every G1 line:
     std::vector<std::uint32_t> flowBlocks_; // of the open unit: control statements
     std::vector<std::pair<std::int32_t, std::uint32_t>> labelBlocks_; // of the open unit: (N label, block)

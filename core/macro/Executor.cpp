@@ -1,4 +1,5 @@
 #include "core/macro/Executor.h"
+#include "core/common/EchoText.h"
 #include "core/common/Numeric.h"
 
 #include <charconv>
@@ -94,7 +95,7 @@ void Executor::nameCaller(Alarm& alarm) const {
 void Executor::raise(AlarmCode code, std::string message) {
     Alarm alarm;
     alarm.code = code;
-    alarm.message = std::move(message);
+    alarm.message = clipEcho(std::move(message));
     if (hasCurrent_) {
         const gcode::Block& block = program_.blocks[current_];
         alarm.file = program_.fileName(block.location);
