@@ -1,9 +1,11 @@
 #include "core/config/AtomicFile.h"
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -55,18 +57,56 @@ std::optional<std::string> writeAll(int fd, const fs::path& temp, std::string_vi
 
 } // namespace
 
-fs::path atomicTempPath(const fs::path& path) {
-    return path.parent_path() / ("." + path.filename().string() + ".tmp");
+std::variant<TempFile, std::string> createTempBeside(const fs::path& target, unsigned mode) {
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    std::string pattern =
+        (folder / ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".XXXXXX")).string();
+    const int fd = ::mkostemp(pattern.data(), O_CLOEXEC);
+    if (fd < 0) {
+        return failure(target, "cannot create a file beside it");
+    }
+    ::fchmod(fd, static_cast<mode_t>(mode));
+    return TempFile{fd, pattern};
+}
+
+std::vector<fs::path> staleTempFiles(const fs::path& target) {
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    const std::string prefix = "." + target.filename().string() + ".";
+    std::vector<fs::path> stale;
+    std::error_code ec;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) {
+            continue;
+        }
+        const std::string rest = name.substr(prefix.size()); // PID.XXXXXX, or "tmp" (the one shared name of old)
+        const std::size_t dot = rest.find('.');
+        if (rest == "tmp") {
+            stale.push_back(it->path());
+            continue;
+        }
+        if (dot == 0 || dot == std::string::npos || rest.size() - dot != 7 ||
+            rest.find_first_not_of("0123456789") != dot) {
+            continue; // not a temp file of ours
+        }
+        const long pid = std::strtol(rest.c_str(), nullptr, 10);
+        const bool writerAlive = pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+        if (!writerAlive) {
+            stale.push_back(it->path());
+        }
+    }
+    return stale;
 }
 
 std::optional<std::string> writeFileAtomically(const fs::path& path, std::string_view content,
                                                const AtomicWriteHooks& hooks) {
-    fs::path temp = atomicTempPath(path);
     mode_t mode = 0644;
     struct stat existing {};
     if (::stat(path.c_str(), &existing) == 0) mode = existing.st_mode & 07777;
-    Descriptor file(::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, mode));
-    if (file.get() < 0) return failure(temp, "cannot create");
+    auto created = createTempBeside(path, mode);
+    if (auto* error = std::get_if<std::string>(&created)) return *error;
+    const fs::path temp = std::get<TempFile>(created).path;
+    Descriptor file(std::get<TempFile>(created).descriptor);
     if (auto error = writeAll(file.get(), temp, content, hooks)) {
         ::unlink(temp.c_str());
         return error;
@@ -81,6 +121,9 @@ std::optional<std::string> writeFileAtomically(const fs::path& path, std::string
         std::string error = failure(path, "cannot replace");
         ::unlink(temp.c_str());
         return error;
+    }
+    for (const fs::path& stale : staleTempFiles(path)) {
+        ::unlink(stale.c_str());
     }
     return syncFolder(path.parent_path().empty() ? fs::path(".") : path.parent_path());
 }

@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
+#include <vector>
 
 namespace m350::config {
 
@@ -15,17 +17,28 @@ struct AtomicWriteHooks {
 };
 
 // Replaces `path` with `content` so that a reader (or the next start after a crash) sees either
-// the old file or the new one, never a part: the bytes go to a temp file beside it, which is
-// synced, renamed over the target, and the folder is synced so the rename itself survives a
-// power cut. The target keeps its permissions. nullopt on success, else why (naming the file).
+// the old file or the new one, never a part: the bytes go to a temp file of this writer's own
+// beside it (two writers never share one), which is synced, renamed over the target, and the folder
+// is synced so the rename itself survives a power cut. The target keeps its permissions. Temp files
+// that killed writers left for the same target are removed afterwards. nullopt on success, else
+// why (naming the file).
 std::optional<std::string> writeFileAtomically(const std::filesystem::path& path, std::string_view content,
                                                const AtomicWriteHooks& hooks = {});
 
 // Syncs a folder, so that a rename or a new file in it survives a power cut. nullopt on success.
 std::optional<std::string> syncFolder(const std::filesystem::path& folder);
 
-// The temp file writeFileAtomically uses for `path` (left behind only by a process killed mid-write;
-// the next write replaces it).
-std::filesystem::path atomicTempPath(const std::filesystem::path& path);
+// A new, empty temp file beside `target` for one writer: `.NAME.PID.XXXXXX` (hidden, so no reader
+// of the folder takes it for a file of its own), created with `mode`. Its open descriptor and path,
+// or why not.
+struct TempFile {
+    int descriptor = -1;
+    std::filesystem::path path;
+};
+std::variant<TempFile, std::string> createTempBeside(const std::filesystem::path& target, unsigned mode);
+
+// The temp files beside `target` whose writer is gone (killed mid-write): the ones a later
+// successful write removes.
+std::vector<std::filesystem::path> staleTempFiles(const std::filesystem::path& target);
 
 } // namespace m350::config

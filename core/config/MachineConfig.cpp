@@ -4,6 +4,7 @@
 
 #include "core/config/FanucParameters.h"
 #include "core/config/HookFiles.h"
+#include "core/config/LastGoodCopy.h"
 #include "core/config/MagazineToml.h"
 #include "core/config/ParameterCatalogue.h"
 #include "core/config/ParameterLimits.h"
@@ -301,6 +302,11 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
     for (const tools::ToolTableIssue& issue : parsed.issues) {
         config.warnings.push_back(tools::formatIssue(issue));
     }
+    if (parsed.issues.empty()) {
+        refreshLastGood(file);
+    } else if (!lastGoodNote(file).empty()) {
+        config.warnings.push_back(file.string() + ": warning: the lines above were not read" + lastGoodNote(file));
+    }
     const std::vector<tools::ToolTable::Line>& lines = parsed.table.lines();
     for (std::size_t i = 0; config.dialect->id == gcode::DialectId::M350 && i < lines.size(); ++i) {
         const std::optional<tools::ToolEntry>& row = lines[i].entry;
@@ -346,13 +352,23 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         for (const tools::LifeFileIssue& issue : parsed.issues) {
             config.warnings.push_back(issue.text());
         }
+        const fs::path lifeFile = dir / tools::kToolLifeFile;
+        if (parsed.issues.empty()) {
+            refreshLastGood(lifeFile);
+        } else if (!lastGoodNote(lifeFile).empty()) {
+            config.warnings.push_back(lifeFile.string() + ": warning: the lines above were not read" +
+                                      lastGoodNote(lifeFile));
+        }
         config.toolLife = std::move(parsed.data);
         config.toolLifeIssues = std::move(parsed.issues);
         if (auto wrong = tools::readLoadMonitorSettings((dir / tools::kSpindleLoadFileName).string(), config.loadMonitor)) {
             return ConfigError{(dir / tools::kSpindleLoadFileName).string(), wrong->message, wrong->line, wrong->column};
         }
+        refreshLastGood(dir / "params.toml");
     } catch (const Failure& f) {
-        return f.error;
+        ConfigError error = f.error;
+        error.message += lastGoodNote(error.file);
+        return error;
     } catch (const fs::filesystem_error& e) {
         // a symlink loop, a dangling link, a folder that cannot be listed: an error, not an abort
         return ConfigError{e.path1().empty() ? folder : e.path1().string(), e.code().message()};

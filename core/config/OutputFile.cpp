@@ -37,16 +37,14 @@ std::variant<std::unique_ptr<OutputFile>, std::string> OutputFile::open(const fs
         }
         return direct;
     }
-    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    std::string pattern = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
-    const int fd = ::mkstemp(pattern.data());
-    if (fd < 0) {
-        return failure(target, "cannot create a file beside it", errno);
+    auto created = createTempBeside(target, exists ? existing.st_mode & 07777 : 0644);
+    if (auto* error = std::get_if<std::string>(&created)) {
+        return *error;
     }
-    ::fchmod(fd, exists ? existing.st_mode & 07777 : 0644);
-    ::close(fd);
-    std::unique_ptr<OutputFile> file(new OutputFile(target, pattern));
-    file->stream_.open(pattern, std::ios::binary | std::ios::trunc);
+    const TempFile temp = std::get<TempFile>(created);
+    ::close(temp.descriptor);
+    std::unique_ptr<OutputFile> file(new OutputFile(target, temp.path));
+    file->stream_.open(temp.path, std::ios::binary | std::ios::trunc);
     if (!file->stream_) {
         return failure(target, "cannot open", errno);
     }
@@ -85,6 +83,9 @@ std::optional<std::string> OutputFile::commit() {
         return failure(target_, "cannot replace", errno);
     }
     committed_ = true;
+    for (const fs::path& stale : staleTempFiles(target_)) {
+        ::unlink(stale.c_str());
+    }
     return syncFolder(target_.parent_path().empty() ? fs::path(".") : target_.parent_path());
 }
 

@@ -1,6 +1,6 @@
 #include "core/config/ParamsFileWriter.h"
 
-#include "core/config/AtomicFile.h"
+#include "core/config/LastGoodCopy.h"
 
 #include <charconv>
 #include <fstream>
@@ -130,7 +130,7 @@ std::optional<std::string> saveParameters(const fs::path& folder, const std::map
     }
     std::string updated = setTomlNumbers(text, "params", values, addMissing);
     if (!addMissing && updated == text) return std::nullopt;
-    return writeFileAtomically(file, updated);
+    return saveKeepingLastGood(file, updated);
 }
 
 } // namespace m350::config

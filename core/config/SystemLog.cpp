@@ -3,9 +3,14 @@
 #include "core/config/AtomicFile.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace m350::config {
 
@@ -25,8 +30,9 @@ SystemLog::SystemLog(std::string path, std::size_t keep) : path_(std::move(path)
 
 bool SystemLog::load(std::string* error, std::size_t* skipped) {
     entries_.clear();
+    tornTail_ = false;
     std::size_t bad = 0;
-    std::ifstream in(path_);
+    std::ifstream in(path_, std::ios::binary);
     if (!in) {
         std::error_code ec;
         if (!std::filesystem::exists(path_, ec)) {
@@ -37,6 +43,13 @@ bool SystemLog::load(std::string* error, std::size_t* skipped) {
     }
     std::string text;
     while (std::getline(in, text)) {
+        if (in.eof()) {
+            // no line end: an append cut short (the process was killed mid-write); the next append
+            // rewrites the log without it
+            tornTail_ = true;
+            ++bad;
+            break;
+        }
         std::istringstream fields(text);
         LogEntry e;
         if (!std::getline(fields, e.time, '\t') || !std::getline(fields, e.event, '\t') || e.time.empty() ||
@@ -62,21 +75,29 @@ bool SystemLog::append(LogEntry entry, std::string* error) {
     entry.event = clean(std::move(entry.event));
     entry.detail = clean(std::move(entry.detail));
     entries_.push_back(entry);
-    if (entries_.size() >= 2 * keep_) {
+    if (entries_.size() >= 2 * keep_ || tornTail_) {
         return compact(error);
     }
-    std::ofstream out(path_, std::ios::app);
-    out << line(entry);
-    out.flush();
-    if (!out) {
-        *error = path_ + ": cannot append to the system log";
+    // One write of the whole line to the file's end, synced: a kill leaves the line whole or cut
+    // short, and a cut line is dropped when the log is read.
+    const std::string text = line(entry);
+    const int fd = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+    bool written = fd >= 0 && ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) &&
+                   ::fsync(fd) == 0;
+    if (fd >= 0 && ::close(fd) != 0) {
+        written = false;
+    }
+    if (!written) {
+        *error = path_ + ": cannot append to the system log: " + std::strerror(errno);
         return false;
     }
     return true;
 }
 
 bool SystemLog::compact(std::string* error) {
-    entries_.erase(entries_.begin(), entries_.end() - static_cast<std::ptrdiff_t>(keep_));
+    if (entries_.size() > keep_) {
+        entries_.erase(entries_.begin(), entries_.end() - static_cast<std::ptrdiff_t>(keep_));
+    }
     std::string content;
     for (const LogEntry& e : entries_) {
         content += line(e);
@@ -85,6 +106,7 @@ bool SystemLog::compact(std::string* error) {
         *error = *why;
         return false;
     }
+    tornTail_ = false;
     return true;
 }
 

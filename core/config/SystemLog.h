@@ -15,8 +15,9 @@ struct LogEntry {
 };
 
 // The machine folder's system log (`system-log.tsv`, one tab-separated entry a line). Appending
-// adds one line; when the file holds twice `keep` entries it is rewritten atomically with the
-// newest `keep`, so it stays bounded and a crash never loses what was logged before.
+// adds one line (one synced write); when the file holds twice `keep` entries it is rewritten
+// atomically with the newest `keep`, so it stays bounded and a crash never loses what was logged
+// before. A last line without its line end (an append killed mid-write) is skipped when read.
 class SystemLog {
 public:
     explicit SystemLog(std::string path, std::size_t keep = 2000);
@@ -33,6 +34,7 @@ private:
     std::string path_;
     std::size_t keep_;
     std::vector<LogEntry> entries_;
+    bool tornTail_ = false; // the file ends in a line cut short: the next append rewrites it whole
 };
 
 } // namespace m350::config

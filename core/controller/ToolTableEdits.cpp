@@ -1,6 +1,7 @@
 // The tool table as the panel edits it: rows, an import, touch off, and saving to tool.tbl.
 #include "core/controller/Controller.h"
 
+#include "core/config/LastGoodCopy.h"
 #include "core/config/ParameterNumbers.h"
 #include "core/config/ParamsFileWriter.h"
 #include "core/tools/ToolTableFile.h"
@@ -99,7 +100,8 @@ std::optional<std::string> Controller::saveToolTable(const config::AtomicWriteHo
         return "this machine has no folder to keep its tool table in";
     }
     const std::filesystem::path folder(config_.folder);
-    if (auto error = tools::writeToolTableFile(folder / tools::kToolTableFileName, tools_.table(), hooks)) {
+    if (auto error = config::saveKeepingLastGood(folder / tools::kToolTableFileName, tools::formatToolTable(tools_.table()),
+                                                 hooks)) {
         return error;
     }
     if (config_.dialect->id == gcode::DialectId::M350) {

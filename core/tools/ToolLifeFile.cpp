@@ -1,5 +1,7 @@
 #include "core/tools/ToolLifeFile.h"
 
+#include "core/config/LastGoodCopy.h"
+
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -253,7 +255,7 @@ std::string formatToolLife(const LifeData& data) {
 
 std::optional<std::string> saveToolLife(const std::string& folder, const LifeData& data,
                                         const config::AtomicWriteHooks& hooks) {
-    return config::writeFileAtomically(std::filesystem::path(folder) / kToolLifeFile, formatToolLife(data), hooks);
+    return config::saveKeepingLastGood(std::filesystem::path(folder) / kToolLifeFile, formatToolLife(data), hooks);
 }
 
 } // namespace m350::tools

@@ -85,7 +85,7 @@ TEST(ParamsFileWriter, TheMachineFolderLoadsWhatWasSaved) {
     EXPECT_EQ(config.parameters.get(545), 22);
     EXPECT_EQ(config.parameters.get(89), 0.5);
     EXPECT_THAT(readText(folder / "params.toml"), StartsWith("# Parameters of a test machine\n[params]\n61 = 1234.5  #"));
-    EXPECT_FALSE(fs::exists(atomicTempPath(folder / "params.toml")));
+    EXPECT_TRUE(staleTempFiles(folder / "params.toml").empty());
 }
 
 TEST(ParamsFileWriter, AHandBrokenFileIsStillReportedWithItsLine) {
@@ -124,12 +124,15 @@ TEST(ParamsFileWriter, AWriteKilledAtAnyPointLeavesTheOldFileWhole) {
     std::string big = setTomlNumbers(kParams, "params", {{61, 1}}) + std::string(300 * 1024, '#') + "\n";
     killedWrite(file, big, true);
     EXPECT_EQ(readText(file), kParams) << "killed while the temp file was half written";
-    EXPECT_LT(fs::file_size(atomicTempPath(file)), big.size()) << "the half file is the temp, not the target";
+    const std::vector<fs::path> halfWritten = staleTempFiles(file);
+    ASSERT_EQ(halfWritten.size(), 1u) << "the killed writer's own temp file";
+    EXPECT_LT(fs::file_size(halfWritten[0]), big.size()) << "the half file is the temp, not the target";
     killedWrite(file, big, false);
     EXPECT_EQ(readText(file), kParams) << "killed after the temp was synced, before the rename";
-    ASSERT_EQ(writeFileAtomically(file, big), std::nullopt) << "the next write replaces the stale temp";
+    EXPECT_EQ(staleTempFiles(file).size(), 2u) << "each writer had a temp file of its own";
+    ASSERT_EQ(writeFileAtomically(file, big), std::nullopt) << "the next write removes the stale temps";
     EXPECT_EQ(readText(file), big);
-    EXPECT_FALSE(fs::exists(atomicTempPath(file)));
+    EXPECT_TRUE(staleTempFiles(file).empty());
 }
 
 TEST(ParamsFileWriter, AFailedWriteSaysWhichFile) {

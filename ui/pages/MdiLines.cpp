@@ -1,8 +1,9 @@
 #include "ui/pages/MdiLines.h"
 
+#include "core/config/AtomicFile.h"
+
 #include <QDir>
 #include <QFile>
-#include <QSaveFile>
 #include <QStringDecoder>
 
 namespace m350::ui {
@@ -55,9 +56,10 @@ bool MdiLines::save(const QString& folder, const QStringList& lines, QString* er
         }
         bytes.replace(i * kRecordBytes, line.size(), line);
     }
-    QSaveFile file(path(folder));
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        *error = QStringLiteral("%1: cannot write: %2").arg(file.fileName(), file.errorString());
+    // as every machine folder file: a temp file, fsync, rename, fsync of the folder
+    const std::string_view content(bytes.constData(), static_cast<std::size_t>(bytes.size()));
+    if (auto problem = config::writeFileAtomically(path(folder).toStdString(), content)) {
+        *error = QString::fromStdString(*problem);
         return false;
     }
     return true;

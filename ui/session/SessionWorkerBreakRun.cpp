@@ -3,12 +3,12 @@
 // path on one line, the line number on the next, written atomically).
 #include "ui/session/SessionWorker.h"
 
+#include "core/config/AtomicFile.h"
 #include "core/controller/Controller.h"
 
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
-#include <QSaveFile>
 
 namespace m350::ui {
 
@@ -96,10 +96,9 @@ void SessionWorker::keepBreakPoint() {
     if (!point) {
         return;
     }
-    QSaveFile file(breakPointPath(folder_));
-    QByteArray text = QString::fromStdString(point->file).toUtf8() + '\n' + QByteArray::number(point->line) + '\n';
-    if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size() || !file.commit()) {
-        lastError_ = tr("%1: cannot write: %2").arg(file.fileName(), file.errorString());
+    const std::string text = point->file + '\n' + std::to_string(point->line) + '\n';
+    if (auto problem = config::writeFileAtomically(breakPointPath(folder_).toStdString(), text)) {
+        lastError_ = QString::fromStdString(*problem);
         return;
     }
     keptBreak_ = std::make_pair(QString::fromStdString(point->file), static_cast<int>(point->line));
