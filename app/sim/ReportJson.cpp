@@ -72,7 +72,9 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
     j["pockets"] = pockets;
     j["outputs"] = report.outputs;
     j["messages"] = report.messages;
-    j["messages_omitted"] = report.messagesOmitted;
+    if (report.messagesOmitted > 0) { // only then: the contract's keys stay as they were
+        j["messages_omitted"] = report.messagesOmitted;
+    }
     j["sim_time_s"] = report.simTime;
     j["diagnostics"] = diagnosticsJson(report.diagnostics);
     return j;
@@ -90,7 +92,6 @@ nlohmann::json errorJson(const std::string& code, const std::string& message, co
             {"pockets", nlohmann::json::object()},
             {"outputs", std::vector<int>(machine::kOutputCount, 0)},
             {"messages", nlohmann::json::array()},
-            {"messages_omitted", 0},
             {"sim_time_s", 0.0},
             {"diagnostics", nlohmann::json::array()}};
 }

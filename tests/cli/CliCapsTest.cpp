@@ -56,7 +56,7 @@ TEST_F(CliTest, ATraceLimitMustBeAPositiveSize) {
     EXPECT_EQ(sim({"run", "p.nc", "--trace", "t", "--trace-limit", "lots"}).exitStatus, kExitUsage);
     ProcessResult fine = sim({"run", "p.nc", "--trace", "t", "--trace-limit", "1M"});
     EXPECT_EQ(fine.exitStatus, kExitOk) << fine.err;
-    EXPECT_EQ(output(fine).value("messages_omitted", -1), 0);
+    EXPECT_FALSE(output(fine).contains("messages_omitted")) << "the key appears only when messages were left out";
 }
 
 TEST_F(CliTest, DeeplyNestedLoopsAreCheckedQuicklyAndTheListIsCapped) {

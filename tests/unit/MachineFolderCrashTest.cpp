@@ -3,6 +3,7 @@
 // killed with SIGKILL at a random moment, 200 times: the folder always loads, each file as one
 // whole state, the old or the new, never a mix or a loss; the temp files killed writers leave are
 // ignored by the loader and removed by the next save.
+#include "FileText.h"
 #include "RunProgram.h"
 
 #include "core/config/AtomicFile.h"
@@ -29,14 +30,8 @@ namespace fs = std::filesystem;
 
 constexpr int kFirstParam = 61; // params 61-64 are saved together: they must always agree
 
-std::string readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void writeText(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
+using test::readText;
+using test::writeText;
 
 fs::path scratchFolder(const std::string& name) {
     // tmpfs when there is one: the kills test the order of writes, not the disk's speed

@@ -1,5 +1,7 @@
 // params.toml written by the panel: values change in place, everything else stays, and a write
 // interrupted at any point leaves the old file whole.
+#include "FileText.h"
+
 #include "core/config/AtomicFile.h"
 #include "core/config/MachineConfig.h"
 #include "core/config/ParamsFileWriter.h"
@@ -24,14 +26,8 @@ using testing::HasSubstr;
 using testing::EndsWith;
 using testing::StartsWith;
 
-std::string readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void writeText(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
+using m350::test::readText;
+using m350::test::writeText;
 
 fs::path freshFolder(const std::string& name) {
     fs::path folder = fs::path(testing::TempDir()) / name;

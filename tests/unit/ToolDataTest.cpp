@@ -1,6 +1,7 @@
 // The M350's tool Z offsets (params 930-945, virtual tools 973-992) and the tool table's Z column
 // are one store; the table lives in the machine folder's tool.tbl, survives a reload with its
 // comments, and a write killed at any point leaves the old file whole.
+#include "FileText.h"
 #include "RunProgram.h"
 
 #include "core/config/AtomicFile.h"
@@ -22,15 +23,6 @@ using namespace m350;
 using namespace m350::test;
 using testing::HasSubstr;
 namespace fs = std::filesystem;
-
-std::string readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void writeText(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
 constexpr const char* kToolTable = "; the router's tools\n"
                                    "T1 P1 Z-50 ;roughing {rpm=18000 teeth=3 type=flat}\n"
