@@ -401,8 +401,8 @@ int Controller::spindleTool() const {
     }
     // what the spindle really holds; a virtual tool (above the magazine) was put in by hand,
     // which the magazine does not see
-    bool virtualTool = believed > magazine->pocketCount() && magazine->spindleTool() == 0;
-    return virtualTool ? believed : magazine->spindleTool();
+    const int held = magazine->spindleTool();
+    return held == 0 && believed > magazine->pocketCount() ? believed : held;
 }
 
 void Controller::fill(RunReport& out) const {

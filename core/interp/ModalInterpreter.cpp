@@ -148,7 +148,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
     block_ = block.source;
     for (const WordValue& w : block.words) {
         if (w.letter == 'G') {
-            words.g.push_back(w);
+            words.addG(w);
             continue;
         }
         if (w.letter == 'M') {

@@ -12,6 +12,7 @@
 #include "core/tools/ToolData.h"
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <cmath>
 #include <optional>
@@ -95,17 +96,33 @@ private:
         std::uint32_t present = 0;
         std::vector<macro::WordValue> g;
         std::vector<macro::WordValue> m;
+        // Bit c: a G word within 1e-6 of the whole code c (0-127), so hasG() of a whole code is one
+        // test; moveAxes asks about a dozen codes for every block.
+        std::array<std::uint64_t, 2> gCodes{};
 
         void clear() {
             present = 0;
             g.clear();
             m.clear();
+            gCodes = {};
+        }
+        void addG(const macro::WordValue& w) {
+            g.push_back(w);
+            if (w.value > -0.5 && w.value < 127.5) {
+                const auto code = static_cast<unsigned>(w.value + 0.5); // the nearest whole code
+                if (std::abs(w.value - code) < 1e-6) {
+                    gCodes[code >> 6] |= std::uint64_t{1} << (code & 63u);
+                }
+            }
         }
         static std::uint32_t bit(char c) { return 1u << static_cast<unsigned>(c - 'A'); }
         bool has(char c) const { return (present & bit(c)) != 0; }
         const macro::WordValue& operator[](char c) const { return letter[static_cast<std::size_t>(c - 'A')]; }
         const macro::WordValue* find(char c) const { return has(c) ? &(*this)[c] : nullptr; }
-        bool hasG(double code) const {
+        bool hasG(int code) const {
+            if (code >= 0 && code < 128) {
+                return (gCodes[static_cast<unsigned>(code) >> 6] >> (static_cast<unsigned>(code) & 63u) & 1u) != 0;
+            }
             for (const macro::WordValue& w : g) {
                 if (std::abs(w.value - code) < 1e-6) {
                     return true;

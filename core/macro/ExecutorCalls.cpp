@@ -85,17 +85,18 @@ bool Executor::mayCall(const EvaluatedBlock& block) const {
             }
             break;
         case 'G':
-        case 'M':
+        case 'M': {
             if (!wholeNumber(w.value)) {
                 break;
             }
-            if ((w.letter == 'G' && isCode(w, 'G', 65)) ||
-                (w.letter == 'M' && (isCode(w, 'M', 98) || isCode(w, 'M', 99))) ||
-                options_.codePrograms.count({w.letter, roundToInt(w.value)}) != 0 ||
-                handlerFor(w.letter, roundToInt(w.value))) {
+            const auto code = static_cast<int>(std::round(w.value)); // 0-65535: rounded once per word
+            if ((w.letter == 'G' && code == 65) || (w.letter == 'M' && (code == 98 || code == 99)) ||
+                (!options_.codePrograms.empty() && options_.codePrograms.count({w.letter, code}) != 0) ||
+                handlerFor(w.letter, code)) {
                 return true;
             }
             break;
+        }
         default: break;
         }
     }
