@@ -35,6 +35,7 @@
 
 namespace m350::gcode {
 class Parser;
+struct SourceText;
 }
 
 namespace m350::controller {
@@ -318,7 +319,7 @@ public:
     void feedMagazine(const machine::MachineEvent& event);
 
 private:
-    bool load(const std::string& path, std::string_view text, gcode::FileRole role, const std::string& encoding);
+    bool load(const gcode::SourceText& source, gcode::FileRole role);
     void applyParameterOverrides(); // --param, before anything reads the parameters
     void applySettings();
     void configureMachine();
@@ -342,8 +343,7 @@ private:
     // The machine folder's params.toml, which native homing alarms name (their cause is a parameter).
     std::string parametersFile() const;
     void raiseAlarm(const Alarm& alarm);
-    void parseWithLibraries(gcode::Program& program, const std::string& path, std::string_view text,
-                            gcode::FileRole role, const std::string& encoding,
+    void parseWithLibraries(gcode::Program& program, const gcode::SourceText& source, gcode::FileRole role,
                             std::vector<gcode::Diagnostic>& diagnostics) const;
     static bool addSourceFile(gcode::Parser& parser, gcode::Program& program, const std::string& path,
                               gcode::FileRole role, std::vector<gcode::Diagnostic>& diagnostics);

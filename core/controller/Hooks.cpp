@@ -108,8 +108,7 @@ std::optional<Alarm> Controller::runEventHook(config::Hook hook) {
     const auto& text = std::get<gcode::SourceText>(source);
     gcode::Program program;
     std::vector<gcode::Diagnostic> diagnostics;
-    parseWithLibraries(program, text.path, text.text, gcode::FileRole::Main,
-                       std::string(gcode::encodingName(text.encoding)), diagnostics);
+    parseWithLibraries(program, text, gcode::FileRole::Main, diagnostics);
     if (gcode::hasBlockingError(diagnostics)) {
         for (const gcode::Diagnostic& d : diagnostics) {
             if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {

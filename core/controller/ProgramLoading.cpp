@@ -7,8 +7,7 @@
 
 namespace m350::controller {
 
-bool Controller::load(const std::string& path, std::string_view text, gcode::FileRole role,
-                      const std::string& encoding) {
+bool Controller::load(const gcode::SourceText& source, gcode::FileRole role) {
     // Each load replaces the program (a panel loads one file after another, MDI line after line);
     // the machine, the variables and the magazine carry on.
     executor_.reset();
@@ -17,7 +16,7 @@ bool Controller::load(const std::string& path, std::string_view text, gcode::Fil
     loadWatch_.monitor().restart();
     program_ = gcode::Program{};
     diagnostics_.clear();
-    parseWithLibraries(program_, path, text, role, encoding, diagnostics_);
+    parseWithLibraries(program_, source, role, diagnostics_);
     if (gcode::hasBlockingError(diagnostics_)) {
         return false;
     }
@@ -35,12 +34,11 @@ bool Controller::load(const std::string& path, std::string_view text, gcode::Fil
 
 // The file, then the hook programs that programs call (ALL_T.nc for M101), then the machine's
 // libraries: what a run of that file needs.
-void Controller::parseWithLibraries(gcode::Program& program, const std::string& path, std::string_view text,
-                                    gcode::FileRole role, const std::string& encoding,
+void Controller::parseWithLibraries(gcode::Program& program, const gcode::SourceText& source, gcode::FileRole role,
                                     std::vector<gcode::Diagnostic>& diagnostics) const {
     gcode::Parser parser(*config_.dialect);
-    parser.addFile(program, path, text, role, encoding);
-    addCalledHooks(parser, program, path, diagnostics);
+    parser.addSource(program, source, role);
+    addCalledHooks(parser, program, source.path, diagnostics);
     for (const config::LibraryFile& library : config_.libraries) {
         addSourceFile(parser, program, library.path, library.role, diagnostics);
     }
@@ -55,8 +53,7 @@ bool Controller::addSourceFile(gcode::Parser& parser, gcode::Program& program, c
         diagnostics.push_back(gcode::diagnosticOf(*error));
         return false;
     }
-    const auto& file = std::get<gcode::SourceText>(source);
-    parser.addFile(program, file.path, file.text, role, std::string(gcode::encodingName(file.encoding)));
+    parser.addSource(program, std::get<gcode::SourceText>(source), role);
     return true;
 }
 
@@ -74,8 +71,7 @@ bool Controller::loadFile(const std::string& path) {
         diagnostics_.push_back(gcode::diagnosticOf(*error));
         return false;
     }
-    const auto& text = std::get<gcode::SourceText>(source);
-    return load(text.path, text.text, gcode::FileRole::Main, std::string(gcode::encodingName(text.encoding)));
+    return load(std::get<gcode::SourceText>(source), gcode::FileRole::Main);
 }
 
 bool Controller::loadMdi(const std::vector<std::string>& lines) {
@@ -85,7 +81,7 @@ bool Controller::loadMdi(const std::vector<std::string>& lines) {
         text += '\n';
     }
     mdi_ = true;
-    return load("MDI", text, gcode::FileRole::Mdi, "UTF-8");
+    return load(gcode::SourceText{"MDI", text, gcode::TextEncoding::Utf8, nullptr, nullptr}, gcode::FileRole::Mdi);
 }
 
 } // namespace m350::controller

@@ -51,6 +51,29 @@ public:
         return {at, count};
     }
 
+    // Where the arena stands, to give back everything allocated after it (the parser drops the
+    // words of a chunk of plain lines it will re-parse when they run).
+    struct Mark {
+        std::size_t chunks = 0;
+        std::size_t used = 0;
+    };
+    Mark mark() const { return {chunks_.size(), used_}; }
+    void rewind(Mark mark) noexcept {
+        while (chunks_.size() > mark.chunks) {
+            freeLarge(chunks_.back().memory, chunks_.back().bytes);
+            chunks_.pop_back();
+        }
+        if (chunks_.empty()) {
+            current_ = nullptr;
+            capacity_ = 0;
+            used_ = 0;
+            return;
+        }
+        current_ = static_cast<T*>(chunks_.back().memory);
+        capacity_ = chunks_.back().bytes / sizeof(T);
+        used_ = mark.used;
+    }
+
     std::span<const T> copy(std::span<const T> items) {
         std::span<T> room = allocate(items.size());
         std::copy(items.begin(), items.end(), room.begin());
@@ -99,6 +122,8 @@ public:
         std::span<const char> kept = chars_.copy(std::span<const char>(text.data(), text.size()));
         return {kept.data(), kept.size()};
     }
+    Arena<char>::Mark mark() const { return chars_.mark(); }
+    void rewind(Arena<char>::Mark mark) noexcept { chars_.rewind(mark); }
 
 private:
     Arena<char> chars_;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <string_view>
@@ -8,8 +9,10 @@ namespace m350::gcode {
 
 // Splits program text into lines at LF, CRLF and a lone CR (old Mac files and some panel exports
 // end lines with CR alone). A text with n line ends has n + 1 lines, the last one possibly empty,
-// so line numbers agree with an editor's. Each line end is searched for once (memchr), so a file
-// of CR-only lines costs no more than one of LF lines.
+// so line numbers agree with an editor's. Each byte is searched for each line end once (memchr),
+// so a file of CR-only lines costs no more than one of LF lines; and the search never runs more
+// than a window past the line it ends, so the pages of a large mapped program that the parser
+// has not reached stay untouched.
 class LineSplitter {
 public:
     explicit LineSplitter(std::string_view text) : text_(text) {}
@@ -19,15 +22,22 @@ public:
         if (done_) {
             return false;
         }
-        const std::size_t lf = find('\n', lf_);
-        const std::size_t cr = find('\r', cr_);
-        const std::size_t end = lf < cr ? lf : cr;
+        std::size_t window = start_;
+        std::size_t lf = kNone;
+        std::size_t cr = kNone;
+        do {
+            window = text_.size() - window > kWindow ? window + kWindow : text_.size();
+            lf = first('\n', lf_, window);
+            cr = first('\r', cr_, lf == kNone ? window : std::max(lf + 1, window));
+        } while (lf == kNone && cr == kNone && window < text_.size());
+        const std::size_t end = std::min({lf, cr, text_.size()});
         line = text_.substr(start_, end - start_);
         if (end == text_.size()) {
             done_ = true;
             return true;
         }
-        start_ = end + 1 + (end == cr && cr + 1 == lf && lf < text_.size() ? 1 : 0); // CRLF: one line end
+        const bool crlf = end == cr && end + 1 < text_.size() && text_[end + 1] == '\n';
+        start_ = end + (crlf ? 2 : 1);
         return true;
     }
 
@@ -35,25 +45,38 @@ public:
     std::size_t lineStart(std::string_view line) const { return static_cast<std::size_t>(line.data() - text_.data()); }
 
 private:
-    // The first `c` at or after the current line's start; `cached` keeps the last answer while it is
-    // still ahead.
-    std::size_t find(char c, std::size_t& cached) {
-        if (cached >= start_ && cached != kUnknown) {
-            return cached;
+    static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+    static constexpr std::size_t kWindow = std::size_t{64} << 10;
+
+    // What is known of one line end ahead: none in [line start, searched) but at `found`.
+    struct Search {
+        std::size_t found = kNone;
+        std::size_t searched = 0;
+    };
+
+    // The first `c` in [start_, limit), or kNone.
+    std::size_t first(char c, Search& s, std::size_t limit) {
+        if (s.found != kNone && s.found >= start_) {
+            return s.found < limit ? s.found : kNone;
         }
-        if (start_ >= text_.size()) {
-            return cached = text_.size();
+        const std::size_t from = std::max(s.searched, start_);
+        if (from >= limit) {
+            return kNone;
         }
-        const void* found = std::memchr(text_.data() + start_, c, text_.size() - start_);
-        cached = found ? static_cast<std::size_t>(static_cast<const char*>(found) - text_.data()) : text_.size();
-        return cached;
+        const void* at = std::memchr(text_.data() + from, c, limit - from);
+        if (at == nullptr) {
+            s.searched = limit;
+            return kNone;
+        }
+        s.found = static_cast<std::size_t>(static_cast<const char*>(at) - text_.data());
+        s.searched = s.found + 1;
+        return s.found;
     }
 
-    static constexpr std::size_t kUnknown = static_cast<std::size_t>(-1);
     std::string_view text_;
     std::size_t start_ = 0;
-    std::size_t lf_ = kUnknown;
-    std::size_t cr_ = kUnknown;
+    Search lf_;
+    Search cr_;
     bool done_ = false;
 };
 

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <mutex>
@@ -74,7 +75,8 @@ std::shared_ptr<const MappedFile> MappedFile::map(const std::string& path) {
     std::shared_ptr<const MappedFile> mapped;
     if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
         const auto size = static_cast<std::size_t>(info.st_size);
-        void* address = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+        const int populate = size <= kPopulateBytes ? MAP_POPULATE : 0;
+        void* address = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | populate, fd, 0);
         if (address != MAP_FAILED) {
             mapped = std::make_shared<const MappedFile>(address, size);
             if (mapped->slot_ < 0) {
@@ -113,6 +115,16 @@ bool MappedFile::truncated() const {
     return slot_ >= 0 && regions[slot_].truncated.load();
 }
 
+void MappedFile::release(std::size_t from, std::size_t to) const {
+    const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    const auto base = reinterpret_cast<std::uintptr_t>(address_);
+    const std::uintptr_t begin = (base + from + page - 1) / page * page;
+    const std::uintptr_t end = (base + std::min(to, size_)) / page * page;
+    if (end > begin) {
+        ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
+    }
+}
+
 } // namespace m350::gcode
 
 #else
@@ -123,6 +135,7 @@ std::shared_ptr<const MappedFile> MappedFile::map(const std::string&) { return n
 MappedFile::MappedFile(void* address, std::size_t size) : address_(address), size_(size) {}
 MappedFile::~MappedFile() = default;
 bool MappedFile::truncated() const { return false; }
+void MappedFile::release(std::size_t, std::size_t) const {}
 
 } // namespace m350::gcode
 

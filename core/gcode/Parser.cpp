@@ -3,11 +3,13 @@
 #include "core/common/Numeric.h"
 
 #include "core/gcode/BlockParser.h"
+#include "core/gcode/ChunkDropper.h"
 #include "core/gcode/LineSplitter.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <utility>
 
 namespace m350::gcode {
@@ -34,8 +36,6 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
     auto fileIndex = static_cast<std::uint32_t>(program.files.size());
     std::string name = std::filesystem::path(path).filename().string();
     program.files.push_back({path, name.empty() ? path : name, role, std::move(encoding)});
-    BlockParser blockParser(dialect_, program, diagnostics_, program.files.back().name, fileIndex);
-
     if (program.blocks.empty()) {
         // Size for the program (the first and largest file) plus headroom for the macro libraries,
         // so adding a library never copies a 200,000-block program.
@@ -44,6 +44,41 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
             lines = std::max(lines, static_cast<std::size_t>(std::count(text.begin(), text.end(), '\r')));
         }
         program.blocks.reserve(lines + 1 + 4096);
+    }
+    parseFile(program, text, fileIndex, nullptr);
+}
+
+void Parser::addSource(Program& program, const SourceText& source, FileRole role) {
+    const std::string encoding(encodingName(source.encoding));
+    const bool keptInPart = role == FileRole::Main && source.mapping && source.encoding == TextEncoding::Utf8 &&
+                            program.blocks.empty() && source.text.size() > dropAbove_;
+    if (!keptInPart) {
+        if (source.text.size() > kMostSourceBytes) {
+            diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, source.path, 0, 0,
+                                    "cannot read file: it is " + std::to_string(source.text.size() >> 20) +
+                                        " MiB; only the program to run may be above " +
+                                        std::to_string(kMostSourceBytes >> 20) + " MiB"});
+            diagnostics_.back().unreadable = true;
+            return;
+        }
+        addFile(program, source.path, source.text, role, encoding);
+        return;
+    }
+    auto fileIndex = static_cast<std::uint32_t>(program.files.size());
+    std::string name = std::filesystem::path(source.path).filename().string();
+    program.files.push_back({source.path, name.empty() ? source.path : name, role, encoding});
+    parseFile(program, source.text, fileIndex,
+              std::make_shared<ChunkSource>(dialect_, program.files.back().name, fileIndex, source.text,
+                                            source.mapping));
+}
+
+void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fileIndex,
+                       std::shared_ptr<ChunkSource> chunks) {
+    const FileRole role = program.files[fileIndex].role;
+    BlockParser blockParser(dialect_, program, diagnostics_, program.files[fileIndex].name, fileIndex);
+    std::optional<ChunkDropper> dropper;
+    if (chunks) {
+        dropper.emplace(program, std::move(chunks));
     }
     const bool checksCalls = role == FileRole::Main || role == FileRole::Mdi;
     bool unitOpen = false;
@@ -55,11 +90,18 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
         ++lineNumber;
         cap_.trimIfLarge(diagnostics_, program);
         const std::size_t diagnosticsBefore = diagnostics_.size();
+        if (dropper) {
+            dropper->beforeLine(lines.lineStart(line), lines.lineStart(line) + line.size(), lineNumber,
+                                blockParser.commentOpen());
+        }
         auto block = blockParser.parse(line, lineNumber);
         if (!block) {
             if (diagnostics_.size() > diagnosticsBefore && unreachable.afterLine != 0 &&
                 !blockParser.lastLineLabelled()) {
                 demoteUnreachable(diagnosticsBefore, unreachable);
+            }
+            if (dropper) {
+                dropper->afterLine(nullptr, diagnostics_.size() > diagnosticsBefore);
             }
             continue;
         }
@@ -89,6 +131,12 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
             callBlocks_.push_back(index);
         }
         program.blocks.push_back(*block);
+        if (dropper) {
+            dropper->afterLine(&*block, diagnostics_.size() > diagnosticsBefore);
+        }
+    }
+    if (dropper) {
+        dropper->finish(text.size());
     }
     if (unitOpen) {
         closeUnit(program, static_cast<std::uint32_t>(program.units.size() - 1));
@@ -169,7 +217,7 @@ void Parser::pairLoops(Program& program) {
     // the innermost open one (one finding per line however deep, so deep nesting stays linear).
     std::map<std::int32_t, std::vector<std::uint32_t>> openById;
     for (std::uint32_t b : flowBlocks_) {
-        Block& block = program.blocks[b];
+        Block& block = program.blocks.mutableAt(b);
         if (block.control == Control::While) {
             std::vector<std::uint32_t>& sameNumber = openById[block.loopId];
             if (!sameNumber.empty()) {
@@ -186,7 +234,7 @@ void Parser::pairLoops(Program& program) {
                        "END" + std::to_string(block.loopId) + " without WHILE ... DO" + std::to_string(block.loopId));
                 continue;
             }
-            Block& opener = program.blocks[open.back()];
+            Block& opener = program.blocks.mutableAt(open.back());
             if (opener.loopId != block.loopId) {
                 report(program, block, block.controlColumn, DiagnosticKind::Flow,
                        "END" + std::to_string(block.loopId) + " closes the loop " + loopOpening(opener) +

@@ -4,6 +4,9 @@
 #include "core/gcode/Diagnostic.h"
 #include "core/gcode/DiagnosticCap.h"
 #include "core/gcode/Program.h"
+#include "core/gcode/SourceText.h"
+
+#include <memory>
 
 #include <string>
 #include <string_view>
@@ -14,12 +17,22 @@ namespace m350::gcode {
 // Builds a Program from any number of files (the program to run plus the machine's macro
 // libraries). Every file is parsed whole; errors are collected, never thrown, so `check` can list
 // them all.
+class ChunkSource;
+
 class Parser {
 public:
     explicit Parser(const Dialect& dialect) : dialect_(dialect) {}
 
     void addFile(Program& program, const std::string& path, std::string_view utf8Text, FileRole role,
                  std::string encoding = "UTF-8");
+
+    // A file as readSourceFile gave it. A main program of more than dropChunksAbove() bytes that
+    // lies in its mapped file is kept only in part: each chunk of plain lines is dropped once
+    // parsed and parsed again when it runs (BlockList), so a 1 GB program fits in memory. Other
+    // files above kMostSourceBytes are refused with a diagnostic.
+    void addSource(Program& program, const SourceText& source, FileRole role);
+    static constexpr std::size_t kDropChunksAbove = std::size_t{64} << 20;
+    void setDropChunksAbove(std::size_t bytes) { dropAbove_ = bytes; }
 
     // Checks that need every file: calls to O programs that exist nowhere. Then the diagnostics are
     // put in reading order and bounded (DiagnosticCap).
@@ -28,6 +41,9 @@ public:
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
 private:
+    void parseFile(Program& program, std::string_view text, std::uint32_t fileIndex,
+                   std::shared_ptr<ChunkSource> chunks);
+
     // Where the lines that no block reaches begin: after an M30, M2, M99 or GOTO, up to the next
     // N or O number or END.
     struct Unreachable {
@@ -44,6 +60,7 @@ private:
                 std::string message);
 
     const Dialect& dialect_;
+    std::size_t dropAbove_ = kDropChunksAbove;
     std::vector<Diagnostic> diagnostics_;
     DiagnosticCap cap_;
     // The passes over a unit look only at the blocks that matter to them, not at every G1 line:

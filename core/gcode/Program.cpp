@@ -1,6 +1,7 @@
 #include "core/gcode/Program.h"
 
 #include <algorithm>
+#include <string>
 
 namespace m350::gcode {
 
@@ -58,6 +59,16 @@ std::optional<std::uint32_t> Program::mainUnit() const {
 
 std::optional<std::uint32_t> Program::findLabel(std::uint32_t unit, std::int32_t label, std::uint32_t from) const {
     return units[unit].labels.find(label, from);
+}
+
+std::string Program::suspectMessage(std::uint32_t block) const {
+    if (blocks.changedOnDisk(block)) {
+        return files[blocks[block].location.file].name + " changed on disk while its program ran (line " +
+               std::to_string(blocks[block].location.line) +
+               " no longer reads as it did when it was loaded): run it again from the start";
+    }
+    auto found = suspects.find(block);
+    return found != suspects.end() ? found->second : "suspect line";
 }
 
 std::uint32_t Program::unitOfBlock(std::uint32_t block) const {

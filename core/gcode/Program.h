@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/common/LargeAllocation.h"
 #include "core/gcode/Block.h"
+#include "core/gcode/BlockList.h"
 #include "core/gcode/BlockStorage.h"
 #include "core/gcode/LabelIndex.h"
 
@@ -40,7 +40,7 @@ struct ProgramUnit {
 class Program : public BlockStorage {
 public:
     std::vector<SourceFile> files;
-    std::vector<Block, LargeAllocator<Block>> blocks;
+    BlockList blocks;
     std::vector<ProgramUnit> units;
 
     // The unit an O number names. The main and MDI files win over libraries, so a user can try a
@@ -60,6 +60,8 @@ public:
     // Lint findings by block: valid lines that are never what the author meant. Running such a
     // line raises an alarm instead of moving the machine somewhere wrong.
     std::unordered_map<std::uint32_t, std::string> suspects;
+    // Why a block with `suspect` set stops the program.
+    std::string suspectMessage(std::uint32_t block) const;
 
     const std::string& fileName(const SourceLocation& location) const { return files[location.file].name; }
 

@@ -149,17 +149,55 @@ std::string_view encodingName(TextEncoding encoding) {
 
 namespace {
 
+// The offset of the first bad UTF-8 byte. A mapped file is checked a window at a time, and the
+// pages of each window are let go once checked: a 1 GB program must not stay in memory for this.
+std::optional<std::size_t> firstInvalidUtf8(std::string_view body, const MappedFile* mapping) {
+    if (mapping == nullptr) {
+        return firstInvalidUtf8(body);
+    }
+    constexpr std::size_t kWindow = std::size_t{16} << 20;
+    const std::size_t bodyOffset = static_cast<std::size_t>(body.data() - mapping->bytes().data());
+    std::size_t at = 0;
+    while (at < body.size()) {
+        std::size_t end = std::min(body.size(), at + kWindow);
+        // a window ends before a lead byte, never inside a sequence
+        while (end < body.size() && end > at && (static_cast<unsigned char>(body[end]) & 0xC0) == 0x80) {
+            --end;
+        }
+        if (end == at) {
+            end = std::min(body.size(), at + kWindow);
+        }
+        if (auto bad = firstInvalidUtf8(body.substr(at, end - at))) {
+            return at + *bad;
+        }
+        mapping->release(bodyOffset + at, bodyOffset + end);
+        at = end;
+    }
+    return std::nullopt;
+}
+
 // Decodes `bytes`, which `owner` keeps alive: valid UTF-8 becomes the text as it lies.
 std::variant<SourceText, SourceReadError> decodeOwned(std::string path, std::string_view bytes,
-                                                      std::shared_ptr<const void> owner) {
+                                                      std::shared_ptr<const void> owner,
+                                                      std::shared_ptr<const MappedFile> mapping = nullptr) {
     if (looksUtf16(bytes)) { // its NUL bytes would pass as UTF-8
         return SourceReadError{std::move(path), "file is UTF-16: save it as UTF-8 or GBK", 1, 1};
     }
     const std::size_t bomSize = bytes.starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0;
     const std::string_view body = bytes.substr(bomSize);
-    const auto utf8Bad = firstInvalidUtf8(body);
+    const auto utf8Bad = firstInvalidUtf8(body, mapping.get());
     if (!utf8Bad) {
-        return SourceText{std::move(path), body, TextEncoding::Utf8, std::move(owner)};
+        return SourceText{std::move(path), body, TextEncoding::Utf8, std::move(owner), std::move(mapping)};
+    }
+    if (bytes.size() > kMostSourceBytes) {
+        const auto [line, column] = lineAndColumn(bytes, bomSize + *utf8Bad);
+        return SourceReadError{std::move(path),
+                               "cannot read file: it is " + std::to_string(bytes.size() / (1024 * 1024)) +
+                                   " MiB and not UTF-8 (first non-UTF-8 byte at line " + std::to_string(line) +
+                                   ", column " + std::to_string(column) + "); a program above " +
+                                   std::to_string(kMostSourceBytes / (1024 * 1024)) +
+                                   " MiB must be UTF-8 (GBK files are decoded into memory whole)",
+                               line, column};
     }
 
     const Iconv cd("UTF-8", "GB18030");
@@ -171,7 +209,7 @@ std::variant<SourceText, SourceReadError> decodeOwned(std::string path, std::str
     if (auto* text = std::get_if<std::string>(&gbk)) {
         auto decoded = std::make_shared<const std::string>(std::move(*text));
         std::string_view view = *decoded;
-        return SourceText{std::move(path), view, TextEncoding::Gbk, std::move(decoded)};
+        return SourceText{std::move(path), view, TextEncoding::Gbk, std::move(decoded), nullptr};
     }
 
     // The encoding that got further is most likely the intended one, so its
@@ -216,14 +254,14 @@ std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path
                                                                                              : "not a regular file") +
                                          ", not a program file"};
     }
-    if (static_cast<std::uintmax_t>(info.st_size) > kMostSourceBytes) {
+    if (static_cast<std::uintmax_t>(info.st_size) > kMostProgramBytes) {
         return SourceReadError{path, "cannot read file: it is " + std::to_string(info.st_size / (1024 * 1024)) +
-                                         " MiB; program files above " + std::to_string(kMostSourceBytes / (1024 * 1024)) +
-                                         " MiB are refused (they would not fit in memory once parsed)"};
+                                         " MiB; program files above " +
+                                         std::to_string(kMostProgramBytes / (1024 * 1024)) + " MiB are refused"};
     }
     if (auto mapped = MappedFile::map(path)) {
         std::string_view bytes = mapped->bytes();
-        auto decoded = decodeOwned(path, bytes, mapped);
+        auto decoded = decodeOwned(path, bytes, mapped, mapped);
         if (mapped->truncated()) {
             return SourceReadError{path, "cannot read file: it was cut short while it was read (another program "
                                          "truncated or rewrote it); run again when it is complete"};

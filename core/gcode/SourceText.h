@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/gcode/Diagnostic.h"
+#include "core/gcode/MappedFile.h"
 
 #include <cstdint>
 #include <memory>
@@ -23,6 +24,9 @@ struct SourceText {
     // neither copied nor zero-filled first: a 200,000-line program is several megabytes), or the
     // text decoded from GBK.
     std::shared_ptr<const void> storage;
+    // The mapped file when `text` lies in it (UTF-8): the parser may then let go of pages it has
+    // read and re-read them later.
+    std::shared_ptr<const MappedFile> mapping;
 };
 
 struct SourceReadError {
@@ -35,11 +39,16 @@ struct SourceReadError {
 // The error as a diagnostic: placed at the bad byte (or 0:0), marked unreadable.
 Diagnostic diagnosticOf(const SourceReadError& error);
 
-// The largest program or library file read: parsed programs take many times their size.
+// The largest file read whole into memory (a library, a GBK file, a file that cannot be mapped):
+// parsed, such files take many times their size.
 inline constexpr std::uintmax_t kMostSourceBytes = std::uintmax_t{256} * 1024 * 1024;
+// The largest UTF-8 program file: it stays mapped, and the parser keeps only what jumps, loops and
+// calls need (see BlockList), so its size is bounded by block numbers, not by memory.
+inline constexpr std::uintmax_t kMostProgramBytes = std::uintmax_t{4} * 1024 * 1024 * 1024 - 1;
 
 // Maps the file (reads it where mapping is not possible) and decodes it as decodeSource does.
-// Folders, FIFOs, devices and files above kMostSourceBytes are refused with a message.
+// Folders, FIFOs, devices, files above kMostProgramBytes and files above kMostSourceBytes that
+// are not mapped UTF-8 are refused with a message.
 std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path);
 
 // Strips a UTF-8 BOM, accepts strictly valid UTF-8 (pure ASCII included) as

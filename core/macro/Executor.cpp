@@ -148,9 +148,7 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
         return;
     }
     if (block.suspect) {
-        auto found = program_.suspects.find(static_cast<std::uint32_t>(&block - program_.blocks.data()));
-        throw MacroError{AlarmCode::SuspectLine, found != program_.suspects.end() ? found->second : "suspect line",
-                         0};
+        throw MacroError{AlarmCode::SuspectLine, program_.suspectMessage(current_), 0};
     }
     switch (block.control) {
     case Control::None: executeOrdinary(block, frameIndex); return;

@@ -166,9 +166,28 @@ TEST(SourceText, ReadRefusesFifosDevicesAndHugeFiles) {
     {
         std::ofstream out(huge, std::ios::binary);
     }
-    std::filesystem::resize_file(huge, kMostSourceBytes + 1); // sparse: no disk used
-    EXPECT_NE(expectError(readSourceFile(huge)).find("program files above 256 MiB are refused"), std::string::npos);
+    std::filesystem::resize_file(huge, kMostProgramBytes + 1); // sparse: no disk used
+    EXPECT_NE(expectError(readSourceFile(huge)).find("program files above 4095 MiB are refused"), std::string::npos);
     std::remove(huge.c_str());
+}
+
+// A program above 256 MiB is parsed a chunk at a time from the mapped file, which only UTF-8
+// allows: a large GBK file would be decoded into memory whole, so it is refused, naming the byte.
+TEST(SourceText, AProgramAbove256MiBMustBeUtf8) {
+    const std::string big = tempPath("_big_gbk.nc");
+    {
+        std::ofstream out(big, std::ios::binary);
+        out << std::string(300, 'G') << "\n(\xB5\xB6)\n"; // GBK for 刀
+    }
+    std::filesystem::resize_file(big, kMostSourceBytes + 1); // the rest NUL bytes, sparse
+    const auto source = readSourceFile(big);
+    ASSERT_TRUE(std::holds_alternative<SourceReadError>(source));
+    const SourceReadError& error = std::get<SourceReadError>(source);
+    EXPECT_EQ(error.line, 2u);
+    EXPECT_EQ(error.column, 2u);
+    EXPECT_NE(error.message.find("256 MiB and not UTF-8"), std::string::npos) << error.message;
+    EXPECT_NE(error.message.find("must be UTF-8"), std::string::npos) << error.message;
+    std::remove(big.c_str());
 }
 
 // Issue 13: encoding errors were placed at 0:0 and a UTF-16 file was "neither UTF-8 nor GBK".
