@@ -37,6 +37,7 @@ bool Controller::load(const gcode::SourceText& source, gcode::FileRole role) {
 void Controller::parseWithLibraries(gcode::Program& program, const gcode::SourceText& source, gcode::FileRole role,
                                     std::vector<gcode::Diagnostic>& diagnostics) const {
     gcode::Parser parser(*config_.dialect);
+    parser.setDropChunksAbove(static_cast<std::size_t>(settings_.programKeptWholeUpTo));
     parser.addSource(program, source, role);
     addCalledHooks(parser, program, source.path, diagnostics);
     for (const config::LibraryFile& library : config_.libraries) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/gcode/SourceText.h"
 #include "core/machine/InputFault.h"
 #include "core/machine/ToolWorld.h"
 #include "core/tools/SpindleLoadLimits.h"
@@ -41,6 +42,9 @@ struct RunSettings {
     // lines; see TraceWriter and ExternalDevices): an endless loop must not fill the disk or memory.
     std::uint64_t traceLimit = 256ull << 20;
     std::uint64_t externalOutputLimit = 64ull << 20;
+    // A program file larger than this (mapped UTF-8) is kept in memory only in part: its chunks of
+    // plain lines are parsed again when they run (gcode::BlockList), so a 1 GB program fits.
+    std::uint64_t programKeptWholeUpTo = gcode::kProgramKeptWholeUpTo;
     // Told every machine event as it happens (the panel's simulation draws the path from them).
     machine::MachineObserver* observer = nullptr;
 };

@@ -16,8 +16,9 @@ bool isPlainBlock(const Block& block) {
 }
 
 ChunkSource::ChunkSource(const Dialect& dialect, std::string fileName, std::uint32_t fileIndex,
-                         std::string_view text, std::shared_ptr<const MappedFile> mapping)
-    : dialect_(dialect), fileName_(std::move(fileName)), fileIndex_(fileIndex), text_(text),
+                         std::string_view text, std::shared_ptr<const void> owner,
+                         std::shared_ptr<const MappedFile> mapping)
+    : dialect_(dialect), fileName_(std::move(fileName)), fileIndex_(fileIndex), text_(text), owner_(std::move(owner)),
       mapping_(std::move(mapping)) {}
 
 void ChunkSource::release(std::size_t from, std::size_t to) const {

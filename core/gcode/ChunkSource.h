@@ -30,8 +30,9 @@ public:
         std::uint32_t lastLine = 0; // the line of the chunk's last block
     };
 
+    // `owner` keeps `text` alive; `mapping`, when the text lies in a mapped file, lets pages go.
     ChunkSource(const Dialect& dialect, std::string fileName, std::uint32_t fileIndex, std::string_view text,
-                std::shared_ptr<const MappedFile> mapping);
+                std::shared_ptr<const void> owner, std::shared_ptr<const MappedFile> mapping);
 
     void addChunk(Start start) { starts_.push_back(start); }
     // Lets go of the memory of the file's pages in [from, to) of the text, read and not needed now.
@@ -44,7 +45,8 @@ private:
     std::string fileName_;
     std::uint32_t fileIndex_;
     std::string_view text_;
-    std::shared_ptr<const MappedFile> mapping_; // keeps text_ alive
+    std::shared_ptr<const void> owner_;
+    std::shared_ptr<const MappedFile> mapping_;
     std::vector<Start> starts_; // by chunk number
 };
 

@@ -50,7 +50,7 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
 
 void Parser::addSource(Program& program, const SourceText& source, FileRole role) {
     const std::string encoding(encodingName(source.encoding));
-    const bool keptInPart = role == FileRole::Main && source.mapping && source.encoding == TextEncoding::Utf8 &&
+    const bool keptInPart = role == FileRole::Main && source.storage && source.encoding == TextEncoding::Utf8 &&
                             program.blocks.empty() && source.text.size() > dropAbove_;
     if (!keptInPart) {
         if (source.text.size() > kMostSourceBytes) {
@@ -69,7 +69,7 @@ void Parser::addSource(Program& program, const SourceText& source, FileRole role
     program.files.push_back({source.path, name.empty() ? source.path : name, role, encoding});
     parseFile(program, source.text, fileIndex,
               std::make_shared<ChunkSource>(dialect_, program.files.back().name, fileIndex, source.text,
-                                            source.mapping));
+                                            source.storage, source.mapping));
 }
 
 void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fileIndex,

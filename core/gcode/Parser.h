@@ -26,12 +26,11 @@ public:
     void addFile(Program& program, const std::string& path, std::string_view utf8Text, FileRole role,
                  std::string encoding = "UTF-8");
 
-    // A file as readSourceFile gave it. A main program of more than dropChunksAbove() bytes that
-    // lies in its mapped file is kept only in part: each chunk of plain lines is dropped once
+    // A file as readSourceFile gave it. A UTF-8 main program of more than setDropChunksAbove's
+    // bytes is kept only in part: each chunk of plain lines is dropped once
     // parsed and parsed again when it runs (BlockList), so a 1 GB program fits in memory. Other
     // files above kMostSourceBytes are refused with a diagnostic.
     void addSource(Program& program, const SourceText& source, FileRole role);
-    static constexpr std::size_t kDropChunksAbove = std::size_t{64} << 20;
     void setDropChunksAbove(std::size_t bytes) { dropAbove_ = bytes; }
 
     // Checks that need every file: calls to O programs that exist nowhere. Then the diagnostics are
@@ -60,7 +59,7 @@ private:
                 std::string message);
 
     const Dialect& dialect_;
-    std::size_t dropAbove_ = kDropChunksAbove;
+    std::size_t dropAbove_ = kProgramKeptWholeUpTo;
     std::vector<Diagnostic> diagnostics_;
     DiagnosticCap cap_;
     // The passes over a unit look only at the blocks that matter to them, not at every G1 line:

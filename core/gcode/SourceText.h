@@ -45,6 +45,8 @@ inline constexpr std::uintmax_t kMostSourceBytes = std::uintmax_t{256} * 1024 * 
 // The largest UTF-8 program file: it stays mapped, and the parser keeps only what jumps, loops and
 // calls need (see BlockList), so its size is bounded by block numbers, not by memory.
 inline constexpr std::uintmax_t kMostProgramBytes = std::uintmax_t{4} * 1024 * 1024 * 1024 - 1;
+// Above this a mapped UTF-8 program is kept in memory only in part (Parser::addSource).
+inline constexpr std::uintmax_t kProgramKeptWholeUpTo = std::uintmax_t{64} * 1024 * 1024;
 
 // Maps the file (reads it where mapping is not possible) and decodes it as decodeSource does.
 // Folders, FIFOs, devices, files above kMostProgramBytes and files above kMostSourceBytes that

@@ -162,7 +162,7 @@ void Parse(benchmark::State& state, Workload workload, gcode::DialectId id) {
             state.SkipWithError(("parse error: " + parser.diagnostics().front().message).c_str());
             break;
         }
-        benchmark::DoNotOptimize(program.blocks.data());
+        benchmark::DoNotOptimize(program.blocks.size());
         benchmark::ClobberMemory();
     }
     setCounters(state, workload, text.size());

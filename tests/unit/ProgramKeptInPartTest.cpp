@@ -1,0 +1,203 @@
+// Issue 13: a 1 GB program must run in bounded memory. Above a size, the main program's chunks of
+// plain lines are dropped once parsed and parsed again from the mapped file when they run. These
+// tests lower that size to a few bytes, so small programs take the same path, and compare every
+// block and every run with the program kept whole.
+#include "RunProgram.h"
+
+#include "core/gcode/BlockList.h"
+#include "core/gcode/Dialect.h"
+#include "core/gcode/Parser.h"
+#include "core/gcode/Program.h"
+#include "core/gcode/SourceText.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace m350 {
+namespace {
+
+using gcode::Block;
+using gcode::BlockList;
+using gcode::Program;
+
+constexpr std::uint32_t kChunk = BlockList::kChunkSize;
+
+std::string g1(int i) {
+    return "G1 X" + std::to_string(i % 97) + "." + std::to_string(i % 10) + " Y-" + std::to_string(i % 89) +
+           " F" + std::to_string(500 + i % 7);
+}
+
+// Every kind of line a dropped chunk must read again as it was, around the chunk boundaries:
+// comments, blank lines, labels, block delete, CR and CRLF line ends, a `/* */` comment across a
+// boundary, and lines that must stay (a loop, assignments, a call).
+std::string mixedProgram() {
+    std::string text;
+    int line = 0;
+    auto add = [&](const std::string& s, const char* end = "\n") {
+        text += s;
+        text += end;
+        ++line;
+    };
+    add("#1 = 0");
+    for (int i = 0; i < 3 * static_cast<int>(kChunk) + 100; ++i) {
+        if (i % 1000 == 7) {
+            add("");
+        } else if (i % 997 == 3) {
+            add("N" + std::to_string(10 + i) + " " + g1(i) + " (labelled)");
+        } else if (i % 501 == 5) {
+            add("/" + g1(i));
+        } else if (i >= 5000 && i < 5200) {
+            add(g1(i), "\r"); // an old Mac export pasted in
+        } else if (i >= 5200 && i < 5300) {
+            add(g1(i), "\r\n");
+        } else if (i == 2 * static_cast<int>(kChunk) - 2) {
+            add(g1(i) + " /* a comment that runs");
+            add("G0 X999 over a chunk boundary");
+            add("*/ G1 X5");
+        } else {
+            add(g1(i));
+        }
+    }
+    add("WHILE [#1 LT 2] DO1");
+    add("#1 = #1 + 1");
+    add("END1");
+    for (int i = 0; i < static_cast<int>(kChunk) + 10; ++i) {
+        add(g1(i) + " (after the loop)");
+    }
+    add("M98 P2000");
+    add("M30");
+    add("O2000");
+    add("G1 X1 Y1");
+    add("M99");
+    return text;
+}
+
+std::string writeFile(const std::string& text) { return test::writeTempFile(text); }
+
+Program parseWhole(const std::string& text) {
+    Program program;
+    gcode::Parser parser(gcode::Dialect::m350());
+    parser.addFile(program, "p.nc", text, gcode::FileRole::Main);
+    parser.finish(program);
+    EXPECT_TRUE(parser.diagnostics().empty()) << gcode::formatDiagnostic(parser.diagnostics().front());
+    return program;
+}
+
+Program parseInPart(const std::string& path) {
+    Program program;
+    auto source = gcode::readSourceFile(path);
+    EXPECT_TRUE(std::holds_alternative<gcode::SourceText>(source));
+    gcode::Parser parser(gcode::Dialect::m350());
+    parser.setDropChunksAbove(0);
+    parser.addSource(program, std::get<gcode::SourceText>(source), gcode::FileRole::Main);
+    parser.finish(program);
+    EXPECT_TRUE(parser.diagnostics().empty()) << gcode::formatDiagnostic(parser.diagnostics().front());
+    return program;
+}
+
+void expectSameBlock(const Block& a, const Block& b, std::size_t index) {
+    SCOPED_TRACE("block " + std::to_string(index) + " at line " + std::to_string(a.location.line));
+    EXPECT_EQ(a.location.line, b.location.line);
+    EXPECT_EQ(a.location.column, b.location.column);
+    EXPECT_EQ(a.label, b.label);
+    EXPECT_EQ(a.blockDelete, b.blockDelete);
+    EXPECT_EQ(a.control, b.control);
+    EXPECT_EQ(a.partner, b.partner);
+    EXPECT_EQ(a.comment, b.comment);
+    ASSERT_EQ(a.words.size(), b.words.size());
+    for (std::size_t w = 0; w < a.words.size(); ++w) {
+        EXPECT_EQ(a.words[w].letter, b.words[w].letter);
+        EXPECT_EQ(a.words[w].number, b.words[w].number);
+        EXPECT_EQ(a.words[w].column, b.words[w].column);
+    }
+}
+
+TEST(ProgramKeptInPart, DroppedChunksReadAgainAsTheyWereParsed) {
+    const std::string text = mixedProgram();
+    const std::string path = writeFile(text);
+    const Program whole = parseWhole(text);
+    const Program inPart = parseInPart(path);
+    ASSERT_EQ(whole.blocks.size(), inPart.blocks.size());
+    const std::size_t chunks = (inPart.blocks.size() + kChunk - 1) / kChunk;
+    // Chunk 0 holds `#1 = 0` and chunk 1 ends inside the comment, so chunk 2 starts in it; the
+    // chunk of the loop and the last one (shared with nothing else here) stay too.
+    EXPECT_GE(inPart.blocks.droppedChunks(), 1u);
+    EXPECT_LE(inPart.blocks.droppedChunks(), chunks - 3);
+    for (std::size_t i = 0; i < whole.blocks.size(); ++i) {
+        expectSameBlock(whole.blocks[i], inPart.blocks[i], i);
+    }
+    // Backwards, a chunk at a time: every look-up past the cache's few chunks parses one again.
+    for (std::size_t i = whole.blocks.size(); i-- > 0;) {
+        const Block& kept = inPart.blocks[i];
+        ASSERT_EQ(kept.location.line, whole.blocks[i].location.line) << i;
+    }
+    EXPECT_EQ(inPart.units.size(), whole.units.size());
+    std::remove(path.c_str());
+}
+
+TEST(ProgramKeptInPart, ASmallProgramIsKeptWholeUnlessAsked) {
+    const std::string path = writeFile(mixedProgram());
+    Program program;
+    auto source = gcode::readSourceFile(path);
+    gcode::Parser parser(gcode::Dialect::m350());
+    parser.addSource(program, std::get<gcode::SourceText>(source), gcode::FileRole::Main);
+    EXPECT_EQ(program.blocks.droppedChunks(), 0u);
+    std::remove(path.c_str());
+}
+
+// A loop and a subprogram jump back and forth over dropped chunks: each pass parses them again.
+std::string loopingProgram() {
+    std::string text = "#1 = 0\nN100\n";
+    for (int i = 0; i < 6 * static_cast<int>(kChunk); ++i) { // more chunks than the cache holds
+        text += g1(i) + "\n";
+    }
+    text += "#1 = #1 + 1\nM98 P2000\nIF [#1 LT 3] GOTO100\nM30\nO2000\n";
+    for (int i = 0; i < 2 * static_cast<int>(kChunk); ++i) {
+        text += "G1 Z-" + std::to_string(i % 13) + " Y" + std::to_string(i % 17) + "\n";
+    }
+    text += "#101 = #101 + 1\nM99\n";
+    return text;
+}
+
+TEST(ProgramKeptInPart, ARunIsTheSameAsWithTheProgramKeptWhole) {
+    controller::RunSettings whole;
+    whole.maxSimTime = 1e9;
+    controller::RunSettings inPart = whole;
+    inPart.programKeptWholeUpTo = 0;
+    auto a = test::runProgram(test::m350Machine(), loopingProgram(), whole);
+    auto b = test::runProgram(test::m350Machine(), loopingProgram(), inPart);
+    EXPECT_RUN_OK(a);
+    EXPECT_RUN_OK(b);
+    EXPECT_EQ(a.report.blocks, b.report.blocks);
+    EXPECT_EQ(a.report.simTime, b.report.simTime);
+    EXPECT_EQ(a.report.machine, b.report.machine);
+    EXPECT_EQ(b.number(1), 3.0);
+    EXPECT_EQ(b.number(101), 3.0);
+}
+
+TEST(ProgramKeptInPart, AFileChangedWhileItRunsStopsTheRunAndSaysSo) {
+    controller::RunSettings settings;
+    settings.programKeptWholeUpTo = 0;
+    const std::string path = test::writeTempFile(loopingProgram());
+    controller::Controller controller(test::m350Machine(), settings);
+    ASSERT_TRUE(controller.loadFile(path));
+    {
+        // An editor saves another program over it (the file is mapped: the run sees the new text).
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        out << "\n\n" << loopingProgram();
+    }
+    const controller::RunReport report = controller.run();
+    ASSERT_TRUE(report.alarm);
+    EXPECT_EQ(report.alarm->code, AlarmCode::SuspectLine);
+    EXPECT_NE(report.alarm->message.find("changed on disk while its program ran"), std::string::npos)
+        << report.alarm->message;
+    std::remove(path.c_str());
+}
+
+} // namespace
+} // namespace m350
