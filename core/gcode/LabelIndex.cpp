@@ -6,8 +6,13 @@
 namespace m350::gcode {
 
 void LabelIndex::build(std::vector<std::pair<std::int32_t, std::uint32_t>> entries) {
-    // already in block order: a stable sort by label keeps each label's blocks in file order
-    std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.first < b.first; });
+    // already in block order: a stable sort by label keeps each label's blocks in file order. CAM
+    // output numbers its lines in order, and a stable sort's buffer would be as large again as a
+    // 1 GB program's labels: sort only what is not sorted yet.
+    const auto byLabel = [](const Entry& a, const Entry& b) { return a.first < b.first; };
+    if (!std::is_sorted(entries.begin(), entries.end(), byLabel)) {
+        std::stable_sort(entries.begin(), entries.end(), byLabel);
+    }
     entries.shrink_to_fit();
     entries_ = std::move(entries);
 }
