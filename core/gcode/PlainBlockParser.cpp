@@ -14,6 +14,14 @@ bool isLetter(char c) {
 bool isSpace(char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
+bool isDigit(char c) {
+    return static_cast<unsigned>(c - '0') < 10u;
+}
+// What may follow a number: a space, a letter other than E (`P1E3` is an error the full parser
+// explains), a comment or a '/' (of `//`).
+bool endsNumber(char c) {
+    return isSpace(c) || (isLetter(c) && (c | 0x20) != 'e') || c == '(' || c == ';' || c == '/';
+}
 
 struct PlainWord {
     char letter;
@@ -32,6 +40,7 @@ PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, Sourc
     const std::size_t size = line.size();
     std::size_t i = 0;
     bool first = true;
+    bool programEnd = false;
     std::int32_t label = -1;
     std::uint32_t firstColumn = 0;
     std::string_view comment;
@@ -45,14 +54,21 @@ PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, Sourc
     bool ascii = true;
     while (true) {
         skipSpaces();
-        if (i >= size || text[i] == ';' ||
-            (text[i] == '/' && i + 1 < size && text[i + 1] == '/' && dialect.slashSlashComments)) {
+        if (i >= size) {
             break;
         }
         if (firstColumn == 0) {
             firstColumn = static_cast<std::uint32_t>(i + 1);
         }
-        if (text[i] == '(') {
+        char letter = text[i];
+        // Most of what a line holds is a word: its letter is tested first.
+        if (!isLetter(letter)) {
+            if (letter == ';' || (letter == '/' && i + 1 < size && text[i + 1] == '/' && dialect.slashSlashComments)) {
+                break;
+            }
+            if (letter != '(') {
+                return PlainResult::Declined;
+            }
             std::size_t close = line.find(')', i);
             if (close == std::string_view::npos || !ascii) {
                 return PlainResult::Declined;
@@ -67,59 +83,63 @@ PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, Sourc
             first = false;
             continue;
         }
-        char letter = text[i];
-        if (!isLetter(letter) || !ascii) {
+        if (!ascii) {
             return PlainResult::Declined;
         }
         letter = static_cast<char>(letter & ~0x20); // upper case
-        auto letterColumn = static_cast<std::uint32_t>(i + 1);
+        const auto letterColumn = static_cast<std::uint32_t>(i + 1);
         ++i;
         skipSpaces();
         if (letter == 'O' || i >= size) {
             return PlainResult::Declined;
         }
-        char sign = text[i];
-        if (sign == '-' || sign == '+') {
+        const char sign = text[i];
+        const bool negative = sign == '-';
+        if (negative || sign == '+') {
             if (letter == 'N' && first) {
                 return PlainResult::Declined;
             }
             ++i;
-        } else {
-            sign = 0;
         }
-        bool digitFirst = i < size && text[i] >= '0' && text[i] <= '9';
-        bool pointFirst = i + 1 < size && text[i] == '.' && text[i + 1] >= '0' && text[i + 1] <= '9';
-        if (!digitFirst && !pointFirst) {
+        const bool digitFirst = i < size && isDigit(text[i]);
+        if (!digitFirst && !(i + 1 < size && text[i] == '.' && isDigit(text[i + 1]))) {
             return PlainResult::Declined;
         }
         double value = 0.0;
         if (!scanDecimal(text, size, i, value)) {
             return PlainResult::Declined;
         }
-        if (i < size && ((!isSpace(text[i]) && !isLetter(text[i]) && text[i] != '(' && text[i] != ';' &&
-                          text[i] != '/') ||
-                         (text[i] | 0x20) == 'e')) {
+        if (i < size && !endsNumber(text[i])) {
             return PlainResult::Declined; // `P1E3` is an error the full parser explains
         }
-        if (letter == 'N' && first && sign == 0) {
-            if (value != static_cast<double>(static_cast<std::int64_t>(value)) || value > kMaxLabel) {
+        if (letter == 'N') {
+            const bool unsignedLabel = first && sign != '-' && sign != '+';
+            if (!unsignedLabel || value != static_cast<double>(static_cast<std::int64_t>(value)) ||
+                value > kMaxLabel) {
                 return PlainResult::Declined;
             }
             label = static_cast<std::int32_t>(value);
             first = false;
             continue;
         }
-        if (letter == 'N' || count == kMaxWords) {
+        if (count == kMaxWords) {
             return PlainResult::Declined;
         }
         first = false;
-        found[count++] = {letter, letterColumn, sign == '-' ? -value : value};
+        if (negative) {
+            value = -value;
+        }
+        if (letter == 'M' && (value == 30 || value == 2)) {
+            programEnd = true;
+        }
+        found[count++] = {letter, letterColumn, value};
     }
     if (count == 0 && label < 0) {
         return PlainResult::Empty;
     }
     out.location = {location.file, location.line, firstColumn};
     out.label = label;
+    out.programEnd = programEnd;
     if (!comment.empty()) {
         out.comment = storage.text.store(comment);
     }
@@ -129,9 +149,6 @@ PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, Sourc
         w.number = found[k].value;
         w.column = wordColumn(found[k].letterColumn);
         w.letter = found[k].letter;
-        if (w.letter == 'M' && (w.number == 30 || w.number == 2)) {
-            out.programEnd = true;
-        }
     }
     out.words = room;
     return PlainResult::Parsed;

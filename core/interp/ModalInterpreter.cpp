@@ -133,6 +133,9 @@ macro::BlockSink::CycleContext ModalInterpreter::cycleContext() const {
 }
 
 std::optional<ModalInterpreter::OperatorStop> ModalInterpreter::takeStop() {
+    if (!stop_) {
+        return std::nullopt; // asked after every block: most leave none
+    }
     std::optional<OperatorStop> out;
     out.swap(stop_);
     return out;

@@ -38,7 +38,7 @@ void check(const std::optional<std::string>& problem, std::uint32_t column) {
 }
 
 // One block inside G10 L3 .. G11.
-void entryBlock(ToolLifeManager& manager, const std::vector<WordValue>& words) {
+[[gnu::noinline]] void entryBlock(ToolLifeManager& manager, const std::vector<WordValue>& words) {
     std::uint32_t column = words.empty() ? 0 : words.front().column;
     if (std::any_of(words.begin(), words.end(), [](const WordValue& w) { return isCode(w, 'G', 11); })) {
         auto g11OrN = [](const WordValue& w) { return w.letter == 'N' || isCode(w, 'G', 11); };
@@ -71,21 +71,9 @@ void entryBlock(ToolLifeManager& manager, const std::vector<WordValue>& words) {
     check(manager.entryLine(line), column);
 }
 
-} // namespace
-
-bool applyToolLife(ToolLifeManager& manager, std::vector<WordValue>& words, const ToolLifeBlockContext& context) {
-    if (manager.entering()) {
-        entryBlock(manager, words);
-        return true;
-    }
-    bool relevant = false;
-    for (const WordValue& w : words) {
-        relevant |= w.letter == 'T' || w.letter == 'H' || w.letter == 'D' || isCode(w, 'G', 10) ||
-                    isCode(w, 'G', 11) || isCode(w, 'M', 6);
-    }
-    if (!relevant) {
-        return false;
-    }
+// A block with a word tool life acts on (T H D G10 G11 M06), outside G10 L3 data entry.
+[[gnu::noinline]] bool applyToRelevantBlock(ToolLifeManager& manager, std::vector<WordValue>& words,
+                                            const ToolLifeBlockContext& context) {
     const WordValue* g10 = nullptr;
     for (const WordValue& w : words) {
         if (isCode(w, 'G', 10)) {
@@ -136,6 +124,30 @@ bool applyToolLife(ToolLifeManager& manager, std::vector<WordValue>& words, cons
     }
     if (!context.tChangesTool && std::any_of(words.begin(), words.end(), [](const WordValue& w) { return isCode(w, 'M', 6); })) {
         manager.changeTool(!context.scanning);
+    }
+    return false;
+}
+
+bool actsOn(const WordValue& w) {
+    switch (w.letter) {
+    case 'T': case 'H': case 'D': return true;
+    case 'G': return isCode(w, 'G', 10) || isCode(w, 'G', 11);
+    case 'M': return isCode(w, 'M', 6);
+    default: return false;
+    }
+}
+
+} // namespace
+
+// Runs for every block, and most have nothing for tool life: the work is kept out of line
+// (noinline) so that passing them is a short loop.
+bool applyToolLife(ToolLifeManager& manager, std::vector<WordValue>& words, const ToolLifeBlockContext& context) {
+    if (manager.entering()) [[unlikely]] {
+        entryBlock(manager, words);
+        return true;
+    }
+    if (std::any_of(words.begin(), words.end(), actsOn)) [[unlikely]] {
+        return applyToRelevantBlock(manager, words, context);
     }
     return false;
 }
