@@ -61,15 +61,6 @@ void BlockList::reserve(std::size_t count) {
     }
 }
 
-void BlockList::push_back(const Block& block) {
-    if (size_ == capacity_) {
-        addSlab(kChunkSize);
-    }
-    // Slab memory is raw: the block is constructed in place (Block is trivially copyable).
-    std::construct_at(chunks_[size_ >> kChunkBits] + (size_ & (kChunkSize - 1)), block);
-    ++size_;
-}
-
 Block& BlockList::mutableAt(std::size_t index) {
     const std::size_t chunk = index >> kChunkBits;
     if (index >= size_ || chunks_[chunk] == nullptr || (chunk < dropped_.size() && dropped_[chunk].dropped)) {

@@ -58,7 +58,14 @@ public:
     // Room for `count` blocks in one allocation (the parser sizes it for the main file). Without
     // it, blocks are allocated a chunk at a time, so that each chunk can be dropped.
     void reserve(std::size_t count);
-    void push_back(const Block& block);
+    void push_back(const Block& block) {
+        if (size_ == capacity_) [[unlikely]] {
+            addSlab(kChunkSize);
+        }
+        // Slab memory is raw: the block is constructed in place (Block is trivially copyable).
+        std::construct_at(chunks_[size_ >> kChunkBits] + (size_ & (kChunkSize - 1)), block);
+        ++size_;
+    }
 
     // Drops a full chunk allocated on its own: its blocks come back from `reloader` when looked
     // up. False (and nothing changes) when the chunk shares its memory with others.

@@ -28,7 +28,7 @@ public:
         do {
             window = text_.size() - window > kWindow ? window + kWindow : text_.size();
             lf = first('\n', lf_, window);
-            cr = first('\r', cr_, lf == kNone ? window : std::max(lf + 1, window));
+            cr = first('\r', cr_, lf == kNone ? window : lf + 1);
         } while (lf == kNone && cr == kNone && window < text_.size());
         const std::size_t end = std::min({lf, cr, text_.size()});
         line = text_.substr(start_, end - start_);
@@ -54,7 +54,8 @@ private:
         std::size_t searched = 0;
     };
 
-    // The first `c` in [start_, limit), or kNone.
+    // The first `c` in [start_, limit), or kNone. The search reaches a window past `limit`, so the
+    // next lines' questions are mostly answered without another search.
     std::size_t first(char c, Search& s, std::size_t limit) {
         if (s.found != kNone && s.found >= start_) {
             return s.found < limit ? s.found : kNone;
@@ -63,14 +64,15 @@ private:
         if (from >= limit) {
             return kNone;
         }
-        const void* at = std::memchr(text_.data() + from, c, limit - from);
+        const std::size_t extent = std::min(text_.size(), std::max(limit, from + kWindow));
+        const void* at = std::memchr(text_.data() + from, c, extent - from);
         if (at == nullptr) {
-            s.searched = limit;
+            s.searched = extent;
             return kNone;
         }
         s.found = static_cast<std::size_t>(static_cast<const char*>(at) - text_.data());
         s.searched = s.found + 1;
-        return s.found;
+        return s.found < limit ? s.found : kNone;
     }
 
     std::string_view text_;
