@@ -1,5 +1,6 @@
 #include "app/sim/SimOptions.h"
 #include "app/sim/BreakageOptions.h"
+#include "app/sim/ByteLimitOption.h"
 
 #include "core/config/FanucParameters.h"
 #include "core/config/HookFiles.h"
@@ -132,15 +133,16 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--tool", tool, "tool in the spindle at start");
         cmd->add_option("--print", printList, "variables to report, e.g. 1,100,1300");
         cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE")->check(nonEmptyPath);
-        cmd->add_option("--trace-limit", o.settings.traceLimit,
-                        "the most bytes the trace keeps (default 256MB; K, M, G suffixes): past it the first lines "
-                        "and the last ones, with a trace_truncated line between")
-            ->transform(CLI::AsSizeValue(false))
-            ->check(CLI::PositiveNumber);
+        addByteLimitOption(*cmd, "--trace-limit", o.settings.traceLimit, kMostTraceBytes,
+                           "the most bytes the trace keeps (default 256M; K, M, G suffixes): past it the first lines "
+                           "and the last ones, with a trace_truncated line between");
         cmd->add_option("--dprnt", o.outputFile,
                         "write what the program sends with POPEN/DPRNT/BPRNT/PCLOS to FILE (default: dprnt.txt "
                         "beside the program; for mdi and hook, in the current folder)")
             ->check(nonEmptyPath);
+        addByteLimitOption(*cmd, "--dprnt-limit", o.settings.externalOutputLimit, kMostExternalOutputBytes,
+                           "the most bytes of DPRNT output kept for --dprnt FILE (default 64M; K, M, G suffixes): "
+                           "past it the first records and the last ones, with a line between");
         cmd->add_option("--tool-table", o.toolTableFile, "use this tool.tbl instead of the machine folder's")
             ->check(nonEmptyPath);
         cmd->add_option("--tools-out", o.toolsOut, "write the tool table as the run left it to FILE (tool.tbl format)")

@@ -1,6 +1,7 @@
 // Issue 13: a 13-byte `N1 M00 / GOTO1` program filled 9.3 GB with messages and trace lines. The
 // report keeps the first and last messages and says how many were left out; the trace stays within
-// --trace-limit with a trace_truncated line between its first and last lines.
+// --trace-limit with a trace_truncated line between its first and last lines; DPRNT output within
+// --dprnt-limit.
 #include "tests/cli/CliFixture.h"
 
 #include <gtest/gtest.h>
@@ -57,6 +58,50 @@ TEST_F(CliTest, ATraceLimitMustBeAPositiveSize) {
     ProcessResult fine = sim({"run", "p.nc", "--trace", "t", "--trace-limit", "1M"});
     EXPECT_EQ(fine.exitStatus, kExitOk) << fine.err;
     EXPECT_FALSE(output(fine).contains("messages_omitted")) << "the key appears only when messages were left out";
+}
+
+// --dprnt-limit bounds what dprnt.txt keeps as --trace-limit bounds the trace: 500 records of 16
+// bytes in a 2K limit keep the first records, the last ones and a line saying what was left out.
+TEST_F(CliTest, ADprntLimitKeepsTheFirstAndTheLastRecords) {
+    write("count.nc", "POPEN\n#1=1\nWHILE[#1LE500]DO1\nDPRNT[RECORD*#1[40]]\n#1=#1+1\nEND1\nPCLOS\nM30\n");
+    const std::string fanuc = std::string(M350_MACHINES_DIR) + "/fanuc-0i";
+    ProcessResult r = sim({"run", "count.nc", "--config", fanuc, "--dprnt", "out.txt", "--dprnt-limit", "2K"});
+    ASSERT_EQ(r.exitStatus, kExitOk) << r.err;
+    std::ifstream in(dir_ / "out.txt");
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::vector<std::string> kept = lines(text.str());
+    ASSERT_GT(kept.size(), 10u) << text.str();
+    EXPECT_LE(text.str().size(), 2048u + 200u) << text.str();
+    EXPECT_EQ(kept.front(), "RECORD     1");
+    EXPECT_EQ(kept.back(), "RECORD   500");
+    int notes = 0;
+    for (const std::string& line : kept) {
+        notes += line.find("omitted: the output reached its limit") != std::string::npos ? 1 : 0;
+    }
+    EXPECT_EQ(notes, 1) << text.str();
+
+    ProcessResult whole = sim({"run", "count.nc", "--config", fanuc, "--dprnt", "all.txt"});
+    ASSERT_EQ(whole.exitStatus, kExitOk) << whole.err;
+    std::ifstream all(dir_ / "all.txt");
+    std::stringstream allText;
+    allText << all.rdbuf();
+    EXPECT_EQ(lines(allText.str()).size(), 500u) << "the default limit (64M) keeps all of it";
+}
+
+TEST_F(CliTest, ADprntLimitMustBeASizeInItsRange) {
+    write("p.nc", "G0 X1\nM30\n");
+    for (const char* bad : {"0", "-5", "lots", "5G", "1.5.2"}) {
+        ProcessResult r = sim({"run", "p.nc", "--dprnt-limit", bad});
+        EXPECT_EQ(r.exitStatus, kExitUsage) << bad << ": " << r.err;
+        EXPECT_NE(r.err.find("--dprnt-limit"), std::string::npos) << bad << ": " << r.err;
+    }
+    ProcessResult outside = sim({"run", "p.nc", "--dprnt-limit", "5G"});
+    EXPECT_NE(outside.err.find("the limit runs from 1 byte to 4G"), std::string::npos) << outside.err;
+    for (const char* good : {"1", "64K", "4G"}) {
+        ProcessResult r = sim({"run", "p.nc", "--dprnt-limit", good});
+        EXPECT_EQ(r.exitStatus, kExitOk) << good << ": " << r.err;
+    }
 }
 
 TEST_F(CliTest, DeeplyNestedLoopsAreCheckedQuicklyAndTheListIsCapped) {
