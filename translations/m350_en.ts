@@ -825,6 +825,14 @@ STEP MPG</translation>
         <source>DPRNT output</source>
         <translation>DPRNT output</translation>
     </message>
+    <message>
+        <source>DPRNT output reached its limit; dprnt.txt keeps the first and the last records</source>
+        <translation>DPRNT output reached its limit; dprnt.txt keeps the first and the last records</translation>
+    </message>
+    <message>
+        <source>DPRNT records not logged (sent faster than the log takes them)</source>
+        <translation>DPRNT records not logged (sent faster than the log takes them)</translation>
+    </message>
 </context>
 <context>
     <name>m350::ui::MainWindow</name>
@@ -2241,10 +2249,6 @@ STEP MPG</translation>
     <message>
         <source>No break point is kept in the machine folder</source>
         <translation>No break point is kept in the machine folder</translation>
-    </message>
-    <message>
-        <source>%1: cannot write: %2</source>
-        <translation>%1: cannot write: %2</translation>
     </message>
     <message>
         <source>File save failed!</source>

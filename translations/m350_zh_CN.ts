@@ -825,6 +825,14 @@ STEP MPG</source>
         <source>DPRNT output</source>
         <translation>DPRNT输出</translation>
     </message>
+    <message>
+        <source>DPRNT output reached its limit; dprnt.txt keeps the first and the last records</source>
+        <translation>DPRNT输出达到上限，dprnt.txt 只保留最前和最后的记录</translation>
+    </message>
+    <message>
+        <source>DPRNT records not logged (sent faster than the log takes them)</source>
+        <translation>未记入日志的DPRNT记录（发送快于日志记录）</translation>
+    </message>
 </context>
 <context>
     <name>m350::ui::MainWindow</name>
@@ -2241,10 +2249,6 @@ STEP MPG</source>
     <message>
         <source>No break point is kept in the machine folder</source>
         <translation>机床目录中没有保存的断点</translation>
-    </message>
-    <message>
-        <source>%1: cannot write: %2</source>
-        <translation>%1: 无法写入: %2</translation>
     </message>
     <message>
         <source>File save failed!</source>

@@ -1,5 +1,6 @@
 #include "app/hmi/HmiOptions.h"
 
+#include "app/sim/ByteLimitOption.h"
 #include "ui/actions/OperatorAction.h"
 
 #include <CLI/CLI.hpp>
@@ -33,6 +34,9 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
     app.add_option("--break", o.breaks,
                    "tool N breaks in the simulated world, L mm shorter and cutting nothing: T1=0.62 or T1=0.62@12 "
                    "(at 12 s of virtual time), repeatable");
+    sim::addByteLimitOption(app, "--dprnt-limit", o.dprntLimit, sim::kMostExternalOutputBytes,
+                            "the most bytes of DPRNT output the machine folder's dprnt.txt keeps (default 64M; K, M, "
+                            "G suffixes); the system log still gets every record");
     app.add_option("--rate", o.rate, "virtual seconds per wall second (faster for simulation)")
         ->check(CLI::Range(0.01, 1000.0));
     app.add_option("--measure", o.measure,

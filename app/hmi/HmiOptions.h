@@ -1,5 +1,8 @@
 #pragma once
 
+#include "core/controller/RunSettings.h"
+
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +24,7 @@ struct HmiOptions {
     std::optional<int> tool;
     std::vector<std::string> breaks; // --break T1=0.62@12: tools that break in the simulated world
     double rate = 1.0;       // virtual seconds per wall second
+    std::uint64_t dprntLimit = controller::RunSettings{}.externalOutputLimit; // bytes of DPRNT output dprnt.txt keeps
     double measure = 0.0;    // > 0: start the program, measure the panel for this long, print JSON, exit
     bool headlessRun() const { return !screenshot.empty() || !replay.empty() || !state.empty(); }
 };

@@ -98,6 +98,7 @@ int main(int argc, char** argv) {
     sessionOptions.rate = o.rate;
     sessionOptions.homed = !o.unhomed;
     sessionOptions.tool = o.tool;
+    sessionOptions.externalOutputLimit = o.dprntLimit;
     try {
         for (const std::string& broken : o.breaks) {
             sessionOptions.toolBreaks.push_back(sim::parseToolBreak(broken));

@@ -286,6 +286,10 @@ public:
     // started (bounded: RunSettings::externalOutputLimit); whether a program ever opened it.
     std::string externalOutput() const { return devices_.received(); }
     bool externalOutputOpened() const { return devices_.outputOpened(); }
+    // Whether externalOutput() leaves records out (it reached its limit), and every record sent since
+    // the last call whatever that limit did (a bounded wait: ExternalDevices::NewRecords).
+    bool externalOutputCapped() const { return devices_.outputCapped(); }
+    ExternalDevices::NewRecords takeNewExternalRecords() { return devices_.takeNewRecords(); }
     // Writes the end of a trace that reached its limit (RunSettings::traceLimit): call once the run
     // is over, before the trace file is closed.
     void finishTrace() {

@@ -21,6 +21,17 @@ std::string ExternalDevices::received() const {
     return out;
 }
 
+ExternalDevices::NewRecords ExternalDevices::takeNewRecords() {
+    NewRecords out;
+    out.records.reserve(newRecords_.tail().size());
+    for (const auto& kept : newRecords_.tail()) {
+        out.records.push_back(kept.piece);
+    }
+    out.missed = newRecords_.omitted();
+    newRecords_.clear();
+    return out;
+}
+
 std::optional<std::string> ExternalDevices::openOutput() {
     open_ = true;
     opened_ = true;
@@ -51,6 +62,7 @@ std::optional<std::string> ExternalDevices::output(std::string_view statement, s
     } else {
         receivedKept_.keepInTail(std::string(record), record.size());
     }
+    newRecords_.keepInTail(std::string(record), record.size());
     if (context_.trace) {
         context_.trace->externalOutput(context_.time(), statement, record, context_.source());
     }

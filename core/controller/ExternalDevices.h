@@ -7,9 +7,12 @@
 #include "core/machine/ScanMachine.h"
 #include "core/macro/Peripherals.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace m350::controller {
 
@@ -22,11 +25,22 @@ namespace m350::controller {
 //   document it.
 // - the M350's Modbus RTU slaves (modbus.toml): MSETDATA and MGETDATA read and write their holding
 //   registers in memory, with parameter 279 on; each transfer goes to the trace.
+// A view that shows each record as it comes (the panel's system log) takes them with
+// takeNewRecords(), which hands over every record whatever the limit leaves of received().
 // While 断点加工 scans the blocks before its start line, POPEN and PCLOS open and close the device
 // (its state, as outputs are scanned) but no record is sent, and a Modbus transfer makes the scan
 // refuse (the slave is the world outside, which a scan does not reach).
 class ExternalDevices : public macro::Peripherals {
 public:
+    // The records sent since the last takeNewRecords(), oldest first. Only the newest
+    // kNewRecordsBudget bytes of them wait for a taker (a run nobody watches must stay bounded);
+    // `missed` counts the older ones left out.
+    struct NewRecords {
+        std::vector<std::string> records;
+        std::uint64_t missed = 0;
+    };
+    static constexpr std::size_t kNewRecordsBudget = 1u << 20;
+
     struct Context {
         const config::ParameterTable& parameters;
         machine::ScanMachine& scan;
@@ -38,6 +52,9 @@ public:
 
     std::string received() const;
     bool outputOpened() const { return opened_; } // POPEN ran at least once
+    // True once received() leaves records out: the output reached its limit.
+    bool outputCapped() const { return receivedKept_.omitted() > 0; }
+    NewRecords takeNewRecords();
     void closeOutputDevice() { open_ = false; }   // a new run starts with the device closed
 
     std::optional<std::string> openOutput() override;
@@ -53,6 +70,7 @@ private:
     config::ModbusSlaves slaves_;
     std::string receivedFirst_;
     HeadTail<std::string> receivedKept_;
+    HeadTail<std::string> newRecords_{0, kNewRecordsBudget}; // no head: every record waits in its tail
     bool open_ = false;
     bool opened_ = false;
 };

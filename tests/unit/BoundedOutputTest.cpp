@@ -155,5 +155,44 @@ TEST(BoundedOutput, ExternalOutputInALoopKeepsItsFirstAndLastRecords) {
     EXPECT_NE(out.find("omitted: the output reached its limit"), std::string::npos);
 }
 
+// What the panel's system log reads: each record once, in order, also the ones externalOutput()
+// leaves out past its limit.
+TEST(BoundedOutput, EveryExternalRecordIsHandedOverPastTheLimit) {
+    controller::RunSettings settings;
+    settings.externalOutputLimit = 4000;
+    auto run = test::runFanuc(lines({"#1 = 0", "POPEN", "WHILE [#1 LT 2000] DO1", "#1 = #1 + 1",
+                                     "DPRNT[PASS#1[40]]", "END1", "PCLOS", "M30"}),
+                              settings);
+    EXPECT_RUN_OK(run);
+    EXPECT_TRUE(run.controller->externalOutputCapped());
+    const controller::ExternalDevices::NewRecords fresh = run.controller->takeNewExternalRecords();
+    EXPECT_EQ(fresh.missed, 0u);
+    ASSERT_EQ(fresh.records.size(), 2000u);
+    for (std::size_t i = 0; i < fresh.records.size(); ++i) {
+        ASSERT_EQ(fresh.records[i].rfind("PASS", 0), 0u) << fresh.records[i];
+        ASSERT_EQ(std::stoi(fresh.records[i].substr(4)), static_cast<int>(i + 1)) << fresh.records[i];
+    }
+    EXPECT_TRUE(run.controller->takeNewExternalRecords().records.empty()) << "taken once";
+}
+
+// A run nobody takes records from (m350-sim) holds only the newest megabyte of them.
+TEST(BoundedOutput, RecordsNobodyTakesWaitWithinTheirBudget) {
+    auto run = test::runFanuc(lines({"#1 = 0", "POPEN", "WHILE [#1 LT 80000] DO1", "#1 = #1 + 1",
+                                     "DPRNT[RECORD*NUMBER*#1[60]]", "END1", "PCLOS", "M30"}));
+    EXPECT_RUN_OK(run);
+    EXPECT_FALSE(run.controller->externalOutputCapped()) << "1.7 MB is within the default 64 MiB";
+    const controller::ExternalDevices::NewRecords fresh = run.controller->takeNewExternalRecords();
+    std::size_t bytes = 0;
+    for (const std::string& record : fresh.records) {
+        bytes += record.size();
+    }
+    EXPECT_LE(bytes, controller::ExternalDevices::kNewRecordsBudget);
+    EXPECT_GT(bytes, controller::ExternalDevices::kNewRecordsBudget - 100);
+    EXPECT_GT(fresh.missed, 0u);
+    EXPECT_EQ(fresh.missed + fresh.records.size(), 80000u);
+    ASSERT_FALSE(fresh.records.empty());
+    EXPECT_EQ(fresh.records.back(), "RECORD NUMBER   80000\n");
+}
+
 } // namespace
 } // namespace m350

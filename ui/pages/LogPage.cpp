@@ -70,6 +70,8 @@ QHash<QString, QString> LogPage::eventTable() {
     w["touch_off"] = tr("Tool touched off");
     w["tool_life_reset"] = tr("Tool life reset");
     w["dprnt"] = tr("DPRNT output");
+    w["dprnt_limit"] = tr("DPRNT output reached its limit; dprnt.txt keeps the first and the last records");
+    w["dprnt_missed"] = tr("DPRNT records not logged (sent faster than the log takes them)");
     return w;
 }
 

@@ -6,6 +6,7 @@
 #include "ui/session/UserAccess.h"
 
 #include "core/config/HookFiles.h"
+#include "core/controller/RunSettings.h"
 #include "core/tools/ToolTable.h"
 
 #include <QObject>
@@ -14,6 +15,7 @@
 #include <QThread>
 #include <QVector>
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -43,6 +45,8 @@ public:
         bool homed = true;     // start with every axis homed (--unhomed: as after power-on)
         std::optional<int> tool;
         std::vector<machine::ToolBreak> toolBreaks; // --break: tools that break in the simulated world
+        // --dprnt-limit: the most bytes of DPRNT output dprnt.txt keeps (the first and the last records)
+        std::uint64_t externalOutputLimit = controller::RunSettings{}.externalOutputLimit;
     };
     MachineSession(config::MachineConfig config, Options options, QObject* parent = nullptr);
     ~MachineSession() override;

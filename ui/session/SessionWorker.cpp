@@ -31,6 +31,7 @@ controller::RunSettings settingsFor(const MachineSession::Options& options) {
     settings.homed = options.homed;
     settings.tool = options.tool;
     settings.toolBreaks = options.toolBreaks;
+    settings.externalOutputLimit = options.externalOutputLimit;
     settings.operatorPresent = true; // dialogs and START wait for the operator
     return settings;
 }

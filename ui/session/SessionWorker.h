@@ -126,7 +126,9 @@ private:
     std::optional<std::uint64_t> failedLifeRevision_;
     QString toolLifeProblem_;
     void keepExternalOutput(); // DPRNT / BPRNT records: the system log and the folder's dprnt.txt
-    std::size_t externalOutputKept_ = 0;
+    bool externalOutputUnsaved_ = false; // records came since dprnt.txt was last written
+    bool externalOutputCapLogged_ = false;
+    QElapsedTimer externalOutputSaved_;
     void keepSpindleLoad(int tool); // SessionWorkerLoad.cpp: a new view when a sample came or the tool changed
     std::shared_ptr<const controller::SpindleLoadView> spindleLoad_;
     void keepBreakPoint();
