@@ -3,6 +3,7 @@
 // machine's libraries are the machine's. Each finding is what the run would say, at its place.
 #include "core/controller/Controller.h"
 
+#include "core/common/EchoText.h"
 #include "core/common/Numeric.h"
 #include "core/gcode/DiagnosticCap.h"
 #include "core/interp/ModalInterpreter.h"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <sstream>
 
 namespace m350::controller {
 
@@ -140,9 +142,11 @@ private:
                " on every pass: the calls nest until the nesting limit (no IF, WHILE or GOTO could stop them)";
     }
 
+    // A finding repeats the program's own text (a code, a chain of program numbers, an evaluator's
+    // message about a constant): cut as every echo is.
     void report(std::uint32_t column, std::string message) {
         out_.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, program_.fileName(location_),
-                        location_.line, column, std::move(message)});
+                        location_.line, column, clipEcho(std::move(message))});
     }
 
     // Runs `what`; a MacroError it throws is a finding.
@@ -245,13 +249,12 @@ private:
         }
     }
 
+    // 80.1 or 1e+300 (a code of 300 digits), not std::to_string's digits and six decimals.
     static std::string formatCode(double value) {
-        std::string text = std::to_string(value);
-        text.erase(text.find_last_not_of('0') + 1);
-        if (!text.empty() && text.back() == '.') {
-            text.pop_back();
-        }
-        return text;
+        std::ostringstream text;
+        text.precision(15);
+        text << value;
+        return text.str();
     }
 
     const gcode::Program& program_;

@@ -65,6 +65,38 @@ TEST_F(CliTest, CheckDoesNotFlagWhatMayBeFine) {
     }
 }
 
+// What a finding repeats of the program is cut to 512 bytes, as echoed text is everywhere: a code
+// of 300 digits on a 100 kB line reads 1e+300, and a cycle through 64 programs names the first of
+// them and says how much of the chain was left out.
+TEST_F(CliTest, CheckFindingsKeepWhatTheyQuoteShort) {
+    std::string line = "G" + std::string(300, '9');
+    while (line.size() < 100000) {
+        line += " X1";
+    }
+    std::string cycle = "M98 P1000\nM30\n";
+    for (int n = 1000; n < 1064; ++n) {
+        cycle += "O" + std::to_string(n) + "\nM98 P" + std::to_string(n == 1063 ? 1000 : n + 1) + "\nM99\n";
+    }
+    write("long.nc", line + "\n" + cycle);
+    ProcessResult r = sim({"check", "long.nc"});
+    EXPECT_EQ(r.exitStatus, kExitError) << r.err.substr(0, 2000);
+    const json diagnostics = output(r)["diagnostics"];
+    ASSERT_GT(diagnostics.size(), 3u);
+    EXPECT_EQ(diagnostics[0].value("message", ""), "G1e+300: not a G code this machine knows") << diagnostics[0];
+    const std::string limitNote = "… (1000000 more bytes)";
+    bool cycleSeen = false;
+    for (const json& d : diagnostics) {
+        const std::string message = d.value("message", "");
+        EXPECT_LE(message.size(), 512u + limitNote.size()) << message;
+        if (message.rfind("O1000 calls itself through O1000 -> O1001 -> ", 0) == 0) {
+            cycleSeen = true;
+            EXPECT_NE(message.find(" more bytes)"), std::string::npos) << message;
+        }
+    }
+    EXPECT_TRUE(cycleSeen) << r.err.substr(r.err.size() > 3000 ? r.err.size() - 3000 : 0);
+    EXPECT_LT(r.err.size(), 1001u * (512u + 100u)) << "stderr lists the same bounded findings";
+}
+
 TEST_F(CliTest, CheckOnAMissingFileKeepsTheCheckLayout) {
     ProcessResult r = sim({"check", "missing.nc"});
     EXPECT_EQ(r.exitStatus, kExitError);
