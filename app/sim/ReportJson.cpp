@@ -70,6 +70,13 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
         pockets[std::to_string(pocket)] = tool;
     }
     j["pockets"] = pockets;
+    if (!report.fallenTools.empty()) { // only then: the contract's keys stay as they were
+        nlohmann::json fallen = nlohmann::json::array();
+        for (const devices::FallenTool& f : report.fallenTools) {
+            fallen.push_back({{"tool", f.tool}, {"at", {{"X", f.at.x()}, {"Y", f.at.y()}, {"Z", f.at.z()}}}});
+        }
+        j["fallen_tools"] = fallen;
+    }
     j["outputs"] = report.outputs;
     j["messages"] = report.messages;
     if (report.messagesOmitted > 0) { // only then: the contract's keys stay as they were

@@ -47,6 +47,16 @@ void printDiagnostics(const std::vector<gcode::Diagnostic>& diagnostics) {
     }
 }
 
+// A tool on the table is in neither `tool` nor `pockets`: said, so nobody counts it as lost.
+void printFallenTools(const std::vector<devices::FallenTool>& fallen) {
+    for (const devices::FallenTool& f : fallen) {
+        char at[96];
+        std::snprintf(at, sizeof at, "X%.3f Y%.3f Z%.3f", f.at.x(), f.at.y(), f.at.z());
+        std::cerr << "m350-sim: T" << f.tool << " lies on the table: it fell where the spindle released it at " << at
+                  << " (it is in neither the spindle nor a pocket)\n";
+    }
+}
+
 int fail(const std::string& code, const std::string& message, const std::string& file) {
     std::cerr << file << ": " << message << '\n';
     std::cout << sim::dump(sim::errorJson(code, message, file)) << '\n';
@@ -244,6 +254,7 @@ int runCommand(int argc, char** argv) {
             std::cerr << a.callerFile << ':' << a.callerLine << ": note: the alarm is in the library this line called\n";
         }
     }
+    printFallenTools(report.fallenTools);
     if (auto error = sim::exportTools(controller, o)) {
         std::cerr << "m350-sim: --tools-out: " << *error << '\n';
         report.status = controller::RunStatus::Error;

@@ -421,6 +421,9 @@ void Controller::fill(RunReport& out) const {
             out.pockets[pocket] = pocket == out.tool ? 0 : pocket;
         }
     }
+    if (magazine) {
+        out.fallenTools = magazine->droppedTools();
+    }
     for (int port = 1; port <= machine::kOutputCount; ++port) {
         out.outputs[static_cast<std::size_t>(port - 1)] = machine_.output(port);
     }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/common/Alarm.h"
+#include "core/devices/Magazine.h"
 #include "core/gcode/Diagnostic.h"
 #include "core/machine/MachineTypes.h"
 
@@ -24,6 +25,9 @@ struct RunReport {
     machine::Axes work = machine::Axes::Zero();
     int tool = 0;
     std::map<int, int> pockets; // pocket -> tool (0 = empty)
+    // Tools the spindle let fall onto the table (a drawbar released with no pocket under the tool,
+    // as a stop mid-change can leave it), in the order they fell: in neither the spindle nor a pocket.
+    std::vector<devices::FallenTool> fallenTools;
     std::array<int, machine::kOutputCount> outputs{};
     std::vector<std::string> messages; // bounded (MessageLog): the first and the last
     std::uint64_t messagesOmitted = 0;  // left out between them

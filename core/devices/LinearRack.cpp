@@ -228,7 +228,7 @@ void LinearRack::stoppedAt(const Vector3d& nose) {
 std::optional<std::string> LinearRack::drawbar(bool released, const Vector3d& nose) {
     lastMove_.reset(); // the nose stands still now
     int* pocket = engaged_ != 0 ? &pockets_[static_cast<std::size_t>(engaged_ - 1)] : nullptr;
-    if (const int dropped = spindle_.change(released, pocket)) {
+    if (const int dropped = spindle_.change(released, pocket, nose)) {
         return tool(dropped) + " dropped: the drawbar was released at " + at(nose) +
                " with no pocket under the tool (it fell onto the table)";
     }

@@ -40,7 +40,7 @@ public:
     int spindleTool() const override { return spindle_.tool(); }
     int pocketTool(int pocket) const override { return pockets_[static_cast<std::size_t>(pocket - 1)]; }
     int pocketCount() const override { return static_cast<int>(pockets_.size()); }
-    const std::vector<int>& droppedTools() const override { return spindle_.dropped(); }
+    const std::vector<FallenTool>& droppedTools() const override { return spindle_.dropped(); }
     bool released() const { return spindle_.released(); }
 
     // A device that carries its pockets (a disc) puts another tool in a pocket, or takes it out.

@@ -8,6 +8,13 @@
 
 namespace m350::devices {
 
+// A tool the spindle let go of with no pocket or clip under it: it lies on the table, below where
+// the nose stood (machine X Y Z) when the drawbar released it.
+struct FallenTool {
+    int tool = 0;
+    Eigen::Vector3d at = Eigen::Vector3d::Zero();
+};
+
 // A tool magazine as a device beside the machine. It knows only signals and positions: every move
 // of the spindle nose (machine X Y Z, where the nose stands when a held tool sits in a pocket), the
 // drawbar, whether the spindle turns, and its own actuators, which the concrete devices take. It
@@ -35,7 +42,7 @@ public:
     virtual int spindleTool() const = 0;
     virtual int pocketCount() const = 0;
     virtual int pocketTool(int pocket) const = 0; // 0: empty
-    virtual const std::vector<int>& droppedTools() const = 0;
+    virtual const std::vector<FallenTool>& droppedTools() const = 0;
 };
 
 } // namespace m350::devices

@@ -26,7 +26,7 @@ public:
     int pocketCount() const override { return static_cast<int>(down_.size()); }
     // Head k is in its own place on the carriage, or in use: two down together are neither in use.
     int pocketTool(int pocket) const override { return pocket == spindleTool() ? 0 : pocket; }
-    const std::vector<int>& droppedTools() const override { return none_; }
+    const std::vector<FallenTool>& droppedTools() const override { return none_; }
 
     // Head k's cylinder moved it down (true) or up, with the nose at `nose`.
     std::optional<std::string> cylinder(int head, bool down, const Eigen::Vector3d& nose);
@@ -35,7 +35,7 @@ private:
     std::vector<bool> down_;
     double safeZ_;
     double tolerance_;
-    std::vector<int> none_;
+    std::vector<FallenTool> none_;
 };
 
 } // namespace m350::devices

@@ -38,7 +38,7 @@ public:
     int spindleTool() const override { return station_.spindleTool(); }
     int pocketCount() const override { return static_cast<int>(pockets_.size()); }
     int pocketTool(int pocket) const override;
-    const std::vector<int>& droppedTools() const override { return station_.droppedTools(); }
+    const std::vector<FallenTool>& droppedTools() const override { return station_.droppedTools(); }
 
     // The strobe: the drive turns to `pocket` from virtual time `now`, with the nose at `nose`.
     // A crash message when the spindle is in the way; otherwise the turn's duration (0 when the

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/devices/Magazine.h"
+
 #include <vector>
 
 namespace m350::devices {
@@ -11,9 +13,9 @@ class SpindleDrawbar {
 public:
     explicit SpindleDrawbar(int tool) : tool_(tool) {}
 
-    // The drawbar switched; `pocket` is the tool slot of the pocket the nose stands in (nullptr:
-    // none). Returns the tool that dropped, 0 when none did.
-    int change(bool released, int* pocket) {
+    // The drawbar switched with the nose at `nose`; `pocket` is the tool slot of the pocket the nose
+    // stands in (nullptr: none). Returns the tool that dropped, 0 when none did.
+    int change(bool released, int* pocket, const Eigen::Vector3d& nose) {
         if (released == released_) {
             return 0;
         }
@@ -27,7 +29,7 @@ public:
                 }
                 return 0;
             }
-            dropped_.push_back(held);
+            dropped_.push_back({held, nose});
             return held;
         }
         if (tool_ == 0 && pocket && *pocket != 0) {
@@ -39,12 +41,12 @@ public:
 
     int tool() const { return tool_; }
     bool released() const { return released_; }
-    const std::vector<int>& dropped() const { return dropped_; }
+    const std::vector<FallenTool>& dropped() const { return dropped_; }
 
 private:
     int tool_ = 0;
     bool released_ = false;
-    std::vector<int> dropped_;
+    std::vector<FallenTool> dropped_;
 };
 
 } // namespace m350::devices

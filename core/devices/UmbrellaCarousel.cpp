@@ -111,7 +111,7 @@ void UmbrellaCarousel::stoppedAt(const Vector3d& nose) {
 
 std::optional<std::string> UmbrellaCarousel::drawbar(bool released, const Vector3d& nose) {
     lastMove_.reset(); // the nose stands still now
-    if (const int dropped = spindle_.change(released, engaged_ ? &clip() : nullptr)) {
+    if (const int dropped = spindle_.change(released, engaged_ ? &clip() : nullptr, nose)) {
         return tool(dropped) + " dropped: the spindle released it at " + where(nose) +
                (slideIn_ ? " out of its clip's reach (the change height is G30 P3)"
                          : " with the carousel away from the spindle (slide it in with M83 first)");

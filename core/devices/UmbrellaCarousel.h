@@ -43,7 +43,7 @@ public:
     int spindleTool() const override { return spindle_.tool(); }
     int pocketCount() const override { return static_cast<int>(pockets_.size()); }
     int pocketTool(int pocket) const override { return pockets_[static_cast<std::size_t>(pocket - 1)]; }
-    const std::vector<int>& droppedTools() const override { return spindle_.dropped(); }
+    const std::vector<FallenTool>& droppedTools() const override { return spindle_.dropped(); }
 
     // What an actuator command costs: the hardware's complaint, or how long the motion takes.
     struct Action {

@@ -43,4 +43,33 @@ TEST_F(CliTest, MultiHeadAndManualMachinesChangeTools) {
     EXPECT_EQ(manual.value("status", std::string()), "ok");
 }
 
+// A tool the spindle lets go of away from the rack lies on the table: the report lists it under
+// fallen_tools with where it fell, so a census of tool, pockets and fallen_tools finds every tool once.
+TEST_F(CliTest, AToolReleasedAwayFromTheRackIsReportedOnTheTable) {
+    ProcessResult r = sim({"mdi", "G53 G0 X300 Y200", "M154", "--config", machine("m350-linear16"), "--tool", "3"});
+    json j = output(r);
+    EXPECT_EQ(j.value("tool", -1), 0) << r.err;
+    ASSERT_TRUE(j.contains("fallen_tools")) << j;
+    ASSERT_EQ(j["fallen_tools"].size(), 1u) << j;
+    const json& fallen = j["fallen_tools"][0];
+    EXPECT_EQ(fallen.value("tool", 0), 3);
+    EXPECT_DOUBLE_EQ(fallen["at"].value("X", 0.0), 300.0);
+    EXPECT_DOUBLE_EQ(fallen["at"].value("Y", 0.0), 200.0);
+    std::map<int, int> places;
+    for (const auto& [pocket, tool] : j["pockets"].items()) {
+        ++places[tool.get<int>()];
+    }
+    places.erase(0);
+    ++places[fallen.value("tool", 0)];
+    for (int tool = 1; tool <= 16; ++tool) {
+        EXPECT_EQ(places[tool], 1) << "T" << tool << ": " << j;
+    }
+    EXPECT_NE(r.err.find("T3 lies on the table: it fell where the spindle released it at X300.000 Y200.000"),
+              std::string::npos)
+        << r.err;
+
+    json kept = output(sim({"mdi", "G53 G0 X300 Y200", "--config", machine("m350-linear16"), "--tool", "3"}));
+    EXPECT_FALSE(kept.contains("fallen_tools")) << "the key appears only when a tool fell";
+}
+
 } // namespace m350::clitest

@@ -74,7 +74,9 @@ TEST(LinearRack, ReleasingWithNoPocketUnderTheToolDropsIt) {
               "T1 dropped: the drawbar was released at X300.000 Y200.000 Z-10.000 with no pocket under the tool (it "
               "fell onto the table)");
     EXPECT_EQ(r.spindleTool(), 0);
-    EXPECT_EQ(r.droppedTools(), std::vector<int>{1});
+    ASSERT_EQ(r.droppedTools().size(), 1u);
+    EXPECT_EQ(r.droppedTools()[0].tool, 1);
+    EXPECT_EQ(r.droppedTools()[0].at, Eigen::Vector3d(300, 200, -10));
 }
 
 TEST(LinearRack, ComingDownOntoAToolClampedOrTurning) {

@@ -80,7 +80,9 @@ TEST(UmbrellaDevice, ReleasingWithTheCarouselAwayDropsTheTool) {
     ASSERT_TRUE(drop);
     EXPECT_EQ(*drop, "T2 dropped: the spindle released it at X0.000 Y0.000 Z-100.000 with the carousel away from "
                      "the spindle (slide it in with M83 first)");
-    EXPECT_EQ(c.droppedTools(), std::vector<int>{2});
+    ASSERT_EQ(c.droppedTools().size(), 1u);
+    EXPECT_EQ(c.droppedTools()[0].tool, 2);
+    EXPECT_EQ(c.droppedTools()[0].at, Eigen::Vector3d(0, 0, -100));
 }
 
 // The bundled machine with `tool` in the spindle, one controller for several MDI changes.
