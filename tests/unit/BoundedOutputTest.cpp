@@ -140,12 +140,17 @@ TEST(BoundedOutput, ATraceUnderItsLimitIsUntouched) {
     EXPECT_EQ(out.str(), "{\"t\":1.5,\"type\":\"pause\"}\n");
 }
 
-TEST(BoundedOutput, ExternalOutputInALoopKeepsItsFirstAndLastRecords) {
+// 2,000 DPRNT records `PASS    n` through a 4,000-byte limit.
+test::ProgramRun passesThroughASmallLimit() {
     controller::RunSettings settings;
     settings.externalOutputLimit = 4000;
-    auto run = test::runFanuc(lines({"#1 = 0", "POPEN", "WHILE [#1 LT 2000] DO1", "#1 = #1 + 1",
-                                     "DPRNT[PASS#1[40]]", "END1", "PCLOS", "M30"}),
-                              settings);
+    return test::runFanuc(lines({"#1 = 0", "POPEN", "WHILE [#1 LT 2000] DO1", "#1 = #1 + 1", "DPRNT[PASS#1[40]]",
+                                 "END1", "PCLOS", "M30"}),
+                          settings);
+}
+
+TEST(BoundedOutput, ExternalOutputInALoopKeepsItsFirstAndLastRecords) {
+    auto run = passesThroughASmallLimit();
     EXPECT_RUN_OK(run);
     const std::string out = run.controller->externalOutput();
     EXPECT_LT(out.size(), 4200u);
@@ -158,11 +163,7 @@ TEST(BoundedOutput, ExternalOutputInALoopKeepsItsFirstAndLastRecords) {
 // What the panel's system log reads: each record once, in order, also the ones externalOutput()
 // leaves out past its limit.
 TEST(BoundedOutput, EveryExternalRecordIsHandedOverPastTheLimit) {
-    controller::RunSettings settings;
-    settings.externalOutputLimit = 4000;
-    auto run = test::runFanuc(lines({"#1 = 0", "POPEN", "WHILE [#1 LT 2000] DO1", "#1 = #1 + 1",
-                                     "DPRNT[PASS#1[40]]", "END1", "PCLOS", "M30"}),
-                              settings);
+    auto run = passesThroughASmallLimit();
     EXPECT_RUN_OK(run);
     EXPECT_TRUE(run.controller->externalOutputCapped());
     const controller::ExternalDevices::NewRecords fresh = run.controller->takeNewExternalRecords();
