@@ -29,15 +29,20 @@ std::vector<config::LogEntry> logged(PanelHarness& panel, const std::string& eve
     return out;
 }
 
+// Loads the program and presses START, then lets `seconds` of virtual time pass.
+void runOnPanel(PanelHarness& panel, const QString& name, const QByteArray& text, double seconds) {
+    panel.loadProgram(name, text);
+    panel.key("START");
+    panel.advance(seconds);
+}
+
 } // namespace
 
 TEST(ExternalOutput, DprntRecordsGoToTheSystemLogAndDprntTxt) {
     QTemporaryDir dir;
     const std::filesystem::path folder = copyOfFanuc0i(dir);
     PanelHarness panel(QString::fromStdString(folder.string()));
-    panel.loadProgram("report.nc", "#100=12.5\nPOPEN\nDPRNT[LENGTH*#100[33]]\nDPRNT[DONE]\nPCLOS\nM30\n");
-    panel.key("START");
-    panel.advance(2.0);
+    runOnPanel(panel, "report.nc", "#100=12.5\nPOPEN\nDPRNT[LENGTH*#100[33]]\nDPRNT[DONE]\nPCLOS\nM30\n", 2.0);
     std::vector<std::string> records;
     for (const config::LogEntry& entry : logged(panel, "dprnt")) {
         records.push_back(entry.detail);
@@ -54,7 +59,22 @@ TEST(ExternalOutput, DprntRecordsGoToTheSystemLogAndDprntTxt) {
     EXPECT_TRUE(logged(panel, "dprnt_limit").empty());
 }
 
-// 300 records of 12 bytes pass a 1,000-byte limit: dprnt.txt keeps the first and the last ones, and
+// dprnt.txt is written at most once a second while a program sends; a panel closed mid-run still
+// writes what came last.
+TEST(ExternalOutput, APanelClosedMidRunWritesTheLastRecords) {
+    QTemporaryDir dir;
+    const std::filesystem::path folder = copyOfFanuc0i(dir);
+    {
+        PanelHarness panel(QString::fromStdString(folder.string()));
+        runOnPanel(panel, "late.nc", "POPEN\nDPRNT[FIRST]\nG4 P500\nDPRNT[SECOND]\nG4 P60000\nM30\n", 1.5);
+        ASSERT_EQ(logged(panel, "dprnt").size(), 2u);
+    }
+    QFile file(QString::fromStdString((folder / "dprnt.txt").string()));
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_EQ(file.readAll().toStdString(), "FIRST\nSECOND\n");
+}
+
+// 300 records of 13 bytes pass a 1,000-byte limit: dprnt.txt keeps the first and the last ones, and
 // the log still gets each of them in order, with one line saying the output reached its limit.
 TEST(ExternalOutput, PastTheLimitEveryRecordIsStillLoggedAndTheLogSaysSo) {
     QTemporaryDir dir;
@@ -62,10 +82,8 @@ TEST(ExternalOutput, PastTheLimitEveryRecordIsStillLoggedAndTheLogSaysSo) {
     ui::MachineSession::Options options;
     options.externalOutputLimit = 1000;
     PanelHarness panel(QString::fromStdString(folder.string()), options);
-    panel.loadProgram("count.nc", "POPEN\n#1=1\nWHILE[#1LE300]DO1\nDPRNT[RECORD*#1[40]]\n#1=#1+1\nEND1\n"
-                                  "PCLOS\nM30\n");
-    panel.key("START");
-    panel.advance(2.0);
+    runOnPanel(panel, "count.nc", "POPEN\n#1=1\nWHILE[#1LE300]DO1\nDPRNT[RECORD*#1[40]]\n#1=#1+1\nEND1\n"
+                                 "PCLOS\nM30\n", 2.0);
     ASSERT_FALSE(panel.session().latest()->status.alarm.has_value())
         << panel.session().latest()->status.alarm->message;
     const std::vector<config::LogEntry> records = logged(panel, "dprnt");

@@ -83,6 +83,8 @@ void SessionWorker::begin() {
 void SessionWorker::finish() {
     delete timer_;
     timer_ = nullptr;
+    keepExternalOutput();
+    saveExternalOutput(); // what came within the last second of a run still going
 }
 
 void SessionWorker::tick() {

@@ -126,6 +126,7 @@ private:
     std::optional<std::uint64_t> failedLifeRevision_;
     QString toolLifeProblem_;
     void keepExternalOutput(); // DPRNT / BPRNT records: the system log and the folder's dprnt.txt
+    void saveExternalOutput(); // dprnt.txt, when records came since it was written
     bool externalOutputUnsaved_ = false; // records came since dprnt.txt was last written
     bool externalOutputCapLogged_ = false;
     QElapsedTimer externalOutputSaved_;

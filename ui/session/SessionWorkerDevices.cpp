@@ -56,8 +56,13 @@ void SessionWorker::keepExternalOutput() {
         log_->record("dprnt_limit", QString::fromStdString(readableSize(options_.externalOutputLimit)));
     }
     externalOutputUnsaved_ = externalOutputUnsaved_ || fresh.missed > 0 || !fresh.records.empty();
-    if (!externalOutputUnsaved_ || folder_.empty() ||
-        (busy() && externalOutputSaved_.isValid() && externalOutputSaved_.elapsed() < kSaveIntervalMs)) {
+    if (!busy() || !externalOutputSaved_.isValid() || externalOutputSaved_.elapsed() >= kSaveIntervalMs) {
+        saveExternalOutput();
+    }
+}
+
+void SessionWorker::saveExternalOutput() {
+    if (!externalOutputUnsaved_ || folder_.empty()) {
         return;
     }
     externalOutputUnsaved_ = false;
