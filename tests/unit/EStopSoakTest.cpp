@@ -70,11 +70,17 @@ Census census(const controller::RunReport& r) {
             c.text += " P" + std::to_string(pocket) + ":T" + std::to_string(tool);
         }
     }
+    for (const devices::FallenTool& fallen : r.fallenTools) {
+        ++c.places[fallen.tool];
+        c.text += " table:T" + std::to_string(fallen.tool);
+    }
     return c;
 }
 
+// On the table is a place too, but no stop may put a tool there: the safe state clamps the drawbar.
 void expectEveryToolInOnePlace(const controller::RunReport& r, const std::set<int>& tools) {
     const Census now = census(r);
+    ASSERT_TRUE(r.fallenTools.empty()) << "a tool fell: " << now.text;
     for (int tool : tools) {
         auto it = now.places.find(tool);
         ASSERT_TRUE(it != now.places.end()) << "T" << tool << " is nowhere: " << now.text;
