@@ -12,7 +12,7 @@ namespace m350::gcode {
 
 BlockList::BlockList(BlockList&& other) noexcept
     : chunks_(std::move(other.chunks_)), slabs_(std::move(other.slabs_)), size_(std::exchange(other.size_, 0)),
-      capacity_(std::exchange(other.capacity_, 0)), dropped_(std::move(other.dropped_)),
+      capacity_(std::exchange(other.capacity_, 0)), chunksApart_(other.chunksApart_), dropped_(std::move(other.dropped_)),
       reloader_(std::move(other.reloader_)), cache_(std::move(other.cache_)), clock_(other.clock_) {
     other.slabs_.clear();
     other.chunks_.clear();
@@ -25,6 +25,7 @@ BlockList& BlockList::operator=(BlockList&& other) noexcept {
         slabs_ = std::move(other.slabs_);
         size_ = std::exchange(other.size_, 0);
         capacity_ = std::exchange(other.capacity_, 0);
+        chunksApart_ = other.chunksApart_;
         dropped_ = std::move(other.dropped_);
         reloader_ = std::move(other.reloader_);
         cache_ = std::move(other.cache_);
@@ -55,10 +56,17 @@ void BlockList::addSlab(std::size_t blocks) {
     capacity_ += blocks;
 }
 
-void BlockList::reserve(std::size_t count) {
-    if (count > capacity_) {
-        addSlab(count - capacity_);
+void BlockList::grow() {
+    // MDI lines and small programs fit the first chunk; beyond it, allocations of at least 2 MB
+    // come in huge pages (a page fault per 2 MB instead of per 4 KB).
+    constexpr std::size_t kChunkBytes = kChunkSize * sizeof(Block);
+    constexpr std::size_t kHugePageChunks = ((std::size_t{2} << 20) + kChunkBytes - 1) / kChunkBytes;
+    constexpr std::size_t kMostChunksAtOnce = 64;
+    if (chunksApart_ || capacity_ == 0) {
+        addSlab(kChunkSize);
+        return;
     }
+    addSlab(std::clamp<std::size_t>(capacity_, kHugePageChunks * kChunkSize, kMostChunksAtOnce * kChunkSize));
 }
 
 Block& BlockList::mutableAt(std::size_t index) {

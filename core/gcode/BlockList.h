@@ -55,12 +55,13 @@ public:
     Block& mutableAt(std::size_t index);
     const Block& at(std::size_t index) const;
 
-    // Room for `count` blocks in one allocation (the parser sizes it for the main file). Without
-    // it, blocks are allocated a chunk at a time, so that each chunk can be dropped.
-    void reserve(std::size_t count);
+    // From now on each chunk has an allocation of its own, so that it can be dropped. Otherwise
+    // the allocations grow with the list (as much as it holds, up to 64 chunks): a large program
+    // takes few of them, which are offered to huge pages (LargeAllocation).
+    void allocateChunksApart() { chunksApart_ = true; }
     void push_back(const Block& block) {
         if (size_ == capacity_) [[unlikely]] {
-            addSlab(kChunkSize);
+            grow();
         }
         // Slab memory is raw: the block is constructed in place (Block is trivially copyable).
         std::construct_at(chunks_[size_ >> kChunkBits] + (size_ & (kChunkSize - 1)), block);
@@ -121,12 +122,14 @@ private:
 
     const Block* cachedChunk(std::uint32_t chunk) const;
     void addSlab(std::size_t blocks);
+    void grow();
     void release() noexcept;
 
     std::vector<Block*> chunks_; // the chunk's first block; nullptr when dropped and not cached
     std::vector<Slab> slabs_;    // owned memory of the kept chunks
     std::size_t size_ = 0;
     std::size_t capacity_ = 0; // blocks the slabs have room for, from index 0
+    bool chunksApart_ = false;
     mutable std::vector<Dropped> dropped_; // by chunk; empty while none was dropped
     std::shared_ptr<const ChunkReloader> reloader_;
     mutable std::vector<CacheSlot> cache_;

@@ -15,18 +15,30 @@
 namespace m350::gcode {
 namespace {
 
-bool isNumberWord(const Word& w, char letter, double number) {
-    return w.letter == letter && w.isNumber() && w.number == number;
-}
+// What the passes over a file need of a block's words, found in one pass over them: whether it
+// calls an O program (M98 or G65 with a P number) and what ends the code before it (M30 M2 M99).
+struct WordFacts {
+    bool call = false;
+    const char* ends = nullptr;
+};
 
-// M98 or G65: a call whose P names an O program.
-bool isCall(const Block& block) {
+WordFacts wordFacts(const Block& block) {
+    WordFacts facts;
     for (const Word& w : block.words) {
-        if (isNumberWord(w, 'M', 98) || isNumberWord(w, 'G', 65)) {
-            return true;
+        if (!w.isNumber()) {
+            continue;
+        }
+        if (w.letter == 'M') {
+            if (w.number == 98) {
+                facts.call = true;
+            } else if (w.number == 30 || w.number == 2 || w.number == 99) {
+                facts.ends = w.number == 30 ? "M30" : w.number == 2 ? "M2" : "M99";
+            }
+        } else if (w.letter == 'G' && w.number == 65) {
+            facts.call = true;
         }
     }
-    return false;
+    return facts;
 }
 
 } // namespace
@@ -36,15 +48,6 @@ void Parser::addFile(Program& program, const std::string& path, std::string_view
     auto fileIndex = static_cast<std::uint32_t>(program.files.size());
     std::string name = std::filesystem::path(path).filename().string();
     program.files.push_back({path, name.empty() ? path : name, role, std::move(encoding)});
-    if (program.blocks.empty()) {
-        // Size for the program (the first and largest file) plus headroom for the macro libraries,
-        // so adding a library never copies a 200,000-block program.
-        auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-        if (lines < text.size() / 256) { // a file may end its lines with CR alone
-            lines = std::max(lines, static_cast<std::size_t>(std::count(text.begin(), text.end(), '\r')));
-        }
-        program.blocks.reserve(lines + 1 + 4096);
-    }
     parseFile(program, text, fileIndex, nullptr);
 }
 
@@ -78,6 +81,7 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
     BlockParser blockParser(dialect_, program, diagnostics_, program.files[fileIndex].name, fileIndex);
     std::optional<ChunkDropper> dropper;
     if (chunks) {
+        program.blocks.allocateChunksApart();
         dropper.emplace(program, std::move(chunks));
     }
     const bool checksCalls = role == FileRole::Main || role == FileRole::Mdi;
@@ -105,7 +109,8 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
             }
             continue;
         }
-        unreachable.update(*block, lineNumber);
+        const WordFacts facts = wordFacts(*block);
+        unreachable.update(*block, lineNumber, facts.ends);
         if (block->programNumber >= 0 || !unitOpen) {
             if (unitOpen) {
                 closeUnit(program, static_cast<std::uint32_t>(program.units.size() - 1));
@@ -127,7 +132,7 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
         if (block->control != Control::None) {
             flowBlocks_.push_back(index);
         }
-        if (checksCalls && isCall(*block)) {
+        if (checksCalls && facts.call) {
             callBlocks_.push_back(index);
         }
         program.blocks.push_back(*block);
@@ -148,19 +153,14 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
     }
 }
 
-void Parser::Unreachable::update(const Block& block, std::uint32_t lineNumber) {
+void Parser::Unreachable::update(const Block& block, std::uint32_t lineNumber, const char* endingWord) {
     if (block.label >= 0 || block.programNumber >= 0 || block.control == Control::End) {
         afterLine = 0; // a jump, a call or a loop's exit may land here
     }
     if (block.blockDelete) {
         return;
     }
-    const char* ends = block.control == Control::Goto ? "GOTO" : nullptr;
-    for (const Word& w : block.words) {
-        if (w.letter == 'M' && w.isNumber() && (w.number == 30 || w.number == 2 || w.number == 99)) {
-            ends = w.number == 30 ? "M30" : w.number == 2 ? "M2" : "M99";
-        }
-    }
+    const char* ends = endingWord ? endingWord : block.control == Control::Goto ? "GOTO" : nullptr;
     if (ends) {
         afterLine = lineNumber;
         what = ends;

@@ -48,7 +48,8 @@ private:
     struct Unreachable {
         std::uint32_t afterLine = 0; // the line of that block, 0 while lines are reachable
         const char* what = "";
-        void update(const Block& block, std::uint32_t lineNumber);
+        // `endingWord`: the block's M30, M2 or M99, if it has one.
+        void update(const Block& block, std::uint32_t lineNumber, const char* endingWord);
     };
     void demoteUnreachable(std::size_t firstNew, const Unreachable& unreachable);
     void closeUnit(Program& program, std::uint32_t unitIndex);
