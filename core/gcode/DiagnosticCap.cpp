@@ -38,11 +38,9 @@ void sortInReadingOrder(std::vector<Diagnostic>& diagnostics, const Program& pro
     std::stable_sort(diagnostics.begin(), diagnostics.end(), ReadingOrder{program});
 }
 
-void DiagnosticCap::trimIfLarge(std::vector<Diagnostic>& diagnostics, const Program& program) {
-    if (diagnostics.size() > 2 * (kKeepFirst + kKeepLast)) {
-        sortInReadingOrder(diagnostics, program);
-        trim(diagnostics, program);
-    }
+void DiagnosticCap::sortAndTrim(std::vector<Diagnostic>& diagnostics, const Program& program) {
+    sortInReadingOrder(diagnostics, program);
+    trim(diagnostics, program);
 }
 
 void DiagnosticCap::trim(std::vector<Diagnostic>& diagnostics, const Program& program) {

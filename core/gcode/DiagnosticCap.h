@@ -23,13 +23,18 @@ public:
     static constexpr std::size_t kKeepLast = 500;
 
     // Called as findings accumulate: past twice the bound they are sorted and the middle dropped.
-    void trimIfLarge(std::vector<Diagnostic>& diagnostics, const Program& program);
+    void trimIfLarge(std::vector<Diagnostic>& diagnostics, const Program& program) {
+        if (diagnostics.size() > 2 * (kKeepFirst + kKeepLast)) [[unlikely]] { // asked once a line
+            sortAndTrim(diagnostics, program);
+        }
+    }
     // Sorts, trims and puts the note about the left-out ones between the first and the last.
     // Order::AsFiled leaves a list that was never too long in the order its findings came.
     enum class Order { Reading, AsFiled };
     void finish(std::vector<Diagnostic>& diagnostics, const Program& program, Order order = Order::Reading);
 
 private:
+    void sortAndTrim(std::vector<Diagnostic>& diagnostics, const Program& program);
     void trim(std::vector<Diagnostic>& diagnostics, const Program& program);
     std::uint64_t omitted_ = 0;
     std::optional<Diagnostic> firstOmitted_; // in reading order, with the worst kind among them

@@ -86,10 +86,12 @@ bool Executor::mayCall(const EvaluatedBlock& block) const {
             break;
         case 'G':
         case 'M': {
-            if (!wholeNumber(w.value)) {
+            // Most codes are written as whole numbers (G1 is 1.0 exactly): no rounding needed.
+            const bool exact = w.value >= 0 && w.value < 65536 && w.value == static_cast<double>(static_cast<int>(w.value));
+            if (!exact && !wholeNumber(w.value)) {
                 break;
             }
-            const auto code = static_cast<int>(std::round(w.value)); // 0-65535: rounded once per word
+            const auto code = exact ? static_cast<int>(w.value) : static_cast<int>(std::round(w.value));
             if ((w.letter == 'G' && code == 65) || (w.letter == 'M' && (code == 98 || code == 99)) ||
                 (!options_.codePrograms.empty() && options_.codePrograms.count({w.letter, code}) != 0) ||
                 handlerFor(w.letter, code)) {
