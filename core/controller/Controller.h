@@ -36,11 +36,11 @@
 namespace m350::gcode {
 class Parser;
 struct SourceText;
-}
+} // namespace m350::gcode
 
 namespace m350::controller {
 
-// The one façade the CLI (and later the panel) uses: load a program with the machine's macro
+// The one façade the CLI and the panel's session use: load a program with the machine's macro
 // libraries, run it in virtual time, inspect the result. Owns the machine, the interpreter, the
 // variables and the executor; implements the machine-side variables for the macro layer.
 class Controller : public macro::MachineAccess, public machine::MachineObserver {
@@ -333,10 +333,9 @@ private:
     void watchSpindleLoad(const machine::MachineEvent& event);
     void enterSafeState();
     void stepOnce();
-    // True once what started at machine time `since` (a run, a hook, homing) has run longer than
+    // True once what started at machine time `since` (a run, a hook, homing) ran longer than
     // --max-sim-time (or the clock went nan); the move or dwell under way is then stopped where the
-    // limit found it, so the report shows that moment. A controller that has simulated hours
-    // before still gives each run the whole limit.
+    // limit found it, so the report shows that moment. Each run gets the whole limit.
     bool passedTimeLimit(double since);
     // Stops the motion under way at virtual time t (SimulatedMachine::interrupt); the magazine
     // learns where a move it was told of really stopped.
