@@ -45,10 +45,14 @@ WordFacts wordFacts(const Block& block) {
 
 void Parser::addFile(Program& program, const std::string& path, std::string_view text, FileRole role,
                      std::string encoding) {
+    parseFile(program, text, addFileEntry(program, path, role, std::move(encoding)), nullptr);
+}
+
+std::uint32_t Parser::addFileEntry(Program& program, const std::string& path, FileRole role, std::string encoding) {
     auto fileIndex = static_cast<std::uint32_t>(program.files.size());
     std::string name = std::filesystem::path(path).filename().string();
     program.files.push_back({path, name.empty() ? path : name, role, std::move(encoding)});
-    parseFile(program, text, fileIndex, nullptr);
+    return fileIndex;
 }
 
 void Parser::addSource(Program& program, const SourceText& source, FileRole role) {
@@ -67,9 +71,7 @@ void Parser::addSource(Program& program, const SourceText& source, FileRole role
         addFile(program, source.path, source.text, role, encoding);
         return;
     }
-    auto fileIndex = static_cast<std::uint32_t>(program.files.size());
-    std::string name = std::filesystem::path(source.path).filename().string();
-    program.files.push_back({source.path, name.empty() ? source.path : name, role, encoding});
+    const std::uint32_t fileIndex = addFileEntry(program, source.path, role, encoding);
     parseFile(program, source.text, fileIndex,
               std::make_shared<ChunkSource>(dialect_, program.files.back().name, fileIndex, source.text,
                                             source.storage, source.mapping));

@@ -40,6 +40,7 @@ public:
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
 private:
+    std::uint32_t addFileEntry(Program& program, const std::string& path, FileRole role, std::string encoding);
     void parseFile(Program& program, std::string_view text, std::uint32_t fileIndex,
                    std::shared_ptr<ChunkSource> chunks);
 
