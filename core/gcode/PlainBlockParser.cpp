@@ -8,19 +8,35 @@ namespace m350::gcode {
 
 namespace {
 
+// What a character is to the fast path, looked up once instead of tested by ranges.
+enum : std::uint8_t { kSpace = 1, kLetter = 2, kEndsNumber = 4 };
+constexpr std::array<std::uint8_t, 256> kClasses = [] {
+    std::array<std::uint8_t, 256> table{};
+    for (char c : {' ', '\t', '\r', '\n'}) {
+        table[static_cast<unsigned char>(c)] = kSpace | kEndsNumber;
+    }
+    for (int c = 'A'; c <= 'Z'; ++c) {
+        table[static_cast<std::size_t>(c)] = kLetter | kEndsNumber;
+        table[static_cast<std::size_t>(c + ('a' - 'A'))] = kLetter | kEndsNumber;
+    }
+    // What may follow a number: a space, a letter other than E (`P1E3` is an error the full parser
+    // explains), a comment or a '/' (of `//`).
+    table['E'] = table['e'] = kLetter;
+    table['('] = table[';'] = table['/'] = kEndsNumber;
+    return table;
+}();
+
 bool isLetter(char c) {
-    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+    return (kClasses[static_cast<unsigned char>(c)] & kLetter) != 0;
 }
 bool isSpace(char c) {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+    return (kClasses[static_cast<unsigned char>(c)] & kSpace) != 0;
 }
 bool isDigit(char c) {
     return static_cast<unsigned>(c - '0') < 10u;
 }
-// What may follow a number: a space, a letter other than E (`P1E3` is an error the full parser
-// explains), a comment or a '/' (of `//`).
 bool endsNumber(char c) {
-    return isSpace(c) || (isLetter(c) && (c | 0x20) != 'e') || c == '(' || c == ';' || c == '/';
+    return (kClasses[static_cast<unsigned char>(c)] & kEndsNumber) != 0;
 }
 
 struct PlainWord {
