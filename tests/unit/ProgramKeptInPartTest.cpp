@@ -14,6 +14,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <random>
 #include <string>
 #include <variant>
 #include <vector>
@@ -137,6 +138,112 @@ TEST(ProgramKeptInPart, DroppedChunksReadAgainAsTheyWereParsed) {
         ASSERT_EQ(kept.location.line, whole.blocks[i].location.line) << i;
     }
     EXPECT_EQ(inPart.units.size(), whole.units.size());
+    std::remove(path.c_str());
+}
+
+// Random programs of every kind of line, each kind at random places, so chunk boundaries fall
+// everywhere: inside `/* */` comments, between CR and LF, on labels, on macro lines. Macro lines
+// are rare (a chunk with one stays whole), as in CAM output with a few macro statements.
+std::string randomProgram(std::mt19937& random) {
+    std::uniform_int_distribution<int> kind(0, 99);
+    std::uniform_int_distribution<int> rare(0, 9999);
+    std::string text;
+    int loops = 0;
+    const int lines = 20000 + static_cast<int>(random() % 4000);
+    for (int i = 0; i < lines; ++i) {
+        int k = kind(random);
+        if (k >= 77 && k < 86) {
+            k = 90; // macro lines only from `rare`
+        }
+        if (rare(random) == 0) {
+            k = 77 + static_cast<int>(random() % 3) * 3; // an assignment, a loop or an expression
+        }
+        const char* end = k % 17 == 0 ? "\r" : k % 13 == 0 ? "\r\n" : "\n";
+        if (k < 60) {
+            text += g1(i);
+        } else if (k < 65) {
+            text += "N" + std::to_string(i + 1) + " " + g1(i);
+        } else if (k < 70) {
+            text += "(a comment " + std::to_string(i) + ")";
+        } else if (k < 74) {
+            text += "";
+        } else if (k < 76) {
+            text += g1(i) + " /* runs on";
+            text += end;
+            text += "over " + std::to_string(i) + " lines";
+            text += end;
+            text += "*/ G0 Z" + std::to_string(i % 50);
+        } else if (k < 77) {
+            text += "/" + g1(i);
+        } else if (k < 80) {
+            text += "#" + std::to_string(100 + i % 50) + " = " + std::to_string(i) + " * 2";
+        } else if (k < 83 && loops < 40) {
+            ++loops;
+            text += "#1 = 0";
+            text += end;
+            text += "WHILE [#1 LT 2] DO1";
+            text += end;
+            text += g1(i);
+            text += end;
+            text += "#1 = #1 + 1";
+            text += end;
+            text += "END1";
+        } else if (k < 86) {
+            text += "G1 X[" + std::to_string(i % 9) + " + 1] F500"; // an expression
+        } else {
+            text += g1(i) + " (after " + std::to_string(i) + ")";
+        }
+        text += end;
+    }
+    text += "M30\n";
+    return text;
+}
+
+TEST(ProgramKeptInPart, RandomProgramsReadAgainAsTheyWereParsed) {
+    std::mt19937 random(20261124);
+    for (int round = 0; round < 4; ++round) {
+        SCOPED_TRACE("round " + std::to_string(round));
+        const std::string text = randomProgram(random);
+        const std::string path = writeFile(text);
+        const Program whole = parseWhole(text);
+        const Program inPart = parseInPart(path);
+        ASSERT_EQ(whole.blocks.size(), inPart.blocks.size());
+        EXPECT_GE(inPart.blocks.droppedChunks(), 1u);
+        std::uniform_int_distribution<std::size_t> anyBlock(0, whole.blocks.size() - 1);
+        for (int n = 0; n < 4000; ++n) { // random order: chunks leave and come back to the cache
+            const std::size_t i = anyBlock(random);
+            expectSameBlock(whole.blocks[i], inPart.blocks[i], i);
+            if (::testing::Test::HasFailure()) {
+                break;
+            }
+        }
+        std::remove(path.c_str());
+    }
+}
+
+// The first block of chunk 1 is on the line that closes a `/* */` comment: parsed again alone, that
+// line would read `*/` as code, so the chunk must stay.
+TEST(ProgramKeptInPart, AChunkThatStartsInsideACommentStays) {
+    std::string text;
+    for (int i = 0; i + 1 < static_cast<int>(kChunk); ++i) {
+        text += g1(i) + "\n";
+    }
+    text += "G1 X1 /* the last block of chunk 0 opens a comment\n";
+    text += "G0 X999 (inside it: no block)\n";
+    text += "*/ G1 X5 Y5\n"; // the first block of chunk 1
+    for (int i = 0; i < static_cast<int>(kChunk); ++i) {
+        text += g1(i) + "\n";
+    }
+    text += "M30\n";
+    const std::string path = writeFile(text);
+    const Program whole = parseWhole(text);
+    const Program inPart = parseInPart(path);
+    ASSERT_EQ(whole.blocks.size(), inPart.blocks.size());
+    EXPECT_EQ(inPart.blocks.droppedChunks(), 1u); // chunk 0 only; chunk 2 is not full
+    for (std::size_t i = kChunk - 2; i < 2 * kChunk + 1; ++i) {
+        expectSameBlock(whole.blocks[i], inPart.blocks[i], i);
+    }
+    EXPECT_EQ(inPart.blocks[kChunk].words[1].number, 5.0);
     std::remove(path.c_str());
 }
 
