@@ -35,18 +35,31 @@ bool Controller::startAtLine(std::uint32_t line, std::string* why) {
     if (!unit) {
         return refuse(why, "no program file is loaded");
     }
+    // The file's blocks are consecutive and in line order (it is parsed in one go): a binary search
+    // finds the line without reading every block (a 1 GB program keeps most of them on disk).
     const std::uint32_t file = program_.units[*unit].file;
-    std::uint32_t last = 0;
+    std::uint32_t begin = program_.units[*unit].begin;
+    std::uint32_t end = begin;
+    for (const gcode::ProgramUnit& u : program_.units) {
+        if (u.file == file) {
+            begin = std::min(begin, u.begin);
+            end = std::max(end, u.end);
+        }
+    }
+    const std::uint32_t last = end > begin ? program_.blocks[end - 1].location.line : 0;
     std::optional<std::uint32_t> found;
-    for (std::uint32_t b = 0; b < program_.blocks.size(); ++b) {
-        const gcode::SourceLocation& where = program_.blocks[b].location;
-        if (where.file != file) {
-            continue;
+    std::uint32_t low = begin;
+    std::uint32_t high = end;
+    while (low < high) {
+        const std::uint32_t middle = low + (high - low) / 2;
+        if (program_.blocks[middle].location.line < line) {
+            low = middle + 1;
+        } else {
+            high = middle;
         }
-        last = std::max(last, where.line);
-        if (!found && where.line >= line) {
-            found = b;
-        }
+    }
+    if (low < end) {
+        found = low;
     }
     const std::string name = program_.files[file].name;
     if (line == 0 || !found) {

@@ -287,6 +287,33 @@ TEST(ProgramKeptInPart, ARunIsTheSameAsWithTheProgramKeptWhole) {
     EXPECT_EQ(b.number(101), 3.0);
 }
 
+// Start at a line (断点 / the panel's start at line): found by a binary search over the blocks,
+// most of which are on disk; the run from there is the same as with the program kept whole.
+TEST(ProgramKeptInPart, StartingAtALineIsTheSameAsWithTheProgramKeptWhole) {
+    const std::string text = loopingProgram();
+    controller::RunSettings whole;
+    whole.maxSimTime = 1e9;
+    controller::RunSettings inPart = whole;
+    inPart.programKeptWholeUpTo = 0;
+    std::vector<controller::RunReport> reports;
+    for (const controller::RunSettings& settings : {whole, inPart}) {
+        const std::string path = test::writeTempFile(text);
+        controller::Controller c(test::m350Machine(), settings);
+        ASSERT_TRUE(c.loadFile(path));
+        std::string why;
+        EXPECT_FALSE(c.startAtLine(40000, &why));
+        EXPECT_NE(why.find("its blocks are on lines 1-"), std::string::npos) << why;
+        ASSERT_TRUE(c.startAtLine(15000, &why)) << why; // in the fourth chunk
+        EXPECT_EQ(c.advance(1e9), controller::Controller::RunState::Finished);
+        reports.push_back(c.snapshot());
+        std::remove(path.c_str());
+    }
+    EXPECT_EQ(reports[0].blocks, reports[1].blocks);
+    EXPECT_EQ(reports[0].simTime, reports[1].simTime);
+    EXPECT_TRUE(reports[0].machine == reports[1].machine);
+    EXPECT_GT(reports[1].blocks, 3 * 6 * kChunk); // started mid-loop, then looped back to N100
+}
+
 TEST(ProgramKeptInPart, AFileChangedWhileItRunsStopsTheRunAndSaysSo) {
     controller::RunSettings settings;
     settings.programKeptWholeUpTo = 0;
