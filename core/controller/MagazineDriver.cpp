@@ -219,7 +219,6 @@ void MagazineDriver::driveInPosition(double now, double seconds) {
 void MagazineDriver::onMachineEvent(const machine::MachineEvent& event) {
     using Type = machine::MachineEvent::Type;
     std::optional<std::string> crash;
-    const double now = context_.machine.time();
     switch (event.type) {
     case Type::Rapid:
     case Type::Feed:
@@ -229,7 +228,7 @@ void MagazineDriver::onMachineEvent(const machine::MachineEvent& event) {
         break;
     case Type::Io:
         if (event.port > 0) {
-            crash = output(event.port, event.level, now);
+            crash = output(event.port, event.level, context_.machine.time());
         }
         break;
     case Type::Spindle:

@@ -19,8 +19,9 @@ bool Controller::manageTools(std::vector<macro::WordValue>& words) {
 // be left out here too (the FANUC 0i manual excludes it).
 void Controller::countCuttingTime(const machine::MachineEvent& event) {
     using Type = machine::MachineEvent::Type;
-    if (state_ == RunState::Running && (event.type == Type::Feed || event.type == Type::Arc) && executor_ &&
-        !executor_->changingTool()) {
+    // Most programs run with no tool life group in use: nothing to count, no need to ask the executor.
+    if (state_ == RunState::Running && (event.type == Type::Feed || event.type == Type::Arc) && toolLife_.inUse() &&
+        executor_ && !executor_->changingTool()) {
         toolLife_.cut(event.start, event.end);
     }
 }

@@ -129,13 +129,16 @@ int LinearRack::pocketAt(const Vector3d& p) const {
 
 std::optional<std::string> LinearRack::move(const Vector3d& from, const Vector3d& to, bool rapid,
                                             bool spindleTurning, double /*at: a fixed rack does not change*/) {
-    if ((to - from).norm() < kStill) {
+    if ((to - from).squaredNorm() < kStill * kStill) {
+        return std::nullopt;
+    }
+    if (engaged_ == 0 && (!envelope_ || !crosses(*envelope_, from, to))) {
+        // Far from the rack: nothing to hit, nothing to engage, and no part of the move that
+        // stoppedAt would have to take again.
+        lastMove_.reset();
         return std::nullopt;
     }
     lastMove_ = MoveUnderWay{from, rapid, spindleTurning, engaged_};
-    if (engaged_ == 0 && (!envelope_ || !crosses(*envelope_, from, to))) {
-        return std::nullopt; // far from the rack: nothing to hit, nothing to engage
-    }
     for (int k = 1; rapid && k <= pocketCount(); ++k) {
         if (crosses(zoneOf(k), from, to)) {
             return "rapid move through the magazine zone at " + pocket(k) + ", from " + at(from) + " to " + at(to) +
