@@ -313,7 +313,7 @@ public:
     const machine::ToolWorld& toolWorld() const { return world_; }
 
     // macro::MachineAccess
-    bool manageTools(std::vector<macro::WordValue>& words) override;
+    bool manageTools(macro::EvaluatedBlock& block) override;
     macro::Value readSystem(const macro::VariableInfo& info, int number) override;
     std::optional<std::string> writeSystem(const macro::VariableInfo& info, int number, double value,
                                            std::string_view text) override;

@@ -4,6 +4,7 @@
 #include "core/config/ParameterNumbers.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace m350::interp {
@@ -106,7 +107,28 @@ int ModalInterpreter::activeSlot() const {
     return state_.group(14) - 53;
 }
 
+ModalInterpreter::OffsetInputs ModalInterpreter::offsetInputs(std::optional<int> zParameter) const {
+    auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+    return {offsets_.version(),
+            {bits(parameters_.get(param::kCurrentWorkSystem)), bits(parameters_.get(param::kCurrentTool)),
+             bits(parameters_.get(param::kMagazineCapacity)), bits(zParameter ? parameters_.get(*zParameter) : 0.0),
+             bits(state_.groups[6]), bits(state_.groups[8]), bits(state_.groups[14]), bits(state_.lengthOffsetValue)}};
+}
+
 machine::Axes ModalInterpreter::workOffset() const {
+    OffsetCache& cache = offsetCache_;
+    if (!cache.known || offsetInputs(cache.zParameter) != cache.inputs) {
+        cache.zParameter = dialect_.id == gcode::DialectId::M350
+                               ? tools::m350ZParameter(currentTool(), parameters_)
+                               : std::nullopt;
+        cache.inputs = offsetInputs(cache.zParameter);
+        cache.offset = computeWorkOffset();
+        cache.known = true;
+    }
+    return cache.offset;
+}
+
+machine::Axes ModalInterpreter::computeWorkOffset() const {
     machine::Axes offset = offsets_.slot(activeSlot()) + offsets_.slot(WorkOffsets::kG52) +
                            offsets_.slot(WorkOffsets::kCommon);
     if (dialect_.id == gcode::DialectId::Fanuc) {
@@ -132,10 +154,7 @@ macro::BlockSink::CycleContext ModalInterpreter::cycleContext() const {
     return context;
 }
 
-std::optional<ModalInterpreter::OperatorStop> ModalInterpreter::takeStop() {
-    if (!stop_) {
-        return std::nullopt; // asked after every block: most leave none
-    }
+std::optional<ModalInterpreter::OperatorStop> ModalInterpreter::takeMadeStop() {
     std::optional<OperatorStop> out;
     out.swap(stop_);
     return out;

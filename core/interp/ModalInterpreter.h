@@ -53,6 +53,7 @@ public:
     // The active system's slot in WorkOffsets (1..6 for G54..G59; 0 for the M350's G92 system).
     int activeSlot() const;
     // Total offset between machine and work coordinates for each axis, tool Z offset included.
+    // Kept from block to block and computed again when what it is computed from changed.
     machine::Axes workOffset() const;
     machine::Axes workPosition() const;
     // The Z offset of the tool in the spindle (M350: params 930-945, virtual tools 973-992).
@@ -81,7 +82,12 @@ public:
         std::string what;                  // "M00 program stop"
         gcode::SourceLocation location;    // the block that stopped
     };
-    std::optional<OperatorStop> takeStop();
+    std::optional<OperatorStop> takeStop() {
+        if (!stop_) [[likely]] {
+            return std::nullopt; // asked after every block: most leave none
+        }
+        return takeMadeStop();
+    }
 
     // The look-ahead and contour-control modes the last blocks switched (FANUC `G05.1 Q1`, `G08 P0`,
     // `G05 P10000`), as written, for the trace; they change no geometry (LookAheadCodes.cpp).
@@ -153,6 +159,7 @@ private:
     double feedRate(std::uint32_t column) const; // mm/min, from F and (G95) the spindle speed
     [[noreturn]] static void invalid(const macro::WordValue& w, std::string why);
     void stopForOperator(OperatorStop::Kind kind, std::string what);
+    std::optional<OperatorStop> takeMadeStop();
     bool compensating() const;
     // The compensation plane's axes (u, v), u x v along its normal.
     struct PlaneAxes {
@@ -177,6 +184,23 @@ private:
     void runCycle(const DrillingCycle& cycle, const std::vector<machine::Axes>& holes, const Words& words);
     std::uint32_t cycleColumn(const Words& words) const;
 
+    // What workOffset() is computed from, as bit patterns (so -0.0 and NaN compare exactly): the
+    // offsets' version, the M350's work system, tool, magazine capacity and that tool's Z offset
+    // parameters, the units, tool length mode, work system and latched length of the modal state.
+    struct OffsetInputs {
+        std::uint64_t offsetsVersion = 0;
+        std::array<std::uint64_t, 8> values{};
+        bool operator==(const OffsetInputs&) const = default;
+    };
+    struct OffsetCache {
+        bool known = false;
+        OffsetInputs inputs;
+        std::optional<int> zParameter; // of the tool in inputs
+        machine::Axes offset = machine::Axes::Zero();
+    };
+    OffsetInputs offsetInputs(std::optional<int> zParameter) const;
+    machine::Axes computeWorkOffset() const;
+
     const gcode::Dialect& dialect_;
     config::ParameterTable& parameters_;
     WorkOffsets& offsets_;
@@ -184,6 +208,7 @@ private:
     machine::MachineInterface& machine_;
     ModalState state_;
     Words words_;
+    mutable OffsetCache offsetCache_;
     std::optional<OperatorStop> stop_;
     std::vector<std::string> lookAheadChanges_;
     const gcode::Block* block_ = nullptr; // the block being executed

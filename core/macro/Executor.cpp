@@ -43,6 +43,7 @@ void Executor::indexHandlers() {
     if (dialect_.tCodeProgram >= 0) {
         tCodeUnit_ = program_.findUnit(dialect_.tCodeProgram);
     }
+    indexCallingCodes();
 }
 
 bool Executor::start(std::uint32_t unit) {

@@ -46,7 +46,7 @@ public:
     std::size_t callDepth() const { return frames_.size(); }
     // Whether a tool change program runs: the M350's T program (O20000) or the machine's M06
     // handler (FANUC's O9001). Its moves carry the tool, they do not cut with it.
-    bool changingTool() const;
+    bool changingTool() const { return frames_.size() > 1 && changingToolInCall(); } // asked for every move
     std::uint64_t blocksExecuted() const { return blocksExecuted_; }
     // The main program's side of the run, for 断点加工: the block of the started unit that runs
     // now (the call that is running, when inside one), how many of its blocks have started, and
@@ -80,6 +80,9 @@ private:
     void executeOrdinary(const gcode::Block& block, std::size_t frameIndex);
     void executeDeviceStatement(const gcode::Block& block); // ExecutorStatements.cpp
     bool mayCall(const EvaluatedBlock& block) const;
+    bool otherCodeMayCall(const EvaluatedBlock& block) const;
+    void indexCallingCodes();
+    bool changingToolInCall() const;
     bool sendToSink(const EvaluatedBlock& block, std::size_t frameIndex);
     void jumpToLabel(std::size_t frameIndex, double label, std::uint32_t column);
     void returnFromFrame(std::optional<double> label, std::uint32_t column, bool explicitM99);
@@ -111,6 +114,8 @@ private:
     std::vector<std::int32_t> gHandlers_;
     std::vector<std::int32_t> mHandlers_;
     std::optional<std::uint32_t> tCodeUnit_;
+    CodeBits callingG_; // whole codes that start a call (indexCallingCodes)
+    CodeBits callingM_;
     State state_ = State::Idle;
     std::optional<Alarm> alarm_;
     std::uint32_t current_ = 0;

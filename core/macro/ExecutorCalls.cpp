@@ -36,7 +36,7 @@ int builtInHomingAxis(std::vector<WordValue>& words, std::uint32_t column) {
 
 } // namespace
 
-bool Executor::changingTool() const {
+bool Executor::changingToolInCall() const {
     return handlingCode(codeKey('T', 0)) || handlingCode(codeKey('M', 6));
 }
 
@@ -71,19 +71,41 @@ std::optional<std::uint32_t> Executor::handlerFor(char letter, int code) const {
     return program_.findHandler(*handler, letter == 'M' ? gcode::FileRole::MLibrary : gcode::FileRole::GLibrary);
 }
 
+// The whole codes 0-127 that start a call (G65, M98, M99, the machine's mapped codes and those
+// with handler programs), so that mayCall() meets a block's codes with them in two tests.
+void Executor::indexCallingCodes() {
+    for (int code = 0; code < CodeBits::kCodes; ++code) {
+        auto calls = [this, code](char letter) {
+            return options_.codePrograms.count({letter, code}) != 0 || handlerFor(letter, code).has_value();
+        };
+        if (code == 65 || calls('G')) {
+            callingG_.add(code);
+        }
+        if (code == 98 || code == 99 || calls('M')) {
+            callingM_.add(code);
+        }
+    }
+}
+
 // Whether any word of the block may start a call; most blocks (G1 X.. Y..) do not, and skip the
 // call planning below.
 bool Executor::mayCall(const EvaluatedBlock& block) const {
     if (handlerCycle_ && !handlingCode(handlerCycle_->key)) {
         return true; // a block may repeat or end the modal cycle
     }
+    if (block.has('T') && tCodeUnit_ && !handlingCode(codeKey('T', 0))) {
+        return true;
+    }
+    if (block.otherCodes) {
+        return otherCodeMayCall(block);
+    }
+    return block.gCodes.meets(callingG_) || block.mCodes.meets(callingM_);
+}
+
+// A block with a G or M word that is not a whole code 0-127: each word asked in turn.
+bool Executor::otherCodeMayCall(const EvaluatedBlock& block) const {
     for (const WordValue& w : block.words) {
         switch (w.letter) {
-        case 'T':
-            if (tCodeUnit_ && !handlingCode(codeKey('T', 0))) {
-                return true;
-            }
-            break;
         case 'G':
         case 'M': {
             // Most codes are written as whole numbers (G1 is 1.0 exactly): no rounding needed.
@@ -136,19 +158,18 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         return;
     }
     EvaluatedBlock& evaluated = scratch_; // reused: executing a block allocates nothing
-    evaluated.source = &block;
-    evaluated.words.clear();
+    evaluated.clear(block);
     for (const gcode::Word& w : block.words) {
         if (w.isNumber()) {
-            evaluated.words.push_back({w.letter, w.number, w.column});
+            evaluated.add(w.letter, w.number, w.column);
             continue;
         }
         Value v = evaluator_.evaluate(w.value);
         if (!v.vacant) { // FANUC: an address whose value is vacant is as if not written
-            evaluated.words.push_back({w.letter, v.number, w.column});
+            evaluated.add(w.letter, v.number, w.column);
         }
     }
-    if (machine_.manageTools(evaluated.words)) {
+    if (machine_.manageTools(evaluated)) {
         ++frames_[frameIndex].pc;
         return;
     }

@@ -39,8 +39,8 @@ public:
     // The machine's tool management sees each block's words before the executor takes its calls
     // out (tool life management: a group's T becomes its tool, H99/D99, the tool change, G10 L3 ..
     // G11 data). True when it took the whole block; throws MacroError to refuse it.
-    virtual bool manageTools(std::vector<WordValue>& words) {
-        (void)words;
+    virtual bool manageTools(EvaluatedBlock& block) {
+        (void)block;
         return false;
     }
 };

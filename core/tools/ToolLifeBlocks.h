@@ -3,7 +3,6 @@
 #include "core/macro/BlockSink.h"
 #include "core/tools/ToolLifeManager.h"
 
-#include <vector>
 
 namespace m350::tools {
 
@@ -18,7 +17,6 @@ struct ToolLifeBlockContext {
 };
 
 // True when the block was tool life data and nothing else is to be done with it.
-bool applyToolLife(ToolLifeManager& manager, std::vector<macro::WordValue>& words,
-                   const ToolLifeBlockContext& context);
+bool applyToolLife(ToolLifeManager& manager, macro::EvaluatedBlock& block, const ToolLifeBlockContext& context);
 
 } // namespace m350::tools
