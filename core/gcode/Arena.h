@@ -51,6 +51,22 @@ public:
         return {at, count};
     }
 
+    // Room for up to `most` Ts at the end of the arena, to be written in place (with
+    // std::construct_at) while their count is not yet known; keep() then hands out the first ones.
+    // Nothing written there is kept without keep(), and the next reserve or allocate reuses it.
+    T* reserve(std::size_t most) {
+        if (most > capacity_ - used_) {
+            addChunk(most);
+        }
+        return current_ + used_;
+    }
+    // The first `count` Ts of the room reserve() gave, constructed by the caller.
+    std::span<T> keep(std::size_t count) {
+        T* at = current_ + used_;
+        used_ += count;
+        return {at, count};
+    }
+
     // Where the arena stands, to give back everything allocated after it (the parser drops the
     // words of a chunk of plain lines it will re-parse when they run).
     struct Mark {

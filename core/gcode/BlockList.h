@@ -60,13 +60,19 @@ public:
     // takes few of them, which are offered to huge pages (LargeAllocation).
     void allocateChunksApart() { chunksApart_ = true; }
     void push_back(const Block& block) {
+        // Slab memory is raw: the block is constructed in place (Block is trivially copyable).
+        std::construct_at(&nextSlot(), block);
+        addNextSlot();
+    }
+    // Where the next block goes (raw memory), for the parser to build it in place; addNextSlot()
+    // then adds it. What is written there without addNextSlot() is overwritten by the next block.
+    Block& nextSlot() {
         if (size_ == capacity_) [[unlikely]] {
             grow();
         }
-        // Slab memory is raw: the block is constructed in place (Block is trivially copyable).
-        std::construct_at(chunks_[size_ >> kChunkBits] + (size_ & (kChunkSize - 1)), block);
-        ++size_;
+        return chunks_[size_ >> kChunkBits][size_ & (kChunkSize - 1)];
     }
+    void addNextSlot() { ++size_; }
 
     // Drops a full chunk allocated on its own: its blocks come back from `reloader` when looked
     // up. False (and nothing changes) when the chunk shares its memory with others.

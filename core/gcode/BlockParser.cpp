@@ -6,6 +6,7 @@
 #include "core/gcode/PlainBlockParser.h"
 
 #include <cmath>
+#include <memory>
 
 namespace m350::gcode {
 
@@ -14,15 +15,30 @@ BlockParser::BlockParser(const Dialect& dialect, BlockStorage& storage, std::vec
     : dialect_(dialect), storage_(storage), pool_(storage.expressions), diagnostics_(diagnostics),
       fileName_(std::move(fileName)), fileIndex_(fileIndex) {}
 
-std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lineNumber) {
+bool BlockParser::parse(std::string_view line, std::uint32_t lineNumber, Block& out, LineEnd lineEnd) {
     if (plainPath_ && !comment_.open) {
-        Block plain;
-        switch (parsePlainBlock(line, dialect_, {fileIndex_, lineNumber, 0}, storage_, plain)) {
-        case PlainResult::Parsed: return plain;
-        case PlainResult::Empty: return std::nullopt;
+        switch (parsePlainBlock(line, dialect_, {fileIndex_, lineNumber, 0}, storage_, out, lineEnd)) {
+        case PlainResult::Parsed: return true;
+        case PlainResult::Empty: return false;
         case PlainResult::Declined: break;
         }
     }
+    std::optional<Block> block = parseGeneral(line, lineNumber);
+    if (block) {
+        std::construct_at(&out, *block);
+    }
+    return block.has_value();
+}
+
+std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lineNumber) {
+    Block block;
+    if (parse(line, lineNumber, block)) {
+        return block;
+    }
+    return std::nullopt;
+}
+
+std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint32_t lineNumber) {
     line_ = line;
     lineNumber_ = lineNumber;
     Lexer(dialect_).tokenize(line, tokens_, comment_);

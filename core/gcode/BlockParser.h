@@ -6,6 +6,7 @@
 #include "core/gcode/Diagnostic.h"
 #include "core/gcode/Expression.h"
 #include "core/gcode/Lexer.h"
+#include "core/gcode/PlainBlockParser.h"
 #include "core/gcode/Token.h"
 
 #include <optional>
@@ -28,7 +29,10 @@ public:
     BlockParser(const Dialect& dialect, BlockStorage& storage, std::vector<Diagnostic>& diagnostics,
                 std::string fileName, std::uint32_t fileIndex);
 
-    // Returns nothing for a line without content (blank, comment only, `%`) or with a syntax error.
+    // Writes the line's block to `out` (which may be raw memory, such as the next slot of a
+    // BlockList); false, and `out` untouched, for a line without content (blank, comment only, `%`)
+    // or with a syntax error. LineEnd::Follows lets plain lines be read in place.
+    bool parse(std::string_view line, std::uint32_t lineNumber, Block& out, LineEnd lineEnd = LineEnd::Unknown);
     std::optional<Block> parse(std::string_view line, std::uint32_t lineNumber);
 
     // Plain-word lines take a fast path by default; tests turn it off to compare both paths.
@@ -47,6 +51,8 @@ public:
 
 private:
     struct Failure {};
+
+    std::optional<Block> parseGeneral(std::string_view line, std::uint32_t lineNumber);
 
     static constexpr int kLookahead = 2; // peek(1) and peek(2) are the farthest the grammar looks
     const Token& peek(std::size_t ahead = 0) const;

@@ -40,9 +40,9 @@ bool ChunkSource::reload(std::uint32_t chunk, std::span<Block> out, BlockStorage
     std::size_t filled = 0;
     bool same = true;
     while (filled < out.size() && lines.next(line)) {
-        if (auto block = parser.parse(line, lineNumber)) {
-            same = same && isPlainBlock(*block);
-            out[filled++] = *block;
+        if (parser.parse(line, lineNumber, out[filled], lines.lineEnd())) {
+            same = same && isPlainBlock(out[filled]);
+            ++filled;
         }
         ++lineNumber;
     }

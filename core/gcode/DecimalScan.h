@@ -5,44 +5,21 @@
 
 namespace m350::gcode {
 
-// Scans the digits and points of a number starting at text[i] (advancing i past them) and converts
-// plain decimals on the way: when the digits form an integer below 2^53 (at most 15 significant
-// digits) with at most 22 after one point, mantissa / 10^k is a single correctly rounded division
-// and equals what from_chars gives (Clinger's fast path). Returns false when the number needs the
-// general conversion (or is malformed, like 1.2.3); i is then still past the digits and points.
-inline bool scanDecimal(const char* text, std::size_t size, std::size_t& i, double& value) {
+namespace decimal {
+
+// mantissa / 10^fraction as a double, when that is a single correctly rounded division and so
+// equals what from_chars gives (Clinger's fast path): the digits [start, end) (the point among
+// them) form an integer below 2^53 (at most 15 significant digits), with at most 22 after the point.
+inline bool convertExactly(const char* start, const char* end, std::size_t digits, std::size_t fraction,
+                           std::uint64_t mantissa, double& value) {
     static constexpr double kPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                               1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                               1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-    auto digit = [](char c) { return static_cast<unsigned>(c - '0') < 10u; };
-    const std::size_t start = i;
-    std::uint64_t mantissa = 0;
-    while (i < size && digit(text[i])) {
-        mantissa = mantissa * 10 + static_cast<std::uint64_t>(text[i] - '0');
-        ++i;
-    }
-    std::size_t fraction = 0;
-    const bool point = i < size && text[i] == '.';
-    if (point) {
-        const std::size_t point = ++i;
-        while (i < size && digit(text[i])) {
-            mantissa = mantissa * 10 + static_cast<std::uint64_t>(text[i] - '0');
-            ++i;
-        }
-        fraction = i - point;
-        if (i < size && text[i] == '.') { // 1.2.3: take the rest of the token, then refuse it
-            while (i < size && (digit(text[i]) || text[i] == '.')) {
-                ++i;
-            }
-            return false;
-        }
-    }
-    const std::size_t digits = i - start - (point ? 1 : 0);
     if (digits > 15) {
         // Leading zeros do not count, but more than 15 significant digits may not fit 2^53.
         std::size_t significant = digits;
-        for (std::size_t k = start; k < i && (text[k] == '0' || text[k] == '.'); ++k) {
-            significant -= text[k] == '0' ? 1 : 0;
+        for (const char* k = start; k < end && (*k == '0' || *k == '.'); ++k) {
+            significant -= *k == '0' ? 1 : 0;
         }
         if (significant > 15) {
             return false;
@@ -56,6 +33,79 @@ inline bool scanDecimal(const char* text, std::size_t size, std::size_t& i, doub
         value /= kPowersOfTen[fraction];
     }
     return true;
+}
+
+inline unsigned digitValue(char c) {
+    return static_cast<unsigned>(static_cast<unsigned char>(c)) - unsigned{'0'};
+}
+
+} // namespace decimal
+
+// Scans the digits and points of a number starting at text[i] (advancing i past them) and converts
+// plain decimals on the way (decimal::convertExactly says which). Returns false when the number
+// needs the general conversion (or is malformed, like 1.2.3); i is then still past the digits and
+// points.
+inline bool scanDecimal(const char* text, std::size_t size, std::size_t& i, double& value) {
+    auto digit = [](char c) { return decimal::digitValue(c) < 10u; };
+    const std::size_t start = i;
+    std::uint64_t mantissa = 0;
+    while (i < size && digit(text[i])) {
+        mantissa = mantissa * 10 + decimal::digitValue(text[i]);
+        ++i;
+    }
+    std::size_t fraction = 0;
+    const bool point = i < size && text[i] == '.';
+    if (point) {
+        const std::size_t point = ++i;
+        while (i < size && digit(text[i])) {
+            mantissa = mantissa * 10 + decimal::digitValue(text[i]);
+            ++i;
+        }
+        fraction = i - point;
+        if (i < size && text[i] == '.') { // 1.2.3: take the rest of the token, then refuse it
+            while (i < size && (digit(text[i]) || text[i] == '.')) {
+                ++i;
+            }
+            return false;
+        }
+    }
+    const std::size_t digits = i - start - (point ? 1 : 0);
+    return decimal::convertExactly(text + start, text + i, digits, fraction, mantissa, value);
+}
+
+// The same conversion for text known to end in a character that is neither a digit nor a point
+// (the plain-line parser's lines end in a line end), so no bounds are tested. Returns where the
+// number ends, or nullptr when it needs the general conversion, is malformed or has no digit.
+inline const char* scanTerminatedDecimal(const char* const text, double& value) {
+    static constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                              1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    // Pointers kept in locals, and read as unsigned char: a char read may alias a pointer in memory.
+    const auto* const start = reinterpret_cast<const unsigned char*>(text);
+    const unsigned char* at = start;
+    std::uint64_t mantissa = 0;
+    for (unsigned d = *at - 48u; d < 10u; d = *++at - 48u) {
+        mantissa = mantissa * 10 + d;
+    }
+    std::size_t digits = static_cast<std::size_t>(at - start);
+    std::size_t fraction = 0;
+    if (*at == '.') {
+        const unsigned char* const point = ++at;
+        for (unsigned d = *at - 48u; d < 10u; d = *++at - 48u) {
+            mantissa = mantissa * 10 + d;
+        }
+        if (*at == '.') {
+            return nullptr;
+        }
+        fraction = static_cast<std::size_t>(at - point);
+        digits += fraction;
+    }
+    const char* const end = reinterpret_cast<const char*>(at);
+    if (digits - 1 < 15) [[likely]] {
+        // 1 to 15 digits: convertExactly's case without its tests (dividing by 1 is exact).
+        value = static_cast<double>(mantissa) / kPowersOfTen[fraction];
+        return end;
+    }
+    return digits != 0 && decimal::convertExactly(text, end, digits, fraction, mantissa, value) ? end : nullptr;
 }
 
 } // namespace m350::gcode

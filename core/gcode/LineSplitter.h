@@ -7,6 +7,10 @@
 
 namespace m350::gcode {
 
+// Whether the byte just past a line is readable and a line end ('\n' or '\r'), as it is for every
+// line a LineSplitter gives but the last: the plain-line parser then reads the line in place.
+enum class LineEnd { Unknown, Follows };
+
 // Splits program text into lines at LF, CRLF and a lone CR (old Mac files and some panel exports
 // end lines with CR alone). A text with n line ends has n + 1 lines, the last one possibly empty,
 // so line numbers agree with an editor's. Each byte is searched for each line end once (memchr),
@@ -40,6 +44,9 @@ public:
         start_ = end + (crlf ? 2 : 1);
         return true;
     }
+
+    // Whether the line last returned is followed by its line end in the text (all but the last).
+    LineEnd lineEnd() const { return done_ ? LineEnd::Unknown : LineEnd::Follows; }
 
     // Where the line last returned starts in the text.
     std::size_t lineStart(std::string_view line) const { return static_cast<std::size_t>(line.data() - text_.data()); }

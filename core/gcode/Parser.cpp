@@ -100,8 +100,9 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
             dropper->beforeLine(lines.lineStart(line), lines.lineStart(line) + line.size(), lineNumber,
                                 blockParser.commentOpen());
         }
-        auto block = blockParser.parse(line, lineNumber);
-        if (!block) {
+        // The block is built where it is kept; it is added only at the end of this iteration.
+        Block& block = program.blocks.nextSlot();
+        if (!blockParser.parse(line, lineNumber, block, lines.lineEnd())) {
             if (diagnostics_.size() > diagnosticsBefore && unreachable.afterLine != 0 &&
                 !blockParser.lastLineLabelled()) {
                 demoteUnreachable(diagnosticsBefore, unreachable);
@@ -111,35 +112,35 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
             }
             continue;
         }
-        const WordFacts facts = wordFacts(*block);
-        unreachable.update(*block, lineNumber, facts.ends);
-        if (block->programNumber >= 0 || !unitOpen) {
+        const WordFacts facts = wordFacts(block);
+        unreachable.update(block, lineNumber, facts.ends);
+        if (block.programNumber >= 0 || !unitOpen) {
             if (unitOpen) {
                 closeUnit(program, static_cast<std::uint32_t>(program.units.size() - 1));
             }
             ProgramUnit unit;
-            unit.number = block->programNumber;
+            unit.number = block.programNumber;
             unit.file = fileIndex;
             unit.begin = static_cast<std::uint32_t>(program.blocks.size());
             program.units.push_back(std::move(unit));
             unitOpen = true;
         }
         const auto index = static_cast<std::uint32_t>(program.blocks.size());
-        if (block->suspect) {
+        if (block.suspect) {
             program.suspects[index] = blockParser.lastLint();
         }
-        if (block->label >= 0) {
-            labelBlocks_.emplace_back(block->label, index);
+        if (block.label >= 0) {
+            labelBlocks_.emplace_back(block.label, index);
         }
-        if (block->control != Control::None) {
+        if (block.control != Control::None) {
             flowBlocks_.push_back(index);
         }
         if (checksCalls && facts.call) {
             callBlocks_.push_back(index);
         }
-        program.blocks.push_back(*block);
+        program.blocks.addNextSlot();
         if (dropper) {
-            dropper->afterLine(&*block, diagnostics_.size() > diagnosticsBefore);
+            dropper->afterLine(&block, diagnostics_.size() > diagnosticsBefore);
         }
     }
     if (dropper) {

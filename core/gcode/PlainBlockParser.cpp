@@ -3,171 +3,171 @@
 #include "core/gcode/DecimalScan.h"
 
 #include <array>
+#include <cstring>
+#include <memory>
 
 namespace m350::gcode {
 
 namespace {
 
 // What a character is to the fast path, looked up once instead of tested by ranges.
-enum : std::uint8_t { kSpace = 1, kLetter = 2, kEndsNumber = 4 };
+enum : std::uint8_t { kSpace = 1, kWordLetter = 2, kEndsNumber = 4, kLineEnd = 8 };
 constexpr std::array<std::uint8_t, 256> kClasses = [] {
     std::array<std::uint8_t, 256> table{};
-    for (char c : {' ', '\t', '\r', '\n'}) {
-        table[static_cast<unsigned char>(c)] = kSpace | kEndsNumber;
-    }
+    table[' '] = table['\t'] = kSpace | kEndsNumber;
+    // The line end after the line is where reading stops; inside a line (a caller's string) it is
+    // a space.
+    table['\r'] = table['\n'] = kLineEnd | kEndsNumber;
     for (int c = 'A'; c <= 'Z'; ++c) {
-        table[static_cast<std::size_t>(c)] = kLetter | kEndsNumber;
-        table[static_cast<std::size_t>(c + ('a' - 'A'))] = kLetter | kEndsNumber;
+        table[static_cast<std::size_t>(c)] = kWordLetter | kEndsNumber;
+        table[static_cast<std::size_t>(c + ('a' - 'A'))] = kWordLetter | kEndsNumber;
     }
+    // N (a label, only first) and O (an O line) are not words here: they take the rare path.
+    table['N'] = table['n'] = table['O'] = table['o'] = kEndsNumber;
     // What may follow a number: a space, a letter other than E (`P1E3` is an error the full parser
     // explains), a comment or a '/' (of `//`).
-    table['E'] = table['e'] = kLetter;
+    table['E'] = table['e'] = kWordLetter;
     table['('] = table[';'] = table['/'] = kEndsNumber;
     return table;
 }();
 
-bool isLetter(char c) {
-    return (kClasses[static_cast<unsigned char>(c)] & kLetter) != 0;
-}
-bool isSpace(char c) {
-    return (kClasses[static_cast<unsigned char>(c)] & kSpace) != 0;
-}
-bool isDigit(char c) {
-    return static_cast<unsigned>(c - '0') < 10u;
-}
-bool endsNumber(char c) {
-    return (kClasses[static_cast<unsigned char>(c)] & kEndsNumber) != 0;
+std::uint8_t classOf(const char* at) {
+    return kClasses[static_cast<unsigned char>(*at)];
 }
 
-struct PlainWord {
-    char letter;
-    std::uint32_t letterColumn;
-    double value;
-};
+// Longer lines go to the general parser (no program line comes near it); a line not followed by
+// its line end is copied, with one, to the stack.
+constexpr std::size_t kLongestPlainLine = 1024;
+static_assert(kLongestPlainLine < kMaxWordColumn, "columns of plain lines are never clipped");
 
-} // namespace
+// The value of a signed number starting at `at`, which must end a number (a space, a letter other
+// than E, a comment): where it ends, or nullptr when it is not a plain number.
+[[gnu::always_inline]] inline const char* scanSignedNumber(const char* at, double& value) {
+    const bool negative = *at == '-';
+    at = scanTerminatedDecimal(at + (negative || *at == '+' ? 1 : 0), value);
+    if (at == nullptr || (classOf(at) & kEndsNumber) == 0) {
+        return nullptr; // `P1E3` is an error the full parser explains
+    }
+    value = negative ? -value : value;
+    return at;
+}
 
-PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, SourceLocation location,
+// `text` is the line, and text[size] is a line end: every scan stops there without a bounds test.
+PlainResult parseTerminated(const char* text, std::size_t size, const Dialect& dialect, SourceLocation location,
                             BlockStorage& storage, Block& out) {
-    constexpr std::size_t kMaxWords = 24;
-    std::array<PlainWord, kMaxWords> found;
-    std::size_t count = 0;
-    const char* text = line.data();
-    const std::size_t size = line.size();
-    std::size_t i = 0;
-    bool first = true;
-    bool programEnd = false;
-    std::int32_t label = -1;
-    std::uint32_t firstColumn = 0;
-    std::string_view comment;
+    const char* const end = text + size;
+    const char* at = text;
     auto skipSpaces = [&] {
-        while (i < size && isSpace(text[i])) {
-            ++i;
+        for (std::uint8_t c = classOf(at); (c & kSpace) != 0 || ((c & kLineEnd) != 0 && at != end); c = classOf(at)) {
+            ++at;
         }
     };
+    skipSpaces();
+    if (at == end) {
+        return PlainResult::Empty;
+    }
+    const char* const firstItem = at;
+    // The words go straight to the arena (a word takes at least two characters); they are kept
+    // only if the whole line is plain.
+    Word* const words = storage.words.reserve(size / 2 + 1);
+    std::size_t count = 0;
+    std::int32_t label = -1;
+    bool programEnd = false;
+    std::string_view comment;
     // Columns equal byte offsets + 1 as long as everything before is ASCII; comments may hold other
-    // characters, so the path declines a word that follows a non-ASCII comment.
-    bool ascii = true;
+    // characters, so after a non-ASCII comment no letter starts a word and a word declines the line.
+    std::uint8_t wordLetter = kWordLetter;
     while (true) {
-        skipSpaces();
-        if (i >= size) {
-            break;
+        std::uint8_t c = classOf(at);
+        while ((c & kSpace) != 0) {
+            c = classOf(++at);
         }
-        if (firstColumn == 0) {
-            firstColumn = static_cast<std::uint32_t>(i + 1);
-        }
-        char letter = text[i];
         // Most of what a line holds is a word: its letter is tested first.
-        if (!isLetter(letter)) {
-            if (letter == ';' || (letter == '/' && i + 1 < size && text[i + 1] == '/' && dialect.slashSlashComments)) {
-                break;
-            }
-            if (letter != '(') {
+        if ((c & wordLetter) != 0) [[likely]] {
+            const char* const letterAt = at;
+            const auto letter = static_cast<char>(*at & ~0x20); // upper case
+            ++at;
+            skipSpaces();
+            double value = 0.0;
+            at = scanSignedNumber(at, value);
+            if (at == nullptr) {
                 return PlainResult::Declined;
             }
-            std::size_t close = line.find(')', i);
-            if (close == std::string_view::npos || !ascii) {
-                return PlainResult::Declined;
-            }
-            for (std::size_t k = i; k < close; ++k) {
-                ascii &= static_cast<unsigned char>(text[k]) < 0x80;
-            }
-            if (comment.empty()) {
-                comment = line.substr(i + 1, close - i - 1);
-            }
-            i = close + 1;
-            first = false;
+            programEnd |= letter == 'M' && (value == 30 || value == 2);
+            Word word;
+            word.number = value;
+            word.column = static_cast<std::uint32_t>(letterAt - text + 1);
+            word.letter = letter;
+            std::construct_at(words + count, word);
+            ++count;
             continue;
         }
-        if (!ascii) {
-            return PlainResult::Declined;
+        if (at == end) {
+            break;
         }
-        letter = static_cast<char>(letter & ~0x20); // upper case
-        const auto letterColumn = static_cast<std::uint32_t>(i + 1);
-        ++i;
-        skipSpaces();
-        if (letter == 'O' || i >= size) {
-            return PlainResult::Declined;
+        if ((c & kLineEnd) != 0) {
+            ++at; // inside the line: a space
+            continue;
         }
-        const char sign = text[i];
-        const bool negative = sign == '-';
-        if (negative || sign == '+') {
-            if (letter == 'N' && first) {
-                return PlainResult::Declined;
-            }
-            ++i;
-        }
-        const bool digitFirst = i < size && isDigit(text[i]);
-        if (!digitFirst && !(i + 1 < size && text[i] == '.' && isDigit(text[i + 1]))) {
-            return PlainResult::Declined;
-        }
-        double value = 0.0;
-        if (!scanDecimal(text, size, i, value)) {
-            return PlainResult::Declined;
-        }
-        if (i < size && !endsNumber(text[i])) {
-            return PlainResult::Declined; // `P1E3` is an error the full parser explains
-        }
-        if (letter == 'N') {
-            const bool unsignedLabel = first && sign != '-' && sign != '+';
-            if (!unsignedLabel || value != static_cast<double>(static_cast<std::int64_t>(value)) ||
-                value > kMaxLabel) {
+        if (at == firstItem && (*at | 0x20) == 'n') {
+            // Only a first unsigned whole N number is a label; the full parser explains the rest.
+            ++at;
+            skipSpaces();
+            double value = 0.0;
+            at = *at == '-' || *at == '+' ? nullptr : scanSignedNumber(at, value);
+            if (at == nullptr || value != static_cast<double>(static_cast<std::int64_t>(value)) || value > kMaxLabel) {
                 return PlainResult::Declined;
             }
             label = static_cast<std::int32_t>(value);
-            first = false;
             continue;
         }
-        if (count == kMaxWords) {
+        if (*at == ';' || (*at == '/' && at[1] == '/' && dialect.slashSlashComments)) {
+            break;
+        }
+        const void* close = *at == '(' ? std::memchr(at, ')', static_cast<std::size_t>(end - at)) : nullptr;
+        if (close == nullptr || wordLetter == 0) {
             return PlainResult::Declined;
         }
-        first = false;
-        if (negative) {
-            value = -value;
+        const char* const closing = static_cast<const char*>(close);
+        for (const char* k = at; k < closing; ++k) {
+            wordLetter = static_cast<unsigned char>(*k) < 0x80 ? wordLetter : 0;
         }
-        if (letter == 'M' && (value == 30 || value == 2)) {
-            programEnd = true;
+        if (comment.empty()) {
+            comment = std::string_view(at + 1, static_cast<std::size_t>(closing - at - 1));
         }
-        found[count++] = {letter, letterColumn, value};
+        at = closing + 1;
     }
     if (count == 0 && label < 0) {
         return PlainResult::Empty;
     }
-    out.location = {location.file, location.line, firstColumn};
-    out.label = label;
-    out.programEnd = programEnd;
+    Block& block = *std::construct_at(&out);
+    block.location = {location.file, location.line, static_cast<std::uint32_t>(firstItem - text + 1)};
+    block.label = label;
+    block.programEnd = programEnd;
     if (!comment.empty()) {
-        out.comment = storage.text.store(comment);
+        block.comment = storage.text.store(comment);
     }
-    std::span<Word> room = storage.words.allocate(count);
-    for (std::size_t k = 0; k < count; ++k) {
-        Word& w = room[k];
-        w.number = found[k].value;
-        w.column = wordColumn(found[k].letterColumn);
-        w.letter = found[k].letter;
-    }
-    out.words = room;
+    block.words = storage.words.keep(count);
     return PlainResult::Parsed;
+}
+
+} // namespace
+
+PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, SourceLocation location,
+                            BlockStorage& storage, Block& out, LineEnd lineEnd) {
+    if (line.size() > kLongestPlainLine) {
+        return PlainResult::Declined;
+    }
+    const char* text = line.data();
+    std::array<char, kLongestPlainLine + 1> copy;
+    if (lineEnd != LineEnd::Follows) {
+        if (!line.empty()) {
+            std::memcpy(copy.data(), line.data(), line.size());
+        }
+        copy[line.size()] = '\n';
+        text = copy.data();
+    }
+    return parseTerminated(text, line.size(), dialect, location, storage, out);
 }
 
 } // namespace m350::gcode

@@ -3,6 +3,7 @@
 #include "core/gcode/Block.h"
 #include "core/gcode/BlockStorage.h"
 #include "core/gcode/Dialect.h"
+#include "core/gcode/LineSplitter.h"
 
 #include <string_view>
 
@@ -13,8 +14,9 @@ enum class PlainResult { Declined, Empty, Parsed };
 // The fast path for the lines that make up most programs: address words with plain numbers
 // (`N10 G1 X12.5 Y-3 F1000 (rough)`), read straight from the characters. Anything else (macro
 // syntax, keywords, malformed numbers, O lines, block delete) is Declined and left to the general
-// BlockParser, which gives the same result for every line this accepts (tested).
+// BlockParser, which gives the same result for every line this accepts (tested). `out` is written
+// only when the line is Parsed (all of it: it may be raw memory).
 PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, SourceLocation location,
-                            BlockStorage& storage, Block& out);
+                            BlockStorage& storage, Block& out, LineEnd lineEnd = LineEnd::Unknown);
 
 } // namespace m350::gcode
