@@ -34,6 +34,9 @@ public:
     // or with a syntax error. LineEnd::Follows lets plain lines be read in place.
     bool parse(std::string_view line, std::uint32_t lineNumber, Block& out, LineEnd lineEnd = LineEnd::Unknown);
     std::optional<Block> parse(std::string_view line, std::uint32_t lineNumber);
+    // The next line of `lines`, when the fast path reads it in place (a plain line followed by a
+    // line end): then `line` is set and passed in `lines`. Declined (nothing passed) otherwise.
+    PlainResult parseAhead(LineSplitter& lines, std::uint32_t lineNumber, Block& out, std::string_view& line);
 
     // Plain-word lines take a fast path by default; tests turn it off to compare both paths.
     void setPlainPath(bool enabled) { plainPath_ = enabled; }

@@ -19,7 +19,7 @@ enum class LineEnd { Unknown, Follows };
 // has not reached stay untouched.
 class LineSplitter {
 public:
-    explicit LineSplitter(std::string_view text) : text_(text) {}
+    explicit LineSplitter(std::string_view text) : text_(text), lineEndsBefore_(pastLastLineEnd(text)) {}
 
     // The next line, without its line end; false after the last line.
     bool next(std::string_view& line) {
@@ -43,6 +43,18 @@ public:
         const bool crlf = end == cr && end + 1 < text_.size() && text_[end + 1] == '\n';
         start_ = end + (crlf ? 2 : 1);
         return true;
+    }
+
+    // Where the next line starts, when a line end follows it in the text (nullptr otherwise): it
+    // may then be read in place up to its line end, and passed with skipLine.
+    const char* lineAhead() const { return start_ < lineEndsBefore_ ? text_.data() + start_ : nullptr; }
+    // Passes the line lineAhead() pointed to, `length` bytes up to its line end, as next() gives it.
+    std::string_view skipLine(std::size_t length) {
+        const std::size_t end = start_ + length;
+        const std::string_view line = text_.substr(start_, length);
+        const bool crlf = text_[end] == '\r' && end + 1 < text_.size() && text_[end + 1] == '\n';
+        start_ = end + (crlf ? 2 : 1);
+        return line;
     }
 
     // Whether the line last returned is followed by its line end in the text (all but the last).
@@ -82,7 +94,16 @@ private:
         return s.found < limit ? s.found : kNone;
     }
 
+    static std::size_t pastLastLineEnd(std::string_view text) {
+        std::size_t i = text.size();
+        while (i > 0 && text[i - 1] != '\n' && text[i - 1] != '\r') {
+            --i;
+        }
+        return i;
+    }
+
     std::string_view text_;
+    std::size_t lineEndsBefore_; // one past the text's last line end, 0 when it has none
     std::size_t start_ = 0;
     Search lf_;
     Search cr_;

@@ -5,6 +5,7 @@
 #include "core/gcode/BlockParser.h"
 #include "core/gcode/ChunkDropper.h"
 #include "core/gcode/LineSplitter.h"
+#include "core/gcode/PlainBlockParser.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -92,7 +93,19 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
     Unreachable unreachable;
     LineSplitter lines(text);
     std::string_view line;
-    while (lines.next(line)) {
+    while (true) {
+        // The block is built where it is kept; it is added only at the end of this iteration. A
+        // plain line is read before its end is looked for, except when chunks may be dropped (the
+        // dropper marks the arenas before each line).
+        Block* slot = nullptr;
+        PlainResult ahead = PlainResult::Declined;
+        if (!dropper && lines.lineAhead() != nullptr) {
+            slot = &program.blocks.nextSlot();
+            ahead = blockParser.parseAhead(lines, lineNumber + 1, *slot, line);
+        }
+        if (ahead == PlainResult::Declined && !lines.next(line)) {
+            break;
+        }
         ++lineNumber;
         cap_.trimIfLarge(diagnostics_, program);
         const std::size_t diagnosticsBefore = diagnostics_.size();
@@ -100,9 +113,10 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
             dropper->beforeLine(lines.lineStart(line), lines.lineStart(line) + line.size(), lineNumber,
                                 blockParser.commentOpen());
         }
-        // The block is built where it is kept; it is added only at the end of this iteration.
-        Block& block = program.blocks.nextSlot();
-        if (!blockParser.parse(line, lineNumber, block, lines.lineEnd())) {
+        Block& block = slot != nullptr ? *slot : program.blocks.nextSlot();
+        const bool parsed = ahead == PlainResult::Declined ? blockParser.parse(line, lineNumber, block, lines.lineEnd())
+                                                           : ahead == PlainResult::Parsed;
+        if (!parsed) {
             if (diagnostics_.size() > diagnosticsBefore && unreachable.afterLine != 0 &&
                 !blockParser.lastLineLabelled()) {
                 demoteUnreachable(diagnosticsBefore, unreachable);

@@ -3,7 +3,6 @@
 #include "core/gcode/DecimalScan.h"
 
 #include <array>
-#include <cstring>
 #include <memory>
 
 namespace m350::gcode {
@@ -35,10 +34,10 @@ std::uint8_t classOf(const char* at) {
     return kClasses[static_cast<unsigned char>(*at)];
 }
 
-// Longer lines go to the general parser (no program line comes near it); a line not followed by
-// its line end is copied, with one, to the stack.
+// Longer lines go to the general parser (no program line comes near it).
 constexpr std::size_t kLongestPlainLine = 1024;
 static_assert(kLongestPlainLine < kMaxWordColumn, "columns of plain lines are never clipped");
+constexpr std::size_t kMostWords = 24;
 
 // The value of a signed number starting at `at`, which must end a number (a space, a letter other
 // than E, a comment): where it ends, or nullptr when it is not a plain number.
@@ -52,45 +51,38 @@ static_assert(kLongestPlainLine < kMaxWordColumn, "columns of plain lines are ne
     return at;
 }
 
-// `text` is the line, and text[size] is a line end: every scan stops there without a bounds test.
-PlainResult parseTerminated(const char* text, std::size_t size, const Dialect& dialect, SourceLocation location,
-                            BlockStorage& storage, Block& out) {
-    const char* const end = text + size;
+} // namespace
+
+PlainResult parsePlainLine(const char* text, const Dialect& dialect, SourceLocation location, BlockStorage& storage,
+                           Block& out, std::size_t& length) {
     const char* at = text;
     auto skipSpaces = [&] {
-        for (std::uint8_t c = classOf(at); (c & kSpace) != 0 || ((c & kLineEnd) != 0 && at != end); c = classOf(at)) {
+        while ((classOf(at) & kSpace) != 0) {
             ++at;
         }
     };
-    skipSpaces();
-    if (at == end) {
-        return PlainResult::Empty;
-    }
-    const char* const firstItem = at;
-    // The words go straight to the arena (a word takes at least two characters); they are kept
-    // only if the whole line is plain.
-    Word* const words = storage.words.reserve(size / 2 + 1);
+    // The words go straight to the arena; they are kept only if the whole line is plain.
+    Word* const words = storage.words.reserve(kMostWords);
     std::size_t count = 0;
     std::int32_t label = -1;
     bool programEnd = false;
     std::string_view comment;
+    skipSpaces();
+    const char* const firstItem = at;
     // Columns equal byte offsets + 1 as long as everything before is ASCII; comments may hold other
     // characters, so after a non-ASCII comment no letter starts a word and a word declines the line.
     std::uint8_t wordLetter = kWordLetter;
     while (true) {
-        std::uint8_t c = classOf(at);
-        while ((c & kSpace) != 0) {
-            c = classOf(++at);
-        }
+        skipSpaces();
         // Most of what a line holds is a word: its letter is tested first.
-        if ((c & wordLetter) != 0) [[likely]] {
+        if ((classOf(at) & wordLetter) != 0) [[likely]] {
             const char* const letterAt = at;
             const auto letter = static_cast<char>(*at & ~0x20); // upper case
             ++at;
             skipSpaces();
             double value = 0.0;
             at = scanSignedNumber(at, value);
-            if (at == nullptr) {
+            if (at == nullptr || count == kMostWords) {
                 return PlainResult::Declined;
             }
             programEnd |= letter == 'M' && (value == 30 || value == 2);
@@ -102,12 +94,8 @@ PlainResult parseTerminated(const char* text, std::size_t size, const Dialect& d
             ++count;
             continue;
         }
-        if (at == end) {
+        if ((classOf(at) & kLineEnd) != 0) {
             break;
-        }
-        if ((c & kLineEnd) != 0) {
-            ++at; // inside the line: a space
-            continue;
         }
         if (at == firstItem && (*at | 0x20) == 'n') {
             // Only a first unsigned whole N number is a label; the full parser explains the rest.
@@ -122,20 +110,29 @@ PlainResult parseTerminated(const char* text, std::size_t size, const Dialect& d
             continue;
         }
         if (*at == ';' || (*at == '/' && at[1] == '/' && dialect.slashSlashComments)) {
+            while ((classOf(at) & kLineEnd) == 0) {
+                ++at;
+            }
             break;
         }
-        const void* close = *at == '(' ? std::memchr(at, ')', static_cast<std::size_t>(end - at)) : nullptr;
-        if (close == nullptr || wordLetter == 0) {
+        if (*at != '(' || wordLetter == 0) {
             return PlainResult::Declined;
         }
-        const char* const closing = static_cast<const char*>(close);
-        for (const char* k = at; k < closing; ++k) {
-            wordLetter = static_cast<unsigned char>(*k) < 0x80 ? wordLetter : 0;
+        const char* closing = at + 1;
+        for (; *closing != ')'; ++closing) {
+            if ((classOf(closing) & kLineEnd) != 0) {
+                return PlainResult::Declined; // not closed on its line
+            }
+            wordLetter = static_cast<unsigned char>(*closing) < 0x80 ? wordLetter : 0;
         }
         if (comment.empty()) {
             comment = std::string_view(at + 1, static_cast<std::size_t>(closing - at - 1));
         }
         at = closing + 1;
+    }
+    length = static_cast<std::size_t>(at - text);
+    if (length > kLongestPlainLine) {
+        return PlainResult::Declined;
     }
     if (count == 0 && label < 0) {
         return PlainResult::Empty;
@@ -151,23 +148,25 @@ PlainResult parseTerminated(const char* text, std::size_t size, const Dialect& d
     return PlainResult::Parsed;
 }
 
-} // namespace
-
 PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, SourceLocation location,
                             BlockStorage& storage, Block& out, LineEnd lineEnd) {
     if (line.size() > kLongestPlainLine) {
         return PlainResult::Declined;
     }
-    const char* text = line.data();
-    std::array<char, kLongestPlainLine + 1> copy;
-    if (lineEnd != LineEnd::Follows) {
-        if (!line.empty()) {
-            std::memcpy(copy.data(), line.data(), line.size());
-        }
-        copy[line.size()] = '\n';
-        text = copy.data();
+    std::size_t length = 0;
+    if (lineEnd == LineEnd::Follows) {
+        return parsePlainLine(line.data(), dialect, location, storage, out, length);
     }
-    return parseTerminated(text, line.size(), dialect, location, storage, out);
+    // A copy with a line end after it; a caller's line end inside the line is for the full parser.
+    std::array<char, kLongestPlainLine + 1> copy;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        copy[i] = line[i];
+        if ((classOf(&copy[i]) & kLineEnd) != 0) {
+            return PlainResult::Declined;
+        }
+    }
+    copy[line.size()] = '\n';
+    return parsePlainLine(copy.data(), dialect, location, storage, out, length);
 }
 
 } // namespace m350::gcode

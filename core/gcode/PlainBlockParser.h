@@ -19,4 +19,10 @@ enum class PlainResult { Declined, Empty, Parsed };
 PlainResult parsePlainBlock(std::string_view line, const Dialect& dialect, SourceLocation location,
                             BlockStorage& storage, Block& out, LineEnd lineEnd = LineEnd::Unknown);
 
+// The same for the line that starts at `text` and ends at the first '\n' or '\r', which the
+// caller knows to come before the text ends: the line is read in place, without first looking
+// for its end, and `length` says where it ended (set unless Declined).
+PlainResult parsePlainLine(const char* text, const Dialect& dialect, SourceLocation location, BlockStorage& storage,
+                           Block& out, std::size_t& length);
+
 } // namespace m350::gcode

@@ -4,6 +4,8 @@
 #include "core/gcode/Dialect.h"
 #include "core/gcode/PlainBlockParser.h"
 
+#include "ParseSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -26,18 +28,8 @@ void parseWith(bool plainPath, const Dialect& dialect, const std::string& line, 
     out.block = parser.parse(line, 7);
 }
 
-void expectSameResult(const Dialect& dialect, const std::string& line) {
-    Parsed fast;
-    Parsed general;
-    parseWith(true, dialect, line, fast);
-    parseWith(false, dialect, line, general);
-    ASSERT_EQ(fast.block.has_value(), general.block.has_value()) << line;
-    EXPECT_EQ(fast.diagnostics.size(), general.diagnostics.size()) << line;
-    if (!fast.block) {
-        return;
-    }
-    const Block& a = *fast.block;
-    const Block& b = *general.block;
+void expectSameBlock(const Block& a, const BlockStorage& aStorage, const Block& b, const BlockStorage& bStorage,
+                     const std::string& line) {
     EXPECT_EQ(a.location.line, b.location.line) << line;
     EXPECT_EQ(a.location.column, b.location.column) << line;
     EXPECT_EQ(a.label, b.label) << line;
@@ -55,9 +47,41 @@ void expectSameResult(const Dialect& dialect, const std::string& line) {
         if (a.words[i].isNumber()) {
             EXPECT_EQ(a.words[i].number, b.words[i].number) << line; // bit-identical conversion
         } else {
-            EXPECT_EQ(fast.storage.expressions[a.words[i].value].kind, general.storage.expressions[b.words[i].value].kind)
+            EXPECT_EQ(aStorage.expressions[a.words[i].value].kind, bStorage.expressions[b.words[i].value].kind)
                 << line;
         }
+    }
+}
+
+void expectSameResult(const Dialect& dialect, const std::string& line) {
+    Parsed fast;
+    Parsed general;
+    parseWith(true, dialect, line, fast);
+    parseWith(false, dialect, line, general);
+    ASSERT_EQ(fast.block.has_value(), general.block.has_value()) << line;
+    EXPECT_EQ(fast.diagnostics.size(), general.diagnostics.size()) << line;
+    if (fast.block) {
+        expectSameBlock(*fast.block, fast.storage, *general.block, general.storage, line);
+    }
+}
+
+// Read in place from a text that goes on after the line's end, the line gives what it gives alone
+// and ends where it ends, whatever follows.
+void expectSameInPlace(const Dialect& dialect, const std::string& line, const std::string& lineEnd) {
+    const std::string text = line + lineEnd + "G1 X9 (the next line)";
+    BlockStorage inPlaceStorage;
+    Block inPlace;
+    std::size_t length = 0;
+    const PlainResult result = parsePlainLine(text.data(), dialect, {0, 7, 0}, inPlaceStorage, inPlace, length);
+    BlockStorage aloneStorage;
+    Block alone;
+    ASSERT_EQ(result, parsePlainBlock(line, dialect, {0, 7, 0}, aloneStorage, alone)) << line;
+    if (result == PlainResult::Declined) {
+        return;
+    }
+    EXPECT_EQ(length, line.size()) << line;
+    if (result == PlainResult::Parsed) {
+        expectSameBlock(inPlace, inPlaceStorage, alone, aloneStorage, line);
     }
 }
 
@@ -93,6 +117,10 @@ TEST(PlainBlockParser, SameResultAsTheGeneralParserOnHandPickedLines) {
                              "X1234567.890123", "X0.1234567890123456789", "F1.", "", "   ", "(a)(b)X1", "S12000 M3\r"}) {
         expectSameResult(Dialect::m350(), line);
         expectSameResult(Dialect::fanuc(), line);
+        if (std::string_view(line).find('\r') == std::string_view::npos) {
+            expectSameInPlace(Dialect::m350(), line, "\n");
+            expectSameInPlace(Dialect::fanuc(), line, "\r\n");
+        }
     }
 }
 
@@ -109,6 +137,73 @@ TEST(PlainBlockParser, SameResultAsTheGeneralParserOnRandomLines) {
             line += pieces[pick(rng)];
         }
         expectSameResult(n % 2 ? Dialect::m350() : Dialect::fanuc(), line);
+        expectSameInPlace(n % 2 ? Dialect::m350() : Dialect::fanuc(), line, n % 3 ? "\n" : "\r");
+        if (HasFailure()) {
+            return;
+        }
+    }
+}
+
+TEST(PlainBlockParser, ALineEndInsideACallersLineIsLeftToTheGeneralParser) {
+    BlockStorage storage;
+    Block block;
+    EXPECT_EQ(parsePlainBlock("G1 X1\rY2", Dialect::m350(), {0, 1, 0}, storage, block), PlainResult::Declined);
+    expectSameResult(Dialect::m350(), "G1 X1\rY2");
+    expectSameResult(Dialect::m350(), "G1 X1\nY2");
+}
+
+TEST(PlainBlockParser, InPlaceAnUnclosedCommentOrATrailingCommentStopsAtTheLineEnd) {
+    const std::string unclosed = "G1 X1 (open\nG1 X2 (closed)\n";
+    BlockStorage storage;
+    Block block;
+    std::size_t length = 0;
+    EXPECT_EQ(parsePlainLine(unclosed.data(), Dialect::m350(), {0, 1, 0}, storage, block, length),
+              PlainResult::Declined);
+    const std::string trailing = "G1 X1 ; rest\nG1 X2\n";
+    ASSERT_EQ(parsePlainLine(trailing.data(), Dialect::m350(), {0, 1, 0}, storage, block, length),
+              PlainResult::Parsed);
+    EXPECT_EQ(length, 12u);
+    EXPECT_EQ(block.words.size(), 2u);
+}
+
+// A whole program through the Parser (which reads plain lines in place before it looks for their
+// end) gives, line by line, what the general parser gives each line alone: same line numbers,
+// same blocks, whatever the line ends.
+TEST(PlainBlockParser, AProgramReadInPlaceGivesWhatEachLineGivesAlone) {
+    const std::vector<std::string> lines = {"G1 X1.5 Y-2", "", "  ", "N10 G0 Z5", "(comment)", "G1 X2 ; rest",
+                                            "#1=2", "G1 X#1", "M3 S1000 (spindle)", "F1.", "X.5", "G1 X1 (open",
+                                            "N20", "%", "G1 X1.2.3", "T2 M6"};
+    const std::vector<std::string> ends = {"\n", "\r\n", "\r"};
+    std::mt19937 rng(13);
+    for (int n = 0; n < 300; ++n) {
+        // One kind of line end a program: an empty line after a CR line would make a CRLF.
+        const std::string& end = ends[rng() % ends.size()];
+        std::vector<std::string> chosen;
+        std::string text;
+        const int count = 1 + static_cast<int>(rng() % 12);
+        for (int k = 0; k < count; ++k) {
+            chosen.push_back(lines[rng() % lines.size()]);
+            text += chosen.back();
+            if (k + 1 < count || rng() % 2 == 0) {
+                text += end;
+            }
+        }
+        support::Parsed whole = support::parse(text, Dialect::m350());
+        BlockStorage storage;
+        std::vector<Diagnostic> diagnostics;
+        BlockParser alone(Dialect::m350(), storage, diagnostics, "test.nc", 0);
+        alone.setPlainPath(false);
+        std::size_t next = 0;
+        for (std::size_t k = 0; k < chosen.size(); ++k) {
+            const std::optional<Block> block = alone.parse(chosen[k], static_cast<std::uint32_t>(k + 1));
+            if (!block) {
+                continue;
+            }
+            ASSERT_LT(next, whole.program.blocks.size()) << text;
+            expectSameBlock(whole.program.blocks[next], whole.program, *block, storage, chosen[k]);
+            ++next;
+        }
+        EXPECT_EQ(next, whole.program.blocks.size()) << text;
         if (HasFailure()) {
             return;
         }
