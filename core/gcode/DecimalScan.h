@@ -83,16 +83,28 @@ inline const char* scanTerminatedDecimal(const char* const text, double& value) 
     const auto* const start = reinterpret_cast<const unsigned char*>(text);
     const unsigned char* at = start;
     std::uint64_t mantissa = 0;
-    for (unsigned d = *at - 48u; d < 10u; d = *++at - 48u) {
-        mantissa = mantissa * 10 + d;
-    }
+    // Two digits a step: the byte after a digit is always there (the text ends in a non-digit).
+    auto digitsInto = [&mantissa](const unsigned char* from) {
+        while (true) {
+            const unsigned first = from[0] - 48u;
+            if (first > 9u) {
+                return from;
+            }
+            const unsigned second = from[1] - 48u;
+            if (second > 9u) {
+                mantissa = mantissa * 10 + first;
+                return from + 1;
+            }
+            mantissa = mantissa * 100 + (first * 10 + second);
+            from += 2;
+        }
+    };
+    at = digitsInto(at);
     std::size_t digits = static_cast<std::size_t>(at - start);
     std::size_t fraction = 0;
     if (*at == '.') {
         const unsigned char* const point = ++at;
-        for (unsigned d = *at - 48u; d < 10u; d = *++at - 48u) {
-            mantissa = mantissa * 10 + d;
-        }
+        at = digitsInto(at);
         if (*at == '.') {
             return nullptr;
         }
@@ -101,8 +113,9 @@ inline const char* scanTerminatedDecimal(const char* const text, double& value) 
     }
     const char* const end = reinterpret_cast<const char*>(at);
     if (digits - 1 < 15) [[likely]] {
-        // 1 to 15 digits: convertExactly's case without its tests (dividing by 1 is exact).
-        value = static_cast<double>(mantissa) / kPowersOfTen[fraction];
+        // 1 to 15 digits: convertExactly's case without its tests (dividing by 1 is exact). The
+        // mantissa is below 10^15, so it converts as a signed number (one instruction).
+        value = static_cast<double>(static_cast<std::int64_t>(mantissa)) / kPowersOfTen[fraction];
         return end;
     }
     return digits != 0 && decimal::convertExactly(text, end, digits, fraction, mantissa, value) ? end : nullptr;

@@ -26,7 +26,7 @@ struct WordFacts {
 WordFacts wordFacts(const Block& block) {
     WordFacts facts;
     for (const Word& w : block.words) {
-        if (!w.isNumber()) {
+        if ((w.letter != 'M' && w.letter != 'G') || !w.isNumber()) { // most words: the cheapest test first
             continue;
         }
         if (w.letter == 'M') {

@@ -33,8 +33,13 @@ constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 std::optional<std::size_t> firstInvalidUtf8(std::string_view s) {
     std::size_t i = 0;
     while (i < s.size()) {
-        // Programs are mostly ASCII: skip it eight bytes at a time.
+        // Programs are mostly ASCII: skip it 32, then eight bytes at a time.
         constexpr std::uint64_t kHighBits = 0x8080808080808080ull;
+        std::uint64_t chunks[4] = {};
+        while (s.size() - i >= sizeof chunks && (std::memcpy(chunks, s.data() + i, sizeof chunks),
+                                                 (chunks[0] | chunks[1] | chunks[2] | chunks[3]) & kHighBits) == 0) {
+            i += sizeof chunks;
+        }
         std::uint64_t chunk = 0;
         while (s.size() - i >= sizeof chunk && (std::memcpy(&chunk, s.data() + i, sizeof chunk), chunk & kHighBits) == 0) {
             i += sizeof chunk;
