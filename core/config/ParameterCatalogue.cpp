@@ -1,6 +1,7 @@
 #include "core/config/ParameterCatalogue.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -70,11 +71,28 @@ ParameterOption parseOption(std::string_view text) {
     return option;
 }
 
-ParameterInfo parseRow(std::string_view line) {
-    auto f = split(line, '\t');
-    if (f.size() != kColumns)
+// The fields of a row, without a vector per row (m350-sim reads the whole catalogue at start-up).
+std::array<std::string_view, kColumns> columns(std::string_view line) {
+    std::array<std::string_view, kColumns> fields;
+    std::size_t count = 0;
+    for (std::size_t start = 0;; ++count) {
+        const std::size_t end = line.find('\t', start);
+        if (count < kColumns) {
+            fields[count] = line.substr(start, end == std::string_view::npos ? end : end - start);
+        }
+        if (end == std::string_view::npos) {
+            break;
+        }
+        start = end + 1;
+    }
+    if (count + 1 != kColumns)
         throw LineError{"expected " + std::to_string(kColumns) + " tab-separated fields, found " +
-                        std::to_string(f.size())};
+                        std::to_string(count + 1)};
+    return fields;
+}
+
+ParameterInfo parseRow(std::string_view line) {
+    const auto f = columns(line);
     ParameterInfo p;
     p.number = parseInt(f[0], "number");
     p.group = parseInt(f[1], "group");
