@@ -30,20 +30,6 @@ bool BlockParser::parse(std::string_view line, std::uint32_t lineNumber, Block& 
     return block.has_value();
 }
 
-PlainResult BlockParser::parseAhead(LineSplitter& lines, std::uint32_t lineNumber, Block& out,
-                                    std::string_view& line) {
-    const char* text = lines.lineAhead();
-    if (!plainPath_ || comment_.open || text == nullptr) {
-        return PlainResult::Declined;
-    }
-    std::size_t length = 0;
-    const PlainResult result = parsePlainLine(text, dialect_, {fileIndex_, lineNumber, 0}, storage_, out, length);
-    if (result != PlainResult::Declined) {
-        line = lines.skipLine(length);
-    }
-    return result;
-}
-
 std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lineNumber) {
     Block block;
     if (parse(line, lineNumber, block)) {

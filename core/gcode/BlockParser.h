@@ -36,7 +36,18 @@ public:
     std::optional<Block> parse(std::string_view line, std::uint32_t lineNumber);
     // The next line of `lines`, when the fast path reads it in place (a plain line followed by a
     // line end): then `line` is set and passed in `lines`. Declined (nothing passed) otherwise.
-    PlainResult parseAhead(LineSplitter& lines, std::uint32_t lineNumber, Block& out, std::string_view& line);
+    PlainResult parseAhead(LineSplitter& lines, std::uint32_t lineNumber, Block& out, std::string_view& line) {
+        const char* text = lines.lineAhead();
+        if (!plainPath_ || comment_.open || text == nullptr) {
+            return PlainResult::Declined;
+        }
+        std::size_t length = 0;
+        const PlainResult result = parsePlainLine(text, dialect_, {fileIndex_, lineNumber, 0}, storage_, out, length);
+        if (result != PlainResult::Declined) {
+            line = lines.skipLine(length);
+        }
+        return result;
+    }
 
     // Plain-word lines take a fast path by default; tests turn it off to compare both paths.
     void setPlainPath(bool enabled) { plainPath_ = enabled; }

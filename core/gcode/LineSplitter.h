@@ -51,7 +51,7 @@ public:
     // Passes the line lineAhead() pointed to, `length` bytes up to its line end, as next() gives it.
     std::string_view skipLine(std::size_t length) {
         const std::size_t end = start_ + length;
-        const std::string_view line = text_.substr(start_, length);
+        const std::string_view line(text_.data() + start_, length);
         const bool crlf = text_[end] == '\r' && end + 1 < text_.size() && text_[end + 1] == '\n';
         start_ = end + (crlf ? 2 : 1);
         return line;

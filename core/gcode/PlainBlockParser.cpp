@@ -63,7 +63,7 @@ PlainResult parsePlainLine(const char* text, const Dialect& dialect, SourceLocat
     };
     // The words go straight to the arena; they are kept only if the whole line is plain.
     Word* const words = storage.words.reserve(kMostWords);
-    std::size_t count = 0;
+    Word* nextWord = words;
     std::int32_t label = -1;
     bool programEnd = false;
     std::string_view comment;
@@ -82,7 +82,7 @@ PlainResult parsePlainLine(const char* text, const Dialect& dialect, SourceLocat
             skipSpaces();
             double value = 0.0;
             at = scanSignedNumber(at, value);
-            if (at == nullptr || count == kMostWords) {
+            if (at == nullptr || nextWord == words + kMostWords) {
                 return PlainResult::Declined;
             }
             programEnd |= letter == 'M' && (value == 30 || value == 2);
@@ -90,8 +90,8 @@ PlainResult parsePlainLine(const char* text, const Dialect& dialect, SourceLocat
             word.number = value;
             word.column = static_cast<std::uint32_t>(letterAt - text + 1);
             word.letter = letter;
-            std::construct_at(words + count, word);
-            ++count;
+            std::construct_at(nextWord, word);
+            ++nextWord;
             continue;
         }
         if ((classOf(at) & kLineEnd) != 0) {
@@ -134,6 +134,7 @@ PlainResult parsePlainLine(const char* text, const Dialect& dialect, SourceLocat
     if (length > kLongestPlainLine) {
         return PlainResult::Declined;
     }
+    const auto count = static_cast<std::size_t>(nextWord - words);
     if (count == 0 && label < 0) {
         return PlainResult::Empty;
     }
