@@ -181,30 +181,34 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
             return {false, MacroError{AlarmCode::InvalidWord,
                                       std::string(1, w.letter) + " appears twice in one block", w.column}};
         }
-        words.letter[static_cast<std::size_t>(w.letter - 'A')] = w;
+        words.letter[static_cast<std::size_t>(w.letter - 'A')] = &w;
         words.present |= Words::bit(w.letter);
     }
     try {
         // 1. F S T H D; F in the unit this block sets (`G20 G1 X1 F10`: 10 inch/min)
         bool inches = words.hasG(20) || (state_.inches() && !words.hasG(21));
         double unit = inches ? 25.4 : 1.0;
-        if (words.find('F')) {
-            if (words.find('F')->value < 0) {
-                invalid(*words.find('F'), "the feed cannot be negative");
+        constexpr std::uint32_t kModalLetters =
+            Words::bit('F') | Words::bit('S') | Words::bit('T') | Words::bit('H') | Words::bit('D');
+        if ((words.present & kModalLetters) != 0) {
+            if (words.find('F')) {
+                if (words.find('F')->value < 0) {
+                    invalid(*words.find('F'), "the feed cannot be negative");
+                }
+                state_.feed = words.find('F')->value * unit;
             }
-            state_.feed = words.find('F')->value * unit;
-        }
-        if (words.find('S')) {
-            state_.spindleSpeed = words.find('S')->value;
-        }
-        if (words.find('T')) {
-            state_.selectedTool = roundToInt(words.find('T')->value);
-        }
-        if (words.find('H')) {
-            state_.lengthOffset = roundToInt(words.find('H')->value);
-        }
-        if (words.find('D')) {
-            state_.radiusOffset = roundToInt(words.find('D')->value);
+            if (words.find('S')) {
+                state_.spindleSpeed = words.find('S')->value;
+            }
+            if (words.find('T')) {
+                state_.selectedTool = roundToInt(words.find('T')->value);
+            }
+            if (words.find('H')) {
+                state_.lengthOffset = roundToInt(words.find('H')->value);
+            }
+            if (words.find('D')) {
+                state_.radiusOffset = roundToInt(words.find('D')->value);
+            }
         }
         // 2. spindle and coolant
         bool endProgram = false;
@@ -281,10 +285,15 @@ void ModalInterpreter::applyGCodes(const Words& words) {
         if (dialect_.lookAheadCodes && lookAheadCode(g, words)) {
             continue;
         }
-        double value = g.value;
-        int code = roundToInt(value);
-        if (std::abs(value - code) > 1e-6) {
-            invalid(g, "not a G code this machine knows");
+        const double value = g.value;
+        int code = 0;
+        if (value >= 0 && value < 128 && value == static_cast<double>(static_cast<int>(value))) {
+            code = static_cast<int>(value); // as written, most codes: no rounding
+        } else {
+            code = roundToInt(value);
+            if (std::abs(value - code) > 1e-6) {
+                invalid(g, "not a G code this machine knows");
+            }
         }
         int group = groupOf(code);
         if (group > 0) {

@@ -95,10 +95,10 @@ public:
     std::vector<std::string> takeLookAheadChanges();
 
 private:
-    // The words of one block by letter. `present` says which letters were written; clearing it is
-    // all a new block needs.
+    // The words of one block by letter (into the block's own words, which outlive execute()).
+    // `present` says which letters were written; clearing it is all a new block needs.
     struct Words {
-        std::array<macro::WordValue, 26> letter{};
+        std::array<const macro::WordValue*, 26> letter{};
         std::uint32_t present = 0;
         std::vector<macro::WordValue> g;
         std::vector<macro::WordValue> m;
@@ -121,9 +121,9 @@ private:
                 }
             }
         }
-        static std::uint32_t bit(char c) { return 1u << static_cast<unsigned>(c - 'A'); }
+        static constexpr std::uint32_t bit(char c) { return 1u << static_cast<unsigned>(c - 'A'); }
         bool has(char c) const { return (present & bit(c)) != 0; }
-        const macro::WordValue& operator[](char c) const { return letter[static_cast<std::size_t>(c - 'A')]; }
+        const macro::WordValue& operator[](char c) const { return *letter[static_cast<std::size_t>(c - 'A')]; }
         const macro::WordValue* find(char c) const { return has(c) ? &(*this)[c] : nullptr; }
         bool hasG(int code) const {
             if (code >= 0 && code < 128) {
@@ -135,6 +135,10 @@ private:
                 }
             }
             return false;
+        }
+        // Whether any of `codes` (bits as gCodes holds them) was written.
+        bool hasAnyG(const std::array<std::uint64_t, 2>& codes) const {
+            return ((gCodes[0] & codes[0]) | (gCodes[1] & codes[1])) != 0;
         }
         bool hasAxis() const {
             return (present & (bit('X') | bit('Y') | bit('Z') | bit('A') | bit('B'))) != 0;
@@ -190,7 +194,13 @@ private:
     struct OffsetInputs {
         std::uint64_t offsetsVersion = 0;
         std::array<std::uint64_t, 8> values{};
-        bool operator==(const OffsetInputs&) const = default;
+        bool operator==(const OffsetInputs& other) const { // without a branch or memcmp a field
+            std::uint64_t differ = offsetsVersion ^ other.offsetsVersion;
+            for (std::size_t i = 0; i < values.size(); ++i) {
+                differ |= values[i] ^ other.values[i];
+            }
+            return differ == 0;
+        }
     };
     struct OffsetCache {
         bool known = false;

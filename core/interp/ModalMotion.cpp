@@ -22,6 +22,15 @@ namespace {
 
 constexpr std::array<char, 3> kCenterLetters{'I', 'J', 'K'};
 
+// The G codes that make a block other than a plain move, as bits (codes 0-127) the way Words keeps them.
+constexpr std::array<std::uint64_t, 2> kNotAPlainMove = [] {
+    std::array<std::uint64_t, 2> bits{};
+    for (unsigned code : {4u, 10u, 28u, 30u, 31u, 52u, 53u, 92u}) {
+        bits[code >> 6] |= std::uint64_t{1} << (code & 63u);
+    }
+    return bits;
+}();
+
 std::string millimetres(double v) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.3f", v);
@@ -32,7 +41,8 @@ std::string millimetres(double v) {
 
 machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordinates) const {
     machine::Axes target = basePosition();
-    machine::Axes offset = workOffset();
+    const bool incremental = state_.incremental();
+    const machine::Axes offset = machineCoordinates || incremental ? machine::Axes::Zero() : workOffset();
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         const auto* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)]);
         if (!w) {
@@ -41,7 +51,7 @@ machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordi
         double v = w->value * axisUnit(axis);
         if (machineCoordinates) {
             target(axis) = v;
-        } else if (state_.incremental()) {
+        } else if (incremental) {
             target(axis) += v;
         } else {
             target(axis) = v + offset(axis);
@@ -167,6 +177,14 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
 }
 
 void ModalInterpreter::moveAxes(const Words& words) {
+    // Most blocks are a plain move (G1 X.. Y..): none of the codes below, no canned cycle
+    if (!words.hasAnyG(kNotAPlainMove) && state_.group(9) == 80 &&
+        !(dialect_.lookAheadCodes && isLookAheadBlock(words))) {
+        if (words.hasAxis()) {
+            moveTo(targetFor(words, false), words);
+        }
+        return;
+    }
     if (words.hasG(92) || words.hasG(52)) {
         setCoordinateSystem(words);
         return;
