@@ -51,6 +51,7 @@ public:
 
     // Plain-word lines take a fast path by default; tests turn it off to compare both paths.
     void setPlainPath(bool enabled) { plainPath_ = enabled; }
+    bool plainPath() const { return plainPath_; }
 
     // The lint finding of the block just parsed (empty when none).
     const std::string& lastLint() const { return lastLint_; }

@@ -57,6 +57,13 @@ public:
         return line;
     }
 
+    // Where the next line starts; seek() makes the line that starts at `offset` the next one.
+    std::size_t position() const { return start_; }
+    void seek(std::size_t offset) {
+        start_ = offset;
+        done_ = false;
+    }
+
     // Whether the line last returned is followed by its line end in the text (all but the last).
     LineEnd lineEnd() const { return done_ ? LineEnd::Unknown : LineEnd::Follows; }
 

@@ -6,6 +6,8 @@
 #include "core/gcode/ChunkDropper.h"
 #include "core/gcode/LineSplitter.h"
 #include "core/gcode/PlainBlockParser.h"
+#include "core/gcode/PlainLinePrefetch.h"
+#include "core/gcode/WordFacts.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -14,35 +16,6 @@
 #include <utility>
 
 namespace m350::gcode {
-namespace {
-
-// What the passes over a file need of a block's words, found in one pass over them: whether it
-// calls an O program (M98 or G65 with a P number) and what ends the code before it (M30 M2 M99).
-struct WordFacts {
-    bool call = false;
-    const char* ends = nullptr;
-};
-
-WordFacts wordFacts(const Block& block) {
-    WordFacts facts;
-    for (const Word& w : block.words) {
-        if ((w.letter != 'M' && w.letter != 'G') || !w.isNumber()) { // most words: the cheapest test first
-            continue;
-        }
-        if (w.letter == 'M') {
-            if (w.number == 98) {
-                facts.call = true;
-            } else if (w.number == 30 || w.number == 2 || w.number == 99) {
-                facts.ends = w.number == 30 ? "M30" : w.number == 2 ? "M2" : "M99";
-            }
-        } else if (w.letter == 'G' && w.number == 65) {
-            facts.call = true;
-        }
-    }
-    return facts;
-}
-
-} // namespace
 
 void Parser::addFile(Program& program, const std::string& path, std::string_view text, FileRole role,
                      std::string encoding) {
@@ -93,7 +66,17 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
     Unreachable unreachable;
     LineSplitter lines(text);
     std::string_view line;
+    std::unique_ptr<PlainLinePrefetch> prefetch;
+    if (role == FileRole::Main && !dropper && blockParser.plainPath() && text.size() >= secondThreadFrom_) {
+        prefetch = PlainLinePrefetch::start(text, dialect_, fileIndex);
+    }
     while (true) {
+        if (prefetch && lines.position() == prefetch->begin()) {
+            if (unitOpen && !blockParser.commentOpen()) {
+                lineNumber = adoptPrefetched(program, *prefetch, lines, lineNumber, unreachable);
+            }
+            prefetch.reset();
+        }
         // The block is built where it is kept; it is added only at the end of this iteration. A
         // plain line is read before its end is looked for, except when chunks may be dropped (the
         // dropper marks the arenas before each line).
@@ -168,6 +151,30 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
         diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, program.files[fileIndex].name, at.line,
                                 at.column, "the comment '/*' is not closed with '*/' before the end of the file"});
     }
+}
+
+// The blocks a PlainLinePrefetch read, appended as the loop of parseFile would have (plain blocks
+// that neither call nor end a program: only their labels matter to the passes). Returns the
+// number of the last line passed.
+std::uint32_t Parser::adoptPrefetched(Program& program, PlainLinePrefetch& prefetch, LineSplitter& lines,
+                                      std::uint32_t lineNumber, Unreachable& unreachable) {
+    const PlainLinePrefetch::Result read = prefetch.finish();
+    if (read.blocks == nullptr || read.lines == 0) {
+        return lineNumber;
+    }
+    for (const Block& prefetched : *read.blocks) {
+        Block& block = program.blocks.nextSlot();
+        std::construct_at(&block, prefetched);
+        block.location.line += lineNumber;
+        if (block.label >= 0) {
+            labelBlocks_.emplace_back(block.label, static_cast<std::uint32_t>(program.blocks.size()));
+            unreachable.update(block, block.location.line, nullptr);
+        }
+        program.blocks.addNextSlot();
+    }
+    prefetch.giveStorageTo(program);
+    lines.seek(read.end);
+    return lineNumber + read.lines;
 }
 
 void Parser::Unreachable::update(const Block& block, std::uint32_t lineNumber, const char* endingWord) {

@@ -14,11 +14,17 @@
 
 namespace m350::gcode {
 
+class ChunkSource;
+class LineSplitter;
+class PlainLinePrefetch;
+
+// A main program from this size on is read on two threads: below, a second thread would not pay
+// for its start.
+inline constexpr std::size_t kSecondThreadFrom = std::size_t{1} << 20;
+
 // Builds a Program from any number of files (the program to run plus the machine's macro
 // libraries). Every file is parsed whole; errors are collected, never thrown, so `check` can list
 // them all.
-class ChunkSource;
-
 class Parser {
 public:
     explicit Parser(const Dialect& dialect) : dialect_(dialect) {}
@@ -32,6 +38,9 @@ public:
     // files above kMostSourceBytes are refused with a diagnostic.
     void addSource(Program& program, const SourceText& source, FileRole role);
     void setDropChunksAbove(std::size_t bytes) { dropAbove_ = bytes; }
+    // A main program of at least this many bytes has its second half read on a second thread
+    // (PlainLinePrefetch); tests lower it to take that path with small programs.
+    void setSecondThreadFrom(std::size_t bytes) { secondThreadFrom_ = bytes; }
 
     // Checks that need every file: calls to O programs that exist nowhere. Then the diagnostics are
     // put in reading order and bounded (DiagnosticCap).
@@ -53,6 +62,8 @@ private:
         void update(const Block& block, std::uint32_t lineNumber, const char* endingWord);
     };
     void demoteUnreachable(std::size_t firstNew, const Unreachable& unreachable);
+    std::uint32_t adoptPrefetched(Program& program, PlainLinePrefetch& prefetch, LineSplitter& lines,
+                                  std::uint32_t lineNumber, Unreachable& unreachable);
     void closeUnit(Program& program, std::uint32_t unitIndex);
     void pairLoops(Program& program);
     void checkGotos(const Program& program, const ProgramUnit& unit);
@@ -62,6 +73,7 @@ private:
 
     const Dialect& dialect_;
     std::size_t dropAbove_ = kProgramKeptWholeUpTo;
+    std::size_t secondThreadFrom_ = kSecondThreadFrom;
     std::vector<Diagnostic> diagnostics_;
     DiagnosticCap cap_;
     // The passes over a unit look only at the blocks that matter to them, not at every G1 line:

@@ -6,6 +6,7 @@
 #include "core/gcode/LabelIndex.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -60,6 +61,8 @@ public:
     // Lint findings by block: valid lines that are never what the author meant. Running such a
     // line raises an alarm instead of moving the machine somewhere wrong.
     std::unordered_map<std::uint32_t, std::string> suspects;
+    // What blocks read on a second thread refer to (PlainLinePrefetch).
+    std::vector<std::unique_ptr<BlockStorage>> adoptedStorage;
     // Why a block with `suspect` set stops the program.
     std::string suspectMessage(std::uint32_t block) const;
 

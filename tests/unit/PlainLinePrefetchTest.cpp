@@ -1,0 +1,230 @@
+// A large main program has its second half read on a second thread (PlainLinePrefetch) while the
+// parser reads the first, and the parser adopts what it read. These tests lower the size that
+// takes that path to nothing and compare every block, unit, label and diagnostic with the same
+// program read on one thread, with the middle of the text falling on every kind of line.
+#include "core/gcode/BlockList.h"
+#include "core/gcode/Dialect.h"
+#include "core/gcode/Parser.h"
+#include "core/gcode/Program.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace m350 {
+namespace {
+
+using gcode::Block;
+using gcode::Program;
+
+struct Parsed {
+    Program program;
+    std::vector<std::string> diagnostics;
+};
+
+Parsed parse(const std::string& text, bool secondThread) {
+    Parsed parsed;
+    gcode::Parser parser(gcode::Dialect::m350());
+    parser.setSecondThreadFrom(secondThread ? 0 : std::numeric_limits<std::size_t>::max());
+    parser.addFile(parsed.program, "p.nc", text, gcode::FileRole::Main);
+    parser.finish(parsed.program);
+    for (const gcode::Diagnostic& d : parser.diagnostics()) {
+        parsed.diagnostics.push_back(gcode::formatDiagnostic(d));
+    }
+    return parsed;
+}
+
+void expectSameBlock(const Block& a, const Block& b, std::size_t index) {
+    SCOPED_TRACE("block " + std::to_string(index) + " at line " + std::to_string(a.location.line));
+    EXPECT_EQ(a.location.file, b.location.file);
+    EXPECT_EQ(a.location.line, b.location.line);
+    EXPECT_EQ(a.location.column, b.location.column);
+    EXPECT_EQ(a.label, b.label);
+    EXPECT_EQ(a.programNumber, b.programNumber);
+    EXPECT_EQ(a.blockDelete, b.blockDelete);
+    EXPECT_EQ(a.programEnd, b.programEnd);
+    EXPECT_EQ(a.control, b.control);
+    EXPECT_EQ(a.partner, b.partner);
+    EXPECT_EQ(a.comment, b.comment);
+    EXPECT_EQ(a.assignments.size(), b.assignments.size());
+    ASSERT_EQ(a.words.size(), b.words.size());
+    for (std::size_t w = 0; w < a.words.size(); ++w) {
+        EXPECT_EQ(a.words[w].letter, b.words[w].letter);
+        EXPECT_EQ(a.words[w].number, b.words[w].number);
+        EXPECT_EQ(a.words[w].value, b.words[w].value);
+        EXPECT_EQ(a.words[w].column, b.words[w].column);
+    }
+}
+
+// Whether the program read on two threads is the one read on one; and whether the second thread
+// gave any blocks (the parser adopted its storage).
+bool expectSameProgram(const std::string& text) {
+    const Parsed one = parse(text, false);
+    const Parsed two = parse(text, true);
+    EXPECT_EQ(one.diagnostics, two.diagnostics);
+    EXPECT_TRUE(one.program.adoptedStorage.empty());
+    EXPECT_EQ(one.program.blocks.size(), two.program.blocks.size());
+    for (std::size_t i = 0; i < one.program.blocks.size() && i < two.program.blocks.size(); ++i) {
+        expectSameBlock(one.program.blocks[i], two.program.blocks[i], i);
+        if (::testing::Test::HasFailure()) {
+            break;
+        }
+    }
+    EXPECT_EQ(one.program.units.size(), two.program.units.size());
+    for (std::size_t u = 0; u < one.program.units.size() && u < two.program.units.size(); ++u) {
+        EXPECT_EQ(one.program.units[u].number, two.program.units[u].number);
+        EXPECT_EQ(one.program.units[u].begin, two.program.units[u].begin);
+        EXPECT_EQ(one.program.units[u].end, two.program.units[u].end);
+    }
+    // Every label is found where the program read on one thread has it.
+    for (std::size_t i = 0; i < one.program.blocks.size(); ++i) {
+        const Block& block = one.program.blocks[i];
+        if (block.label >= 0) {
+            const auto unit = one.program.unitOfBlock(static_cast<std::uint32_t>(i));
+            EXPECT_EQ(one.program.findLabel(unit, block.label, 0), two.program.findLabel(unit, block.label, 0))
+                << "N" << block.label;
+        }
+    }
+    return !two.program.adoptedStorage.empty();
+}
+
+std::string g1(int i) {
+    return "G1 X" + std::to_string(i % 97) + "." + std::to_string(i % 10) + " Y-" + std::to_string(i % 89) +
+           " F" + std::to_string(500 + i % 7);
+}
+
+// Every kind of line, at random: plain lines with and without labels and comments, blank lines,
+// `/* */` comments over several lines, block delete, assignments, loops, expressions, GOTOs to
+// labels of the second half, calls of a subprogram (and of a missing one), CR and CRLF line ends, and now and then a
+// syntax error. The middle of the text falls on any of them.
+std::string randomProgram(std::mt19937& random, int lines) {
+    std::uniform_int_distribution<int> kind(0, 99);
+    std::string text = "#1 = 0\n";
+    int loops = 0;
+    for (int i = 0; i < lines; ++i) {
+        const int k = kind(random);
+        const char* end = k % 17 == 0 ? "\r" : k % 13 == 0 ? "\r\n" : "\n";
+        if (k < 55) {
+            text += g1(i);
+        } else if (k < 62) {
+            text += "N" + std::to_string(i + 1) + " " + g1(i) + " (N" + std::to_string(i + 1) + ")";
+        } else if (k < 66) {
+            text += "(a comment " + std::to_string(i) + ")";
+        } else if (k < 69) {
+            text += "";
+        } else if (k < 71) {
+            text += g1(i) + " /* runs on";
+            text += end;
+            text += "over " + std::to_string(i) + " lines";
+            text += end;
+            text += "*/ G0 Z" + std::to_string(i % 50);
+        } else if (k < 73) {
+            text += "/" + g1(i);
+        } else if (k < 75) {
+            text += "#" + std::to_string(100 + i % 50) + " = " + std::to_string(i) + " * 2";
+        } else if (k < 76 && loops < 20) {
+            ++loops;
+            text += "#1 = 0";
+            text += end;
+            text += "WHILE [#1 LT 2] DO1";
+            text += end;
+            text += g1(i);
+            text += end;
+            text += "#1 = #1 + 1";
+            text += end;
+            text += "END1";
+        } else if (k < 78) {
+            text += "G1 X[" + std::to_string(i % 9) + " + 1] F500";
+        } else if (k < 79) {
+            text += "IF [#1 GT 5] GOTO" + std::to_string(lines - lines % 7); // a label far down
+        } else if (k < 80) {
+            text += random() % 4 == 0 ? "M98 P3000" : "M98 P2000"; // O3000 does not exist: an error
+        } else if (k < 81 && random() % 8 == 0) {
+            text += "G1 X1..5"; // a syntax error
+        } else {
+            text += g1(i) + " (after " + std::to_string(i) + ")";
+        }
+        text += end;
+    }
+    text += "N" + std::to_string(lines - lines % 7) + " G0 Z10\n";
+    text += "M30\n";
+    text += "O2000\nG1 X1 Y1\nM99\n";
+    return text;
+}
+
+TEST(PlainLinePrefetch, RandomProgramsAreTheSameReadOnTwoThreads) {
+    std::mt19937 random(20261124);
+    int adopted = 0;
+    for (int round = 0; round < 24; ++round) {
+        SCOPED_TRACE("round " + std::to_string(round));
+        adopted += expectSameProgram(randomProgram(random, 2000 + static_cast<int>(random() % 3000))) ? 1 : 0;
+        if (::testing::Test::HasFailure()) {
+            break;
+        }
+    }
+    // Most middles fall where plain lines follow: the second thread's blocks were taken.
+    EXPECT_GE(adopted, 12);
+}
+
+TEST(PlainLinePrefetch, ACamProgramIsReadMostlyByTheSecondThread) {
+    std::string text = "O1234 (a CAM program)\nG90 G54 G17\nT1 M6\nM3 S12000\n";
+    for (int i = 0; i < 20000; ++i) {
+        text += (i % 50 == 0 ? "N" + std::to_string(i + 10) + " " : std::string()) + g1(i) + "\n";
+    }
+    text += "M5\nM30\n";
+    EXPECT_TRUE(expectSameProgram(text));
+    const Parsed two = parse(text, true);
+    EXPECT_TRUE(two.diagnostics.empty());
+    EXPECT_EQ(two.program.blocks.size(), 20000u + 6u);
+    EXPECT_EQ(two.program.blocks[two.program.blocks.size() - 1].location.line, 20000u + 6u);
+}
+
+// The middle of the text is inside a `/* */` comment: what the second thread read as code is
+// commented out, so the parser reads those lines itself.
+TEST(PlainLinePrefetch, AMiddleInsideACommentIsReadByTheParser) {
+    std::string text;
+    for (int i = 0; i < 1000; ++i) {
+        text += g1(i) + "\n";
+    }
+    text += "G1 X1 /* a comment that runs over the middle\n";
+    for (int i = 0; i < 3000; ++i) {
+        text += g1(i) + "\n"; // commented out
+    }
+    text += "*/ G1 X5 Y5\n";
+    for (int i = 0; i < 1000; ++i) {
+        text += g1(i) + "\n";
+    }
+    text += "M30\n";
+    EXPECT_FALSE(expectSameProgram(text));
+    const Parsed two = parse(text, true);
+    EXPECT_EQ(two.program.blocks.size(), 1000u + 1u + 1u + 1000u + 1u);
+}
+
+// Nothing but blank lines and comments before the middle: no block, no unit yet, so the parser
+// reads on by itself.
+TEST(PlainLinePrefetch, NoBlockBeforeTheMiddleMeansOneThread) {
+    std::string text(100000, '\n');
+    for (int i = 0; i < 1000; ++i) {
+        text += g1(i) + "\n";
+    }
+    EXPECT_FALSE(expectSameProgram(text));
+}
+
+// An error in the second half is reported as on one thread, at its line and column.
+TEST(PlainLinePrefetch, AnErrorInTheSecondHalfIsReportedAtItsLine) {
+    std::string text;
+    for (int i = 0; i < 4000; ++i) {
+        text += (i == 3500 ? std::string("G1 X1..5") : g1(i)) + "\n";
+    }
+    text += "M30\n";
+    EXPECT_TRUE(expectSameProgram(text));
+    const Parsed two = parse(text, true);
+    ASSERT_EQ(two.diagnostics.size(), 1u);
+    EXPECT_NE(two.diagnostics.front().find("p.nc:3501:"), std::string::npos) << two.diagnostics.front();
+}
+
+} // namespace
+} // namespace m350
