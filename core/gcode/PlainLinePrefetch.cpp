@@ -33,14 +33,15 @@ PlainLinePrefetch::~PlainLinePrefetch() {
 
 void PlainLinePrefetch::read() {
     try {
-        // Split as the parser splits; the last line (no line end after it) is left to the parser.
+        // Lines are passed as the parser passes them; the last line (no line end after it) is left
+        // to the parser.
         LineSplitter lines(text_.substr(begin_));
-        std::string_view line;
         std::uint32_t number = 0;
-        while (!stop_.load(std::memory_order_relaxed) && lines.next(line) && lines.lineEnd() == LineEnd::Follows) {
+        while (!stop_.load(std::memory_order_relaxed) && lines.lineAhead() != nullptr) {
             Block& block = blocks_.nextSlot();
+            std::size_t length = 0;
             const PlainResult result =
-                parsePlainBlock(line, dialect_, {fileIndex_, number + 1, 0}, *storage_, block, LineEnd::Follows);
+                parsePlainLine(lines.lineAhead(), dialect_, {fileIndex_, number + 1, 0}, *storage_, block, length);
             if (result == PlainResult::Declined) {
                 break;
             }
@@ -51,6 +52,7 @@ void PlainLinePrefetch::read() {
                 }
                 blocks_.addNextSlot();
             }
+            lines.skipLine(length);
             ++number;
             end_ = begin_ + lines.position();
             lines_ = number;
