@@ -56,6 +56,61 @@ void BlockList::addSlab(std::size_t blocks) {
     capacity_ += blocks;
 }
 
+Block* BlockList::newChunk() {
+    slabs_.reserve(slabs_.size() + 1);
+    auto* memory = static_cast<Block*>(allocateLarge(kChunkSize * sizeof(Block)));
+    slabs_.push_back({memory, kChunkSize});
+    return memory;
+}
+
+void BlockList::append(BlockList&& other) {
+    if (!other.dropped_.empty() || !dropped_.empty()) {
+        throw std::logic_error("a list with dropped chunks is not appended");
+    }
+    const std::size_t total = other.size_;
+    std::size_t from = 0;
+    // Fill this list's last chunk, so that the rest starts on a chunk of its own.
+    for (; from < total && (size_ & (kChunkSize - 1)) != 0; ++from) {
+        std::construct_at(&nextSlot(), other[from]);
+        addNextSlot();
+    }
+    if (from == total) {
+        other = BlockList();
+        return;
+    }
+    // Room this list has past its blocks is given up: its chunks come from `other` now.
+    chunks_.resize(size_ >> kChunkBits);
+    capacity_ = size_;
+    auto slabEnd = [&other](const Block* block) -> const Block* {
+        for (const Slab& slab : other.slabs_) {
+            if (block >= slab.blocks && block < slab.blocks + slab.capacity) {
+                return slab.blocks + slab.capacity;
+            }
+        }
+        return block; // not reached: every block of `other` is in one of its slabs
+    };
+    for (; from < total; from += kChunkSize) {
+        const Block* first = &other[from];
+        const std::size_t count = std::min<std::size_t>(kChunkSize, total - from);
+        // A chunk is kChunkSize consecutive blocks of one allocation (the last one is appended to):
+        // where `other` has them so, its memory is taken as it is.
+        if (first + kChunkSize <= slabEnd(first)) {
+            chunks_.push_back(const_cast<Block*>(first));
+        } else {
+            Block* chunk = newChunk();
+            for (std::size_t k = 0; k < count; ++k) {
+                std::construct_at(chunk + k, other[from + k]);
+            }
+            chunks_.push_back(chunk);
+        }
+        capacity_ += kChunkSize;
+        size_ += count;
+    }
+    slabs_.insert(slabs_.end(), other.slabs_.begin(), other.slabs_.end());
+    other.slabs_.clear();
+    other = BlockList();
+}
+
 void BlockList::grow() {
     // MDI lines and small programs fit the first chunk; beyond it, allocations of at least 2 MB
     // come in huge pages (a page fault per 2 MB instead of per 4 KB).

@@ -74,6 +74,11 @@ public:
     }
     void addNextSlot() { ++size_; }
 
+    // Appends the blocks of `other` (which is left empty) and takes over its memory: blocks are
+    // copied only where a chunk of this list would straddle two allocations of `other`, and at
+    // both ends, so a list of many chunks is appended in about the time of a few.
+    void append(BlockList&& other);
+
     // Drops a full chunk allocated on its own: its blocks come back from `reloader` when looked
     // up. False (and nothing changes) when the chunk shares its memory with others.
     bool drop(std::uint32_t chunk, std::shared_ptr<const ChunkReloader> reloader);
@@ -128,6 +133,7 @@ private:
 
     const Block* cachedChunk(std::uint32_t chunk) const;
     void addSlab(std::size_t blocks);
+    Block* newChunk();
     void grow();
     void release() noexcept;
 

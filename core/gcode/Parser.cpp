@@ -158,20 +158,19 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
 // number of the last line passed.
 std::uint32_t Parser::adoptPrefetched(Program& program, PlainLinePrefetch& prefetch, LineSplitter& lines,
                                       std::uint32_t lineNumber, Unreachable& unreachable) {
-    const PlainLinePrefetch::Result read = prefetch.finish();
-    if (read.blocks == nullptr || read.lines == 0) {
-        return lineNumber;
+    PlainLinePrefetch::Result read = prefetch.take();
+    if (read.lines == 0 || read.linesBefore != lineNumber) {
+        return lineNumber; // nothing read (or, never seen, counted otherwise): the parser reads on
     }
-    for (const Block& prefetched : *read.blocks) {
-        Block& block = program.blocks.nextSlot();
-        std::construct_at(&block, prefetched);
-        block.location.line += lineNumber;
-        if (block.label >= 0) {
-            labelBlocks_.emplace_back(block.label, static_cast<std::uint32_t>(program.blocks.size()));
-            unreachable.update(block, block.location.line, nullptr);
-        }
-        program.blocks.addNextSlot();
+    const auto first = static_cast<std::uint32_t>(program.blocks.size());
+    for (const auto& [label, index] : read.labels) {
+        labelBlocks_.emplace_back(label, first + index);
     }
+    if (!read.labels.empty()) {
+        const Block& labelled = read.blocks[read.labels.back().second];
+        unreachable.update(labelled, labelled.location.line, nullptr); // a jump may land there
+    }
+    program.blocks.append(std::move(read.blocks));
     prefetch.giveStorageTo(program);
     lines.seek(read.end);
     return lineNumber + read.lines;

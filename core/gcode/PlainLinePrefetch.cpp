@@ -5,13 +5,16 @@
 #include "core/gcode/Program.h"
 #include "core/gcode/WordFacts.h"
 
+#include <algorithm>
+#include <cstring>
+
 namespace m350::gcode {
 
 std::unique_ptr<PlainLinePrefetch> PlainLinePrefetch::start(std::string_view text, const Dialect& dialect,
                                                             std::uint32_t fileIndex) {
     // The parser's own half takes it a little longer per line (it also indexes what it reads),
     // so the second thread starts a little before the middle.
-    const std::size_t newline = text.find('\n', text.size() / 100 * 48);
+    const std::size_t newline = text.find('\n', text.size() / 100 * 46);
     if (newline == std::string_view::npos || newline + 1 >= text.size()) {
         return nullptr;
     }
@@ -22,7 +25,9 @@ std::unique_ptr<PlainLinePrefetch> PlainLinePrefetch::start(std::string_view tex
 
 PlainLinePrefetch::PlainLinePrefetch(std::string_view text, std::size_t begin, const Dialect& dialect,
                                      std::uint32_t fileIndex)
-    : text_(text), begin_(begin), dialect_(dialect), fileIndex_(fileIndex), end_(begin) {}
+    : text_(text), begin_(begin), dialect_(dialect), fileIndex_(fileIndex) {
+    result_.end = begin;
+}
 
 PlainLinePrefetch::~PlainLinePrefetch() {
     stop_.store(true, std::memory_order_relaxed);
@@ -31,45 +36,64 @@ PlainLinePrefetch::~PlainLinePrefetch() {
     }
 }
 
+namespace {
+
+// The lines before `end` as the parser counts them: each LF, CRLF and lone CR ends one.
+std::uint32_t linesBefore(std::string_view text, std::size_t end) {
+    std::size_t count = static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+    for (const char* cr = text.data(); (cr = static_cast<const char*>(std::memchr(cr, '\r', static_cast<std::size_t>(text.data() + end - cr)))) != nullptr; ++cr) {
+        count += cr + 1 < text.data() + text.size() && cr[1] == '\n' ? 0 : 1;
+    }
+    return static_cast<std::uint32_t>(count);
+}
+
+} // namespace
+
 void PlainLinePrefetch::read() {
     try {
+        const std::uint32_t before = linesBefore(text_, begin_);
+        result_.linesBefore = before;
         // Lines are passed as the parser passes them; the last line (no line end after it) is left
         // to the parser.
         LineSplitter lines(text_.substr(begin_));
         std::uint32_t number = 0;
+        BlockList& blocks = result_.blocks;
         while (!stop_.load(std::memory_order_relaxed) && lines.lineAhead() != nullptr) {
-            Block& block = blocks_.nextSlot();
+            Block& block = blocks.nextSlot();
             std::size_t length = 0;
-            const PlainResult result =
-                parsePlainLine(lines.lineAhead(), dialect_, {fileIndex_, number + 1, 0}, *storage_, block, length);
-            if (result == PlainResult::Declined) {
+            const PlainResult read = parsePlainLine(lines.lineAhead(), dialect_, {fileIndex_, before + number + 1, 0},
+                                                    *storage_, block, length);
+            if (read == PlainResult::Declined) {
                 break;
             }
-            if (result == PlainResult::Parsed) {
+            if (read == PlainResult::Parsed) {
                 const WordFacts facts = wordFacts(block);
                 if (facts.call || facts.ends || block.programEnd || block.suspect) {
                     break;
                 }
-                blocks_.addNextSlot();
+                if (block.label >= 0) {
+                    result_.labels.emplace_back(block.label, static_cast<std::uint32_t>(blocks.size()));
+                }
+                blocks.addNextSlot();
             }
             lines.skipLine(length);
             ++number;
-            end_ = begin_ + lines.position();
-            lines_ = number;
+            result_.end = begin_ + lines.position();
+            result_.lines = number;
         }
     } catch (...) {
         failure_ = std::current_exception();
     }
 }
 
-PlainLinePrefetch::Result PlainLinePrefetch::finish() {
+PlainLinePrefetch::Result PlainLinePrefetch::take() {
     if (thread_.joinable()) {
         thread_.join();
     }
     if (failure_) {
-        return {nullptr, begin_, 0}; // out of memory, most likely: the parser reads these lines itself
+        return {}; // out of memory, most likely: the parser reads these lines itself
     }
-    return {&blocks_, end_, lines_};
+    return std::move(result_);
 }
 
 void PlainLinePrefetch::giveStorageTo(Program& program) {

@@ -11,6 +11,8 @@
 #include <memory>
 #include <string_view>
 #include <thread>
+#include <utility>
+#include <vector>
 
 namespace m350::gcode {
 
@@ -40,15 +42,19 @@ public:
     // Where the first line it reads starts in the text.
     std::size_t begin() const { return begin_; }
 
-    // What it read, once the thread is done (finish waits for it). Block locations count lines
-    // from 1 at begin(); `end` is where the first line it did not take starts, after `lines`
-    // lines (those that hold no block included). No blocks (null) when it failed.
+    // What it read, once the thread is done (take waits for it): the blocks of the lines from
+    // begin() on, numbered as lines of the whole text; `end`, where the first line it did not take
+    // starts; `linesBefore`, the lines before begin(), and `lines`, the lines it passed (blank
+    // ones included); and its labelled blocks, as (label, index among its blocks). Nothing (no
+    // line passed) when it failed.
     struct Result {
-        const BlockList* blocks = nullptr;
+        BlockList blocks;
         std::size_t end = 0;
+        std::uint32_t linesBefore = 0;
         std::uint32_t lines = 0;
+        std::vector<std::pair<std::int32_t, std::uint32_t>> labels;
     };
-    Result finish();
+    Result take();
 
     // Hands what the blocks refer to (their words and comments) to the program, which keeps it.
     void giveStorageTo(Program& program);
@@ -62,9 +68,7 @@ private:
     const Dialect& dialect_;
     std::uint32_t fileIndex_;
     std::unique_ptr<BlockStorage> storage_ = std::make_unique<BlockStorage>();
-    BlockList blocks_;
-    std::size_t end_ = 0;
-    std::uint32_t lines_ = 0;
+    Result result_;
     std::exception_ptr failure_;
     std::atomic<bool> stop_{false};
     std::thread thread_;
