@@ -46,6 +46,7 @@ MagazineDriver::~MagazineDriver() = default;
 
 void MagazineDriver::build() {
     device_.reset();
+    rack_ = nullptr;
     disc_ = nullptr;
     carousel_ = nullptr;
     multiHead_ = nullptr;
@@ -134,7 +135,7 @@ void MagazineDriver::buildRack() {
     slideOut_ = false;
     const int pockets = static_cast<int>(g.pockets.size());
     const int spindle = toolInMagazine(saturatingInt(p.get(param::kCurrentTool)), pockets);
-    install(std::make_unique<devices::LinearRack>(std::move(g), toolsInPockets(pockets, spindle), spindle));
+    rack_ = install(std::make_unique<devices::LinearRack>(std::move(g), toolsInPockets(pockets, spindle), spindle));
 }
 
 // The drawbar and its clamp cylinder's sensors: the IO page's triples on the M350, the magazine's
@@ -222,10 +223,15 @@ void MagazineDriver::onMachineEvent(const machine::MachineEvent& event) {
     switch (event.type) {
     case Type::Rapid:
     case Type::Feed:
-    case Type::Arc:
-        crash = device_->move(noseAt(event.from), noseAt(event.to), event.type == Type::Rapid,
-                                context_.machine.spindleTurning(), event.start);
+    case Type::Arc: {
+        const Eigen::Vector3d from = noseAt(event.from);
+        const Eigen::Vector3d to = noseAt(event.to);
+        if (rack_ && rack_->passesFar(from, to)) {
+            return;
+        }
+        crash = device_->move(from, to, event.type == Type::Rapid, context_.machine.spindleTurning(), event.start);
         break;
+    }
     case Type::Io:
         if (event.port > 0) {
             crash = output(event.port, event.level, context_.machine.time());

@@ -15,6 +15,7 @@
 
 namespace m350::devices {
 class Magazine;
+class LinearRack;
 class ServoDisc;
 class UmbrellaCarousel;
 class MultiHead;
@@ -97,6 +98,7 @@ private:
 
     Context context_;
     std::unique_ptr<devices::Magazine> device_;
+    devices::LinearRack* rack_ = nullptr;           // device_ when it is a linear rack
     devices::ServoDisc* disc_ = nullptr;            // device_ when it is a servo disc
     devices::UmbrellaCarousel* carousel_ = nullptr; // device_ when it is an umbrella carousel
     devices::MultiHead* multiHead_ = nullptr;       // device_ when it is a multi-process machine

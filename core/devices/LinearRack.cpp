@@ -13,7 +13,6 @@ using Eigen::Vector3d;
 
 namespace {
 
-constexpr double kStill = 1e-6;      // an axis that moves less than this did not move
 constexpr double kZoneMargin = 10.0; // the magazine zone reaches this far around a pocket
 
 std::string at(const Vector3d& p) {
@@ -84,16 +83,8 @@ bool LinearRack::inside(const Box& box, const Vector3d& p) {
 
 // Whether the straight move passes through the box (slab test).
 bool LinearRack::crosses(const Box& box, const Vector3d& from, const Vector3d& to) {
-    // Most moves pass wide of a box on some axis: rejected without the divisions of the slab test,
-    // which would say the same. The margin grows with the move so that the slab test's rounding
-    // cannot bring an end it puts past the box back to its edge (NaN compares false: no shortcut).
-    for (int i = 0; i < 3; ++i) {
-        const double margin = kStill + 1e-9 * std::abs(to(i) - from(i));
-        const double below = box.low(i) - margin;
-        const double above = box.high(i) + margin;
-        if ((from(i) < below && to(i) < below) || (from(i) > above && to(i) > above)) {
-            return false;
-        }
+    if (apart(box, from, to)) {
+        return false;
     }
     double enter = 0.0;
     double leave = 1.0;

@@ -4,6 +4,7 @@
 #include "core/devices/SpindleDrawbar.h"
 #include "core/machine/MachineTypes.h"
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,6 +55,19 @@ public:
         Eigen::Vector3d high;
     };
 
+    static constexpr double kStill = 1e-6; // an axis that moves less than this did not move
+
+    // A move that passes wide of the rack while nothing is engaged in it: all that move() does
+    // with it (forget the last move, so that stoppedAt takes none again), done inline for the
+    // caller; false when move() must look at the move. Most moves of a program are far from it.
+    bool passesFar(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+        if (engaged_ != 0 || !envelope_ || (to - from).squaredNorm() < kStill * kStill || !apart(*envelope_, from, to)) {
+            return false;
+        }
+        lastMove_.reset();
+        return true;
+    }
+
 private:
     Box region(int pocket) const;  // where the nose stands with a held tool engaged in the fork
     Box zone(int pocket) const;    // the magazine zone around one pocket
@@ -62,6 +76,20 @@ private:
     const Box& zoneOf(int pocket) const { return boxes_[static_cast<std::size_t>(pocket - 1)].zone; }
     static bool inside(const Box& box, const Eigen::Vector3d& p);
     static bool crosses(const Box& box, const Eigen::Vector3d& from, const Eigen::Vector3d& to);
+    // Whether the move passes wide of the box on some axis: it does not cross it, without the
+    // divisions of the slab test. The margin grows with the move so that the slab test's rounding
+    // cannot bring an end it puts past the box back to its edge (NaN compares false: not apart).
+    static bool apart(const Box& box, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+        for (int i = 0; i < 3; ++i) {
+            const double margin = kStill + 1e-9 * std::abs(to(i) - from(i));
+            const double below = box.low(i) - margin;
+            const double above = box.high(i) + margin;
+            if ((from(i) < below && to(i) < below) || (from(i) > above && to(i) > above)) {
+                return true;
+            }
+        }
+        return false;
+    }
     bool alongEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
     int pocketAt(const Eigen::Vector3d& p) const; // 0 when none
     std::optional<std::string> moveHolding(const Eigen::Vector3d& from, const Eigen::Vector3d& to);

@@ -151,3 +151,17 @@ TEST(LinearRack, TopLoadingHeldToolMovingSidewaysLowHitsTheForks) {
 }
 
 } // namespace
+
+// The inline test the magazine driver runs first: a move far from every pocket, with nothing
+// engaged, needs no look from move(); one near the rack, or any while a fork holds the tool, does.
+TEST(LinearRack, OnlyAMoveFarFromTheRackPassesWithoutALook) {
+    LinearRack r = rack();
+    EXPECT_TRUE(r.passesFar({0, 300, 0}, {500, 300, 0}));
+    EXPECT_TRUE(r.passesFar({-200, 0, 0}, {-100, 0, -80}));
+    EXPECT_FALSE(r.passesFar({0, 300, 0}, {0, 300, 0}));     // no move: move() keeps the last one
+    EXPECT_FALSE(r.passesFar({50, 60, -80}, {50, 5, -80}));  // into the fork of pocket 1
+    EXPECT_FALSE(r.passesFar({0, 0, -70}, {200, 0, -70}));   // along the row of pockets
+    EXPECT_FALSE(path(r, {{50, 60, -80}, {50, 5, -80}}));    // T1 into pocket 1: the fork holds it
+    EXPECT_FALSE(r.passesFar({0, 300, 0}, {500, 300, 0}));
+    EXPECT_TRUE(path(r, {{50, 5, -80}, {0, 300, 0}}));       // and a move away sideways wrecks it
+}
