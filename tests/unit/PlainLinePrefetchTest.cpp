@@ -2,6 +2,8 @@
 // parser reads the first, and the parser adopts what it read. These tests lower the size that
 // takes that path to nothing and compare every block, unit, label and diagnostic with the same
 // program read on one thread, with the middle of the text falling on every kind of line.
+#include "RandomProgramLines.h"
+
 #include "core/gcode/BlockList.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Parser.h"
@@ -91,65 +93,29 @@ bool expectSameProgram(const std::string& text) {
     return !two.program.adoptedStorage.empty();
 }
 
-std::string g1(int i) {
-    return "G1 X" + std::to_string(i % 97) + "." + std::to_string(i % 10) + " Y-" + std::to_string(i % 89) +
-           " F" + std::to_string(500 + i % 7);
-}
-
-// Every kind of line, at random: plain lines with and without labels and comments, blank lines,
-// `/* */` comments over several lines, block delete, assignments, loops, expressions, GOTOs to
-// labels of the second half, calls of a subprogram (and of a missing one), CR and CRLF line ends, and now and then a
-// syntax error. The middle of the text falls on any of them.
+// Every kind of line, at random (RandomProgramLines.h), and besides GOTOs to a label of the second
+// half, calls of a subprogram (and of a missing one) and now and then a syntax error. The middle
+// of the text falls on any of them.
 std::string randomProgram(std::mt19937& random, int lines) {
     std::uniform_int_distribution<int> kind(0, 99);
+    std::uniform_int_distribution<int> special(0, 99);
     std::string text = "#1 = 0\n";
-    int loops = 0;
+    int loopsLeft = 20;
+    const std::string farLabel = std::to_string(lines - lines % 7);
     for (int i = 0; i < lines; ++i) {
-        const int k = kind(random);
-        const char* end = k % 17 == 0 ? "\r" : k % 13 == 0 ? "\r\n" : "\n";
-        if (k < 55) {
-            text += g1(i);
-        } else if (k < 62) {
-            text += "N" + std::to_string(i + 1) + " " + g1(i) + " (N" + std::to_string(i + 1) + ")";
-        } else if (k < 66) {
-            text += "(a comment " + std::to_string(i) + ")";
-        } else if (k < 69) {
-            text += "";
-        } else if (k < 71) {
-            text += g1(i) + " /* runs on";
-            text += end;
-            text += "over " + std::to_string(i) + " lines";
-            text += end;
-            text += "*/ G0 Z" + std::to_string(i % 50);
-        } else if (k < 73) {
-            text += "/" + g1(i);
-        } else if (k < 75) {
-            text += "#" + std::to_string(100 + i % 50) + " = " + std::to_string(i) + " * 2";
-        } else if (k < 76 && loops < 20) {
-            ++loops;
-            text += "#1 = 0";
-            text += end;
-            text += "WHILE [#1 LT 2] DO1";
-            text += end;
-            text += g1(i);
-            text += end;
-            text += "#1 = #1 + 1";
-            text += end;
-            text += "END1";
-        } else if (k < 78) {
-            text += "G1 X[" + std::to_string(i % 9) + " + 1] F500";
-        } else if (k < 79) {
-            text += "IF [#1 GT 5] GOTO" + std::to_string(lines - lines % 7); // a label far down
-        } else if (k < 80) {
-            text += random() % 4 == 0 ? "M98 P3000" : "M98 P2000"; // O3000 does not exist: an error
-        } else if (k < 81 && random() % 8 == 0) {
-            text += "G1 X1..5"; // a syntax error
-        } else {
-            text += g1(i) + " (after " + std::to_string(i) + ")";
+        int k = kind(random);
+        if (k >= 74 && k < 86 && random() % 20 != 0) {
+            k = 90; // lines the second thread stops at, rarer: it reads long runs, as in CAM output
         }
-        text += end;
+        const char* end = k % 17 == 0 ? "\r" : k % 13 == 0 ? "\r\n" : "\n";
+        switch (special(random)) {
+        case 0: text += "IF [#1 GT 5] GOTO" + farLabel + end; break;
+        case 1: text += std::string(random() % 4 == 0 ? "M98 P3000" : "M98 P2000") + end; break; // no O3000
+        case 2: text += std::string(random() % 8 == 0 ? "G1 X1..5" : "G0 Z5") + end; break;
+        default: appendRandomLine(text, k, i, end, loopsLeft); break;
+        }
     }
-    text += "N" + std::to_string(lines - lines % 7) + " G0 Z10\n";
+    text += "N" + farLabel + " G0 Z10\n";
     text += "M30\n";
     text += "O2000\nG1 X1 Y1\nM99\n";
     return text;
@@ -172,7 +138,7 @@ TEST(PlainLinePrefetch, RandomProgramsAreTheSameReadOnTwoThreads) {
 TEST(PlainLinePrefetch, ACamProgramIsReadMostlyByTheSecondThread) {
     std::string text = "O1234 (a CAM program)\nG90 G54 G17\nT1 M6\nM3 S12000\n";
     for (int i = 0; i < 20000; ++i) {
-        text += (i % 50 == 0 ? "N" + std::to_string(i + 10) + " " : std::string()) + g1(i) + "\n";
+        text += (i % 50 == 0 ? "N" + std::to_string(i + 10) + " " : std::string()) + g1Line(i) + "\n";
     }
     text += "M5\nM30\n";
     EXPECT_TRUE(expectSameProgram(text));
@@ -187,15 +153,15 @@ TEST(PlainLinePrefetch, ACamProgramIsReadMostlyByTheSecondThread) {
 TEST(PlainLinePrefetch, AMiddleInsideACommentIsReadByTheParser) {
     std::string text;
     for (int i = 0; i < 1000; ++i) {
-        text += g1(i) + "\n";
+        text += g1Line(i) + "\n";
     }
     text += "G1 X1 /* a comment that runs over the middle\n";
     for (int i = 0; i < 3000; ++i) {
-        text += g1(i) + "\n"; // commented out
+        text += g1Line(i) + "\n"; // commented out
     }
     text += "*/ G1 X5 Y5\n";
     for (int i = 0; i < 1000; ++i) {
-        text += g1(i) + "\n";
+        text += g1Line(i) + "\n";
     }
     text += "M30\n";
     EXPECT_FALSE(expectSameProgram(text));
@@ -208,7 +174,7 @@ TEST(PlainLinePrefetch, AMiddleInsideACommentIsReadByTheParser) {
 TEST(PlainLinePrefetch, NoBlockBeforeTheMiddleMeansOneThread) {
     std::string text(100000, '\n');
     for (int i = 0; i < 1000; ++i) {
-        text += g1(i) + "\n";
+        text += g1Line(i) + "\n";
     }
     EXPECT_FALSE(expectSameProgram(text));
 }
@@ -217,7 +183,7 @@ TEST(PlainLinePrefetch, NoBlockBeforeTheMiddleMeansOneThread) {
 TEST(PlainLinePrefetch, AnErrorInTheSecondHalfIsReportedAtItsLine) {
     std::string text;
     for (int i = 0; i < 4000; ++i) {
-        text += (i == 3500 ? std::string("G1 X1..5") : g1(i)) + "\n";
+        text += (i == 3500 ? std::string("G1 X1..5") : g1Line(i)) + "\n";
     }
     text += "M30\n";
     EXPECT_TRUE(expectSameProgram(text));

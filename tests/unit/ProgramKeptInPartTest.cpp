@@ -2,6 +2,7 @@
 // plain lines are dropped once parsed and parsed again from the mapped file when they run. These
 // tests lower that size to a few bytes, so small programs take the same path, and compare every
 // block and every run with the program kept whole.
+#include "RandomProgramLines.h"
 #include "RunProgram.h"
 
 #include "core/gcode/BlockList.h"
@@ -28,11 +29,6 @@ using gcode::Program;
 
 constexpr std::uint32_t kChunk = BlockList::kChunkSize;
 
-std::string g1(int i) {
-    return "G1 X" + std::to_string(i % 97) + "." + std::to_string(i % 10) + " Y-" + std::to_string(i % 89) +
-           " F" + std::to_string(500 + i % 7);
-}
-
 // Every kind of line a dropped chunk must read again as it was, around the chunk boundaries:
 // comments, blank lines, labels, block delete, CR and CRLF line ends, a `/* */` comment across a
 // boundary, and lines that must stay (a loop, assignments, a call).
@@ -49,26 +45,26 @@ std::string mixedProgram() {
         if (i % 1000 == 7) {
             add("");
         } else if (i % 997 == 3) {
-            add("N" + std::to_string(10 + i) + " " + g1(i) + " (labelled)");
+            add("N" + std::to_string(10 + i) + " " + g1Line(i) + " (labelled)");
         } else if (i % 501 == 5) {
-            add("/" + g1(i));
+            add("/" + g1Line(i));
         } else if (i >= 5000 && i < 5200) {
-            add(g1(i), "\r"); // an old Mac export pasted in
+            add(g1Line(i), "\r"); // an old Mac export pasted in
         } else if (i >= 5200 && i < 5300) {
-            add(g1(i), "\r\n");
+            add(g1Line(i), "\r\n");
         } else if (i == 2 * static_cast<int>(kChunk) - 2) {
-            add(g1(i) + " /* a comment that runs");
+            add(g1Line(i) + " /* a comment that runs");
             add("G0 X999 over a chunk boundary");
             add("*/ G1 X5");
         } else {
-            add(g1(i));
+            add(g1Line(i));
         }
     }
     add("WHILE [#1 LT 2] DO1");
     add("#1 = #1 + 1");
     add("END1");
     for (int i = 0; i < static_cast<int>(kChunk) + 10; ++i) {
-        add(g1(i) + " (after the loop)");
+        add(g1Line(i) + " (after the loop)");
     }
     add("M98 P2000");
     add("M30");
@@ -148,7 +144,7 @@ std::string randomProgram(std::mt19937& random) {
     std::uniform_int_distribution<int> kind(0, 99);
     std::uniform_int_distribution<int> rare(0, 9999);
     std::string text;
-    int loops = 0;
+    int loopsLeft = 40;
     const int lines = 20000 + static_cast<int>(random() % 4000);
     for (int i = 0; i < lines; ++i) {
         int k = kind(random);
@@ -159,41 +155,7 @@ std::string randomProgram(std::mt19937& random) {
             k = 77 + static_cast<int>(random() % 3) * 3; // an assignment, a loop or an expression
         }
         const char* end = k % 17 == 0 ? "\r" : k % 13 == 0 ? "\r\n" : "\n";
-        if (k < 60) {
-            text += g1(i);
-        } else if (k < 65) {
-            text += "N" + std::to_string(i + 1) + " " + g1(i);
-        } else if (k < 70) {
-            text += "(a comment " + std::to_string(i) + ")";
-        } else if (k < 74) {
-            text += "";
-        } else if (k < 76) {
-            text += g1(i) + " /* runs on";
-            text += end;
-            text += "over " + std::to_string(i) + " lines";
-            text += end;
-            text += "*/ G0 Z" + std::to_string(i % 50);
-        } else if (k < 77) {
-            text += "/" + g1(i);
-        } else if (k < 80) {
-            text += "#" + std::to_string(100 + i % 50) + " = " + std::to_string(i) + " * 2";
-        } else if (k < 83 && loops < 40) {
-            ++loops;
-            text += "#1 = 0";
-            text += end;
-            text += "WHILE [#1 LT 2] DO1";
-            text += end;
-            text += g1(i);
-            text += end;
-            text += "#1 = #1 + 1";
-            text += end;
-            text += "END1";
-        } else if (k < 86) {
-            text += "G1 X[" + std::to_string(i % 9) + " + 1] F500"; // an expression
-        } else {
-            text += g1(i) + " (after " + std::to_string(i) + ")";
-        }
-        text += end;
+        appendRandomLine(text, k, i, end, loopsLeft);
     }
     text += "M30\n";
     return text;
@@ -226,13 +188,13 @@ TEST(ProgramKeptInPart, RandomProgramsReadAgainAsTheyWereParsed) {
 TEST(ProgramKeptInPart, AChunkThatStartsInsideACommentStays) {
     std::string text;
     for (int i = 0; i + 1 < static_cast<int>(kChunk); ++i) {
-        text += g1(i) + "\n";
+        text += g1Line(i) + "\n";
     }
     text += "G1 X1 /* the last block of chunk 0 opens a comment\n";
     text += "G0 X999 (inside it: no block)\n";
     text += "*/ G1 X5 Y5\n"; // the first block of chunk 1
     for (int i = 0; i < static_cast<int>(kChunk); ++i) {
-        text += g1(i) + "\n";
+        text += g1Line(i) + "\n";
     }
     text += "M30\n";
     const std::string path = writeFile(text);
@@ -261,7 +223,7 @@ TEST(ProgramKeptInPart, ASmallProgramIsKeptWholeUnlessAsked) {
 std::string loopingProgram() {
     std::string text = "#1 = 0\nN100\n";
     for (int i = 0; i < 6 * static_cast<int>(kChunk); ++i) { // more chunks than the cache holds
-        text += g1(i) + "\n";
+        text += g1Line(i) + "\n";
     }
     text += "#1 = #1 + 1\nM98 P2000\nIF [#1 LT 3] GOTO100\nM30\nO2000\n";
     for (int i = 0; i < 2 * static_cast<int>(kChunk); ++i) {
