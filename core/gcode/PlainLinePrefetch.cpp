@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <system_error>
 
 namespace m350::gcode {
 
@@ -19,7 +20,11 @@ std::unique_ptr<PlainLinePrefetch> PlainLinePrefetch::start(std::string_view tex
         return nullptr;
     }
     std::unique_ptr<PlainLinePrefetch> prefetch(new PlainLinePrefetch(text, newline + 1, dialect, fileIndex));
-    prefetch->thread_ = std::thread([p = prefetch.get()] { p->read(); });
+    try {
+        prefetch->thread_ = std::thread([p = prefetch.get()] { p->read(); });
+    } catch (const std::system_error&) {
+        return nullptr; // no thread to be had (a process or memory limit): the parser reads it all
+    }
     return prefetch;
 }
 
