@@ -3,6 +3,7 @@
 // takes that path to nothing and compare every block, unit, label and diagnostic with the same
 // program read on one thread, with the middle of the text falling on every kind of line.
 #include "RandomProgramLines.h"
+#include "SameBlock.h"
 
 #include "core/gcode/BlockList.h"
 #include "core/gcode/Dialect.h"
@@ -37,28 +38,6 @@ Parsed parse(const std::string& text, bool secondThread) {
         parsed.diagnostics.push_back(gcode::formatDiagnostic(d));
     }
     return parsed;
-}
-
-void expectSameBlock(const Block& a, const Block& b, std::size_t index) {
-    SCOPED_TRACE("block " + std::to_string(index) + " at line " + std::to_string(a.location.line));
-    EXPECT_EQ(a.location.file, b.location.file);
-    EXPECT_EQ(a.location.line, b.location.line);
-    EXPECT_EQ(a.location.column, b.location.column);
-    EXPECT_EQ(a.label, b.label);
-    EXPECT_EQ(a.programNumber, b.programNumber);
-    EXPECT_EQ(a.blockDelete, b.blockDelete);
-    EXPECT_EQ(a.programEnd, b.programEnd);
-    EXPECT_EQ(a.control, b.control);
-    EXPECT_EQ(a.partner, b.partner);
-    EXPECT_EQ(a.comment, b.comment);
-    EXPECT_EQ(a.assignments.size(), b.assignments.size());
-    ASSERT_EQ(a.words.size(), b.words.size());
-    for (std::size_t w = 0; w < a.words.size(); ++w) {
-        EXPECT_EQ(a.words[w].letter, b.words[w].letter);
-        EXPECT_EQ(a.words[w].number, b.words[w].number);
-        EXPECT_EQ(a.words[w].value, b.words[w].value);
-        EXPECT_EQ(a.words[w].column, b.words[w].column);
-    }
 }
 
 // Whether the program read on two threads is the one read on one; and whether the second thread

@@ -4,6 +4,7 @@
 // block and every run with the program kept whole.
 #include "RandomProgramLines.h"
 #include "RunProgram.h"
+#include "SameBlock.h"
 
 #include "core/gcode/BlockList.h"
 #include "core/gcode/Dialect.h"
@@ -95,23 +96,6 @@ Program parseInPart(const std::string& path) {
     parser.finish(program);
     EXPECT_TRUE(parser.diagnostics().empty()) << gcode::formatDiagnostic(parser.diagnostics().front());
     return program;
-}
-
-void expectSameBlock(const Block& a, const Block& b, std::size_t index) {
-    SCOPED_TRACE("block " + std::to_string(index) + " at line " + std::to_string(a.location.line));
-    EXPECT_EQ(a.location.line, b.location.line);
-    EXPECT_EQ(a.location.column, b.location.column);
-    EXPECT_EQ(a.label, b.label);
-    EXPECT_EQ(a.blockDelete, b.blockDelete);
-    EXPECT_EQ(a.control, b.control);
-    EXPECT_EQ(a.partner, b.partner);
-    EXPECT_EQ(a.comment, b.comment);
-    ASSERT_EQ(a.words.size(), b.words.size());
-    for (std::size_t w = 0; w < a.words.size(); ++w) {
-        EXPECT_EQ(a.words[w].letter, b.words[w].letter);
-        EXPECT_EQ(a.words[w].number, b.words[w].number);
-        EXPECT_EQ(a.words[w].column, b.words[w].column);
-    }
 }
 
 TEST(ProgramKeptInPart, DroppedChunksReadAgainAsTheyWereParsed) {
