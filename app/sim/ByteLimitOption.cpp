@@ -32,8 +32,9 @@ CLI::Option* addByteLimitOption(CLI::App& command, const std::string& name, std:
         }
         return {};
     };
+    static const CLI::AsSizeValue kSizes(false); // its unit table is built once, not per option
     return command.add_option(name, bytes, description)
-        ->transform(CLI::AsSizeValue(false))
+        ->transform(kSizes)
         ->check(CLI::Validator(inRange, "SIZE"));
 }
 

@@ -184,8 +184,6 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         ->check(nonEmptyPath);
     toolsCmd->add_flag("--tbl", o.toolsAsTable, "print the table in tool.tbl form instead of JSON");
 
-    auto loaded = config::ParameterCatalogue::load(config::ParameterCatalogue::bundledPath());
-    const auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded);
     try {
         app.parse(argc, argv);
         o.command = run->parsed()      ? SimOptions::Command::Run
@@ -210,6 +208,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                                                                      : std::nullopt) {
                 std::cerr << "m350-sim: warning: --param " << p << ": " << *unread << '\n';
             }
+            const auto* catalogue = std::get_if<config::ParameterCatalogue>(&config::ParameterCatalogue::bundled());
             if (catalogue && catalogue->find(number)) {
                 if (auto problem = catalogue->validate(number, value)) {
                     std::cerr << "m350-sim: warning: --param " << p << ": " << *problem << " (used as given)\n";

@@ -165,7 +165,7 @@ void writeFolder(const fs::path& into, const Files& files) {
 } // namespace
 
 std::variant<BackupImport, ImportError> importControllerBackup(const fs::path& backupFolder, const fs::path& into) {
-    auto loadedCatalogue = ParameterCatalogue::load(ParameterCatalogue::bundledPath());
+    const auto& loadedCatalogue = ParameterCatalogue::bundled();
     if (auto* error = std::get_if<std::string>(&loadedCatalogue)) {
         return ImportError{"file_error", ParameterCatalogue::bundledPath(), *error};
     }

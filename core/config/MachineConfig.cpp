@@ -215,8 +215,7 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
     }
     toml::table t = parseToml(file);
     warnUnknownKeys(file, t, {"params", "params.*"}, config.warnings);
-    auto catalogue = ParameterCatalogue::load(ParameterCatalogue::bundledPath());
-    const auto* known = std::get_if<ParameterCatalogue>(&catalogue);
+    const auto* known = std::get_if<ParameterCatalogue>(&ParameterCatalogue::bundled());
     if (auto params = t["params"].as_table()) {
         for (auto&& [key, value] : *params) {
             const bool fanuc = config.dialect->id == gcode::DialectId::Fanuc;

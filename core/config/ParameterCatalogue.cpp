@@ -158,6 +158,11 @@ std::string ParameterCatalogue::bundledPath() {
     return std::string(M350_RESOURCE_DIR) + "/parameters/m350-parameters.tsv";
 }
 
+const std::variant<ParameterCatalogue, std::string>& ParameterCatalogue::bundled() {
+    static const std::variant<ParameterCatalogue, std::string> catalogue = load(bundledPath());
+    return catalogue;
+}
+
 const ParameterInfo* ParameterCatalogue::find(int number) const {
     auto it = index_.find(number);
     return it == index_.end() ? nullptr : &params_[it->second];

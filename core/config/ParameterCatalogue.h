@@ -35,6 +35,9 @@ public:
     // The catalogue, or an error naming the file and line.
     static std::variant<ParameterCatalogue, std::string> load(const std::string& tsvPath);
     static std::string bundledPath();
+    // The bundled catalogue (or why it cannot be read), read on its first use and shared after
+    // that: a run, a machine folder and the panel's pages all ask for it.
+    static const std::variant<ParameterCatalogue, std::string>& bundled();
 
     const ParameterInfo* find(int number) const;
     const std::vector<ParameterInfo>& all() const { return params_; } // in page order, as the TSV

@@ -33,9 +33,9 @@ QString localName(const std::string& zh, const std::string& en) {
 
 ParamPage::ParamPage(PanelContext& context, QWidget* parent) : Page(context, parent) {
     setObjectName("paramPage");
-    auto loaded = config::ParameterCatalogue::load(config::ParameterCatalogue::bundledPath());
-    if (auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded)) {
-        catalogue_ = std::move(*catalogue);
+    const auto& loaded = config::ParameterCatalogue::bundled();
+    if (const auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded)) {
+        catalogue_ = *catalogue;
         pages_.emplace(*catalogue_);
     } else {
         catalogueError_ = QString::fromStdString(std::get<std::string>(loaded));

@@ -45,8 +45,7 @@ SystemPage::SystemPage(PanelContext& context, QWidget* parent) : Page(context, p
     grid->setColumnStretch(1, 1);
     column->addLayout(grid);
     column->addStretch(1);
-    auto loaded = config::ParameterCatalogue::load(config::ParameterCatalogue::bundledPath());
-    if (auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded)) {
+    if (const auto* catalogue = std::get_if<config::ParameterCatalogue>(&config::ParameterCatalogue::bundled())) {
         catalogued_ = static_cast<int>(catalogue->all().size());
         const config::ParameterPages pages(*catalogue);
         for (const auto& category : pages.categories()) {
