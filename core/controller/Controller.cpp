@@ -295,6 +295,7 @@ Controller::RunState Controller::advance(double seconds) {
         }
         return state_;
     }
+    int tool = spindleTool(); // nothing between two steps changes it: each step's is the next one's
     while (state_ == RunState::Running && executor_->state() == macro::Executor::State::Running &&
            machine_.time() <= displayTime_ && !pendingDialog_) {
         if (passedTimeLimit(timeLimitFrom_)) {
@@ -303,7 +304,7 @@ Controller::RunState Controller::advance(double seconds) {
                                  " without ending (a loop waiting for an input that never comes?)");
             break;
         }
-        stepOnce();
+        tool = stepOnce(tool);
     }
     if (executor_->state() == macro::Executor::State::Alarmed) {
         raiseAlarm(*executor_->alarm());
@@ -314,7 +315,10 @@ Controller::RunState Controller::advance(double seconds) {
 }
 
 void Controller::stepOnce() {
-    int toolBefore = spindleTool();
+    stepOnce(spindleTool());
+}
+
+int Controller::stepOnce(int toolBefore) {
     std::uint64_t blocksBefore = executor_->blocksExecuted();
     executor_->step();
     if (executor_->blocksExecuted() != blocksBefore) {
@@ -334,12 +338,14 @@ void Controller::stepOnce() {
             }
         }
     }
-    if (int toolAfter = spindleTool(); toolAfter != toolBefore) {
+    const int toolAfter = spindleTool();
+    if (toolAfter != toolBefore) {
         syncToolLength();
         if (trace_) {
             trace_->toolChange(machine_.time(), toolBefore, toolAfter, source());
         }
     }
+    return toolAfter;
 }
 
 void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& stop) {

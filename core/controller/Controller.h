@@ -333,6 +333,7 @@ private:
     void watchSpindleLoad(const machine::MachineEvent& event);
     void enterSafeState();
     void stepOnce();
+    int stepOnce(int toolBefore); // the spindle tool after the step
     // True once what started at machine time `since` (a run, a hook, homing) ran longer than
     // --max-sim-time (or the clock went nan); the move or dwell under way is then stopped where the
     // limit found it, so the report shows that moment. Each run gets the whole limit.

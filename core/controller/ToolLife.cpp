@@ -6,7 +6,8 @@
 namespace m350::controller {
 
 bool Controller::manageTools(macro::EvaluatedBlock& block) {
-    bool took = tools::applyToolLife(toolLife_, block, {dialect().tCodeProgram >= 0, scan_.scanning()});
+    const bool took = tools::mayConcernToolLife(toolLife_, block) &&
+                      tools::applyToolLife(toolLife_, block, {dialect().tCodeProgram >= 0, scan_.scanning()});
     if (toolLife_.enabled()) {
         machine_.setObserver(this); // groups entered by G10 L3: cutting time counts from now on
     }

@@ -238,7 +238,7 @@ void ModalInterpreter::runCycle(const DrillingCycle& cycle, const std::vector<ma
             machine_.rapid(step.target);
             break;
         case CycleStep::Kind::Feed:
-            machine_.feed(step.target, feedRate(motionColumn(words)));
+            machine_.feed(step.target, motionFeedRate(words));
             break;
         case CycleStep::Kind::Dwell:
             machine_.dwell(step.seconds);

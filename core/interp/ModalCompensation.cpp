@@ -12,14 +12,6 @@ namespace m350::interp {
 
 using macro::MacroError;
 
-bool ModalInterpreter::compensating() const {
-    return compensation_.side() != CompensationSide::Off || compensation_.hasPending();
-}
-
-machine::Axes ModalInterpreter::basePosition() const {
-    return compensating() ? programmed_ : machine_.position();
-}
-
 double ModalInterpreter::compensationRadius() const {
     return tools_.radiusOffset(state_.radiusOffset) * axisUnit(0);
 }

@@ -107,25 +107,10 @@ int ModalInterpreter::activeSlot() const {
     return state_.group(14) - 53;
 }
 
-ModalInterpreter::OffsetInputs ModalInterpreter::offsetInputs(std::optional<int> zParameter) const {
-    auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
-    return {offsets_.version(),
-            {bits(parameters_.get(param::kCurrentWorkSystem)), bits(parameters_.get(param::kCurrentTool)),
-             bits(parameters_.get(param::kMagazineCapacity)), bits(zParameter ? parameters_.get(*zParameter) : 0.0),
-             bits(state_.groups[6]), bits(state_.groups[8]), bits(state_.groups[14]), bits(state_.lengthOffsetValue)}};
-}
-
-machine::Axes ModalInterpreter::workOffset() const {
-    OffsetCache& cache = offsetCache_;
-    if (!cache.known || offsetInputs(cache.zParameter) != cache.inputs) {
-        cache.zParameter = dialect_.id == gcode::DialectId::M350
-                               ? tools::m350ZParameter(currentTool(), parameters_)
-                               : std::nullopt;
-        cache.inputs = offsetInputs(cache.zParameter);
-        cache.offset = computeWorkOffset();
-        cache.known = true;
-    }
-    return cache.offset;
+void ModalInterpreter::refreshWorkOffset() const {
+    offsetCache_.inputs = offsetInputs();
+    offsetCache_.offset = computeWorkOffset();
+    offsetCache_.known = true;
 }
 
 machine::Axes ModalInterpreter::computeWorkOffset() const {
@@ -166,28 +151,15 @@ void ModalInterpreter::stopForOperator(OperatorStop::Kind kind, std::string what
 
 BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
     Words& words = words_; // reused across blocks
-    words.clear();
+    words.reset(block);
     block_ = block.source;
-    for (const WordValue& w : block.words) {
-        if (w.letter == 'G') {
-            words.addG(w);
-            continue;
-        }
-        if (w.letter == 'M') {
-            words.m.push_back(w);
-            continue;
-        }
-        if (words.has(w.letter)) {
-            return {false, MacroError{AlarmCode::InvalidWord,
-                                      std::string(1, w.letter) + " appears twice in one block", w.column}};
-        }
-        words.letter[static_cast<std::size_t>(w.letter - 'A')] = &w;
-        words.present |= Words::bit(w.letter);
+    if (block.repeated >= 0) {
+        const WordValue& w = block.words[static_cast<std::size_t>(block.repeated)];
+        return {false, MacroError{AlarmCode::InvalidWord,
+                                  std::string(1, w.letter) + " appears twice in one block", w.column}};
     }
     try {
         // 1. F S T H D; F in the unit this block sets (`G20 G1 X1 F10`: 10 inch/min)
-        bool inches = words.hasG(20) || (state_.inches() && !words.hasG(21));
-        double unit = inches ? 25.4 : 1.0;
         constexpr std::uint32_t kModalLetters =
             Words::bit('F') | Words::bit('S') | Words::bit('T') | Words::bit('H') | Words::bit('D');
         if ((words.present & kModalLetters) != 0) {
@@ -195,7 +167,8 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 if (words.find('F')->value < 0) {
                     invalid(*words.find('F'), "the feed cannot be negative");
                 }
-                state_.feed = words.find('F')->value * unit;
+                const bool inches = words.hasG(20) || (state_.inches() && !words.hasG(21));
+                state_.feed = words.find('F')->value * (inches ? 25.4 : 1.0);
             }
             if (words.find('S')) {
                 state_.spindleSpeed = words.find('S')->value;
@@ -280,6 +253,13 @@ bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, double value) {
 }
 
 void ModalInterpreter::applyGCodes(const Words& words) {
+    constexpr std::uint64_t kMotionCodes = 0b1111; // G0-G3
+    if (words.g.size() == 1 && words.gCodes[1] == 0 && words.gCodes[0] != 0 && (words.gCodes[0] & ~kMotionCodes) == 0) {
+        // Most blocks: one motion code, which sets group 1 and ends any canned cycle (as below)
+        state_.groups[1] = std::countr_zero(words.gCodes[0]);
+        cancelCycle();
+        return;
+    }
     std::array<bool, 23> seen{};
     for (const WordValue& g : words.g) {
         if (dialect_.lookAheadCodes && lookAheadCode(g, words)) {

@@ -1,9 +1,11 @@
 #pragma once
 
+#include "core/config/ParameterNumbers.h"
 #include "core/config/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/interp/CutterCompensation.h"
 #include "core/interp/DrillingCycle.h"
+#include "core/interp/LetterWords.h"
 #include "core/interp/ModalState.h"
 #include "core/interp/WorkOffsets.h"
 #include "core/machine/ArcGeometry.h"
@@ -12,6 +14,7 @@
 #include "core/tools/ToolData.h"
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <map>
 #include <cmath>
@@ -54,7 +57,12 @@ public:
     int activeSlot() const;
     // Total offset between machine and work coordinates for each axis, tool Z offset included.
     // Kept from block to block and computed again when what it is computed from changed.
-    machine::Axes workOffset() const;
+    const machine::Axes& workOffset() const {
+        if (!offsetCache_.known || !(offsetInputs() == offsetCache_.inputs)) {
+            refreshWorkOffset();
+        }
+        return offsetCache_.offset;
+    }
     machine::Axes workPosition() const;
     // The Z offset of the tool in the spindle (M350: params 930-945, virtual tools 973-992).
     double toolZOffset() const;
@@ -95,35 +103,41 @@ public:
     std::vector<std::string> takeLookAheadChanges();
 
 private:
-    // The words of one block by letter (into the block's own words, which outlive execute()).
-    // `present` says which letters were written; clearing it is all a new block needs.
+    // The words of one block by letter, as the executor indexed them (EvaluatedBlock, which
+    // outlives execute()). `present` holds the letters other than G and M.
     struct Words {
-        std::array<const macro::WordValue*, 26> letter{};
+        const macro::WordValue* words = nullptr;
+        const std::uint32_t* firstOf = nullptr; // EvaluatedBlock::firstOf
         std::uint32_t present = 0;
-        std::vector<macro::WordValue> g;
-        std::vector<macro::WordValue> m;
+        LetterWords g;
+        LetterWords m;
         // Bit c: a G word within 1e-6 of the whole code c (0-127), so hasG() of a whole code is one
         // test; moveAxes asks about a dozen codes for every block.
         std::array<std::uint64_t, 2> gCodes{};
 
-        void clear() {
-            present = 0;
-            g.clear();
-            m.clear();
+        void reset(const macro::EvaluatedBlock& evaluated) {
+            words = evaluated.words.data();
+            firstOf = evaluated.firstOf.data();
+            present = evaluated.letters & ~(bit('G') | bit('M'));
+            g = LetterWords(evaluated, 'G', evaluated.gCount);
+            m = LetterWords(evaluated, 'M', evaluated.mCount);
+            if (!evaluated.otherCodes) {
+                gCodes = evaluated.gCodes.bits; // every G word a whole code 0-127 exactly
+                return;
+            }
             gCodes = {};
-        }
-        void addG(const macro::WordValue& w) {
-            g.push_back(w);
-            if (w.value > -0.5 && w.value < 127.5) {
-                const auto code = static_cast<unsigned>(w.value + 0.5); // the nearest whole code
-                if (std::abs(w.value - code) < 1e-6) {
-                    gCodes[code >> 6] |= std::uint64_t{1} << (code & 63u);
+            for (const macro::WordValue& w : g) {
+                if (w.value > -0.5 && w.value < 127.5) {
+                    const auto code = static_cast<unsigned>(w.value + 0.5); // the nearest whole code
+                    if (std::abs(w.value - code) < 1e-6) {
+                        gCodes[code >> 6] |= std::uint64_t{1} << (code & 63u);
+                    }
                 }
             }
         }
         static constexpr std::uint32_t bit(char c) { return 1u << static_cast<unsigned>(c - 'A'); }
         bool has(char c) const { return (present & bit(c)) != 0; }
-        const macro::WordValue& operator[](char c) const { return *letter[static_cast<std::size_t>(c - 'A')]; }
+        const macro::WordValue& operator[](char c) const { return words[firstOf[static_cast<std::size_t>(c - 'A')]]; }
         const macro::WordValue* find(char c) const { return has(c) ? &(*this)[c] : nullptr; }
         bool hasG(int code) const {
             if (code >= 0 && code < 128) {
@@ -158,13 +172,26 @@ private:
     void goToReference(const Words& words, int point);
     void probeMove(const Words& words);
     void moveTo(const machine::Axes& target, const Words& words);
-    void checkSoftLimits(const machine::Axes& target, const Words& words) const;
+    // Asked before every move: the limits are looked at only when param 155 switches them on.
+    void checkSoftLimits(const machine::Axes& target, const Words& words) const {
+        if (parameters_.get(config::param::kSoftLimitsEnabled) != 0.0) {
+            checkAgainstSoftLimits(target, words);
+        }
+    }
+    void checkAgainstSoftLimits(const machine::Axes& target, const Words& words) const;
     std::uint32_t motionColumn(const Words& words) const;
     double feedRate(std::uint32_t column) const; // mm/min, from F and (G95) the spindle speed
+    // The feed of the block's move; its column (for G95's alarm) is looked for only under G95.
+    double motionFeedRate(const Words& words) const {
+        return state_.group(5) != 95 || dialect_.id == gcode::DialectId::M350 ? state_.feed
+                                                                               : feedRate(motionColumn(words));
+    }
     [[noreturn]] static void invalid(const macro::WordValue& w, std::string why);
     void stopForOperator(OperatorStop::Kind kind, std::string what);
     std::optional<OperatorStop> takeMadeStop();
-    bool compensating() const;
+    bool compensating() const { // asked for every move
+        return compensation_.side() != CompensationSide::Off || compensation_.hasPending();
+    }
     // The compensation plane's axes (u, v), u x v along its normal.
     struct PlaneAxes {
         int u = 0;
@@ -173,7 +200,7 @@ private:
     };
     static PlaneAxes planeAxes(int planeCode);
     Eigen::Vector2d inPlane(const machine::Axes& p) const;
-    machine::Axes basePosition() const;
+    machine::Axes basePosition() const { return compensating() ? programmed_ : machine_.position(); }
     double compensationRadius() const;
     void compensatedMove(const machine::Axes& target, const Words& words);
     void emitToolPath(const std::vector<PathSegment>& segments);
@@ -188,16 +215,18 @@ private:
     void runCycle(const DrillingCycle& cycle, const std::vector<machine::Axes>& holes, const Words& words);
     std::uint32_t cycleColumn(const Words& words) const;
 
-    // What workOffset() is computed from, as bit patterns (so -0.0 and NaN compare exactly): the
-    // offsets' version, the M350's work system, tool, magazine capacity and that tool's Z offset
-    // parameters, the units, tool length mode, work system and latched length of the modal state.
+    // What workOffset() is computed from: the versions of the offsets and the parameters (the
+    // M350's work system, tool, magazine capacity and tool Z offsets), and as bit patterns (so -0.0
+    // and NaN compare exactly) the units, tool length mode, work system and latched length of the
+    // modal state, which is written in place.
     struct OffsetInputs {
         std::uint64_t offsetsVersion = 0;
-        std::array<std::uint64_t, 8> values{};
+        std::uint64_t parametersVersion = 0;
+        std::array<std::uint64_t, 4> modal{};
         bool operator==(const OffsetInputs& other) const { // without a branch or memcmp a field
-            std::uint64_t differ = offsetsVersion ^ other.offsetsVersion;
-            for (std::size_t i = 0; i < values.size(); ++i) {
-                differ |= values[i] ^ other.values[i];
+            std::uint64_t differ = (offsetsVersion ^ other.offsetsVersion) | (parametersVersion ^ other.parametersVersion);
+            for (std::size_t i = 0; i < modal.size(); ++i) {
+                differ |= modal[i] ^ other.modal[i];
             }
             return differ == 0;
         }
@@ -205,10 +234,15 @@ private:
     struct OffsetCache {
         bool known = false;
         OffsetInputs inputs;
-        std::optional<int> zParameter; // of the tool in inputs
         machine::Axes offset = machine::Axes::Zero();
     };
-    OffsetInputs offsetInputs(std::optional<int> zParameter) const;
+    OffsetInputs offsetInputs() const {
+        return {offsets_.version(),
+                parameters_.version(),
+                {std::bit_cast<std::uint64_t>(state_.groups[6]), std::bit_cast<std::uint64_t>(state_.groups[8]),
+                 std::bit_cast<std::uint64_t>(state_.groups[14]), std::bit_cast<std::uint64_t>(state_.lengthOffsetValue)}};
+    }
+    void refreshWorkOffset() const;
     machine::Axes computeWorkOffset() const;
 
     const gcode::Dialect& dialect_;

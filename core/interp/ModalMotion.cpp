@@ -42,19 +42,20 @@ std::string millimetres(double v) {
 machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordinates) const {
     machine::Axes target = basePosition();
     const bool incremental = state_.incremental();
-    const machine::Axes offset = machineCoordinates || incremental ? machine::Axes::Zero() : workOffset();
+    const bool inches = state_.inches(); // else every axis unit is 1
+    const machine::Axes* offset = machineCoordinates || incremental ? nullptr : &workOffset();
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         const auto* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)]);
         if (!w) {
             continue;
         }
-        double v = w->value * axisUnit(axis);
+        double v = inches ? w->value * axisUnit(axis) : w->value;
         if (machineCoordinates) {
             target(axis) = v;
         } else if (incremental) {
             target(axis) += v;
         } else {
-            target(axis) = v + offset(axis);
+            target(axis) = v + (*offset)(axis);
         }
     }
     return target;
@@ -96,10 +97,7 @@ std::uint32_t ModalInterpreter::motionColumn(const Words& words) const {
 
 // Param 155 switches the limits of params 161-170 on; a move that would cross one is refused before
 // the machine moves, as the controller checks the whole block first.
-void ModalInterpreter::checkSoftLimits(const machine::Axes& target, const Words& words) const {
-    if (parameters_.get(param::kSoftLimitsEnabled) == 0.0) {
-        return;
-    }
+void ModalInterpreter::checkAgainstSoftLimits(const machine::Axes& target, const Words& words) const {
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         double low = parameters_.get(param::kSoftLimitNegativeX + axis);
         double high = parameters_.get(param::kSoftLimitPositiveX + axis);
@@ -134,7 +132,7 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
         tool(plane.u) = machine_.position()(plane.u);
         tool(plane.v) = machine_.position()(plane.v);
         checkSoftLimits(tool, words);
-        state_.group(1) == 0 ? machine_.rapid(tool) : machine_.feed(tool, feedRate(motionColumn(words)));
+        state_.group(1) == 0 ? machine_.rapid(tool) : machine_.feed(tool, motionFeedRate(words));
         return;
     }
     checkSoftLimits(target, words);
@@ -144,7 +142,7 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
         if (state_.feed <= 0) {
             throw MacroError{AlarmCode::InvalidWord, "G01 with no feed: give F", motionColumn(words)};
         }
-        machine_.feed(target, feedRate(motionColumn(words)));
+        machine_.feed(target, motionFeedRate(words));
         return;
     default: break;
     }
@@ -173,7 +171,7 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
     if (auto* error = std::get_if<machine::ArcError>(&arc)) {
         throw MacroError{AlarmCode::InvalidWord, error->message, motionColumn(words)};
     }
-    machine_.arc(std::get<machine::Arc>(arc), feedRate(motionColumn(words)));
+    machine_.arc(std::get<machine::Arc>(arc), motionFeedRate(words));
 }
 
 void ModalInterpreter::moveAxes(const Words& words) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <array>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace m350::macro {
@@ -28,39 +29,90 @@ struct CodeBits {
     }
 };
 
-// A block after macro evaluation: every word a plain number, calls and their arguments removed.
-// `letters` and the code bits describe the words as evaluated, before calls are taken out: what
-// lets a plain block pass the tool life and call checks without a scan of its words.
-struct EvaluatedBlock {
-    const gcode::Block* source = nullptr;
-    std::vector<WordValue> words;
+// What a block's words are, letter by letter: see EvaluatedBlock.
+struct WordSummary {
     std::uint32_t letters = 0; // bit (letter - 'A') for each letter written
     CodeBits gCodes;           // G words of exactly a whole code 0-127
     CodeBits mCodes;           // M words the same
     bool otherCodes = false;   // a G or M word that is neither (G65.1, M1000, G-1)
+    std::int64_t repeated = -1; // the first word that writes a letter other than G and M again (-1: none)
+    std::uint32_t gCount = 0;   // how many G words
+    std::uint32_t mCount = 0;
 
     static constexpr std::uint32_t letterBit(char letter) { return 1u << static_cast<unsigned>(letter - 'A'); }
     bool has(char letter) const { return (letters & letterBit(letter)) != 0; }
 
-    void clear(const gcode::Block& block) {
-        source = &block;
-        words.clear();
-        letters = 0;
-        gCodes = {};
-        mCodes = {};
-        otherCodes = false;
-    }
-    void add(char letter, double value, std::uint32_t column) {
-        words.push_back({letter, value, column});
-        letters |= letterBit(letter);
+    // Takes in word `at`; the first word of each letter other than G and M goes to `firstOf`.
+    void note(std::array<std::uint32_t, 26>& firstOf, char letter, double value, std::size_t at) {
+        const std::uint32_t bit = letterBit(letter);
         if (letter == 'G' || letter == 'M') {
+            ++(letter == 'G' ? gCount : mCount);
             if (value >= 0 && value < CodeBits::kCodes && value == static_cast<double>(static_cast<int>(value))) {
                 (letter == 'G' ? gCodes : mCodes).add(static_cast<int>(value));
             } else {
                 otherCodes = true;
             }
+        } else if ((letters & bit) == 0) {
+            firstOf[static_cast<std::size_t>(letter - 'A')] = static_cast<std::uint32_t>(at);
+        } else if (repeated < 0) {
+            repeated = static_cast<std::int64_t>(at);
         }
+        letters |= bit;
     }
+};
+
+// A block after macro evaluation: every word a plain number, calls and their arguments removed.
+// `letters` and the code bits describe the words: what lets a plain block pass the tool life and
+// call checks without a scan of its words. The same pass indexes the words by letter for the modal
+// interpreter, so it does not sort them again: whoever takes words out (the call planning) calls
+// reindex() before handing the block on.
+struct EvaluatedBlock : WordSummary {
+    const gcode::Block* source = nullptr;
+    std::vector<WordValue> words;
+    // Where the first word of each letter other than G and M stands (for the letters written).
+    std::array<std::uint32_t, 26> firstOf{};
+
+    void clear(const gcode::Block& block) {
+        source = &block;
+        words.clear();
+        summary() = {};
+    }
+    void add(char letter, double value, std::uint32_t column) {
+        const std::size_t at = words.size();
+        words.push_back({letter, value, column});
+        summary().note(firstOf, letter, value, at);
+    }
+    // The words of a block whose words are all plain numbers (most blocks), in one pass; false
+    // (and the words unfinished) at a word that is an expression. The summary is kept apart until
+    // the end: each word written (a char, which may alias anything) would otherwise have it read
+    // back from memory.
+    bool assignNumbers(const gcode::Block& block) {
+        source = &block;
+        const std::span<const gcode::Word> in = block.words;
+        words.resize(in.size());
+        WordValue* out = words.data();
+        WordSummary kept;
+        for (std::size_t i = 0; i < in.size(); ++i) {
+            const gcode::Word& w = in[i];
+            if (!w.isNumber()) {
+                return false;
+            }
+            out[i] = {w.letter, w.number, w.column};
+            kept.note(firstOf, w.letter, w.number, i);
+        }
+        summary() = kept;
+        return true;
+    }
+    void reindex() {
+        WordSummary kept;
+        for (std::size_t i = 0; i < words.size(); ++i) {
+            kept.note(firstOf, words[i].letter, words[i].value, i);
+        }
+        summary() = kept;
+    }
+
+private:
+    WordSummary& summary() { return *this; }
 };
 
 struct BlockOutcome {

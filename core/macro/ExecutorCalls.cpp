@@ -158,15 +158,17 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         return;
     }
     EvaluatedBlock& evaluated = scratch_; // reused: executing a block allocates nothing
-    evaluated.clear(block);
-    for (const gcode::Word& w : block.words) {
-        if (w.isNumber()) {
-            evaluated.add(w.letter, w.number, w.column);
-            continue;
-        }
-        Value v = evaluator_.evaluate(w.value);
-        if (!v.vacant) { // FANUC: an address whose value is vacant is as if not written
-            evaluated.add(w.letter, v.number, w.column);
+    if (!evaluated.assignNumbers(block)) {
+        evaluated.clear(block);
+        for (const gcode::Word& w : block.words) {
+            if (w.isNumber()) {
+                evaluated.add(w.letter, w.number, w.column);
+                continue;
+            }
+            Value v = evaluator_.evaluate(w.value);
+            if (!v.vacant) { // FANUC: an address whose value is vacant is as if not written
+                evaluated.add(w.letter, v.number, w.column);
+            }
         }
     }
     if (machine_.manageTools(evaluated)) {
@@ -282,6 +284,7 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         }
     }
 
+    evaluated.reindex(); // calls and their arguments were taken out
     if (!sendToSink(evaluated, frameIndex)) {
         return;
     }

@@ -137,24 +137,16 @@ bool actsOn(const WordValue& w) {
     }
 }
 
-// Whether the block may hold a word actsOn() takes, from its letters and codes alone.
-bool mayAct(const macro::EvaluatedBlock& block) {
-    constexpr std::uint32_t kLetters = macro::EvaluatedBlock::letterBit('T') | macro::EvaluatedBlock::letterBit('H') |
-                                       macro::EvaluatedBlock::letterBit('D');
-    return (block.letters & kLetters) != 0 || block.otherCodes || block.gCodes.has(10) || block.gCodes.has(11) ||
-           block.mCodes.has(6);
-}
-
 } // namespace
 
-// Runs for every block, and most have nothing for tool life: the work is kept out of line
-// (noinline) and a block without T H D G10 G11 M06 is passed on its letters and codes alone.
+// Most blocks have nothing for tool life: the executor's side asks mayConcernToolLife() first, and
+// the work is kept out of line (noinline).
 bool applyToolLife(ToolLifeManager& manager, macro::EvaluatedBlock& block, const ToolLifeBlockContext& context) {
     if (manager.entering()) [[unlikely]] {
         entryBlock(manager, block.words);
         return true;
     }
-    if (mayAct(block) && std::any_of(block.words.begin(), block.words.end(), actsOn)) [[unlikely]] {
+    if (mayConcernToolLife(manager, block) && std::any_of(block.words.begin(), block.words.end(), actsOn)) [[unlikely]] {
         return applyToRelevantBlock(manager, block.words, context);
     }
     return false;

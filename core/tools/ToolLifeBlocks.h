@@ -19,4 +19,13 @@ struct ToolLifeBlockContext {
 // True when the block was tool life data and nothing else is to be done with it.
 bool applyToolLife(ToolLifeManager& manager, macro::EvaluatedBlock& block, const ToolLifeBlockContext& context);
 
+// Whether applyToolLife() may have anything to do with the block, from its letters and codes alone
+// (no T H D G10 G11 M06 and no data being entered: most blocks), asked before its context is made.
+inline bool mayConcernToolLife(const ToolLifeManager& manager, const macro::EvaluatedBlock& block) {
+    constexpr std::uint32_t kLetters = macro::EvaluatedBlock::letterBit('T') | macro::EvaluatedBlock::letterBit('H') |
+                                       macro::EvaluatedBlock::letterBit('D');
+    return manager.entering() || (block.letters & kLetters) != 0 || block.otherCodes || block.gCodes.has(10) ||
+           block.gCodes.has(11) || block.mCodes.has(6);
+}
+
 } // namespace m350::tools
