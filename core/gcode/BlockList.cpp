@@ -12,7 +12,8 @@ namespace m350::gcode {
 
 BlockList::BlockList(BlockList&& other) noexcept
     : chunks_(std::move(other.chunks_)), slabs_(std::move(other.slabs_)), size_(std::exchange(other.size_, 0)),
-      capacity_(std::exchange(other.capacity_, 0)), chunksApart_(other.chunksApart_), dropped_(std::move(other.dropped_)),
+      capacity_(std::exchange(other.capacity_, 0)), chunksApart_(other.chunksApart_),
+      expectMany_(other.expectMany_), dropped_(std::move(other.dropped_)),
       reloader_(std::move(other.reloader_)), cache_(std::move(other.cache_)), clock_(other.clock_) {
     other.slabs_.clear();
     other.chunks_.clear();
@@ -26,6 +27,7 @@ BlockList& BlockList::operator=(BlockList&& other) noexcept {
         size_ = std::exchange(other.size_, 0);
         capacity_ = std::exchange(other.capacity_, 0);
         chunksApart_ = other.chunksApart_;
+        expectMany_ = other.expectMany_;
         dropped_ = std::move(other.dropped_);
         reloader_ = std::move(other.reloader_);
         cache_ = std::move(other.cache_);
@@ -117,7 +119,7 @@ void BlockList::grow() {
     constexpr std::size_t kChunkBytes = kChunkSize * sizeof(Block);
     constexpr std::size_t kHugePageChunks = ((std::size_t{2} << 20) + kChunkBytes - 1) / kChunkBytes;
     constexpr std::size_t kMostChunksAtOnce = 64;
-    if (chunksApart_ || capacity_ == 0) {
+    if (chunksApart_ || (capacity_ == 0 && !expectMany_)) {
         addSlab(kChunkSize);
         return;
     }

@@ -59,6 +59,9 @@ public:
     // the allocations grow with the list (as much as it holds, up to 64 chunks): a large program
     // takes few of them, which are offered to huge pages (LargeAllocation).
     void allocateChunksApart() { chunksApart_ = true; }
+    // Many blocks are coming (a large file): the first allocation is already one of huge pages,
+    // instead of a chunk's 384 KB faulted in 4 KB at a time.
+    void expectMany() { expectMany_ = true; }
     void push_back(const Block& block) {
         // Slab memory is raw: the block is constructed in place (Block is trivially copyable).
         std::construct_at(&nextSlot(), block);
@@ -142,6 +145,7 @@ private:
     std::size_t size_ = 0;
     std::size_t capacity_ = 0; // blocks the slabs have room for, from index 0
     bool chunksApart_ = false;
+    bool expectMany_ = false;
     mutable std::vector<Dropped> dropped_; // by chunk; empty while none was dropped
     std::shared_ptr<const ChunkReloader> reloader_;
     mutable std::vector<CacheSlot> cache_;

@@ -68,6 +68,8 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
     std::string_view line;
     std::unique_ptr<PlainLinePrefetch> prefetch;
     if (role == FileRole::Main && !dropper && blockParser.plainPath() && text.size() >= secondThreadFrom_) {
+        program.blocks.expectMany();
+        program.words.expectMany();
         prefetch = PlainLinePrefetch::start(text, dialect_, fileIndex);
     }
     while (true) {

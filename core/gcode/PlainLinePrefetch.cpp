@@ -68,6 +68,8 @@ void PlainLinePrefetch::read() {
         LineSplitter lines(text_.substr(begin_));
         std::uint32_t number = 0;
         BlockList& blocks = result_.blocks;
+        blocks.expectMany();
+        storage_->words.expectMany();
         while (!stop_.load(std::memory_order_relaxed) && lines.lineAhead() != nullptr) {
             Block& block = blocks.nextSlot();
             std::size_t length = 0;

@@ -59,6 +59,22 @@ TEST(Arena, TextIsCopied) {
     EXPECT_TRUE(text.store("").empty());
 }
 
+// A large file's words start in a 2 MB chunk: a run that would not fit a first 16 KB chunk
+// follows the first one in the same chunk.
+TEST(Arena, ExpectingManyStartsWithTheLargestChunk) {
+    const std::size_t firstChunkWords = (std::size_t{16} << 10) / sizeof(Word);
+    Arena<Word> expecting;
+    expecting.expectMany();
+    std::span<Word> first = expecting.allocate(1);
+    std::span<Word> next = expecting.allocate(firstChunkWords);
+    EXPECT_EQ(next.data(), first.data() + 1);
+
+    Arena<Word> doubling;
+    std::span<Word> small = doubling.allocate(1);
+    std::span<Word> beyond = doubling.allocate(firstChunkWords);
+    EXPECT_NE(beyond.data(), small.data() + 1);
+}
+
 TEST(LargeAllocation, HugeBlocksAreAlignedAndUsable) {
     m350::LargeAllocator<std::uint64_t> allocator;
     const std::size_t count = (std::size_t{3} << 20) / sizeof(std::uint64_t);
