@@ -206,8 +206,16 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 break;
             }
         }
-        // 3-6: modal codes and the non-modal ones
-        applyGCodes(words);
+        // 3-6: modal codes and the non-modal ones. Most blocks hold one motion code (G0-G3) and no
+        // other, which sets group 1 and ends any canned cycle, as applyGCodes() would.
+        constexpr std::uint64_t kMotionCodes = 0b1111;
+        if (words.g.size() == 1 && words.gCodes[1] == 0 && words.gCodes[0] != 0 &&
+            (words.gCodes[0] & ~kMotionCodes) == 0) {
+            state_.groups[1] = std::countr_zero(words.gCodes[0]);
+            cancelCycle();
+        } else {
+            applyGCodes(words);
+        }
         latchLengthOffset(words);
         // 7. motion
         moveAxes(words);
@@ -253,13 +261,6 @@ bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, double value) {
 }
 
 void ModalInterpreter::applyGCodes(const Words& words) {
-    constexpr std::uint64_t kMotionCodes = 0b1111; // G0-G3
-    if (words.g.size() == 1 && words.gCodes[1] == 0 && words.gCodes[0] != 0 && (words.gCodes[0] & ~kMotionCodes) == 0) {
-        // Most blocks: one motion code, which sets group 1 and ends any canned cycle (as below)
-        state_.groups[1] = std::countr_zero(words.gCodes[0]);
-        cancelCycle();
-        return;
-    }
     std::array<bool, 23> seen{};
     for (const WordValue& g : words.g) {
         if (dialect_.lookAheadCodes && lookAheadCode(g, words)) {
