@@ -184,6 +184,12 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
     watchSpindleLoad(event);
 }
 
+// Nothing listens to a straight move but a linear rack, which it passes wide of: no trace, no
+// observer, no cutting time counted, no spindle load or breakage to follow. Most moves of a program.
+bool Controller::ignoresMove(const machine::Axes& from, const machine::Axes& to) const {
+    return !trace_ && !settings_.observer && !toolLife_.inUse() && !watchesSpindleLoad() && magazine_.ignores(from, to);
+}
+
 // The magazine sees every event, also the safe state an alarm drives the outputs to (the drawbar
 // clamps, the heads go up): what it holds must follow. Once an alarm stands, what the hardware
 // suffers besides is a message, the first alarm stays the one shown.

@@ -320,6 +320,7 @@ public:
     std::optional<HomingFailure> builtInHoming(int axis) override;
     // machine::MachineObserver
     void onMachineEvent(const machine::MachineEvent& event) override;
+    bool ignoresMove(const machine::Axes& from, const machine::Axes& to) const override;
     void feedMagazine(const machine::MachineEvent& event);
 
 private:
@@ -331,6 +332,7 @@ private:
     void countCuttingTime(const machine::MachineEvent& event);
     void setUpBreakageWatch();
     void watchSpindleLoad(const machine::MachineEvent& event);
+    bool watchesSpindleLoad() const { return loadWatch_.model() || !world_.breaks().empty(); }
     void enterSafeState();
     void stepOnce();
     int stepOnce(int toolBefore); // the spindle tool after the step

@@ -217,6 +217,16 @@ void MagazineDriver::driveInPosition(double now, double seconds) {
     }
 }
 
+bool MagazineDriver::ignores(const machine::Axes& from, const machine::Axes& to) const {
+    if (!rack_) {
+        return false;
+    }
+    if (context_.config.magazine.onGantry) {
+        return rack_->ignores(noseAt(from), noseAt(to));
+    }
+    return rack_->ignores(from.head<3>(), to.head<3>());
+}
+
 void MagazineDriver::onMachineEvent(const machine::MachineEvent& event) {
     using Type = machine::MachineEvent::Type;
     std::optional<std::string> crash;

@@ -60,6 +60,9 @@ public:
     const devices::Magazine* device() const { return device_.get(); }
     // Feeds one machine event to the device; throws a `crash` or `sensor_timeout` MacroError.
     void onMachineEvent(const machine::MachineEvent& event);
+    // A straight move from `from` to `to` the device need not be told of: far from a linear rack
+    // with nothing engaged in it and no move under way to take again (LinearRack::ignores).
+    bool ignores(const machine::Axes& from, const machine::Axes& to) const;
     // The move under way stopped short at `position` (Magazine::stoppedAt).
     void moveStoppedAt(const machine::Axes& position);
     // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor.

@@ -25,7 +25,7 @@ void Controller::setUpBreakageWatch() {
 }
 
 void Controller::watchSpindleLoad(const machine::MachineEvent& event) {
-    if (!loadWatch_.model() && world_.breaks().empty()) {
+    if (!watchesSpindleLoad()) {
         return; // nothing to sample, nothing that breaks: the common case, every move of a program
     }
     if (!world_.breaks().empty()) {

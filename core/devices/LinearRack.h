@@ -61,11 +61,16 @@ public:
     // with it (forget the last move, so that stoppedAt takes none again), done inline for the
     // caller; false when move() must look at the move. Most moves of a program are far from it.
     bool passesFar(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
-        if (engaged_ != 0 || !envelope_ || (to - from).squaredNorm() < kStill * kStill || !apart(*envelope_, from, to)) {
+        if (!wideOf(from, to)) {
             return false;
         }
         lastMove_.reset();
         return true;
+    }
+    // Such a move with no last move to forget either: the rack need not be told of it at all.
+    // (A still move far from it does nothing to the rack then either: it needs no test of its own.)
+    bool ignores(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
+        return !lastMove_ && engaged_ == 0 && envelope_ && apartFromEnvelope(from, to);
     }
 
 private:
@@ -79,16 +84,33 @@ private:
     // Whether the move passes wide of the box on some axis: it does not cross it, without the
     // divisions of the slab test. The margin grows with the move so that the slab test's rounding
     // cannot bring an end it puts past the box back to its edge (NaN compares false: not apart).
+    static bool apartOn(const Box& box, const Eigen::Vector3d& from, const Eigen::Vector3d& to, int i) {
+        const double margin = kStill + 1e-9 * std::abs(to(i) - from(i));
+        const double below = box.low(i) - margin;
+        const double above = box.high(i) + margin;
+        return (from(i) < below && to(i) < below) || (from(i) > above && to(i) > above);
+    }
     static bool apart(const Box& box, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+        return apartOn(box, from, to, 0) || apartOn(box, from, to, 1) || apartOn(box, from, to, 2);
+    }
+    // apart() from the envelope, trying first the axis that told the last move apart: a program's
+    // moves mostly keep to one side of the rack. The answer is the same in any order.
+    bool apartFromEnvelope(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
+        if (apartOn(*envelope_, from, to, apartAxis_)) {
+            return true;
+        }
         for (int i = 0; i < 3; ++i) {
-            const double margin = kStill + 1e-9 * std::abs(to(i) - from(i));
-            const double below = box.low(i) - margin;
-            const double above = box.high(i) + margin;
-            if ((from(i) < below && to(i) < below) || (from(i) > above && to(i) > above)) {
+            if (i != apartAxis_ && apartOn(*envelope_, from, to, i)) {
+                apartAxis_ = i;
                 return true;
             }
         }
         return false;
+    }
+    // Nothing engaged and the move apart from every zone (the box test first: it decides nearly
+    // every move); a still move goes to move() as well.
+    bool wideOf(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
+        return engaged_ == 0 && envelope_ && apartFromEnvelope(from, to) && (to - from).squaredNorm() >= kStill * kStill;
     }
     bool alongEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
     int pocketAt(const Eigen::Vector3d& p) const; // 0 when none
@@ -105,6 +127,7 @@ private:
     };
     std::vector<PocketBoxes> boxes_;
     std::optional<Box> envelope_;
+    mutable int apartAxis_ = 0; // the axis apartFromEnvelope tries first
     std::vector<int> pockets_; // tool in each pocket, 0 empty
     SpindleDrawbar spindle_;
     int engaged_ = 0;          // the pocket whose fork holds the spindle's tool (or whose tool the

@@ -37,7 +37,7 @@ public:
     // Logical input level (after polarity), as macros see it in #1520+k-1.
     virtual int input(int port) = 0;
 
-    virtual Axes position() const = 0;
+    virtual const Axes& position() const = 0;
     virtual void setPosition(const Axes& position) = 0; // homing, or a macro writing #880..
     virtual double time() const = 0;
     virtual SpindleState spindleState() const = 0;

@@ -43,6 +43,9 @@ class MachineObserver {
 public:
     virtual ~MachineObserver() = default;
     virtual void onMachineEvent(const MachineEvent& event) = 0;
+    // A straight move (rapid or feed) from `from` to `to` that nothing of the observer's would
+    // do anything with: the machine then makes no event of it. A query, which changes nothing.
+    virtual bool ignoresMove(const Axes& /*from*/, const Axes& /*to*/) const { return false; }
 };
 
 } // namespace m350::machine

@@ -1,25 +1,8 @@
 #include "core/machine/MotionProfile.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace m350::machine {
-
-MotionProfile::MotionProfile(double length, double speed, double acceleration)
-    : length_(std::max(length, 0.0)), acceleration_(acceleration) {
-    if (length_ <= 0.0 || speed <= 0.0 || acceleration <= 0.0) {
-        return;
-    }
-    double rampDistance = speed * speed / acceleration; // accelerate and decelerate
-    if (rampDistance >= length_) {
-        peak_ = std::sqrt(length_ * acceleration); // triangle: never reaches `speed`
-        accelTime_ = peak_ / acceleration;
-    } else {
-        peak_ = speed;
-        accelTime_ = speed / acceleration;
-        cruiseTime_ = (length_ - rampDistance) / speed;
-    }
-}
 
 double MotionProfile::distanceAt(double t) const {
     if (t <= 0.0 || peak_ == 0.0) {

@@ -39,7 +39,7 @@ public:
     void setOutput(int port, int level) override;
     int output(int port) const override;
     int input(int port) override { return machine_.input(port); }
-    Axes position() const override { return scanning_ ? position_ : machine_.position(); }
+    const Axes& position() const override { return scanning_ ? position_ : machine_.position(); }
     void setPosition(const Axes& position) override;
     double time() const override { return machine_.time(); }
     SpindleState spindleState() const override { return scanning_ ? spindle_ : machine_.spindleState(); }

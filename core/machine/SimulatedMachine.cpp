@@ -4,13 +4,6 @@
 
 namespace m350::machine {
 
-void SimulatedMachine::notify(const MachineEvent& event) {
-    if (observer_) {
-        reportLinkedInputs(event.start);
-        observer_->onMachineEvent(event);
-    }
-}
-
 void SimulatedMachine::setFeedOverride(double factor, bool rapidToo) {
     feedOverride_ = std::clamp(factor, 0.0, 3.0); // the panel's limit is param 295 (50-300 %)
     rapidOverride_ = rapidToo;
@@ -21,7 +14,7 @@ double SimulatedMachine::moveDuration(double length, double speed, double accele
 }
 
 void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double speed, double acceleration,
-                            double feed, const std::optional<Arc>& arc) {
+                            double feed, const Arc* arc) {
     double length = arc ? arc->length : (target - position_).norm();
     if (!lastMove_) {
         // not emplace(): clang decides LastMove is not default-constructible while the class is incomplete
@@ -32,7 +25,11 @@ void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double 
     last.to = target;
     last.start = time_;
     last.profile = MotionProfile(length, speed, acceleration);
-    last.arc = arc;
+    if (arc) {
+        last.arc = *arc;
+    } else {
+        last.arc.reset();
+    }
     last.type = type;
     last.feed = feed;
     last.acceleration = acceleration;
@@ -46,17 +43,23 @@ void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double 
         }
     }
     position_ = target;
-    if (observer_) {
-        MachineEvent event;
-        event.type = type;
-        event.from = last.from;
-        event.to = target;
-        event.feed = feed;
-        event.start = last.start;
-        event.end = time_;
-        event.arc = last.arc ? &*last.arc : nullptr;
-        notify(event);
+    // no event for a straight move the observer ignores, unless linked inputs wait to be reported with one
+    if (observer_ && (arc || !pendingInputs_.empty() || !observer_->ignoresMove(last.from, target))) {
+        reportLastMove();
     }
+}
+
+void SimulatedMachine::reportLastMove() {
+    const LastMove& last = *lastMove_;
+    // built in one go: a default MachineEvent zeroes both positions before they are assigned
+    const MachineEvent event{.type = last.type,
+                             .from = last.from,
+                             .to = last.to,
+                             .feed = last.feed,
+                             .start = last.start,
+                             .end = time_,
+                             .arc = last.arc ? &*last.arc : nullptr};
+    notify(event);
 }
 
 void SimulatedMachine::rapid(const Axes& target) {
@@ -71,7 +74,7 @@ void SimulatedMachine::feed(const Axes& target, double feed) {
 
 void SimulatedMachine::arc(const Arc& arc, double feed) {
     double speed = std::min(feed / 60.0, limits_.maxSpeed) * feedOverride_;
-    move(MachineEvent::Type::Arc, arc.end, speed, limits_.feedAcceleration, feed, arc);
+    move(MachineEvent::Type::Arc, arc.end, speed, limits_.feedAcceleration, feed, &arc);
 }
 
 SimulatedMachine::Remainder SimulatedMachine::interrupt(double t, bool immediate) {

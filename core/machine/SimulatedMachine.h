@@ -87,7 +87,7 @@ public:
     int output(int port) const override { return outputs_[static_cast<std::size_t>(port - 1)].level; }
     int input(int port) override;
 
-    Axes position() const override { return position_; }
+    const Axes& position() const override { return position_; }
     // New coordinates for where the axes stand (homing): the home switches stay where they are.
     void setPosition(const Axes& position) override;
     double time() const override { return time_; }
@@ -173,8 +173,16 @@ private:
     void rewind(double t);
     double dwellEnd_ = -1.0;
     void move(MachineEvent::Type type, const Axes& target, double speed, double acceleration, double feed,
-              const std::optional<Arc>& arc = std::nullopt);
-    void notify(const MachineEvent& event);
+              const Arc* arc = nullptr);
+    void reportLastMove();
+    void notify(const MachineEvent& event) {
+        if (observer_) {
+            if (!pendingInputs_.empty()) {
+                reportLinkedInputs(event.start);
+            }
+            observer_->onMachineEvent(event);
+        }
+    }
 
     MachineObserver* observer_;
     MotionLimits limits_;

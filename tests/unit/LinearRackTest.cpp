@@ -165,3 +165,22 @@ TEST(LinearRack, OnlyAMoveFarFromTheRackPassesWithoutALook) {
     EXPECT_FALSE(r.passesFar({0, 300, 0}, {500, 300, 0}));
     EXPECT_TRUE(path(r, {{50, 5, -80}, {0, 300, 0}}));       // and a move away sideways wrecks it
 }
+
+// What the machine need not even report: a move far from the rack while nothing is engaged and no
+// move near it is left for stoppedAt to take again. Apart on any one axis is enough, whichever
+// axis told the previous move apart.
+TEST(LinearRack, OnlyAFarMoveWithNothingToTakeAgainIsIgnored) {
+    LinearRack r = rack();
+    EXPECT_TRUE(r.ignores({0, 300, 0}, {500, 300, 0}));     // apart in Y
+    EXPECT_TRUE(r.ignores({-200, 0, -80}, {-100, 0, -80})); // in X only
+    EXPECT_TRUE(r.ignores({0, 0, 200}, {300, 0, 100}));     // in Z only
+    EXPECT_TRUE(r.ignores({0, 300, 0}, {0, 300, 0}));       // standing still far away
+    EXPECT_FALSE(r.ignores({0, 0, -70}, {200, 0, -70}));    // along the row of pockets
+    EXPECT_FALSE(r.ignores({50, 60, -80}, {50, 5, -80}));   // into the fork of pocket 1
+    EXPECT_FALSE(path(r, {{50, 5, 0}, {50, 5, -45}}));      // down over pocket 1, above the tool in it
+    EXPECT_FALSE(r.ignores({0, 300, 0}, {500, 300, 0}));    // a stop now must not take that move again
+    EXPECT_TRUE(r.passesFar({0, 300, 0}, {500, 300, 0}));   // the rack forgets it
+    EXPECT_TRUE(r.ignores({0, 300, 0}, {500, 300, 0}));
+    EXPECT_FALSE(path(r, {{0, 300, 0}, {50, 60, -80}, {50, 5, -80}})); // T1 into pocket 1: the fork holds it
+    EXPECT_FALSE(r.ignores({0, 300, 0}, {500, 300, 0}));
+}
