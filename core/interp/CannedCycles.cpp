@@ -50,11 +50,6 @@ char axisLetter(int axis) {
 
 } // namespace
 
-void ModalInterpreter::cancelCycle() {
-    state_.groups[9] = 80;
-    cycle_ = CycleData{};
-}
-
 std::uint32_t ModalInterpreter::cycleColumn(const Words& words) const {
     for (const WordValue& g : words.g) {
         if (std::abs(g.value - state_.group(9)) < 1e-6) {

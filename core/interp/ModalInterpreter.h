@@ -163,7 +163,23 @@ private:
     bool lookAheadCode(const macro::WordValue& g, const Words& words);
     static bool isLookAheadBlock(const Words& words);
     static bool isLookAheadCode(double value);
-    void moveAxes(const Words& words);
+    // The G codes that make a block other than a plain move, as bits the way Words keeps them.
+    static constexpr std::array<std::uint64_t, 2> kNotAPlainMove{
+        (std::uint64_t{1} << 4) | (std::uint64_t{1} << 10) | (std::uint64_t{1} << 28) | (std::uint64_t{1} << 30) |
+            (std::uint64_t{1} << 31) | (std::uint64_t{1} << 52) | (std::uint64_t{1} << 53),
+        std::uint64_t{1} << (92 - 64)}; // G4 G10 G28 G30 G31 G52 G53; G92
+    void moveAxes(const Words& words) {
+        // Most blocks are a plain move (G1 X.. Y..): none of those codes, no canned cycle
+        if (!words.hasAnyG(kNotAPlainMove) && state_.group(9) == 80 &&
+            !(dialect_.lookAheadCodes && isLookAheadBlock(words))) {
+            if (words.hasAxis()) {
+                moveTo(targetFor(words, false), words);
+            }
+            return;
+        }
+        moveOtherwise(words);
+    }
+    void moveOtherwise(const Words& words); // the rest of moveAxes
     machine::Axes targetFor(const Words& words, bool machineCoordinates) const;
     void setCoordinateSystem(const Words& words); // G92, G52
     void setOffsets(const Words& words);          // G10
@@ -205,7 +221,10 @@ private:
     void compensatedMove(const machine::Axes& target, const Words& words);
     void emitToolPath(const std::vector<PathSegment>& segments);
     void flushCompensation();
-    void cancelCycle();
+    void cancelCycle() { // every plain move ends any cycle
+        state_.groups[9] = 80;
+        cycle_ = CycleData{};
+    }
     void cannedCycle(const Words& words);
     void rememberCycleWords(const Words& words, char drillLetter);
     void checkCycle(const Words& words, int code, char drillLetter) const;

@@ -22,15 +22,6 @@ namespace {
 
 constexpr std::array<char, 3> kCenterLetters{'I', 'J', 'K'};
 
-// The G codes that make a block other than a plain move, as bits (codes 0-127) the way Words keeps them.
-constexpr std::array<std::uint64_t, 2> kNotAPlainMove = [] {
-    std::array<std::uint64_t, 2> bits{};
-    for (unsigned code : {4u, 10u, 28u, 30u, 31u, 52u, 53u, 92u}) {
-        bits[code >> 6] |= std::uint64_t{1} << (code & 63u);
-    }
-    return bits;
-}();
-
 std::string millimetres(double v) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.3f", v);
@@ -174,15 +165,7 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
     machine_.arc(std::get<machine::Arc>(arc), motionFeedRate(words));
 }
 
-void ModalInterpreter::moveAxes(const Words& words) {
-    // Most blocks are a plain move (G1 X.. Y..): none of the codes below, no canned cycle
-    if (!words.hasAnyG(kNotAPlainMove) && state_.group(9) == 80 &&
-        !(dialect_.lookAheadCodes && isLookAheadBlock(words))) {
-        if (words.hasAxis()) {
-            moveTo(targetFor(words, false), words);
-        }
-        return;
-    }
+void ModalInterpreter::moveOtherwise(const Words& words) {
     if (words.hasG(92) || words.hasG(52)) {
         setCoordinateSystem(words);
         return;

@@ -79,7 +79,16 @@ private:
     void executeBlock(const gcode::Block& block, std::size_t frameIndex);
     void executeOrdinary(const gcode::Block& block, std::size_t frameIndex);
     void executeDeviceStatement(const gcode::Block& block); // ExecutorStatements.cpp
-    bool mayCall(const EvaluatedBlock& block) const;
+    // Whether any word of the block may start a call; most blocks (G1 X.. Y..) do not, and skip the
+    // call planning. Asked for every block: a block with no T, no other codes and no handler
+    // cycle active is answered here on its code bits.
+    bool mayCall(const EvaluatedBlock& block) const {
+        if (!handlerCycle_ && !block.has('T') && !block.otherCodes) {
+            return block.gCodes.meets(callingG_) || block.mCodes.meets(callingM_);
+        }
+        return mayCallInFull(block);
+    }
+    bool mayCallInFull(const EvaluatedBlock& block) const;
     bool otherCodeMayCall(const EvaluatedBlock& block) const;
     void indexCallingCodes();
     bool changingToolInCall() const;

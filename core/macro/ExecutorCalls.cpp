@@ -87,9 +87,8 @@ void Executor::indexCallingCodes() {
     }
 }
 
-// Whether any word of the block may start a call; most blocks (G1 X.. Y..) do not, and skip the
-// call planning below.
-bool Executor::mayCall(const EvaluatedBlock& block) const {
+// mayCall() for any block.
+bool Executor::mayCallInFull(const EvaluatedBlock& block) const {
     if (handlerCycle_ && !handlingCode(handlerCycle_->key)) {
         return true; // a block may repeat or end the modal cycle
     }
