@@ -45,7 +45,7 @@ struct WordSummary {
     // Takes in word `at`; the first word of each letter other than G and M goes to `firstOf`.
     void note(std::array<std::uint32_t, 26>& firstOf, char letter, double value, std::size_t at) {
         const std::uint32_t bit = letterBit(letter);
-        if (letter == 'G' || letter == 'M') {
+        if ((bit & (letterBit('G') | letterBit('M'))) != 0) {
             ++(letter == 'G' ? gCount : mCount);
             if (value >= 0 && value < CodeBits::kCodes && value == static_cast<double>(static_cast<int>(value))) {
                 (letter == 'G' ? gCodes : mCodes).add(static_cast<int>(value));
