@@ -154,10 +154,11 @@ std::string_view encodingName(TextEncoding encoding) {
 
 namespace {
 
-// The offset of the first bad UTF-8 byte. A mapped file is checked a window at a time, and the
-// pages of each window are let go once checked: a 1 GB program must not stay in memory for this.
+// The offset of the first bad UTF-8 byte. A mapped file too large to be read in at once is checked
+// a window at a time, and the pages of each window are let go once checked: a 1 GB program must not
+// stay in memory for this. A smaller one keeps its pages for the parser, which reads them next.
 std::optional<std::size_t> firstInvalidUtf8(std::string_view body, const MappedFile* mapping) {
-    if (mapping == nullptr) {
+    if (mapping == nullptr || mapping->bytes().size() <= MappedFile::kPopulateBytes) {
         return firstInvalidUtf8(body);
     }
     constexpr std::size_t kWindow = std::size_t{16} << 20;
