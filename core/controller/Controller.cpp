@@ -445,12 +445,4 @@ void Controller::fill(RunReport& out) const {
     out.blocks = executor_ ? executor_->blocksExecuted() : 0;
 }
 
-macro::Value Controller::variable(int number) {
-    macro::VariableInfo info = store_.map().describe(number);
-    if (info.kind == macro::VariableKind::Undefined) {
-        return macro::Value::empty();
-    }
-    return macro::VariableStore::ownsKind(info.kind) ? store_.read(info, number) : readSystem(info, number);
-}
-
 } // namespace m350::controller

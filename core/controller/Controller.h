@@ -99,16 +99,9 @@ public:
     // M350's G04 P-1): "M00 program stop (main.nc:12)"; empty for 暂停 or when running. resume()
     // is START. run() presses START by itself and notes it in the messages.
     const std::string& programStop() const { return programStop_; }
-    // A macro waiting for a sensor (the same line reading an input unchanged while time passes):
-    // which input, which level it waits for, since when and where. The wait ends in an alarm after
+    // A macro waiting for a sensor (SensorWatch.h); the wait ends in an alarm after
     // RunSettings::sensorTimeout.
-    struct SensorWait {
-        std::string input;   // "IN11 (tool released)"
-        int awaitedLevel = 1;
-        double seconds = 0.0; // waited so far
-        std::string file;
-        std::uint32_t line = 0;
-    };
+    using SensorWait = controller::SensorWait;
     std::optional<SensorWait> sensorWait() const;
     // An operator dialog (#1505 = kind(text)) the run waits on: with RunSettings::operatorPresent
     // the run holds after the block that wrote #1505 until answerDialog(); #1505 then reads 1 for

@@ -19,6 +19,14 @@ constexpr double kClearMessage = 1000; // `#1503 = 1000` clears the status line
 
 } // namespace
 
+Value Controller::variable(int number) {
+    VariableInfo info = store_.map().describe(number);
+    if (info.kind == VariableKind::Undefined) {
+        return Value::empty();
+    }
+    return macro::VariableStore::ownsKind(info.kind) ? store_.read(info, number) : readSystem(info, number);
+}
+
 Value Controller::readSystem(const VariableInfo& info, int number) {
     const int axis = info.index & 7;
     switch (info.kind) {

@@ -2,10 +2,21 @@
 
 #include "core/gcode/Diagnostic.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
 namespace m350::controller {
+
+// A macro waiting for a sensor as the panel shows it (the same line reading an input unchanged
+// while time passes): which input, which level it waits for, since when and where.
+struct SensorWait {
+    std::string input;   // "IN11 (tool released)"
+    int awaitedLevel = 1;
+    double seconds = 0.0; // waited so far
+    std::string file;
+    std::uint32_t line = 0;
+};
 
 // Notices a macro waiting for a sensor: the same program line reading the same input at the same
 // level while virtual time passes (a WHILE loop around #[1520+k-1], an M301 wait). The controller
