@@ -14,7 +14,7 @@
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
 
-#include <toml++/toml.h>
+#include "core/config/Toml.h"
 
 #include <filesystem>
 

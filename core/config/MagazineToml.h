@@ -2,7 +2,7 @@
 
 #include "core/config/MagazineConfig.h"
 
-#include <toml++/toml.h>
+#include "core/config/Toml.h"
 
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 #include "core/config/ModbusSlaves.h"
 
-#include <toml++/toml.h>
+#include "core/config/Toml.h"
 
 #include <charconv>
 #include <cmath>

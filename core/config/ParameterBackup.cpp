@@ -2,7 +2,7 @@
 
 #include "core/config/ParamsFileWriter.h"
 
-#include <toml++/toml.h>
+#include "core/config/Toml.h"
 
 #include <charconv>
 #include <cmath>

@@ -2,7 +2,7 @@
 
 #include "core/machine/SpindleLoadModel.h"
 
-#include <toml++/toml.h>
+#include "core/config/Toml.h"
 
 #include <filesystem>
 #include <optional>

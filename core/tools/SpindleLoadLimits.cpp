@@ -1,6 +1,6 @@
 #include "core/tools/SpindleLoadLimits.h"
 
-#include <toml++/toml.h>
+#include "core/config/Toml.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,12 +1,16 @@
 // Regressions for what the libFuzzer targets of tests/fuzz found; each input is also kept in
 // tests/fuzz/corpus/<target>/found-* so that the fuzzers start from it.
+#include "FileText.h"
 #include "RunProgram.h"
+
+#include "core/config/MachineConfig.h"
 
 #include "core/gcode/Dialect.h"
 
 #include <gtest/gtest.h>
 
 #include <climits>
+#include <filesystem>
 #include <string>
 
 namespace m350 {
@@ -76,6 +80,28 @@ TEST(FuzzFindingsTest, PclosBeforeAnyDprntRunsWithoutReadingAStatementTable) {
     ASSERT_TRUE(controller.loadMdi({"PCLOS", "POPEN", "PCLOS", "M30"})) << joined(controller.diagnostics());
     const controller::RunReport report = controller.run();
     EXPECT_EQ(report.status, controller::RunStatus::Ok) << (report.alarm ? report.alarm->message : "");
+}
+
+// machine-folder found-table-header-control-character: a params.toml table header whose key starts
+// with a character no key may start with stopped the sanitizer builds on an assertion inside
+// toml++ 3.3.0 (abort); it is a config error naming the file, line and column, as in a release build.
+TEST(FuzzFindingsTest, ATableHeaderWithNoKeyIsAConfigErrorNotAnAbort) {
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::path(::testing::TempDir()) / "m350-fuzz-table-header";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    test::writeText(folder / "machine.toml", "name = \"plain\"\n");
+    const std::vector<std::pair<std::string, std::string>> headers = {
+        {"[params]\n61 = 3000\n[\t\x0e]\n", ":3:3"}, {"[ !]\n", ":1:3"}, {"[[[a]]]\n", ":1:3"}};
+    for (const auto& [text, at] : headers) {
+        test::writeText(folder / "params.toml", text);
+        auto loaded = config::loadMachineFolder(folder.string());
+        ASSERT_TRUE(std::holds_alternative<config::ConfigError>(loaded)) << text;
+        const config::ConfigError& error = std::get<config::ConfigError>(loaded);
+        EXPECT_EQ(error.where(), (folder / "params.toml").string() + at) << error.message;
+        EXPECT_NE(error.message.find("key"), std::string::npos) << error.message;
+    }
+    fs::remove_all(folder);
 }
 
 } // namespace
