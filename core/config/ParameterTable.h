@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/ChangeCount.h"
+
 #include <array>
 #include <cstdint>
 
@@ -11,26 +13,18 @@ class ParameterTable {
 public:
     static constexpr int kCount = 1000;
 
-    ParameterTable() = default;
-    ParameterTable(const ParameterTable& other) : values_(other.values_) {}
-    // Restoring saved values is a change like any other: the version moves on, never back.
-    ParameterTable& operator=(const ParameterTable& other) {
-        values_ = other.values_;
-        ++version_;
-        return *this;
-    }
-
     double get(int number) const { return values_[static_cast<std::size_t>(number)]; }
     void set(int number, double value) {
         values_[static_cast<std::size_t>(number)] = value;
-        ++version_;
+        version_.add();
     }
     static bool valid(int number) { return number >= 0 && number < kCount; }
-    // Changes with every write, so a reader can keep what it computes from them until the next one.
-    std::uint64_t version() const { return version_; }
+    // Changes with every write and restore (ChangeCount), so a reader can keep what it computes
+    // from the parameters until the next one.
+    std::uint64_t version() const { return version_.value(); }
 
 private:
-    std::uint64_t version_ = 0;
+    ChangeCount version_;
     std::array<double, kCount> values_{};
 };
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/ChangeCount.h"
 #include "core/machine/MachineTypes.h"
 
 #include <array>
@@ -16,26 +17,18 @@ public:
     static constexpr int kG52 = 7;
     static constexpr int kCommon = 8;
 
-    WorkOffsets() = default;
-    WorkOffsets(const WorkOffsets& other) : offsets_(other.offsets_) {}
-    // Restoring saved offsets is a change like any other: the version moves on, never back.
-    WorkOffsets& operator=(const WorkOffsets& other) {
-        offsets_ = other.offsets_;
-        ++version_;
-        return *this;
-    }
-
     double get(int slot, int axis) const { return offsets_[static_cast<std::size_t>(slot)](axis); }
     void set(int slot, int axis, double value) {
         offsets_[static_cast<std::size_t>(slot)](axis) = value;
-        ++version_;
+        version_.add();
     }
     const machine::Axes& slot(int s) const { return offsets_[static_cast<std::size_t>(s)]; }
-    // Changes with every write, so a reader can keep a sum of offsets until the next one.
-    std::uint64_t version() const { return version_; }
+    // Changes with every write and restore (ChangeCount), so a reader can keep a sum of offsets
+    // until the next one.
+    std::uint64_t version() const { return version_.value(); }
 
 private:
-    std::uint64_t version_ = 0;
+    ChangeCount version_;
     std::array<machine::Axes, kSlots> offsets_{machine::Axes::Zero(), machine::Axes::Zero(), machine::Axes::Zero(),
                                                machine::Axes::Zero(), machine::Axes::Zero(), machine::Axes::Zero(),
                                                machine::Axes::Zero(), machine::Axes::Zero(), machine::Axes::Zero()};
