@@ -32,7 +32,7 @@ std::optional<std::string> loadModbusSlaves(const std::string& path, ModbusSlave
     }
     toml::table t;
     try {
-        t = toml::parse_file(path);
+        t = parseTomlFile(path);
     } catch (const toml::parse_error& e) {
         return std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column) + ": " +
                std::string(e.description());

@@ -44,7 +44,7 @@ std::variant<ParameterRestore, std::string> readParameterBackup(const std::files
                                                                 const ParameterCatalogue& catalogue) {
     toml::table t;
     try {
-        t = toml::parse_file(file.string());
+        t = parseTomlFile(file.string());
     } catch (const toml::parse_error& e) {
         return where(file, e.source()) + std::string(e.description());
     }

@@ -3,17 +3,12 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace m350::config::toml_reading {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// Far above any real machine file; /dev/zero or a huge file named as one is refused, not read.
-constexpr std::uintmax_t kMostTomlBytes = 16 * 1024 * 1024;
 
 std::string placed(const toml::source_region& where) {
     return std::to_string(where.begin.line) + ":" + std::to_string(where.begin.column);
@@ -58,23 +53,8 @@ void fail(const fs::path& file, std::string message, const toml::source_region& 
 }
 
 toml::table parseToml(const fs::path& file) {
-    std::error_code ec;
-    if (!fs::is_regular_file(file, ec)) {
-        fail(file, ec ? "cannot read: " + ec.message() : "cannot read: not a regular file (a folder, FIFO or device)");
-    }
-    const std::uintmax_t size = fs::file_size(file, ec);
-    if (ec || size > kMostTomlBytes) {
-        fail(file, ec ? "cannot read: " + ec.message()
-                      : "cannot read: " + std::to_string(size) + " bytes is more than a machine file can be (16 MiB)");
-    }
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) {
-        fail(file, "cannot read the file");
-    }
     try {
-        return toml::parse(text.str(), file.string());
+        return parseTomlFile(file.string());
     } catch (const toml::parse_error& e) {
         fail(file, std::string(e.description()), e.source());
     }

@@ -30,7 +30,7 @@ std::optional<LoadSettingsError> readLoadMonitorSettings(const std::string& path
     }
     toml::table t;
     try {
-        t = toml::parse_file(path);
+        t = config::parseTomlFile(path);
     } catch (const toml::parse_error& e) {
         return LoadSettingsError{static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column),
                                  std::string(e.description())};

@@ -104,5 +104,33 @@ TEST(FuzzFindingsTest, ATableHeaderWithNoKeyIsAConfigErrorNotAnAbort) {
     fs::remove_all(folder);
 }
 
+// machine-folder found-presentation-form-after-whitespace: toml++ 3.3.0 classifies a character it
+// skips as whitespace with a test that reaches __builtin_unreachable for U+FB26-U+FEFE (UBSan:
+// "execution reached an unreachable program point"). Such a file is a config error at the character;
+// U+FEFF, the byte-order mark an editor may write first, still loads.
+TEST(FuzzFindingsTest, APresentationFormIsAConfigErrorAtItsPlace) {
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::path(::testing::TempDir()) / "m350-fuzz-presentation-form";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    test::writeText(folder / "machine.toml", "name = \"plain\"\n");
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"[params]\n61 = 3000\n \xEF\xB9\x90\n", ":3:2: character U+FE50"},
+        {"[params] # \xE5\x88\x80\xEF\xAC\xA6\n", ":1:13: character U+FB26"},
+        {"[params]\n61 = 3000\xEF\xBB\xBE\n", ":2:10: character U+FEFE"}};
+    for (const auto& [text, at] : refused) {
+        test::writeText(folder / "params.toml", text);
+        auto loaded = config::loadMachineFolder(folder.string());
+        ASSERT_TRUE(std::holds_alternative<config::ConfigError>(loaded)) << text;
+        const config::ConfigError& error = std::get<config::ConfigError>(loaded);
+        const std::string expected = (folder / "params.toml").string() + at;
+        EXPECT_EQ((error.where() + ": " + error.message).substr(0, expected.size()), expected);
+    }
+    test::writeText(folder / "params.toml", "\xEF\xBB\xBF[params]\n61 = 3000 # \xEF\xAC\xA5\n");
+    auto loaded = config::loadMachineFolder(folder.string());
+    ASSERT_FALSE(std::holds_alternative<config::ConfigError>(loaded)) << std::get<config::ConfigError>(loaded).message;
+    fs::remove_all(folder);
+}
+
 } // namespace
 } // namespace m350
