@@ -18,8 +18,8 @@ for target in "${targets[@]}"; do
     fuzzer=build-fuzz/tests/fuzz/m350-fuzz-$target
     log=build-fuzz/findings/$target.log
     mkdir -p "build-fuzz/corpus/$target"
-    dictionary=()
-    [[ "$target" == machine-folder ]] || dictionary=(-dict=tests/fuzz/gcode.dict)
+    dictionary=(-dict=tests/fuzz/gcode.dict)
+    [[ "$target" != machine-folder ]] || dictionary=(-dict=tests/fuzz/toml.dict)
     status=0
     UBSAN_OPTIONS=print_stacktrace=1 "$fuzzer" "${dictionary[@]}" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
         -print_final_stats=1 -artifact_prefix="build-fuzz/findings/$target-" \

@@ -17,11 +17,8 @@
 
 namespace m350::config {
 
-// toml::parse, except that a text holding a code point from U+FB26 to U+FEFE is refused with a
-// toml::parse_error at its line and column. toml++ 3.3.0 asks of every character it skips as
-// whitespace whether it is Unicode whitespace, and for these code points that test reaches
-// __builtin_unreachable (undefined behaviour; UBSan stops there). They are Hebrew and Arabic
-// presentation forms, variation selectors and small or vertical punctuation: no machine file needs one.
+// toml::parse, except that a text toml++ 3.3.0 cannot read without undefined behaviour (see
+// TomlScreen.h) is refused with a toml::parse_error at the character that it stumbles on.
 toml::table parseTomlText(std::string_view text, std::string_view path);
 
 // Reads the file whole and parses it as parseTomlText does; an unreadable file is a toml::parse_error.
