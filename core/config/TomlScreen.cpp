@@ -1,12 +1,68 @@
 #include "core/config/TomlScreen.h"
 
 #include <cstdio>
+#include <vector>
 
 namespace m350::config {
 
 namespace {
 
 bool isAsciiSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+// Where toml++ reads a quote as opening a string. A string starts a key or a value; a value that
+// starts with anything else is read bare up to a terminator (whitespace , ] } #), quotes included,
+// and toml++ tests each of its characters for whitespace (`a = 5"é"`, `a = 1."é"`). So the syntax
+// around a quote is followed: keys or values, and the open arrays, inline tables and table header.
+class TomlContext {
+public:
+    bool quoteOpensString() const { return !bare_; }
+    void afterString() { bare_ = false; }
+
+    // One character outside strings and comments ('#' for a whole comment).
+    void step(char c) {
+        switch (c) {
+        case ' ':
+        case '\t':
+        case '\r':
+        case '#': bare_ = false; return;
+        case '\n':
+            bare_ = false;
+            while (!open_.empty() && open_.back() == 'h') open_.pop_back();
+            key_ = open_.empty() || open_.back() == '{';
+            return;
+        case ',':
+            bare_ = false;
+            key_ = !open_.empty() && open_.back() == '{';
+            return;
+        case ']':
+        case '}':
+            bare_ = false;
+            if (!open_.empty() && (c == '}' ? open_.back() == '{' : open_.back() != '{')) open_.pop_back();
+            key_ = false;
+            return;
+        default: break;
+        }
+        if (bare_) return;
+        if (key_) {
+            if (c == '=') key_ = false;
+            if (c == '[' && open_.empty()) open_.push_back('h');
+            return;
+        }
+        if (c == '[') {
+            open_.push_back('[');
+        } else if (c == '{') {
+            open_.push_back('{');
+            key_ = true;
+        } else {
+            bare_ = true;
+        }
+    }
+
+private:
+    std::vector<char> open_; // '[' an array, '{' an inline table, 'h' a table header
+    bool key_ = true;        // a key comes next, or goes on; else a value
+    bool bare_ = false;      // inside a value read bare
+};
 
 // Walks the text as toml++ will, one code point at a time, counting lines and columns.
 class Screen {
@@ -17,22 +73,21 @@ public:
         if (text_.substr(0, 3) == "\xEF\xBB\xBF") {
             advance(); // a byte-order mark opening the text is read as such
         }
+        TomlContext context;
         while (!done()) {
             const char c = peek();
+            const bool quote = (c == '"' || c == '\'') && context.quoteOpensString();
             if (c == '#') {
                 skipComment();
-            } else if (c == '"' && startsWith("\"\"\"")) {
-                if (auto refused = multiLineBasicString()) return refused;
-            } else if (c == '"') {
-                singleLineString('"');
-            } else if (c == '\'' && startsWith("'''")) {
-                multiLineLiteralString();
-            } else if (c == '\'') {
-                singleLineString('\'');
+                context.step('#');
+            } else if (quote) {
+                if (auto refused = string(c)) return refused;
+                context.afterString();
             } else if (static_cast<unsigned char>(c) >= 0x80) {
                 return refuse(describe() + " may only stand inside a string or a comment" + hint());
             } else {
                 advance();
+                context.step(c);
             }
         }
         return std::nullopt;
@@ -96,6 +151,16 @@ private:
         case 0xFEFF: return ": a byte-order mark belongs only at the very start of the file";
         default: return "";
         }
+    }
+
+    std::optional<TomlRefusal> string(char quote) {
+        if (quote == '"' && startsWith("\"\"\"")) return multiLineBasicString();
+        if (quote == '\'' && startsWith("'''")) {
+            multiLineLiteralString();
+        } else {
+            singleLineString(quote);
+        }
+        return std::nullopt;
     }
 
     TomlRefusal refuse(std::string message) const { return TomlRefusal{line_, column_, std::move(message)}; }

@@ -118,7 +118,8 @@ TEST(FuzzFindingsTest, ANonAsciiCharacterBetweenTokensIsAConfigErrorAtItsPlace) 
     const std::vector<std::pair<std::string, std::string>> refused = {
         {"[params]\n61 = 3000\n \xEF\xB9\x90\n", ":3:2: character '\xEF\xB9\x90' (U+FE50)"},
         {"[params]\n61 = 3000\xE3\x80\x82\n", ":2:10: character '\xE3\x80\x82' (U+3002)"},
-        {"[params]\n61 =\xE3\x80\x80" "3000\n", ":2:5: character '\xE3\x80\x80' (U+3000)"}};
+        {"[params]\n61 =\xE3\x80\x80" "3000\n", ":2:5: character '\xE3\x80\x80' (U+3000)"},
+        {"[params]\n61 = 5s\"\xD0\x96\"\n", ":2:9: character '\xD0\x96' (U+0416)"}}; // found-quote-inside-a-bare-value
     for (const auto& [text, at] : refused) {
         test::writeText(folder / "params.toml", text);
         auto loaded = config::loadMachineFolder(folder.string());

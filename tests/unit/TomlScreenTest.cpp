@@ -76,6 +76,28 @@ TEST(TomlScreenTest, StringsAndCommentsMayHoldAnyCharacter) {
               "accepted");
 }
 
+TEST(TomlScreenTest, AQuoteInsideABareValueOpensNoString) {
+    // toml++ reads `5"é"` as one bare value and tests each of its characters for whitespace.
+    EXPECT_EQ(refusal("a = 5\"\xC3\xA9\"\n"), "1:7: character '\xC3\xA9' (U+00E9) may only stand inside a string or "
+                                              "a comment");
+    EXPECT_EQ(refusal("a = 1.\"\xC3\xA9\"\n"), "1:8: character '\xC3\xA9' (U+00E9) may only stand inside a string "
+                                               "or a comment");
+    EXPECT_EQ(refusal("a = =\"\xC3\xA9\"\n"), "1:7: character '\xC3\xA9' (U+00E9) may only stand inside a string or "
+                                              "a comment");
+    EXPECT_EQ(refusal("a = [1, x[\"\xC3\xA9\"]]\n"), "1:12: character '\xC3\xA9' (U+00E9) may only stand inside a "
+                                                      "string or a comment");
+}
+
+TEST(TomlScreenTest, QuotedKeysTableNamesAndValuesInArraysAndInlineTablesAreStrings) {
+    EXPECT_EQ(refusal("a.\"\xC3\xA9\" = 1\n"
+                      "[b.\"\xE5\x88\x80\"]\n"
+                      "[[c.'\xE5\x88\x80']]\n"
+                      "x = { \"\xC3\xA9\" = 1, y.\"\xC2\xB0\" = [\"\xC3\xA9\", '\xE3\x80\x82', [\"\xC2\xB0\"]] }\n"
+                      "z = [\n  \"\xE3\x80\x82\", # \xE3\x80\x82\n  {k = \"\xC2\xB0\"},\n  '''\xC2\xB0'''\n]\n"
+                      "w = \"x\" # \xC2\xB0\n"),
+              "accepted");
+}
+
 TEST(TomlScreenTest, InAMultiLineBasicStringTheCharacterAfterABackslashMustBeAscii) {
     EXPECT_EQ(refusal("a = \"\"\"x \\\n    \xC2\xB0 y\"\"\"\n"),
               "2:5: after a line-ending backslash the text must go on with an ASCII character, not character "
