@@ -82,15 +82,21 @@ TEST(FuzzFindingsTest, PclosBeforeAnyDprntRunsWithoutReadingAStatementTable) {
     EXPECT_EQ(report.status, controller::RunStatus::Ok) << (report.alarm ? report.alarm->message : "");
 }
 
+// A fresh machine folder with only a machine.toml, for a params.toml under test.
+std::filesystem::path plainMachineFolder(const char* name) {
+    const std::filesystem::path folder = std::filesystem::path(::testing::TempDir()) / name;
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    test::writeText(folder / "machine.toml", "name = \"plain\"\n");
+    return folder;
+}
+
 // machine-folder found-table-header-control-character: a params.toml table header whose key starts
 // with a character no key may start with stopped the sanitizer builds on an assertion inside
 // toml++ 3.3.0 (abort); it is a config error naming the file, line and column, as in a release build.
 TEST(FuzzFindingsTest, ATableHeaderWithNoKeyIsAConfigErrorNotAnAbort) {
     namespace fs = std::filesystem;
-    const fs::path folder = fs::path(::testing::TempDir()) / "m350-fuzz-table-header";
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    test::writeText(folder / "machine.toml", "name = \"plain\"\n");
+    const fs::path folder = plainMachineFolder("m350-fuzz-table-header");
     const std::vector<std::pair<std::string, std::string>> headers = {
         {"[params]\n61 = 3000\n[\t\x0e]\n", ":3:3"}, {"[ !]\n", ":1:3"}, {"[[[a]]]\n", ":1:3"}};
     for (const auto& [text, at] : headers) {
@@ -111,10 +117,7 @@ TEST(FuzzFindingsTest, ATableHeaderWithNoKeyIsAConfigErrorNotAnAbort) {
 // comments, where Chinese punctuation and signs such as ° belong, the file loads.
 TEST(FuzzFindingsTest, ANonAsciiCharacterBetweenTokensIsAConfigErrorAtItsPlace) {
     namespace fs = std::filesystem;
-    const fs::path folder = fs::path(::testing::TempDir()) / "m350-fuzz-presentation-form";
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    test::writeText(folder / "machine.toml", "name = \"plain\"\n");
+    const fs::path folder = plainMachineFolder("m350-fuzz-presentation-form");
     const std::vector<std::pair<std::string, std::string>> refused = {
         {"[params]\n61 = 3000\n \xEF\xB9\x90\n", ":3:2: character '\xEF\xB9\x90' (U+FE50)"},
         {"[params]\n61 = 3000\xE3\x80\x82\n", ":2:10: character '\xE3\x80\x82' (U+3002)"},
