@@ -43,7 +43,7 @@ toml::table parseTomlFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
-    if (!in || in.bad()) {
+    if (!in) {
         throw unreadable("the file could not be read");
     }
     return parseTomlText(text.str(), path);

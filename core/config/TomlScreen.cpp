@@ -81,7 +81,7 @@ public:
                 skipComment();
                 context.step('#');
             } else if (quote) {
-                if (auto refused = string(c)) return refused;
+                if (auto refused = skipString(c)) return refused;
                 context.afterString();
             } else if (static_cast<unsigned char>(c) >= 0x80) {
                 return refuse(describe() + " may only stand inside a string or a comment" + hint());
@@ -153,7 +153,7 @@ private:
         }
     }
 
-    std::optional<TomlRefusal> string(char quote) {
+    std::optional<TomlRefusal> skipString(char quote) {
         if (quote == '"' && startsWith("\"\"\"")) return multiLineBasicString();
         if (quote == '\'' && startsWith("'''")) {
             multiLineLiteralString();
