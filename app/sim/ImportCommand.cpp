@@ -2,7 +2,7 @@
 
 #include "app/sim/ReportJson.h"
 
-#include "core/config/BackupImport.h"
+#include "core/backup/BackupImport.h"
 
 #include <nlohmann/json.hpp>
 
@@ -16,13 +16,13 @@ constexpr int kExitOk = 0;
 constexpr int kExitError = 2;
 
 // Every key is present whatever happened, so a script can read any of them.
-nlohmann::json importJson(const config::BackupImport& r, const config::ImportError* error) {
+nlohmann::json importJson(const backup::BackupImport& r, const backup::ImportError* error) {
     nlohmann::json skipped = nlohmann::json::array();
-    for (const config::SkippedFile& file : r.skipped) {
+    for (const backup::SkippedFile& file : r.skipped) {
         skipped.push_back({{"file", file.name}, {"reason", file.reason}});
     }
     nlohmann::json review = nlohmann::json::array();
-    for (const config::ReviewItem& item : r.review) {
+    for (const backup::ReviewItem& item : r.review) {
         review.push_back({{"key", item.key}, {"value", item.value}, {"why", item.why}});
     }
     nlohmann::json alarm = nullptr;
@@ -53,19 +53,19 @@ nlohmann::json importJson(const config::BackupImport& r, const config::ImportErr
 } // namespace
 
 int runImport(const std::string& backupDir, const std::string& intoDir) {
-    auto outcome = config::importControllerBackup(backupDir, intoDir);
-    if (auto* error = std::get_if<config::ImportError>(&outcome)) {
+    auto outcome = backup::importControllerBackup(backupDir, intoDir);
+    if (auto* error = std::get_if<backup::ImportError>(&outcome)) {
         std::cerr << error->file << ": " << error->message << '\n';
-        std::cout << dump(importJson(config::BackupImport{}, error)) << '\n';
+        std::cout << dump(importJson(backup::BackupImport{}, error)) << '\n';
         return kExitError;
     }
-    const auto& result = std::get<config::BackupImport>(outcome);
+    const auto& result = std::get<backup::BackupImport>(outcome);
     if (result.unchanged) {
         std::cerr << result.machineFolder << ": already holds this backup's import; nothing written\n";
     } else {
         std::cerr << "Imported " << backupDir << " into " << result.machineFolder << "\n";
     }
-    std::cerr << config::formatImportReport(result);
+    std::cerr << backup::formatImportReport(result);
     std::cout << dump(importJson(result, nullptr)) << '\n';
     return kExitOk;
 }

@@ -2,10 +2,10 @@
 #include "app/sim/BreakageOptions.h"
 #include "app/sim/ByteLimitOption.h"
 
-#include "core/config/FanucParameters.h"
+#include "core/params/FanucParameters.h"
 #include "core/config/HookFiles.h"
-#include "core/config/ParameterCatalogue.h"
-#include "core/config/ParameterLimits.h"
+#include "core/params/ParameterCatalogue.h"
+#include "core/params/ParameterLimits.h"
 
 #include <CLI/CLI.hpp>
 
@@ -195,20 +195,20 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         for (const std::string& p : params) {
             auto [n, v] = splitAssignment(p, "--param");
             int number = parseWhole(n, "--param");
-            if (number < 0 || number > config::kLastFanucParameter) {
+            if (number < 0 || number > params::kLastFanucParameter) {
                 throw CLI::ValidationError("--param", "parameter numbers run from 0 to 999 (FANUC machines: to 99999)");
             }
             double value = parseNumber(v, "--param");
-            auto refused = config::isFanucParameterNumber(number) ? config::refusedFanucParameter(number, value)
-                                                                 : config::refusedParameterValue(number, value);
+            auto refused = params::isFanucParameterNumber(number) ? params::refusedFanucParameter(number, value)
+                                                                 : params::refusedParameterValue(number, value);
             if (refused) {
                 throw CLI::ValidationError("--param", *refused);
             }
-            if (auto unread = config::isFanucParameterNumber(number) ? config::unreadFanucParameter(number)
+            if (auto unread = params::isFanucParameterNumber(number) ? params::unreadFanucParameter(number)
                                                                      : std::nullopt) {
                 std::cerr << "m350-sim: warning: --param " << p << ": " << *unread << '\n';
             }
-            const auto* catalogue = std::get_if<config::ParameterCatalogue>(&config::ParameterCatalogue::bundled());
+            const auto* catalogue = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled());
             if (catalogue && catalogue->find(number)) {
                 if (auto problem = catalogue->validate(number, value)) {
                     std::cerr << "m350-sim: warning: --param " << p << ": " << *problem << " (used as given)\n";

@@ -2,7 +2,7 @@
 
 #include "app/sim/ReportJson.h"
 
-#include "core/config/OutputFile.h"
+#include "core/files/OutputFile.h"
 #include "core/tools/ToolTableFile.h"
 
 #include <nlohmann/json.hpp>
@@ -106,7 +106,7 @@ std::optional<std::string> exportTools(controller::Controller& controller, const
     if (!o.toolsOut) {
         return std::nullopt;
     }
-    return config::writeOutputFile(*o.toolsOut, tools::formatToolTable(controller.toolTable()));
+    return files::writeOutputFile(*o.toolsOut, tools::formatToolTable(controller.toolTable()));
 }
 
 } // namespace m350::sim

@@ -9,10 +9,10 @@
 #include "app/sim/ToolLifeJson.h"
 #include "app/sim/SpindleLoadJson.h"
 
-#include "core/config/FanucParameters.h"
-#include "core/config/OutputFile.h"
+#include "core/params/FanucParameters.h"
+#include "core/files/OutputFile.h"
 #include "core/config/MachineConfig.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 #include "core/controller/Controller.h"
 #include "core/macro/VariableMap.h"
 #include "core/tools/ToolLifeFile.h"
@@ -91,9 +91,9 @@ std::optional<std::string> checkAgainstMachine(const sim::SimOptions& o, const c
     if (o.settings.tool) {
         const int tool = *o.settings.tool;
         const bool m350 = machine.dialect->id == gcode::DialectId::M350;
-        const int capacity = m350 ? static_cast<int>(machine.parameters.get(config::param::kMagazineCapacity))
+        const int capacity = m350 ? static_cast<int>(machine.parameters.get(param::kMagazineCapacity))
                                   : machine.magazineCapacity;
-        const int virtualTools = m350 && machine.parameters.get(config::param::kVirtualTools) != 0.0 ? 20 : 0;
+        const int virtualTools = m350 && machine.parameters.get(param::kVirtualTools) != 0.0 ? 20 : 0;
         const int most = capacity > 0 ? capacity + virtualTools : 9999;
         if (tool < 0 || tool > most) {
             return "--tool " + std::to_string(tool) + ": tools run from 0 (empty spindle) to " + std::to_string(most) +
@@ -121,7 +121,7 @@ std::optional<std::string> writeExternalOutput(const controller::Controller& con
         return std::nullopt;
     }
     const std::string file = sim::externalOutputPath(o);
-    if (auto problem = config::writeOutputFile(file, controller.externalOutput())) {
+    if (auto problem = files::writeOutputFile(file, controller.externalOutput())) {
         std::cerr << "m350-sim: cannot write the external output (DPRNT) to " << file << ": " << *problem << '\n';
         return problem;
     }
@@ -180,7 +180,7 @@ int runCommand(int argc, char** argv) {
     }
     if (machineConfig.dialect->id == gcode::DialectId::M350) {
         for (const auto& [number, value] : o.settings.parameters) {
-            if (config::isFanucParameterNumber(number)) {
+            if (params::isFanucParameterNumber(number)) {
                 std::cerr << "m350-sim: --param " << number << ": parameters run from 0 to 999 on an M350 machine ("
                           << machineConfig.name << "); 1000-99999 are FANUC parameters\n";
                 return 64;
@@ -210,13 +210,13 @@ int runCommand(int argc, char** argv) {
         std::cerr << "m350-sim: " << *refused << '\n';
         return 64;
     }
-    std::unique_ptr<config::OutputFile> trace;
+    std::unique_ptr<files::OutputFile> trace;
     if (o.traceFile) {
-        auto opened = config::OutputFile::open(*o.traceFile);
+        auto opened = files::OutputFile::open(*o.traceFile);
         if (auto* error = std::get_if<std::string>(&opened)) {
             return fail("file_error", "cannot write the trace file: " + *error, *o.traceFile);
         }
-        trace = std::move(std::get<std::unique_ptr<config::OutputFile>>(opened));
+        trace = std::move(std::get<std::unique_ptr<files::OutputFile>>(opened));
         o.settings.trace = &trace->stream();
     }
     if (o.command != sim::SimOptions::Command::Check) {

@@ -2,19 +2,19 @@
 #include "core/tools/ToolLifeFile.h"
 #include "core/common/Numeric.h"
 
-#include "core/config/FanucParameters.h"
+#include "core/params/FanucParameters.h"
 #include "core/config/HookFiles.h"
-#include "core/config/LastGoodCopy.h"
+#include "core/files/LastGoodCopy.h"
 #include "core/config/MagazineToml.h"
-#include "core/config/ParameterCatalogue.h"
-#include "core/config/ParameterLimits.h"
+#include "core/params/ParameterCatalogue.h"
+#include "core/params/ParameterLimits.h"
 #include "core/config/TomlReading.h"
 #include "core/config/SpindleLoadToml.h"
 #include "core/tools/ToolData.h"
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
 
-#include "core/config/Toml.h"
+#include "core/files/Toml.h"
 
 #include <filesystem>
 
@@ -160,7 +160,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         }
     }
     if (const toml::table* magazine = t["magazine"].as_table()) {
-        config.magazineCapacity = wholeValue(file, *magazine, "capacity", 0, kMostPockets, 0);
+        config.magazineCapacity = wholeValue(file, *magazine, "capacity", 0, params::kMostPockets, 0);
     }
     if (const toml::table* magazine = t["magazine"].as_table(); magazine && magazine->contains("device")) {
         if (auto wrong = readMagazine(*magazine, config.magazine)) {
@@ -215,24 +215,24 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
     }
     toml::table t = parseToml(file);
     warnUnknownKeys(file, t, {"params", "params.*"}, config.warnings);
-    const auto* known = std::get_if<ParameterCatalogue>(&ParameterCatalogue::bundled());
+    const auto* known = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled());
     if (auto params = t["params"].as_table()) {
         for (auto&& [key, value] : *params) {
             const bool fanuc = config.dialect->id == gcode::DialectId::Fanuc;
             int n = numberKey(file, key.str(), key.source(), 0,
-                              fanuc ? kLastFanucParameter : ParameterTable::kCount - 1, "parameter");
+                              fanuc ? params::kLastFanucParameter : params::ParameterTable::kCount - 1, "parameter");
             double v = numberValue(file, value, key.str());
-            if (isFanucParameterNumber(n)) {
-                if (auto refused = refusedFanucParameter(n, v)) {
+            if (params::isFanucParameterNumber(n)) {
+                if (auto refused = params::refusedFanucParameter(n, v)) {
                     fail(file, *refused, value.source());
                 }
-                if (auto unread = unreadFanucParameter(n)) {
+                if (auto unread = params::unreadFanucParameter(n)) {
                     config.warnings.push_back(warningAt(file, value.source(), *unread));
                 }
                 config.fanucParameters[n] = v;
                 continue;
             }
-            if (auto refused = refusedParameterValue(n, v)) {
+            if (auto refused = params::refusedParameterValue(n, v)) {
                 fail(file, *refused, value.source());
             }
             // A value the panel would refuse is kept (a simulator may be asked for it) but said; the
@@ -302,9 +302,9 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
         config.warnings.push_back(tools::formatIssue(issue));
     }
     if (parsed.issues.empty()) {
-        refreshLastGood(file);
-    } else if (!lastGoodNote(file).empty()) {
-        config.warnings.push_back(file.string() + ": warning: the lines above were not read" + lastGoodNote(file));
+        files::refreshLastGood(file);
+    } else if (!files::lastGoodNote(file).empty()) {
+        config.warnings.push_back(file.string() + ": warning: the lines above were not read" + files::lastGoodNote(file));
     }
     const std::vector<tools::ToolTable::Line>& lines = parsed.table.lines();
     for (std::size_t i = 0; config.dialect->id == gcode::DialectId::M350 && i < lines.size(); ++i) {
@@ -353,20 +353,20 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         }
         const fs::path lifeFile = dir / tools::kToolLifeFile;
         if (parsed.issues.empty()) {
-            refreshLastGood(lifeFile);
-        } else if (!lastGoodNote(lifeFile).empty()) {
+            files::refreshLastGood(lifeFile);
+        } else if (!files::lastGoodNote(lifeFile).empty()) {
             config.warnings.push_back(lifeFile.string() + ": warning: the lines above were not read" +
-                                      lastGoodNote(lifeFile));
+                                      files::lastGoodNote(lifeFile));
         }
         config.toolLife = std::move(parsed.data);
         config.toolLifeIssues = std::move(parsed.issues);
         if (auto wrong = tools::readLoadMonitorSettings((dir / tools::kSpindleLoadFileName).string(), config.loadMonitor)) {
             return ConfigError{(dir / tools::kSpindleLoadFileName).string(), wrong->message, wrong->line, wrong->column};
         }
-        refreshLastGood(dir / "params.toml");
+        files::refreshLastGood(dir / "params.toml");
     } catch (const Failure& f) {
         ConfigError error = f.error;
-        error.message += lastGoodNote(error.file);
+        error.message += files::lastGoodNote(error.file);
         return error;
     } catch (const fs::filesystem_error& e) {
         // a symlink loop, a dangling link, a folder that cannot be listed: an error, not an abort

@@ -2,7 +2,7 @@
 
 #include "core/config/MagazineConfig.h"
 #include "core/config/ModbusSlaves.h"
-#include "core/config/ParameterTable.h"
+#include "core/params/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
 #include "core/machine/SimulatedMachine.h"
@@ -47,7 +47,7 @@ struct MachineConfig {
     std::vector<LibraryFile> libraries;
     std::map<std::pair<char, int>, int> codePrograms;
     std::vector<machine::IoLink> ioLinks;
-    ParameterTable parameters;
+    params::ParameterTable parameters;
     std::map<int, double> fanucParameters; // FANUC machines' parameters 1000-99999 (FanucParameters.h)
     std::array<std::array<double, 5>, 9> offsets{}; // slots as interp::WorkOffsets numbers them
     std::map<int, double> variables;

@@ -2,7 +2,7 @@
 
 #include "core/config/MagazineConfig.h"
 
-#include "core/config/Toml.h"
+#include "core/files/Toml.h"
 
 #include <optional>
 #include <string>

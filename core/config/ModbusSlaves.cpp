@@ -1,6 +1,6 @@
 #include "core/config/ModbusSlaves.h"
 
-#include "core/config/Toml.h"
+#include "core/files/Toml.h"
 
 #include <charconv>
 #include <cmath>
@@ -32,7 +32,7 @@ std::optional<std::string> loadModbusSlaves(const std::string& path, ModbusSlave
     }
     toml::table t;
     try {
-        t = parseTomlFile(path);
+        t = files::parseTomlFile(path);
     } catch (const toml::parse_error& e) {
         return std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column) + ": " +
                std::string(e.description());

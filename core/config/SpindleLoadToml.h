@@ -2,7 +2,7 @@
 
 #include "core/machine/SpindleLoadModel.h"
 
-#include "core/config/Toml.h"
+#include "core/files/Toml.h"
 
 #include <filesystem>
 #include <optional>

@@ -54,7 +54,7 @@ void fail(const fs::path& file, std::string message, const toml::source_region& 
 
 toml::table parseToml(const fs::path& file) {
     try {
-        return parseTomlFile(file.string());
+        return files::parseTomlFile(file.string());
     } catch (const toml::parse_error& e) {
         fail(file, std::string(e.description()), e.source());
     }

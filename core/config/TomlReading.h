@@ -4,7 +4,7 @@
 // read with a size cap, and keys nobody reads (typos) are warned about.
 #include "core/config/MachineConfig.h"
 
-#include "core/config/Toml.h"
+#include "core/files/Toml.h"
 
 #include <filesystem>
 #include <initializer_list>

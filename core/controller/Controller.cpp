@@ -1,12 +1,12 @@
 #include "core/controller/Controller.h"
-#include "core/config/FanucParameters.h"
+#include "core/params/FanucParameters.h"
 
 #include "core/common/EchoText.h"
-#include "core/config/IoPorts.h"
+#include "core/params/IoPorts.h"
 #include "core/common/Numeric.h"
 
-#include "core/config/ParameterLimits.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterLimits.h"
+#include "core/params/ParameterNumbers.h"
 #include "core/devices/Magazine.h"
 #include "core/macro/MacroError.h"
 
@@ -18,7 +18,6 @@
 
 namespace m350::controller {
 
-namespace param = config::param;
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)),
@@ -63,7 +62,7 @@ config::MachineConfig Controller::config() const {
 
 // The machine's speeds, delays and spindle sensor, from the parameters as they stand.
 void Controller::configureMachine() {
-    const config::ParameterTable& p = config_.parameters;
+    const params::ParameterTable& p = config_.parameters;
     machine::MotionLimits limits;
     auto positive = [](double v, double fallback) { return v > 0.0 ? v : fallback; };
     limits.rapidSpeed = positive(p.get(param::kRapidSpeed), 10000.0) / 60.0;
@@ -76,13 +75,13 @@ void Controller::configureMachine() {
     machine_.setLimits(limits);
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         machine::HomeSwitch homeSwitch = machine_.homeSwitch(axis); // it stays where it is
-        auto home = config::wiredInput(p, param::kHomeSwitchX + 3 * axis);
+        auto home = params::wiredInput(p, param::kHomeSwitchX + 3 * axis);
         homeSwitch.port = home ? home->pin : 0;
         homeSwitch.activeLevel = home ? home->activeLevel : 0;
         machine_.setHomeSwitch(axis, homeSwitch);
     }
     machine::ToolSetter setter;
-    if (auto input = config::wiredInput(p, param::kFixedSetterInput)) {
+    if (auto input = params::wiredInput(p, param::kFixedSetterInput)) {
         setter.port = input->pin;
         setter.activeLevel = input->activeLevel;
     }
@@ -92,22 +91,22 @@ void Controller::configureMachine() {
     setter.radius = config_.setterRadius;
     machine_.setToolSetter(setter);
     machine::ToolSetter block; // the floating setter, where the machine folder puts one on the work
-    if (auto input = config::wiredInput(p, param::kFloatingSetterInput); input && config_.floatingSetterTop) {
+    if (auto input = params::wiredInput(p, param::kFloatingSetterInput); input && config_.floatingSetterTop) {
         block.port = input->pin;
         block.activeLevel = input->activeLevel;
         block.top = *config_.floatingSetterTop;
     }
     machine_.setFloatingSetter(block);
-    if (auto stopped = config::wiredInput(p, param::kSpindleStoppedInput)) {
+    if (auto stopped = params::wiredInput(p, param::kSpindleStoppedInput)) {
         machine_.setSpindleStoppedSensor({stopped->pin, stopped->activeLevel});
     }
 }
 
 void Controller::applyParameterOverrides() {
     for (auto [number, value] : settings_.parameters) {
-        if (config::isFanucParameterNumber(number)) {
+        if (params::isFanucParameterNumber(number)) {
             config_.fanucParameters[number] = value;
-        } else if (config::ParameterTable::valid(number)) {
+        } else if (params::ParameterTable::valid(number)) {
             config_.parameters.set(number, value);
         }
     }
@@ -220,7 +219,7 @@ void Controller::enterSafeState() {
     machine_.spindle(machine::SpindleState::Stop, 0.0);
     machine_.coolant(false);
     for (int port = 1; port <= machine::kOutputCount; ++port) {
-        auto function = config::outputOnPin(config_.parameters, port);
+        auto function = params::outputOnPin(config_.parameters, port);
         machine_.setOutput(port, function ? 1 - function->activeLevel : 0);
     }
 }
@@ -423,8 +422,8 @@ void Controller::fill(RunReport& out) const {
     out.tool = spindleTool();
     const devices::Magazine* magazine = magazine_.device();
     int capacity = config_.dialect->id == gcode::DialectId::M350
-                       ? config::magazineCapacity(config_.parameters)
-                       : magazine ? magazine->pocketCount() : std::clamp(config_.magazineCapacity, 0, config::kMostPockets);
+                       ? params::magazineCapacity(config_.parameters)
+                       : magazine ? magazine->pocketCount() : std::clamp(config_.magazineCapacity, 0, params::kMostPockets);
     // Without a magazine device every tool has its own pocket, empty while it is in the spindle.
     for (int pocket = 1; pocket <= capacity; ++pocket) {
         if (magazine) {

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "core/config/AtomicFile.h"
+#include "core/files/AtomicFile.h"
 #include "core/config/HookFiles.h"
-#include "core/config/IoPorts.h"
+#include "core/params/IoPorts.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/ExternalDevices.h"
 #include "core/controller/KeyPress.h"
@@ -131,7 +131,7 @@ public:
     std::vector<OperatorKey> takeOperatorKeys();
     // Parameters 0-999 as they stand, for the panel's teach buttons (135-137) and IO page. A write
     // takes effect at once (setters, sensors, speeds); false for other numbers, a value that is
-    // not finite or one that config::refusedParameterValue refuses.
+    // not finite or one that params::refusedParameterValue refuses.
     double parameter(int n) const;
     // What the loaded program (its main or MDI file) would alarm on that is knowable without
     // running it: a word twice in a block, an unknown G code, a variable that does not exist or is
@@ -265,7 +265,7 @@ public:
     bool touchOffTool(double workZ, std::string* why = nullptr);
     // Writes the table to the machine folder's tool.tbl atomically (and the M350's Z parameters
     // params.toml already lists, so both files agree; tool.tbl is the one read). nullopt on success.
-    std::optional<std::string> saveToolTable(const config::AtomicWriteHooks& hooks = {});
+    std::optional<std::string> saveToolTable(const files::AtomicWriteHooks& hooks = {});
     // Whether the tool data changed since the start or the last save (by an edit, G10, a macro
     // writing #1430 ...): what a panel saves after.
     bool toolTableChanged() const { return !(tools_.mark() == savedToolMark_); }
@@ -364,7 +364,7 @@ private:
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
     bool optionalStopOn();
     void watchInput(int pin, int level);
-    void pressStartIfAwaited(const config::PortAssignment& key, int pin, int level, const gcode::SourceLocation& where);
+    void pressStartIfAwaited(const params::PortAssignment& key, int pin, int level, const gcode::SourceLocation& where);
     std::optional<std::string> showDialog(double kind, std::string_view text);
     bool operatorAnswers() const { return settings_.operatorPresent && !pressStartWhenAwaited_; }
 

@@ -3,7 +3,7 @@
 #include "core/controller/Controller.h"
 #include "core/common/Numeric.h"
 
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <cmath>
 

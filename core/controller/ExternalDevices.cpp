@@ -1,6 +1,6 @@
 #include "core/controller/ExternalDevices.h"
 
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 namespace m350::controller {
 
@@ -70,7 +70,7 @@ std::optional<std::string> ExternalDevices::output(std::string_view statement, s
 }
 
 std::optional<std::string> ExternalDevices::modbusRefusal(const char* statement, int slave, int address) {
-    if (context_.parameters.get(config::param::kModbusRtu) == 0.0) {
+    if (context_.parameters.get(param::kModbusRtu) == 0.0) {
         return std::string(statement) + ": Modbus RTU is off (parameter 279 = 0)";
     }
     auto found = slaves_.holding.find(slave);

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/config/ModbusSlaves.h"
-#include "core/config/ParameterTable.h"
+#include "core/params/ParameterTable.h"
 #include "core/common/HeadTail.h"
 #include "core/controller/TraceWriter.h"
 #include "core/machine/ScanMachine.h"
@@ -42,7 +42,7 @@ public:
     static constexpr std::size_t kNewRecordsBudget = 1u << 20;
 
     struct Context {
-        const config::ParameterTable& parameters;
+        const params::ParameterTable& parameters;
         machine::ScanMachine& scan;
         const std::unique_ptr<TraceWriter>& trace;
         std::function<double()> time;

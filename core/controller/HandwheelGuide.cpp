@@ -4,7 +4,7 @@
 // variables stay as they were set), and turning forward replays the path before new blocks run.
 #include "core/controller/Controller.h"
 
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 #include "core/controller/ManualParameters.h"
 
 #include <algorithm>
@@ -13,7 +13,6 @@
 
 namespace m350::controller {
 
-namespace param = config::param;
 
 void Controller::setHandwheelGuide(bool on) {
     if (on == manual_.guide) {
@@ -31,7 +30,7 @@ void Controller::setHandwheelGuide(bool on) {
 // the override it asks for: 100 % when it turns as fast as an MPG jog at that multiplier moves,
 // capped at param 295 (100 % when 0).
 bool Controller::guideTurn(int multiplier, int detents, double seconds) {
-    const config::ParameterTable& p = config_.parameters;
+    const params::ParameterTable& p = config_.parameters;
     double wheel = std::abs(detents) * multiplier * manual::mpgDistance(p) / seconds;
     double full = manual::mpgSpeed(p, multiplier) / 60.0;
     double maximum = p.get(param::kMaxFeedOverride) > 0.0 ? p.get(param::kMaxFeedOverride) / 100.0 : 1.0;
@@ -58,7 +57,7 @@ double Controller::displayStep(double seconds) {
         }
         return seconds;
     }
-    const config::ParameterTable& p = config_.parameters;
+    const params::ParameterTable& p = config_.parameters;
     double step = manual_.override.advance(seconds, {manual::guideChangeStep(p), manual::guideStopStep(p)});
     double floor = std::max(machine_.historyFrom(), runStartedAt_); // no further back than the kept moves
     return std::max(step, std::min(0.0, floor - displayTime_));

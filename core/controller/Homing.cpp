@@ -1,17 +1,16 @@
 // 回零 homing: each axis runs toward its home switch (an IO input, params 545-557), backs off and
 // approaches again slowly, then takes the machine position of params 122-126.
 #include "core/controller/Controller.h"
-#include "core/config/IoPorts.h"
+#include "core/params/IoPorts.h"
 
 #include "core/common/Numeric.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace m350::controller {
 
-namespace param = config::param;
 
 namespace {
 
@@ -21,7 +20,7 @@ constexpr std::array<int, machine::kAxisCount> kHomingOrder{2, 0, 1, 3, 4}; // Z
 } // namespace
 
 bool Controller::homeSwitchWired(int axis) const {
-    return config::wiredInput(config_.parameters, param::kHomeSwitchX + 3 * axis).has_value();
+    return params::wiredInput(config_.parameters, param::kHomeSwitchX + 3 * axis).has_value();
 }
 
 std::vector<int> Controller::homeableAxes() const {
@@ -73,7 +72,7 @@ std::string Controller::parametersFile() const {
 }
 
 std::optional<Alarm> Controller::homeAxis(int axis, double since) {
-    const config::ParameterTable& p = config_.parameters;
+    const params::ParameterTable& p = config_.parameters;
     const char name = machine::kAxisNames[static_cast<std::size_t>(axis)];
     if (!homeSwitchWired(axis)) {
         int first = param::kHomeSwitchX + 3 * axis;
@@ -82,7 +81,7 @@ std::optional<Alarm> Controller::homeAxis(int axis, double since) {
                          "-" + std::to_string(first + 2) + ": pin, enable, level)",
                      parametersFile(), 0, 0};
     }
-    const config::PortAssignment homeSwitch = *config::wiredInput(p, param::kHomeSwitchX + 3 * axis);
+    const params::PortAssignment homeSwitch = *params::wiredInput(p, param::kHomeSwitchX + 3 * axis);
     const int pin = homeSwitch.pin;
     const int active = homeSwitch.activeLevel;
     const double direction = p.get(param::kHomingDirectionX + axis) != 0.0 ? 1.0 : -1.0;

@@ -3,8 +3,8 @@
 // RunSettings::sensorTimeout of virtual time stops with an alarm naming it.
 #include "core/controller/Controller.h"
 
-#include "core/config/IoPorts.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/IoPorts.h"
+#include "core/params/ParameterNumbers.h"
 #include "core/macro/MacroError.h"
 
 #include <cstdio>
@@ -14,7 +14,7 @@ namespace m350::controller {
 namespace {
 
 // The operator's own inputs (extern keys, START, PAUSE, E-stop): waiting for a person is no fault.
-bool operatorInput(const std::optional<config::PortAssignment>& a) {
+bool operatorInput(const std::optional<params::PortAssignment>& a) {
     return a && a->function->parameter >= 581 && a->function->parameter <= 605;
 }
 
@@ -33,7 +33,7 @@ void Controller::watchInput(int pin, int level) {
         return;
     }
     auto where = executor_->location();
-    auto function = config::inputOnPin(config_.parameters, pin);
+    auto function = params::inputOnPin(config_.parameters, pin);
     if (!where) {
         return;
     }
@@ -46,7 +46,7 @@ void Controller::watchInput(int pin, int level) {
     case SensorWatch::Verdict::Waiting: return;
     case SensorWatch::Verdict::WaitBegins:
         if (trace_) {
-            trace_->sensorWait(machine_.time(), config::inputName(pin), 1 - level,
+            trace_->sensorWait(machine_.time(), params::inputName(pin), 1 - level,
                                {program_.fileName(*where), where->line});
         }
         return;
@@ -62,9 +62,9 @@ void Controller::watchInput(int pin, int level) {
 
 // A run without an operator (run()) presses the extern START key when a macro waits for it, as
 // the operator would after doing what the prompt asked, and says so.
-void Controller::pressStartIfAwaited(const config::PortAssignment& key, int pin, int level,
+void Controller::pressStartIfAwaited(const params::PortAssignment& key, int pin, int level,
                                      const gcode::SourceLocation& where) {
-    if (!pressStartWhenAwaited_ || key.function->parameter != config::param::kExternStartInput ||
+    if (!pressStartWhenAwaited_ || key.function->parameter != param::kExternStartInput ||
         level == key.activeLevel) {
         return;
     }
@@ -72,13 +72,13 @@ void Controller::pressStartIfAwaited(const config::PortAssignment& key, int pin,
         return;
     }
     machine_.pulseInput(pin, key.activeLevel, kKeyPress);
-    postMessage("外部启动 extern START (" + config::inputName(pin) + ") pressed at " + program_.fileName(where) + ":" +
+    postMessage("外部启动 extern START (" + params::inputName(pin) + ") pressed at " + program_.fileName(where) + ":" +
                 std::to_string(where.line) + " (run without an operator)");
 }
 
 // The operator presses the extern START key, as the virtual-tool prompt asks.
 void Controller::pressExternStart() {
-    if (auto key = config::wiredInput(config_.parameters, config::param::kExternStartInput)) {
+    if (auto key = params::wiredInput(config_.parameters, param::kExternStartInput)) {
         machine_.pulseInput(key->pin, key->activeLevel, kKeyPress);
     }
 }

@@ -1,9 +1,9 @@
 #include "core/controller/MagazineDriver.h"
 
 #include "core/common/Numeric.h"
-#include "core/config/IoPorts.h"
-#include "core/config/ParameterLimits.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/IoPorts.h"
+#include "core/params/ParameterLimits.h"
+#include "core/params/ParameterNumbers.h"
 #include "core/devices/LinearRack.h"
 #include "core/devices/MultiHead.h"
 #include "core/devices/ServoDisc.h"
@@ -17,7 +17,6 @@
 
 namespace m350::controller {
 
-namespace param = config::param;
 using Device = config::MagazineConfig::Device;
 
 namespace {
@@ -62,13 +61,13 @@ void MagazineDriver::build() {
 
 void MagazineDriver::buildMultiHead() {
     const config::MagazineConfig& m = context_.config.magazine;
-    const config::ParameterTable& p = context_.config.parameters;
-    multiHead_ = install(std::make_unique<devices::MultiHead>(config::magazineCapacity(p),
+    const params::ParameterTable& p = context_.config.parameters;
+    multiHead_ = install(std::make_unique<devices::MultiHead>(params::magazineCapacity(p),
                                                               p.get(param::kChangeZUp), m.tolerance,
                                                               saturatingInt(p.get(param::kCurrentTool))));
     // the head in use (param 800) was left down: its cylinder's output is on
     if (const int inUse = multiHead_->spindleTool(); inUse != 0) {
-        config::PortAssignment cylinder = config::portAssignment(p, param::kMultiProcessOutput1 + 3 * (inUse - 1));
+        params::PortAssignment cylinder = params::portAssignment(p, param::kMultiProcessOutput1 + 3 * (inUse - 1));
         if (cylinder.wired()) {
             context_.machine.setOutput(cylinder.pin, cylinder.activeLevel);
         }
@@ -77,7 +76,7 @@ void MagazineDriver::buildMultiHead() {
 
 void MagazineDriver::buildDisc() {
     const config::MagazineConfig& m = context_.config.magazine;
-    const config::ParameterTable& p = context_.config.parameters;
+    const params::ParameterTable& p = context_.config.parameters;
     devices::ServoDisc::Geometry g;
     g.station = Eigen::Vector3d(p.get(param::kChangeFrontX), p.get(param::kChangeFrontY), p.get(param::kChangeZDown));
     g.pockets = std::clamp(saturatingInt(p.get(param::kMagazineCapacity)), 1, 20);
@@ -115,7 +114,7 @@ void MagazineDriver::buildCarousel() {
 }
 
 void MagazineDriver::buildRack() {
-    const config::ParameterTable& p = context_.config.parameters;
+    const params::ParameterTable& p = context_.config.parameters;
     const config::MagazineConfig& m = context_.config.magazine;
     devices::LinearRack::Geometry g;
     g.loading = m.topLoading ? devices::LinearRack::Loading::Top : devices::LinearRack::Loading::Side;
@@ -148,16 +147,16 @@ void MagazineDriver::wireDrawbar() {
         return;
     }
     if (context_.config.dialect->id == gcode::DialectId::M350) {
-        const config::ParameterTable& p = context_.config.parameters;
-        config::PortAssignment out = config::portAssignment(p, param::kDrawbarOutput);
+        const params::ParameterTable& p = context_.config.parameters;
+        params::PortAssignment out = params::portAssignment(p, param::kDrawbarOutput);
         if (out.wired()) {
             drawbar_.output = out.pin;
             drawbar_.releaseLevel = out.activeLevel;
         }
-        if (auto released = config::wiredInput(p, param::kToolReleasedInput)) {
+        if (auto released = params::wiredInput(p, param::kToolReleasedInput)) {
             drawbar_.released = {released->pin, released->activeLevel};
         }
-        if (auto clamped = config::wiredInput(p, param::kToolClampedInput)) {
+        if (auto clamped = params::wiredInput(p, param::kToolClampedInput)) {
             drawbar_.clamped = {clamped->pin, clamped->activeLevel};
         }
         const double lockDelay = p.get(param::kSpindleLockDelay) / 1000.0;
@@ -188,8 +187,8 @@ Eigen::Vector3d MagazineDriver::noseAt(const machine::Axes& position) const {
 
 // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor.
 std::string MagazineDriver::describeInput(int pin) const {
-    if (config::inputOnPin(context_.config.parameters, pin) || !context_.config.magazine.present()) {
-        return config::describeInput(context_.config.parameters, pin);
+    if (params::inputOnPin(context_.config.parameters, pin) || !context_.config.magazine.present()) {
+        return params::describeInput(context_.config.parameters, pin);
     }
     const config::MagazineConfig& m = context_.config.magazine;
     const char* what = pin == m.inPositionInput ? (disc_ ? "disc in position" : "carousel in position")
@@ -198,7 +197,7 @@ std::string MagazineDriver::describeInput(int pin) const {
                        : pin == m.releasedInput  ? "tool released"
                        : pin == m.clampedInput   ? "tool clamped"
                                                  : nullptr;
-    return what && pin > 0 ? config::inputName(pin) + " (" + what + ")" : config::inputName(pin);
+    return what && pin > 0 ? params::inputName(pin) + " (" + what + ")" : params::inputName(pin);
 }
 
 void MagazineDriver::driveSensor(const Sensor& sensor, bool active, double at) {
@@ -278,7 +277,7 @@ std::optional<std::string> MagazineDriver::output(int port, int level, double no
     }
     const config::MagazineConfig& m = context_.config.magazine;
     if (m.onGantry) {
-        config::PortAssignment slide = config::portAssignment(context_.config.parameters, param::kMagazineSlideOutput);
+        params::PortAssignment slide = params::portAssignment(context_.config.parameters, param::kMagazineSlideOutput);
         if (slide.wired() && port == slide.pin) {
             // the slide carries the forks to the spindle or away: a move along Y between them
             slideOut_ = level == slide.activeLevel;
@@ -297,8 +296,8 @@ std::optional<std::string> MagazineDriver::output(int port, int level, double no
         return turn.crash;
     }
     for (int head = 1; multiHead_ && head <= multiHead_->pocketCount(); ++head) {
-        config::PortAssignment cylinder =
-            config::portAssignment(context_.config.parameters, param::kMultiProcessOutput1 + 3 * (head - 1));
+        params::PortAssignment cylinder =
+            params::portAssignment(context_.config.parameters, param::kMultiProcessOutput1 + 3 * (head - 1));
         if (cylinder.wired() && port == cylinder.pin) {
             return multiHead_->cylinder(head, level == cylinder.activeLevel, nose);
         }

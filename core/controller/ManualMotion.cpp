@@ -2,7 +2,7 @@
 // the manual and spindle overrides, and the IO page's output switches.
 #include "core/controller/Controller.h"
 
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 #include "core/controller/ManualParameters.h"
 #include "core/macro/MacroError.h"
 
@@ -11,7 +11,6 @@
 
 namespace m350::controller {
 
-namespace param = config::param;
 
 namespace {
 
@@ -55,7 +54,7 @@ bool Controller::jogPress(int axis, int direction) {
     if (manual_.heldAxis >= 0) {
         jogRelease(manual_.heldAxis); // one CONT key at a time
     }
-    const config::ParameterTable& p = config_.parameters;
+    const params::ParameterTable& p = config_.parameters;
     double speed = std::min(manual::jogSpeed(p, axis, manual_.highSpeed) * manual_.jogOverride / 100.0,
                             manual::maxManualSpeed(p, axis));
     if (speed <= 0.0) {
@@ -82,7 +81,7 @@ void Controller::jogRelease(int axis) {
 }
 
 bool Controller::wheelTurn(int axis, int multiplier, int detents, double seconds) {
-    const config::ParameterTable& p = config_.parameters;
+    const params::ParameterTable& p = config_.parameters;
     const double wheelSpeed = manual::mpgSpeed(p, multiplier);
     if (!validAxis(axis) || wheelSpeed <= 0.0 || detents == 0 || !std::isfinite(seconds) || seconds <= 0.0) {
         return false;
@@ -106,7 +105,7 @@ bool Controller::moveManually(int axis, double distance, double speed, double ac
     if (machine_.time() < displayTime_) {
         machine_.blockTime(displayTime_ - machine_.time()); // the machine stood still until now
     }
-    const config::ParameterTable& p = config_.parameters;
+    const params::ParameterTable& p = config_.parameters;
     const machine::Axes from = machine_.position();
     machine::Axes target = from;
     target(axis) += distance;

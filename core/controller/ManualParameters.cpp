@@ -1,13 +1,12 @@
 #include "core/controller/ManualParameters.h"
 
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <array>
 #include <cstddef>
 
 namespace m350::controller::manual {
 
-namespace param = config::param;
 
 namespace {
 
@@ -22,7 +21,7 @@ constexpr double kMpgDistance = 0.004;
 constexpr double kGuideChangeStep = 0.01;
 constexpr double kGuideStopStep = 0.05;
 
-double orDefault(const config::ParameterTable& p, int number, double factory) {
+double orDefault(const params::ParameterTable& p, int number, double factory) {
     double value = p.get(number);
     return value > 0.0 ? value : factory;
 }
@@ -31,28 +30,28 @@ std::size_t at(int axis) { return static_cast<std::size_t>(axis); }
 
 } // namespace
 
-double jogSpeed(const config::ParameterTable& p, int axis, bool high) {
+double jogSpeed(const params::ParameterTable& p, int axis, bool high) {
     return high ? orDefault(p, param::kManualHighSpeedX + axis, kHighSpeed[at(axis)])
                 : orDefault(p, param::kManualLowSpeedX + axis, kLowSpeed[at(axis)]);
 }
 
-double maxManualSpeed(const config::ParameterTable& p, int axis) {
+double maxManualSpeed(const params::ParameterTable& p, int axis) {
     return orDefault(p, param::kManualMaxSpeedX + axis, kMaxSpeed[at(axis)]);
 }
 
-double startAcceleration(const config::ParameterTable& p, int axis) {
+double startAcceleration(const params::ParameterTable& p, int axis) {
     return orDefault(p, param::kManualStartAccelerationX + axis, kAcceleration[at(axis)]);
 }
 
-double stopAcceleration(const config::ParameterTable& p, int axis) {
+double stopAcceleration(const params::ParameterTable& p, int axis) {
     return orDefault(p, param::kManualStopAccelerationX + axis, kAcceleration[at(axis)]);
 }
 
-double mpgDistance(const config::ParameterTable& p) { return orDefault(p, param::kMpgDistance, kMpgDistance); }
+double mpgDistance(const params::ParameterTable& p) { return orDefault(p, param::kMpgDistance, kMpgDistance); }
 
-bool mpgReversed(const config::ParameterTable& p) { return p.get(param::kMpgReversed) != 0.0; }
+bool mpgReversed(const params::ParameterTable& p) { return p.get(param::kMpgReversed) != 0.0; }
 
-double mpgSpeed(const config::ParameterTable& p, int multiplier) {
+double mpgSpeed(const params::ParameterTable& p, int multiplier) {
     switch (multiplier) {
     case 1: return orDefault(p, param::kMpgSpeedX1, kMpgSpeed[0]);
     case 10: return orDefault(p, param::kMpgSpeedX1 + 1, kMpgSpeed[1]);
@@ -61,19 +60,19 @@ double mpgSpeed(const config::ParameterTable& p, int multiplier) {
     }
 }
 
-double mpgAcceleration(const config::ParameterTable& p, int axis) {
+double mpgAcceleration(const params::ParameterTable& p, int axis) {
     return orDefault(p, param::kMpgAccelerationX + axis, kMpgAcceleration);
 }
 
-double guideChangeStep(const config::ParameterTable& p) {
+double guideChangeStep(const params::ParameterTable& p) {
     return orDefault(p, param::kGuideChangeStep, kGuideChangeStep);
 }
 
-double guideStopStep(const config::ParameterTable& p) { return orDefault(p, param::kGuideStopStep, kGuideStopStep); }
+double guideStopStep(const params::ParameterTable& p) { return orDefault(p, param::kGuideStopStep, kGuideStopStep); }
 
-bool softLimitsOn(const config::ParameterTable& p) { return p.get(param::kSoftLimitsEnabled) != 0.0; }
+bool softLimitsOn(const params::ParameterTable& p) { return p.get(param::kSoftLimitsEnabled) != 0.0; }
 
-Travel softLimits(const config::ParameterTable& p, int axis) {
+Travel softLimits(const params::ParameterTable& p, int axis) {
     return {p.get(param::kSoftLimitNegativeX + axis), p.get(param::kSoftLimitPositiveX + axis)};
 }
 

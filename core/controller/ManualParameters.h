@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/config/ParameterTable.h"
+#include "core/params/ParameterTable.h"
 
 namespace m350::controller::manual {
 
@@ -9,26 +9,26 @@ namespace m350::controller::manual {
 // other speeds fall back when a folder does not set them. Speeds in mm/min (deg/min), accelerations
 // in mm/s^2; axis 0..4 = X Y Z 4th 5th.
 
-double jogSpeed(const config::ParameterTable& p, int axis, bool high); // 手动高速 / 手动低速
-double maxManualSpeed(const config::ParameterTable& p, int axis);      // 手动最大速度
-double startAcceleration(const config::ParameterTable& p, int axis);   // 手动启动加速度
-double stopAcceleration(const config::ParameterTable& p, int axis);    // 手动停止加速度
+double jogSpeed(const params::ParameterTable& p, int axis, bool high); // 手动高速 / 手动低速
+double maxManualSpeed(const params::ParameterTable& p, int axis);      // 手动最大速度
+double startAcceleration(const params::ParameterTable& p, int axis);   // 手动启动加速度
+double stopAcceleration(const params::ParameterTable& p, int axis);    // 手动停止加速度
 
-double mpgDistance(const config::ParameterTable& p);                   // mm per detent at x1 (172)
-bool mpgReversed(const config::ParameterTable& p);                     // 175
+double mpgDistance(const params::ParameterTable& p);                   // mm per detent at x1 (172)
+bool mpgReversed(const params::ParameterTable& p);                     // 175
 // The wheel's speed at x1, x10 or x100 (176-178); 0 for any other multiplier.
-double mpgSpeed(const config::ParameterTable& p, int multiplier);
-double mpgAcceleration(const config::ParameterTable& p, int axis);     // 181-185
+double mpgSpeed(const params::ParameterTable& p, int multiplier);
+double mpgAcceleration(const params::ParameterTable& p, int axis);     // 181-185
 
-double guideChangeStep(const config::ParameterTable& p);               // 180, a fraction
-double guideStopStep(const config::ParameterTable& p);                 // 179, a fraction
+double guideChangeStep(const params::ParameterTable& p);               // 180, a fraction
+double guideStopStep(const params::ParameterTable& p);                 // 179, a fraction
 
 // Soft limits (155, 161-170): the travel of `axis` when they are on.
 struct Travel {
     double low;
     double high;
 };
-bool softLimitsOn(const config::ParameterTable& p);
-Travel softLimits(const config::ParameterTable& p, int axis);
+bool softLimitsOn(const params::ParameterTable& p);
+Travel softLimits(const params::ParameterTable& p, int axis);
 
 } // namespace m350::controller::manual

@@ -2,7 +2,7 @@
 // 分中), variables and the spindle's tool number.
 #include "core/controller/Controller.h"
 
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <cmath>
 
@@ -19,7 +19,7 @@ bool Controller::setSpindleToolNumber(int tool) {
         return false;
     }
     if (config_.dialect->id == gcode::DialectId::M350) {
-        config_.parameters.set(config::param::kCurrentTool, tool);
+        config_.parameters.set(param::kCurrentTool, tool);
     } else {
         fanucSpindleTool_ = tool;
     }

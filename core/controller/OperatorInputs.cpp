@@ -4,8 +4,8 @@
 // (at power-on, or after its parameters change) acts at its next press.
 #include "core/controller/Controller.h"
 
-#include "core/config/IoPorts.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/IoPorts.h"
+#include "core/params/ParameterNumbers.h"
 
 namespace m350::controller {
 
@@ -30,7 +30,7 @@ constexpr std::array<OperatorInput, 9> kOperatorInputs{{
     {kExternKey1Input + 9, Kind::ExternKey, 4},
     {kExternKey1Input + 12, Kind::ExternKey, 5},
     {kExternKey1Input + 15, Kind::ExternKey, 6},
-    {config::param::kExternStartInput, Kind::Start, 0},
+    {param::kExternStartInput, Kind::Start, 0},
     {kExternPauseInput, Kind::Pause, 0},
     {kExternEStopInput, std::nullopt, 0},
 }};
@@ -40,7 +40,7 @@ constexpr std::array<OperatorInput, 9> kOperatorInputs{{
 void Controller::watchOperatorInputs() {
     for (std::size_t i = 0; i < kOperatorInputs.size(); ++i) {
         const OperatorInput& input = kOperatorInputs[i];
-        auto wired = config::wiredInput(config_.parameters, input.parameter);
+        auto wired = params::wiredInput(config_.parameters, input.parameter);
         const bool active = wired && machine_.input(wired->pin) == wired->activeLevel;
         // a key just wired (or its level changed) is read as it stands: that is no press
         const int wiring = wired ? wired->pin * 2 + wired->activeLevel : -1;
@@ -49,7 +49,7 @@ void Controller::watchOperatorInputs() {
         operatorInputWiring_[i] = wiring;
         if (!input.kind) {
             if (active && state_ != RunState::EStop) {
-                emergencyStop("外部急停 extern E-stop (" + config::inputName(wired->pin) + ")");
+                emergencyStop("外部急停 extern E-stop (" + params::inputName(wired->pin) + ")");
             }
             continue;
         }

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/common/Alarm.h"
-#include "core/config/ParameterTable.h"
+#include "core/params/ParameterTable.h"
 #include "core/controller/ManualModes.h"
 #include "core/machine/MachineTypes.h"
 
@@ -67,7 +67,7 @@ struct PanelStatus {
 
     std::array<int, machine::kInputCount> inputs{};   // IN01-IN24 as the macros read them
     std::array<int, machine::kOutputCount> outputs{}; // OUT01-OUT21
-    config::ParameterTable parameters; // as they stand now (tool Z offsets 930-945, setter 129-137, IO triples)
+    params::ParameterTable parameters; // as they stand now (tool Z offsets 930-945, setter 129-137, IO triples)
 };
 
 } // namespace m350::controller

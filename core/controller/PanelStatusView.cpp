@@ -2,7 +2,7 @@
 #include "core/controller/Controller.h"
 
 #include "core/common/Numeric.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,6 @@
 
 namespace m350::controller {
 
-namespace param = config::param;
 
 namespace {
 

@@ -1,17 +1,17 @@
 // Parameters as the panel reads and writes them (teach buttons, the IO page's polarity).
 #include "core/controller/Controller.h"
-#include "core/config/ParameterLimits.h"
+#include "core/params/ParameterLimits.h"
 
 #include <cmath>
 
 namespace m350::controller {
 
 double Controller::parameter(int n) const {
-    return config::ParameterTable::valid(n) ? config_.parameters.get(n) : 0.0;
+    return params::ParameterTable::valid(n) ? config_.parameters.get(n) : 0.0;
 }
 
 bool Controller::setParameter(int n, double value) {
-    if (!config::ParameterTable::valid(n) || !std::isfinite(value) || config::refusedParameterValue(n, value)) {
+    if (!params::ParameterTable::valid(n) || !std::isfinite(value) || params::refusedParameterValue(n, value)) {
         return false;
     }
     config_.parameters.set(n, value);

@@ -1,7 +1,7 @@
 // The operator's run controls: 暂停 hold and resume, reset, 急停 emergency stop.
 #include "core/controller/Controller.h"
 
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 #include "core/machine/ArcGeometry.h"
 
 #include <algorithm>
@@ -10,7 +10,6 @@
 
 namespace m350::controller {
 
-namespace param = config::param;
 
 void Controller::hold() {
     if (state_ != RunState::Running) {
@@ -29,7 +28,7 @@ void Controller::hold() {
     remainder_ = interruptMotion(displayTime_, false);
     toolLife_.cutShortAt(machine_.time());
     rememberPause(remainder_);
-    const config::ParameterTable& p = config_.parameters;
+    const params::ParameterTable& p = config_.parameters;
     if (p.get(param::kStopSpindleOnPause) != 0.0 && machine_.spindleState() != machine::SpindleState::Stop) {
         spindleBeforeHold_ = std::make_pair(machine_.spindleState(), machine_.spindleRpm());
         machine_.spindle(machine::SpindleState::Stop, 0.0);

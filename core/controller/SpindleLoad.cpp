@@ -1,7 +1,7 @@
 // Tool breakage in the simulated world and the spindle load monitor (the FANUC article's second
 // method): the load is sampled as virtual time passes and an anomaly stops the run like any alarm.
 #include "core/controller/Controller.h"
-#include "core/config/FanucParameters.h"
+#include "core/params/FanucParameters.h"
 
 namespace m350::controller {
 
@@ -16,7 +16,7 @@ void Controller::setUpBreakageWatch() {
     }
     loadWatch_.monitor().setSettings(std::move(monitor));
     if (config_.spindleLoad) {
-        config_.spindleLoad->lambda = config::fanucParameter(config_.fanucParameters, config::kLoadMeterFullScale);
+        config_.spindleLoad->lambda = params::fanucParameter(config_.fanucParameters, params::kLoadMeterFullScale);
     }
     loadWatch_.setModel(config_.spindleLoad);
     if (config_.spindleLoad || !world_.breaks().empty()) {

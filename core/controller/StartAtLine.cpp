@@ -2,14 +2,13 @@
 // hold stopped, with the machine's state rebuilt by scanning the blocks before it (ScanMachine).
 #include "core/controller/Controller.h"
 
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <algorithm>
 #include <limits>
 
 namespace m350::controller {
 
-namespace param = config::param;
 
 namespace {
 
@@ -122,7 +121,7 @@ bool Controller::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopP
     const interp::ModalState modal = interp_.state();
     const interp::WorkOffsets offsets = offsets_;
     const tools::ToolTable tools = tools_.table();
-    const config::ParameterTable parameters = config_.parameters;
+    const params::ParameterTable parameters = config_.parameters;
 
     alarm_.reset();
     pendingDialog_.reset();

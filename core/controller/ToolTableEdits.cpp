@@ -1,9 +1,9 @@
 // The tool table as the panel edits it: rows, an import, touch off, and saving to tool.tbl.
 #include "core/controller/Controller.h"
 
-#include "core/config/LastGoodCopy.h"
-#include "core/config/ParameterNumbers.h"
-#include "core/config/ParamsFileWriter.h"
+#include "core/files/LastGoodCopy.h"
+#include "core/params/ParameterNumbers.h"
+#include "core/params/ParamsFileWriter.h"
 #include "core/tools/ToolTableFile.h"
 
 #include <cmath>
@@ -95,25 +95,25 @@ bool Controller::touchOffTool(double workZ, std::string* why) {
     return true;
 }
 
-std::optional<std::string> Controller::saveToolTable(const config::AtomicWriteHooks& hooks) {
+std::optional<std::string> Controller::saveToolTable(const files::AtomicWriteHooks& hooks) {
     if (config_.folder.empty()) {
         return "this machine has no folder to keep its tool table in";
     }
     const std::filesystem::path folder(config_.folder);
-    if (auto error = config::saveKeepingLastGood(folder / tools::kToolTableFileName, tools::formatToolTable(tools_.table()),
+    if (auto error = files::saveKeepingLastGood(folder / tools::kToolTableFileName, tools::formatToolTable(tools_.table()),
                                                  hooks)) {
         return error;
     }
     if (config_.dialect->id == gcode::DialectId::M350) {
         std::map<int, double> zParameters;
-        for (int i = 0; i < config::param::kToolZOffsetCount; ++i) {
-            zParameters[config::param::kToolZOffsetFirst + i] = config_.parameters.get(config::param::kToolZOffsetFirst + i);
+        for (int i = 0; i < param::kToolZOffsetCount; ++i) {
+            zParameters[param::kToolZOffsetFirst + i] = config_.parameters.get(param::kToolZOffsetFirst + i);
         }
-        for (int i = 0; i < config::param::kVirtualToolZOffsetCount; ++i) {
-            const int number = config::param::kVirtualToolZOffsetFirst + i;
+        for (int i = 0; i < param::kVirtualToolZOffsetCount; ++i) {
+            const int number = param::kVirtualToolZOffsetFirst + i;
             zParameters[number] = config_.parameters.get(number);
         }
-        if (auto error = config::saveParameters(folder, zParameters, false)) {
+        if (auto error = params::saveParameters(folder, zParameters, false)) {
             return error;
         }
     }

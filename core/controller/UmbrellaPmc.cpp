@@ -8,7 +8,7 @@
 //   M85 store the commanded tool as the spindle's tool (what #1000 and #1001 compare with)
 #include "core/controller/MagazineDriver.h"
 
-#include "core/config/IoPorts.h"
+#include "core/params/IoPorts.h"
 #include "core/devices/UmbrellaCarousel.h"
 #include "core/interp/ModalInterpreter.h"
 #include "core/machine/SimulatedMachine.h"

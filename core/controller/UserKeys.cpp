@@ -3,7 +3,7 @@
 #include "core/controller/Controller.h"
 
 #include "core/common/Numeric.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 namespace m350::controller {
 
@@ -53,7 +53,7 @@ Controller::KeyPress Controller::pressUserKey(int key) {
     if (!hook) {
         return {KeyPress::Kind::Refused, 0, "K" + std::to_string(key) + ": the panel has K1-K7"};
     }
-    return pressKey(config::param::kUserKeyFunction + key - 1, *hook, "K" + std::to_string(key));
+    return pressKey(param::kUserKeyFunction + key - 1, *hook, "K" + std::to_string(key));
 }
 
 Controller::KeyPress Controller::pressExternKey(int key) {
@@ -61,7 +61,7 @@ Controller::KeyPress Controller::pressExternKey(int key) {
     if (!hook) {
         return {KeyPress::Kind::Refused, 0, "external key " + std::to_string(key) + ": there are keys 1-6"};
     }
-    return pressKey(config::param::kExternKeyFunction + key - 1, *hook, "external key " + std::to_string(key));
+    return pressKey(param::kExternKeyFunction + key - 1, *hook, "external key " + std::to_string(key));
 }
 
 bool Controller::loadFunctionKey(int key) {

@@ -5,7 +5,7 @@
 // block R is the R level and P the dwell, never an arc radius or a program number.
 #include "core/interp/ModalInterpreter.h"
 
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <array>
 #include <cmath>
@@ -14,7 +14,6 @@ namespace m350::interp {
 
 using macro::MacroError;
 using macro::WordValue;
-namespace param = config::param;
 
 namespace {
 

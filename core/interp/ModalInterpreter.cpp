@@ -1,7 +1,7 @@
 #include "core/interp/ModalInterpreter.h"
 #include "core/common/Numeric.h"
 
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <algorithm>
 #include <bit>
@@ -12,7 +12,6 @@ namespace m350::interp {
 using macro::BlockOutcome;
 using macro::MacroError;
 using macro::WordValue;
-namespace param = config::param;
 
 
 namespace {
@@ -54,7 +53,7 @@ int groupOf(int code) {
 
 } // namespace
 
-ModalInterpreter::ModalInterpreter(const gcode::Dialect& dialect, config::ParameterTable& parameters,
+ModalInterpreter::ModalInterpreter(const gcode::Dialect& dialect, params::ParameterTable& parameters,
                                    WorkOffsets& offsets, tools::ToolData& tools,
                                    machine::MachineInterface& machine)
     : dialect_(dialect), parameters_(parameters), offsets_(offsets), tools_(tools), machine_(machine) {

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/config/ParameterNumbers.h"
-#include "core/config/ParameterTable.h"
+#include "core/params/ParameterNumbers.h"
+#include "core/params/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/interp/CutterCompensation.h"
 #include "core/interp/DrillingCycle.h"
@@ -37,7 +37,7 @@ namespace m350::interp {
 //      length and then changes the table, as LinuxCNC orders it (a second G43 applies the new one)
 class ModalInterpreter : public macro::BlockSink {
 public:
-    ModalInterpreter(const gcode::Dialect& dialect, config::ParameterTable& parameters, WorkOffsets& offsets,
+    ModalInterpreter(const gcode::Dialect& dialect, params::ParameterTable& parameters, WorkOffsets& offsets,
                      tools::ToolData& tools, machine::MachineInterface& machine);
 
     // G30 P2/P3 (and G28 on FANUC, point 1) go to these machine positions; G28 on the M350 goes to
@@ -190,7 +190,7 @@ private:
     void moveTo(const machine::Axes& target, const Words& words);
     // Asked before every move: the limits are looked at only when param 155 switches them on.
     void checkSoftLimits(const machine::Axes& target, const Words& words) const {
-        if (parameters_.get(config::param::kSoftLimitsEnabled) != 0.0) {
+        if (parameters_.get(param::kSoftLimitsEnabled) != 0.0) {
             checkAgainstSoftLimits(target, words);
         }
     }
@@ -265,7 +265,7 @@ private:
     machine::Axes computeWorkOffset() const;
 
     const gcode::Dialect& dialect_;
-    config::ParameterTable& parameters_;
+    params::ParameterTable& parameters_;
     WorkOffsets& offsets_;
     tools::ToolData& tools_;
     machine::MachineInterface& machine_;

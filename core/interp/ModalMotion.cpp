@@ -4,8 +4,8 @@
 #include "core/interp/ModalInterpreter.h"
 
 #include "core/common/Numeric.h"
-#include "core/config/IoPorts.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/IoPorts.h"
+#include "core/params/ParameterNumbers.h"
 #include "core/machine/ArcGeometry.h"
 
 #include <algorithm>
@@ -16,7 +16,6 @@ namespace m350::interp {
 
 using macro::MacroError;
 using macro::WordValue;
-namespace param = config::param;
 
 namespace {
 
@@ -228,7 +227,7 @@ void ModalInterpreter::probeMove(const Words& words) {
         port = p ? roundToInt(p->value) : 0;
         const WordValue* l = words.find('L');
         level = l ? (l->value != 0.0 ? 1 : 0) : 1;
-    } else if (auto setter = config::wiredInput(parameters_, param::kFixedSetterInput)) {
+    } else if (auto setter = params::wiredInput(parameters_, param::kFixedSetterInput)) {
         port = setter->pin;
         level = setter->activeLevel;
     }

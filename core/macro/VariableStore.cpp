@@ -2,7 +2,7 @@
 
 namespace m350::macro {
 
-VariableStore::VariableStore(const gcode::Dialect& dialect, config::ParameterTable& parameters)
+VariableStore::VariableStore(const gcode::Dialect& dialect, params::ParameterTable& parameters)
     : dialect_(dialect), parameters_(parameters), map_(dialect),
       globals_(VariableMap::kMaxVariable + 1, dialect.hasVacant ? Value::empty() : Value::of(0)) {
     pushLocals();

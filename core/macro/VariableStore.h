@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/config/ParameterTable.h"
+#include "core/params/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/macro/Value.h"
 #include "core/macro/VariableMap.h"
@@ -13,11 +13,11 @@ namespace m350::macro {
 // plain system values, and the parameter table seen as #(N+500) on the M350.
 class VariableStore {
 public:
-    VariableStore(const gcode::Dialect& dialect, config::ParameterTable& parameters);
+    VariableStore(const gcode::Dialect& dialect, params::ParameterTable& parameters);
 
     const VariableMap& map() const { return map_; }
     const gcode::Dialect& dialect() const { return dialect_; }
-    config::ParameterTable& parameters() { return parameters_; }
+    params::ParameterTable& parameters() { return parameters_; }
 
     void pushLocals();
     void popLocals();
@@ -36,7 +36,7 @@ private:
     const Value& localSlot(int number) const;
 
     const gcode::Dialect& dialect_;
-    config::ParameterTable& parameters_;
+    params::ParameterTable& parameters_;
     VariableMap map_;
     std::vector<Value> locals_; // localCount values per level, innermost last
     std::vector<Value> globals_;

@@ -1,6 +1,6 @@
 #include "core/tools/SpindleLoadLimits.h"
 
-#include "core/config/Toml.h"
+#include "core/files/Toml.h"
 
 #include <charconv>
 #include <cmath>
@@ -30,7 +30,7 @@ std::optional<LoadSettingsError> readLoadMonitorSettings(const std::string& path
     }
     toml::table t;
     try {
-        t = config::parseTomlFile(path);
+        t = files::parseTomlFile(path);
     } catch (const toml::parse_error& e) {
         return LoadSettingsError{static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column),
                                  std::string(e.description())};

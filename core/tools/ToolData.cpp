@@ -1,16 +1,15 @@
 #include "core/tools/ToolData.h"
 
 #include "core/common/Numeric.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace m350::tools {
 
-namespace param = config::param;
 
-std::optional<int> m350ZParameter(int tool, const config::ParameterTable& parameters) {
+std::optional<int> m350ZParameter(int tool, const params::ParameterTable& parameters) {
     const int capacity = saturatingInt(parameters.get(param::kMagazineCapacity));
     if (tool >= 1 && tool <= capacity && tool <= param::kToolZOffsetCount) {
         return param::kToolZOffsetFirst + tool - 1;
@@ -24,7 +23,7 @@ std::optional<int> m350ZParameter(int tool, const config::ParameterTable& parame
 
 double roundedOffset(double value) { return std::round(value * 1e6) / 1e6; }
 
-ToolData::ToolData(const gcode::Dialect& dialect, config::ParameterTable& parameters, std::optional<ToolTable> loaded)
+ToolData::ToolData(const gcode::Dialect& dialect, params::ParameterTable& parameters, std::optional<ToolTable> loaded)
     : dialect_(&dialect), parameters_(&parameters) {
     if (loaded) {
         rows_ = std::move(*loaded);

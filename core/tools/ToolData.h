@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/config/ParameterTable.h"
+#include "core/params/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/tools/ToolTable.h"
 
@@ -14,7 +14,7 @@ namespace m350::tools {
 // The M350 keeps each tool's Z offset (the machine Z where it touched the setter) in a parameter:
 // T1..T16 in 930-945 (#1430-#1445), the virtual tools above the magazine's capacity (param 801) in
 // 973-992. The parameter of `tool`, or nullopt when the M350 has none for it.
-std::optional<int> m350ZParameter(int tool, const config::ParameterTable& parameters);
+std::optional<int> m350ZParameter(int tool, const params::ParameterTable& parameters);
 
 // An offset computed from a position (touch off, G10 L10/L11), kept to 1e-6 of its unit as
 // LinuxCNC writes tool.tbl (%f), so that 0 - (-12.5) - 2 is 10.5 and not 10.499999999999998.
@@ -38,7 +38,7 @@ public:
 
     // `loaded`: the folder's tool.tbl, whose Z values then replace the M350's parameters; without
     // one, an M350 starts from its parameters (rows T1..T16, pocket = tool).
-    ToolData(const gcode::Dialect& dialect, config::ParameterTable& parameters, std::optional<ToolTable> loaded);
+    ToolData(const gcode::Dialect& dialect, params::ParameterTable& parameters, std::optional<ToolTable> loaded);
 
     ToolTable table() const;
     std::optional<ToolEntry> find(int tool) const;
@@ -72,7 +72,7 @@ private:
     std::vector<int> toolsWithZParameters() const;
 
     const gcode::Dialect* dialect_;
-    config::ParameterTable* parameters_;
+    params::ParameterTable* parameters_;
     ToolTable rows_; // M350: the Z of a tool with a Z parameter is not read from here
     std::uint64_t revision_ = 0;
 };

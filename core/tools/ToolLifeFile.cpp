@@ -1,6 +1,6 @@
 #include "core/tools/ToolLifeFile.h"
 
-#include "core/config/LastGoodCopy.h"
+#include "core/files/LastGoodCopy.h"
 
 #include <charconv>
 #include <filesystem>
@@ -254,8 +254,8 @@ std::string formatToolLife(const LifeData& data) {
 }
 
 std::optional<std::string> saveToolLife(const std::string& folder, const LifeData& data,
-                                        const config::AtomicWriteHooks& hooks) {
-    return config::saveKeepingLastGood(std::filesystem::path(folder) / kToolLifeFile, formatToolLife(data), hooks);
+                                        const files::AtomicWriteHooks& hooks) {
+    return files::saveKeepingLastGood(std::filesystem::path(folder) / kToolLifeFile, formatToolLife(data), hooks);
 }
 
 } // namespace m350::tools

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/config/AtomicFile.h"
+#include "core/files/AtomicFile.h"
 #include "core/tools/ToolLifeData.h"
 
 #include <cstdint>
@@ -47,6 +47,6 @@ std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder
 std::string formatToolLife(const LifeData& data);
 // Written atomically (temp file, sync, rename); the reason when it cannot be.
 std::optional<std::string> saveToolLife(const std::string& folder, const LifeData& data,
-                                        const config::AtomicWriteHooks& hooks = {});
+                                        const files::AtomicWriteHooks& hooks = {});
 
 } // namespace m350::tools

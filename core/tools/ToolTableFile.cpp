@@ -246,8 +246,8 @@ std::variant<ParsedToolTable, std::string> readToolTableFile(const std::filesyst
 }
 
 std::optional<std::string> writeToolTableFile(const std::filesystem::path& path, const ToolTable& table,
-                                              const config::AtomicWriteHooks& hooks) {
-    return config::writeFileAtomically(path, formatToolTable(table), hooks);
+                                              const files::AtomicWriteHooks& hooks) {
+    return files::writeFileAtomically(path, formatToolTable(table), hooks);
 }
 
 } // namespace m350::tools

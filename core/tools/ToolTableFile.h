@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/config/AtomicFile.h"
+#include "core/files/AtomicFile.h"
 #include "core/tools/ToolTable.h"
 
 #include <filesystem>
@@ -49,9 +49,9 @@ std::string formatToolTable(const ToolTable& table);
 
 // Reads and parses a file; the error (naming the file) when it cannot be read.
 std::variant<ParsedToolTable, std::string> readToolTableFile(const std::filesystem::path& path);
-// Writes the table atomically (config::writeFileAtomically). nullopt on success, else why.
+// Writes the table atomically (files::writeFileAtomically). nullopt on success, else why.
 std::optional<std::string> writeToolTableFile(const std::filesystem::path& path, const ToolTable& table,
-                                              const config::AtomicWriteHooks& hooks = {});
+                                              const files::AtomicWriteHooks& hooks = {});
 
 inline constexpr const char* kToolTableFileName = "tool.tbl";
 

@@ -1,6 +1,6 @@
 #include "core/tools/ToolTableText.h"
 
-#include "core/config/ParamsFileWriter.h"
+#include "core/params/ParamsFileWriter.h"
 
 #include <charconv>
 #include <cmath>
@@ -123,7 +123,7 @@ std::optional<int> parseWholeNumber(std::string_view text) {
     return static_cast<int>(*v);
 }
 
-std::string tableNumber(double value) { return config::tomlNumber(value); }
+std::string tableNumber(double value) { return params::tomlNumber(value); }
 
 CommentParts splitComment(std::string_view comment, int firstColumn) {
     CommentParts parts;

@@ -1,5 +1,5 @@
 // The Param page's search by number (请输入搜索的参数编号:): from a number to its tab, group and row.
-#include "core/config/ParameterPages.h"
+#include "core/params/ParameterPages.h"
 
 #include <benchmark/benchmark.h>
 
@@ -7,8 +7,8 @@
 
 namespace {
 
-using m350::config::ParameterCatalogue;
-using m350::config::ParameterPages;
+using m350::params::ParameterCatalogue;
+using m350::params::ParameterPages;
 
 const ParameterCatalogue& catalogue() {
     static const ParameterCatalogue loaded =

@@ -19,9 +19,9 @@ std::filesystem::path copyOfFanuc0i(const QTemporaryDir& dir) {
     return folder;
 }
 
-std::vector<config::LogEntry> logged(PanelHarness& panel, const std::string& event) {
-    std::vector<config::LogEntry> out;
-    for (const config::LogEntry& entry : *panel.session().latest()->log) {
+std::vector<files::LogEntry> logged(PanelHarness& panel, const std::string& event) {
+    std::vector<files::LogEntry> out;
+    for (const files::LogEntry& entry : *panel.session().latest()->log) {
         if (entry.event == event) {
             out.push_back(entry);
         }
@@ -44,7 +44,7 @@ TEST(ExternalOutput, DprntRecordsGoToTheSystemLogAndDprntTxt) {
     PanelHarness panel(QString::fromStdString(folder.string()));
     runOnPanel(panel, "report.nc", "#100=12.5\nPOPEN\nDPRNT[LENGTH*#100[33]]\nDPRNT[DONE]\nPCLOS\nM30\n", 2.0);
     std::vector<std::string> records;
-    for (const config::LogEntry& entry : logged(panel, "dprnt")) {
+    for (const files::LogEntry& entry : logged(panel, "dprnt")) {
         records.push_back(entry.detail);
     }
     ASSERT_EQ(records.size(), 2u);
@@ -86,14 +86,14 @@ TEST(ExternalOutput, PastTheLimitEveryRecordIsStillLoggedAndTheLogSaysSo) {
                                  "PCLOS\nM30\n", 2.0);
     ASSERT_FALSE(panel.session().latest()->status.alarm.has_value())
         << panel.session().latest()->status.alarm->message;
-    const std::vector<config::LogEntry> records = logged(panel, "dprnt");
+    const std::vector<files::LogEntry> records = logged(panel, "dprnt");
     ASSERT_EQ(records.size(), 300u);
     for (std::size_t i = 0; i < records.size(); ++i) {
         const std::string& text = records[i].detail;
         ASSERT_EQ(text.rfind("RECORD ", 0), 0u) << text;
         EXPECT_EQ(std::stoi(text.substr(7)), static_cast<int>(i + 1)) << text;
     }
-    const std::vector<config::LogEntry> limit = logged(panel, "dprnt_limit");
+    const std::vector<files::LogEntry> limit = logged(panel, "dprnt_limit");
     ASSERT_EQ(limit.size(), 1u);
     EXPECT_EQ(limit[0].detail, "1000 B");
     EXPECT_TRUE(logged(panel, "dprnt_missed").empty());

@@ -42,7 +42,7 @@ void pressOnIoPage(PanelHarness& panel, int parameter) {
 }
 
 bool logged(PanelHarness& panel, const std::string& detail) {
-    for (const config::LogEntry& entry : *panel.session().latest()->log) {
+    for (const files::LogEntry& entry : *panel.session().latest()->log) {
         if (entry.detail.find(detail) != std::string::npos) {
             return true;
         }

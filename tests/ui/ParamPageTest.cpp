@@ -17,7 +17,7 @@ namespace m350::test {
 
 namespace {
 
-using config::UserLevel;
+using params::UserLevel;
 
 QString readFile(const QString& path) {
     QFile file(path);

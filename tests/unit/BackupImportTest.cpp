@@ -1,7 +1,7 @@
 // Importing a controller backup (core/config/BackupImport): the machine folder loads with the
 // backup's exact parameters and offsets, keeps its files' bytes, is the same twice, and a damaged
 // backup or a folder holding something else is refused with nothing written.
-#include "core/config/BackupImport.h"
+#include "core/backup/BackupImport.h"
 #include "core/config/MachineConfig.h"
 #include "tests/support/ControllerBackupWriter.h"
 
@@ -31,22 +31,22 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    std::variant<BackupImport, ImportError> import(const std::string& into = "machine") {
+    std::variant<backup::BackupImport, backup::ImportError> import(const std::string& into = "machine") {
         backup_.writeTo(dir_ / "SYSDISK");
-        return importControllerBackup(dir_ / "SYSDISK", dir_ / into);
+        return backup::importControllerBackup(dir_ / "SYSDISK", dir_ / into);
     }
-    BackupImport imported(const std::string& into = "machine") {
+    backup::BackupImport imported(const std::string& into = "machine") {
         auto result = import(into);
-        if (auto* error = std::get_if<ImportError>(&result)) {
+        if (auto* error = std::get_if<backup::ImportError>(&result)) {
             ADD_FAILURE() << error->file << ": " << error->message;
             return {};
         }
-        return std::get<BackupImport>(result);
+        return std::get<backup::BackupImport>(result);
     }
-    ImportError refused(const std::string& into = "machine") {
+    backup::ImportError refused(const std::string& into = "machine") {
         auto result = import(into);
-        EXPECT_TRUE(std::holds_alternative<ImportError>(result));
-        return std::holds_alternative<ImportError>(result) ? std::get<ImportError>(result) : ImportError{};
+        EXPECT_TRUE(std::holds_alternative<backup::ImportError>(result));
+        return std::holds_alternative<backup::ImportError>(result) ? std::get<backup::ImportError>(result) : backup::ImportError{};
     }
     MachineConfig load(const std::string& folder = "machine") {
         auto loaded = loadMachineFolder((dir_ / folder).string());
@@ -77,7 +77,7 @@ TEST_F(BackupImportTest, EveryParameterAndOffsetLoadsExactlyAsTheBinaryFilesHold
     backup_.coordinate[8] = 1e-7;
     imported();
     MachineConfig machine = load();
-    for (int n = 0; n < ParameterTable::kCount; ++n) {
+    for (int n = 0; n < params::ParameterTable::kCount; ++n) {
         EXPECT_EQ(machine.parameters.get(n), backup_.setting[static_cast<std::size_t>(n)]) << "parameter " << n;
     }
     for (std::size_t i = 0; i < 45; ++i) {
@@ -92,14 +92,14 @@ TEST_F(BackupImportTest, EveryParameterAndOffsetLoadsExactlyAsTheBinaryFilesHold
 
 TEST_F(BackupImportTest, SlibuserNcLoadsBesideSlibGOnceAndTheHookFilesAreListed) {
     backup_.files["slibuser.nc"] = "O9199(G199)\nG90 G01 X#0 Y#1 F1000\nM99\n";
-    BackupImport result = imported();
+    backup::BackupImport result = imported();
     EXPECT_EQ(result.libraries, (std::vector<std::string>{"slib-g.nc", "slib-m.nc", "slibuser.nc"}));
     MachineConfig machine = load();
     ASSERT_EQ(machine.libraries.size(), 3u);
     EXPECT_EQ(fs::path(machine.libraries[2].path).filename(), "slibuser.nc");
     EXPECT_EQ(machine.libraries[2].role, gcode::FileRole::GLibrary);
     ASSERT_EQ(result.hooks.size(), 2u); // T.nc and pause.nc; slibuser.nc is a library, cam/cam1.nc no hook
-    EXPECT_THAT(formatImportReport(result), HasSubstr("\n  pause.nc: "));
+    EXPECT_THAT(backup::formatImportReport(result), HasSubstr("\n  pause.nc: "));
 }
 
 TEST_F(BackupImportTest, NamesInAnotherCaseAsAFatStickLeavesThemAreFound) {
@@ -108,13 +108,13 @@ TEST_F(BackupImportTest, NamesInAnotherCaseAsAFatStickLeavesThemAreFound) {
     backup_.writeTo(dir_ / "SYSDISK");
     fs::rename(dir_ / "SYSDISK/setting", dir_ / "SYSDISK/SETTING");
     fs::rename(dir_ / "SYSDISK/coordinate", dir_ / "SYSDISK/COORDINATE");
-    auto result = importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
-    ASSERT_TRUE(std::holds_alternative<BackupImport>(result)) << std::get<ImportError>(result).message;
-    const BackupImport& r = std::get<BackupImport>(result);
+    auto result = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    ASSERT_TRUE(std::holds_alternative<backup::BackupImport>(result)) << std::get<backup::ImportError>(result).message;
+    const backup::BackupImport& r = std::get<backup::BackupImport>(result);
     EXPECT_EQ(r.libraries[0], "SLIB-G.NC");
     EXPECT_TRUE(r.offsets);
     EXPECT_TRUE(std::none_of(r.skipped.begin(), r.skipped.end(),
-                             [](const SkippedFile& f) { return f.name == "SETTING" || f.name == "COORDINATE"; }));
+                             [](const backup::SkippedFile& f) { return f.name == "SETTING" || f.name == "COORDINATE"; }));
     MachineConfig machine = load();
     EXPECT_EQ(machine.parameters.get(129), backup_.setting[129]);
     EXPECT_EQ(machine.offsets[1][0], backup_.coordinate[5]);
@@ -122,7 +122,7 @@ TEST_F(BackupImportTest, NamesInAnotherCaseAsAFatStickLeavesThemAreFound) {
 }
 
 TEST_F(BackupImportTest, ParamsTomlNamesEachParameterAndMarksWhatDiffersFromTheFactory) {
-    BackupImport result = imported();
+    backup::BackupImport result = imported();
     const std::string params = readFile(dir_ / "machine/params.toml");
     EXPECT_THAT(params, HasSubstr("\n129 = 7.25  # 浮动对刀仪厚度 Floating tool set thickness; factory: 10\n"));
     EXPECT_THAT(params, HasSubstr("\n546 = 1  # enable of 545 X轴零点信号"));
@@ -137,15 +137,15 @@ TEST_F(BackupImportTest, ParamsTomlNamesEachParameterAndMarksWhatDiffersFromTheF
 
 TEST_F(BackupImportTest, WithoutDefaultSettingNothingIsComparedAndTheReportSaysSo) {
     backup_.withDefaults = false;
-    BackupImport result = imported();
+    backup::BackupImport result = imported();
     EXPECT_FALSE(result.factoryCompared);
     EXPECT_TRUE(result.changedParameters.empty());
     EXPECT_THAT(readFile(dir_ / "machine/params.toml"), ::testing::Not(HasSubstr("factory:")));
-    EXPECT_THAT(formatImportReport(result), HasSubstr("no default_setting"));
+    EXPECT_THAT(backup::formatImportReport(result), HasSubstr("no default_setting"));
 }
 
 TEST_F(BackupImportTest, TheMdiLinesAndTheNcFilesKeepTheirBytes) {
-    BackupImport result = imported();
+    backup::BackupImport result = imported();
     EXPECT_EQ(readFile(dir_ / "machine/mdiblock"), m350::testing::mdiBlock(backup_.mdiLines));
     ASSERT_EQ(result.mdiLines.size(), 6u);
     EXPECT_EQ(result.mdiLines[0], "G90 G0 X20 Y10");
@@ -162,24 +162,24 @@ TEST_F(BackupImportTest, TheMdiLinesAndTheNcFilesKeepTheirBytes) {
 TEST_F(BackupImportTest, AnMdiBlockOfTheWrongSizeIsReadAsFarAsItGoesAndSaid) {
     backup_.writeTo(dir_ / "SYSDISK");
     std::ofstream(dir_ / "SYSDISK/mdiblock", std::ios::binary) << std::string("G0 X1\0\0\0", 8) + "M3";
-    auto result = importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
-    ASSERT_TRUE(std::holds_alternative<BackupImport>(result));
-    const BackupImport& r = std::get<BackupImport>(result);
+    auto result = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    ASSERT_TRUE(std::holds_alternative<backup::BackupImport>(result));
+    const backup::BackupImport& r = std::get<backup::BackupImport>(result);
     EXPECT_EQ(r.mdiLines[0], "G0 X1");
     EXPECT_EQ(r.mdiLines[1], "");
     EXPECT_EQ(readFile(dir_ / "machine/mdiblock").size(), 720u);
-    EXPECT_THAT(formatImportReport(r), HasSubstr("mdiblock holds 10 bytes, not 720"));
+    EXPECT_THAT(backup::formatImportReport(r), HasSubstr("mdiblock holds 10 bytes, not 720"));
 }
 
 TEST_F(BackupImportTest, TwoImportsOfOneBackupAreTheSameBytesAndTheSecondIntoTheFirstWritesNothing) {
-    BackupImport first = imported("a");
-    BackupImport second = imported("b");
+    backup::BackupImport first = imported("a");
+    backup::BackupImport second = imported("b");
     ASSERT_EQ(first.written, second.written);
     for (const std::string& name : first.written) {
         EXPECT_EQ(readFile(dir_ / "a" / name), readFile(dir_ / "b" / name)) << name;
     }
     const auto before = fs::last_write_time(dir_ / "a/params.toml");
-    BackupImport again = imported("a");
+    backup::BackupImport again = imported("a");
     EXPECT_TRUE(again.unchanged);
     EXPECT_EQ(fs::last_write_time(dir_ / "a/params.toml"), before);
 }
@@ -188,7 +188,7 @@ TEST_F(BackupImportTest, AnImportChangedSinceIsNotOverwritten) {
     imported();
     std::ofstream(dir_ / "machine/params.toml", std::ios::app) << "# my note\n";
     const std::string mine = readFile(dir_ / "machine/params.toml");
-    ImportError error = refused();
+    backup::ImportError error = refused();
     EXPECT_EQ(error.code, "machine_folder_not_empty");
     EXPECT_THAT(error.message, HasSubstr("params.toml differs"));
     EXPECT_EQ(readFile(dir_ / "machine/params.toml"), mine);
@@ -198,7 +198,7 @@ TEST_F(BackupImportTest, AnEmptyFolderIsFilledAndAFolderInsideTheBackupRefused) 
     fs::create_directories(dir_ / "empty");
     imported("empty");
     EXPECT_TRUE(fs::exists(dir_ / "empty/machine.toml"));
-    ImportError inside = refused("SYSDISK/machine");
+    backup::ImportError inside = refused("SYSDISK/machine");
     EXPECT_THAT(inside.message, HasSubstr("inside the backup"));
     EXPECT_FALSE(fs::exists(dir_ / "SYSDISK/machine"));
 }
@@ -215,7 +215,7 @@ TEST_F(BackupImportTest, ADamagedSettingIsRefusedNamingTheFileOffsetAndParameter
                           Case{62, 4.9e-324, "no parameter or offset a controller stores"}}) {
         backup_ = ControllerBackupWriter::smallRouter();
         backup_.setting[static_cast<std::size_t>(c.parameter)] = c.value;
-        ImportError error = refused();
+        backup::ImportError error = refused();
         EXPECT_EQ(error.code, "backup_error");
         EXPECT_EQ(error.file, (dir_ / "SYSDISK/setting").string());
         EXPECT_THAT(error.message, HasSubstr("offset " + std::to_string(c.parameter * 8) + ", parameter " +
@@ -229,14 +229,14 @@ TEST_F(BackupImportTest, ADamagedSettingIsRefusedNamingTheFileOffsetAndParameter
 TEST_F(BackupImportTest, WrongSizesAndAMissingSettingAreRefused) {
     backup_.writeTo(dir_ / "SYSDISK");
     std::ofstream(dir_ / "SYSDISK/coordinate", std::ios::binary | std::ios::app) << "x";
-    auto longer = importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
-    ASSERT_TRUE(std::holds_alternative<ImportError>(longer));
-    EXPECT_THAT(std::get<ImportError>(longer).message,
+    auto longer = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    ASSERT_TRUE(std::holds_alternative<backup::ImportError>(longer));
+    EXPECT_THAT(std::get<backup::ImportError>(longer).message,
                 HasSubstr("holds 361 bytes; a coordinate file holds 45 little-endian float64 (360 bytes)"));
     fs::remove(dir_ / "SYSDISK/setting");
-    auto missing = importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
-    ASSERT_TRUE(std::holds_alternative<ImportError>(missing));
-    EXPECT_THAT(std::get<ImportError>(missing).message, HasSubstr("not found"));
+    auto missing = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    ASSERT_TRUE(std::holds_alternative<backup::ImportError>(missing));
+    EXPECT_THAT(std::get<backup::ImportError>(missing).message, HasSubstr("not found"));
     EXPECT_TRUE(leftBehind().empty());
 }
 
@@ -247,15 +247,15 @@ TEST_F(BackupImportTest, ABigEndianCopyIsRefusedAsDamaged) {
         std::reverse(setting.begin() + static_cast<std::ptrdiff_t>(i), setting.begin() + static_cast<std::ptrdiff_t>(i + 8));
     }
     std::ofstream(dir_ / "SYSDISK/setting", std::ios::binary) << setting;
-    auto result = importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
-    ASSERT_TRUE(std::holds_alternative<ImportError>(result));
-    EXPECT_THAT(std::get<ImportError>(result).message, HasSubstr("the file is damaged"));
+    auto result = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    ASSERT_TRUE(std::holds_alternative<backup::ImportError>(result));
+    EXPECT_THAT(std::get<backup::ImportError>(result).message, HasSubstr("the file is damaged"));
 }
 
 TEST_F(BackupImportTest, TheReportSaysWhatToReviewAndWhatCannotBeModelled) {
-    BackupImport result = imported();
-    const std::string report = readFile(dir_ / "machine" / kImportReportFile);
-    EXPECT_EQ(report, formatImportReport(result));
+    backup::BackupImport result = imported();
+    const std::string report = readFile(dir_ / "machine" / backup::kImportReportFile);
+    EXPECT_EQ(report, backup::formatImportReport(result));
     EXPECT_THAT(report, HasSubstr("magazine type 4 (servo disc, 圆盘刀库) is not modelled"));
     for (const char* key : {"homing.switch_distance", "tool_setter.top", "floating_setter.top", "tools.length",
                             "io_links"}) {
@@ -268,11 +268,11 @@ TEST_F(BackupImportTest, TheReportSaysWhatToReviewAndWhatCannotBeModelled) {
 
 TEST_F(BackupImportTest, SyntaxTheSimulatorDoesNotAcceptIsListedPerFile) {
     backup_.files["key-1.nc"] = "G0 X[1+\n";
-    BackupImport result = imported();
+    backup::BackupImport result = imported();
     ASSERT_EQ(result.diagnostics.size(), 1u);
     EXPECT_EQ(result.diagnostics[0].file, "key-1.nc");
     EXPECT_EQ(result.diagnostics[0].line, 1u);
-    EXPECT_THAT(formatImportReport(result), HasSubstr("key-1.nc:1:"));
+    EXPECT_THAT(backup::formatImportReport(result), HasSubstr("key-1.nc:1:"));
 }
 
 TEST_F(BackupImportTest, ToolLengthsMakeTheStoredZOffsetsTrueOnTheSimulatedSetter) {

@@ -123,10 +123,10 @@ TEST(CannedCycleAlarms, NegativeDwell) {
 
 TEST(CannedCycleAlarms, SoftLimitStopsTheBlockBeforeItsFirstMove) {
     controller::RunSettings settings;
-    settings.parameters[config::param::kSoftLimitsEnabled] = 1;
+    settings.parameters[param::kSoftLimitsEnabled] = 1;
     for (int axis = 0; axis < 5; ++axis) {
-        settings.parameters[config::param::kSoftLimitNegativeX + axis] = axis == 2 ? -5 : -1000;
-        settings.parameters[config::param::kSoftLimitPositiveX + axis] = 1000;
+        settings.parameters[param::kSoftLimitNegativeX + axis] = axis == 2 ? -5 : -1000;
+        settings.parameters[param::kSoftLimitPositiveX + axis] = 1000;
     }
     auto traced =
         runTraced(fanucMachine(), lines({"G00 X0 Y0 Z10", "G98 G81 X5 Z-8 R2 F100", "M30"}), settings);

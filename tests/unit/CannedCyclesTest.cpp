@@ -43,7 +43,7 @@ TEST(CannedCycles, G83LeavesTheHoleToRAfterEachPeckAndComesBackToDAboveTheDepth)
 
 TEST(CannedCycles, Parameter224SetsThePeckClearance) {
     controller::RunSettings settings;
-    settings.parameters[config::param::kDrillingRetraction] = 1.0;
+    settings.parameters[param::kDrillingRetraction] = 1.0;
     Events expected{"rapid X0 Y0 Z10", "rapid X5 Y0 Z10",     "rapid X5 Y0 Z2",      "feed X5 Y0 Z-2 F100",
                     "rapid X5 Y0 Z2",  "rapid X5 Y0 Z-1",     "feed X5 Y0 Z-6 F100", "rapid X5 Y0 Z2",
                     "rapid X5 Y0 Z-5", "feed X5 Y0 Z-7 F100", "rapid X5 Y0 Z10"};
@@ -180,7 +180,7 @@ TEST(CannedCycles, InchesScaleRZAndQ) {
 
 TEST(CannedCycles, TheM350RunsTheCyclesTooWithItsOwnParameter224) {
     auto config = m350Machine();
-    config.parameters.set(config::param::kDrillingRetraction, 0.5);
+    config.parameters.set(param::kDrillingRetraction, 0.5);
     auto traced =
         runTraced(std::move(config), lines({"G90 G00 X0 Y0 Z10", "G99 G73 X5 Z-5 R1 Q3 F100", "G80", "M30"}));
     EXPECT_RUN_OK(traced.run);

@@ -4,7 +4,7 @@
 // alarm, and the next change runs without an alarm; after the last stop a change runs to its end.
 #include "RunProgram.h"
 
-#include "core/config/IoPorts.h"
+#include "core/params/IoPorts.h"
 
 #include <gtest/gtest.h>
 
@@ -119,7 +119,7 @@ class EStopSoak : public ::testing::TestWithParam<Changer> {};
 TEST_P(EStopSoak, EveryToolStaysInOnePlaceOutputsAreSafeAndTheMachineRunsAgain) {
     const std::string& name = GetParam().folder;
     config::MachineConfig cfg = test::bundledMachine(name);
-    const config::ParameterTable parameters = cfg.parameters;
+    const params::ParameterTable parameters = cfg.parameters;
     const gcode::DialectId dialect = cfg.dialect->id;
     Controller c(std::move(cfg), {});
     std::set<int> tools;
@@ -149,7 +149,7 @@ TEST_P(EStopSoak, EveryToolStaysInOnePlaceOutputsAreSafeAndTheMachineRunsAgain) 
         const controller::RunReport r = c.snapshot();
         expectEveryToolInOnePlace(r, tools);
         for (int port = 1; port <= machine::kOutputCount; ++port) {
-            auto function = config::outputOnPin(parameters, port);
+            auto function = params::outputOnPin(parameters, port);
             ASSERT_EQ(r.outputs[static_cast<std::size_t>(port - 1)], function ? 1 - function->activeLevel : 0)
                 << "OUT" << port << " is not in its safe state";
         }

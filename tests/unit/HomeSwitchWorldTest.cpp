@@ -15,9 +15,9 @@ constexpr int kXSwitchPin = 22;
 // X's home switch on IN22, active at 0 (NPN), homing toward -X; the world has it 100 mm away.
 config::MachineConfig machineWithXSwitch() {
     config::MachineConfig cfg = test::m350Machine();
-    cfg.parameters.set(config::param::kHomeSwitchX, kXSwitchPin);
-    cfg.parameters.set(config::param::kHomeSwitchX + 1, 1);
-    cfg.parameters.set(config::param::kHomeSwitchX + 2, 0);
+    cfg.parameters.set(param::kHomeSwitchX, kXSwitchPin);
+    cfg.parameters.set(param::kHomeSwitchX + 1, 1);
+    cfg.parameters.set(param::kHomeSwitchX + 2, 0);
     cfg.homeSwitchDistance[0] = 100.0;
     return cfg;
 }

@@ -87,7 +87,7 @@ TEST_F(HookMachine, DualYGantryFndzeroLeavesFourAxesHomedWithAEqualToY) {
     write("fndzero.nc", lines({"M98P501X2", "M98P501X0", "M98P501X1", "#883=#881", "#1518=1", "M30"}));
     auto cfg = machine();
     cfg.parameters.set(123, 12.5);                         // Y after homing
-    cfg.parameters.set(config::param::kHomeBeforeProcessing, 1); // a hook still runs unhomed
+    cfg.parameters.set(param::kHomeBeforeProcessing, 1); // a hook still runs unhomed
     Controller c(std::move(cfg), unhomed());
     ASSERT_TRUE(c.loadMdi({"G91 G00 A30", "G90"}));
     ASSERT_EQ(c.run().status, controller::RunStatus::Ok);

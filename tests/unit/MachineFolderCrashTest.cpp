@@ -6,10 +6,10 @@
 #include "FileText.h"
 #include "RunProgram.h"
 
-#include "core/config/AtomicFile.h"
-#include "core/config/LastGoodCopy.h"
-#include "core/config/ParamsFileWriter.h"
-#include "core/config/SystemLog.h"
+#include "core/files/AtomicFile.h"
+#include "core/files/LastGoodCopy.h"
+#include "core/params/ParamsFileWriter.h"
+#include "core/files/SystemLog.h"
 #include "core/tools/ToolLifeFile.h"
 
 #include <gtest/gtest.h>
@@ -42,8 +42,8 @@ fs::path scratchFolder(const std::string& name) {
     return folder;
 }
 
-std::unique_ptr<config::SystemLog> openLog(const fs::path& folder) {
-    auto log = std::make_unique<config::SystemLog>((folder / "system-log.tsv").string(), 100000);
+std::unique_ptr<files::SystemLog> openLog(const fs::path& folder) {
+    auto log = std::make_unique<files::SystemLog>((folder / "system-log.tsv").string(), 100000);
     std::string error;
     EXPECT_TRUE(log->load(&error)) << error;
     return log;
@@ -55,12 +55,12 @@ int versionOfZ(double z) { return static_cast<int>(-z - 100.0); }
 
 // One save of the whole folder as version v, in the order the panel's writers would do it; false
 // when a write failed.
-bool saveVersion(const fs::path& folder, controller::Controller& controller, config::SystemLog& log, int v) {
+bool saveVersion(const fs::path& folder, controller::Controller& controller, files::SystemLog& log, int v) {
     std::map<int, double> params;
     for (int n = kFirstParam; n < kFirstParam + 4; ++n) {
         params[n] = 100 + v;
     }
-    if (config::saveParameters(folder, params) || !controller.setParameter(930, toolZ(v)) ||
+    if (params::saveParameters(folder, params) || !controller.setParameter(930, toolZ(v)) ||
         controller.saveToolTable()) { // tool.tbl, then its Z into params 930-945
         return false;
     }
@@ -69,7 +69,7 @@ bool saveVersion(const fs::path& folder, controller::Controller& controller, con
     std::string error;
     return !tools::saveToolLife(folder.string(), life) &&
            log.append({"2026-11-24 05:00:00", "save", std::to_string(v)}, &error) &&
-           !config::writeFileAtomically(folder / "mdi.nc", "G0 X" + std::to_string(v) + "\n");
+           !files::writeFileAtomically(folder / "mdi.nc", "G0 X" + std::to_string(v) + "\n");
 }
 
 // The version each file holds, in the order saveVersion writes them.
@@ -198,7 +198,7 @@ TEST(MachineFolderCrash, AWriterKilledAtRandomLeavesEveryFileOldOrNew) {
         ASSERT_TRUE(saveVersion(folder, last, *log, static_cast<int>(log->entries().size())));
     }
     for (const char* name : {"params.toml", "tool.tbl", "toollife.txt", "system-log.tsv", "mdi.nc"}) {
-        EXPECT_TRUE(config::staleTempFiles(folder / name).empty()) << name;
+        EXPECT_TRUE(files::staleTempFiles(folder / name).empty()) << name;
     }
     fs::remove_all(folder);
 }
@@ -206,9 +206,9 @@ TEST(MachineFolderCrash, AWriterKilledAtRandomLeavesEveryFileOldOrNew) {
 TEST(MachineFolderCrash, AHandBrokenFileNamesItsLineAndTheLastGoodCopy) {
     const fs::path folder = scratchFolder("broken");
     writeText(folder / "machine.toml", "name = \"broken\"\n");
-    ASSERT_EQ(config::saveParameters(folder, {{61, 3000}, {62, 500}}), std::nullopt);
+    ASSERT_EQ(params::saveParameters(folder, {{61, 3000}, {62, 500}}), std::nullopt);
     const std::string good = readText(folder / "params.toml");
-    EXPECT_EQ(readText(config::lastGoodPath(folder / "params.toml")), good) << "a save keeps a good copy beside";
+    EXPECT_EQ(readText(files::lastGoodPath(folder / "params.toml")), good) << "a save keeps a good copy beside";
 
     writeText(folder / "params.toml", "[params]\n61 = 3000\n62 = = 500\n");
     auto loaded = config::loadMachineFolder(folder.string());
@@ -218,11 +218,11 @@ TEST(MachineFolderCrash, AHandBrokenFileNamesItsLineAndTheLastGoodCopy) {
     EXPECT_NE(error.message.find("(its last good copy: " + (folder / "params.toml.last-good").string() + ")"),
               std::string::npos)
         << error.message;
-    EXPECT_EQ(readText(config::lastGoodPath(folder / "params.toml")), good) << "a broken file never replaces the copy";
+    EXPECT_EQ(readText(files::lastGoodPath(folder / "params.toml")), good) << "a broken file never replaces the copy";
 
     writeText(folder / "params.toml", "[params]\n61 = 2500\n");
     ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(config::loadMachineFolder(folder.string())));
-    EXPECT_EQ(readText(config::lastGoodPath(folder / "params.toml")), "[params]\n61 = 2500\n")
+    EXPECT_EQ(readText(files::lastGoodPath(folder / "params.toml")), "[params]\n61 = 2500\n")
         << "a file fixed by hand that loads is the new good copy";
     fs::remove_all(folder);
 }
@@ -232,7 +232,7 @@ TEST(MachineFolderCrash, AFolderNeverSavedIntoGetsNoCopies) {
     writeText(folder / "machine.toml", "name = \"plain\"\n");
     writeText(folder / "params.toml", "[params]\n61 = 2500\n");
     ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(config::loadMachineFolder(folder.string())));
-    EXPECT_FALSE(fs::exists(config::lastGoodPath(folder / "params.toml"))) << "loading writes nothing new";
+    EXPECT_FALSE(fs::exists(files::lastGoodPath(folder / "params.toml"))) << "loading writes nothing new";
     fs::remove_all(folder);
 }
 
@@ -240,7 +240,7 @@ TEST(MachineFolderCrash, ALogLineCutShortIsSkippedAndTheNextAppendRepairsTheFile
     const fs::path folder = scratchFolder("log");
     const fs::path file = folder / "system-log.tsv";
     writeText(file, "t1\tstart\tone\nt2\tstop\ttwo\nt3\tsta");
-    config::SystemLog log(file.string());
+    files::SystemLog log(file.string());
     std::string error;
     std::size_t skipped = 0;
     ASSERT_TRUE(log.load(&error, &skipped)) << error;

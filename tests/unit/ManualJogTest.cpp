@@ -17,9 +17,9 @@ config::MachineConfig machine() {
     auto cfg = m350Machine();
     cfg.parameters.set(62, 500);
     for (int axis = 0; axis < 2; ++axis) {
-        cfg.parameters.set(config::param::kManualLowSpeedX + axis, 600);
-        cfg.parameters.set(config::param::kManualStartAccelerationX + axis, 100);
-        cfg.parameters.set(config::param::kManualStopAccelerationX + axis, 50);
+        cfg.parameters.set(param::kManualLowSpeedX + axis, 600);
+        cfg.parameters.set(param::kManualStartAccelerationX + axis, 100);
+        cfg.parameters.set(param::kManualStopAccelerationX + axis, 50);
     }
     return cfg;
 }
@@ -51,8 +51,8 @@ TEST(ManualJog, ContinuousMovesWhileHeldAndBrakesOnRelease) {
 
 TEST(ManualJog, HighSpeedAndOverrideSetTheSpeed) {
     auto cfg = machine();
-    cfg.parameters.set(config::param::kManualHighSpeedX, 1200);
-    cfg.parameters.set(config::param::kManualMaxSpeedX, 900); // caps the high speed
+    cfg.parameters.set(param::kManualHighSpeedX, 1200);
+    cfg.parameters.set(param::kManualMaxSpeedX, 900); // caps the high speed
     auto c = idle(std::move(cfg));
     c->setJogHighSpeed(true);
     EXPECT_DOUBLE_EQ(c->setJogOverride(500.0), 150.0);
@@ -118,7 +118,7 @@ TEST(ManualJog, RefusedInAlarmAndEStop) {
 
 TEST(ManualJog, WheelMovesDetentsTimesMultiplierTimesParam172) {
     auto cfg = machine();
-    cfg.parameters.set(config::param::kMpgDistance, 0.005);
+    cfg.parameters.set(param::kMpgDistance, 0.005);
     auto c = idle(std::move(cfg));
     EXPECT_FALSE(c->wheelTurn(0, 10, 25, 1.0)); // not in MPG mode
     c->setJogMode(JogMode::Mpg);
@@ -134,7 +134,7 @@ TEST(ManualJog, WheelMovesDetentsTimesMultiplierTimesParam172) {
 
 TEST(ManualJog, Param175ReversesTheWheel) {
     auto cfg = machine();
-    cfg.parameters.set(config::param::kMpgReversed, 1);
+    cfg.parameters.set(param::kMpgReversed, 1);
     auto c = idle(std::move(cfg));
     c->setJogMode(JogMode::Mpg);
     ASSERT_TRUE(c->wheelTurn(0, 10, 25, 1.0));
@@ -155,9 +155,9 @@ TEST(ManualJog, TheAxisFollowsTheWheelNoFasterThanItTurns) {
 
 TEST(ManualJog, SoftLimitStopsAContinuousJog) {
     auto cfg = machine();
-    cfg.parameters.set(config::param::kSoftLimitsEnabled, 1);
-    cfg.parameters.set(config::param::kSoftLimitPositiveX, 20);
-    cfg.parameters.set(config::param::kSoftLimitNegativeX, -5);
+    cfg.parameters.set(param::kSoftLimitsEnabled, 1);
+    cfg.parameters.set(param::kSoftLimitPositiveX, 20);
+    cfg.parameters.set(param::kSoftLimitNegativeX, -5);
     auto c = idle(std::move(cfg));
     ASSERT_TRUE(c->jogPress(0, +1));
     c->advance(10.0);

@@ -22,7 +22,7 @@ using test::lines;
 // An M350 with Modbus on and slave 1 holding registers 8192 (0) and 8193 (1500), slave 7 register 0.
 config::MachineConfig modbusMachine(bool enabled = true) {
     config::MachineConfig config = test::m350Machine();
-    config.parameters.set(config::param::kModbusRtu, enabled ? 1 : 0);
+    config.parameters.set(param::kModbusRtu, enabled ? 1 : 0);
     config.modbus.holding[1] = {{8192, 0}, {8193, 1500}};
     config.modbus.holding[7] = {{0, 65535}};
     return config;

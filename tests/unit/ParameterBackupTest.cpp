@@ -1,7 +1,7 @@
 // 参数备份 / 参数恢复 files and the Param page's layout and levels.
-#include "core/config/AtomicFile.h"
-#include "core/config/ParameterBackup.h"
-#include "core/config/ParameterPages.h"
+#include "core/files/AtomicFile.h"
+#include "core/params/ParameterBackup.h"
+#include "core/params/ParameterPages.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -17,9 +17,9 @@ namespace fs = std::filesystem;
 using testing::HasSubstr;
 using testing::StartsWith;
 
-const ParameterCatalogue& catalogue() {
-    static const ParameterCatalogue loaded =
-        std::get<ParameterCatalogue>(ParameterCatalogue::load(ParameterCatalogue::bundledPath()));
+const params::ParameterCatalogue& catalogue() {
+    static const params::ParameterCatalogue loaded =
+        std::get<params::ParameterCatalogue>(params::ParameterCatalogue::load(params::ParameterCatalogue::bundledPath()));
     return loaded;
 }
 
@@ -30,14 +30,14 @@ fs::path backupFile(const std::string& name, const std::string& text) {
 }
 
 TEST(ParameterBackup, ABackupRestoresEveryParameterAsSaved) {
-    ParameterTable table;
+    params::ParameterTable table;
     table.set(61, 2500);
     table.set(546, 1); // an IO enable: not in the catalogue, still saved
     table.set(129, 10.25);
-    fs::path file = backupFile("backup-ok.toml", formatParameterBackup(table, catalogue(), "m350 \"test\""));
-    auto read = readParameterBackup(file, catalogue());
-    ASSERT_TRUE(std::holds_alternative<ParameterRestore>(read)) << std::get<std::string>(read);
-    const ParameterRestore& restore = std::get<ParameterRestore>(read);
+    fs::path file = backupFile("backup-ok.toml", params::formatParameterBackup(table, catalogue(), "m350 \"test\""));
+    auto read = params::readParameterBackup(file, catalogue());
+    ASSERT_TRUE(std::holds_alternative<params::ParameterRestore>(read)) << std::get<std::string>(read);
+    const params::ParameterRestore& restore = std::get<params::ParameterRestore>(read);
     ASSERT_EQ(restore.values.size(), 1000u);
     EXPECT_EQ(restore.values.at(61), 2500);
     EXPECT_EQ(restore.values.at(546), 1);
@@ -48,27 +48,27 @@ TEST(ParameterBackup, ABackupRestoresEveryParameterAsSaved) {
 
 TEST(ParameterBackup, ABrokenFileIsRefusedWithItsLine) {
     fs::path file = backupFile("backup-broken.toml", "[backup]\nformat = 1\n[params]\n0 = 50\n1 = fifty\n");
-    auto read = readParameterBackup(file, catalogue());
+    auto read = params::readParameterBackup(file, catalogue());
     ASSERT_TRUE(std::holds_alternative<std::string>(read));
     EXPECT_THAT(std::get<std::string>(read), StartsWith(file.string() + ":5:"));
 }
 
 TEST(ParameterBackup, AFileThatIsNotABackupOrIsShortIsRefused) {
-    auto other = readParameterBackup(backupFile("backup-other.toml", "[params]\n61 = 3000\n"), catalogue());
+    auto other = params::readParameterBackup(backupFile("backup-other.toml", "[params]\n61 = 3000\n"), catalogue());
     ASSERT_TRUE(std::holds_alternative<std::string>(other));
     EXPECT_THAT(std::get<std::string>(other), HasSubstr("not a parameter backup"));
-    auto shortFile = readParameterBackup(backupFile("backup-short.toml", "[backup]\nformat = 1\n[params]\n61 = 3000\n"),
+    auto shortFile = params::readParameterBackup(backupFile("backup-short.toml", "[backup]\nformat = 1\n[params]\n61 = 3000\n"),
                                          catalogue());
     ASSERT_TRUE(std::holds_alternative<std::string>(shortFile));
     EXPECT_THAT(std::get<std::string>(shortFile), HasSubstr("holds 1 parameters"));
-    auto wrongKey = readParameterBackup(backupFile("backup-key.toml", "[backup]\nformat = 1\n[params]\n1000 = 3\n"),
+    auto wrongKey = params::readParameterBackup(backupFile("backup-key.toml", "[backup]\nformat = 1\n[params]\n1000 = 3\n"),
                                         catalogue());
     ASSERT_TRUE(std::holds_alternative<std::string>(wrongKey));
     EXPECT_THAT(std::get<std::string>(wrongKey), HasSubstr(":4:1: '1000' is not a parameter"));
 }
 
 TEST(ParameterPages, TabsHoldTheFirmwareGroupsAndEveryListedNumberIsFound) {
-    ParameterPages pages(catalogue());
+    params::ParameterPages pages(catalogue());
     std::size_t listed = 0;
     for (std::size_t c = 0; c < pages.categories().size(); ++c) {
         const auto& category = pages.categories()[c];
@@ -83,17 +83,17 @@ TEST(ParameterPages, TabsHoldTheFirmwareGroupsAndEveryListedNumberIsFound) {
     EXPECT_EQ(listed, 544u) << "584 catalogued, less the 40 CAM-teach rows of 1000 and up";
     EXPECT_FALSE(pages.locate(1027).has_value());
     EXPECT_EQ(pages.categories().front().group, 2) << "the user tab's Manual group first";
-    EXPECT_EQ(pages.categories().back().group, ParameterPages::kUnlistedGroup);
+    EXPECT_EQ(pages.categories().back().group, params::ParameterPages::kUnlistedGroup);
 }
 
 TEST(ParameterPages, TheLevelFollowsTheTab) {
-    EXPECT_EQ(ParameterPages::requiredLevel(2), UserLevel::Operator);  // 手动参数
-    EXPECT_EQ(ParameterPages::requiredLevel(14), UserLevel::Operator); // 刀具参数
-    EXPECT_EQ(ParameterPages::requiredLevel(1), UserLevel::Admin);     // 机床参数
-    EXPECT_EQ(ParameterPages::requiredLevel(16), UserLevel::Admin);    // input port table
-    EXPECT_EQ(ParameterPages::requiredLevel(0), UserLevel::Super);     // on no firmware page
-    EXPECT_EQ(ParameterPages::tabOf(8), ParameterPages::Tab::User);
-    EXPECT_EQ(ParameterPages::tabOf(15), ParameterPages::Tab::Factory);
+    EXPECT_EQ(params::ParameterPages::requiredLevel(2), params::UserLevel::Operator);  // 手动参数
+    EXPECT_EQ(params::ParameterPages::requiredLevel(14), params::UserLevel::Operator); // 刀具参数
+    EXPECT_EQ(params::ParameterPages::requiredLevel(1), params::UserLevel::Admin);     // 机床参数
+    EXPECT_EQ(params::ParameterPages::requiredLevel(16), params::UserLevel::Admin);    // input port table
+    EXPECT_EQ(params::ParameterPages::requiredLevel(0), params::UserLevel::Super);     // on no firmware page
+    EXPECT_EQ(params::ParameterPages::tabOf(8), params::ParameterPages::Tab::User);
+    EXPECT_EQ(params::ParameterPages::tabOf(15), params::ParameterPages::Tab::Factory);
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 // The bundled parameter catalogue against the extracted M350 parameter table
 // (resources/parameters/README.md says where each value comes from).
-#include "core/config/ParameterCatalogue.h"
-#include "core/config/ParameterTable.h"
+#include "core/params/ParameterCatalogue.h"
+#include "core/params/ParameterTable.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -13,9 +13,9 @@
 #include <string>
 #include <variant>
 
-using m350::config::ParameterCatalogue;
-using m350::config::ParameterInfo;
-using m350::config::ParameterTable;
+using m350::params::ParameterCatalogue;
+using m350::params::ParameterInfo;
+using m350::params::ParameterTable;
 using testing::HasSubstr;
 
 namespace {

@@ -4,7 +4,7 @@
 // assumption the shortcut rests on.
 #include "RunProgram.h"
 
-#include "core/config/ParameterTable.h"
+#include "core/params/ParameterTable.h"
 
 #include <gtest/gtest.h>
 
@@ -40,8 +40,8 @@ TEST(PlainBlockPath, AMotionCodeAloneEndsTheCannedCycle) {
 }
 
 TEST(PlainBlockPath, ParameterTableVersionMovesOnWithEveryWriteAndRestore) {
-    config::ParameterTable table;
-    const config::ParameterTable saved = table;
+    params::ParameterTable table;
+    const params::ParameterTable saved = table;
     const std::uint64_t start = table.version();
     table.set(800, 3);
     const std::uint64_t written = table.version();

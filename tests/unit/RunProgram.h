@@ -5,7 +5,7 @@
 // variables stay inspectable after the run (also after an alarm).
 
 #include "core/config/MachineConfig.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 #include "core/controller/Controller.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
@@ -31,8 +31,8 @@ inline config::MachineConfig m350Machine() {
     config::MachineConfig config;
     config.name = "unit-test M350";
     config.dialect = &gcode::Dialect::m350();
-    config.parameters.set(config::param::kMagazineCapacity, 16);
-    config.parameters.set(config::param::kCurrentWorkSystem, 1);
+    config.parameters.set(param::kMagazineCapacity, 16);
+    config.parameters.set(param::kCurrentWorkSystem, 1);
     return config;
 }
 

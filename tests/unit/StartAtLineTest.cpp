@@ -60,8 +60,8 @@ const std::string kProgram = lines({
 
 TEST(StartAtLine, RebuildsTheModalStateAndApproachesZUpXYOverZDown) {
     auto cfg = machine();
-    cfg.parameters.set(config::param::kLiftBeforeStart, 1);
-    cfg.parameters.set(config::param::kSafeZ, 20); // G55 Z20 = machine Z20
+    cfg.parameters.set(param::kLiftBeforeStart, 1);
+    cfg.parameters.set(param::kSafeZ, 20); // G55 Z20 = machine Z20
     Recorder rec;
     auto c = loaded(std::move(cfg), kProgram, &rec);
     std::string why;
@@ -140,7 +140,7 @@ TEST(StartAtLine, Refusals) {
     EXPECT_NE(why.find("RESET first"), std::string::npos) << why;
 
     auto cfg = machine();
-    cfg.parameters.set(config::param::kHomeBeforeProcessing, 1);
+    cfg.parameters.set(param::kHomeBeforeProcessing, 1);
     auto unhomed = loaded(std::move(cfg), program, nullptr, false);
     EXPECT_FALSE(unhomed->startAtLine(4, &why));
     EXPECT_NE(why.find("parameter 220"), std::string::npos) << why;
@@ -186,7 +186,7 @@ const std::string kLoop = lines({
 
 void pauseResetResume(double resumeMode, std::vector<machine::MachineEvent>& after, controller::RunReport& end) {
     auto cfg = machine();
-    cfg.parameters.set(config::param::kPauseResumeMode, resumeMode);
+    cfg.parameters.set(param::kPauseResumeMode, resumeMode);
     Recorder rec;
     auto c = loaded(std::move(cfg), kLoop, &rec);
     ASSERT_TRUE(c->start());

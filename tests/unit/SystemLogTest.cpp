@@ -1,4 +1,4 @@
-#include "core/config/SystemLog.h"
+#include "core/files/SystemLog.h"
 
 #include <gtest/gtest.h>
 
@@ -24,13 +24,13 @@ TEST(SystemLog, EntriesAppendedAreReadBack) {
     TempLog temp;
     std::string error;
     {
-        config::SystemLog log(temp.path());
+        files::SystemLog log(temp.path());
         ASSERT_TRUE(log.load(&error)) << error;
         EXPECT_TRUE(log.entries().empty());
         ASSERT_TRUE(log.append({"2026-11-23 10:00:00", "start_work", "part.nc"}, &error)) << error;
         ASSERT_TRUE(log.append({"2026-11-23 10:00:05", "alarm", "bad\tline\nhere"}, &error)) << error;
     }
-    config::SystemLog again(temp.path());
+    files::SystemLog again(temp.path());
     ASSERT_TRUE(again.load(&error)) << error;
     ASSERT_EQ(again.entries().size(), 2u);
     EXPECT_EQ(again.entries()[0].event, "start_work");
@@ -41,7 +41,7 @@ TEST(SystemLog, EntriesAppendedAreReadBack) {
 TEST(SystemLog, ABrokenLineIsSkippedAndCounted) {
     TempLog temp;
     std::ofstream(temp.path()) << "2026-11-23 10:00:00\tpause\t\nno tabs at all\n2026-11-23 10:01:00\tresume\tx\n";
-    config::SystemLog log(temp.path());
+    files::SystemLog log(temp.path());
     std::string error;
     std::size_t skipped = 0;
     ASSERT_TRUE(log.load(&error, &skipped)) << error;
@@ -51,12 +51,12 @@ TEST(SystemLog, ABrokenLineIsSkippedAndCounted) {
 
 TEST(SystemLog, StaysBoundedKeepingTheNewest) {
     TempLog temp;
-    config::SystemLog log(temp.path(), 10);
+    files::SystemLog log(temp.path(), 10);
     std::string error;
     for (int i = 0; i < 45; ++i) {
         ASSERT_TRUE(log.append({"t", "mdi", std::to_string(i)}, &error)) << error;
     }
-    config::SystemLog again(temp.path(), 10);
+    files::SystemLog again(temp.path(), 10);
     ASSERT_TRUE(again.load(&error)) << error;
     EXPECT_LT(again.entries().size(), 20u);
     EXPECT_GE(again.entries().size(), 10u);

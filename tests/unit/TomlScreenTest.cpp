@@ -1,9 +1,9 @@
-// The screen in front of toml++ (core/config/TomlScreen.h): what it refuses and where, what it lets
+// The screen in front of toml++ (core/files/TomlScreen.h): what it refuses and where, what it lets
 // through, and a sweep showing that what it lets through toml++ reads without undefined behaviour
 // (the sweep fails only in the ASan/UBSan build of scripts/test.sh, where UBSan stops at it).
 #define TOML_HEADER_ONLY 1
-#include "core/config/Toml.h"
-#include "core/config/TomlScreen.h"
+#include "core/files/Toml.h"
+#include "core/files/TomlScreen.h"
 
 #include <gtest/gtest.h>
 
@@ -34,7 +34,7 @@ std::string utf8(char32_t c) {
 }
 
 std::string refusal(std::string_view text) {
-    auto refused = findCharacterTomlCannotRead(text);
+    auto refused = files::findCharacterTomlCannotRead(text);
     return refused ? std::to_string(refused->line) + ":" + std::to_string(refused->column) + ": " + refused->message
                    : "accepted";
 }
@@ -113,7 +113,7 @@ TEST(TomlScreenTest, InAMultiLineBasicStringTheCharacterAfterABackslashMustBeAsc
 
 TEST(TomlScreenTest, ARefusalIsAParseErrorAtTheCharacter) {
     try {
-        parseTomlText("a = 1\nb = 2 \xEF\xB9\x90\n", "params.toml");
+        files::parseTomlText("a = 1\nb = 2 \xEF\xB9\x90\n", "params.toml");
         FAIL() << "parsed";
     } catch (const toml::parse_error& e) {
         EXPECT_EQ(e.source().begin.line, 2u);
@@ -141,9 +141,9 @@ TEST(TomlScreenTest, WhatTheScreenLetsThroughTomlReadsWithoutUndefinedBehaviour)
         for (char32_t c : characters) {
             std::string text = place;
             text.replace(text.find('@'), 1, utf8(c));
-            const bool screened = findCharacterTomlCannotRead(text).has_value();
+            const bool screened = files::findCharacterTomlCannotRead(text).has_value();
             try {
-                parseTomlText(text, "sweep.toml");
+                files::parseTomlText(text, "sweep.toml");
                 ++read;
             } catch (const toml::parse_error&) {
                 ++refused;

@@ -4,7 +4,7 @@
 #include "FileText.h"
 #include "RunProgram.h"
 
-#include "core/config/AtomicFile.h"
+#include "core/files/AtomicFile.h"
 #include "core/tools/ToolTableFile.h"
 
 #include <gmock/gmock.h>
@@ -137,7 +137,7 @@ void killedSave(const fs::path& folder, bool duringChunks) {
     if (child == 0) {
         controller::Controller c(load(folder), {});
         c.setParameter(930, -99.0);
-        config::AtomicWriteHooks hooks;
+        files::AtomicWriteHooks hooks;
         if (duringChunks) hooks.afterChunk = [](std::size_t) { raise(SIGKILL); };
         else hooks.beforeRename = [] { raise(SIGKILL); };
         (void)c.saveToolTable(hooks);

@@ -14,7 +14,7 @@ using namespace m350::test;
 TEST(ToolLifeCuttingTime, FeedArcAndDrillFeedCountRapidsAndDwellsDoNot) {
     config::MachineConfig config = fanucWithGroups();
     // rapids as slow as the feed: counting them would add whole units
-    config.parameters.set(config::param::kRapidSpeed, 600);
+    config.parameters.set(param::kRapidSpeed, 600);
     // At F600 (10 mm/s): G1 over 72 mm 7.2 s; the half circle of radius 10, 10 pi mm = 3.1416 s; G81
     // feeds from R2 to Z-20, 22 mm = 2.2 s. 12.54 s of cutting = 3 whole 4 s units. Without the arc or
     // the drill it would be 2; with the 30 s dwell 10 or more; with the rapids (Z10, X50, X150, the
@@ -33,7 +33,7 @@ TEST(ToolLifeCuttingTime, TheM350TWordChangesTheToolButItsMovesDoNotCount) {
     config.toolLife.putGroup(group(1, 1, tools::LifeKind::Minutes, {{3, 0, 0, 0}, {4, 0, 0, 0}}));
     ProgramRun run = runProgram(config, lines({"T101", "G91 G1 X100 F600", "G90", "M30"}));
     EXPECT_RUN_OK(run);
-    EXPECT_EQ(run.controller->parameter(config::param::kCurrentTool), 3);
+    EXPECT_EQ(run.controller->parameter(param::kCurrentTool), 3);
     EXPECT_EQ(used(run, 1, 3), 2); // the 10 s cut: 2 units
     EXPECT_EQ(used(run, 1, 4), 0);
 }

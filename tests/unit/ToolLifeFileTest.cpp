@@ -161,7 +161,7 @@ TEST(ToolLifeFile, ASaveKilledBeforeTheRenameLeavesTheOldFile) {
     pid_t child = fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
-        config::AtomicWriteHooks hooks;
+        files::AtomicWriteHooks hooks;
         hooks.beforeRename = [] { raise(SIGKILL); };
         tools::saveToolLife(folder.string(), data, hooks);
         _exit(0);

@@ -181,7 +181,7 @@ TEST(ToolLife, OnTheM350TheTWordItselfChangesToTheGroupsTool) {
     config.toolLife.putGroup(group(1, 5, tools::LifeKind::Count, {{3, 0, 0, 5}, {4, 0, 0, 0}}));
     ProgramRun run = runProgram(config, lines({"T101", "M30"}));
     EXPECT_RUN_OK(run);
-    EXPECT_EQ(run.controller->parameter(config::param::kCurrentTool), 4);
+    EXPECT_EQ(run.controller->parameter(param::kCurrentTool), 4);
     EXPECT_EQ(used(run, 1, 4), 1);
 }
 

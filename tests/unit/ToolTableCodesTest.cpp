@@ -118,7 +118,7 @@ TEST(ToolTableCodes, TheOffsetMemoryIsTheTable) {
     ASSERT_NE(table.find(3), nullptr);
     EXPECT_EQ(table.find(3)->pocket, 3);
     EXPECT_DOUBLE_EQ(table.find(4)->offset(tools::kZ), 2.0);
-    config::ParameterTable parameters;
+    params::ParameterTable parameters;
     tools::ToolData data(gcode::Dialect::fanuc(), parameters, tools::parseToolTable("T5 P5 Z40 D8\n", "t").table);
     ASSERT_EQ(data.setOffsetValue(4, 2.0), std::nullopt);
     EXPECT_DOUBLE_EQ(data.radiusOffset(5), 4.0) << "D5: tool 5's diameter / 2";

@@ -1,7 +1,7 @@
 #include "ui/pages/IoPage.h"
 #include "ui/pages/PanelTable.h"
 
-#include "core/config/IoPorts.h"
+#include "core/params/IoPorts.h"
 #include "ui/i18n/PanelText.h"
 #include "ui/panel/PanelContext.h"
 
@@ -35,7 +35,7 @@ void light(QLabel* label, bool on) {
                             : QStringLiteral("background:#1b2029;color:#9fb4d0;border:1px solid #3a4250;"));
 }
 
-int pinOf(const config::ParameterTable& p, int parameter) { return static_cast<int>(p.get(parameter)); }
+int pinOf(const params::ParameterTable& p, int parameter) { return static_cast<int>(p.get(parameter)); }
 
 } // namespace
 
@@ -137,7 +137,7 @@ void IoPage::switchOutput(bool on) {
     if (!s) {
         return;
     }
-    const config::ParameterTable& p = s->status.parameters;
+    const params::ParameterTable& p = s->status.parameters;
     int pin = pinOf(p, rows_[row].parameter);
     int active = static_cast<int>(p.get(rows_[row].parameter + 2));
     context().session().setOutput(pin, on ? active : 1 - active);
@@ -168,7 +168,7 @@ void IoPage::pressSelected() {
     if (!s) {
         return;
     }
-    const config::ParameterTable& p = s->status.parameters;
+    const params::ParameterTable& p = s->status.parameters;
     constexpr double kPressSeconds = 0.3;
     context().session().forceInput(pinOf(p, rows_[row].parameter), MachineSession::Fault::Pressed,
                                    static_cast<int>(p.get(rows_[row].parameter + 2)), kPressSeconds);
@@ -202,10 +202,10 @@ bool IoPage::selectFunction(int parameter) {
 }
 
 void IoPage::rebuildTable(const PanelSnapshot& snapshot) {
-    const config::ParameterTable& p = snapshot.status.parameters;
+    const params::ParameterTable& p = snapshot.status.parameters;
     int selected = selectedFunction();
     rows_.clear();
-    for (const config::IoFunction& f : config::ioFunctions()) {
+    for (const params::IoFunction& f : params::ioFunctions()) {
         if (pinOf(p, f.parameter) > 0) {
             rows_.push_back({f.parameter, f.input});
         }
@@ -224,9 +224,9 @@ void IoPage::rebuildTable(const PanelSnapshot& snapshot) {
 }
 
 void IoPage::fillRow(int row, const PanelSnapshot& snapshot) {
-    const config::ParameterTable& p = snapshot.status.parameters;
-    const config::IoFunction& f = *config::ioFunction(rows_[row].parameter);
-    config::PortAssignment port = config::portAssignment(p, f.parameter);
+    const params::ParameterTable& p = snapshot.status.parameters;
+    const params::IoFunction& f = *params::ioFunction(rows_[row].parameter);
+    params::PortAssignment port = params::portAssignment(p, f.parameter);
     const int pins = f.input ? machine::kInputCount : machine::kOutputCount;
     const auto index = static_cast<std::size_t>(std::clamp(port.pin, 1, pins) - 1);
     int level = port.pin > pins ? -1 : f.input ? snapshot.status.inputs[index] : snapshot.status.outputs[index];
@@ -235,14 +235,14 @@ void IoPage::fillRow(int row, const PanelSnapshot& snapshot) {
     table_->item(row, Lamp)->setForeground(active ? QColor(80, 230, 80) : QColor(120, 130, 140));
     table_->item(row, Name)->setText(PanelText::chinese() ? QString::fromUtf8(f.nameZh) : QString::fromUtf8(f.nameEn));
     table_->item(row, Enable)->setText(port.enabled ? tr("Yes") : tr("No"));
-    table_->item(row, Pin)->setText(QString::fromStdString(f.input ? config::inputName(port.pin) : config::outputName(port.pin)));
+    table_->item(row, Pin)->setText(QString::fromStdString(f.input ? params::inputName(port.pin) : params::outputName(port.pin)));
     table_->item(row, Polarity)->setText(QString::number(port.activeLevel));
 }
 
 void IoPage::render(const PanelSnapshot& snapshot) {
     const controller::PanelStatus& s = snapshot.status;
     QVector<int> wiring;
-    for (const config::IoFunction& f : config::ioFunctions()) {
+    for (const params::IoFunction& f : params::ioFunctions()) {
         wiring.push_back(pinOf(s.parameters, f.parameter));
     }
     if (wiring != wiring_) {

@@ -7,11 +7,11 @@ namespace m350::ui {
 
 namespace {
 
-QString passwordQuestion(config::UserLevel level) {
+QString passwordQuestion(params::UserLevel level) {
     switch (level) {
-    case config::UserLevel::Super:
+    case params::UserLevel::Super:
         return LevelPrompt::tr("Pls input super admi or hight user's rights:", "msg 925");
-    case config::UserLevel::Admin: return LevelPrompt::tr("Pls input admi or hight user's rights:", "msg 924");
+    case params::UserLevel::Admin: return LevelPrompt::tr("Pls input admi or hight user's rights:", "msg 924");
     default: return LevelPrompt::tr("Pls input operator or hight user's rights:", "msg 923");
     }
 }

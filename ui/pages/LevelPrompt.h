@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/config/ParameterPages.h"
+#include "core/params/ParameterPages.h"
 
 #include <QCoreApplication>
 
@@ -15,7 +15,7 @@ class LevelPrompt {
     Q_DECLARE_TR_FUNCTIONS(m350::ui::LevelPrompt)
 
 public:
-    using Level = config::UserLevel;
+    using Level = params::UserLevel;
     // 请输入[操作员]及以上密码切换用户权限: then the level opens (`opened` runs) or 解锁密码输入错误!.
     static void askPassword(const PanelContext& context, Level level, std::function<void()> opened = {});
     // Which level (0 访客 .. 3 超级管理), then its password; 访客 needs none.

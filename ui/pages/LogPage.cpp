@@ -108,7 +108,7 @@ void LogPage::fill(const PanelSnapshot& snapshot) {
     int count = std::min<int>(kShownRows, static_cast<int>(entries.size()));
     table_->setRowCount(count);
     for (int row = 0; row < count; ++row) {
-        const config::LogEntry& e = entries[entries.size() - 1 - static_cast<std::size_t>(row)];
+        const files::LogEntry& e = entries[entries.size() - 1 - static_cast<std::size_t>(row)];
         QString key = QString::fromStdString(e.event);
         QString text = words.value(key, key);
         if (!e.detail.empty()) {

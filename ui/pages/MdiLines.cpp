@@ -1,6 +1,6 @@
 #include "ui/pages/MdiLines.h"
 
-#include "core/config/AtomicFile.h"
+#include "core/files/AtomicFile.h"
 
 #include <QDir>
 #include <QFile>
@@ -58,7 +58,7 @@ bool MdiLines::save(const QString& folder, const QStringList& lines, QString* er
     }
     // as every machine folder file: a temp file, fsync, rename, fsync of the folder
     const std::string_view content(bytes.constData(), static_cast<std::size_t>(bytes.size()));
-    if (auto problem = config::writeFileAtomically(path(folder).toStdString(), content)) {
+    if (auto problem = files::writeFileAtomically(path(folder).toStdString(), content)) {
         *error = QString::fromStdString(*problem);
         return false;
     }

@@ -33,8 +33,8 @@ QString localName(const std::string& zh, const std::string& en) {
 
 ParamPage::ParamPage(PanelContext& context, QWidget* parent) : Page(context, parent) {
     setObjectName("paramPage");
-    const auto& loaded = config::ParameterCatalogue::bundled();
-    if (const auto* catalogue = std::get_if<config::ParameterCatalogue>(&loaded)) {
+    const auto& loaded = params::ParameterCatalogue::bundled();
+    if (const auto* catalogue = std::get_if<params::ParameterCatalogue>(&loaded)) {
         catalogue_ = *catalogue;
         pages_.emplace(*catalogue_);
     } else {
@@ -195,7 +195,7 @@ void ParamPage::showCategory(std::size_t category) {
     table_->clearContents();
     table_->setRowCount(static_cast<int>(numbers.size()));
     for (int row = 0; row < table_->rowCount(); ++row) {
-        const config::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
+        const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
         table_->setItem(row, Number, new QTableWidgetItem(QString::number(info.number)));
         table_->setItem(row, Note, new QTableWidgetItem);
         table_->setItem(row, Value, new QTableWidgetItem);
@@ -298,7 +298,7 @@ void ParamPage::retranslate() {
         group_->setText(QStringLiteral("◀ %1 (%2/%3) ▶").arg(groupTitle(pages_->categories()[category_].group)).arg(position).arg(count));
         const auto& numbers = pages_->categories()[category_].numbers;
         for (int row = 0; row < table_->rowCount(); ++row) {
-            const config::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
+            const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
             table_->item(row, Note)->setText(localName(info.nameZh, info.nameEn));
             table_->item(row, Note)->setToolTip(localName(info.nameZh, info.nameEn));
         }
@@ -308,23 +308,23 @@ void ParamPage::retranslate() {
     }
 }
 
-QString ParamPage::formatValue(const config::ParameterInfo& info, double value) const {
-    if (info.type == config::ParameterInfo::Type::Select) {
-        for (const config::ParameterOption& option : info.options) {
+QString ParamPage::formatValue(const params::ParameterInfo& info, double value) const {
+    if (info.type == params::ParameterInfo::Type::Select) {
+        for (const params::ParameterOption& option : info.options) {
             if (option.value == value) {
                 return QStringLiteral("%1 %2").arg(value).arg(localName(option.zh, option.en));
             }
         }
     }
-    return info.type == config::ParameterInfo::Type::Real ? QString::number(value, 'f', 3) : QString::number(value);
+    return info.type == params::ParameterInfo::Type::Real ? QString::number(value, 'f', 3) : QString::number(value);
 }
 
-QString ParamPage::rangeText(const config::ParameterInfo& info) const {
-    if (info.type != config::ParameterInfo::Type::Select) {
+QString ParamPage::rangeText(const params::ParameterInfo& info) const {
+    if (info.type != params::ParameterInfo::Type::Select) {
         return QStringLiteral("%1 ~ %2").arg(info.min).arg(info.max);
     }
     QStringList options;
-    for (const config::ParameterOption& option : info.options) {
+    for (const params::ParameterOption& option : info.options) {
         options << QStringLiteral("%1 = %2").arg(option.value).arg(localName(option.zh, option.en));
     }
     return QStringLiteral("\n  ") + options.join(QStringLiteral("\n  "));
@@ -353,21 +353,21 @@ void ParamPage::fillValues(const PanelSnapshot& snapshot) {
 
 void ParamPage::fillInfo() {
     int number = selectedNumber();
-    const config::UserLevel level = context().session().userLevel();
+    const params::UserLevel level = context().session().userLevel();
     const QString current = tr("(now: %1)").arg(UserAccess::levelName(level));
     if (variables_ || number < 0 || !pages_) {
         if (variables_) {
-            info_->setText(tr("User:", "msg 940") + QStringLiteral(" ") + UserAccess::levelName(config::UserLevel::Operator) +
+            info_->setText(tr("User:", "msg 940") + QStringLiteral(" ") + UserAccess::levelName(params::UserLevel::Operator) +
                            QStringLiteral(" ") + current + QStringLiteral("\n\n") +
                            tr("Enter sets the selected variable, as a macro's #%1 = value would.").arg(number));
         }
         return;
     }
-    const config::ParameterInfo& info = *catalogue_->find(number);
+    const params::ParameterInfo& info = *catalogue_->find(number);
     const int group = pages_->categories()[category_].group;
     QStringList lines;
     lines << tr("User:", "msg 940") + QStringLiteral(" ") +
-                 UserAccess::levelName(config::ParameterPages::requiredLevel(group)) + QStringLiteral(" ") + current;
+                 UserAccess::levelName(params::ParameterPages::requiredLevel(group)) + QStringLiteral(" ") + current;
     lines << tr("Param List:", "msg 941") + QStringLiteral(" ") + groupTitle(group);
     lines << tr("Details:", "msg 946") + QStringLiteral(" ") + localName(info.nameZh, info.nameEn) + QStringLiteral(" (") +
                  localName(info.nameEn, info.nameZh) + QStringLiteral(")");

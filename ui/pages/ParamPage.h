@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/config/ParameterCatalogue.h"
-#include "core/config/ParameterPages.h"
+#include "core/params/ParameterCatalogue.h"
+#include "core/params/ParameterPages.h"
 #include "ui/pages/Page.h"
 
 #include <optional>
@@ -33,7 +33,7 @@ public:
     void retranslate() override;
     QJsonObject state() const override;
 
-    using Tab = config::ParameterPages::Tab;
+    using Tab = params::ParameterPages::Tab;
     Tab tab() const;
     bool variablesShown() const { return variables_; }
     int selectedNumber() const; // the parameter (or #variable) of the selected row, -1 when none
@@ -56,11 +56,11 @@ private:
     void fillValues(const PanelSnapshot& snapshot);
     void fillInfo();
     QString groupTitle(int group) const;
-    QString formatValue(const config::ParameterInfo& info, double value) const;
-    QString rangeText(const config::ParameterInfo& info) const;
+    QString formatValue(const params::ParameterInfo& info, double value) const;
+    QString rangeText(const params::ParameterInfo& info) const;
 
-    std::optional<config::ParameterCatalogue> catalogue_;
-    std::optional<config::ParameterPages> pages_;
+    std::optional<params::ParameterCatalogue> catalogue_;
+    std::optional<params::ParameterPages> pages_;
     QString catalogueError_;
     std::size_t category_ = 0;
     bool variables_ = false;

@@ -2,8 +2,8 @@
 // search by number, and 参数备份 / 参数恢复.
 #include "ui/pages/ParamPage.h"
 
-#include "core/config/AtomicFile.h"
-#include "core/config/ParameterBackup.h"
+#include "core/files/AtomicFile.h"
+#include "core/params/ParameterBackup.h"
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/LevelPrompt.h"
 #include "ui/panel/PanelContext.h"
@@ -19,10 +19,10 @@ namespace m350::ui {
 namespace {
 
 // Who may set a #50-#499 variable by hand: a program may anyway, so the lowest signed-in level.
-constexpr config::UserLevel kVariableLevel = config::UserLevel::Operator;
+constexpr params::UserLevel kVariableLevel = params::UserLevel::Operator;
 
 QString backupPath(const PanelContext& context) {
-    return QDir(context.machineFolder()).filePath(QString::fromLatin1(config::kParameterBackupFile));
+    return QDir(context.machineFolder()).filePath(QString::fromLatin1(params::kParameterBackupFile));
 }
 
 } // namespace
@@ -40,14 +40,14 @@ void ParamPage::edit() {
 }
 
 void ParamPage::editParameter(int number) {
-    const config::ParameterInfo& info = *catalogue_->find(number);
-    if (!LevelPrompt::require(context(), config::ParameterPages::requiredLevel(info.group),
+    const params::ParameterInfo& info = *catalogue_->find(number);
+    if (!LevelPrompt::require(context(), params::ParameterPages::requiredLevel(info.group),
                               [this, number] { editParameter(number); })) {
         return;
     }
     QString question = QStringLiteral("[%1] %2").arg(number).arg(
         QString::fromStdString(PanelText::chinese() ? info.nameZh : info.nameEn));
-    if (info.type == config::ParameterInfo::Type::Select) {
+    if (info.type == params::ParameterInfo::Type::Select) {
         question += QStringLiteral(" (") + rangeText(info).trimmed().replace(QStringLiteral("\n  "), QStringLiteral(", ")) +
                     QStringLiteral(")");
     }
@@ -111,8 +111,8 @@ void ParamPage::backup() {
         return;
     }
     QString path = backupPath(context());
-    std::string text = config::formatParameterBackup(s->status.parameters, *catalogue_, s->machineName.toStdString());
-    if (auto error = config::writeFileAtomically(path.toStdString(), text)) {
+    std::string text = params::formatParameterBackup(s->status.parameters, *catalogue_, s->machineName.toStdString());
+    if (auto error = files::writeFileAtomically(path.toStdString(), text)) {
         context().notify(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
         return;
     }
@@ -120,7 +120,7 @@ void ParamPage::backup() {
 }
 
 void ParamPage::restore() {
-    if (!LevelPrompt::require(context(), config::UserLevel::Admin, [this] { restore(); })) {
+    if (!LevelPrompt::require(context(), params::UserLevel::Admin, [this] { restore(); })) {
         return;
     }
     QString path = backupPath(context());
@@ -132,12 +132,12 @@ void ParamPage::restore() {
         if (!yes) {
             return;
         }
-        auto read = config::readParameterBackup(path.toStdString(), *catalogue_);
+        auto read = params::readParameterBackup(path.toStdString(), *catalogue_);
         if (auto* error = std::get_if<std::string>(&read)) {
             context().notify(tr("Parameter restore refused, nothing changed: %1").arg(QString::fromStdString(*error)));
             return;
         }
-        const config::ParameterRestore& restore = std::get<config::ParameterRestore>(read);
+        const params::ParameterRestore& restore = std::get<params::ParameterRestore>(read);
         auto s = context().snapshot();
         std::map<int, double> changed;
         for (auto [number, value] : restore.values) {

@@ -162,7 +162,7 @@ void ProbePage::fixed() {
             context().notify(tr("The current tool No. is 0, this operation is invalid!", "msg 858"));
             return;
         }
-        const config::ParameterTable& p = s->status.parameters;
+        const params::ParameterTable& p = s->status.parameters;
         int most = static_cast<int>(p.get(kCapacity)) + (p.get(kVirtualTools) != 0.0 ? 20 : 0);
         if (tool > most) {
             context().notify(tr("Exceeded the maximum!", "msg 884"));
@@ -268,7 +268,7 @@ bool ProbePage::key(const QString& name) {
 
 void ProbePage::render(const PanelSnapshot& snapshot) {
     const controller::PanelStatus& s = snapshot.status;
-    const config::ParameterTable& p = s.parameters;
+    const params::ParameterTable& p = s.parameters;
     dro_->render(snapshot);
     fields_["coord"]->setText(s.workSystem == 0 ? QStringLiteral("G92") : QStringLiteral("G%1").arg(53 + s.workSystem));
     fields_["tool"]->setText(QStringLiteral("T%1").arg(s.tool));

@@ -1,6 +1,6 @@
 #include "ui/pages/SystemPage.h"
 
-#include "core/config/ParameterPages.h"
+#include "core/params/ParameterPages.h"
 #include "ui/pages/LevelPrompt.h"
 #include "ui/panel/PanelContext.h"
 #include "ui/session/UserAccess.h"
@@ -45,9 +45,9 @@ SystemPage::SystemPage(PanelContext& context, QWidget* parent) : Page(context, p
     grid->setColumnStretch(1, 1);
     column->addLayout(grid);
     column->addStretch(1);
-    if (const auto* catalogue = std::get_if<config::ParameterCatalogue>(&config::ParameterCatalogue::bundled())) {
+    if (const auto* catalogue = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled())) {
         catalogued_ = static_cast<int>(catalogue->all().size());
-        const config::ParameterPages pages(*catalogue);
+        const params::ParameterPages pages(*catalogue);
         for (const auto& category : pages.categories()) {
             listed_ += static_cast<int>(category.numbers.size());
         }

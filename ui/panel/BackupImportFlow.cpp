@@ -1,6 +1,6 @@
 #include "ui/panel/BackupImportFlow.h"
 
-#include "core/config/BackupImport.h"
+#include "core/backup/BackupImport.h"
 #include "ui/panel/PanelContext.h"
 
 #include <QCoreApplication>
@@ -72,10 +72,10 @@ void BackupImportFlow::importInto(const QString& backup, const QString& machineF
         return;
     }
     context_.notify(tr("Importing %1 ...").arg(backup));
-    using Outcome = std::variant<config::BackupImport, config::ImportError>;
+    using Outcome = std::variant<backup::BackupImport, backup::ImportError>;
     auto outcome = std::make_shared<Outcome>();
     worker_ = QThread::create([outcome, from = backup.toStdString(), into = machineFolder.toStdString()] {
-        *outcome = config::importControllerBackup(from, into);
+        *outcome = backup::importControllerBackup(from, into);
     });
     connect(worker_, &QThread::finished, this, [this, outcome] {
         worker_->deleteLater();
@@ -86,14 +86,14 @@ void BackupImportFlow::importInto(const QString& backup, const QString& machineF
     worker_->start();
 }
 
-void BackupImportFlow::report(const std::variant<config::BackupImport, config::ImportError>& outcome) {
-    if (auto* error = std::get_if<config::ImportError>(&outcome)) {
+void BackupImportFlow::report(const std::variant<backup::BackupImport, backup::ImportError>& outcome) {
+    if (auto* error = std::get_if<backup::ImportError>(&outcome)) {
         context_.ask(tr("Import refused:\n%1: %2")
                          .arg(QString::fromStdString(error->file), QString::fromStdString(error->message)),
                      [](bool) {});
         return;
     }
-    const config::BackupImport& r = std::get<config::BackupImport>(outcome);
+    const backup::BackupImport& r = std::get<backup::BackupImport>(outcome);
     const QString folder = QString::fromStdString(r.machineFolder);
     QStringList lines;
     lines << (r.unchanged ? tr("%1 already holds this backup's import; nothing written").arg(folder)
@@ -113,7 +113,7 @@ void BackupImportFlow::report(const std::variant<config::BackupImport, config::I
     if (!r.diagnostics.empty()) {
         lines << tr("%1 syntax errors the simulator does not accept yet").arg(r.diagnostics.size());
     }
-    lines << tr("The whole report: %1").arg(QString::fromLatin1(config::kImportReportFile));
+    lines << tr("The whole report: %1").arg(QString::fromLatin1(backup::kImportReportFile));
     if (!switcher_) {
         lines << QString() << tr("Open it with: m350-hmi --config %1").arg(folder);
         context_.ask(lines.join(QLatin1Char('\n')), [](bool) {});

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/config/BackupImport.h"
+#include "core/backup/BackupImport.h"
 
 #include <QObject>
 #include <QString>
@@ -43,7 +43,7 @@ signals:
 
 private:
     QString chooseFolder(const QString& caption, const QString& start, bool existing) const;
-    void report(const std::variant<config::BackupImport, config::ImportError>& outcome);
+    void report(const std::variant<backup::BackupImport, backup::ImportError>& outcome);
     QThread* worker_ = nullptr;
     PanelContext& context_;
     QWidget* window_;

@@ -104,7 +104,7 @@ void MachineSession::replaceToolTable(const tools::ToolTable& table, const QStri
 void MachineSession::touchOffTool(double workZ) { post([workZ](SessionWorker& w) { w.touchOffTool(workZ); }); }
 void MachineSession::resetToolLife(int group) { post([group](SessionWorker& w) { w.resetToolLife(group); }); }
 void MachineSession::watchVariables(bool on) { post([on](SessionWorker& w) { w.watchVariables(on); }); }
-bool MachineSession::login(config::UserLevel level, const QString& password) {
+bool MachineSession::login(params::UserLevel level, const QString& password) {
     if (!access_.login(level, password)) {
         return false;
     }

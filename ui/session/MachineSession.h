@@ -120,8 +120,8 @@ public:
 
     // 用户权限 (the panel's, not the machine's: answered here at once); snapshots carry the level for
     // the status line from the next frame on.
-    config::UserLevel userLevel() const { return access_.level(); }
-    bool login(config::UserLevel level, const QString& password);
+    params::UserLevel userLevel() const { return access_.level(); }
+    bool login(params::UserLevel level, const QString& password);
     std::optional<QString> changePassword(const QString& password) { return access_.changePassword(password); }
 
     // 仿真: runs the file on a second controller beside the machine (which never moves); speed in

@@ -2,8 +2,8 @@
 
 #include "ui/session/SimulationView.h"
 
-#include "core/config/ParameterPages.h"
-#include "core/config/SystemLog.h"
+#include "core/params/ParameterPages.h"
+#include "core/files/SystemLog.h"
 #include "core/controller/PanelStatus.h"
 #include "core/tools/ToolLifeView.h"
 #include "core/controller/SpindleLoadView.h"
@@ -52,9 +52,9 @@ struct PanelSnapshot {
     int magazineCapacity = 0;
     bool homingPrompt = false; // param 127 = 0 and X, Y, Z not homed: 是否进行开机寻零操作?
     SimulationView simulation; // the Program page's 仿真, beside the machine (Off when none)
-    config::UserLevel userLevel = config::UserLevel::Guest; // 访客 / 操作员 / 管理员 / 超级管理
+    params::UserLevel userLevel = params::UserLevel::Guest; // 访客 / 操作员 / 管理员 / 超级管理
     QVector<double> userVariables; // #50-#499 while the Param page watches them (NaN: vacant), else empty
-    std::shared_ptr<const std::vector<config::LogEntry>> log; // 系统日志, oldest first (shared, never changed)
+    std::shared_ptr<const std::vector<files::LogEntry>> log; // 系统日志, oldest first (shared, never changed)
     WorkRecord workRecord;
     BreakPoints breakPoints;
     // The tool table as it stands (a new object only when it changed), and why the last save of

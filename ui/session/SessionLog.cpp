@@ -11,17 +11,17 @@ SessionLog::SessionLog(const std::string& machineFolder)
     if (!log_.load(&error)) {
         problem_ = QString::fromStdString(error);
     }
-    entries_ = std::make_shared<const std::vector<config::LogEntry>>(log_.entries());
+    entries_ = std::make_shared<const std::vector<files::LogEntry>>(log_.entries());
 }
 
 void SessionLog::record(const char* event, const QString& detail) {
-    config::LogEntry entry{QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")).toStdString(),
+    files::LogEntry entry{QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")).toStdString(),
                            event, detail.toStdString()};
     std::string error;
     if (!log_.append(std::move(entry), &error)) {
         problem_ = QString::fromStdString(error);
     }
-    entries_ = std::make_shared<const std::vector<config::LogEntry>>(log_.entries());
+    entries_ = std::make_shared<const std::vector<files::LogEntry>>(log_.entries());
 }
 
 } // namespace m350::ui

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/config/SystemLog.h"
+#include "core/files/SystemLog.h"
 
 #include <QString>
 
@@ -9,7 +9,7 @@
 
 namespace m350::ui {
 
-using LogEntries = std::shared_ptr<const std::vector<config::LogEntry>>;
+using LogEntries = std::shared_ptr<const std::vector<files::LogEntry>>;
 
 // The session's side of the 系统日志: every operation and alarm, stamped with the wall clock,
 // appended to the machine folder's log, and offered to snapshots as an immutable list that is
@@ -23,7 +23,7 @@ public:
     const QString& problem() const { return problem_; } // why the log cannot be read or written
 
 private:
-    config::SystemLog log_;
+    files::SystemLog log_;
     LogEntries entries_;
     QString problem_;
 };

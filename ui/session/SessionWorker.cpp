@@ -2,12 +2,12 @@
 
 #include "ui/session/SimulationRun.h"
 
-#include "core/config/AtomicFile.h"
+#include "core/files/AtomicFile.h"
 #include "core/config/HookFiles.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/Controller.h"
 #include "core/gcode/Diagnostic.h"
-#include "core/config/ParameterNumbers.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <QDateTime>
 
@@ -281,7 +281,7 @@ void SessionWorker::runMdi(const QStringList& lines, Activity activity, bool thr
     // The MDI page's line goes into the system disk's mdi.nc, which then runs, as on the M350 (its
     // messages name mdi.nc); a folder that cannot be written runs the line directly.
     const std::filesystem::path mdiFile = std::filesystem::path(folder_) / config::hookFile(config::Hook::Mdi).fileName;
-    const bool viaFile = throughMdiFile && !folder_.empty() && !config::writeFileAtomically(mdiFile, body);
+    const bool viaFile = throughMdiFile && !folder_.empty() && !files::writeFileAtomically(mdiFile, body);
     if (!(viaFile ? controller_->loadHook(config::Hook::Mdi) : controller_->loadMdi(text))) {
         refuse(diagnosticsText(controller_->diagnostics()));
         return;
@@ -312,7 +312,7 @@ void SessionWorker::home(const QVector<int>& axes) {
     }
     // the panel's Go Home runs the machine folder's fndzero.nc / fndX.nc (abszero.nc / absX.nc with
     // absolute servos) when it has one
-    const bool absolute = controller_->parameter(config::param::kHomeMode) != 0.0;
+    const bool absolute = controller_->parameter(param::kHomeMode) != 0.0;
     std::optional<config::Hook> hook =
         axes.isEmpty() ? config::goHomeHook(std::nullopt, absolute)
                        : axes.size() == 1 ? config::goHomeHook(axes.front(), absolute) : std::nullopt;
@@ -369,9 +369,9 @@ void SessionWorker::setVariable(int number, double value) {
 
 void SessionWorker::clearWorkRecord() {
     lastError_.clear();
-    controller_->setParameter(config::param::kTotalRunCount, 0.0);
-    controller_->setParameter(config::param::kPieceCount, 0.0);
-    saveParameters({{config::param::kTotalRunCount, 0.0}, {config::param::kPieceCount, 0.0}});
+    controller_->setParameter(param::kTotalRunCount, 0.0);
+    controller_->setParameter(param::kPieceCount, 0.0);
+    saveParameters({{param::kTotalRunCount, 0.0}, {param::kPieceCount, 0.0}});
     workRecord_ = {};
     log_->record("work_record_cleared");
     publish();

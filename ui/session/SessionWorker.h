@@ -3,7 +3,7 @@
 #include "ui/session/MachineSession.h"
 #include "ui/session/SessionLog.h"
 
-#include "core/config/ParameterTable.h"
+#include "core/params/ParameterTable.h"
 #include "core/controller/KeyPress.h"
 #include "core/tools/ToolData.h"
 
@@ -73,7 +73,7 @@ public:
     // SessionWorkerSettings.cpp: the Param page's batch, the #50-#499 view, the user level
     void setParameters(const std::map<int, double>& values);
     void watchVariables(bool on);
-    void setUserLevel(config::UserLevel level);
+    void setUserLevel(params::UserLevel level);
     // SessionWorkerTools.cpp: the tool table page's edits, import and touch off. Every change of
     // the tool data (these, G10 L1, a macro's #1430, the Param page's 930) is saved to the machine
     // folder's tool.tbl before the next snapshot.
@@ -154,9 +154,9 @@ private:
     double spindleOverride_ = 100.0;
     bool jogHigh_ = false;
     std::string folder_; // the machine folder, where params.toml is kept
-    config::ParameterTable kept_; // the parameters as params.toml holds them
+    params::ParameterTable kept_; // the parameters as params.toml holds them
     bool watchVariables_ = false;
-    config::UserLevel userLevel_ = config::UserLevel::Guest;
+    params::UserLevel userLevel_ = params::UserLevel::Guest;
 };
 
 } // namespace m350::ui

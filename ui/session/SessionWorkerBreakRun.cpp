@@ -3,7 +3,7 @@
 // path on one line, the line number on the next, written atomically).
 #include "ui/session/SessionWorker.h"
 
-#include "core/config/AtomicFile.h"
+#include "core/files/AtomicFile.h"
 #include "core/controller/Controller.h"
 
 #include <QDateTime>
@@ -97,7 +97,7 @@ void SessionWorker::keepBreakPoint() {
         return;
     }
     const std::string text = point->file + '\n' + std::to_string(point->line) + '\n';
-    if (auto problem = config::writeFileAtomically(breakPointPath(folder_).toStdString(), text)) {
+    if (auto problem = files::writeFileAtomically(breakPointPath(folder_).toStdString(), text)) {
         lastError_ = QString::fromStdString(*problem);
         return;
     }

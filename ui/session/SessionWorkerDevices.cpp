@@ -5,7 +5,7 @@
 // dprnt.txt keeps only the first and the last of them.
 #include "ui/session/SessionWorker.h"
 
-#include "core/config/OutputFile.h"
+#include "core/files/OutputFile.h"
 #include "core/controller/Controller.h"
 
 #include <filesystem>
@@ -68,7 +68,7 @@ void SessionWorker::saveExternalOutput() {
     externalOutputUnsaved_ = false;
     externalOutputSaved_.start();
     const auto file = std::filesystem::path(folder_) / kExternalOutputFile;
-    if (auto problem = config::writeOutputFile(file, controller_->externalOutput())) {
+    if (auto problem = files::writeOutputFile(file, controller_->externalOutput())) {
         lastError_ = tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*problem);
     }
 }

@@ -2,7 +2,7 @@
 // the user level the status line shows.
 #include "ui/session/SessionWorker.h"
 
-#include "core/config/ParamsFileWriter.h"
+#include "core/params/ParamsFileWriter.h"
 #include "core/controller/Controller.h"
 
 #include <cmath>
@@ -21,7 +21,7 @@ bool SessionWorker::saveParameters(const std::map<int, double>& values) {
     if (folder_.empty()) {
         return true; // a machine built in memory (tests of the core) has no folder to keep
     }
-    if (auto error = config::saveParameters(folder_, values)) {
+    if (auto error = params::saveParameters(folder_, values)) {
         refuse(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
         return false;
     }
@@ -36,7 +36,7 @@ bool SessionWorker::saveParameters(const std::map<int, double>& values) {
 // stops, the parameters it changed go into params.toml (tool.tbl is kept by keepToolTable).
 void SessionWorker::keepParametersTheRunChanged() {
     std::map<int, double> changed;
-    for (int number = 0; number < config::ParameterTable::kCount; ++number) {
+    for (int number = 0; number < params::ParameterTable::kCount; ++number) {
         const double now = controller_->parameter(number);
         if (now != kept_.get(number)) {
             changed[number] = now;
@@ -76,7 +76,7 @@ QVector<double> SessionWorker::userVariables() {
     return values;
 }
 
-void SessionWorker::setUserLevel(config::UserLevel level) {
+void SessionWorker::setUserLevel(params::UserLevel level) {
     userLevel_ = level;
     publish();
 }

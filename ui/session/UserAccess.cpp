@@ -1,6 +1,6 @@
 #include "ui/session/UserAccess.h"
 
-#include "core/config/AtomicFile.h"
+#include "core/files/AtomicFile.h"
 
 #include <QCryptographicHash>
 #include <QDir>
@@ -34,7 +34,7 @@ QByteArray digest(const QString& password, const QByteArray& salt) {
     return out;
 }
 
-std::size_t index(config::UserLevel level) { return static_cast<std::size_t>(level); }
+std::size_t index(params::UserLevel level) { return static_cast<std::size_t>(level); }
 
 } // namespace
 
@@ -131,7 +131,7 @@ std::optional<QString> UserAccess::save() const {
                     stored_[level]->hash.toHex().toStdString() + "\"\n";
         }
     }
-    if (auto error = config::writeFileAtomically(QDir(folder_).filePath(fileName()).toStdString(), text)) {
+    if (auto error = files::writeFileAtomically(QDir(folder_).filePath(fileName()).toStdString(), text)) {
         return QString::fromStdString(*error);
     }
     return std::nullopt;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/config/ParameterPages.h"
+#include "core/params/ParameterPages.h"
 
 #include <QByteArray>
 #include <QCoreApplication>
@@ -19,7 +19,7 @@ class UserAccess {
     Q_DECLARE_TR_FUNCTIONS(m350::ui::UserAccess)
 
 public:
-    using Level = config::UserLevel;
+    using Level = params::UserLevel;
     static constexpr int kMinimumLength = 6; // msg 918: fewer than 6 characters are refused
 
     explicit UserAccess(QString folder);

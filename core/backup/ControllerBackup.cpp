@@ -1,0 +1,261 @@
+#include "core/backup/ControllerBackup.h"
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace m350::backup {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Beyond these a value is not a parameter or an offset but bytes that are not float64: a file of
+// 32-bit numbers, text, or a big-endian copy decodes to magnitudes like 1e-310 or 1e+200.
+constexpr double kLargestPlausible = 1e12;
+constexpr double kSmallestPlausible = 1e-12;
+
+struct Failure {
+    BackupError error;
+};
+
+[[noreturn]] void fail(const fs::path& file, std::string message) {
+    throw Failure{{file.string(), std::move(message)}};
+}
+
+std::string readBytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        fail(file, "cannot read");
+    }
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    if (in.bad()) {
+        fail(file, "cannot read");
+    }
+    return bytes.str();
+}
+
+double littleEndianDouble(const char* bytes) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, bytes, sizeof bits);
+    if constexpr (std::endian::native == std::endian::big) {
+        std::uint64_t swapped = 0;
+        for (int i = 0; i < 8; ++i) {
+            swapped = (swapped << 8) | ((bits >> (8 * i)) & 0xffu);
+        }
+        bits = swapped;
+    }
+    return std::bit_cast<double>(bits);
+}
+
+// The name of value `index` of a table in messages: "parameter 129 (浮动对刀仪厚度 Floating tool
+// set thickness)" or "#805 (G54 X)".
+using IndexName = std::string (*)(int index, const params::ParameterCatalogue* catalogue);
+
+std::string parameterName(int index, const params::ParameterCatalogue* catalogue) {
+    std::string name = "parameter " + std::to_string(index);
+    if (const params::ParameterInfo* info = catalogue ? catalogue->find(index) : nullptr) {
+        name += " (" + info->nameZh + " " + info->nameEn + ")";
+    }
+    return name;
+}
+
+std::string offsetName(int index, const params::ParameterCatalogue*) {
+    static constexpr const char* systems[] = {"G92", "G54", "G55", "G56", "G57", "G58", "G59", "G52", "common offset"};
+    static constexpr const char* axes[] = {"X", "Y", "Z", "4th", "5th"};
+    return "#" + std::to_string(800 + index) + " (" + systems[index / 5] + " " + axes[index % 5] + ")";
+}
+
+std::vector<double> readTable(const fs::path& file, std::size_t count, const char* what, IndexName name,
+                              const params::ParameterCatalogue* catalogue) {
+    const std::string bytes = readBytes(file);
+    const std::size_t expected = count * sizeof(double);
+    if (bytes.size() != expected) {
+        std::string message = "holds " + std::to_string(bytes.size()) + " bytes; " + what + " holds " +
+                              std::to_string(count) + " little-endian float64 (" + std::to_string(expected) +
+                              " bytes)";
+        if (bytes.size() < expected) {
+            message += ": truncated, the values from " + name(static_cast<int>(bytes.size() / 8), catalogue) +
+                       " on are missing";
+        }
+        fail(file, message + "; nothing imported");
+    }
+    std::vector<double> values(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        values[i] = littleEndianDouble(bytes.data() + i * sizeof(double));
+        if (auto why = implausibleValue(values[i])) {
+            fail(file, "offset " + std::to_string(i * sizeof(double)) + ", " + name(static_cast<int>(i), catalogue) +
+                           ": " + *why + "; the file is damaged, nothing imported");
+        }
+    }
+    return values;
+}
+
+params::ParameterTable parameterTable(const std::vector<double>& values) {
+    params::ParameterTable table;
+    for (int n = 0; n < params::ParameterTable::kCount; ++n) {
+        table.set(n, values[static_cast<std::size_t>(n)]);
+    }
+    return table;
+}
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+bool isElf(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    char magic[4] = {};
+    return in.read(magic, 4) && std::memcmp(magic, "\x7f" "ELF", 4) == 0;
+}
+
+// Why a file of the system disk is not copied into the machine folder.
+std::string skipReason(const fs::path& file) {
+    const std::string ext = lowercase(file.extension().string());
+    const std::string stem = lowercase(file.stem().string());
+    if (ext == ".bmp" || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".gif" || ext == ".ico") {
+        return "image (the panel draws its own screens)";
+    }
+    if (ext == ".ko") {
+        return "kernel module (the controller's drivers)";
+    }
+    if (ext == ".ttf" || ext == ".ttc" || ext == ".otf" || ext == ".fnt" || ext == ".fon" || ext == ".bdf" ||
+        ext == ".pcf") {
+        return "font";
+    }
+    if (ext == ".log" || stem.find("log") != std::string::npos) {
+        return "log";
+    }
+    if (ext.empty() && (stem == "eng" || stem == "chs" || stem == "cht" || stem == "rus")) {
+        return "string table (the panel's words come from resources/firmware-ui-strings.tsv)";
+    }
+    if (ext == ".so" || isElf(file)) {
+        return "controller program or library (ELF)";
+    }
+    return "not used by the simulator";
+}
+
+constexpr const char* kDataFiles[] = {"setting", "default_setting", "coordinate", "mdiblock"};
+
+// `folder`/`name`, or the top-level file with that name in another case.
+fs::path dataFile(const fs::path& folder, const char* name) {
+    if (fs::is_regular_file(folder / name)) {
+        return folder / name;
+    }
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+        if (entry.is_regular_file() && sameNameAnyCase(entry.path().filename().string(), name)) {
+            return entry.path();
+        }
+    }
+    return folder / name;
+}
+
+// Every .nc file (its bytes) and every other file (why it is skipped), in name order.
+void listFiles(const fs::path& folder, ControllerBackup& backup) {
+    for (auto it = fs::recursive_directory_iterator(folder); it != fs::recursive_directory_iterator(); ++it) {
+        const fs::directory_entry& entry = *it;
+        const std::string name = fs::relative(entry.path(), folder).generic_string();
+        if (entry.is_symlink()) {
+            backup.skipped.push_back({name, "a link (not followed)"});
+            continue;
+        }
+        if (entry.is_directory()) {
+            continue;
+        }
+        if (!entry.is_regular_file()) {
+            backup.skipped.push_back({name, "not a regular file"});
+            continue;
+        }
+        if (std::any_of(std::begin(kDataFiles), std::end(kDataFiles),
+                        [&name](const char* data) { return sameNameAnyCase(name, data); })) {
+            continue; // read as data
+        }
+        if (lowercase(entry.path().extension().string()) == ".nc") {
+            backup.programs.push_back({name, readBytes(entry.path())});
+        } else {
+            backup.skipped.push_back({name, skipReason(entry.path())});
+        }
+    }
+    std::sort(backup.programs.begin(), backup.programs.end(),
+              [](const BackupFile& a, const BackupFile& b) { return a.name < b.name; });
+    std::sort(backup.skipped.begin(), backup.skipped.end(),
+              [](const SkippedFile& a, const SkippedFile& b) { return a.name < b.name; });
+}
+
+} // namespace
+
+bool sameNameAnyCase(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+const BackupFile* findProgram(const ControllerBackup& backup, std::string_view name) {
+    for (const BackupFile& file : backup.programs) {
+        if (sameNameAnyCase(file.name, name)) {
+            return &file;
+        }
+    }
+    return nullptr;
+}
+
+std::optional<std::string> implausibleValue(double value) {
+    if (std::isnan(value)) {
+        return "the value is nan";
+    }
+    if (std::isinf(value)) {
+        return std::string("the value is ") + (value > 0 ? "infinity" : "-infinity");
+    }
+    const double magnitude = std::abs(value);
+    if (magnitude > kLargestPlausible || (magnitude != 0.0 && magnitude < kSmallestPlausible)) {
+        std::ostringstream text;
+        text << "the value " << value << " is no parameter or offset a controller stores";
+        return text.str();
+    }
+    return std::nullopt;
+}
+
+std::variant<ControllerBackup, BackupError> readControllerBackup(const fs::path& folder,
+                                                                 const params::ParameterCatalogue* catalogue) {
+    ControllerBackup backup;
+    try {
+        if (!fs::is_directory(folder)) {
+            fail(folder, "not a folder: a controller backup is the folder that holds `setting`, slib-g.nc ...");
+        }
+        const fs::path setting = dataFile(folder, "setting");
+        if (!fs::is_regular_file(setting)) {
+            fail(setting, "not found: a controller backup (the M350's system disk) holds its parameters in `setting`");
+        }
+        backup.setting =
+            parameterTable(readTable(setting, params::ParameterTable::kCount, "a setting file", parameterName, catalogue));
+        if (const fs::path defaults = dataFile(folder, "default_setting"); fs::is_regular_file(defaults)) {
+            backup.defaultSetting = parameterTable(
+                readTable(defaults, params::ParameterTable::kCount, "a setting file", parameterName, catalogue));
+        }
+        if (const fs::path coordinate = dataFile(folder, "coordinate"); fs::is_regular_file(coordinate)) {
+            std::vector<double> offsets =
+                readTable(coordinate, kCoordinateCount, "a coordinate file", offsetName, catalogue);
+            backup.coordinate.emplace();
+            std::copy(offsets.begin(), offsets.end(), backup.coordinate->begin());
+        }
+        if (const fs::path mdi = dataFile(folder, "mdiblock"); fs::is_regular_file(mdi)) {
+            backup.mdiblock = readBytes(mdi);
+        }
+        listFiles(folder, backup);
+    } catch (const Failure& f) {
+        return f.error;
+    } catch (const fs::filesystem_error& e) {
+        return BackupError{e.path1().empty() ? folder.string() : e.path1().string(), e.code().message()};
+    }
+    return backup;
+}
+
+} // namespace m350::backup

@@ -1,0 +1,137 @@
+#include "core/files/AtomicFile.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace m350::files {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t kChunk = 64 * 1024;
+
+std::string failure(const fs::path& file, const char* what) {
+    return file.string() + ": " + what + ": " + std::strerror(errno);
+}
+
+// Closes the descriptor on every path out of writeFileAtomically.
+class Descriptor {
+public:
+    explicit Descriptor(int fd) : fd_(fd) {}
+    Descriptor(const Descriptor&) = delete;
+    Descriptor& operator=(const Descriptor&) = delete;
+    ~Descriptor() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    int get() const { return fd_; }
+    bool close() {
+        int fd = fd_;
+        fd_ = -1;
+        return ::close(fd) == 0;
+    }
+
+private:
+    int fd_;
+};
+
+std::optional<std::string> writeAll(int fd, const fs::path& temp, std::string_view content,
+                                    const AtomicWriteHooks& hooks) {
+    std::size_t done = 0;
+    while (done < content.size()) {
+        std::size_t size = std::min(kChunk, content.size() - done);
+        ssize_t n = ::write(fd, content.data() + done, size);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return failure(temp, "cannot write");
+        done += static_cast<std::size_t>(n);
+        if (hooks.afterChunk) hooks.afterChunk(done);
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+std::variant<TempFile, std::string> createTempBeside(const fs::path& target, unsigned mode) {
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    std::string pattern =
+        (folder / ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".XXXXXX")).string();
+    const int fd = ::mkostemp(pattern.data(), O_CLOEXEC);
+    if (fd < 0) {
+        return failure(target, "cannot create a file beside it");
+    }
+    ::fchmod(fd, static_cast<mode_t>(mode));
+    return TempFile{fd, pattern};
+}
+
+std::vector<fs::path> staleTempFiles(const fs::path& target) {
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    const std::string prefix = "." + target.filename().string() + ".";
+    std::vector<fs::path> stale;
+    std::error_code ec;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) {
+            continue;
+        }
+        const std::string rest = name.substr(prefix.size()); // PID.XXXXXX, or "tmp" (the one shared name of old)
+        const std::size_t dot = rest.find('.');
+        if (rest == "tmp") {
+            stale.push_back(it->path());
+            continue;
+        }
+        if (dot == 0 || dot == std::string::npos || rest.size() - dot != 7 ||
+            rest.find_first_not_of("0123456789") != dot) {
+            continue; // not a temp file of ours
+        }
+        const long pid = std::strtol(rest.c_str(), nullptr, 10);
+        const bool writerAlive = pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+        if (!writerAlive) {
+            stale.push_back(it->path());
+        }
+    }
+    return stale;
+}
+
+std::optional<std::string> writeFileAtomically(const fs::path& path, std::string_view content,
+                                               const AtomicWriteHooks& hooks) {
+    mode_t mode = 0644;
+    struct stat existing {};
+    if (::stat(path.c_str(), &existing) == 0) mode = existing.st_mode & 07777;
+    auto created = createTempBeside(path, mode);
+    if (auto* error = std::get_if<std::string>(&created)) return *error;
+    const fs::path temp = std::get<TempFile>(created).path;
+    Descriptor file(std::get<TempFile>(created).descriptor);
+    if (auto error = writeAll(file.get(), temp, content, hooks)) {
+        ::unlink(temp.c_str());
+        return error;
+    }
+    if (::fsync(file.get()) != 0 || !file.close()) {
+        std::string error = failure(temp, "cannot sync");
+        ::unlink(temp.c_str());
+        return error;
+    }
+    if (hooks.beforeRename) hooks.beforeRename();
+    if (::rename(temp.c_str(), path.c_str()) != 0) {
+        std::string error = failure(path, "cannot replace");
+        ::unlink(temp.c_str());
+        return error;
+    }
+    for (const fs::path& stale : staleTempFiles(path)) {
+        ::unlink(stale.c_str());
+    }
+    return syncFolder(path.parent_path().empty() ? fs::path(".") : path.parent_path());
+}
+
+std::optional<std::string> syncFolder(const fs::path& folder) {
+    Descriptor directory(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+    if (directory.get() < 0 || ::fsync(directory.get()) != 0) return failure(folder, "cannot sync the folder");
+    return std::nullopt;
+}
+
+} // namespace m350::files

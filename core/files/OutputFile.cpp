@@ -1,0 +1,102 @@
+#include "core/files/OutputFile.h"
+
+#include "core/files/AtomicFile.h"
+
+#include <cerrno>
+#include <cstring>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace m350::files {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string failure(const fs::path& file, const char* what, int error) {
+    return file.string() + ": " + what + ": " + std::strerror(error);
+}
+
+} // namespace
+
+OutputFile::OutputFile(fs::path target, fs::path temp) : target_(std::move(target)), temp_(std::move(temp)) {}
+
+std::variant<std::unique_ptr<OutputFile>, std::string> OutputFile::open(const fs::path& target) {
+    struct stat existing {};
+    const bool exists = ::stat(target.c_str(), &existing) == 0;
+    if (exists && S_ISDIR(existing.st_mode)) {
+        return target.string() + ": cannot write: it is a folder";
+    }
+    if (exists && !S_ISREG(existing.st_mode)) {
+        std::unique_ptr<OutputFile> direct(new OutputFile(target, {}));
+        direct->stream_.open(target, std::ios::binary);
+        if (!direct->stream_) {
+            return failure(target, "cannot open", errno);
+        }
+        return direct;
+    }
+    auto created = createTempBeside(target, exists ? existing.st_mode & 07777 : 0644);
+    if (auto* error = std::get_if<std::string>(&created)) {
+        return *error;
+    }
+    const TempFile temp = std::get<TempFile>(created);
+    ::close(temp.descriptor);
+    std::unique_ptr<OutputFile> file(new OutputFile(target, temp.path));
+    file->stream_.open(temp.path, std::ios::binary | std::ios::trunc);
+    if (!file->stream_) {
+        return failure(target, "cannot open", errno);
+    }
+    return file;
+}
+
+OutputFile::~OutputFile() {
+    if (!committed_ && !temp_.empty()) {
+        stream_.close();
+        ::unlink(temp_.c_str());
+    }
+}
+
+std::optional<std::string> OutputFile::commit() {
+    errno = 0;
+    stream_.flush();
+    if (!stream_) {
+        return failure(target_, "cannot write", errno != 0 ? errno : EIO);
+    }
+    stream_.close();
+    if (!stream_) {
+        return failure(target_, "cannot write", errno != 0 ? errno : EIO);
+    }
+    if (temp_.empty()) {
+        committed_ = true;
+        return std::nullopt;
+    }
+    const int fd = ::open(temp_.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0 || ::fsync(fd) != 0) {
+        const int error = errno;
+        if (fd >= 0) ::close(fd);
+        return failure(target_, "cannot sync", error);
+    }
+    ::close(fd);
+    if (::rename(temp_.c_str(), target_.c_str()) != 0) {
+        return failure(target_, "cannot replace", errno);
+    }
+    committed_ = true;
+    for (const fs::path& stale : staleTempFiles(target_)) {
+        ::unlink(stale.c_str());
+    }
+    return syncFolder(target_.parent_path().empty() ? fs::path(".") : target_.parent_path());
+}
+
+std::optional<std::string> writeOutputFile(const fs::path& target, std::string_view content) {
+    auto opened = OutputFile::open(target);
+    if (auto* error = std::get_if<std::string>(&opened)) {
+        return *error;
+    }
+    OutputFile& file = *std::get<std::unique_ptr<OutputFile>>(opened);
+    file.stream().write(content.data(), static_cast<std::streamsize>(content.size()));
+    return file.commit();
+}
+
+} // namespace m350::files

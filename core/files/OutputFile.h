@@ -1,0 +1,41 @@
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace m350::files {
+
+// A file a run writes as its result (the trace, DPRNT output, the tool table after the run). It is
+// written to a temp file of its own beside the target and renamed over the target once complete,
+// so runs writing one file at once leave one whole file (the last), never interleaved lines, and a
+// run that fails to write leaves the old file. A target that exists and is not a regular file
+// (/dev/null, /dev/stdout, a FIFO) is written directly. Every write error is reported.
+class OutputFile {
+public:
+    // The file opened for writing, or why not (naming the file).
+    static std::variant<std::unique_ptr<OutputFile>, std::string> open(const std::filesystem::path& target);
+    ~OutputFile(); // removes the temp file unless commit() succeeded
+    OutputFile(const OutputFile&) = delete;
+    OutputFile& operator=(const OutputFile&) = delete;
+
+    std::ostream& stream() { return stream_; }
+    // Flushes, syncs and renames the temp file over the target; nullopt on success, else why.
+    std::optional<std::string> commit();
+
+private:
+    OutputFile(std::filesystem::path target, std::filesystem::path temp);
+    std::filesystem::path target_;
+    std::filesystem::path temp_; // empty when the target is written directly
+    std::ofstream stream_;
+    bool committed_ = false;
+};
+
+// Writes `content` as one OutputFile; nullopt on success, else why.
+std::optional<std::string> writeOutputFile(const std::filesystem::path& target, std::string_view content);
+
+} // namespace m350::files

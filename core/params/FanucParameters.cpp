@@ -1,0 +1,64 @@
+#include "core/params/FanucParameters.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace m350::params {
+
+namespace {
+
+struct Simulated {
+    int number;
+    double low;
+    double high;
+    double defaultValue;
+};
+
+// The article on spindle-load breakage detection: Load% = L / 32767 x lambda, lambda default 143.
+constexpr Simulated kSimulated[] = {
+    {kLoadMeterFullScale, 1.0, 1000.0, 143.0},
+};
+
+const Simulated* find(int number) {
+    for (const Simulated& p : kSimulated) {
+        if (p.number == number) {
+            return &p;
+        }
+    }
+    return nullptr;
+}
+
+} // namespace
+
+bool isFanucParameterNumber(int number) {
+    return number >= kFirstFanucParameter && number <= kLastFanucParameter;
+}
+
+std::optional<std::string> refusedFanucParameter(int number, double value) {
+    if (!std::isfinite(value)) {
+        return "parameter " + std::to_string(number) + " must be a finite number";
+    }
+    if (const Simulated* p = find(number); p && (value < p->low || value > p->high)) {
+        char text[128];
+        std::snprintf(text, sizeof text, "parameter %d must be from %g to %g", number, p->low, p->high);
+        return std::string(text);
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> unreadFanucParameter(int number) {
+    if (find(number)) {
+        return std::nullopt;
+    }
+    return "FANUC parameter " + std::to_string(number) + " is not simulated (kept as written)";
+}
+
+double fanucParameter(const std::map<int, double>& values, int number) {
+    if (auto it = values.find(number); it != values.end()) {
+        return it->second;
+    }
+    const Simulated* p = find(number);
+    return p ? p->defaultValue : 0.0;
+}
+
+} // namespace m350::params

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace m350::params {
+
+// FANUC parameters (numbers 1000-99999) on FANUC-dialect machines: params.toml and --param keep
+// them beside the shared 0-999 table. The simulator reads the ones listed in FanucParameters.cpp;
+// others are kept as written, with a warning that nothing reads them.
+inline constexpr int kFirstFanucParameter = 1000;
+inline constexpr int kLastFanucParameter = 99999;
+inline constexpr int kLoadMeterFullScale = 4127; // lambda: the load % the meter's full scale stands for
+
+bool isFanucParameterNumber(int number);
+
+// Why `value` cannot be parameter `number` (not finite, outside the simulated parameter's range).
+std::optional<std::string> refusedFanucParameter(int number, double value);
+
+// A warning for a number the simulator does not read, to be shown beside the file or option.
+std::optional<std::string> unreadFanucParameter(int number);
+
+// The parameter's value, or the FANUC default when the machine does not set it.
+double fanucParameter(const std::map<int, double>& values, int number);
+
+} // namespace m350::params

@@ -1,0 +1,206 @@
+#include "core/params/ParameterCatalogue.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <string_view>
+#include <system_error>
+
+namespace m350::params {
+
+namespace {
+
+constexpr std::string_view kHeader =
+    "number\tgroup\tgroup_zh\tgroup_en\tname_zh\tname_en\tunit\ttype\tmin\tmax\toptions\tdefault\thidden";
+constexpr std::size_t kColumns = 13;
+
+struct LineError {
+    std::string message;
+};
+
+std::vector<std::string_view> split(std::string_view text, char separator) {
+    std::vector<std::string_view> parts;
+    for (std::size_t start = 0;;) {
+        std::size_t end = text.find(separator, start);
+        parts.push_back(text.substr(start, end == std::string_view::npos ? end : end - start));
+        if (end == std::string_view::npos) return parts;
+        start = end + 1;
+    }
+}
+
+std::string_view trim(std::string_view text) {
+    while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+    while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+    return text;
+}
+
+double parseNumber(std::string_view text, std::string_view what) {
+    double value = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+        throw LineError{std::string(what) + " '" + std::string(text) + "' is not a number"};
+    return value == 0 ? 0.0 : value; // the source writes "-0" for one minimum; show it as 0
+}
+
+int parseInt(std::string_view text, std::string_view what) {
+    int value = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size())
+        throw LineError{std::string(what) + " '" + std::string(text) + "' is not a whole number"};
+    return value;
+}
+
+// "zh/en" splits at the first '/' after which no CJK follows, since Chinese option names may hold
+// a '/' themselves ("脉冲/度/pulse/deg"). UTF-8 lead bytes 0xE3 and up start code points from U+3000
+// (CJK punctuation, ideographs, full-width forms); the Latin-1 mojibake in some names stays below.
+ParameterOption parseOption(std::string_view text) {
+    auto equals = text.find('=');
+    if (equals == std::string_view::npos) throw LineError{"option '" + std::string(text) + "' lacks '='"};
+    ParameterOption option;
+    option.value = parseNumber(trim(text.substr(0, equals)), "option value");
+    std::string_view names = trim(text.substr(equals + 1));
+    auto lastCjk = std::find_if(names.rbegin(), names.rend(),
+                                [](char c) { return static_cast<unsigned char>(c) >= 0xE3; });
+    auto slash = names.find('/', static_cast<std::size_t>(names.rend() - lastCjk));
+    if (slash == std::string_view::npos)
+        throw LineError{"option '" + std::string(text) + "' is not value=zh/en"};
+    option.zh = std::string(names.substr(0, slash));
+    option.en = std::string(names.substr(slash + 1));
+    return option;
+}
+
+// The fields of a row, without a vector per row (m350-sim reads the whole catalogue at start-up).
+std::array<std::string_view, kColumns> columns(std::string_view line) {
+    std::array<std::string_view, kColumns> fields;
+    std::size_t count = 0;
+    for (std::size_t start = 0;; ++count) {
+        const std::size_t end = line.find('\t', start);
+        if (count < kColumns) {
+            fields[count] = line.substr(start, end == std::string_view::npos ? end : end - start);
+        }
+        if (end == std::string_view::npos) {
+            break;
+        }
+        start = end + 1;
+    }
+    if (count + 1 != kColumns)
+        throw LineError{"expected " + std::to_string(kColumns) + " tab-separated fields, found " +
+                        std::to_string(count + 1)};
+    return fields;
+}
+
+ParameterInfo parseRow(std::string_view line) {
+    const auto f = columns(line);
+    ParameterInfo p;
+    p.number = parseInt(f[0], "number");
+    p.group = parseInt(f[1], "group");
+    p.groupZh = f[2];
+    p.groupEn = f[3];
+    p.nameZh = f[4];
+    p.nameEn = f[5];
+    p.unit = f[6];
+    if (f[7] == "int") p.type = ParameterInfo::Type::Int;
+    else if (f[7] == "real") p.type = ParameterInfo::Type::Real;
+    else if (f[7] == "select") p.type = ParameterInfo::Type::Select;
+    else throw LineError{"type '" + std::string(f[7]) + "' is not int, real or select"};
+    p.min = parseNumber(f[8], "min");
+    p.max = parseNumber(f[9], "max");
+    if (p.min > p.max) throw LineError{"min is above max"};
+    if (!f[10].empty())
+        for (std::string_view option : split(f[10], ';')) p.options.push_back(parseOption(trim(option)));
+    if (p.type == ParameterInfo::Type::Select && p.options.empty())
+        throw LineError{"select parameter without options"};
+    // The CAM-teach rows have no factory default; 0 (kept within range) is what a blank form shows.
+    p.defaultValue = f[11].empty() ? std::clamp(0.0, p.min, p.max) : parseNumber(f[11], "default");
+    if (f[12] != "0" && f[12] != "1") throw LineError{"hidden must be 0 or 1"};
+    p.hidden = f[12] == "1";
+    return p;
+}
+
+std::string formatNumber(double value) {
+    char buffer[64];
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+} // namespace
+
+std::variant<ParameterCatalogue, std::string> ParameterCatalogue::load(const std::string& tsvPath) {
+    std::ifstream in(tsvPath, std::ios::binary);
+    if (!in) return "cannot open parameter catalogue " + tsvPath;
+    ParameterCatalogue catalogue;
+    catalogue.params_.reserve(640); // the bundled catalogue's 584 rows, without regrowing
+    std::string line;
+    int lineNumber = 0;
+    try {
+        while (std::getline(in, line)) {
+            ++lineNumber;
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            if (lineNumber == 1) {
+                if (line != kHeader) throw LineError{"header is not the parameter catalogue's"};
+                continue;
+            }
+            if (line.empty()) continue;
+            ParameterInfo p = parseRow(line);
+            if (!catalogue.index_.emplace(p.number, catalogue.params_.size()).second)
+                throw LineError{"parameter " + std::to_string(p.number) + " appears twice"};
+            catalogue.params_.push_back(std::move(p));
+        }
+    } catch (const LineError& e) {
+        return tsvPath + ":" + std::to_string(lineNumber) + ": " + e.message;
+    }
+    if (lineNumber == 0) return tsvPath + ":1: file is empty";
+    return catalogue;
+}
+
+std::string ParameterCatalogue::bundledPath() {
+    return std::string(M350_RESOURCE_DIR) + "/parameters/m350-parameters.tsv";
+}
+
+const std::variant<ParameterCatalogue, std::string>& ParameterCatalogue::bundled() {
+    static const std::variant<ParameterCatalogue, std::string> catalogue = load(bundledPath());
+    return catalogue;
+}
+
+const ParameterInfo* ParameterCatalogue::find(int number) const {
+    auto it = index_.find(number);
+    return it == index_.end() ? nullptr : &params_[it->second];
+}
+
+std::optional<std::string> ParameterCatalogue::validate(int number, double value) const {
+    const ParameterInfo* p = find(number);
+    if (p == nullptr) return "parameter " + std::to_string(number) + " is not in the catalogue";
+    // The words are put together only for a refusal: a machine folder's every parameter is checked.
+    auto refusal = [&](const std::string& rule) {
+        return "parameter " + std::to_string(number) + " (" + p->nameEn + ") must be " + rule + ", not " +
+               formatNumber(value);
+    };
+    auto range = [p] { return "from " + formatNumber(p->min) + " to " + formatNumber(p->max); };
+    switch (p->type) {
+    case ParameterInfo::Type::Int:
+        // Written as negations so that NaN is refused too.
+        if (!(value == std::floor(value) && value >= p->min && value <= p->max))
+            return refusal("a whole number " + range());
+        return std::nullopt;
+    case ParameterInfo::Type::Real:
+        if (!(value >= p->min && value <= p->max)) return refusal(range());
+        return std::nullopt;
+    case ParameterInfo::Type::Select:
+        break;
+    }
+    std::string choices;
+    for (const ParameterOption& option : p->options) {
+        if (option.value == value) return std::nullopt;
+        choices += (choices.empty() ? "" : ", ") + formatNumber(option.value) + " (" + option.en + ")";
+    }
+    return refusal("one of " + choices);
+}
+
+void ParameterCatalogue::applyDefaults(ParameterTable& table) const {
+    for (const ParameterInfo& p : params_)
+        if (ParameterTable::valid(p.number)) table.set(p.number, p.defaultValue);
+}
+
+} // namespace m350::params
