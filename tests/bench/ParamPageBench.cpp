@@ -2,8 +2,8 @@
 // table filled with that group's rows and values, and the row selected. Each search lands in
 // another group (Process, Tools' 144 rows, the input ports, Machine), so the table is refilled.
 #include "core/config/MachineConfig.h"
+#include "ui/pages/PanelContext.h"
 #include "ui/pages/ParamPage.h"
-#include "ui/panel/PanelContext.h"
 #include "ui/session/MachineSession.h"
 
 #include <QCoreApplication>

@@ -1,17 +1,17 @@
 #include "ui/actions/ActionDispatcher.h"
 
+#include "ui/actions/PanelScreen.h"
 #include "ui/pages/Page.h"
+#include "ui/pages/PanelPrompt.h"
 #include "ui/panel/KeyPad.h"
-#include "ui/panel/MainWindow.h"
-#include "ui/panel/PromptBox.h"
 #include "ui/session/MachineSession.h"
 
 #include <QHash>
 
 namespace m350::ui {
 
-ActionDispatcher::ActionDispatcher(MainWindow& window, MachineSession& session)
-    : QObject(&window), window_(window), session_(session) {}
+ActionDispatcher::ActionDispatcher(PanelScreen& screen, MachineSession& session, QObject* parent)
+    : QObject(parent), screen_(screen), session_(session) {}
 
 void ActionDispatcher::dispatch(const OperatorAction& action) {
     using Kind = OperatorAction::Kind;
@@ -26,20 +26,20 @@ void ActionDispatcher::dispatch(const OperatorAction& action) {
             screenKey(action.name);
         }
         break;
-    case Kind::Softkey: window_.pressSoftkey(action.softkey); break;
+    case Kind::Softkey: screen_.pressSoftkey(action.softkey); break;
     case Kind::Text:
-        if (window_.prompt()->active()) {
-            window_.prompt()->type(action.text);
+        if (screen_.prompt()->active()) {
+            screen_.prompt()->type(action.text);
         } else {
-            window_.currentPage()->typed(action.text);
+            screen_.currentPage()->typed(action.text);
         }
         break;
     case Kind::Wheel:
         session_.wheel(action.wheel.axis, action.wheel.step, action.wheel.detents, action.wheel.seconds);
         break;
-    case Kind::Page: window_.showPage(action.name); break;
+    case Kind::Page: screen_.showPage(action.name); break;
     case Kind::Force: force(action.force); break;
-    case Kind::Language: window_.setLanguage(action.name); break;
+    case Kind::Language: screen_.setLanguage(action.name); break;
     case Kind::Load: session_.loadProgram(action.name); break;
     }
     emit dispatched(action);
@@ -77,7 +77,7 @@ bool ActionDispatcher::machineKey(const OperatorAction& action) {
     } else if (steps.contains(key)) {
         session_.setJogStep(steps.value(key));
     } else if (key == QLatin1String("STEP_INPUT")) {
-        window_.askJogStep();
+        screen_.askJogStep();
     } else if (key == QLatin1String("EXT_START")) {
         session_.pressExternStart();
     } else {
@@ -102,7 +102,7 @@ void ActionDispatcher::jogKey(const OperatorAction& action) {
 
 // Keys for the screen: the prompt first, then page keys, then the current page.
 void ActionDispatcher::screenKey(const QString& name) {
-    PromptBox* prompt = window_.prompt();
+    PanelPrompt* prompt = screen_.prompt();
     if (prompt->active()) {
         if (name == QLatin1String("ENTER")) {
             prompt->confirm();
@@ -114,11 +114,11 @@ void ActionDispatcher::screenKey(const QString& name) {
         return;
     }
     if (KeyPad::pageKeys().contains(name)) {
-        window_.showPage(KeyPad::pageKeys().value(name));
+        screen_.showPage(KeyPad::pageKeys().value(name));
     } else if (name.size() == 2 && name.at(0) == QLatin1Char('F')) {
-        window_.pressSoftkey(name.mid(1).toInt());
+        screen_.pressSoftkey(name.mid(1).toInt());
     } else {
-        window_.currentPage()->key(name);
+        screen_.currentPage()->key(name);
     }
 }
 

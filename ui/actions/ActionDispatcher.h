@@ -6,8 +6,8 @@
 
 namespace m350::ui {
 
-class MainWindow;
 class MachineSession;
+class PanelScreen;
 
 // The one path every operator action takes, whoever produced it (keyboard, a click, a test, a
 // replay): machine keys become session commands, page keys change the page, softkeys, arrows,
@@ -15,7 +15,7 @@ class MachineSession;
 class ActionDispatcher : public QObject {
     Q_OBJECT
 public:
-    ActionDispatcher(MainWindow& window, MachineSession& session);
+    ActionDispatcher(PanelScreen& screen, MachineSession& session, QObject* parent = nullptr);
     void dispatch(const OperatorAction& action);
 
 signals:
@@ -27,7 +27,7 @@ private:
     void jogKey(const OperatorAction& action);
     void screenKey(const QString& name);
     void force(const OperatorAction::Force& force);
-    MainWindow& window_;
+    PanelScreen& screen_;
     MachineSession& session_;
 };
 

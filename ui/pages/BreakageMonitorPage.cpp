@@ -1,6 +1,6 @@
 #include "ui/pages/BreakageMonitorPage.h"
 
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include <QChart>
 #include <QChartView>

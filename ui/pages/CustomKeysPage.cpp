@@ -1,6 +1,6 @@
 #include "ui/pages/CustomKeysPage.h"
 
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include "core/config/HookFiles.h"
 

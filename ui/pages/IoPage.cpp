@@ -1,9 +1,9 @@
 #include "ui/pages/IoPage.h"
-#include "ui/pages/PanelTable.h"
+#include "ui/widgets/PanelTable.h"
 
 #include "core/params/IoPorts.h"
 #include "ui/i18n/PanelText.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include <QGridLayout>
 #include <QHeaderView>

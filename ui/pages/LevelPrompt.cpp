@@ -1,6 +1,6 @@
 #include "ui/pages/LevelPrompt.h"
 
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 #include "ui/session/UserAccess.h"
 
 namespace m350::ui {

@@ -1,7 +1,7 @@
 #include "ui/pages/LogPage.h"
-#include "ui/pages/PanelTable.h"
+#include "ui/widgets/PanelTable.h"
 
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include <QHeaderView>
 #include <QJsonArray>

@@ -2,7 +2,7 @@
 
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/MdiLines.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include <QJsonArray>
 #include <QLabel>

@@ -1,7 +1,7 @@
 #include "ui/pages/MiddlePage.h"
 
 #include "ui/pages/CompactDro.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include <QJsonObject>
 #include <QLabel>

@@ -2,7 +2,7 @@
 
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/CompactDro.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 #include "ui/session/HookSteps.h"
 
 #include <QGridLayout>

@@ -1,9 +1,9 @@
 #include "ui/pages/ParamPage.h"
-#include "ui/pages/PanelTable.h"
+#include "ui/widgets/PanelTable.h"
 
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/LevelPrompt.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 #include "ui/session/UserAccess.h"
 
 #include <QApplication>

@@ -6,7 +6,7 @@
 #include "core/params/ParameterBackup.h"
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/LevelPrompt.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include <QDir>
 #include <QFileInfo>

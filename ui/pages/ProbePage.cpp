@@ -1,7 +1,7 @@
 #include "ui/pages/ProbePage.h"
 
 #include "ui/pages/CompactDro.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include <QGridLayout>
 #include <QGroupBox>

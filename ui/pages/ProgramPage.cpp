@@ -1,6 +1,6 @@
 #include "ui/pages/ProgramPage.h"
 
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 #include "ui/program/CodeView.h"
 #include "ui/program/PathView.h"
 #include "ui/program/ProgramEditor.h"

@@ -1,7 +1,7 @@
 // The Program page's file softkeys: 新建 删除 重命名 拷贝 粘贴 清除本地, with the panel's prompts.
 #include "ui/pages/ProgramPage.h"
 
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 #include "ui/program/ProgramList.h"
 
 #include <QDir>

@@ -1,6 +1,6 @@
 #include "ui/pages/RecordPage.h"
 
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -2,7 +2,7 @@
 
 #include "core/params/ParameterPages.h"
 #include "ui/pages/LevelPrompt.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 #include "ui/session/UserAccess.h"
 
 #include <QDirIterator>

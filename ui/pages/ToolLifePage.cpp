@@ -1,7 +1,7 @@
 #include "ui/pages/ToolLifePage.h"
 
-#include "ui/pages/PanelTable.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
+#include "ui/widgets/PanelTable.h"
 
 #include <QBrush>
 #include <QFont>

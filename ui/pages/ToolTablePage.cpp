@@ -2,8 +2,8 @@
 
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
-#include "ui/pages/PanelTable.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
+#include "ui/widgets/PanelTable.h"
 
 #include <QJsonArray>
 #include <QLabel>

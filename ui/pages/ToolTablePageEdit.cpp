@@ -4,7 +4,7 @@
 
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include <QDir>
 #include <QFileInfo>

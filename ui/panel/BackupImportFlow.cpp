@@ -1,7 +1,7 @@
 #include "ui/panel/BackupImportFlow.h"
 
 #include "core/backup/BackupImport.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/pages/PanelContext.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>

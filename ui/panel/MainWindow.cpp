@@ -4,6 +4,7 @@
 #include "ui/actions/KeyboardMap.h"
 #include "ui/i18n/Language.h"
 #include "ui/pages/BreakRunPage.h"
+#include "ui/pages/BreakageMonitorPage.h"
 #include "ui/pages/CoordPage.h"
 #include "ui/pages/CustomKeysPage.h"
 #include "ui/pages/IoPage.h"
@@ -13,12 +14,11 @@
 #include "ui/pages/MonitorPage.h"
 #include "ui/pages/ParamPage.h"
 #include "ui/pages/ProbePage.h"
-#include "ui/pages/RecordPage.h"
 #include "ui/pages/ProgramPage.h"
+#include "ui/pages/RecordPage.h"
 #include "ui/pages/SystemPage.h"
 #include "ui/pages/ToolLifePage.h"
 #include "ui/pages/ToolTablePage.h"
-#include "ui/pages/BreakageMonitorPage.h"
 #include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
@@ -66,7 +66,7 @@ MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language*
     column->addWidget(message_);
     column->addWidget(alarm_);
     column->addWidget(softkeys_);
-    dispatcher_ = new ActionDispatcher(*this, session_);
+    dispatcher_ = new ActionDispatcher(*this, session_, this);
     keys_ = new KeyPad([this](const OperatorAction& a) { dispatcher_->dispatch(a); }, central);
     keys_->setFixedWidth(348);
     row->addWidget(screen, 1);

@@ -1,7 +1,9 @@
 #pragma once
 
 #include "ui/actions/ActionDispatcher.h"
-#include "ui/panel/PanelContext.h"
+#include "ui/actions/PanelScreen.h"
+#include "ui/pages/PanelContext.h"
+#include "ui/panel/PromptBox.h"
 #include "ui/session/PanelSnapshot.h"
 
 #include <QJsonObject>
@@ -17,14 +19,13 @@ class BackupImportFlow;
 class KeyPad;
 class Language;
 class Page;
-class PromptBox;
 class SoftkeyBar;
 class StatusLine;
 
 // The panel: status line on top, the page in the middle, the message line and the softkeys under
 // it, the panel's keys and the handwheel on the right. It shows snapshots and hands every
 // operator action to its dispatcher; it owns no machine state.
-class MainWindow : public QMainWindow {
+class MainWindow : public QMainWindow, public PanelScreen {
     Q_OBJECT
 public:
     MainWindow(MachineSession& session, QString machineFolder, Language* language, QWidget* parent = nullptr);
@@ -32,12 +33,12 @@ public:
 
     ActionDispatcher& dispatcher() { return *dispatcher_; }
     PanelContext& context() { return context_; }
-    bool showPage(const QString& id);
-    Page* currentPage() const;
+    bool showPage(const QString& id) override;
+    Page* currentPage() const override;
     Page* page(const QString& id) const { return pages_.value(id); }
-    void pressSoftkey(int number);
-    void setLanguage(const QString& language);
-    void askJogStep();
+    void pressSoftkey(int number) override;
+    void setLanguage(const QString& language) override;
+    void askJogStep() override;
     void notify(const QString& text);
     bool startRecording(const QString& path, QString* error); // --record
     BackupImportFlow& backupImport() { return *backupImport_; } // the Panel menu's 导入控制器备份
@@ -45,7 +46,7 @@ public:
     StatusLine* statusLine() const { return status_; }
     SoftkeyBar* softkeys() const { return softkeys_; }
     KeyPad* keyPad() const { return keys_; }
-    PromptBox* prompt() const { return prompt_; }
+    PromptBox* prompt() const override { return prompt_; }
     QString messageText() const;
     QString alarmText() const;
     // The panel's state for --state: page, mode, state, positions, tool, message, alarm, IO, MDI lines.

@@ -1,5 +1,5 @@
 #include "ui/program/ProgramList.h"
-#include "ui/pages/PanelTable.h"
+#include "ui/widgets/PanelTable.h"
 
 #include <QDir>
 #include <QHeaderView>

@@ -1,6 +1,4 @@
-#include "ui/panel/PanelContext.h"
-
-#include "ui/panel/PromptBox.h"
+#include "ui/pages/PanelContext.h"
 
 namespace m350::ui {
 

@@ -1,4 +1,4 @@
-#include "ui/pages/PanelTable.h"
+#include "ui/widgets/PanelTable.h"
 
 #include <QHeaderView>
 #include <QLabel>

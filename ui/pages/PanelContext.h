@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ui/pages/PanelPrompt.h"
 #include "ui/session/MachineSession.h"
 
 #include <QString>
@@ -8,8 +9,6 @@
 #include <optional>
 
 namespace m350::ui {
-
-class PromptBox;
 
 // What a page may use: the machine session (queued commands), the latest snapshot, the prompt
 // box, the panel's own message line, and the machine folder (for files the panel keeps there).
@@ -36,7 +35,7 @@ public:
         }
     }
 
-    void attach(PromptBox* prompt, std::function<void(const QString&)> notify) {
+    void attach(PanelPrompt* prompt, std::function<void(const QString&)> notify) {
         prompt_ = prompt;
         notify_ = std::move(notify);
     }
@@ -44,7 +43,7 @@ public:
 private:
     MachineSession& session_;
     QString machineFolder_;
-    PromptBox* prompt_ = nullptr;
+    PanelPrompt* prompt_ = nullptr;
     std::function<void(const QString&)> notify_;
 };
 
