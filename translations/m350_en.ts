@@ -482,128 +482,6 @@
     </message>
 </context>
 <context>
-    <name>m350::ui::KeyPad</name>
-    <message>
-        <source>Monitor</source>
-        <comment>msg 300</comment>
-        <translation>Monitor</translation>
-    </message>
-    <message>
-        <source>Program</source>
-        <comment>msg 301</comment>
-        <translation>Program</translation>
-    </message>
-    <message>
-        <source>Param</source>
-        <comment>msg 302</comment>
-        <translation>Param</translation>
-    </message>
-    <message>
-        <source>IO</source>
-        <comment>msg 303</comment>
-        <translation>IO</translation>
-    </message>
-    <message>
-        <source>Log</source>
-        <translation>Log</translation>
-    </message>
-    <message>
-        <source>System</source>
-        <translation>System</translation>
-    </message>
-    <message>
-        <source>MDI</source>
-        <translation>MDI</translation>
-    </message>
-    <message>
-        <source>Probe</source>
-        <comment>msg 313</comment>
-        <translation>Probe</translation>
-    </message>
-    <message>
-        <source>CONT
-STEP MPG</source>
-        <translation>CONT
-STEP MPG</translation>
-    </message>
-    <message>
-        <source>MPG RUN</source>
-        <translation>MPG RUN</translation>
-    </message>
-    <message>
-        <source>Hi/Lo</source>
-        <translation>Hi/Lo</translation>
-    </message>
-    <message>
-        <source>Step...</source>
-        <translation>Step...</translation>
-    </message>
-    <message>
-        <source>Ext START</source>
-        <translation>Ext START</translation>
-    </message>
-    <message>
-        <source>E-STOP</source>
-        <translation>E-STOP</translation>
-    </message>
-    <message>
-        <source>START</source>
-        <translation>START</translation>
-    </message>
-    <message>
-        <source>PAUSE</source>
-        <translation>PAUSE</translation>
-    </message>
-    <message>
-        <source>RESET</source>
-        <translation>RESET</translation>
-    </message>
-    <message>
-        <source>FRO
-100%</source>
-        <translation>FRO
-100%</translation>
-    </message>
-    <message>
-        <source>FRO
-+10%</source>
-        <translation>FRO
-+10%</translation>
-    </message>
-    <message>
-        <source>FRO
--10%</source>
-        <translation>FRO
--10%</translation>
-    </message>
-    <message>
-        <source>SRO
-100%</source>
-        <translation>SRO
-100%</translation>
-    </message>
-    <message>
-        <source>SRO
-+10%</source>
-        <translation>SRO
-+10%</translation>
-    </message>
-    <message>
-        <source>SRO
--10%</source>
-        <translation>SRO
--10%</translation>
-    </message>
-    <message>
-        <source>Spindle</source>
-        <translation>Spindle</translation>
-    </message>
-    <message>
-        <source>This page comes with the panel's part 2</source>
-        <translation>This page comes with the panel's part 2</translation>
-    </message>
-</context>
-<context>
     <name>m350::ui::LevelPrompt</name>
     <message>
         <source>Pls input super admi or hight user's rights:</source>
@@ -836,10 +714,6 @@ STEP MPG</translation>
 </context>
 <context>
     <name>m350::ui::MainWindow</name>
-    <message>
-        <source>This page comes with the panel's part 2</source>
-        <translation>This page comes with the panel's part 2</translation>
-    </message>
     <message>
         <source>Input the step distance (mm):</source>
         <translation>Input the step distance (mm):</translation>
@@ -1188,10 +1062,6 @@ STEP MPG</translation>
         <translation>INC Distance</translation>
     </message>
     <message>
-        <source>Comes with the panel's part 2</source>
-        <translation>Comes with the panel's part 2</translation>
-    </message>
-    <message>
         <source>X Go Home</source>
         <comment>msg 420</comment>
         <translation>X Go Home</translation>
@@ -1340,6 +1210,10 @@ STEP MPG</translation>
         <source>Sort Proces</source>
         <comment>msg 323</comment>
         <translation>Sort Proces</translation>
+    </message>
+    <message>
+        <source>Not in the simulator</source>
+        <translation>Not in the simulator</translation>
     </message>
     <message>
         <source>Homed</source>
@@ -2223,8 +2097,8 @@ STEP MPG</translation>
 <context>
     <name>m350::ui::SessionWorker</name>
     <message>
-        <source>No program loaded: open one with m350-hmi FILE (the Program page comes with part 2)</source>
-        <translation>No program loaded: open one with m350-hmi FILE (the Program page comes with part 2)</translation>
+        <source>No program loaded: load one on the Program page</source>
+        <translation>No program loaded: load one on the Program page</translation>
     </message>
     <message>
         <source>A program is running: wait for it, or PAUSE / RESET first</source>
@@ -2233,10 +2107,6 @@ STEP MPG</translation>
     <message>
         <source>Parameter %1: invalid value</source>
         <translation>Parameter %1: invalid value</translation>
-    </message>
-    <message>
-        <source>No program loaded: load one on the Program page</source>
-        <translation>No program loaded: load one on the Program page</translation>
     </message>
     <message>
         <source>Line %1 is not in the program</source>
@@ -2836,6 +2706,124 @@ STEP MPG</translation>
         <source>FUNC K14</source>
         <comment>msg 163</comment>
         <translation>FUNC K14</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::KeyPad</name>
+    <message>
+        <source>Monitor</source>
+        <comment>msg 300</comment>
+        <translation>Monitor</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <comment>msg 301</comment>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Param</source>
+        <comment>msg 302</comment>
+        <translation>Param</translation>
+    </message>
+    <message>
+        <source>IO</source>
+        <comment>msg 303</comment>
+        <translation>IO</translation>
+    </message>
+    <message>
+        <source>Log</source>
+        <translation>Log</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>System</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <comment>msg 313</comment>
+        <translation>Probe</translation>
+    </message>
+    <message>
+        <source>CONT
+STEP MPG</source>
+        <translation>CONT
+STEP MPG</translation>
+    </message>
+    <message>
+        <source>MPG RUN</source>
+        <translation>MPG RUN</translation>
+    </message>
+    <message>
+        <source>Hi/Lo</source>
+        <translation>Hi/Lo</translation>
+    </message>
+    <message>
+        <source>Step...</source>
+        <translation>Step...</translation>
+    </message>
+    <message>
+        <source>Ext START</source>
+        <translation>Ext START</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <source>START</source>
+        <translation>START</translation>
+    </message>
+    <message>
+        <source>PAUSE</source>
+        <translation>PAUSE</translation>
+    </message>
+    <message>
+        <source>RESET</source>
+        <translation>RESET</translation>
+    </message>
+    <message>
+        <source>FRO
+100%</source>
+        <translation>FRO
+100%</translation>
+    </message>
+    <message>
+        <source>FRO
++10%</source>
+        <translation>FRO
++10%</translation>
+    </message>
+    <message>
+        <source>FRO
+-10%</source>
+        <translation>FRO
+-10%</translation>
+    </message>
+    <message>
+        <source>SRO
+100%</source>
+        <translation>SRO
+100%</translation>
+    </message>
+    <message>
+        <source>SRO
++10%</source>
+        <translation>SRO
++10%</translation>
+    </message>
+    <message>
+        <source>SRO
+-10%</source>
+        <translation>SRO
+-10%</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Spindle</translation>
     </message>
 </context>
 </TS>

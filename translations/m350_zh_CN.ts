@@ -482,128 +482,6 @@
     </message>
 </context>
 <context>
-    <name>m350::ui::KeyPad</name>
-    <message>
-        <source>Monitor</source>
-        <comment>msg 300</comment>
-        <translation>加工状态</translation>
-    </message>
-    <message>
-        <source>Program</source>
-        <comment>msg 301</comment>
-        <translation>文件管理</translation>
-    </message>
-    <message>
-        <source>Param</source>
-        <comment>msg 302</comment>
-        <translation>参数管理</translation>
-    </message>
-    <message>
-        <source>IO</source>
-        <comment>msg 303</comment>
-        <translation>IO状态</translation>
-    </message>
-    <message>
-        <source>Log</source>
-        <translation>系统日志</translation>
-    </message>
-    <message>
-        <source>System</source>
-        <translation>系统管理</translation>
-    </message>
-    <message>
-        <source>MDI</source>
-        <translation>MDI</translation>
-    </message>
-    <message>
-        <source>Probe</source>
-        <comment>msg 313</comment>
-        <translation>对刀</translation>
-    </message>
-    <message>
-        <source>CONT
-STEP MPG</source>
-        <translation>连续
-寸动 手轮</translation>
-    </message>
-    <message>
-        <source>MPG RUN</source>
-        <translation>手轮试切</translation>
-    </message>
-    <message>
-        <source>Hi/Lo</source>
-        <translation>高/低速</translation>
-    </message>
-    <message>
-        <source>Step...</source>
-        <translation>输入寸动</translation>
-    </message>
-    <message>
-        <source>Ext START</source>
-        <translation>外部启动</translation>
-    </message>
-    <message>
-        <source>E-STOP</source>
-        <translation>急停</translation>
-    </message>
-    <message>
-        <source>START</source>
-        <translation>启动</translation>
-    </message>
-    <message>
-        <source>PAUSE</source>
-        <translation>暂停</translation>
-    </message>
-    <message>
-        <source>RESET</source>
-        <translation>复位</translation>
-    </message>
-    <message>
-        <source>FRO
-100%</source>
-        <translation>进给
-100%</translation>
-    </message>
-    <message>
-        <source>FRO
-+10%</source>
-        <translation>进给
-+10%</translation>
-    </message>
-    <message>
-        <source>FRO
--10%</source>
-        <translation>进给
--10%</translation>
-    </message>
-    <message>
-        <source>SRO
-100%</source>
-        <translation>主轴
-100%</translation>
-    </message>
-    <message>
-        <source>SRO
-+10%</source>
-        <translation>主轴
-+10%</translation>
-    </message>
-    <message>
-        <source>SRO
--10%</source>
-        <translation>主轴
--10%</translation>
-    </message>
-    <message>
-        <source>Spindle</source>
-        <translation>主轴</translation>
-    </message>
-    <message>
-        <source>This page comes with the panel's part 2</source>
-        <translation>该页面将在面板第二部分提供</translation>
-    </message>
-</context>
-<context>
     <name>m350::ui::LevelPrompt</name>
     <message>
         <source>Pls input super admi or hight user's rights:</source>
@@ -836,10 +714,6 @@ STEP MPG</source>
 </context>
 <context>
     <name>m350::ui::MainWindow</name>
-    <message>
-        <source>This page comes with the panel's part 2</source>
-        <translation>该页面将在面板第二部分提供</translation>
-    </message>
     <message>
         <source>Input the step distance (mm):</source>
         <translation>输入寸动距离(mm):</translation>
@@ -1188,10 +1062,6 @@ STEP MPG</source>
         <translation>输入寸动距离</translation>
     </message>
     <message>
-        <source>Comes with the panel's part 2</source>
-        <translation>将在面板第二部分提供</translation>
-    </message>
-    <message>
         <source>X Go Home</source>
         <comment>msg 420</comment>
         <translation>机械X轴回</translation>
@@ -1340,6 +1210,10 @@ STEP MPG</source>
         <source>Sort Proces</source>
         <comment>msg 323</comment>
         <translation>序列加工</translation>
+    </message>
+    <message>
+        <source>Not in the simulator</source>
+        <translation>模拟器中没有此功能</translation>
     </message>
     <message>
         <source>Homed</source>
@@ -2223,8 +2097,8 @@ STEP MPG</source>
 <context>
     <name>m350::ui::SessionWorker</name>
     <message>
-        <source>No program loaded: open one with m350-hmi FILE (the Program page comes with part 2)</source>
-        <translation>未载入加工文件: 用 m350-hmi 文件名 打开 (文件管理页面将在第二部分提供)</translation>
+        <source>No program loaded: load one on the Program page</source>
+        <translation>未载入程序: 请在文件管理页面载入</translation>
     </message>
     <message>
         <source>A program is running: wait for it, or PAUSE / RESET first</source>
@@ -2233,10 +2107,6 @@ STEP MPG</source>
     <message>
         <source>Parameter %1: invalid value</source>
         <translation>[%1]号参数输入的数据非法!</translation>
-    </message>
-    <message>
-        <source>No program loaded: load one on the Program page</source>
-        <translation>未载入程序: 请在文件管理页面载入</translation>
     </message>
     <message>
         <source>Line %1 is not in the program</source>
@@ -2836,6 +2706,124 @@ STEP MPG</source>
         <source>FUNC K14</source>
         <comment>msg 163</comment>
         <translation>扩展按键14</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::KeyPad</name>
+    <message>
+        <source>Monitor</source>
+        <comment>msg 300</comment>
+        <translation>加工状态</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <comment>msg 301</comment>
+        <translation>文件管理</translation>
+    </message>
+    <message>
+        <source>Param</source>
+        <comment>msg 302</comment>
+        <translation>参数管理</translation>
+    </message>
+    <message>
+        <source>IO</source>
+        <comment>msg 303</comment>
+        <translation>IO状态</translation>
+    </message>
+    <message>
+        <source>Log</source>
+        <translation>系统日志</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>系统管理</translation>
+    </message>
+    <message>
+        <source>MDI</source>
+        <translation>MDI</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <comment>msg 313</comment>
+        <translation>对刀</translation>
+    </message>
+    <message>
+        <source>CONT
+STEP MPG</source>
+        <translation>连续
+寸动 手轮</translation>
+    </message>
+    <message>
+        <source>MPG RUN</source>
+        <translation>手轮试切</translation>
+    </message>
+    <message>
+        <source>Hi/Lo</source>
+        <translation>高/低速</translation>
+    </message>
+    <message>
+        <source>Step...</source>
+        <translation>输入寸动</translation>
+    </message>
+    <message>
+        <source>Ext START</source>
+        <translation>外部启动</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>START</source>
+        <translation>启动</translation>
+    </message>
+    <message>
+        <source>PAUSE</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>RESET</source>
+        <translation>复位</translation>
+    </message>
+    <message>
+        <source>FRO
+100%</source>
+        <translation>进给
+100%</translation>
+    </message>
+    <message>
+        <source>FRO
++10%</source>
+        <translation>进给
++10%</translation>
+    </message>
+    <message>
+        <source>FRO
+-10%</source>
+        <translation>进给
+-10%</translation>
+    </message>
+    <message>
+        <source>SRO
+100%</source>
+        <translation>主轴
+100%</translation>
+    </message>
+    <message>
+        <source>SRO
++10%</source>
+        <translation>主轴
++10%</translation>
+    </message>
+    <message>
+        <source>SRO
+-10%</source>
+        <translation>主轴
+-10%</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>主轴</translation>
     </message>
 </context>
 </TS>

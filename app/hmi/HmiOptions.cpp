@@ -1,7 +1,7 @@
 #include "app/hmi/HmiOptions.h"
 
 #include "app/sim/ByteLimitOption.h"
-#include "ui/actions/OperatorAction.h"
+#include "ui/pages/PageTable.h"
 
 #include <CLI/CLI.hpp>
 
@@ -12,7 +12,7 @@ namespace m350::hmi {
 HmiParse parseHmiCommandLine(int argc, char** argv) {
     HmiOptions o;
     std::vector<std::string> pages; // every page a replay may open
-    for (const QString& id : ui::pageIds()) {
+    for (const QString& id : ui::PageTable::ids()) {
         pages.push_back(id.toStdString());
     }
     CLI::App app{"m350-hmi: the M350 panel (desktop). With --screenshot, --replay or --state it renders "

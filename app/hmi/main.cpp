@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
     if (QFile style(QStringLiteral(":/panel/panel.qss")); style.open(QIODevice::ReadOnly)) {
         app.setStyleSheet(QString::fromUtf8(style.readAll()));
     }
-    if (auto* programs = dynamic_cast<ui::ProgramPage*>(window.page(QStringLiteral("program")));
+    if (auto* programs = dynamic_cast<ui::ProgramPage*>(window.page(ui::PageId::program));
         programs && !o.programs.empty()) {
         programs->setUserFolder(QString::fromStdString(o.programs));
     }

@@ -1,5 +1,7 @@
 // The replay line format: every kind of action reads back as it was written; bad lines say why.
 #include "ui/actions/OperatorAction.h"
+#include "ui/actions/PanelKey.h"
+#include "ui/pages/PageTable.h"
 #include "ui/replay/Replay.h"
 
 #include <QJsonDocument>
@@ -87,6 +89,26 @@ TEST(Replay, ActionsMustBeInTimeOrder) {
     QString error;
     EXPECT_FALSE(ui::readReplay(file.fileName(), &error));
     EXPECT_TRUE(error.contains(":2:1:")) << error.toStdString();
+}
+
+// The key table is the replay format's vocabulary: every key reads back by its name, once, and a
+// page key opens a page the panel has.
+TEST(PanelKey, EveryKeyIsKnownByItsNameAndEveryPageKeyHasItsPage) {
+    QStringList names;
+    for (const ui::PanelKey& key : ui::PanelKey::all()) {
+        EXPECT_FALSE(names.contains(key.name)) << key.name.toStdString();
+        names << key.name;
+        EXPECT_EQ(ui::PanelKey::named(key.name), &key);
+        auto action = parse(QStringLiteral(R"({"t":0,"key":"%1"})").arg(key.name).toUtf8().constData());
+        EXPECT_TRUE(action) << key.name.toStdString();
+        if (key.role == ui::PanelKey::Role::Page) {
+            EXPECT_TRUE(ui::PageTable::ids().contains(QString(key.page))) << key.name.toStdString();
+        }
+        if (key.role == ui::PanelKey::Role::Machine) {
+            EXPECT_NE(key.command, nullptr) << key.name.toStdString();
+        }
+    }
+    EXPECT_EQ(ui::PanelKey::named(QStringLiteral("LAUNCH")), nullptr);
 }
 
 } // namespace m350::test

@@ -1,4 +1,4 @@
-// The four screens of part 1, driven as an operator drives them and read off the widgets.
+// The Monitor, MDI, IO and Probe screens, driven as an operator drives them and read off the widgets.
 #include "tests/ui/PanelHarness.h"
 
 #include "ui/pages/IoPage.h"
@@ -32,13 +32,30 @@ TEST(MonitorPage, GoHomeSoftkeyOpensItsRowAndEscGoesBack) {
     EXPECT_TRUE(panel.window().softkeys()->label(5).contains(QStringLiteral("清零")));
 }
 
-TEST(MonitorPage, PartTwoSoftkeysAreDisabledWithAReason) {
+TEST(MonitorPage, UnsimulatedSoftkeysAreDisabledWithAReason) {
     PanelHarness panel;
-    EXPECT_FALSE(panel.window().softkeys()->enabled(1)); // 图形显示
-    EXPECT_TRUE(panel.window().softkeys()->enabled(2));  // 对刀
-    panel.softkey(1);
+    EXPECT_FALSE(panel.window().softkeys()->enabled(1));  // 图形显示
+    EXPECT_TRUE(panel.window().softkeys()->enabled(2));   // 对刀
+    EXPECT_FALSE(panel.window().softkeys()->enabled(12)); // 序列加工
+    panel.softkey(12);
     EXPECT_FALSE(panel.window().messageText().isEmpty());
     EXPECT_EQ(panel.window().currentPage()->id(), "monitor");
+}
+
+// 图形显示 waits for the panel's machine view: greyed out, and pressed (the softkey, and the F1 key,
+// both through the dispatcher) it changes nothing on the panel and says nothing.
+TEST(MonitorPage, TheGraphicDisplaySoftkeyIsGreyedOutAndDoesNothing) {
+    PanelHarness panel;
+    EXPECT_TRUE(panel.window().softkeys()->label(1).contains(QStringLiteral("图形显示")));
+    EXPECT_FALSE(panel.window().softkeys()->enabled(1));
+    const QJsonObject before = panel.window().state();
+    const QString message = panel.window().messageText();
+    panel.softkey(1);
+    panel.key("F1");
+    EXPECT_EQ(panel.window().state(), before);
+    EXPECT_EQ(panel.window().messageText(), message);
+    EXPECT_EQ(panel.window().currentPage()->id(), "monitor");
+    EXPECT_EQ(panel.page<ui::MonitorPage>()->menu(), ui::MonitorPage::Menu::Main);
 }
 
 TEST(MonitorPage, ClearZeroesTheWorkCoordinateOfOneAxis) {

@@ -1,12 +1,10 @@
 #include "ui/actions/ActionDispatcher.h"
 
+#include "ui/actions/PanelKey.h"
 #include "ui/actions/PanelScreen.h"
 #include "ui/pages/Page.h"
 #include "ui/pages/PanelPrompt.h"
-#include "ui/panel/KeyPad.h"
 #include "ui/session/MachineSession.h"
-
-#include <QHash>
 
 namespace m350::ui {
 
@@ -19,13 +17,15 @@ void ActionDispatcher::dispatch(const OperatorAction& action) {
     case Kind::Wait: break;
     case Kind::Key:
     case Kind::KeyDown:
-    case Kind::KeyUp:
-        if (action.name.startsWith(QLatin1String("JOG_"))) {
-            jogKey(action);
-        } else if (action.kind != Kind::KeyUp && !machineKey(action)) {
-            screenKey(action.name);
+    case Kind::KeyUp: {
+        const PanelKey* key = PanelKey::named(action.name);
+        if (key && key->role == PanelKey::Role::Jog) {
+            jogKey(*key, action.kind);
+        } else if (action.kind != Kind::KeyUp && !machineKey(key)) {
+            screenKey(key, action.name);
         }
         break;
+    }
     case Kind::Softkey: screen_.pressSoftkey(action.softkey); break;
     case Kind::Text:
         if (screen_.prompt()->active()) {
@@ -45,78 +45,43 @@ void ActionDispatcher::dispatch(const OperatorAction& action) {
     emit dispatched(action);
 }
 
-// The keys that act on the machine whatever page is shown.
-bool ActionDispatcher::machineKey(const OperatorAction& action) {
-    static const QHash<QString, double> steps{
-        {"STEP_0.001", 0.001}, {"STEP_0.01", 0.01}, {"STEP_0.1", 0.1}, {"STEP_1", 1.0}};
-    const QString& key = action.name;
-    if (key == QLatin1String("START")) {
-        session_.start();
-    } else if (key == QLatin1String("PAUSE")) {
-        session_.pause();
-    } else if (key == QLatin1String("RESET")) {
-        session_.reset();
-    } else if (key == QLatin1String("ESTOP")) {
-        session_.emergencyStop();
-    } else if (key == QLatin1String("CONT_STEP_MPG")) {
-        session_.cycleJogMode();
-    } else if (key == QLatin1String("MPG_RUN")) {
-        session_.toggleHandwheelGuide();
-    } else if (key == QLatin1String("HIGH_LOW")) {
-        session_.toggleJogHighSpeed();
-    } else if (key == QLatin1String("SPINDLE")) {
-        session_.spindleKey(0);
-    } else if (KeyPad::mCodeKeys().contains(key)) {
-        session_.spindleKey(key.mid(1).toInt());
-    } else if (KeyPad::userKeys().contains(key)) {
-        session_.userKey(key.mid(1).toInt());
-    } else if (key.startsWith(QLatin1String("FRO_")) || key.startsWith(QLatin1String("SRO_"))) {
-        QString how = key.mid(4);
-        int step = how == QLatin1String("UP") ? 10 : how == QLatin1String("DOWN") ? -10 : 0;
-        key.startsWith(QLatin1Char('F')) ? session_.feedOverrideKey(step) : session_.spindleOverrideKey(step);
-    } else if (steps.contains(key)) {
-        session_.setJogStep(steps.value(key));
-    } else if (key == QLatin1String("STEP_INPUT")) {
-        screen_.askJogStep();
-    } else if (key == QLatin1String("EXT_START")) {
-        session_.pressExternStart();
-    } else {
-        return false;
+// The keys that act on the machine whatever page is shown: what the key's table row says.
+bool ActionDispatcher::machineKey(const PanelKey* key) {
+    if (key && key->role == PanelKey::Role::Machine) {
+        key->command(session_, key->argument);
+        return true;
     }
-    return true;
+    if (key && key->role == PanelKey::Role::JogStepInput) {
+        screen_.askJogStep();
+        return true;
+    }
+    return false;
 }
 
 // A jog key held (key_down .. key_up) jogs while held; a plain key press is a tap: one step in
 // STEP mode, a short nudge in CONT.
-void ActionDispatcher::jogKey(const OperatorAction& action) {
-    static const QString axes = QStringLiteral("XYZAB");
-    int axis = static_cast<int>(axes.indexOf(action.name.at(4)));
-    int direction = action.name.endsWith(QLatin1Char('+')) ? 1 : -1;
-    if (action.kind != OperatorAction::Kind::KeyUp) {
-        session_.jogPress(axis, direction);
+void ActionDispatcher::jogKey(const PanelKey& key, OperatorAction::Kind kind) {
+    if (kind != OperatorAction::Kind::KeyUp) {
+        session_.jogPress(key.axis, key.direction);
     }
-    if (action.kind != OperatorAction::Kind::KeyDown) {
-        session_.jogRelease(axis);
+    if (kind != OperatorAction::Kind::KeyDown) {
+        session_.jogRelease(key.axis);
     }
 }
 
-// Keys for the screen: the prompt first, then page keys, then the current page.
-void ActionDispatcher::screenKey(const QString& name) {
+// Keys for the screen: the prompt first, then page keys and softkeys, then the current page.
+void ActionDispatcher::screenKey(const PanelKey* key, const QString& name) {
     PanelPrompt* prompt = screen_.prompt();
     if (prompt->active()) {
-        if (name == QLatin1String("ENTER")) {
-            prompt->confirm();
-        } else if (name == QLatin1String("ESC")) {
-            prompt->cancel();
-        } else if (name == QLatin1String("BACKSPACE")) {
-            prompt->backspace();
+        if (key && key->onPrompt) {
+            key->onPrompt(*prompt);
         }
         return;
     }
-    if (KeyPad::pageKeys().contains(name)) {
-        screen_.showPage(KeyPad::pageKeys().value(name));
-    } else if (name.size() == 2 && name.at(0) == QLatin1Char('F')) {
-        screen_.pressSoftkey(name.mid(1).toInt());
+    if (key && key->role == PanelKey::Role::Page) {
+        screen_.showPage(key->page);
+    } else if (key && key->role == PanelKey::Role::Softkey) {
+        screen_.pressSoftkey(key->softkey);
     } else {
         screen_.currentPage()->key(name);
     }

@@ -8,6 +8,7 @@ namespace m350::ui {
 
 class MachineSession;
 class PanelScreen;
+struct PanelKey;
 
 // The one path every operator action takes, whoever produced it (keyboard, a click, a test, a
 // replay): machine keys become session commands, page keys change the page, softkeys, arrows,
@@ -23,9 +24,9 @@ signals:
     void dispatched(const m350::ui::OperatorAction& action);
 
 private:
-    bool machineKey(const OperatorAction& action);
-    void jogKey(const OperatorAction& action);
-    void screenKey(const QString& name);
+    bool machineKey(const PanelKey* key);
+    void jogKey(const PanelKey& key, OperatorAction::Kind kind);
+    void screenKey(const PanelKey* key, const QString& name); // key: nullptr for a name the table lacks
     void force(const OperatorAction::Force& force);
     PanelScreen& screen_;
     MachineSession& session_;

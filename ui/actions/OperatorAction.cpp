@@ -1,26 +1,14 @@
 #include "ui/actions/OperatorAction.h"
 
+#include "ui/actions/PanelKey.h"
+#include "ui/pages/PageTable.h"
+
 #include <QJsonValue>
 #include <QStringList>
 
 namespace m350::ui {
 
 namespace {
-
-const QStringList& keyNames() {
-    static const QStringList names = [] {
-        QStringList list{"START", "PAUSE", "RESET", "ESTOP", "CONT_STEP_MPG", "MPG_RUN", "SPINDLE", "M3", "M4", "M5",
-                         "ENTER", "ESC", "UP", "DOWN", "LEFT", "RIGHT", "F1", "F2", "F3", "F4", "F5", "F6",
-                         "MONITOR", "PROGRAM", "PARAM", "IO", "LOG", "SYSTEM", "MDI", "PROBE",
-                         "FRO_100", "FRO_UP", "FRO_DOWN", "SRO_100", "SRO_UP", "SRO_DOWN", "HIGH_LOW",
-                         "STEP_0.001", "STEP_0.01", "STEP_0.1", "STEP_1", "STEP_INPUT", "EXT_START", "BACKSPACE"};
-        for (QChar axis : QStringLiteral("XYZAB")) {
-            list << QStringLiteral("JOG_%1+").arg(axis) << QStringLiteral("JOG_%1-").arg(axis);
-        }
-        return list;
-    }();
-    return names;
-}
 
 const char* kindKey(OperatorAction::Kind kind) {
     switch (kind) {
@@ -45,15 +33,6 @@ int axisIndex(const QString& name) {
 }
 
 } // namespace
-
-bool isKnownKey(const QString& name) { return keyNames().contains(name); }
-
-const QStringList& pageIds() {
-    static const QStringList ids{"monitor", "mdi",    "io",     "probe",  "program", "param",
-                                 "log",     "system", "coord",  "middle", "record",  "breakrun", "tools",
-                                 "toollife", "breakage", "custom"};
-    return ids;
-}
 
 QJsonObject OperatorAction::toJson() const {
     QJsonObject out;
@@ -116,7 +95,7 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
         if (object.contains(kindKey(kind))) {
             a.kind = kind;
             a.name = object.value(kindKey(kind)).toString();
-            if (!isKnownKey(a.name)) {
+            if (!PanelKey::named(a.name)) {
                 return fail(QStringLiteral("unknown key \"%1\"").arg(a.name));
             }
             return a;
@@ -138,8 +117,8 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
     if (object.contains("page")) {
         a.kind = Kind::Page;
         a.name = object.value("page").toString();
-        if (!pageIds().contains(a.name)) {
-            return fail(QStringLiteral("unknown page \"%1\" (one of: %2)").arg(a.name, pageIds().join(", ")));
+        if (!PageTable::ids().contains(a.name)) {
+            return fail(QStringLiteral("unknown page \"%1\" (one of: %2)").arg(a.name, PageTable::ids().join(", ")));
         }
         return a;
     }

@@ -14,7 +14,7 @@ struct OperatorAction {
     enum class Kind { Key, KeyDown, KeyUp, Softkey, Text, Wheel, Page, Force, Language, Load, Wait };
     Kind kind = Kind::Wait;
     double t = 0.0;  // virtual time of the action, s (replay and record)
-    QString name;    // key name (START, JOG_X+ ...), page id, language, file
+    QString name;    // key name (PanelKey: START, JOG_X+ ...), page id (PageTable), language, file
     int softkey = 0; // 1-6 the first row (F1-F6), 7-12 the second (Shift+F1-F6)
     QString text;
     struct Wheel {
@@ -62,9 +62,5 @@ private:
         return a;
     }
 };
-
-// Every key name the panel knows (START, PAUSE, ..., JOG_B-): the replay format's vocabulary.
-bool isKnownKey(const QString& name);
-const QStringList& pageIds(); // monitor mdi io probe (part 1); program param log system
 
 } // namespace m350::ui

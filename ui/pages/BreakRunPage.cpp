@@ -112,7 +112,7 @@ void BreakRunPage::softkey(int number) {
 
 bool BreakRunPage::key(const QString& name) {
     if (name == QLatin1String("ESC")) {
-        emit navigate(QStringLiteral("monitor"));
+        emit navigate(PageId::monitor);
         return true;
     }
     return false;

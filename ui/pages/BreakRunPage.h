@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <functional>
 
@@ -18,7 +19,7 @@ class BreakRunPage : public Page {
     Q_OBJECT
 public:
     explicit BreakRunPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("breakrun"); }
+    QString id() const override { return PageId::breakRun; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

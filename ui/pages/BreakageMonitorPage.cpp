@@ -89,13 +89,13 @@ QVector<Page::Softkey> BreakageMonitorPage::softkeys() const {
 
 void BreakageMonitorPage::softkey(int number) {
     if (number == 1) {
-        emit navigate(QStringLiteral("tools"));
+        emit navigate(PageId::tools);
     }
 }
 
 bool BreakageMonitorPage::key(const QString& name) {
     if (name == QLatin1String("ESC")) {
-        emit navigate(QStringLiteral("tools"));
+        emit navigate(PageId::tools);
         return true;
     }
     return false;

@@ -2,6 +2,7 @@
 
 #include "core/controller/SpindleLoadView.h"
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <map>
 #include <memory>
@@ -23,7 +24,7 @@ class BreakageMonitorPage : public Page {
     Q_OBJECT
 public:
     explicit BreakageMonitorPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("breakage"); }
+    QString id() const override { return PageId::breakage; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

@@ -139,7 +139,7 @@ void CoordPage::moveCommonZ(double by) {
 
 bool CoordPage::key(const QString& name) {
     if (name == QLatin1String("ESC")) {
-        emit navigate(QStringLiteral("monitor"));
+        emit navigate(PageId::monitor);
         return true;
     }
     return false;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <array>
 
@@ -17,7 +18,7 @@ class CoordPage : public Page {
     Q_OBJECT
 public:
     explicit CoordPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("coord"); }
+    QString id() const override { return PageId::coord; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

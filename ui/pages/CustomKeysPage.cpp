@@ -109,7 +109,7 @@ void CustomKeysPage::softkey(int number) {
 
 bool CustomKeysPage::key(const QString& name) {
     if (name == QLatin1String("ESC")) {
-        emit navigate(QStringLiteral("monitor"));
+        emit navigate(PageId::monitor);
     } else if (name == QLatin1String("ENTER")) {
         press();
     } else if (name == QLatin1String("LEFT") || name == QLatin1String("RIGHT")) {

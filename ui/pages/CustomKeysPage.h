@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <array>
 
@@ -18,7 +19,7 @@ public:
     static constexpr int kKeys = 14;
 
     explicit CustomKeysPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("custom"); }
+    QString id() const override { return PageId::custom; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 #include "ui/session/MachineSession.h"
 
 #include <QVector>
@@ -21,7 +22,7 @@ class IoPage : public Page {
     Q_OBJECT
 public:
     explicit IoPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("io"); }
+    QString id() const override { return PageId::io; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <QHash>
 
@@ -14,7 +15,7 @@ class LogPage : public Page {
     Q_OBJECT
 public:
     explicit LogPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("log"); }
+    QString id() const override { return PageId::log; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

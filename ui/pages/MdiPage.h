@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <QStringList>
 
@@ -21,7 +22,7 @@ class MdiPage : public Page {
     Q_OBJECT
 public:
     explicit MdiPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("mdi"); }
+    QString id() const override { return PageId::mdi; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

@@ -127,7 +127,7 @@ std::optional<QPointF> MiddlePage::circleCentre(QPointF a, QPointF b, QPointF c)
 
 bool MiddlePage::key(const QString& name) {
     if (name == QLatin1String("ESC")) {
-        emit navigate(QStringLiteral("monitor"));
+        emit navigate(PageId::monitor);
         return true;
     }
     return false;

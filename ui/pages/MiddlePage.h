@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <QPointF>
 
@@ -18,7 +19,7 @@ class MiddlePage : public Page {
     Q_OBJECT
 public:
     explicit MiddlePage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("middle"); }
+    QString id() const override { return PageId::middle; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

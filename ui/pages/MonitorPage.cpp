@@ -120,7 +120,6 @@ void MonitorPage::retranslate() {
 }
 
 QVector<Page::Softkey> MonitorPage::softkeys() const {
-    const QString later = tr("Comes with the panel's part 2");
     auto axisRow = [this](const QStringList& labels) {
         QVector<Softkey> keys;
         for (int i = 0; i < labels.size(); ++i) {
@@ -141,7 +140,8 @@ QVector<Page::Softkey> MonitorPage::softkeys() const {
                         tr("Clear 4th", "msg 447"), tr("Clear 5th", "msg 448"), tr("Clear All", "msg 449")});
     case Menu::Main: break;
     }
-    return {{tr("Simulation", "msg 312"), false, later},
+    // 图形显示 stays greyed out, pressing it does nothing, until the panel has its machine view
+    return {{tr("Simulation", "msg 312"), false, {}},
             {tr("Probe", "msg 313"), true, {}},
             {tr("Go Work Zero", "msg 314"), true, {}},
             {tr("Go Home", "msg 315"), true, {}},
@@ -152,7 +152,7 @@ QVector<Page::Softkey> MonitorPage::softkeys() const {
             {tr("MDI", "msg 320"), true, {}},
             {tr("Middle", "msg 321"), true, {}},
             {tr("Work Record", "msg 322"), true, {}},
-            {tr("Sort Proces", "msg 323"), false, later}};
+            {tr("Sort Proces", "msg 323"), false, tr("Not in the simulator")}};
 }
 
 void MonitorPage::openMenu(Menu menu) {
@@ -166,16 +166,16 @@ void MonitorPage::softkey(int number) {
         return;
     }
     switch (number) {
-    case 2: emit navigate(QStringLiteral("probe")); break;
+    case 2: emit navigate(PageId::probe); break;
     case 3: openMenu(Menu::GoWorkZero); break;
     case 4: openMenu(Menu::GoHome); break;
     case 5: openMenu(Menu::Clear); break;
-    case 6: emit navigate(QStringLiteral("breakrun")); break;
-    case 7: emit navigate(QStringLiteral("custom")); break;
-    case 8: emit navigate(QStringLiteral("coord")); break;
-    case 9: emit navigate(QStringLiteral("mdi")); break;
-    case 10: emit navigate(QStringLiteral("middle")); break;
-    case 11: emit navigate(QStringLiteral("record")); break;
+    case 6: emit navigate(PageId::breakRun); break;
+    case 7: emit navigate(PageId::custom); break;
+    case 8: emit navigate(PageId::coord); break;
+    case 9: emit navigate(PageId::mdi); break;
+    case 10: emit navigate(PageId::middle); break;
+    case 11: emit navigate(PageId::record); break;
     default: break;
     }
 }

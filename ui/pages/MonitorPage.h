@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <array>
 
@@ -16,7 +17,7 @@ class MonitorPage : public Page {
     Q_OBJECT
 public:
     explicit MonitorPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("monitor"); }
+    QString id() const override { return PageId::monitor; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

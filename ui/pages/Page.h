@@ -13,7 +13,7 @@ class PanelContext;
 
 // One screen of the panel (加工状态, MDI, IO状态, 对刀 ...). A page shows snapshots and answers the
 // operator's softkeys and keys; it moves the machine only through the context's session. Adding
-// a page is a local change: write a Page and register it in MainWindow::addPages.
+// a page is a local change: write a Page, give it a PageId and add it to PageTable.
 class Page : public QWidget {
     Q_OBJECT
 public:

@@ -3,6 +3,7 @@
 #include "core/params/ParameterCatalogue.h"
 #include "core/params/ParameterPages.h"
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <optional>
 
@@ -23,7 +24,7 @@ class ParamPage : public Page {
     Q_OBJECT
 public:
     explicit ParamPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("param"); }
+    QString id() const override { return PageId::param; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

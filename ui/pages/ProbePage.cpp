@@ -131,7 +131,7 @@ QVector<Page::Softkey> ProbePage::softkeys() const {
 void ProbePage::softkey(int number) {
     switch (number) {
     case 1: floating(); break;
-    case 2: emit navigate(QStringLiteral("tools")); break;
+    case 2: emit navigate(PageId::tools); break;
     case 3: fixed(); break;
     case 4: multi(); break;
     case 5: teach(true); break;

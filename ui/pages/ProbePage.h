@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <array>
 
@@ -23,7 +24,7 @@ class ProbePage : public Page {
     Q_OBJECT
 public:
     explicit ProbePage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("probe"); }
+    QString id() const override { return PageId::probe; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

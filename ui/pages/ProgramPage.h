@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 #include "ui/program/ProgramFiles.h"
 
 #include "core/config/MachineConfig.h"
@@ -22,7 +23,7 @@ class ProgramPage : public Page {
 public:
     enum class Mode { List, Editor, Simulation };
     explicit ProgramPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("program"); }
+    QString id() const override { return PageId::program; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

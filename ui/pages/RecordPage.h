@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 class QLabel;
 
@@ -13,7 +14,7 @@ class RecordPage : public Page {
     Q_OBJECT
 public:
     explicit RecordPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("record"); }
+    QString id() const override { return PageId::record; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <QMap>
 
@@ -15,7 +16,7 @@ class SystemPage : public Page {
     Q_OBJECT
 public:
     explicit SystemPage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("system"); }
+    QString id() const override { return PageId::system; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

@@ -80,7 +80,7 @@ void ToolLifePage::softkey(int number) {
     if (number == 1) {
         resetSelectedGroup();
     } else if (number == 6) {
-        emit navigate(QStringLiteral("tools"));
+        emit navigate(PageId::tools);
     }
 }
 
@@ -88,7 +88,7 @@ bool ToolLifePage::key(const QString& name) {
     if (name == QLatin1String("UP") || name == QLatin1String("DOWN")) {
         select(currentRow_ + (name == QLatin1String("UP") ? -1 : 1));
     } else if (name == QLatin1String("ESC")) {
-        emit navigate(QStringLiteral("tools"));
+        emit navigate(PageId::tools);
     } else {
         return false;
     }

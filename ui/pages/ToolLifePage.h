@@ -2,6 +2,7 @@
 
 #include "core/tools/ToolLifeView.h"
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <memory>
 
@@ -21,7 +22,7 @@ class ToolLifePage : public Page {
     Q_OBJECT
 public:
     explicit ToolLifePage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("toollife"); }
+    QString id() const override { return PageId::toolLife; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

@@ -2,6 +2,7 @@
 
 #include "core/tools/ToolTable.h"
 #include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
 
 #include <memory>
 #include <optional>
@@ -24,7 +25,7 @@ class ToolTablePage : public Page {
     Q_OBJECT
 public:
     explicit ToolTablePage(PanelContext& context, QWidget* parent = nullptr);
-    QString id() const override { return QStringLiteral("tools"); }
+    QString id() const override { return PageId::tools; }
     QString title() const override;
     QVector<Softkey> softkeys() const override;
     void softkey(int number) override;

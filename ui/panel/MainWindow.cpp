@@ -3,22 +3,9 @@
 #include "ui/actions/ActionRecorder.h"
 #include "ui/actions/KeyboardMap.h"
 #include "ui/i18n/Language.h"
-#include "ui/pages/BreakRunPage.h"
-#include "ui/pages/BreakageMonitorPage.h"
-#include "ui/pages/CoordPage.h"
-#include "ui/pages/CustomKeysPage.h"
-#include "ui/pages/IoPage.h"
-#include "ui/pages/LogPage.h"
-#include "ui/pages/MdiPage.h"
-#include "ui/pages/MiddlePage.h"
-#include "ui/pages/MonitorPage.h"
-#include "ui/pages/ParamPage.h"
-#include "ui/pages/ProbePage.h"
-#include "ui/pages/ProgramPage.h"
-#include "ui/pages/RecordPage.h"
-#include "ui/pages/SystemPage.h"
-#include "ui/pages/ToolLifePage.h"
-#include "ui/pages/ToolTablePage.h"
+#include "ui/pages/Page.h"
+#include "ui/pages/PageId.h"
+#include "ui/pages/PageTable.h"
 #include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
@@ -79,34 +66,20 @@ MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language*
     connect(softkeys_, &SoftkeyBar::pressed, this,
             [this](int number) { dispatcher_->dispatch(OperatorAction::softkeyPress(number)); });
     addPages();
-    keys_->setAvailablePages(pages_.keys());
     buildMenu();
     connect(&session_, &MachineSession::snapshotReady, this, &MainWindow::onSnapshot);
     qApp->installEventFilter(this);
     resize(1024, 600);
-    showPage(QStringLiteral("monitor"));
+    showPage(PageId::monitor);
     retranslate();
 }
 
 MainWindow::~MainWindow() { qApp->removeEventFilter(this); }
 
 void MainWindow::addPages() {
-    addPage(new MonitorPage(context_, stack_));
-    addPage(new MdiPage(context_, stack_));
-    addPage(new IoPage(context_, stack_));
-    addPage(new ProbePage(context_, stack_));
-    addPage(new LogPage(context_, stack_));
-    addPage(new CoordPage(context_, stack_));
-    addPage(new MiddlePage(context_, stack_));
-    addPage(new RecordPage(context_, stack_));
-    addPage(new BreakRunPage(context_, stack_));
-    addPage(new ProgramPage(context_, stack_));
-    addPage(new ParamPage(context_, stack_));
-    addPage(new SystemPage(context_, stack_));
-    addPage(new ToolTablePage(context_, stack_));
-    addPage(new CustomKeysPage(context_, stack_));
-    addPage(new ToolLifePage(context_, stack_));
-    addPage(new BreakageMonitorPage(context_, stack_));
+    for (const PageTable::Entry& entry : PageTable::entries()) {
+        addPage(entry.make(context_, stack_));
+    }
 }
 
 void MainWindow::addPage(Page* page) {
@@ -123,8 +96,7 @@ void MainWindow::addPage(Page* page) {
 bool MainWindow::showPage(const QString& id) {
     Page* page = pages_.value(id);
     if (!page) {
-        notify(tr("This page comes with the panel's part 2"));
-        return false;
+        return false; // every id of PageTable has its page: only a caller's typo lands here
     }
     stack_->setCurrentWidget(page);
     refreshSoftkeys();
@@ -145,7 +117,10 @@ void MainWindow::pressSoftkey(int number) {
         return;
     }
     if (!keys[number - 1].enabled) {
-        notify(keys[number - 1].tooltip);
+        // a key with a reason says it; one greyed out for what is not there yet does nothing
+        if (!keys[number - 1].tooltip.isEmpty()) {
+            notify(keys[number - 1].tooltip);
+        }
         return;
     }
     notice_.clear();

@@ -1,5 +1,7 @@
 #include "ui/panel/PanelMode.h"
 
+#include "ui/pages/PageId.h"
+
 namespace m350::ui {
 
 using Run = controller::PanelStatus::Run;
@@ -21,10 +23,10 @@ PanelText::Mode displayedMode(const PanelSnapshot& snapshot, const QString& page
     case Activity::Probe: return PanelText::Mode::Probe;
     case Activity::None: break;
     }
-    if (page == QLatin1String("mdi")) {
+    if (page == PageId::mdi) {
         return PanelText::Mode::Mdi;
     }
-    if (page == QLatin1String("probe")) {
+    if (page == PageId::probe) {
         return PanelText::Mode::Probe;
     }
     switch (s.jogMode) {

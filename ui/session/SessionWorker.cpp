@@ -210,7 +210,7 @@ void SessionWorker::start() {
     } else if (busy()) {
         return;
     } else if (programFile_.isEmpty()) {
-        refuse(tr("No program loaded: open one with m350-hmi FILE (the Program page comes with part 2)"));
+        refuse(tr("No program loaded: load one on the Program page"));
         return;
     } else if (loadCurrentFile()) {
         if (controller_->start()) {
