@@ -33,7 +33,7 @@ constexpr std::array kFiles{
     FolderFileInfo{F::ToolLife, tools::kToolLifeFile, W::KeepingLastGood},
     FolderFileInfo{F::Passwords, "passwords.toml", W::Atomically},
     FolderFileInfo{F::MdiBlock, "mdiblock", W::Atomically},
-    FolderFileInfo{F::MdiProgram, "mdi.nc", W::Atomically},
+    FolderFileInfo{F::MdiProgram, kMdiProgramFile, W::Atomically},
     FolderFileInfo{F::BreakPoint, "breakpoint", W::Atomically},
     FolderFileInfo{F::ExternalOutput, "dprnt.txt", W::AsOutput},
     FolderFileInfo{F::ParamsBackup, params::kParameterBackupFile, W::Atomically},
