@@ -1,5 +1,7 @@
 #include "app/sim/OutputPaths.h"
 
+#include "core/config/MachineFolder.h"
+
 #include <filesystem>
 #include <utility>
 #include <vector>
@@ -37,7 +39,8 @@ std::optional<std::string> outputNamingAnInput(const SimOptions& o, const config
     }
     std::error_code ec;
     for (const fs::directory_entry& entry : fs::directory_iterator(machine.folder, ec)) {
-        if (entry.is_regular_file(ec) && entry.path().filename() != "dprnt.txt") { // dprnt.txt: an output
+        if (entry.is_regular_file(ec) && entry.path().filename() != config::MachineFolder::fileName(config::FolderFile::ExternalOutput)) {
+            // dprnt.txt: an output
             inputs.emplace_back("a file of the machine folder", entry.path());
         }
     }

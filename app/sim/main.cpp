@@ -12,10 +12,10 @@
 #include "core/params/FanucParameters.h"
 #include "core/files/OutputFile.h"
 #include "core/config/MachineConfig.h"
+#include "core/config/MachineFolder.h"
 #include "core/params/ParameterNumbers.h"
 #include "core/controller/Controller.h"
 #include "core/macro/VariableMap.h"
-#include "core/tools/ToolLifeFile.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -130,12 +130,13 @@ std::optional<std::string> writeExternalOutput(const controller::Controller& con
 }
 
 // Tool life data the run used or entered (G10 L3) go back into the machine folder's toollife.txt.
-std::optional<std::string> saveToolLife(controller::Controller& controller, const std::string& folder) {
+std::optional<std::string> saveToolLife(controller::Controller& controller, const config::MachineFolder& folder) {
     if (!controller.toolLife().changed()) {
         return std::nullopt;
     }
-    if (auto problem = tools::saveToolLife(folder, controller.toolLife().data())) {
-        std::cerr << "m350-sim: cannot write the tool life data to " << folder << "/" << tools::kToolLifeFile << ": "
+    if (auto problem = folder.saveToolLife(controller.toolLife().data())) {
+        std::cerr << "m350-sim: cannot write the tool life data to " << folder.path().string() << "/"
+                  << config::MachineFolder::fileName(config::FolderFile::ToolLife) << ": "
                   << *problem << '\n';
         return problem;
     }
@@ -240,7 +241,7 @@ int runCommand(int argc, char** argv) {
         report.status = controller::RunStatus::Error;
     }
     std::optional<std::string> outputProblem = writeExternalOutput(controller, o);
-    if (auto lifeProblem = saveToolLife(controller, folder)) {
+    if (auto lifeProblem = saveToolLife(controller, config::MachineFolder(folder))) {
         outputProblem = lifeProblem;
     }
     printDiagnostics(report.diagnostics);

@@ -6,6 +6,7 @@
 #include "core/backup/BackupPrograms.h"
 #include "core/config/HookFiles.h"
 #include "core/config/MachineConfig.h"
+#include "core/config/MachineFolder.h"
 
 #include <algorithm>
 #include <fstream>
@@ -32,14 +33,14 @@ struct Refusal {
 Files plan(const ControllerBackup& backup, const params::ParameterCatalogue& catalogue, BackupImport& result) {
     Files files;
     ImportedMachine machine = formatImportedMachine(backup);
-    files.emplace_back("machine.toml", machine.text);
+    files.emplace_back(config::MachineFolder::fileName(config::FolderFile::Machine), machine.text);
     result.magazine = machine.magazine;
     result.libraries = machine.libraries;
     result.review = std::move(machine.review);
     result.unsupported = std::move(machine.unsupported);
 
     ImportedParams params = formatImportedParams(backup, catalogue);
-    files.emplace_back("params.toml", params.text);
+    files.emplace_back(config::MachineFolder::fileName(config::FolderFile::Params), params.text);
     result.parameters = params::ParameterTable::kCount;
     result.factoryCompared = backup.defaultSetting.has_value();
     result.changedParameters = std::move(params.changed);
@@ -48,14 +49,14 @@ Files plan(const ControllerBackup& backup, const params::ParameterCatalogue& cat
         result.notes.push_back("no default_setting: no parameter is compared with the factory values");
     }
     if (backup.coordinate) {
-        files.emplace_back("offsets.toml", formatImportedOffsets(*backup.coordinate));
+        files.emplace_back(config::MachineFolder::fileName(config::FolderFile::Offsets), formatImportedOffsets(*backup.coordinate));
         result.offsets = true;
     } else {
         result.notes.push_back("no coordinate file: every work offset is 0");
     }
     if (backup.mdiblock) {
         ImportedMdi mdi = importMdiBlock(*backup.mdiblock);
-        files.emplace_back("mdiblock", mdi.bytes);
+        files.emplace_back(config::MachineFolder::fileName(config::FolderFile::MdiBlock), mdi.bytes);
         result.mdiLines = std::move(mdi.lines);
         if (mdi.note) {
             result.notes.push_back(*mdi.note);

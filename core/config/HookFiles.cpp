@@ -55,7 +55,7 @@ constexpr std::array kHooks{
     HookFile{H::M10, "M10", "M10.nc", "the M10 key"},
     HookFile{H::M11, "M11", "M11.nc", "the M11 key"},
     HookFile{H::M19, "M19", "M19.nc", "the M19 key"},
-    HookFile{H::Mdi, "mdi", "mdi.nc", "the MDI program kept beside mdiblock"},
+    HookFile{H::Mdi, "mdi", kMdiProgramFile, "the MDI program kept beside mdiblock"},
     HookFile{H::UserLibrary, "slibuser", "slibuser.nc", "user G-code handlers O9100-O9199 (G100-G199)", false},
 };
 

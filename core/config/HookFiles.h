@@ -59,6 +59,9 @@ enum class Hook : std::uint8_t {
     UserLibrary, // slibuser.nc: user G-code handlers O9100-O9199 (G100-G199), a library
 };
 
+// The Mdi hook's file, which the panel writes (config::MachineFolder, FolderFile::MdiProgram).
+inline constexpr std::string_view kMdiProgramFile = "mdi.nc";
+
 // M101 runs ALL_T.nc: the M350 changes to every tool in turn.
 inline constexpr int kAllToolsMCode = 101;
 

@@ -4,6 +4,7 @@
 
 #include "core/params/FanucParameters.h"
 #include "core/config/HookFiles.h"
+#include "core/config/MachineFolder.h"
 #include "core/files/LastGoodCopy.h"
 #include "core/config/MagazineToml.h"
 #include "core/params/ParameterCatalogue.h"
@@ -68,7 +69,7 @@ void readNumberedTools(const fs::path& file, const toml::table& t, MachineConfig
 }
 
 void loadMachineToml(const fs::path& folder, MachineConfig& config) {
-    fs::path file = folder / "machine.toml";
+    fs::path file = folder / MachineFolder::fileName(FolderFile::Machine);
     if (!fs::exists(file)) {
         fail(file, "not found: a machine folder needs machine.toml");
     }
@@ -209,7 +210,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
 }
 
 void loadParams(const fs::path& folder, MachineConfig& config) {
-    fs::path file = folder / "params.toml";
+    fs::path file = folder / MachineFolder::fileName(FolderFile::Params);
     if (!fs::exists(file)) {
         return;
     }
@@ -248,7 +249,7 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
 }
 
 void loadOffsets(const fs::path& folder, MachineConfig& config) {
-    fs::path file = folder / "offsets.toml";
+    fs::path file = folder / MachineFolder::fileName(FolderFile::Offsets);
     if (!fs::exists(file)) {
         return;
     }
@@ -273,7 +274,7 @@ void loadOffsets(const fs::path& folder, MachineConfig& config) {
 }
 
 void loadVariables(const fs::path& folder, MachineConfig& config) {
-    fs::path file = folder / "variables.toml";
+    fs::path file = folder / MachineFolder::fileName(FolderFile::Variables);
     if (!fs::exists(file)) {
         return;
     }
@@ -289,7 +290,7 @@ void loadVariables(const fs::path& folder, MachineConfig& config) {
 // tool.tbl: a refused line is a warning (the rest loads). On the M350 the table's Z replaces the
 // tool's parameter; a different non-zero value in params.toml is said.
 void loadToolTable(const fs::path& folder, MachineConfig& config) {
-    fs::path file = folder / tools::kToolTableFileName;
+    fs::path file = folder / MachineFolder::fileName(FolderFile::ToolTable);
     if (!fs::exists(file)) {
         return;
     }
@@ -315,7 +316,7 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
         }
         const double inParams = config.parameters.get(*parameter);
         if (inParams != 0.0 && inParams != *row->offsets[tools::kZ]) {
-            config.warnings.push_back((folder / "params.toml").string() + ": warning: parameter " +
+            config.warnings.push_back((folder / MachineFolder::fileName(FolderFile::Params)).string() + ": warning: parameter " +
                                       std::to_string(*parameter) + " (T" + std::to_string(row->tool) + " Z) is " +
                                       tools::tableNumber(inParams) + " but " + file.string() + ":" +
                                       std::to_string(i + 1) + " says " + tools::tableNumber(*row->offsets[tools::kZ]) +
@@ -339,19 +340,19 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         loadParams(dir, config);
         loadOffsets(dir, config);
         loadVariables(dir, config);
-        if (auto wrong = loadModbusSlaves((dir / "modbus.toml").string(), config.modbus)) {
-            fail(dir / "modbus.toml", *wrong);
+        if (auto wrong = loadModbusSlaves((dir / MachineFolder::fileName(FolderFile::Modbus)).string(), config.modbus)) {
+            fail(dir / MachineFolder::fileName(FolderFile::Modbus), *wrong);
         }
         loadToolTable(dir, config);
         auto life = tools::loadToolLife(folder);
         if (auto* unreadable = std::get_if<std::string>(&life)) {
-            fail(dir / tools::kToolLifeFile, *unreadable);
+            fail(dir / MachineFolder::fileName(FolderFile::ToolLife), *unreadable);
         }
         tools::ParsedToolLife& parsed = std::get<tools::ParsedToolLife>(life);
         for (const tools::LifeFileIssue& issue : parsed.issues) {
             config.warnings.push_back(issue.text());
         }
-        const fs::path lifeFile = dir / tools::kToolLifeFile;
+        const fs::path lifeFile = dir / MachineFolder::fileName(FolderFile::ToolLife);
         if (parsed.issues.empty()) {
             files::refreshLastGood(lifeFile);
         } else if (!files::lastGoodNote(lifeFile).empty()) {
@@ -363,7 +364,7 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         if (auto wrong = tools::readLoadMonitorSettings((dir / tools::kSpindleLoadFileName).string(), config.loadMonitor)) {
             return ConfigError{(dir / tools::kSpindleLoadFileName).string(), wrong->message, wrong->line, wrong->column};
         }
-        files::refreshLastGood(dir / "params.toml");
+        files::refreshLastGood(dir / MachineFolder::fileName(FolderFile::Params));
     } catch (const Failure& f) {
         ConfigError error = f.error;
         error.message += files::lastGoodNote(error.file);

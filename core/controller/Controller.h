@@ -263,12 +263,14 @@ public:
     // a FANUC its row (G10 L10 P n Z`workZ`) followed by G43 H n. Refused with no tool, a tool the
     // M350 has no Z parameter for, while a program runs or holds or a manual move is under way.
     bool touchOffTool(double workZ, std::string* why = nullptr);
-    // Writes the table to the machine folder's tool.tbl atomically (and the M350's Z parameters
-    // params.toml already lists, so both files agree; tool.tbl is the one read). nullopt on success.
-    std::optional<std::string> saveToolTable(const files::AtomicWriteHooks& hooks = {});
+    // What the machine folder keeps beside tool.tbl (config::MachineFolder::saveToolTable writes
+    // both; controller::saveToolTable is the whole save): on the M350 the tools' Z parameters
+    // 930-945 and 973-992 as they are now, on a FANUC none.
+    std::map<int, double> toolZParameters() const;
     // Whether the tool data changed since the start or the last save (by an edit, G10, a macro
-    // writing #1430 ...): what a panel saves after.
+    // writing #1430 ...): what a panel saves after. The saver marks the data it saved.
     bool toolTableChanged() const { return !(tools_.mark() == savedToolMark_); }
+    void markToolTableSaved(tools::ToolData::Mark saved) { savedToolMark_ = saved; }
     // Changes when the tool data does (for a view that redraws only then).
     tools::ToolData::Mark toolTableMark() const { return tools_.mark(); }
 
@@ -294,7 +296,7 @@ public:
     // FANUC tool life management (ToolLife.cpp; core/tools/ToolLifeManager.h): groups from the
     // machine folder's toollife.txt or G10 L3; T<ignore+n> selects group n's tool, M06 (on the M350:
     // the T word) starts counting, feed moves and arcs of a run count for a minutes group. The
-    // caller writes the data back (tools::saveToolLife) when changed().
+    // caller writes the data back (config::MachineFolder::saveToolLife) when changed().
     tools::ToolLifeManager& toolLife() { return toolLife_; }
     const tools::ToolLifeManager& toolLife() const { return toolLife_; }
     // The operator's tool life reset of a group (its tools' used life to 0). Refused (false, with

@@ -1,13 +1,9 @@
-// The tool table as the panel edits it: rows, an import, touch off, and saving to tool.tbl.
+// The tool table as the panel edits it: rows, an import, touch off, and what saving it writes.
 #include "core/controller/Controller.h"
 
-#include "core/files/LastGoodCopy.h"
 #include "core/params/ParameterNumbers.h"
-#include "core/params/ParamsFileWriter.h"
-#include "core/tools/ToolTableFile.h"
 
 #include <cmath>
-#include <filesystem>
 
 namespace m350::controller {
 
@@ -95,30 +91,19 @@ bool Controller::touchOffTool(double workZ, std::string* why) {
     return true;
 }
 
-std::optional<std::string> Controller::saveToolTable(const files::AtomicWriteHooks& hooks) {
-    if (config_.folder.empty()) {
-        return "this machine has no folder to keep its tool table in";
+std::map<int, double> Controller::toolZParameters() const {
+    std::map<int, double> zParameters;
+    if (config_.dialect->id != gcode::DialectId::M350) {
+        return zParameters;
     }
-    const std::filesystem::path folder(config_.folder);
-    if (auto error = files::saveKeepingLastGood(folder / tools::kToolTableFileName, tools::formatToolTable(tools_.table()),
-                                                 hooks)) {
-        return error;
+    for (int i = 0; i < param::kToolZOffsetCount; ++i) {
+        zParameters[param::kToolZOffsetFirst + i] = config_.parameters.get(param::kToolZOffsetFirst + i);
     }
-    if (config_.dialect->id == gcode::DialectId::M350) {
-        std::map<int, double> zParameters;
-        for (int i = 0; i < param::kToolZOffsetCount; ++i) {
-            zParameters[param::kToolZOffsetFirst + i] = config_.parameters.get(param::kToolZOffsetFirst + i);
-        }
-        for (int i = 0; i < param::kVirtualToolZOffsetCount; ++i) {
-            const int number = param::kVirtualToolZOffsetFirst + i;
-            zParameters[number] = config_.parameters.get(number);
-        }
-        if (auto error = params::saveParameters(folder, zParameters, false)) {
-            return error;
-        }
+    for (int i = 0; i < param::kVirtualToolZOffsetCount; ++i) {
+        const int number = param::kVirtualToolZOffsetFirst + i;
+        zParameters[number] = config_.parameters.get(number);
     }
-    savedToolMark_ = tools_.mark();
-    return std::nullopt;
+    return zParameters;
 }
 
 } // namespace m350::controller

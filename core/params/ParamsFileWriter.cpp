@@ -1,15 +1,9 @@
 #include "core/params/ParamsFileWriter.h"
 
-#include "core/files/LastGoodCopy.h"
-
 #include <charconv>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 namespace m350::params {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -114,23 +108,6 @@ std::string setTomlNumbers(std::string_view text, std::string_view table, const 
     std::string out;
     for (const std::string& line : lines) out += line + '\n';
     return out;
-}
-
-std::optional<std::string> saveParameters(const fs::path& folder, const std::map<int, double>& values,
-                                          bool addMissing) {
-    fs::path file = folder / "params.toml";
-    std::string text;
-    if (!addMissing && !fs::exists(file)) return std::nullopt;
-    if (fs::exists(file)) {
-        std::ifstream in(file, std::ios::binary);
-        if (!in) return file.string() + ": cannot read";
-        std::ostringstream buffer;
-        buffer << in.rdbuf();
-        text = buffer.str();
-    }
-    std::string updated = setTomlNumbers(text, "params", values, addMissing);
-    if (!addMissing && updated == text) return std::nullopt;
-    return files::saveKeepingLastGood(file, updated);
 }
 
 } // namespace m350::params

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -19,11 +18,5 @@ std::string setTomlNumbers(std::string_view text, std::string_view table, const 
 // A number as the writer puts it in a TOML file: the shortest text that reads back as the same
 // double ("3000", "0.5", "-30", "1e-07").
 std::string tomlNumber(double value);
-
-// Writes `values` into the machine folder's params.toml ([params] N = value) in place and
-// atomically (see writeFileAtomically); creates the file when there is none. nullopt on success.
-// With `addMissing` false only the values the file lists change (no file: nothing is written).
-std::optional<std::string> saveParameters(const std::filesystem::path& folder, const std::map<int, double>& values,
-                                          bool addMissing = true);
 
 } // namespace m350::params

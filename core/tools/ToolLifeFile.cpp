@@ -1,7 +1,5 @@
 #include "core/tools/ToolLifeFile.h"
 
-#include "core/files/LastGoodCopy.h"
-
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -251,11 +249,6 @@ std::string formatToolLife(const LifeData& data) {
         out << kUnreadPrefix << line << '\n';
     }
     return out.str();
-}
-
-std::optional<std::string> saveToolLife(const std::string& folder, const LifeData& data,
-                                        const files::AtomicWriteHooks& hooks) {
-    return files::saveKeepingLastGood(std::filesystem::path(folder) / kToolLifeFile, formatToolLife(data), hooks);
 }
 
 } // namespace m350::tools

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "core/files/AtomicFile.h"
 #include "core/tools/ToolLifeData.h"
 
 #include <cstdint>
@@ -45,8 +44,4 @@ ParsedToolLife parseToolLife(std::string_view text, const std::string& file);
 // over it would lose it.
 std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder);
 std::string formatToolLife(const LifeData& data);
-// Written atomically (temp file, sync, rename); the reason when it cannot be.
-std::optional<std::string> saveToolLife(const std::string& folder, const LifeData& data,
-                                        const files::AtomicWriteHooks& hooks = {});
-
 } // namespace m350::tools

@@ -245,9 +245,4 @@ std::variant<ParsedToolTable, std::string> readToolTableFile(const std::filesyst
     return parseToolTable(bytes.str(), path.string());
 }
 
-std::optional<std::string> writeToolTableFile(const std::filesystem::path& path, const ToolTable& table,
-                                              const files::AtomicWriteHooks& hooks) {
-    return files::writeFileAtomically(path, formatToolTable(table), hooks);
-}
-
 } // namespace m350::tools

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "core/files/AtomicFile.h"
 #include "core/tools/ToolTable.h"
 
 #include <filesystem>
@@ -49,9 +48,6 @@ std::string formatToolTable(const ToolTable& table);
 
 // Reads and parses a file; the error (naming the file) when it cannot be read.
 std::variant<ParsedToolTable, std::string> readToolTableFile(const std::filesystem::path& path);
-// Writes the table atomically (files::writeFileAtomically). nullopt on success, else why.
-std::optional<std::string> writeToolTableFile(const std::filesystem::path& path, const ToolTable& table,
-                                              const files::AtomicWriteHooks& hooks = {});
 
 inline constexpr const char* kToolTableFileName = "tool.tbl";
 

@@ -6,9 +6,10 @@
 #include "FileText.h"
 #include "RunProgram.h"
 
+#include "core/config/MachineFolder.h"
+#include "core/controller/ToolTableSave.h"
 #include "core/files/AtomicFile.h"
 #include "core/files/LastGoodCopy.h"
-#include "core/params/ParamsFileWriter.h"
 #include "core/files/SystemLog.h"
 #include "core/tools/ToolLifeFile.h"
 
@@ -60,14 +61,14 @@ bool saveVersion(const fs::path& folder, controller::Controller& controller, fil
     for (int n = kFirstParam; n < kFirstParam + 4; ++n) {
         params[n] = 100 + v;
     }
-    if (params::saveParameters(folder, params) || !controller.setParameter(930, toolZ(v)) ||
-        controller.saveToolTable()) { // tool.tbl, then its Z into params 930-945
+    if (config::MachineFolder(folder).saveParameters(params) || !controller.setParameter(930, toolZ(v)) ||
+        controller::saveToolTable(controller, config::MachineFolder(folder))) { // tool.tbl, then its Z into params 930-945
         return false;
     }
     tools::LifeData life;
     life.putGroup({1, 100 + v, tools::LifeKind::Count, {{1, 0, 0, 0}}});
     std::string error;
-    return !tools::saveToolLife(folder.string(), life) &&
+    return !config::MachineFolder(folder).saveToolLife(life) &&
            log.append({"2026-11-24 05:00:00", "save", std::to_string(v)}, &error) &&
            !files::writeFileAtomically(folder / "mdi.nc", "G0 X" + std::to_string(v) + "\n");
 }
@@ -206,7 +207,7 @@ TEST(MachineFolderCrash, AWriterKilledAtRandomLeavesEveryFileOldOrNew) {
 TEST(MachineFolderCrash, AHandBrokenFileNamesItsLineAndTheLastGoodCopy) {
     const fs::path folder = scratchFolder("broken");
     writeText(folder / "machine.toml", "name = \"broken\"\n");
-    ASSERT_EQ(params::saveParameters(folder, {{61, 3000}, {62, 500}}), std::nullopt);
+    ASSERT_EQ(config::MachineFolder(folder).saveParameters({{61, 3000}, {62, 500}}), std::nullopt);
     const std::string good = readText(folder / "params.toml");
     EXPECT_EQ(readText(files::lastGoodPath(folder / "params.toml")), good) << "a save keeps a good copy beside";
 

@@ -4,6 +4,7 @@
 
 #include "core/files/AtomicFile.h"
 #include "core/config/MachineConfig.h"
+#include "core/config/MachineFolder.h"
 #include "core/params/ParamsFileWriter.h"
 
 #include <gmock/gmock.h>
@@ -73,7 +74,7 @@ TEST(ParamsFileWriter, AddsTheTableWhenTheFileHasNone) {
 TEST(ParamsFileWriter, TheMachineFolderLoadsWhatWasSaved) {
     fs::path folder = freshFolder("params-roundtrip");
     writeText(folder / "params.toml", kParams);
-    ASSERT_EQ(params::saveParameters(folder, {{61, 1234.5}, {545, 22}}), std::nullopt);
+    ASSERT_EQ(config::MachineFolder(folder).saveParameters({{61, 1234.5}, {545, 22}}), std::nullopt);
     auto loaded = loadMachineFolder(folder.string());
     ASSERT_TRUE(std::holds_alternative<MachineConfig>(loaded)) << std::get<ConfigError>(loaded).message;
     const MachineConfig& config = std::get<MachineConfig>(loaded);
@@ -86,7 +87,7 @@ TEST(ParamsFileWriter, TheMachineFolderLoadsWhatWasSaved) {
 
 TEST(ParamsFileWriter, AHandBrokenFileIsStillReportedWithItsLine) {
     fs::path folder = freshFolder("params-broken");
-    ASSERT_EQ(params::saveParameters(folder, {{61, 3000}, {62, 500}}), std::nullopt);
+    ASSERT_EQ(config::MachineFolder(folder).saveParameters({{61, 3000}, {62, 500}}), std::nullopt);
     writeText(folder / "params.toml", "[params]\n61 = 3000\n62 = = 500\n");
     auto loaded = loadMachineFolder(folder.string());
     ASSERT_TRUE(std::holds_alternative<ConfigError>(loaded));

@@ -4,6 +4,8 @@
 #include "FileText.h"
 #include "RunProgram.h"
 
+#include "core/config/MachineFolder.h"
+#include "core/controller/ToolTableSave.h"
 #include "core/files/AtomicFile.h"
 #include "core/tools/ToolTableFile.h"
 
@@ -110,7 +112,7 @@ TEST(ToolData, TouchOffSavedSurvivesAReloadWithTheCommentsAndParamsTomlAgrees) {
         std::string why;
         ASSERT_TRUE(c.touchOffTool(0.0, &why)) << why; // G54 Z is 0: T1's Z becomes -80
         ASSERT_TRUE(c.toolTableChanged());
-        ASSERT_EQ(c.saveToolTable(), std::nullopt);
+        ASSERT_EQ(controller::saveToolTable(c, config::MachineFolder(folder)), std::nullopt);
         EXPECT_FALSE(c.toolTableChanged());
     }
     EXPECT_EQ(readText(folder / "tool.tbl"), "; the router's tools\n"
@@ -140,7 +142,7 @@ void killedSave(const fs::path& folder, bool duringChunks) {
         files::AtomicWriteHooks hooks;
         if (duringChunks) hooks.afterChunk = [](std::size_t) { raise(SIGKILL); };
         else hooks.beforeRename = [] { raise(SIGKILL); };
-        (void)c.saveToolTable(hooks);
+        (void)controller::saveToolTable(c, config::MachineFolder(folder), hooks);
         _exit(0); // not reached: the hook killed us
     }
     int status = 0;

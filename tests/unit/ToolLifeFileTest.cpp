@@ -2,6 +2,7 @@
 // loads, skipped lines kept through a save, groups refused whole, the machine folder's warnings,
 // an unreadable file refused, and a killed save leaving the old file.
 #include "core/config/MachineConfig.h"
+#include "core/config/MachineFolder.h"
 #include "core/tools/ToolLifeFile.h"
 
 #include <gtest/gtest.h>
@@ -155,7 +156,7 @@ TEST(ToolLifeFile, AFileThatCannotBeReadStopsTheMachineFromLoading) {
 TEST(ToolLifeFile, ASaveKilledBeforeTheRenameLeavesTheOldFile) {
     fs::path folder = freshMachine("killed");
     tools::LifeData data = tools::parseToolLife(kTwoGroups, "f").data;
-    ASSERT_FALSE(tools::saveToolLife(folder.string(), data));
+    ASSERT_FALSE(config::MachineFolder(folder).saveToolLife(data));
     const std::string before = readText(folder / tools::kToolLifeFile);
     data.group(1)->tools[0].used = 3;
     pid_t child = fork();
@@ -163,14 +164,14 @@ TEST(ToolLifeFile, ASaveKilledBeforeTheRenameLeavesTheOldFile) {
     if (child == 0) {
         files::AtomicWriteHooks hooks;
         hooks.beforeRename = [] { raise(SIGKILL); };
-        tools::saveToolLife(folder.string(), data, hooks);
+        config::MachineFolder(folder).saveToolLife(data, hooks);
         _exit(0);
     }
     int status = 0;
     ASSERT_EQ(waitpid(child, &status, 0), child);
     ASSERT_TRUE(WIFSIGNALED(status));
     EXPECT_EQ(readText(folder / tools::kToolLifeFile), before);
-    ASSERT_FALSE(tools::saveToolLife(folder.string(), data));
+    ASSERT_FALSE(config::MachineFolder(folder).saveToolLife(data));
     EXPECT_EQ(tools::parseToolLife(readText(folder / tools::kToolLifeFile), "f").data.group(1)->tools[0].used, 3);
     fs::remove_all(folder);
 }

@@ -1,14 +1,15 @@
 #include "ui/pages/MdiLines.h"
 
-#include "core/files/AtomicFile.h"
+#include "core/config/MachineFolder.h"
 
-#include <QDir>
 #include <QFile>
 #include <QStringDecoder>
 
 namespace m350::ui {
 
-QString MdiLines::path(const QString& folder) { return QDir(folder).filePath(QStringLiteral("mdiblock")); }
+QString MdiLines::path(const QString& folder) {
+    return QString::fromStdString(config::MachineFolder(folder.toStdString()).pathOf(config::FolderFile::MdiBlock).string());
+}
 
 namespace {
 
@@ -58,7 +59,7 @@ bool MdiLines::save(const QString& folder, const QStringList& lines, QString* er
     }
     // as every machine folder file: a temp file, fsync, rename, fsync of the folder
     const std::string_view content(bytes.constData(), static_cast<std::size_t>(bytes.size()));
-    if (auto problem = files::writeFileAtomically(path(folder).toStdString(), content)) {
+    if (auto problem = config::MachineFolder(folder.toStdString()).write(config::FolderFile::MdiBlock, content)) {
         *error = QString::fromStdString(*problem);
         return false;
     }

@@ -3,6 +3,8 @@
 #include "ui/pages/PanelPrompt.h"
 #include "ui/session/MachineSession.h"
 
+#include "core/config/MachineFolder.h"
+
 #include <QString>
 
 #include <functional>
@@ -20,6 +22,8 @@ public:
     MachineSession& session() const { return session_; }
     SnapshotPtr snapshot() const { return session_.latest(); }
     const QString& machineFolder() const { return machineFolder_; }
+    // The machine folder's store: a page writes a file there only through it.
+    config::MachineFolder folderFiles() const { return config::MachineFolder(machineFolder_.toStdString()); }
 
     // A yes/no question (Enter = yes).
     void ask(const QString& question, std::function<void(bool)> answer) const;

@@ -2,7 +2,7 @@
 // search by number, and 参数备份 / 参数恢复.
 #include "ui/pages/ParamPage.h"
 
-#include "core/files/AtomicFile.h"
+#include "core/config/MachineFolder.h"
 #include "core/params/ParameterBackup.h"
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/LevelPrompt.h"
@@ -22,7 +22,7 @@ namespace {
 constexpr params::UserLevel kVariableLevel = params::UserLevel::Operator;
 
 QString backupPath(const PanelContext& context) {
-    return QDir(context.machineFolder()).filePath(QString::fromLatin1(params::kParameterBackupFile));
+    return QString::fromStdString(context.folderFiles().pathOf(config::FolderFile::ParamsBackup).string());
 }
 
 } // namespace
@@ -112,7 +112,7 @@ void ParamPage::backup() {
     }
     QString path = backupPath(context());
     std::string text = params::formatParameterBackup(s->status.parameters, *catalogue_, s->machineName.toStdString());
-    if (auto error = files::writeFileAtomically(path.toStdString(), text)) {
+    if (auto error = context().folderFiles().write(config::FolderFile::ParamsBackup, text)) {
         context().notify(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
         return;
     }

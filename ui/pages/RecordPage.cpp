@@ -5,7 +5,6 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QLabel>
-#include <QSaveFile>
 #include <QVBoxLayout>
 
 namespace m350::ui {
@@ -59,11 +58,12 @@ void RecordPage::softkey(int number) {
 }
 
 void RecordPage::exportRecord() {
-    QString path = QDir(context().machineFolder()).filePath(QStringLiteral("PROCES_MSG.txt"));
-    QSaveFile file(path);
-    QByteArray text = recordText().toUtf8() + '\n';
-    if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size() || !file.commit()) {
-        context().notify(tr("%1: cannot write: %2").arg(path, file.errorString()));
+    const config::MachineFolder folder = context().folderFiles();
+    const QString path = QString::fromStdString(folder.pathOf(config::FolderFile::WorkRecord).string());
+    const QByteArray text = recordText().toUtf8() + '\n';
+    const std::string_view bytes(text.constData(), static_cast<std::size_t>(text.size()));
+    if (auto error = folder.write(config::FolderFile::WorkRecord, bytes)) {
+        context().notify(tr("%1: cannot write: %2").arg(path, QString::fromStdString(*error)));
         return;
     }
     context().notify(tr("Working record saved to %1").arg(path));

@@ -206,7 +206,7 @@ void ToolTablePage::exportTable() {
             return;
         }
         const QString path = resolvePath(*text);
-        if (auto error = tools::writeToolTableFile(path.toStdString(), *shown_)) {
+        if (auto error = context().folderFiles().exportToolTable(path.toStdString(), *shown_)) {
             context().notify(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
             return;
         }

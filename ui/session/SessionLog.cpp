@@ -1,12 +1,13 @@
 #include "ui/session/SessionLog.h"
 
+#include "core/config/MachineFolder.h"
+
 #include <QDateTime>
-#include <QDir>
 
 namespace m350::ui {
 
 SessionLog::SessionLog(const std::string& machineFolder)
-    : log_(QDir(QString::fromStdString(machineFolder)).filePath(QStringLiteral("system-log.tsv")).toStdString()) {
+    : log_(config::MachineFolder(machineFolder).pathOf(config::FolderFile::SystemLog).string()) {
     std::string error;
     if (!log_.load(&error)) {
         problem_ = QString::fromStdString(error);

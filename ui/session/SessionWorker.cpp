@@ -2,7 +2,6 @@
 
 #include "ui/session/SimulationRun.h"
 
-#include "core/files/AtomicFile.h"
 #include "core/config/HookFiles.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/Controller.h"
@@ -12,7 +11,6 @@
 #include <QDateTime>
 
 #include <chrono>
-#include <filesystem>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -59,7 +57,7 @@ QString axisNames(const std::vector<int>& axes) {
 
 SessionWorker::SessionWorker(config::MachineConfig config, MachineSession::Options options) : options_(options) {
     machineName_ = QString::fromStdString(config.name);
-    folder_ = config.folder;
+    folder_ = config::MachineFolder(config.folder);
     kept_ = config.parameters;
     log_ = std::make_unique<SessionLog>(config.folder);
     controller_ = std::make_unique<Controller>(std::move(config), settingsFor(options));
@@ -280,8 +278,7 @@ void SessionWorker::runMdi(const QStringList& lines, Activity activity, bool thr
     fileLoaded_ = false;
     // The MDI page's line goes into the system disk's mdi.nc, which then runs, as on the M350 (its
     // messages name mdi.nc); a folder that cannot be written runs the line directly.
-    const std::filesystem::path mdiFile = std::filesystem::path(folder_) / config::hookFile(config::Hook::Mdi).fileName;
-    const bool viaFile = throughMdiFile && !folder_.empty() && !files::writeFileAtomically(mdiFile, body);
+    const bool viaFile = throughMdiFile && !folder_.path().empty() && !folder_.write(config::FolderFile::MdiProgram, body);
     if (!(viaFile ? controller_->loadHook(config::Hook::Mdi) : controller_->loadMdi(text))) {
         refuse(diagnosticsText(controller_->diagnostics()));
         return;

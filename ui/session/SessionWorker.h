@@ -3,6 +3,7 @@
 #include "ui/session/MachineSession.h"
 #include "ui/session/SessionLog.h"
 
+#include "core/config/MachineFolder.h"
 #include "core/params/ParameterTable.h"
 #include "core/controller/KeyPress.h"
 #include "core/tools/ToolData.h"
@@ -153,7 +154,7 @@ private:
     double feedOverride_ = 100.0;
     double spindleOverride_ = 100.0;
     bool jogHigh_ = false;
-    std::string folder_; // the machine folder, where params.toml is kept
+    config::MachineFolder folder_{std::filesystem::path()}; // the machine folder: every file the session writes there
     params::ParameterTable kept_; // the parameters as params.toml holds them
     bool watchVariables_ = false;
     params::UserLevel userLevel_ = params::UserLevel::Guest;

@@ -3,24 +3,14 @@
 // path on one line, the line number on the next, written atomically).
 #include "ui/session/SessionWorker.h"
 
-#include "core/files/AtomicFile.h"
 #include "core/controller/Controller.h"
 
 #include <QDateTime>
-#include <QDir>
 #include <QFile>
 
 namespace m350::ui {
 
 using controller::Controller;
-
-namespace {
-
-QString breakPointPath(const std::string& folder) {
-    return QDir(QString::fromStdString(folder)).filePath(QStringLiteral("breakpoint"));
-}
-
-} // namespace
 
 void SessionWorker::startAtLine(int line) {
     lastError_.clear();
@@ -97,7 +87,7 @@ void SessionWorker::keepBreakPoint() {
         return;
     }
     const std::string text = point->file + '\n' + std::to_string(point->line) + '\n';
-    if (auto problem = files::writeFileAtomically(breakPointPath(folder_).toStdString(), text)) {
+    if (auto problem = folder_.write(config::FolderFile::BreakPoint, text)) {
         lastError_ = QString::fromStdString(*problem);
         return;
     }
@@ -112,7 +102,7 @@ BreakPoints SessionWorker::breakPoints() const {
     }
     if (!keptBreak_) {
         keptBreak_.emplace();
-        QFile file(breakPointPath(folder_));
+        QFile file(QString::fromStdString(folder_.pathOf(config::FolderFile::BreakPoint).string()));
         QList<QByteArray> lines = file.open(QIODevice::ReadOnly) ? file.readAll().split('\n') : QList<QByteArray>{};
         if (lines.size() >= 2) {
             *keptBreak_ = {QString::fromUtf8(lines[0]), lines[1].trimmed().toInt()};

@@ -5,17 +5,14 @@
 // dprnt.txt keeps only the first and the last of them.
 #include "ui/session/SessionWorker.h"
 
-#include "core/files/OutputFile.h"
 #include "core/controller/Controller.h"
 
-#include <filesystem>
 #include <string_view>
 
 namespace m350::ui {
 
 namespace {
 
-constexpr const char* kExternalOutputFile = "dprnt.txt";
 // dprnt.txt is written whole (up to the output's limit, 64 MiB by default): while a program keeps
 // sending, at most once a second, and when the run is over.
 constexpr qint64 kSaveIntervalMs = 1000;
@@ -62,13 +59,12 @@ void SessionWorker::keepExternalOutput() {
 }
 
 void SessionWorker::saveExternalOutput() {
-    if (!externalOutputUnsaved_ || folder_.empty()) {
+    if (!externalOutputUnsaved_ || folder_.path().empty()) {
         return;
     }
     externalOutputUnsaved_ = false;
     externalOutputSaved_.start();
-    const auto file = std::filesystem::path(folder_) / kExternalOutputFile;
-    if (auto problem = files::writeOutputFile(file, controller_->externalOutput())) {
+    if (auto problem = folder_.write(config::FolderFile::ExternalOutput, controller_->externalOutput())) {
         lastError_ = tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*problem);
     }
 }

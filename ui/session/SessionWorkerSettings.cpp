@@ -2,7 +2,6 @@
 // the user level the status line shows.
 #include "ui/session/SessionWorker.h"
 
-#include "core/params/ParamsFileWriter.h"
 #include "core/controller/Controller.h"
 
 #include <cmath>
@@ -18,10 +17,10 @@ constexpr int kLastUserVariable = 499;
 } // namespace
 
 bool SessionWorker::saveParameters(const std::map<int, double>& values) {
-    if (folder_.empty()) {
+    if (folder_.path().empty()) {
         return true; // a machine built in memory (tests of the core) has no folder to keep
     }
-    if (auto error = params::saveParameters(folder_, values)) {
+    if (auto error = folder_.saveParameters(values)) {
         refuse(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
         return false;
     }

@@ -4,7 +4,7 @@
 #include "ui/session/SessionWorker.h"
 
 #include "core/controller/Controller.h"
-#include "core/tools/ToolLifeFile.h"
+#include "core/controller/ToolTableSave.h"
 
 namespace m350::ui {
 
@@ -55,8 +55,8 @@ void SessionWorker::touchOffTool(double workZ) {
 // A save that failed is tried again when the data changes again, not at every frame.
 void SessionWorker::keepToolTable() {
     const tools::ToolData::Mark mark = controller_->toolTableMark();
-    if (!folder_.empty() && controller_->toolTableChanged() && !(failedToolMark_ && *failedToolMark_ == mark)) {
-        if (auto error = controller_->saveToolTable()) {
+    if (!folder_.path().empty() && controller_->toolTableChanged() && !(failedToolMark_ && *failedToolMark_ == mark)) {
+        if (auto error = controller::saveToolTable(*controller_, folder_)) {
             toolTableProblem_ = QString::fromStdString(*error);
             failedToolMark_ = mark;
         } else {
@@ -86,8 +86,8 @@ void SessionWorker::resetToolLife(int group) {
 void SessionWorker::keepToolLife() {
     tools::ToolLifeManager& life = controller_->toolLife();
     const std::uint64_t revision = life.revision();
-    if (!folder_.empty() && life.changed() && failedLifeRevision_ != revision) {
-        if (auto error = tools::saveToolLife(folder_, life.data())) {
+    if (!folder_.path().empty() && life.changed() && failedLifeRevision_ != revision) {
+        if (auto error = folder_.saveToolLife(life.data())) {
             toolLifeProblem_ = QString::fromStdString(*error);
             failedLifeRevision_ = revision;
         } else {

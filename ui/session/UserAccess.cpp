@@ -1,9 +1,7 @@
 #include "ui/session/UserAccess.h"
 
-#include "core/files/AtomicFile.h"
 
 #include <QCryptographicHash>
-#include <QDir>
 #include <QFile>
 #include <QMessageAuthenticationCode>
 #include <QRandomGenerator>
@@ -38,7 +36,7 @@ std::size_t index(params::UserLevel level) { return static_cast<std::size_t>(lev
 
 } // namespace
 
-UserAccess::UserAccess(QString folder) : folder_(std::move(folder)) { load(); }
+UserAccess::UserAccess(const QString& folder) : folder_(folder.toStdString()) { load(); }
 
 QString UserAccess::defaultPassword(Level level) {
     switch (level) {
@@ -103,7 +101,7 @@ std::optional<QString> UserAccess::changePassword(const QString& password) {
 // One line per changed level: `operator = "SALT:HASH"` (hex). Lines it does not know are skipped, so
 // a hand-edited file never locks anyone out of a level whose default still applies.
 void UserAccess::load() {
-    QFile file(QDir(folder_).filePath(fileName()));
+    QFile file(QString::fromStdString(folder_.pathOf(config::FolderFile::Passwords).string()));
     if (!file.open(QIODevice::ReadOnly)) {
         return;
     }
@@ -131,7 +129,7 @@ std::optional<QString> UserAccess::save() const {
                     stored_[level]->hash.toHex().toStdString() + "\"\n";
         }
     }
-    if (auto error = files::writeFileAtomically(QDir(folder_).filePath(fileName()).toStdString(), text)) {
+    if (auto error = folder_.write(config::FolderFile::Passwords, text)) {
         return QString::fromStdString(*error);
     }
     return std::nullopt;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/config/MachineFolder.h"
 #include "core/params/ParameterPages.h"
 
 #include <QByteArray>
@@ -22,7 +23,7 @@ public:
     using Level = params::UserLevel;
     static constexpr int kMinimumLength = 6; // msg 918: fewer than 6 characters are refused
 
-    explicit UserAccess(QString folder);
+    explicit UserAccess(const QString& folder);
 
     Level level() const { return level_; }
     // 请输入[操作员]及以上密码: the password of `wanted` or of any higher level opens `wanted`, or
@@ -34,7 +35,6 @@ public:
 
     static QString defaultPassword(Level level);
     static QString levelName(Level level); // 访客 操作员 管理员 超级管理, translated
-    static QString fileName() { return QStringLiteral("passwords.toml"); }
 
 private:
     struct Stored {
@@ -44,7 +44,7 @@ private:
     void load();
     std::optional<QString> save() const;
 
-    QString folder_;
+    config::MachineFolder folder_; // passwords.toml is written through it
     Level level_ = Level::Guest;
     std::array<std::optional<Stored>, 4> stored_{}; // by level; Guest's stays empty
 };

@@ -1,0 +1,187 @@
+#include "core/config/MachineFolder.h"
+
+#include "core/config/HookFiles.h"
+#include "core/files/LastGoodCopy.h"
+#include "core/files/OutputFile.h"
+#include "core/params/ParameterBackup.h"
+#include "core/params/ParamsFileWriter.h"
+#include "core/tools/ToolLifeFile.h"
+#include "core/tools/ToolTableFile.h"
+
+#include <array>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace m350::config {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using F = FolderFile;
+using W = FolderWrite;
+
+// In the order of the enum: fileName() indexes it.
+constexpr std::array kFiles{
+    FolderFileInfo{F::Machine, "machine.toml", W::Never},
+    FolderFileInfo{F::Offsets, "offsets.toml", W::Never},
+    FolderFileInfo{F::Variables, "variables.toml", W::Never},
+    FolderFileInfo{F::Modbus, "modbus.toml", W::Never},
+    FolderFileInfo{F::Params, "params.toml", W::KeepingLastGood},
+    FolderFileInfo{F::ToolTable, tools::kToolTableFileName, W::KeepingLastGood},
+    FolderFileInfo{F::ToolLife, tools::kToolLifeFile, W::KeepingLastGood},
+    FolderFileInfo{F::Passwords, "passwords.toml", W::Atomically},
+    FolderFileInfo{F::MdiBlock, "mdiblock", W::Atomically},
+    FolderFileInfo{F::MdiProgram, kMdiProgramFile, W::Atomically},
+    FolderFileInfo{F::BreakPoint, "breakpoint", W::Atomically},
+    FolderFileInfo{F::ExternalOutput, "dprnt.txt", W::AsOutput},
+    FolderFileInfo{F::ParamsBackup, params::kParameterBackupFile, W::Atomically},
+    FolderFileInfo{F::WorkRecord, "PROCES_MSG.txt", W::Atomically},
+    FolderFileInfo{F::SystemLog, "system-log.tsv", W::Appended},
+};
+
+std::optional<std::string> readText(const fs::path& file, std::string& text) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        return file.string() + ": cannot read";
+    }
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    text = buffer.str();
+    return std::nullopt;
+}
+
+// The path with its symlinks followed, also a last one whose target does not exist yet, and
+// `.`/`..` gone.
+fs::path resolved(const fs::path& path) {
+    std::error_code ec;
+    fs::path p = fs::absolute(path, ec);
+    for (int hops = 0; hops < 40 && fs::is_symlink(p, ec); ++hops) {
+        const fs::path target = fs::read_symlink(p, ec);
+        if (ec) {
+            break;
+        }
+        p = target.is_absolute() ? target : p.parent_path() / target;
+    }
+    fs::path out = fs::weakly_canonical(p, ec);
+    return ec ? p.lexically_normal() : out;
+}
+
+bool endsWith(std::string_view text, std::string_view end) {
+    return text.size() >= end.size() && text.substr(text.size() - end.size()) == end;
+}
+
+// A hook program's name, in any case as hookPath finds it ("FNDZERO.NC").
+bool isHookFile(std::string_view name) {
+    if (name.size() <= 3) {
+        return false;
+    }
+    std::string extension(name.substr(name.size() - 3));
+    for (char& c : extension) {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return extension == ".nc" && findHook(name) != nullptr;
+}
+
+} // namespace
+
+std::span<const FolderFileInfo> MachineFolder::files() { return kFiles; }
+
+std::string_view MachineFolder::fileName(FolderFile file) { return kFiles[static_cast<std::size_t>(file)].name; }
+
+std::optional<std::string> MachineFolder::write(FolderFile file, std::string_view content,
+                                                const files::AtomicWriteHooks& hooks) const {
+    const FolderFileInfo& info = kFiles[static_cast<std::size_t>(file)];
+    if (folder_.empty()) {
+        return "this machine has no folder to keep " + std::string(info.name) + " in";
+    }
+    const fs::path target = pathOf(file);
+    switch (info.how) {
+    case W::Atomically:
+        return files::writeFileAtomically(target, content, hooks);
+    case W::KeepingLastGood:
+        return files::saveKeepingLastGood(target, content, hooks);
+    case W::AsOutput:
+        return files::writeOutputFile(target, content);
+    case W::Never:
+    case W::Appended:
+        break;
+    }
+    return target.string() + ": not written whole by the machine folder's store";
+}
+
+std::optional<std::string> MachineFolder::saveParameters(const std::map<int, double>& values, bool addMissing) const {
+    const fs::path file = pathOf(F::Params);
+    std::string text;
+    if (!addMissing && !fs::exists(file)) {
+        return std::nullopt;
+    }
+    if (fs::exists(file)) {
+        if (auto error = readText(file, text)) {
+            return error;
+        }
+    }
+    std::string updated = params::setTomlNumbers(text, "params", values, addMissing);
+    if (!addMissing && updated == text) {
+        return std::nullopt;
+    }
+    return write(F::Params, updated);
+}
+
+std::optional<std::string> MachineFolder::saveToolTable(const tools::ToolTable& table,
+                                                        const std::map<int, double>& zParameters,
+                                                        const files::AtomicWriteHooks& hooks) const {
+    if (folder_.empty()) {
+        return "this machine has no folder to keep its tool table in";
+    }
+    if (auto error = write(F::ToolTable, tools::formatToolTable(table), hooks)) {
+        return error;
+    }
+    if (zParameters.empty()) {
+        return std::nullopt;
+    }
+    return saveParameters(zParameters, false);
+}
+
+std::optional<std::string> MachineFolder::saveToolLife(const tools::LifeData& data,
+                                                       const files::AtomicWriteHooks& hooks) const {
+    return write(F::ToolLife, tools::formatToolLife(data), hooks);
+}
+
+std::optional<std::string> MachineFolder::exportToolTable(const fs::path& target, const tools::ToolTable& table) const {
+    if (auto refused = refuseFolderFile(target)) {
+        return refused;
+    }
+    return files::writeFileAtomically(target, tools::formatToolTable(table));
+}
+
+bool MachineFolder::isFolderFile(const fs::path& path) const {
+    if (folder_.empty() || path.empty()) {
+        return false;
+    }
+    const fs::path file = resolved(path);
+    if (file.parent_path() != resolved(folder_)) {
+        return false;
+    }
+    std::string name = file.filename().string();
+    const std::string lastGood = files::lastGoodPath("").string();
+    if (endsWith(name, lastGood) && name.size() > lastGood.size()) {
+        name.resize(name.size() - lastGood.size());
+    }
+    for (const FolderFileInfo& info : kFiles) {
+        if (name == info.name) {
+            return true;
+        }
+    }
+    return isHookFile(name);
+}
+
+std::optional<std::string> MachineFolder::refuseFolderFile(const fs::path& path) const {
+    if (!isFolderFile(path)) {
+        return std::nullopt;
+    }
+    return path.string() + " is a file of the machine folder " + folder_.string() + ": refused, nothing was written";
+}
+
+} // namespace m350::config
