@@ -3,7 +3,10 @@
 // while its input is active, also after RESET.
 #include "RunProgram.h"
 
+#include "core/controller/OperatorInputs.h"
 #include "core/machine/InputFault.h"
+#include "core/machine/SimulatedMachine.h"
+#include "core/params/ParameterTable.h"
 
 #include <gtest/gtest.h>
 
@@ -131,6 +134,34 @@ TEST(OperatorInputs, TheExternEStopStopsMotionAndHoldsThroughReset) {
     c.advance(0.02);
     EXPECT_EQ(c.runState(), Controller::RunState::Idle);
     EXPECT_TRUE(c.operatorPanel().takeOperatorKeys().empty());
+}
+
+} // namespace
+
+namespace {
+
+using namespace m350;
+
+// controller::OperatorInputs on its own: the parameters and the machine's inputs are all it reads.
+TEST(OperatorInputs, ReadsTheWiredKeysWithoutAController) {
+    params::ParameterTable parameters;
+    machine::SimulatedMachine machine;
+    parameters.set(587, kPin); // external key 3
+    parameters.set(588, 1);
+    parameters.set(589, 1);
+    parameters.set(605, kPin + 1); // extern E-stop
+    parameters.set(606, 1);
+    parameters.set(607, 1);
+    controller::OperatorInputs inputs;
+    EXPECT_FALSE(inputs.watch(parameters, machine, false));
+    machine.setInputFault(kPin, machine::InputFault::stuck(1));
+    EXPECT_FALSE(inputs.watch(parameters, machine, false));
+    EXPECT_EQ(inputs.take(), (std::vector<controller::OperatorKey>{{controller::OperatorKey::Kind::ExternKey, 3}}));
+    machine.setInputFault(kPin + 1, machine::InputFault::stuck(1));
+    std::optional<std::string> eStop = inputs.watch(parameters, machine, false);
+    ASSERT_TRUE(eStop);
+    EXPECT_NE(eStop->find("extern E-stop"), std::string::npos) << *eStop;
+    EXPECT_TRUE(inputs.take().empty());
 }
 
 } // namespace
