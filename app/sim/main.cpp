@@ -9,6 +9,7 @@
 #include "app/sim/ToolLifeJson.h"
 #include "app/sim/SpindleLoadJson.h"
 
+#include "core/check/StaticCheck.h"
 #include "core/params/FanucParameters.h"
 #include "core/files/OutputFile.h"
 #include "core/config/MachineConfig.h"
@@ -79,7 +80,9 @@ int check(controller::Controller& controller, const sim::SimOptions& o) {
     controller.loadFile(o.program);
     std::vector<gcode::Diagnostic> diagnostics = controller.diagnostics();
     if (!gcode::hasBlockingError(diagnostics)) {
-        std::vector<gcode::Diagnostic> findings = controller.checkWithoutRunning();
+        const config::MachineConfig machine = controller.config();
+        std::vector<gcode::Diagnostic> findings =
+            check::StaticCheck(controller.program(), *machine.dialect, machine.codePrograms).findings();
         diagnostics.insert(diagnostics.end(), findings.begin(), findings.end());
     }
     return checkResult(diagnostics);

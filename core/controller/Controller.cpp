@@ -25,7 +25,8 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
       interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters),
       magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}),
       devices_({config_.parameters, scan_, trace_, [this] { return machine_.time(); }, [this] { return source(); }},
-               config_.modbus, settings_.externalOutputLimit) {
+               config_.modbus, settings_.externalOutputLimit),
+      panel_(newOperatorPanel()) {
     if (settings_.trace) {
         trace_ = std::make_unique<TraceWriter>(*settings_.trace, settings_.traceLimit);
     }
@@ -52,6 +53,45 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
 }
 
 Controller::~Controller() = default;
+
+OperatorPanel Controller::newOperatorPanel() {
+    auto post = [this](std::string text) { postMessage(std::move(text)); };
+    OperatorDialog::Context dialog{
+        post,
+        [this](std::string text) {
+            statusMessage_ = text;
+            postMessage(std::move(text));
+        },
+        [this](std::string text) {
+            if (trace_) trace_->message(machine_.time(), text, source());
+        },
+        [this] {
+            if (machine_.time() < displayTime_) machine_.blockTime(displayTime_ - machine_.time());
+        }};
+    UserKeys::Context keys{
+        config_.parameters,
+        [this](int port) { return machine_.output(port); },
+        [this](int port, int level) { return setOutputByOperator(port, level); },
+        [this](config::Hook hook) { return loadHook(hook); },
+        [this](config::Hook hook, const std::map<int, double>& variables, const std::vector<std::string>& fallback) {
+            return loadHookOrMdi(hook, variables, fallback);
+        },
+        [this]() -> const std::vector<gcode::Diagnostic>& { return diagnostics_; },
+        [this](std::string why) {
+            diagnostics_.assign(1, {gcode::Severity::Error, gcode::DiagnosticKind::Syntax, "", 0, 0, std::move(why)});
+            executor_.reset();
+        }};
+    InputWatch::Context inputs{config_.parameters,
+                               settings_,
+                               machine_,
+                               program_,
+                               trace_,
+                               [this] { return executor_ ? executor_->location() : std::nullopt; },
+                               [this](int pin) { return magazine_.describeInput(pin); },
+                               post};
+    return OperatorPanel({settings_, [this] { return state_ == RunState::Running; }}, std::move(dialog),
+                         std::move(keys), std::move(inputs));
+}
 
 config::MachineConfig Controller::config() const {
     config::MachineConfig out = config_;
@@ -225,7 +265,7 @@ void Controller::enterSafeState() {
 }
 
 RunReport Controller::run() {
-    pressStartWhenAwaited_ = true;
+    panel_.setUnattended(true);
     start();
     while (state_ == RunState::Running) {
         advance(std::numeric_limits<double>::infinity());
@@ -235,7 +275,7 @@ RunReport Controller::run() {
             resume();
         }
     }
-    pressStartWhenAwaited_ = false;
+    panel_.setUnattended(false);
     if (trace_) {
         machine_.reportLinkedInputs(machine_.time());
     }
@@ -260,8 +300,8 @@ bool Controller::start() {
         return false; // START waits for the manual move to end
     }
     alarm_.reset();
-    pendingDialog_.reset();
-    sensorWatch_.clear();
+    panel_.clearDialog();
+    panel_.clearSensorWait();
     paused_.reset();
     devices_.closeOutputDevice();
     if (!executor_) {
@@ -291,7 +331,10 @@ bool Controller::start() {
 
 Controller::RunState Controller::advance(double seconds) {
     displayTime_ += displayStep(seconds); // the handwheel guide may slow it, stop it or run it back
-    watchOperatorInputs();
+    if (auto eStop = panel_.watchInputs(config_.parameters, machine_, state_ == RunState::Running);
+        eStop && state_ != RunState::EStop) {
+        emergencyStop(*eStop);
+    }
     if (state_ != RunState::Running) {
         // Between runs the machine's clock follows the display's, so what devices drive in time
         // (a clamp cylinder the operator switched from the IO page) arrives while the panel watches.
@@ -302,7 +345,7 @@ Controller::RunState Controller::advance(double seconds) {
     }
     int tool = spindleTool(); // nothing between two steps changes it: each step's is the next one's
     while (state_ == RunState::Running && executor_->state() == macro::Executor::State::Running &&
-           machine_.time() <= displayTime_ && !pendingDialog_) {
+           machine_.time() <= displayTime_ && !panel_.dialogPending()) {
         if (passedTimeLimit(timeLimitFrom_)) {
             executor_->raise(AlarmCode::SimulatedTimeLimit,
                              timeLimitText("the program", timeLimitFrom_) +
@@ -379,7 +422,7 @@ bool Controller::optionalStopOn() {
 
 void Controller::raiseAlarm(const Alarm& alarm) {
     alarm_ = alarm;
-    pendingDialog_.reset();
+    panel_.clearDialog();
     if (executor_ && executor_->changingTool()) {
         toolLife_.revertChange(); // the change never completed: its tool is not in use
     }

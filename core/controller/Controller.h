@@ -5,13 +5,12 @@
 #include "core/params/IoPorts.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/ExternalDevices.h"
-#include "core/controller/KeyPress.h"
 #include "core/controller/ManualMotionState.h"
 #include "core/controller/MessageLog.h"
+#include "core/controller/OperatorPanel.h"
 #include "core/controller/PanelStatus.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
-#include "core/controller/SensorWatch.h"
 #include "core/controller/SpindleLoadWatch.h"
 #include "core/controller/MagazineDriver.h"
 #include "core/controller/TraceWriter.h"
@@ -53,6 +52,8 @@ public:
     bool loadFile(const std::string& path);
     bool loadMdi(const std::vector<std::string>& lines);
     const std::vector<gcode::Diagnostic>& diagnostics() const { return diagnostics_; }
+    // The loaded program with the machine's libraries, as parsed (what check::StaticCheck reads).
+    const gcode::Program& program() const { return program_; }
 
     // Hook files (Hooks.cpp; the table in config/HookFiles.h): the machine folder's programs that
     // the panel and the controller run when something happens. loadHook loads one as the program
@@ -70,14 +71,10 @@ public:
     bool loadHookOrMdi(config::Hook hook, const std::map<int, double>& variables,
                        const std::vector<std::string>& fallback);
     std::optional<config::Hook> loadedHook() const { return hook_; }
-    // The panel's K1-K7 (params 210-216) and the external keys 1-6 (params 272-277) (UserKeys.cpp):
-    // 0 loads key-N.nc / extnc<N-1>-1.nc (start() then runs it), 1-21 switches that output over,
-    // above 1000 is the code of the panel key it stands for, which the panel presses.
-    using KeyPress = controller::KeyPress;
-    KeyPress pressUserKey(int key);
-    KeyPress pressExternKey(int key);
-    // FUNC K01-K14: #1996 = 249 + key, then ext_button.nc (`M#1996`), or that M code as MDI.
-    bool loadFunctionKey(int key);
+    // The operator at the panel (OperatorPanel.h): dialogs, the keys wired to inputs, K1-K7, the
+    // external and FUNC keys, the sensor a macro waits on.
+    OperatorPanel& operatorPanel() { return panel_; }
+    const OperatorPanel& operatorPanel() const { return panel_; }
 
     // Runs the loaded program to its end (or an alarm) as fast as it can: start() + advance(inf).
     RunReport run();
@@ -99,44 +96,10 @@ public:
     // M350's G04 P-1): "M00 program stop (main.nc:12)"; empty for 暂停 or when running. resume()
     // is START. run() presses START by itself and notes it in the messages.
     const std::string& programStop() const { return programStop_; }
-    // A macro waiting for a sensor (SensorWatch.h); the wait ends in an alarm after
-    // RunSettings::sensorTimeout.
-    using SensorWait = controller::SensorWait;
-    std::optional<SensorWait> sensorWait() const;
-    // An operator dialog (#1505 = kind(text)) the run waits on: with RunSettings::operatorPresent
-    // the run holds after the block that wrote #1505 until answerDialog(); #1505 then reads 1 for
-    // Enter and 0 for Esc. `#1505 = -5000(text)` only shows the text. Without an operator (and in
-    // run()) every dialog is answered with Enter at once and the messages say so.
-    struct Dialog {
-        std::string text;
-        int kind;
-    };
-    std::optional<Dialog> pendingDialog() const { return pendingDialog_; }
-    void answerDialog(bool enter);
-    // The operator presses the extern START key (param 599's input) for a moment, as the
-    // virtual-tool prompt asks; nothing when the key is not wired.
-    void pressExternStart();
-    // The operator's keys wired to inputs (OperatorInputs.cpp), read at every advance(): the extern
-    // E-stop (param 605) stops the machine while its input is active (RESET does not clear it while
-    // the key is held); a press of the extern START (599), PAUSE (602) or an external key 1-6
-    // (581-596) is queued for the panel, which acts on it as on its own key. START is no key press
-    // while a program runs: macros read it (the virtual-tool prompt). At most kOperatorKeyQueue
-    // presses wait; older ones are dropped.
-    struct OperatorKey {
-        enum class Kind { Start, Pause, ExternKey } kind;
-        int key = 0; // ExternKey: 1-6
-        bool operator==(const OperatorKey&) const = default;
-    };
-    static constexpr std::size_t kOperatorKeyQueue = 16;
-    std::vector<OperatorKey> takeOperatorKeys();
     // Parameters 0-999 as they stand, for the panel's teach buttons (135-137) and IO page. A write
     // takes effect at once (setters, sensors, speeds); false for other numbers, a value that is
     // not finite or one that params::refusedParameterValue refuses.
     double parameter(int n) const;
-    // What the loaded program (its main or MDI file) would alarm on that is knowable without
-    // running it: a word twice in a block, an unknown G code, a variable that does not exist or is
-    // read-only, 1/0 in constants, an O program calling itself unconditionally (StaticCheck.cpp).
-    std::vector<gcode::Diagnostic> checkWithoutRunning();
     bool setParameter(int n, double value);
     // 断点加工 Break Run (StartAtLine.cpp). startAtLine starts the loaded program at `line` of the
     // main file (the first block at or after it, the first time the program reaches it): the
@@ -355,7 +318,6 @@ private:
     std::optional<Alarm> runHookProgramToEnd(const std::string& name);
     void runPauseHook();
     void returnAfterPauseHook();
-    KeyPress pressKey(int function, config::Hook hook, const std::string& key);
     // `since`: the machine time --max-sim-time counts from (the homing's or the run's start).
     std::optional<Alarm> homeAxis(int axis, double since);
     bool homeSwitchWired(int axis) const;
@@ -365,10 +327,7 @@ private:
     void postMessage(std::string text);
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
     bool optionalStopOn();
-    void watchInput(int pin, int level);
-    void pressStartIfAwaited(const params::PortAssignment& key, int pin, int level, const gcode::SourceLocation& where);
-    std::optional<std::string> showDialog(double kind, std::string_view text);
-    bool operatorAnswers() const { return settings_.operatorPresent && !pressStartWhenAwaited_; }
+    OperatorPanel newOperatorPanel();
 
     config::MachineConfig config_;
     RunSettings settings_;
@@ -385,8 +344,6 @@ private:
     std::unique_ptr<TraceWriter> trace_;
     std::array<int, machine::kAxisCount> homed_{};
     int fanucSpindleTool_ = 0;
-    double dialogAnswer_ = 0.0;
-    std::optional<Dialog> pendingDialog_; // see pendingDialog()
     MessageLog messages_;
     std::string statusMessage_; // the #1503 text the status line shows now (cleared by #1503 = 1000)
     double feedOverride_ = 100.0;
@@ -402,19 +359,14 @@ private:
     machine::SimulatedMachine::Remainder remainder_; // what a hold cut short
     double liftedBy_ = 0.0;                          // Z lift of the hold (param 91, 70)
     std::string programStop_;                        // see programStop()
-    SensorWatch sensorWatch_;
-    bool pressStartWhenAwaited_ = false; // run(): no operator, the controller presses START
-    void watchOperatorInputs();
     void placeHomeSwitches(); // Homing.cpp
-    std::array<bool, 9> operatorInputActive_{}; // the operator inputs' last state (OperatorInputs.cpp)
-    std::array<int, 9> operatorInputWiring_{};  // and the pin and level each was read on
-    std::vector<OperatorKey> operatorKeys_;
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     ExternalDevices devices_; // the external output device and the Modbus slaves
     tools::ToolLifeManager toolLife_;
     machine::ToolWorld world_;
     SpindleLoadWatch loadWatch_;
+    OperatorPanel panel_; // after what its parts read
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 
     // 断点加工 (StartAtLine.cpp): the main block a hold stopped, which pass over it, where it stopped

@@ -52,12 +52,12 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
     }
     case VariableKind::Input: {
         int level = machine_.input(info.index);
-        watchInput(info.index, level);
+        panel_.readInput(info.index, level);
         return Value::of(level);
     }
     case VariableKind::Output: return Value::of(scan_.output(info.index));
     case VariableKind::Homed: return Value::of(homed_[static_cast<std::size_t>(info.index)]);
-    case VariableKind::Dialog: return Value::of(dialogAnswer_);
+    case VariableKind::Dialog: return Value::of(panel_.dialogAnswer());
     case VariableKind::Message: return Value::of(0);
     case VariableKind::PmcSignal: {
         // The umbrella-magazine interface of the FANUC seed: G54.0 .. G54.2
@@ -115,7 +115,7 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
             postMessage(std::string(text));
         }
         return std::nullopt;
-    case VariableKind::Dialog: return showDialog(value, text);
+    case VariableKind::Dialog: panel_.showDialog(value, text); return std::nullopt;
     case VariableKind::Alarm: {
         auto n = static_cast<long long>(roundToInt(value));
         return "macro alarm " + std::to_string(3000 + n) + (text.empty() ? "" : ": " + std::string(text));

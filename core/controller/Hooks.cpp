@@ -136,8 +136,9 @@ std::optional<Alarm> Controller::runHookProgramToEnd(const std::string& name) {
     if (trace_) {
         trace_->message(machine_.time(), name + " runs", source());
     }
-    const bool startPressed = std::exchange(pressStartWhenAwaited_, true);
-    sensorWatch_.clear();
+    const bool unattended = panel_.unattended();
+    panel_.setUnattended(true);
+    panel_.clearSensorWait();
     const double startedAt = machine_.time();
     while (executor_->state() == macro::Executor::State::Running) {
         if (passedTimeLimit(startedAt)) {
@@ -146,8 +147,8 @@ std::optional<Alarm> Controller::runHookProgramToEnd(const std::string& name) {
         }
         stepOnce();
     }
-    sensorWatch_.clear();
-    pressStartWhenAwaited_ = startPressed;
+    panel_.clearSensorWait();
+    panel_.setUnattended(unattended);
     if (executor_->state() != macro::Executor::State::Alarmed) {
         return std::nullopt;
     }

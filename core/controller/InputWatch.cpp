@@ -1,8 +1,6 @@
-// The sensor-wait watchdog: a macro that keeps reading an input that never changes is waiting for a
-// sensor. The real controller would hang there; the simulator says which input, and after
-// RunSettings::sensorTimeout of virtual time stops with an alarm naming it.
-#include "core/controller/Controller.h"
+#include "core/controller/InputWatch.h"
 
+#include "core/machine/SimulatedMachine.h"
 #include "core/params/IoPorts.h"
 #include "core/params/ParameterNumbers.h"
 #include "core/macro/MacroError.h"
@@ -28,33 +26,34 @@ std::string seconds(double s) {
 
 } // namespace
 
-void Controller::watchInput(int pin, int level) {
-    if (!executor_) {
-        return;
-    }
-    auto where = executor_->location();
-    auto function = params::inputOnPin(config_.parameters, pin);
+void InputWatch::read(int pin, int level, bool unattended) {
+    auto where = context_.location();
     if (!where) {
         return;
     }
+    auto function = params::inputOnPin(context_.parameters, pin);
     if (operatorInput(function)) {
-        pressStartIfAwaited(*function, pin, level, *where);
+        if (unattended) {
+            pressStartIfAwaited(*function, pin, level, *where);
+        }
         return;
     }
-    switch (sensorWatch_.read(pin, level, machine_.time(), *where, settings_.sensorTimeout)) {
+    machine::SimulatedMachine& machine = context_.machine;
+    const double timeout = context_.settings.sensorTimeout;
+    switch (sensors_.read(pin, level, machine.time(), *where, timeout)) {
     case SensorWatch::Verdict::Reading:
     case SensorWatch::Verdict::Waiting: return;
     case SensorWatch::Verdict::WaitBegins:
-        if (trace_) {
-            trace_->sensorWait(machine_.time(), params::inputName(pin), 1 - level,
-                               {program_.fileName(*where), where->line});
+        if (context_.trace) {
+            context_.trace->sensorWait(machine.time(), params::inputName(pin), 1 - level,
+                                       {context_.program.fileName(*where), where->line});
         }
         return;
     case SensorWatch::Verdict::TimedOut: {
-        std::string what = magazine_.describeInput(pin) + " never became " +
-                           std::to_string(1 - level) + ": waited " + seconds(settings_.sensorTimeout) + " s at " +
-                           program_.fileName(*where) + ":" + std::to_string(where->line);
-        sensorWatch_.clear();
+        std::string what = context_.describeInput(pin) + " never became " + std::to_string(1 - level) +
+                           ": waited " + seconds(timeout) + " s at " + context_.program.fileName(*where) + ":" +
+                           std::to_string(where->line);
+        sensors_.clear();
         throw macro::MacroError{AlarmCode::SensorTimeout, std::move(what), 0};
     }
     }
@@ -62,37 +61,36 @@ void Controller::watchInput(int pin, int level) {
 
 // A run without an operator (run()) presses the extern START key when a macro waits for it, as
 // the operator would after doing what the prompt asked, and says so.
-void Controller::pressStartIfAwaited(const params::PortAssignment& key, int pin, int level,
+void InputWatch::pressStartIfAwaited(const params::PortAssignment& key, int pin, int level,
                                      const gcode::SourceLocation& where) {
-    if (!pressStartWhenAwaited_ || key.function->parameter != param::kExternStartInput ||
-        level == key.activeLevel) {
+    if (key.function->parameter != param::kExternStartInput || level == key.activeLevel) {
         return;
     }
-    if (sensorWatch_.read(pin, level, machine_.time(), where, 1e300) != SensorWatch::Verdict::WaitBegins) {
+    machine::SimulatedMachine& machine = context_.machine;
+    if (sensors_.read(pin, level, machine.time(), where, 1e300) != SensorWatch::Verdict::WaitBegins) {
         return;
     }
-    machine_.pulseInput(pin, key.activeLevel, kKeyPress);
-    postMessage("外部启动 extern START (" + params::inputName(pin) + ") pressed at " + program_.fileName(where) + ":" +
-                std::to_string(where.line) + " (run without an operator)");
+    machine.pulseInput(pin, key.activeLevel, kKeyPress);
+    context_.post("外部启动 extern START (" + params::inputName(pin) + ") pressed at " +
+                  context_.program.fileName(where) + ":" + std::to_string(where.line) + " (run without an operator)");
 }
 
-// The operator presses the extern START key, as the virtual-tool prompt asks.
-void Controller::pressExternStart() {
-    if (auto key = params::wiredInput(config_.parameters, param::kExternStartInput)) {
-        machine_.pulseInput(key->pin, key->activeLevel, kKeyPress);
+void InputWatch::pressExternStart() {
+    if (auto key = params::wiredInput(context_.parameters, param::kExternStartInput)) {
+        context_.machine.pulseInput(key->pin, key->activeLevel, kKeyPress);
     }
 }
 
-std::optional<Controller::SensorWait> Controller::sensorWait() const {
-    auto wait = sensorWatch_.current();
-    if (!wait || state_ != RunState::Running) {
+std::optional<SensorWait> InputWatch::wait() const {
+    auto wait = sensors_.current();
+    if (!wait) {
         return std::nullopt;
     }
     SensorWait out;
-    out.input = magazine_.describeInput(wait->pin);
+    out.input = context_.describeInput(wait->pin);
     out.awaitedLevel = 1 - wait->level;
-    out.seconds = machine_.time() - wait->since;
-    out.file = program_.fileName(wait->where);
+    out.seconds = context_.machine.time() - wait->since;
+    out.file = context_.program.fileName(wait->where);
     out.line = wait->where.line;
     return out;
 }

@@ -1,6 +1,4 @@
-// The operator dialog (#1505): a run with a person at the panel holds until the dialog is
-// answered; a run without one answers Enter at once and says so.
-#include "core/controller/Controller.h"
+#include "core/controller/OperatorDialog.h"
 
 #include "core/common/Numeric.h"
 
@@ -12,35 +10,28 @@ constexpr double kMessageOnly = -5000; // `#1505 = -5000(text)`: a text to show,
 
 } // namespace
 
-std::optional<std::string> Controller::showDialog(double kind, std::string_view text) {
-    if (!operatorAnswers()) {
-        postMessage(std::string(text) + " [dialog answered: Enter]");
-        dialogAnswer_ = 1;
-        return std::nullopt;
-    }
-    if (kind == kMessageOnly) {
-        statusMessage_ = std::string(text);
-        postMessage(std::string(text));
-        return std::nullopt;
-    }
-    // advance() executes no further block while the dialog is pending
-    pendingDialog_ = Dialog{std::string(text), roundToInt(kind)};
-    if (trace_) {
-        trace_->message(machine_.time(), "dialog: " + std::string(text), source());
-    }
-    return std::nullopt;
-}
-
-void Controller::answerDialog(bool enter) {
-    if (!pendingDialog_) {
+void OperatorDialog::show(double kind, std::string_view text, bool operatorAnswers) {
+    if (!operatorAnswers) {
+        context_.post(std::string(text) + " [dialog answered: Enter]");
+        answer_ = 1;
         return;
     }
-    dialogAnswer_ = enter ? 1 : 0;
-    postMessage(pendingDialog_->text + (enter ? " [dialog answered: Enter]" : " [dialog answered: Esc]"));
-    pendingDialog_.reset();
-    if (machine_.time() < displayTime_) {
-        machine_.blockTime(displayTime_ - machine_.time()); // the clock ran while the operator read it
+    if (kind == kMessageOnly) {
+        context_.showStatus(std::string(text));
+        return;
     }
+    pending_ = Dialog{std::string(text), roundToInt(kind)};
+    context_.trace("dialog: " + std::string(text));
+}
+
+void OperatorDialog::answer(bool enter) {
+    if (!pending_) {
+        return;
+    }
+    answer_ = enter ? 1 : 0;
+    context_.post(pending_->text + (enter ? " [dialog answered: Enter]" : " [dialog answered: Esc]"));
+    pending_.reset();
+    context_.catchUpClock(); // the clock ran while the operator read it
 }
 
 } // namespace m350::controller

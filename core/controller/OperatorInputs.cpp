@@ -2,16 +2,18 @@
 // (params 581-605). A key acts when its input becomes active; the E-stop acts while it is active,
 // as a latched mushroom button keeps a real machine stopped. A key already active when it is wired
 // (at power-on, or after its parameters change) acts at its next press.
-#include "core/controller/Controller.h"
+#include "core/controller/OperatorInputs.h"
 
 #include "core/params/IoPorts.h"
+#include "core/machine/SimulatedMachine.h"
 #include "core/params/ParameterNumbers.h"
+#include "core/params/ParameterTable.h"
 
 namespace m350::controller {
 
 namespace {
 
-using Kind = Controller::OperatorKey::Kind;
+using Kind = OperatorKey::Kind;
 
 struct OperatorInput {
     int parameter; // the input triple's first parameter
@@ -37,35 +39,38 @@ constexpr std::array<OperatorInput, 9> kOperatorInputs{{
 
 } // namespace
 
-void Controller::watchOperatorInputs() {
+std::optional<std::string> OperatorInputs::watch(const params::ParameterTable& parameters,
+                                                 machine::SimulatedMachine& machine, bool running) {
+    std::optional<std::string> eStop;
     for (std::size_t i = 0; i < kOperatorInputs.size(); ++i) {
         const OperatorInput& input = kOperatorInputs[i];
-        auto wired = params::wiredInput(config_.parameters, input.parameter);
-        const bool active = wired && machine_.input(wired->pin) == wired->activeLevel;
+        auto wired = params::wiredInput(parameters, input.parameter);
+        const bool active = wired && machine.input(wired->pin) == wired->activeLevel;
         // a key just wired (or its level changed) is read as it stands: that is no press
         const int wiring = wired ? wired->pin * 2 + wired->activeLevel : -1;
-        const bool pressed = active && !operatorInputActive_[i] && wiring == operatorInputWiring_[i];
-        operatorInputActive_[i] = active;
-        operatorInputWiring_[i] = wiring;
+        const bool pressed = active && !active_[i] && wiring == wiring_[i];
+        active_[i] = active;
+        wiring_[i] = wiring;
         if (!input.kind) {
-            if (active && state_ != RunState::EStop) {
-                emergencyStop("外部急停 extern E-stop (" + params::inputName(wired->pin) + ")");
+            if (active) {
+                eStop = "外部急停 extern E-stop (" + params::inputName(wired->pin) + ")";
             }
             continue;
         }
-        if (!pressed || (*input.kind == Kind::Start && state_ == RunState::Running)) {
+        if (!pressed || (*input.kind == Kind::Start && running)) {
             continue;
         }
-        if (operatorKeys_.size() == kOperatorKeyQueue) {
-            operatorKeys_.erase(operatorKeys_.begin());
+        if (keys_.size() == kQueue) {
+            keys_.erase(keys_.begin());
         }
-        operatorKeys_.push_back({*input.kind, input.key});
+        keys_.push_back({*input.kind, input.key});
     }
+    return eStop;
 }
 
-std::vector<Controller::OperatorKey> Controller::takeOperatorKeys() {
+std::vector<OperatorKey> OperatorInputs::take() {
     std::vector<OperatorKey> keys;
-    keys.swap(operatorKeys_);
+    keys.swap(keys_);
     return keys;
 }
 

@@ -93,8 +93,8 @@ PanelStatus Controller::panelStatus() {
     out.modalLine = modalLine();
     out.message = statusMessage_;
     out.programStop = programStop_;
-    if (pendingDialog_) {
-        out.dialog = pendingDialog_->text;
+    if (auto dialog = panel_.pendingDialog()) {
+        out.dialog = dialog->text;
     }
     out.alarm = alarm_;
     if (executor_) {
@@ -105,7 +105,7 @@ PanelStatus Controller::panelStatus() {
         out.blocks = executor_->blocksExecuted();
     }
     out.mdi = mdi_;
-    if (auto wait = sensorWait()) {
+    if (auto wait = panel_.sensorWait()) {
         out.sensorWait = PanelStatus::SensorWait{wait->input, wait->awaitedLevel, wait->seconds, wait->file, wait->line};
     }
     for (int port = 1; port <= machine::kInputCount; ++port) {

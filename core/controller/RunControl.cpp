@@ -124,8 +124,8 @@ void Controller::reset() {
     spindleBeforeHold_.reset();
     alarm_.reset();
     programStop_.clear();
-    sensorWatch_.clear();
-    pendingDialog_.reset();
+    panel_.clearSensorWait();
+    panel_.clearDialog();
     state_ = RunState::Idle; // start() runs the program again from its beginning
     if (trace_) {
         trace_->runState(displayTime_, "reset");

@@ -124,8 +124,8 @@ bool Controller::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopP
     const params::ParameterTable parameters = config_.parameters;
 
     alarm_.reset();
-    pendingDialog_.reset();
-    sensorWatch_.clear();
+    panel_.clearDialog();
+    panel_.clearSensorWait();
     programStop_.clear();
     devices_.closeOutputDevice(); // the scan opens it again where the program does (POPEN)
     executor_->start(*program_.mainUnit());
@@ -141,7 +141,7 @@ bool Controller::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopP
         offsets_ = offsets;
         tools_.replace(tools);
         config_.parameters = parameters;
-        pendingDialog_.reset();
+        panel_.clearDialog();
         syncToolLength();
         state_ = RunState::Idle;
         return refuse(why, *problem);
@@ -217,7 +217,7 @@ std::optional<std::string> Controller::scanTo(std::uint32_t block, std::uint64_t
         if (scan_.refusal()) {
             return *scan_.refusal() + " at " + lineText(*executor_->mainBlock()) + ", before the start line: a scan cannot";
         }
-        if (pendingDialog_) {
+        if (panel_.dialogPending()) {
             return lineText(*executor_->mainBlock()) + " asks the operator (#1505) before the start line";
         }
         if (inToolChange()) {

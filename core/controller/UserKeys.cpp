@@ -1,9 +1,11 @@
 // The keys an M350 owner assigns: K1-K7 on the panel, the external keys 1-6 on inputs, and the
 // FUNC keys K01-K14 of the add-on keypad. Parameters say what each key does.
-#include "core/controller/Controller.h"
+#include "core/controller/UserKeys.h"
 
 #include "core/common/Numeric.h"
+#include "core/machine/MachineTypes.h"
 #include "core/params/ParameterNumbers.h"
+#include "core/params/ParameterTable.h"
 
 namespace m350::controller {
 
@@ -20,18 +22,19 @@ std::string numberText(double v) {
 
 } // namespace
 
-Controller::KeyPress Controller::pressKey(int function, config::Hook hook, const std::string& key) {
+KeyPress UserKeys::pressKey(int function, config::Hook hook, const std::string& key) {
     KeyPress press;
-    const double value = config_.parameters.get(function);
+    const double value = context_.parameters.get(function);
     const int code = saturatingInt(value);
     if (value == 0.0) {
-        if (!loadHook(hook)) {
-            press.why = key + ": " + (diagnostics_.empty() ? std::string("not run") : diagnostics_.front().message);
+        if (!context_.loadHook(hook)) {
+            const std::vector<gcode::Diagnostic>& why = context_.diagnostics();
+            press.why = key + ": " + (why.empty() ? std::string("not run") : why.front().message);
             return press;
         }
         press.kind = KeyPress::Kind::Hook;
     } else if (value == code && code >= 1 && code <= machine::kOutputCount) {
-        if (!setOutputByOperator(code, 1 - machine_.output(code))) {
+        if (!context_.switchOutput(code, 1 - context_.output(code))) {
             press.why = key + ": OUT" + std::to_string(code) + " cannot be switched while a program runs";
             return press;
         }
@@ -48,7 +51,7 @@ Controller::KeyPress Controller::pressKey(int function, config::Hook hook, const
     return press;
 }
 
-Controller::KeyPress Controller::pressUserKey(int key) {
+KeyPress UserKeys::pressUserKey(int key) {
     auto hook = config::userKeyHook(key);
     if (!hook) {
         return {KeyPress::Kind::Refused, 0, "K" + std::to_string(key) + ": the panel has K1-K7"};
@@ -56,7 +59,7 @@ Controller::KeyPress Controller::pressUserKey(int key) {
     return pressKey(param::kUserKeyFunction + key - 1, *hook, "K" + std::to_string(key));
 }
 
-Controller::KeyPress Controller::pressExternKey(int key) {
+KeyPress UserKeys::pressExternKey(int key) {
     auto hook = config::externKeyHook(key);
     if (!hook) {
         return {KeyPress::Kind::Refused, 0, "external key " + std::to_string(key) + ": there are keys 1-6"};
@@ -64,15 +67,13 @@ Controller::KeyPress Controller::pressExternKey(int key) {
     return pressKey(param::kExternKeyFunction + key - 1, *hook, "external key " + std::to_string(key));
 }
 
-bool Controller::loadFunctionKey(int key) {
+bool UserKeys::loadFunctionKey(int key) {
     if (key < 1 || key > kFunctionKeys) {
-        diagnostics_.assign(1, {gcode::Severity::Error, gcode::DiagnosticKind::Syntax, "", 0, 0,
-                                "FUNC K" + std::to_string(key) + ": the keypad has K01-K14"});
-        executor_.reset();
+        context_.refuseLoad("FUNC K" + std::to_string(key) + ": the keypad has K01-K14");
         return false;
     }
     const int code = kFirstFunctionMCode + key - 1;
-    return loadHookOrMdi(config::Hook::ExtButton, {{kCustomMCodeVariable, code}}, {"M" + std::to_string(code)});
+    return context_.loadHookOrMdi(config::Hook::ExtButton, {{kCustomMCodeVariable, code}}, {"M" + std::to_string(code)});
 }
 
 } // namespace m350::controller

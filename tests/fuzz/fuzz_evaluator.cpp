@@ -2,6 +2,7 @@
 // picks the machine ('0' m350-linear16, '1' fanuc-ts27r, then round again); the rest is the
 // program. A run is bounded by a short virtual-time limit, so an input that runs for long in wall
 // time (the runaway guard failing) shows up as a libFuzzer timeout.
+#include "core/check/StaticCheck.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/Controller.h"
 #include "core/gcode/SourceText.h"
@@ -54,7 +55,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::size_t machineIndex = static_cast<std::uint8_t>(data[0] - '0') % kMachines.size();
     m350::controller::Controller controller(machine(machineIndex), settings);
     if (controller.loadMdi({std::string(source->text)})) {
-        controller.checkWithoutRunning();
+        const m350::config::MachineConfig config = controller.config();
+        m350::check::StaticCheck(controller.program(), *config.dialect, config.codePrograms).findings();
         controller.run();
     }
     return 0;

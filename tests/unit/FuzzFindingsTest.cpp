@@ -3,6 +3,7 @@
 #include "FileText.h"
 #include "RunProgram.h"
 
+#include "core/check/StaticCheck.h"
 #include "core/config/MachineConfig.h"
 
 #include "core/gcode/Dialect.h"
@@ -26,6 +27,11 @@ std::string joined(const std::vector<gcode::Diagnostic>& diagnostics) {
     return out;
 }
 
+std::vector<gcode::Diagnostic> checkWithoutRunning(const controller::Controller& controller) {
+    const config::MachineConfig machine = controller.config();
+    return check::StaticCheck(controller.program(), *machine.dialect, machine.codePrograms).findings();
+}
+
 // evaluator found-m-code-beyond-int: `M9999999930` saturates to INT_MAX, and the handler number
 // O(10000 + code) overflowed (UBSan: signed integer overflow in the static check and the run).
 TEST(FuzzFindingsTest, HandlerProgramOfAHugeOrNegativeCodeIsNone) {
@@ -43,7 +49,7 @@ TEST(FuzzFindingsTest, HandlerProgramOfAHugeOrNegativeCodeIsNone) {
 TEST(FuzzFindingsTest, MCodeBeyondIntIsCheckedAndAlarmsWithoutOverflow) {
     controller::Controller controller(bundledMachine(), {});
     ASSERT_TRUE(controller.loadMdi({"#100=1", "M9999999930"})) << joined(controller.diagnostics());
-    controller.checkWithoutRunning();
+    checkWithoutRunning(controller);
     const controller::RunReport report = controller.run();
     ASSERT_TRUE(report.alarm);
     EXPECT_EQ(report.alarm->line, 2);
@@ -54,7 +60,7 @@ TEST(FuzzFindingsTest, MCodeBeyondIntIsCheckedAndAlarmsWithoutOverflow) {
 TEST(FuzzFindingsTest, GCodeBeyondIntIsReportedByTheCheck) {
     controller::Controller controller(bundledMachine(), {});
     ASSERT_TRUE(controller.loadMdi({"G9999999930"})) << joined(controller.diagnostics());
-    const std::string found = joined(controller.checkWithoutRunning());
+    const std::string found = joined(checkWithoutRunning(controller));
     EXPECT_NE(found.find("not a G code this machine knows"), std::string::npos) << found;
 }
 

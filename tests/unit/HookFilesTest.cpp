@@ -272,25 +272,25 @@ TEST_F(HookMachine, UserKeysRunTheirHookSwitchAnOutputOrNameAPanelKey) {
     cfg.parameters.set(212, 1323); // K3 is the Probe key
     cfg.parameters.set(214, 500);  // K5: nothing
     Controller c(std::move(cfg), {});
-    Controller::KeyPress k1 = c.pressUserKey(1);
-    ASSERT_EQ(k1.kind, Controller::KeyPress::Kind::Hook) << k1.why;
+    controller::KeyPress k1 = c.operatorPanel().pressUserKey(1);
+    ASSERT_EQ(k1.kind, controller::KeyPress::Kind::Hook) << k1.why;
     EXPECT_EQ(c.loadedHook(), Hook::Key1);
     c.run();
     EXPECT_DOUBLE_EQ(c.variable(100).number, 11);
 
-    EXPECT_EQ(c.pressUserKey(2).kind, Controller::KeyPress::Kind::Output);
+    EXPECT_EQ(c.operatorPanel().pressUserKey(2).kind, controller::KeyPress::Kind::Output);
     EXPECT_EQ(c.snapshot().outputs[8], 1);
-    c.pressUserKey(2);
+    c.operatorPanel().pressUserKey(2);
     EXPECT_EQ(c.snapshot().outputs[8], 0);
 
-    Controller::KeyPress k3 = c.pressUserKey(3);
-    EXPECT_EQ(k3.kind, Controller::KeyPress::Kind::PanelKey);
+    controller::KeyPress k3 = c.operatorPanel().pressUserKey(3);
+    EXPECT_EQ(k3.kind, controller::KeyPress::Kind::PanelKey);
     EXPECT_EQ(k3.value, 1323);
-    Controller::KeyPress k4 = c.pressUserKey(4);
-    EXPECT_EQ(k4.kind, Controller::KeyPress::Kind::Refused);
+    controller::KeyPress k4 = c.operatorPanel().pressUserKey(4);
+    EXPECT_EQ(k4.kind, controller::KeyPress::Kind::Refused);
     EXPECT_NE(k4.why.find("key-4.nc"), std::string::npos) << k4.why;
-    Controller::KeyPress k5 = c.pressUserKey(5);
-    EXPECT_EQ(k5.kind, Controller::KeyPress::Kind::Refused);
+    controller::KeyPress k5 = c.operatorPanel().pressUserKey(5);
+    EXPECT_EQ(k5.kind, controller::KeyPress::Kind::Refused);
     EXPECT_NE(k5.why.find("parameter 214 = 500"), std::string::npos) << k5.why;
 }
 
@@ -298,13 +298,13 @@ TEST_F(HookMachine, ExternalKeysAndFunctionKeysRunTheirHooks) {
     write("extnc1-1.nc", lines({"#100=22"}));
     write("ext_button.nc", lines({"#101=#1996"}));
     Controller c(machine(), {});
-    ASSERT_EQ(c.pressExternKey(2).kind, Controller::KeyPress::Kind::Hook);
+    ASSERT_EQ(c.operatorPanel().pressExternKey(2).kind, controller::KeyPress::Kind::Hook);
     c.run();
     EXPECT_DOUBLE_EQ(c.variable(100).number, 22);
-    ASSERT_TRUE(c.loadFunctionKey(3)) << diagnosticsOf(c);
+    ASSERT_TRUE(c.operatorPanel().loadFunctionKey(3)) << diagnosticsOf(c);
     c.run();
     EXPECT_DOUBLE_EQ(c.variable(101).number, 252);
-    EXPECT_FALSE(c.loadFunctionKey(15));
+    EXPECT_FALSE(c.operatorPanel().loadFunctionKey(15));
 }
 
 TEST_F(HookMachine, NoHookLoadsWhileAProgramRuns) {

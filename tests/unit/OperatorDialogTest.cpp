@@ -42,14 +42,14 @@ bool said(const controller::RunReport& r, const std::string& text) {
 TEST(OperatorDialog, TheRunHoldsUntilEnterAndTakesTheEnterPath) {
     auto c = started(kAsk, true);
     EXPECT_EQ(c->advance(60.0), RunState::Running);
-    ASSERT_TRUE(c->pendingDialog());
-    EXPECT_EQ(c->pendingDialog()->text, "Change to T2?");
-    EXPECT_EQ(c->pendingDialog()->kind, 1);
+    ASSERT_TRUE(c->operatorPanel().pendingDialog());
+    EXPECT_EQ(c->operatorPanel().pendingDialog()->text, "Change to T2?");
+    EXPECT_EQ(c->operatorPanel().pendingDialog()->kind, 1);
     EXPECT_EQ(c->panelStatus().dialog, std::optional<std::string>("Change to T2?"));
     EXPECT_EQ(c->snapshot().machine(0), 0.0); // nothing after the dialog's block ran
     EXPECT_EQ(c->variable(100).number, 0.0);
-    c->answerDialog(true);
-    EXPECT_FALSE(c->pendingDialog());
+    c->operatorPanel().answerDialog(true);
+    EXPECT_FALSE(c->operatorPanel().pendingDialog());
     EXPECT_FALSE(c->panelStatus().dialog);
     EXPECT_EQ(c->advance(60.0), RunState::Finished);
     EXPECT_NEAR(c->snapshot().machine(0), 10.0, 1e-9);
@@ -60,8 +60,8 @@ TEST(OperatorDialog, TheRunHoldsUntilEnterAndTakesTheEnterPath) {
 TEST(OperatorDialog, EscTakesTheOtherPath) {
     auto c = started(kAsk, true);
     c->advance(5.0);
-    ASSERT_TRUE(c->pendingDialog());
-    c->answerDialog(false);
+    ASSERT_TRUE(c->operatorPanel().pendingDialog());
+    c->operatorPanel().answerDialog(false);
     EXPECT_EQ(c->advance(60.0), RunState::Finished);
     EXPECT_NEAR(c->snapshot().machine(0), 20.0, 1e-9);
     EXPECT_EQ(c->variable(1505).number, 0.0);
@@ -72,7 +72,7 @@ TEST(OperatorDialog, EscTakesTheOtherPath) {
 TEST(OperatorDialog, MessageOnlyDoesNotHold) {
     auto c = started(lines({"#1505 = -5000(Spindle warming up)", "G00 X7", "M30"}), true);
     EXPECT_EQ(c->advance(60.0), RunState::Finished);
-    EXPECT_FALSE(c->pendingDialog());
+    EXPECT_FALSE(c->operatorPanel().pendingDialog());
     EXPECT_NEAR(c->snapshot().machine(0), 7.0, 1e-9);
     EXPECT_EQ(c->panelStatus().message, "Spindle warming up");
 }
@@ -80,7 +80,7 @@ TEST(OperatorDialog, MessageOnlyDoesNotHold) {
 TEST(OperatorDialog, WithoutAnOperatorEnterComesAtOnce) {
     auto c = started(kAsk, false);
     EXPECT_EQ(c->advance(60.0), RunState::Finished);
-    EXPECT_FALSE(c->pendingDialog());
+    EXPECT_FALSE(c->operatorPanel().pendingDialog());
     EXPECT_NEAR(c->snapshot().machine(0), 10.0, 1e-9);
     EXPECT_TRUE(said(c->snapshot(), "Change to T2? [dialog answered: Enter]"));
 }
@@ -97,9 +97,9 @@ TEST(OperatorDialog, RunAnswersEnterEvenWithAnOperatorSet) {
 TEST(OperatorDialog, ResetDropsThePendingDialog) {
     auto c = started(kAsk, true);
     c->advance(1.0);
-    ASSERT_TRUE(c->pendingDialog());
+    ASSERT_TRUE(c->operatorPanel().pendingDialog());
     c->reset();
-    EXPECT_FALSE(c->pendingDialog());
+    EXPECT_FALSE(c->operatorPanel().pendingDialog());
     EXPECT_EQ(c->runState(), RunState::Idle);
 }
 
@@ -117,7 +117,7 @@ TEST(PanelControls, ExternStartKeyIsPressedForAMoment) {
                                                  "M30"}))));
     ASSERT_TRUE(c->start());
     EXPECT_EQ(c->advance(30.0), RunState::Running); // no sensor_timeout: the key is the operator's
-    c->pressExternStart();
+    c->operatorPanel().pressExternStart();
     EXPECT_EQ(c->advance(1.0), RunState::Finished);
     EXPECT_EQ(c->variable(100).number, 1.0);
 }

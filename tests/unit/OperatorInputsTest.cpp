@@ -3,7 +3,10 @@
 // while its input is active, also after RESET.
 #include "RunProgram.h"
 
+#include "core/controller/OperatorInputs.h"
 #include "core/machine/InputFault.h"
+#include "core/machine/SimulatedMachine.h"
+#include "core/params/ParameterTable.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +14,7 @@ namespace {
 
 using namespace m350;
 using controller::Controller;
-using Kind = Controller::OperatorKey::Kind;
+using Kind = controller::OperatorKey::Kind;
 using machine::InputFault;
 
 constexpr int kPin = 21;
@@ -37,15 +40,15 @@ TEST(OperatorInputs, AnExternalKeyIsOnePressWhileHeld) {
     wire(cfg, 587, kPin); // external key 3
     Controller c(std::move(cfg), {});
     c.advance(0.02);
-    EXPECT_TRUE(c.takeOperatorKeys().empty());
+    EXPECT_TRUE(c.operatorPanel().takeOperatorKeys().empty());
     press(c, kPin);
     c.advance(0.5);
-    EXPECT_EQ(c.takeOperatorKeys(), (std::vector<Controller::OperatorKey>{{Kind::ExternKey, 3}}));
+    EXPECT_EQ(c.operatorPanel().takeOperatorKeys(), (std::vector<controller::OperatorKey>{{Kind::ExternKey, 3}}));
     c.advance(0.5); // still held
-    EXPECT_TRUE(c.takeOperatorKeys().empty());
+    EXPECT_TRUE(c.operatorPanel().takeOperatorKeys().empty());
     release(c, kPin);
     press(c, kPin);
-    EXPECT_EQ(c.takeOperatorKeys(), (std::vector<Controller::OperatorKey>{{Kind::ExternKey, 3}}));
+    EXPECT_EQ(c.operatorPanel().takeOperatorKeys(), (std::vector<controller::OperatorKey>{{Kind::ExternKey, 3}}));
 }
 
 TEST(OperatorInputs, AKeyActiveWhenItIsWiredIsNoPressUntilPressedAgain) {
@@ -54,15 +57,15 @@ TEST(OperatorInputs, AKeyActiveWhenItIsWiredIsNoPressUntilPressedAgain) {
     cfg.parameters.set(583, 0); // active at 0: the idle input reads 0 from power-on
     Controller c(std::move(cfg), {});
     c.advance(0.02);
-    EXPECT_TRUE(c.takeOperatorKeys().empty());
+    EXPECT_TRUE(c.operatorPanel().takeOperatorKeys().empty());
     ASSERT_TRUE(c.setParameter(581, kPin + 1)); // moved to another idle input
     c.advance(0.02);
-    EXPECT_TRUE(c.takeOperatorKeys().empty());
+    EXPECT_TRUE(c.operatorPanel().takeOperatorKeys().empty());
     c.setInputFault(kPin + 1, InputFault::stuck(1));
     c.advance(0.02);
     c.setInputFault(kPin + 1, InputFault::stuck(0));
     c.advance(0.02);
-    EXPECT_EQ(c.takeOperatorKeys(), (std::vector<Controller::OperatorKey>{{Kind::ExternKey, 1}}));
+    EXPECT_EQ(c.operatorPanel().takeOperatorKeys(), (std::vector<controller::OperatorKey>{{Kind::ExternKey, 1}}));
 }
 
 TEST(OperatorInputs, AnUnwiredOrDisabledKeyIsNoPress) {
@@ -72,7 +75,7 @@ TEST(OperatorInputs, AnUnwiredOrDisabledKeyIsNoPress) {
     Controller c(std::move(cfg), {});
     press(c, kPin);
     press(c, kPin + 1);
-    EXPECT_TRUE(c.takeOperatorKeys().empty());
+    EXPECT_TRUE(c.operatorPanel().takeOperatorKeys().empty());
 }
 
 TEST(OperatorInputs, StartIsNoKeyPressWhileAProgramRunsButPauseIs) {
@@ -85,23 +88,23 @@ TEST(OperatorInputs, StartIsNoKeyPressWhileAProgramRunsButPauseIs) {
     c.advance(0.5);
     press(c, kPin);
     press(c, kPin + 1);
-    EXPECT_EQ(c.takeOperatorKeys(), (std::vector<Controller::OperatorKey>{{Kind::Pause, 0}}));
+    EXPECT_EQ(c.operatorPanel().takeOperatorKeys(), (std::vector<controller::OperatorKey>{{Kind::Pause, 0}}));
     EXPECT_EQ(c.runState(), Controller::RunState::Running); // the panel holds, not the core
     release(c, kPin);
     c.hold();
     press(c, kPin);
-    EXPECT_EQ(c.takeOperatorKeys(), (std::vector<Controller::OperatorKey>{{Kind::Start, 0}}));
+    EXPECT_EQ(c.operatorPanel().takeOperatorKeys(), (std::vector<controller::OperatorKey>{{Kind::Start, 0}}));
 }
 
 TEST(OperatorInputs, TheQueueKeepsTheNewestPresses) {
     config::MachineConfig cfg = test::m350Machine();
     wire(cfg, 581, kPin);
     Controller c(std::move(cfg), {});
-    for (std::size_t i = 0; i < Controller::kOperatorKeyQueue + 5; ++i) {
+    for (std::size_t i = 0; i < controller::OperatorPanel::kOperatorKeyQueue + 5; ++i) {
         press(c, kPin);
         release(c, kPin);
     }
-    EXPECT_EQ(c.takeOperatorKeys().size(), Controller::kOperatorKeyQueue);
+    EXPECT_EQ(c.operatorPanel().takeOperatorKeys().size(), controller::OperatorPanel::kOperatorKeyQueue);
 }
 
 TEST(OperatorInputs, TheExternEStopStopsMotionAndHoldsThroughReset) {
@@ -130,7 +133,35 @@ TEST(OperatorInputs, TheExternEStopStopsMotionAndHoldsThroughReset) {
     c.reset();
     c.advance(0.02);
     EXPECT_EQ(c.runState(), Controller::RunState::Idle);
-    EXPECT_TRUE(c.takeOperatorKeys().empty());
+    EXPECT_TRUE(c.operatorPanel().takeOperatorKeys().empty());
+}
+
+} // namespace
+
+namespace {
+
+using namespace m350;
+
+// controller::OperatorInputs on its own: the parameters and the machine's inputs are all it reads.
+TEST(OperatorInputs, ReadsTheWiredKeysWithoutAController) {
+    params::ParameterTable parameters;
+    machine::SimulatedMachine machine;
+    parameters.set(587, kPin); // external key 3
+    parameters.set(588, 1);
+    parameters.set(589, 1);
+    parameters.set(605, kPin + 1); // extern E-stop
+    parameters.set(606, 1);
+    parameters.set(607, 1);
+    controller::OperatorInputs inputs;
+    EXPECT_FALSE(inputs.watch(parameters, machine, false));
+    machine.setInputFault(kPin, machine::InputFault::stuck(1));
+    EXPECT_FALSE(inputs.watch(parameters, machine, false));
+    EXPECT_EQ(inputs.take(), (std::vector<controller::OperatorKey>{{controller::OperatorKey::Kind::ExternKey, 3}}));
+    machine.setInputFault(kPin + 1, machine::InputFault::stuck(1));
+    std::optional<std::string> eStop = inputs.watch(parameters, machine, false);
+    ASSERT_TRUE(eStop);
+    EXPECT_NE(eStop->find("extern E-stop"), std::string::npos) << *eStop;
+    EXPECT_TRUE(inputs.take().empty());
 }
 
 } // namespace

@@ -47,7 +47,7 @@ TEST(SensorWatch, TheStatusSaysWhatTheMacroWaitsForAndForHowLong) {
     ASSERT_TRUE(c.loadFile(path));
     ASSERT_TRUE(c.start());
     EXPECT_EQ(c.advance(4.0), RunState::Running);
-    auto wait = c.sensorWait();
+    auto wait = c.operatorPanel().sensorWait();
     ASSERT_TRUE(wait.has_value());
     EXPECT_EQ(wait->input, "IN05 (tool clamped)");
     EXPECT_EQ(wait->awaitedLevel, 1);
@@ -77,7 +77,7 @@ TEST(SensorWatch, WaitingForTheOperatorIsNoFault) {
     ASSERT_TRUE(c.loadFile(writeTempFile(kWaitForClamp)));
     ASSERT_TRUE(c.start());
     EXPECT_EQ(c.advance(60.0), controller::Controller::RunState::Running); // still waiting, no alarm
-    EXPECT_FALSE(c.sensorWait().has_value());
+    EXPECT_FALSE(c.operatorPanel().sensorWait().has_value());
 }
 
 TEST(SensorWatch, ARunWithoutAnOperatorPressesStartWhenAMacroWaitsForIt) {

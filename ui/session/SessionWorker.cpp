@@ -292,13 +292,13 @@ void SessionWorker::runMdi(const QStringList& lines, Activity activity, bool thr
 
 void SessionWorker::answerDialog(bool enter) {
     lastError_.clear();
-    controller_->answerDialog(enter);
+    controller_->operatorPanel().answerDialog(enter);
     publish();
 }
 
 void SessionWorker::pressExternStart() {
     lastError_.clear();
-    controller_->pressExternStart();
+    controller_->operatorPanel().pressExternStart();
     publish();
 }
 

@@ -97,7 +97,7 @@ void SessionWorker::userKey(int key) {
         return;
     }
     fileLoaded_ = false;
-    keyPressed(controller_->pressUserKey(key), QStringLiteral("K%1").arg(key), QStringLiteral("key-%1.nc").arg(key));
+    keyPressed(controller_->operatorPanel().pressUserKey(key), QStringLiteral("K%1").arg(key), QStringLiteral("key-%1.nc").arg(key));
 }
 
 void SessionWorker::functionKey(int key) {
@@ -108,7 +108,7 @@ void SessionWorker::functionKey(int key) {
     }
     fileLoaded_ = false;
     const bool hookRan = controller_->hasHook(config::Hook::ExtButton);
-    if (!controller_->loadFunctionKey(key)) {
+    if (!controller_->operatorPanel().loadFunctionKey(key)) {
         refuse(loadErrors());
         return;
     }
@@ -123,11 +123,11 @@ void SessionWorker::functionKey(int key) {
 // A press of a key wired to an input, as the controller read it: START and PAUSE act as the
 // panel's own keys, an external key as a K key does (params 272-277 say what it does).
 void SessionWorker::operatorKeys() {
-    for (const Controller::OperatorKey& key : controller_->takeOperatorKeys()) {
+    for (const controller::OperatorKey& key : controller_->operatorPanel().takeOperatorKeys()) {
         switch (key.kind) {
-        case Controller::OperatorKey::Kind::Start: start(); break;
-        case Controller::OperatorKey::Kind::Pause: pause(); break;
-        case Controller::OperatorKey::Kind::ExternKey: {
+        case controller::OperatorKey::Kind::Start: start(); break;
+        case controller::OperatorKey::Kind::Pause: pause(); break;
+        case controller::OperatorKey::Kind::ExternKey: {
             const QString name = tr("External key %1").arg(key.key);
             if (busy()) {
                 refuse(name + QStringLiteral(": ") + tr("A program is running: wait for it, or PAUSE / RESET first"));
@@ -135,7 +135,7 @@ void SessionWorker::operatorKeys() {
             }
             lastError_.clear();
             fileLoaded_ = false;
-            keyPressed(controller_->pressExternKey(key.key), name, QStringLiteral("extnc%1-1.nc").arg(key.key - 1));
+            keyPressed(controller_->operatorPanel().pressExternKey(key.key), name, QStringLiteral("extnc%1-1.nc").arg(key.key - 1));
             break;
         }
         }
@@ -144,17 +144,17 @@ void SessionWorker::operatorKeys() {
 
 void SessionWorker::keyPressed(const controller::KeyPress& press, const QString& key, const QString& hookFile) {
     switch (press.kind) {
-    case Controller::KeyPress::Kind::Hook:
+    case controller::KeyPress::Kind::Hook:
         if (controller_->start()) {
             activity_ = Activity::Hook;
             log_->record("hook", key + QStringLiteral(": ") + hookFile);
         }
         break;
-    case Controller::KeyPress::Kind::Output:
+    case controller::KeyPress::Kind::Output:
         log_->record("output", key + QStringLiteral(": OUT%1").arg(press.value, 2, 10, QLatin1Char('0')));
         break;
-    case Controller::KeyPress::Kind::PanelKey: panelKey(key, press.value); return;
-    case Controller::KeyPress::Kind::Refused: refuse(QString::fromStdString(press.why)); return;
+    case controller::KeyPress::Kind::PanelKey: panelKey(key, press.value); return;
+    case controller::KeyPress::Kind::Refused: refuse(QString::fromStdString(press.why)); return;
     }
     publish();
 }

@@ -1,21 +1,24 @@
 // `m350-sim check`: what the loaded program would alarm on that is knowable without running it
 // (issue 13: `check` said ok to programs that alarm on line 1). Only the main file is checked; the
 // machine's libraries are the machine's. Each finding is what the run would say, at its place.
-#include "core/controller/Controller.h"
+#include "core/check/StaticCheck.h"
 
 #include "core/common/EchoText.h"
 #include "core/common/Numeric.h"
 #include "core/gcode/DiagnosticCap.h"
 #include "core/interp/ModalInterpreter.h"
 #include "core/macro/Evaluator.h"
+#include "core/macro/MachineAccess.h"
 #include "core/macro/MacroError.h"
+#include "core/macro/VariableStore.h"
+#include "core/params/ParameterTable.h"
 
 #include <algorithm>
 #include <array>
 #include <optional>
 #include <sstream>
 
-namespace m350::controller {
+namespace m350::check {
 
 namespace {
 
@@ -37,11 +40,22 @@ bool isWord(const Word& w, char letter, int code) {
     return w.letter == letter && w.isNumber() && w.number == code;
 }
 
+// The check evaluates constants only (a variable's number, 1/0), which read no variable: the
+// variables and the machine it evaluates against are empty ones.
+class NoMachine final : public macro::MachineAccess {
+public:
+    macro::Value readSystem(const macro::VariableInfo&, int) override { return macro::Value::empty(); }
+    std::optional<std::string> writeSystem(const macro::VariableInfo&, int, double, std::string_view) override {
+        return "the check writes no variable";
+    }
+};
+
 class ProgramCheck {
 public:
-    ProgramCheck(const gcode::Program& program, const config::MachineConfig& config, macro::Evaluator& evaluator,
-                 const macro::VariableMap& variables, std::vector<gcode::Diagnostic>& out)
-        : program_(program), config_(config), evaluator_(evaluator), variables_(variables), out_(out) {}
+    ProgramCheck(const gcode::Program& program, const gcode::Dialect& dialect, const StaticCheck::CodePrograms& codePrograms,
+                 macro::Evaluator& evaluator, const macro::VariableMap& variables, std::vector<gcode::Diagnostic>& out)
+        : program_(program), dialect_(dialect), codePrograms_(codePrograms), evaluator_(evaluator),
+          variables_(variables), out_(out) {}
 
     void block(const Block& b) {
         location_ = b.location;
@@ -187,7 +201,7 @@ private:
         if (variables_.describe(number).kind == macro::VariableKind::Undefined) {
             throw macro::MacroError{AlarmCode::UndefinedVariable,
                                     "#" + std::to_string(number) + " does not exist in the " +
-                                        std::string(config_.dialect->name) + " dialect",
+                                        std::string(dialect_.name) + " dialect",
                                     program_.expressions[variable].column};
         }
         return number;
@@ -218,11 +232,11 @@ private:
             return true;
         }
         const int code = roundToInt(w.number);
-        if (config_.codePrograms.count({w.letter, code}) != 0 || isWord(w, 'G', 65) ||
+        if (codePrograms_.count({w.letter, code}) != 0 || isWord(w, 'G', 65) ||
             isWord(w, 'M', 98) || isWord(w, 'M', 99) || isWord(w, 'G', 10) || isWord(w, 'G', 11)) {
             return true; // G10/G11: FANUC tool life entry takes its own words
         }
-        const std::optional<std::int32_t> handler = config_.dialect->handlerProgram(w.letter, code);
+        const std::optional<std::int32_t> handler = dialect_.handlerProgram(w.letter, code);
         return handler && program_.findHandler(*handler, w.letter == 'G' ? gcode::FileRole::GLibrary
                                                                          : gcode::FileRole::MLibrary);
     }
@@ -235,7 +249,7 @@ private:
         }
         std::array<bool, 26> seen{};
         for (const Word& w : b.words) {
-            if (w.letter == 'G' && !interp::ModalInterpreter::knowsGCode(*config_.dialect, w.number)) {
+            if (w.letter == 'G' && !interp::ModalInterpreter::knowsGCode(dialect_, w.number)) {
                 report(w.column, "G" + formatCode(w.number) + ": not a G code this machine knows");
             }
             if (w.letter == 'G' || w.letter == 'M' || w.letter < 'A' || w.letter > 'Z') {
@@ -258,7 +272,8 @@ private:
     }
 
     const gcode::Program& program_;
-    const config::MachineConfig& config_;
+    const gcode::Dialect& dialect_;
+    const StaticCheck::CodePrograms& codePrograms_;
     macro::Evaluator& evaluator_;
     const macro::VariableMap& variables_;
     std::vector<gcode::Diagnostic>& out_;
@@ -267,10 +282,13 @@ private:
 
 } // namespace
 
-std::vector<gcode::Diagnostic> Controller::checkWithoutRunning() {
+std::vector<gcode::Diagnostic> StaticCheck::findings() const {
     std::vector<gcode::Diagnostic> findings;
-    macro::Evaluator evaluator(program_.expressions, *config_.dialect, store_, *this);
-    ProgramCheck check(program_, config_, evaluator, store_.map(), findings);
+    params::ParameterTable parameters;
+    macro::VariableStore variables(dialect_, parameters);
+    NoMachine machine;
+    macro::Evaluator evaluator(program_.expressions, dialect_, variables, machine);
+    ProgramCheck check(program_, dialect_, codePrograms_, evaluator, variables.map(), findings);
     gcode::DiagnosticCap cap; // a million lines of `#1=1/0` list the first and the last findings
     for (const gcode::ProgramUnit& unit : program_.units) {
         if (!check.checked(unit)) {
@@ -286,4 +304,4 @@ std::vector<gcode::Diagnostic> Controller::checkWithoutRunning() {
     return findings;
 }
 
-} // namespace m350::controller
+} // namespace m350::check
