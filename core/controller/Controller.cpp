@@ -133,7 +133,6 @@ void Controller::applySettings() {
     configureMachine();
     magazine_.build();
     syncToolLength();
-    homed_.fill(settings_.homed ? 1 : 0);
     machine::Axes start = machine::Axes::Zero();
     if (settings_.homed) {
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
@@ -141,7 +140,7 @@ void Controller::applySettings() {
         }
     }
     machine_.setPosition(start);
-    placeHomeSwitches();
+    homing_.startUp(settings_.homed, config_.homeSwitchDistance);
     for (auto [number, value] : config_.variables) {
         store_.write(store_.map().describe(number), number, macro::Value::of(value));
     }
@@ -256,20 +255,20 @@ RunReport Controller::snapshot() const {
 }
 
 bool Controller::start() {
-    if (jogging()) {
+    if (manual_.jogging()) {
         return false; // START waits for the manual move to end
     }
     alarm_.reset();
     pendingDialog_.reset();
     sensorWatch_.clear();
-    paused_.reset();
+    breakRun_.forgetPause();
     devices_.closeOutputDevice();
     if (!executor_) {
         state_ = RunState::Idle;
         return false;
     }
     if (!mdi_ && !hook_ && config_.parameters.get(param::kHomeBeforeProcessing) != 0.0 &&
-        !(homed(0) && homed(1) && homed(2))) {
+        !homing_.xyzHomed()) {
         // param 220: automatic runs need X, Y and Z homed (MDI does not)
         raiseAlarm(Alarm{AlarmCode::NotHomed, "机械未归零不能自动加工! (home X, Y and Z first: parameter 220)",
                          program_.files.empty() ? std::string() : program_.files.front().name, 0, 0});
@@ -280,7 +279,7 @@ bool Controller::start() {
     displayTime_ = machine_.time();
     runStartedAt_ = displayTime_;
     timeLimitFrom_ = runStartedAt_;
-    runStartedFrom_ = machine_.position();
+    breakRun_.runStartsFrom(machine_.position());
     if (!unit || !executor_->start(*unit)) {
         state_ = RunState::Finished;
         return true;
@@ -290,7 +289,7 @@ bool Controller::start() {
 }
 
 Controller::RunState Controller::advance(double seconds) {
-    displayTime_ += displayStep(seconds); // the handwheel guide may slow it, stop it or run it back
+    displayTime_ += manual_.displayStep(seconds); // the handwheel guide may slow it, stop it or run it back
     watchOperatorInputs();
     if (state_ != RunState::Running) {
         // Between runs the machine's clock follows the display's, so what devices drive in time

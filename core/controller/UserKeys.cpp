@@ -31,7 +31,7 @@ Controller::KeyPress Controller::pressKey(int function, config::Hook hook, const
         }
         press.kind = KeyPress::Kind::Hook;
     } else if (value == code && code >= 1 && code <= machine::kOutputCount) {
-        if (!setOutputByOperator(code, 1 - machine_.output(code))) {
+        if (!manual_.setOutputByOperator(code, 1 - machine_.output(code))) {
             press.why = key + ": OUT" + std::to_string(code) + " cannot be switched while a program runs";
             return press;
         }
