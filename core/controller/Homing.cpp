@@ -66,7 +66,8 @@ void Homing::startUp(bool homed, const std::array<double, machine::kAxisCount>& 
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         machine::HomeSwitch homeSwitch = machine_.homeSwitch(axis);
         homeSwitch.side = parameters_.get(param::kHomingDirectionX + axis) != 0.0 ? 1.0 : -1.0;
-        homeSwitch.at = position(axis) + homeSwitch.side * (homed ? kBackOff : switchDistance[static_cast<std::size_t>(axis)]);
+        const double away = homed ? kBackOff : switchDistance[static_cast<std::size_t>(axis)];
+        homeSwitch.at = position(axis) + homeSwitch.side * away;
         machine_.setHomeSwitch(axis, homeSwitch);
     }
 }

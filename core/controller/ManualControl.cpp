@@ -29,7 +29,8 @@ ManualControl::ManualControl(machine::SimulatedMachine& machine, const params::P
 
 bool ManualControl::manualAllowed() const {
     const RunState state = run_.runState();
-    return state != RunState::Running && state != RunState::Hold && state != RunState::Alarm && state != RunState::EStop;
+    return state != RunState::Running && state != RunState::Hold && state != RunState::Alarm &&
+           state != RunState::EStop;
 }
 
 bool ManualControl::jogging() const { return run_.displayTime() < std::min(state_.movingUntil, machine_.time()); }
@@ -96,7 +97,8 @@ bool ManualControl::wheelTurn(int axis, int multiplier, int detents, double seco
         return false;
     }
     const RunState state = run_.runState();
-    const bool runOn = state == RunState::Running || (state == RunState::Finished && run_.displayTime() < machine_.time());
+    const bool runOn =
+        state == RunState::Running || (state == RunState::Finished && run_.displayTime() < machine_.time());
     if (state_.guide && runOn) {
         return guideTurn(multiplier, detents, seconds);
     }
