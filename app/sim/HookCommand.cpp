@@ -46,7 +46,7 @@ std::optional<std::string> missingHook(const SimOptions& o, const config::Machin
 
 std::optional<controller::RunReport> homeBeforeRun(controller::Controller& controller) {
     if (!controller.hasHook(config::Hook::HomeAll)) {
-        if (controller.home(controller.homeableAxes())) {
+        if (controller.homing().home(controller.homing().homeableAxes())) {
             return controller.snapshot();
         }
         return std::nullopt;

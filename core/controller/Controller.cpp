@@ -71,7 +71,7 @@ OperatorPanel Controller::newOperatorPanel() {
     UserKeys::Context keys{
         config_.parameters,
         [this](int port) { return machine_.output(port); },
-        [this](int port, int level) { return setOutputByOperator(port, level); },
+        [this](int port, int level) { return manual_.setOutputByOperator(port, level); },
         [this](config::Hook hook) { return loadHook(hook); },
         [this](config::Hook hook, const std::map<int, double>& variables, const std::vector<std::string>& fallback) {
             return loadHookOrMdi(hook, variables, fallback);
@@ -173,7 +173,6 @@ void Controller::applySettings() {
     configureMachine();
     magazine_.build();
     syncToolLength();
-    homed_.fill(settings_.homed ? 1 : 0);
     machine::Axes start = machine::Axes::Zero();
     if (settings_.homed) {
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
@@ -181,7 +180,7 @@ void Controller::applySettings() {
         }
     }
     machine_.setPosition(start);
-    placeHomeSwitches();
+    homing_.startUp(settings_.homed, config_.homeSwitchDistance);
     for (auto [number, value] : config_.variables) {
         store_.write(store_.map().describe(number), number, macro::Value::of(value));
     }
@@ -296,20 +295,20 @@ RunReport Controller::snapshot() const {
 }
 
 bool Controller::start() {
-    if (jogging()) {
+    if (manual_.jogging()) {
         return false; // START waits for the manual move to end
     }
     alarm_.reset();
     panel_.clearDialog();
     panel_.clearSensorWait();
-    paused_.reset();
+    breakRun_.forgetPause();
     devices_.closeOutputDevice();
     if (!executor_) {
         state_ = RunState::Idle;
         return false;
     }
     if (!mdi_ && !hook_ && config_.parameters.get(param::kHomeBeforeProcessing) != 0.0 &&
-        !(homed(0) && homed(1) && homed(2))) {
+        !homing_.xyzHomed()) {
         // param 220: automatic runs need X, Y and Z homed (MDI does not)
         raiseAlarm(Alarm{AlarmCode::NotHomed, "机械未归零不能自动加工! (home X, Y and Z first: parameter 220)",
                          program_.files.empty() ? std::string() : program_.files.front().name, 0, 0});
@@ -320,7 +319,7 @@ bool Controller::start() {
     displayTime_ = machine_.time();
     runStartedAt_ = displayTime_;
     timeLimitFrom_ = runStartedAt_;
-    runStartedFrom_ = machine_.position();
+    breakRun_.runStartsFrom(machine_.position());
     if (!unit || !executor_->start(*unit)) {
         state_ = RunState::Finished;
         return true;
@@ -330,7 +329,7 @@ bool Controller::start() {
 }
 
 Controller::RunState Controller::advance(double seconds) {
-    displayTime_ += displayStep(seconds); // the handwheel guide may slow it, stop it or run it back
+    displayTime_ += manual_.displayStep(seconds); // the handwheel guide may slow it, stop it or run it back
     if (auto eStop = panel_.watchInputs(config_.parameters, machine_, state_ == RunState::Running);
         eStop && state_ != RunState::EStop) {
         emergencyStop(*eStop);

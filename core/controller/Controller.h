@@ -4,13 +4,17 @@
 #include "core/config/HookFiles.h"
 #include "core/params/IoPorts.h"
 #include "core/config/MachineConfig.h"
+#include "core/controller/BreakRun.h"
 #include "core/controller/ExternalDevices.h"
-#include "core/controller/ManualMotionState.h"
+#include "core/controller/Homing.h"
+#include "core/controller/ManualControl.h"
 #include "core/controller/MessageLog.h"
 #include "core/controller/OperatorPanel.h"
 #include "core/controller/PanelStatus.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
+#include "core/controller/RunState.h"
+#include "core/controller/RunView.h"
 #include "core/controller/SpindleLoadWatch.h"
 #include "core/controller/MagazineDriver.h"
 #include "core/controller/TraceWriter.h"
@@ -41,8 +45,12 @@ namespace m350::controller {
 
 // The one façade the CLI and the panel's session use: load a program with the machine's macro
 // libraries, run it in virtual time, inspect the result. Owns the machine, the interpreter, the
-// variables and the executor; implements the machine-side variables for the macro layer.
-class Controller : public macro::MachineAccess, public machine::MachineObserver {
+// variables and the executor; implements the machine-side variables for the macro layer. Its
+// parts: manual() (jog, handwheel, guide, overrides), homing() and breakRun() (断点加工).
+class Controller : public macro::MachineAccess,
+                   public machine::MachineObserver,
+                   private RunView,
+                   private BreakRun::Starter {
 public:
     Controller(config::MachineConfig config, RunSettings settings);
     ~Controller() override;
@@ -84,14 +92,14 @@ public:
     // program where it is (param 91: lift Z by param 70); resume() carries on from there; reset()
     // stops at once and rewinds; emergencyStop() (急停) stops at once with an alarm. Reset and E-stop
     // switch every output to its safe state.
-    enum class RunState { Idle, Running, Hold, Finished, Alarm, EStop };
+    using RunState = controller::RunState;
     bool start();
     RunState advance(double seconds);
     void hold();
     void resume();
     void reset();
     void emergencyStop(const std::string& why = {});
-    RunState runState() const { return state_; }
+    RunState runState() const override { return state_; }
     // Why the run holds when the program itself stopped (M00, M01 with the optional stop on, the
     // M350's G04 P-1): "M00 program stop (main.nc:12)"; empty for 暂停 or when running. resume()
     // is START. run() presses START by itself and notes it in the messages.
@@ -101,29 +109,10 @@ public:
     // not finite or one that params::refusedParameterValue refuses.
     double parameter(int n) const;
     bool setParameter(int n, double value);
-    // 断点加工 Break Run (StartAtLine.cpp). startAtLine starts the loaded program at `line` of the
-    // main file (the first block at or after it, the first time the program reaches it): the
-    // blocks before it run as a scan (ScanMachine: variables, IF/GOTO/WHILE, modal codes, F, S,
-    // spindle, coolant, outputs, tool; no motion, time or events), then the machine goes from where
-    // it stands to where the program is (Z up to the higher of the two, and param 90's safe Z; XY
-    // over; Z down at feed) and the run goes on. Refused (false, `why`) while running or holding,
-    // for a line beyond the file or in a subprogram, one the program never reaches, param 220
-    // unhomed, G41/G42 active at the line, and for what a scan cannot follow before it: a tool
-    // change with a magazine device, G31, a PMC M code, a sensor wait, an operator dialog, an alarm.
-    // A refusal moves nothing; the modal state and offsets are as before, variables as scanned.
-    bool startAtLine(std::uint32_t line, std::string* why);
-    // After 暂停 and RESET (or RESET alone mid-run): starts again at the main file's block that ran when paused (the same
-    // pass of a loop), rebuilt as above. Param 93 = 0 runs that block from its start point; 1 from
-    // the point where the hold stopped it (a move of the main file; otherwise from its start).
-    bool resumeAtPause(std::string* why);
-    // Where the last 暂停 (or a RESET mid-run) stopped the main file, kept until the next start;
-    // `file` is the main file's path.
-    struct BreakPoint {
-        std::string file;
-        std::uint32_t line = 0;
-    };
-    std::optional<BreakPoint> pauseBreakPoint() const;
-    double displayTime() const { return displayTime_; }
+    // 断点加工 Break Run: start at a line, or again where a hold stopped (BreakRun.h).
+    BreakRun& breakRun() { return breakRun_; }
+    const BreakRun& breakRun() const { return breakRun_; }
+    double displayTime() const override { return displayTime_; }
     machine::Axes displayPosition() const { return machine_.positionAt(displayTime_); }
     RunReport snapshot() const;
     // What the panel shows now (PanelStatusView.cpp): positions at the display time, modes, IO.
@@ -131,11 +120,9 @@ public:
     // The active modal codes as the Monitor page prints them: "G00 G17 G90 G94 G21 G40 G49 G80 G54 F3000 S0".
     std::string modalLine() const;
 
-    // 回零: homes the given axes (0 X .. 4 B), Z first. An alarm when an axis has no home switch.
-    std::optional<Alarm> home(const std::vector<int>& axes);
-    bool homed(int axis) const { return homed_[static_cast<std::size_t>(axis)] != 0; }
-    // Param 127 = 0 asks at boot whether to home (是否进行开机寻零操作?) while X, Y, Z are not homed.
-    bool needsBootHomingPrompt() const;
+    // 回零 homing and which axes are homed (Homing.h).
+    Homing& homing() { return homing_; }
+    const Homing& homing() const { return homing_; }
     // 清零: makes the current position the work zero of `axis` in the active system. For Z on the
     // M350 the stored offset excludes the tool's Z offset (params 930-945), so it holds the distance
     // between the setter and the workpiece and every set tool then cuts at the same Z.
@@ -158,59 +145,16 @@ public:
     // The spindle as the panel shows it: STOP FWD REV ORIENT, JOG while the spindle jog key turns
     // it, TAP while a tapping cycle (G84/G74) is active and it turns.
     machine::SpindleState spindleDisplay() const;
-    // The panel's spindle jog key (主轴点动): turns the spindle at param 85's speed, or stops it.
-    // Refused (false) while a program runs.
-    bool spindleJog(bool on);
-
-    // Manual motion (ManualMotion.cpp). Axis 0..4 = X Y Z A B. Moves start at the display time (or
-    // after a manual move still under way) and advance() shows them; soft limits (param 155) bound
-    // every one. Refused (false) while a program runs or holds, in alarm or E-stop.
-    using JogMode = controller::JogMode;
-    void setJogMode(JogMode mode); // a held CONT key is released
-    JogMode jogMode() const { return manual_.mode; }
-    void setJogStep(double distance); // mm (deg) per STEP press; ignored unless positive
-    double jogStep() const { return manual_.step; }
-    void setJogHighSpeed(bool high); // 高速 params 40-44 / 低速 45-49, capped by 35-39
-    // 手动倍率 SJR: 0 up to param 295 (150 % when it is 0); returns what applies.
-    double setJogOverride(double percent);
-    // CONT: moves until jogRelease() (to the soft limit, or kJogTravel); STEP: one jogStep();
-    // MPG: nothing (false). direction +1 / -1.
-    bool jogPress(int axis, int direction);
-    // Key up: a CONT move brakes to rest at the manual stop acceleration (params 55-59).
-    void jogRelease(int axis);
-    // The handwheel: `detents` (signed) turned over the next `seconds` at x1, x10 or x100. With
-    // the guide on and a program running it drives the guide (HandwheelGuide.cpp); in MPG mode
-    // with no program running it moves the axis detents * multiplier * param 172 (param 175
-    // reverses) at up to the speed of params 176-178, no faster than the wheel turns, ramping at
-    // params 181-185. Otherwise false.
-    bool wheelTurn(int axis, int multiplier, int detents, double seconds);
-    static constexpr double kJogTravel = 10000.0; // mm a CONT jog runs without soft limits
-
-    // 试切 handwheel guide (HandwheelGuide.cpp): while on and a program runs, the program's time
-    // advances only as the wheel turns (see GuideOverride). Turning backwards holds or retraces the
-    // path already made (the last SimulatedMachine::kHistoryMoves moves); turning forward again
-    // replays it, then new blocks execute. A retrace undoes motion only: outputs, spindle and
-    // variables stay as the blocks set them. Off: the run goes on at normal speed.
-    using GuideReverse = controller::GuideReverse;
-    void setHandwheelGuide(bool on);
-    bool handwheelGuide() const { return manual_.guide; }
-    void setGuideReverse(GuideReverse mode) { manual_.reverse = mode; }
-
-    // 主轴倍率 SRO, 50-150 % (clamped): the spindle speed shown follows it. Returns what applies.
-    double setSpindleOverride(double percent);
-    // The IO page's 输出开/输出关 for OUT01-OUT21 (level 0/1). Refused while a program runs or
-    // holds and in E-stop.
-    bool setOutputByOperator(int port, int level);
+    // The operator's manual control: jog keys, handwheel, 试切 guide, manual and spindle
+    // overrides, spindle jog, the IO page's output switches (ManualControl.h).
+    ManualControl& manual() { return manual_; }
+    const ManualControl& manual() const { return manual_; }
 
     // Fault injection for training: input `pin` (1-24) stuck, delayed or bouncing from now on;
     // nullopt takes the fault off. `RunSettings::heldInputs` puts stuck faults on before a run.
     void setInputFault(int pin, std::optional<machine::InputFault> fault) { machine_.setInputFault(pin, fault); }
     // A trainer presses what is wired to input `pin` for a moment: it reads `level` for `seconds`.
     void pressInput(int pin, int level, double seconds) { machine_.pulseInput(pin, level, seconds); }
-
-    // X, Y and Z always; the 4th and 5th axes when their home switch is set.
-    std::vector<int> homeableAxes() const;
-    static constexpr const char* kBootHomingPrompt = "是否进行开机寻零操作?";
 
     // The tool table (ToolTableEdits.cpp; one store, see tools::ToolData): on the M350 a tool's Z is
     // its parameter 930-945 / 973-992, on a FANUC offset n is tool n's row. Edits are refused while
@@ -297,16 +241,15 @@ private:
     // True once what started at machine time `since` (a run, a hook, homing) ran longer than
     // --max-sim-time (or the clock went nan); the move or dwell under way is then stopped where the
     // limit found it, so the report shows that moment. Each run gets the whole limit.
-    bool passedTimeLimit(double since);
+    bool passedTimeLimit(double since) final;
     // Stops the motion under way at virtual time t (SimulatedMachine::interrupt); the magazine
     // learns where a move it was told of really stopped.
     machine::SimulatedMachine::Remainder interruptMotion(double t, bool immediate);
     // "the program ran 3600 s of simulated time without ending (stopped at 7250.5 s)": what ran
     // over the limit, and the machine time it stopped at.
-    std::string timeLimitText(const std::string& what, double since) const;
-    // The machine folder's params.toml, which native homing alarms name (their cause is a parameter).
-    std::string parametersFile() const;
-    void raiseAlarm(const Alarm& alarm);
+    std::string timeLimitText(const std::string& what, double since) const final;
+    double runStartedAt() const final { return runStartedAt_; }
+    void raiseAlarm(const Alarm& alarm) final;
     void parseWithLibraries(gcode::Program& program, const gcode::SourceText& source, gcode::FileRole role,
                             std::vector<gcode::Diagnostic>& diagnostics) const;
     static bool addSourceFile(gcode::Parser& parser, gcode::Program& program, const std::string& path,
@@ -318,9 +261,6 @@ private:
     std::optional<Alarm> runHookProgramToEnd(const std::string& name);
     void runPauseHook();
     void returnAfterPauseHook();
-    // `since`: the machine time --max-sim-time counts from (the homing's or the run's start).
-    std::optional<Alarm> homeAxis(int axis, double since);
-    bool homeSwitchWired(int axis) const;
     void fill(RunReport& out) const;
     int spindleTool() const;
     TraceSource source() const;
@@ -342,7 +282,6 @@ private:
     std::vector<gcode::Diagnostic> diagnostics_;
     std::unique_ptr<macro::Executor> executor_;
     std::unique_ptr<TraceWriter> trace_;
-    std::array<int, machine::kAxisCount> homed_{};
     int fanucSpindleTool_ = 0;
     MessageLog messages_;
     std::string statusMessage_; // the #1503 text the status line shows now (cleared by #1503 = 1000)
@@ -359,7 +298,6 @@ private:
     machine::SimulatedMachine::Remainder remainder_; // what a hold cut short
     double liftedBy_ = 0.0;                          // Z lift of the hold (param 91, 70)
     std::string programStop_;                        // see programStop()
-    void placeHomeSwitches(); // Homing.cpp
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     ExternalDevices devices_; // the external output device and the Modbus slaves
@@ -369,32 +307,19 @@ private:
     OperatorPanel panel_; // after what its parts read
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 
-    // 断点加工 (StartAtLine.cpp): the main block a hold stopped, which pass over it, where it stopped
-    struct PausePoint {
-        std::uint32_t block = 0;
-        std::uint64_t pass = 0;
-        machine::Axes stoppedAt = machine::Axes::Zero();
-        machine::SimulatedMachine::Remainder rest;
-        bool mainMove = false; // the hold cut a move of that block itself, not of a call
-        machine::Axes runFrom = machine::Axes::Zero(); // where the run began (G91 programs count from it)
-    };
-    std::optional<PausePoint> paused_;
-    machine::Axes runStartedFrom_ = machine::Axes::Zero();
-    void rememberPause(const machine::SimulatedMachine::Remainder& rest);
-    bool startAt(std::uint32_t block, std::uint64_t pass, bool fromStopPoint, std::string* why);
-    std::optional<std::string> scanTo(std::uint32_t block, std::uint64_t pass, bool through, const machine::Axes& from);
-    bool inToolChange() const;
-    std::string lineText(std::uint32_t block) const;
-    void approach(const machine::Axes& target, machine::SpindleState spindle, double rpm);
-    void continueRemainder(const machine::SimulatedMachine::Remainder& rest);
+    // BreakRun::Starter (RunStart.cpp)
+    macro::Executor* programExecutor() final { return executor_ && !mdi_ ? executor_.get() : nullptr; }
+    void clearForStart() final;
+    bool dialogPending() const final { return panel_.dialogPending(); }
+    bool inToolChange() const final;
+    Saved save() const final;
+    void restore(const Saved& saved) final;
+    void startClock(const std::string& where) final;
+    void setRunState(RunState state) final { state_ = state; }
 
-    // manual motion and the handwheel guide (ManualMotion.cpp, HandwheelGuide.cpp)
-    ManualMotionState manual_;
-    bool manualAllowed() const;
-    bool jogging() const;
-    bool moveManually(int axis, double distance, double speed, double acceleration);
-    bool guideTurn(int multiplier, int detents, double seconds);
-    double displayStep(double seconds);
+    ManualControl manual_{machine_, config_.parameters, *this};
+    Homing homing_{machine_, config_.parameters, config_.folder, *this};
+    BreakRun breakRun_{program_, machine_, scan_, interp_, config_.parameters, manual_, homing_, *this};
 };
 
 } // namespace m350::controller

@@ -56,7 +56,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         return Value::of(level);
     }
     case VariableKind::Output: return Value::of(scan_.output(info.index));
-    case VariableKind::Homed: return Value::of(homed_[static_cast<std::size_t>(info.index)]);
+    case VariableKind::Homed: return Value::of(homing_.homed(info.index) ? 1 : 0);
     case VariableKind::Dialog: return Value::of(panel_.dialogAnswer());
     case VariableKind::Message: return Value::of(0);
     case VariableKind::PmcSignal: {
@@ -97,14 +97,14 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
     case VariableKind::WorkOffset: offsets_.set(info.index >> 3, info.index & 7, value); return std::nullopt;
     case VariableKind::Output: scan_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
     case VariableKind::ToolOffset: return tools_.setOffsetValue(info.index, value);
-    case VariableKind::Homed: homed_[static_cast<std::size_t>(info.index)] = value != 0.0 ? 1 : 0; return std::nullopt;
+    case VariableKind::Homed: homing_.setHomed(info.index, value != 0.0); return std::nullopt;
     case VariableKind::MachinePosition: {
         // M350 #880-#884: the axis takes this machine position where it stands, without moving, and
         // is no longer homed (a dual-Y gantry's fndzero.nc copies Y to A so, then sets #1518 = 1)
         machine::Axes position = scan_.position();
         position(info.index) = value;
         scan_.setPosition(position);
-        homed_[static_cast<std::size_t>(info.index)] = 0;
+        homing_.setHomed(info.index, false);
         return std::nullopt;
     }
     case VariableKind::Message:

@@ -1,6 +1,6 @@
-// 回零 homing: each axis runs toward its home switch (an IO input, params 545-557), backs off and
-// approaches again slowly, then takes the machine position of params 122-126.
-#include "core/controller/Controller.h"
+#include "core/controller/Homing.h"
+
+#include "core/controller/RunView.h"
 #include "core/params/IoPorts.h"
 
 #include "core/common/Numeric.h"
@@ -19,11 +19,16 @@ constexpr std::array<int, machine::kAxisCount> kHomingOrder{2, 0, 1, 3, 4}; // Z
 
 } // namespace
 
-bool Controller::homeSwitchWired(int axis) const {
-    return params::wiredInput(config_.parameters, param::kHomeSwitchX + 3 * axis).has_value();
+Homing::Homing(machine::SimulatedMachine& machine, const params::ParameterTable& parameters, const std::string& folder,
+               RunView& run)
+    : machine_(machine), parameters_(parameters),
+      parametersFile_(folder.empty() ? std::string("params.toml") : folder + "/params.toml"), run_(run) {}
+
+bool Homing::homeSwitchWired(int axis) const {
+    return params::wiredInput(parameters_, param::kHomeSwitchX + 3 * axis).has_value();
 }
 
-std::vector<int> Controller::homeableAxes() const {
+std::vector<int> Homing::homeableAxes() const {
     std::vector<int> axes{0, 1, 2};
     for (int axis = 3; axis < machine::kAxisCount; ++axis) {
         if (homeSwitchWired(axis)) {
@@ -33,19 +38,18 @@ std::vector<int> Controller::homeableAxes() const {
     return axes;
 }
 
-bool Controller::needsBootHomingPrompt() const {
-    bool allHomed = homed_[0] && homed_[1] && homed_[2];
-    return config_.parameters.get(param::kHomeAfterBooting) == 0.0 && !allHomed;
+bool Homing::needsBootHomingPrompt() const {
+    return parameters_.get(param::kHomeAfterBooting) == 0.0 && !xyzHomed();
 }
 
-std::optional<Alarm> Controller::home(const std::vector<int>& axes) {
+std::optional<Alarm> Homing::home(const std::vector<int>& axes) {
     const double startedAt = machine_.time();
     for (int axis : kHomingOrder) {
         if (std::find(axes.begin(), axes.end(), axis) == axes.end()) {
             continue;
         }
         if (auto alarm = homeAxis(axis, startedAt)) {
-            raiseAlarm(*alarm);
+            run_.raiseAlarm(*alarm);
             return alarm;
         }
     }
@@ -56,30 +60,27 @@ std::optional<Alarm> Controller::home(const std::vector<int>& axes) {
 // switch distance ([homing] switch_distance) away in the homing direction; a machine that starts
 // homed stands kBackOff off them, where homing leaves it. A macro that homes by G31 or by reading
 // the switch while it moves (a factory O501) finds them there too.
-void Controller::placeHomeSwitches() {
+void Homing::startUp(bool homed, const std::array<double, machine::kAxisCount>& switchDistance) {
+    homed_.fill(homed ? 1 : 0);
     const machine::Axes position = machine_.position();
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         machine::HomeSwitch homeSwitch = machine_.homeSwitch(axis);
-        homeSwitch.side = config_.parameters.get(param::kHomingDirectionX + axis) != 0.0 ? 1.0 : -1.0;
-        homeSwitch.at = position(axis) + homeSwitch.side * (settings_.homed ? kBackOff
-                                                                             : config_.homeSwitchDistance[static_cast<std::size_t>(axis)]);
+        homeSwitch.side = parameters_.get(param::kHomingDirectionX + axis) != 0.0 ? 1.0 : -1.0;
+        const double away = homed ? kBackOff : switchDistance[static_cast<std::size_t>(axis)];
+        homeSwitch.at = position(axis) + homeSwitch.side * away;
         machine_.setHomeSwitch(axis, homeSwitch);
     }
 }
 
-std::string Controller::parametersFile() const {
-    return config_.folder.empty() ? std::string("params.toml") : config_.folder + "/params.toml";
-}
-
-std::optional<Alarm> Controller::homeAxis(int axis, double since) {
-    const params::ParameterTable& p = config_.parameters;
+std::optional<Alarm> Homing::homeAxis(int axis, double since) {
+    const params::ParameterTable& p = parameters_;
     const char name = machine::kAxisNames[static_cast<std::size_t>(axis)];
     if (!homeSwitchWired(axis)) {
         int first = param::kHomeSwitchX + 3 * axis;
         return Alarm{AlarmCode::NotHomed,
                      std::string(1, name) + " cannot home: no home switch is set (params " + std::to_string(first) +
                          "-" + std::to_string(first + 2) + ": pin, enable, level)",
-                     parametersFile(), 0, 0};
+                     parametersFile_, 0, 0};
     }
     const params::PortAssignment homeSwitch = *params::wiredInput(p, param::kHomeSwitchX + 3 * axis);
     const int pin = homeSwitch.pin;
@@ -101,13 +102,13 @@ std::optional<Alarm> Controller::homeAxis(int axis, double since) {
     moveBy(direction * distance, speed);
     machine_.setInput(pin, active);
     for (int cycle = 1; cycle < cycles; ++cycle) {
-        if (passedTimeLimit(since)) {
+        if (run_.passedTimeLimit(since)) {
             // param 106 = 1e9 asked for hours of approaches: the runaway guard holds here too
             return Alarm{AlarmCode::SimulatedTimeLimit,
-                         timeLimitText(std::string(1, name) + " homing", since) + " (the limit) after " +
+                         run_.timeLimitText(std::string(1, name) + " homing", since) + " (the limit) after " +
                              std::to_string(cycle) + " of " + std::to_string(cycles) +
                              " approaches: parameter 106 (homing cycle count) is 1 to 5 on the panel",
-                         parametersFile(), 0, 0};
+                         parametersFile_, 0, 0};
         }
         moveBy(-direction * kBackOff, slow);
         machine_.setInput(pin, 1 - active);

@@ -193,7 +193,7 @@ std::optional<macro::MachineAccess::HomingFailure> Controller::builtInHoming(int
     if (scan_.scanning()) {
         return HomingFailure{AlarmCode::NotHomed, "homing (M98 P501) cannot be scanned: start after it"};
     }
-    if (auto alarm = homeAxis(axis, timeLimitFrom_)) {
+    if (auto alarm = homing_.homeAxis(axis, timeLimitFrom_)) {
         return HomingFailure{alarm->code, alarm->message};
     }
     return std::nullopt;

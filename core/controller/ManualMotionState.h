@@ -5,8 +5,7 @@
 
 namespace m350::controller {
 
-// The operator's manual-motion settings and what is under way (ManualMotion.cpp,
-// HandwheelGuide.cpp), kept apart from the run's state.
+// ManualControl's settings and what is under way, kept apart from the run's state.
 struct ManualMotionState {
     JogMode mode = JogMode::Continuous;
     double step = 0.1;          // mm (deg) per STEP press

@@ -61,29 +61,29 @@ PanelStatus Controller::panelStatus() {
     // the offsets in force, applied to where the axes are at the display time
     out.work = out.machine - (machine_.position() - interp_.workPosition());
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
-        out.homed[static_cast<std::size_t>(axis)] = homed(axis);
+        out.homed[static_cast<std::size_t>(axis)] = homing_.homed(axis);
     }
     for (int axis = 3; axis < machine::kAxisCount; ++axis) {
-        out.axisShown[static_cast<std::size_t>(axis)] = homeSwitchWired(axis);
+        out.axisShown[static_cast<std::size_t>(axis)] = homing_.homeSwitchWired(axis);
     }
     out.workSystem = interp_.activeSlot();
     for (int slot = 0; slot < interp::WorkOffsets::kSlots; ++slot) {
         out.workOffsets[static_cast<std::size_t>(slot)] = offsets_.slot(slot);
     }
     out.feedOverride = feedOverride_;
-    out.spindleOverride = manual_.spindleOverride;
-    out.jogOverride = manual_.jogOverride;
-    out.jogMode = manual_.mode;
-    out.jogStep = manual_.step;
-    out.jogHighSpeed = manual_.highSpeed;
-    out.jogging = jogging();
-    out.guide = manual_.guide;
-    out.guideDirection = manual_.guide ? manual_.override.direction() : 0;
-    out.guideOverride = manual_.guide ? std::abs(manual_.override.value()) * 100.0 : 0.0;
+    out.spindleOverride = manual_.state().spindleOverride;
+    out.jogOverride = manual_.state().jogOverride;
+    out.jogMode = manual_.state().mode;
+    out.jogStep = manual_.state().step;
+    out.jogHighSpeed = manual_.state().highSpeed;
+    out.jogging = manual_.jogging();
+    out.guide = manual_.state().guide;
+    out.guideDirection = manual_.state().guide ? manual_.state().override.direction() : 0;
+    out.guideOverride = manual_.state().guide ? std::abs(manual_.state().override.value()) * 100.0 : 0.0;
     out.feed = interp_.state().feed;
     out.spindle = spindleDisplay();
     // SRO scales what the spindle turns at, up to its maximum (param 82)
-    out.spindleRpm = machine_.spindleTurning() ? std::min(machine_.spindleRpm() * manual_.spindleOverride / 100.0,
+    out.spindleRpm = machine_.spindleTurning() ? std::min(machine_.spindleRpm() * manual_.state().spindleOverride / 100.0,
                                                           machine_.limits().maxSpindleRpm)
                                                : 0.0;
     out.tool = spindleTool();

@@ -11,7 +11,7 @@ bool Controller::load(const gcode::SourceText& source, gcode::FileRole role) {
     // Each load replaces the program (a panel loads one file after another, MDI line after line);
     // the machine, the variables and the magazine carry on.
     executor_.reset();
-    paused_.reset();
+    breakRun_.forgetPause();
     hook_.reset();
     loadWatch_.monitor().restart();
     program_ = gcode::Program{};

@@ -1,8 +1,8 @@
 // The operator's run controls: 暂停 hold and resume, reset, 急停 emergency stop.
 #include "core/controller/Controller.h"
 
+#include "core/controller/ContinueRemainder.h"
 #include "core/params/ParameterNumbers.h"
-#include "core/machine/ArcGeometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,7 @@ void Controller::hold() {
     }
     remainder_ = interruptMotion(displayTime_, false);
     toolLife_.cutShortAt(machine_.time());
-    rememberPause(remainder_);
+    breakRun_.rememberPause(remainder_);
     const params::ParameterTable& p = config_.parameters;
     if (p.get(param::kStopSpindleOnPause) != 0.0 && machine_.spindleState() != machine::SpindleState::Stop) {
         spindleBeforeHold_ = std::make_pair(machine_.spindleState(), machine_.spindleRpm());
@@ -69,7 +69,7 @@ void Controller::resume() {
         spindleBeforeHold_.reset();
     }
     const double remainderFrom = machine_.time();
-    continueRemainder(remainder_);
+    continueRemainder(machine_, remainder_);
     const bool cutting = remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Feed ||
                          remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Arc;
     if (cutting && !(executor_ && executor_->changingTool())) {
@@ -80,39 +80,11 @@ void Controller::resume() {
     state_ = RunState::Running;
 }
 
-// The rest of what a hold cut short: the move to its end (an arc about the same center, from
-// where it stopped) or the dwell's remaining time.
-void Controller::continueRemainder(const machine::SimulatedMachine::Remainder& rest) {
-    using Kind = machine::SimulatedMachine::Remainder::Kind;
-    switch (rest.kind) {
-    case Kind::Rapid: machine_.rapid(rest.target); break;
-    case Kind::Feed: machine_.feed(rest.target, rest.feed); break;
-    case Kind::Dwell: machine_.dwell(rest.seconds); break;
-    case Kind::Arc: {
-        const machine::Arc& arc = *rest.arc;
-        machine::ArcSpec spec;
-        spec.start = machine_.position();
-        spec.end = rest.target;
-        spec.plane = arc.plane;
-        spec.clockwise = arc.sweep < 0;
-        spec.centerOffset = arc.center - spec.start.head<3>();
-        auto remaining = machine::makeArc(spec);
-        if (auto* done = std::get_if<machine::Arc>(&remaining)) {
-            machine_.arc(*done, rest.feed);
-        } else {
-            machine_.feed(rest.target, rest.feed);
-        }
-        break;
-    }
-    case Kind::None: break;
-    }
-}
-
 void Controller::reset() {
     machine::SimulatedMachine::Remainder rest = interruptMotion(displayTime_, true);
     toolLife_.cutShortAt(machine_.time());
     if (state_ == RunState::Running) {
-        rememberPause(rest); // a run stopped by RESET resumes as a paused one does
+        breakRun_.rememberPause(rest); // a run stopped by RESET resumes as a paused one does
     }
     if (std::isfinite(displayTime_) && machine_.time() < displayTime_) { // after run() the display is at infinity
         machine_.blockTime(displayTime_ - machine_.time());
@@ -145,18 +117,6 @@ machine::SpindleState Controller::spindleDisplay() const {
     const int cycle = interp_.state().group(9);
     bool turning = state == machine::SpindleState::Forward || state == machine::SpindleState::Reverse;
     return turning && (cycle == 84 || cycle == 74) ? machine::SpindleState::Tap : state;
-}
-
-bool Controller::spindleJog(bool on) {
-    if (state_ == RunState::Running || state_ == RunState::Hold) {
-        return false;
-    }
-    if (on) {
-        machine_.spindle(machine::SpindleState::Jog, config_.parameters.get(param::kDefaultSpindleSpeed));
-    } else if (machine_.spindleState() == machine::SpindleState::Jog) {
-        machine_.spindle(machine::SpindleState::Stop, 0.0);
-    }
-    return true;
 }
 
 void Controller::emergencyStop(const std::string& why) {

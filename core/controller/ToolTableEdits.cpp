@@ -60,7 +60,7 @@ bool Controller::touchOffTool(double workZ, std::string* why) {
     if (state_ == RunState::Running || state_ == RunState::Hold) {
         return refuse(why, kRunning);
     }
-    if (jogging()) {
+    if (manual_.jogging()) {
         return refuse(why, "touch off: a manual move is under way; wait for the axes to stop");
     }
     // the tool whose offset the display applies: #1300 on the M350, the spindle's on a FANUC

@@ -13,7 +13,7 @@ using namespace m350;
 using namespace m350::test;
 using controller::Controller;
 using RunState = Controller::RunState;
-using GuideReverse = Controller::GuideReverse;
+using GuideReverse = controller::GuideReverse;
 
 constexpr double kFrame = 0.05; // the panel's display step
 
@@ -22,7 +22,7 @@ std::unique_ptr<Controller> guided(std::initializer_list<std::string> mdi) {
     cfg.parameters.set(62, 500); // G01 acceleration: at 10 mm/s the ramps take 0.02 s
     auto c = std::make_unique<Controller>(std::move(cfg), controller::RunSettings{});
     EXPECT_TRUE(c->loadMdi(std::vector<std::string>(mdi)));
-    c->setHandwheelGuide(true);
+    c->manual().setHandwheelGuide(true);
     EXPECT_TRUE(c->start());
     return c;
 }
@@ -32,7 +32,7 @@ std::unique_ptr<Controller> guided(std::initializer_list<std::string> mdi) {
 // 96 %, two for more than 100 %.
 void turn(Controller& c, int detentsPerFrame, double seconds, int multiplier = 10) {
     for (double t = 0.0; t < seconds - 1e-9; t += kFrame) {
-        bool guiding = c.wheelTurn(0, multiplier, detentsPerFrame, kFrame);
+        bool guiding = c.manual().wheelTurn(0, multiplier, detentsPerFrame, kFrame);
         EXPECT_TRUE(guiding || c.runState() == RunState::Finished); // the end shown, the wheel has nothing to guide
         c.advance(kFrame);
     }
@@ -91,7 +91,7 @@ TEST(HandwheelGuide, RetraceRunsBackAlongThePathAcrossACornerAndForwardFinishes)
     ASSERT_GT(reached(1), 5.0); // well into the second move
     bool passedTheCorner = false;
     for (int frame = 0; frame < 80; ++frame) {
-        ASSERT_TRUE(c->wheelTurn(0, 10, -2, kFrame));
+        ASSERT_TRUE(c->manual().wheelTurn(0, 10, -2, kFrame));
         c->advance(kFrame);
         const machine::Axes p = at(*c);
         // on the path: along X at Y 0, or along Y at X 20
@@ -122,12 +122,12 @@ TEST(HandwheelGuide, RetraceGoesNoFurtherBackThanTheRunsStart) {
 
 TEST(HandwheelGuide, ReverseWithHoldDoesNotMoveBack) {
     auto c = guided({"G01 X100 F600", "M30"});
-    c->setGuideReverse(GuideReverse::Hold);
+    c->manual().setGuideReverse(GuideReverse::Hold);
     turn(*c, 1, 2.0);
     double previous = at(*c)(0);
     const double moving = previous;
     for (int frame = 0; frame < 40; ++frame) {
-        ASSERT_TRUE(c->wheelTurn(0, 10, -1, kFrame));
+        ASSERT_TRUE(c->manual().wheelTurn(0, 10, -1, kFrame));
         c->advance(kFrame);
         EXPECT_GE(at(*c)(0), previous);
         previous = at(*c)(0);
@@ -141,7 +141,7 @@ TEST(HandwheelGuide, TurningTheGuideOffResumesNormalSpeed) {
     auto c = guided({"G01 X20 F600", "G01 Y20", "M30"});
     turn(*c, 2, 3.5);
     turn(*c, -2, 2.0); // retraced part of the way
-    c->setHandwheelGuide(false);
+    c->manual().setHandwheelGuide(false);
     EXPECT_EQ(c->advance(0.5), RunState::Running);
     EXPECT_EQ(c->advance(10.0), RunState::Finished); // replayed at full speed, then the rest
     EXPECT_NEAR(at(*c)(0), 20.0, 1e-9);
@@ -176,7 +176,7 @@ TEST(HandwheelGuide, ResetDuringARetraceLeavesTheMachineWhereItIsShown) {
 
 TEST(HandwheelGuide, TheWheelDoesNotJogWhileItGuides) {
     auto c = guided({"G01 X10 F600", "M30"});
-    c->setJogMode(Controller::JogMode::Mpg);
+    c->manual().setJogMode(controller::JogMode::Mpg);
     turn(*c, 2, 1.0);
     EXPECT_NEAR(at(*c)(1), 0.0, 1e-12);
     EXPECT_GT(at(*c)(0), 0.0);
@@ -186,7 +186,7 @@ TEST(HandwheelGuide, RunWithoutAnOperatorIgnoresTheGuide) {
     auto cfg = m350Machine();
     auto c = std::make_unique<Controller>(std::move(cfg), controller::RunSettings{});
     ASSERT_TRUE(c->loadMdi({"G01 X10 F600", "M30"}));
-    c->setHandwheelGuide(true);
+    c->manual().setHandwheelGuide(true);
     controller::RunReport r = c->run();
     EXPECT_EQ(r.status, controller::RunStatus::Ok);
     EXPECT_NEAR(r.machine(0), 10.0, 1e-9);

@@ -50,7 +50,7 @@ TEST(HomeSwitchWorld, TheSwitchStaysWherePhysicallyItIsAfterJogsAndHoming) {
     ASSERT_TRUE(c.loadMdi({"G91 G1 X-30 F3000"})); // 30 mm closer before homing
     ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
     const double before = c.snapshot().simTime;
-    ASSERT_FALSE(c.home({0}));
+    ASSERT_FALSE(c.homing().home({0}));
     // param 122 = 0: the switch, 2 mm beyond where homing leaves X, is now at machine X -2
     EXPECT_NEAR(c.snapshot().machine(0), 0.0, 1e-9);
     ASSERT_TRUE(c.loadMdi(kMacroHoming));

@@ -32,10 +32,10 @@ config::MachineConfig oneSwitchMachine() {
 
 TEST(Homing, AxisRunsToItsSwitchBacksOffAndTakesTheHomePosition) {
     controller::Controller c(oneSwitchMachine(), unhomed());
-    EXPECT_TRUE(c.needsBootHomingPrompt());
+    EXPECT_TRUE(c.homing().needsBootHomingPrompt());
     EXPECT_DOUBLE_EQ(c.variable(1543).number, 1); // IN24 released
-    EXPECT_FALSE(c.home({2}).has_value());
-    EXPECT_TRUE(c.homed(2));
+    EXPECT_FALSE(c.homing().home({2}).has_value());
+    EXPECT_TRUE(c.homing().homed(2));
     EXPECT_DOUBLE_EQ(c.variable(1517).number, 1);
     EXPECT_DOUBLE_EQ(c.variable(882).number, -5);
     EXPECT_DOUBLE_EQ(c.variable(1543).number, 1); // released again after the back-off
@@ -46,20 +46,20 @@ TEST(Homing, AxisRunsToItsSwitchBacksOffAndTakesTheHomePosition) {
 
 TEST(Homing, AxisWithoutASwitchCannotHome) {
     controller::Controller c(oneSwitchMachine(), unhomed());
-    auto alarm = c.home({0});
+    auto alarm = c.homing().home({0});
     ASSERT_TRUE(alarm.has_value());
     EXPECT_EQ(alarm->code, AlarmCode::NotHomed);
     EXPECT_NE(alarm->message.find("params 545-547"), std::string::npos) << alarm->message;
-    EXPECT_FALSE(c.homed(0));
+    EXPECT_FALSE(c.homing().homed(0));
 }
 
 TEST(Homing, BundledMachineHomesXYZAndRunsAProgram) {
     controller::Controller c(bundledMachine(), unhomed());
-    ASSERT_FALSE(c.home(c.homeableAxes()).has_value());
+    ASSERT_FALSE(c.homing().home(c.homing().homeableAxes()).has_value());
     for (int axis = 0; axis < 3; ++axis) {
-        EXPECT_TRUE(c.homed(axis)) << axis;
+        EXPECT_TRUE(c.homing().homed(axis)) << axis;
     }
-    EXPECT_FALSE(c.needsBootHomingPrompt());
+    EXPECT_FALSE(c.homing().needsBootHomingPrompt());
     std::string path = writeTempFile(lines({"G53 X10", "M30"}));
     ASSERT_TRUE(c.loadFile(path));
     EXPECT_EQ(c.run().status, controller::RunStatus::Ok);

@@ -97,7 +97,7 @@ TEST_F(HookMachine, DualYGantryFndzeroLeavesFourAxesHomedWithAEqualToY) {
     controller::RunReport r = c.run();
     ASSERT_EQ(r.status, controller::RunStatus::Ok) << (r.alarm ? r.alarm->message : "");
     for (int axis = 0; axis < 4; ++axis) {
-        EXPECT_TRUE(c.homed(axis)) << axis;
+        EXPECT_TRUE(c.homing().homed(axis)) << axis;
     }
     EXPECT_DOUBLE_EQ(r.machine(1), 12.5);
     EXPECT_DOUBLE_EQ(r.machine(3), r.machine(1));
@@ -106,12 +106,12 @@ TEST_F(HookMachine, DualYGantryFndzeroLeavesFourAxesHomedWithAEqualToY) {
 
 TEST_F(HookMachine, WritingAMachinePositionUnhomesTheAxisWithoutMoving) {
     Controller c(machine(), {});
-    ASSERT_TRUE(c.homed(0));
+    ASSERT_TRUE(c.homing().homed(0));
     double before = c.snapshot().simTime;
     ASSERT_TRUE(c.loadMdi({"#880=7.5"}));
     controller::RunReport r = c.run();
     EXPECT_DOUBLE_EQ(r.machine(0), 7.5);
-    EXPECT_FALSE(c.homed(0));
+    EXPECT_FALSE(c.homing().homed(0));
     EXPECT_LT(r.simTime - before, 0.01);
 }
 
@@ -126,7 +126,7 @@ TEST_F(HookMachine, BuiltInHomingNeedsAnAxisAndGivesWayToALibraryO501) {
     ASSERT_TRUE(c.loadMdi({"M98 P501 X2"}));
     EXPECT_TRUE(c.diagnostics().empty()) << diagnosticsOf(c); // no "no O501" finding: it is built in
     EXPECT_EQ(c.run().status, controller::RunStatus::Ok);
-    EXPECT_TRUE(c.homed(2));
+    EXPECT_TRUE(c.homing().homed(2));
 
     // the user's own O501 wins
     std::string program = writeTempFile(lines({"M98 P501 X0", "M30", "O501", "#100=[#1+41]", "M99"}));
@@ -135,7 +135,7 @@ TEST_F(HookMachine, BuiltInHomingNeedsAnAxisAndGivesWayToALibraryO501) {
     EXPECT_TRUE(own.diagnostics().empty()) << diagnosticsOf(own);
     EXPECT_EQ(own.run().status, controller::RunStatus::Ok);
     EXPECT_DOUBLE_EQ(own.variable(100).number, 41);
-    EXPECT_FALSE(own.homed(0));
+    EXPECT_FALSE(own.homing().homed(0));
 }
 
 TEST_F(HookMachine, TNcGetsTheTargetToolInVariable1504) {

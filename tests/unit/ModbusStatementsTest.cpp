@@ -131,7 +131,7 @@ TEST(ModbusStatements, BreakRunRefusesToScanATransfer) {
     controller::Controller c(modbusMachine(), {});
     ASSERT_TRUE(c.loadFile(test::writeTempFile(lines({"MSETDATA[1, 8192, 5]", "G0 X1", "G0 X2", "M30"}))));
     std::string why;
-    EXPECT_FALSE(c.startAtLine(3, &why));
+    EXPECT_FALSE(c.breakRun().startAtLine(3, &why));
     EXPECT_NE(why.find("MSETDATA talks to Modbus slave 1"), std::string::npos) << why;
 }
 

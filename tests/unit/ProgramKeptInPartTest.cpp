@@ -247,9 +247,9 @@ TEST(ProgramKeptInPart, StartingAtALineIsTheSameAsWithTheProgramKeptWhole) {
         controller::Controller c(test::m350Machine(), settings);
         ASSERT_TRUE(c.loadFile(path));
         std::string why;
-        EXPECT_FALSE(c.startAtLine(40000, &why));
+        EXPECT_FALSE(c.breakRun().startAtLine(40000, &why));
         EXPECT_NE(why.find("its blocks are on lines 1-"), std::string::npos) << why;
-        ASSERT_TRUE(c.startAtLine(15000, &why)) << why; // in the fourth chunk
+        ASSERT_TRUE(c.breakRun().startAtLine(15000, &why)) << why; // in the fourth chunk
         EXPECT_EQ(c.advance(1e9), controller::Controller::RunState::Finished);
         reports.push_back(c.snapshot());
         std::remove(path.c_str());

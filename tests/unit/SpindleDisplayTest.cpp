@@ -45,14 +45,14 @@ TEST(SpindleDisplay, TapWhileATappingCycleTurnsTheSpindle) {
 
 TEST(SpindleDisplay, TheJogKeyTurnsTheSpindleOnlyWhileNoProgramRuns) {
     controller::Controller c(machine(), controller::RunSettings{});
-    EXPECT_TRUE(c.spindleJog(true));
+    EXPECT_TRUE(c.manual().spindleJog(true));
     EXPECT_EQ(c.spindleDisplay(), SpindleState::Jog);
-    EXPECT_TRUE(c.spindleJog(false));
+    EXPECT_TRUE(c.manual().spindleJog(false));
     EXPECT_EQ(c.spindleDisplay(), SpindleState::Stop);
     ASSERT_TRUE(c.loadMdi({"G04 P5000"}));
     ASSERT_TRUE(c.start());
     c.advance(1.0);
-    EXPECT_FALSE(c.spindleJog(true));
+    EXPECT_FALSE(c.manual().spindleJog(true));
     EXPECT_EQ(c.spindleDisplay(), SpindleState::Stop);
 }
 

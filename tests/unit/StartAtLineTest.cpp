@@ -65,7 +65,7 @@ TEST(StartAtLine, RebuildsTheModalStateAndApproachesZUpXYOverZDown) {
     Recorder rec;
     auto c = loaded(std::move(cfg), kProgram, &rec);
     std::string why;
-    ASSERT_TRUE(c->startAtLine(7, &why)) << why;
+    ASSERT_TRUE(c->breakRun().startAtLine(7, &why)) << why;
     EXPECT_EQ(c->runState(), RunState::Running);
     const std::string modal = c->modalLine();
     EXPECT_NE(modal.find("G91"), std::string::npos) << modal;
@@ -99,7 +99,7 @@ TEST(StartAtLine, WithoutParam90ZRisesOnlyToTheHigherOfTheTwo) {
     Recorder rec;
     auto c = loaded(machine(), kProgram, &rec);
     std::string why;
-    ASSERT_TRUE(c->startAtLine(7, &why)) << why;
+    ASSERT_TRUE(c->breakRun().startAtLine(7, &why)) << why;
     c->advance(100.0);
     auto moves = rec.moves();
     ASSERT_GE(moves.size(), 2u);
@@ -112,7 +112,7 @@ TEST(StartAtLine, ABlankLineStartsAtTheNextBlockAndAJumpIsFollowed) {
     Recorder rec;
     auto c = loaded(machine(), lines({"#1 = 2", "GOTO 10", "G0 X99", "N10 G0 X1", "", "G0 X2", "M30"}), &rec);
     std::string why;
-    ASSERT_TRUE(c->startAtLine(5, &why)) << why;
+    ASSERT_TRUE(c->breakRun().startAtLine(5, &why)) << why;
     c->advance(100.0);
     auto moves = rec.moves();
     ASSERT_EQ(moves.size(), 2u); // over to X1 (where line 4 left the program), then line 6
@@ -124,25 +124,25 @@ TEST(StartAtLine, Refusals) {
     const std::string program = lines({"G91", "GOTO 4", "G0 X99", "N4 G0 X1", "M98 P100", "M30", "O100", "G0 Y1", "M99"});
     auto c = loaded(machine(), program);
     std::string why;
-    EXPECT_FALSE(c->startAtLine(40, &why));
+    EXPECT_FALSE(c->breakRun().startAtLine(40, &why));
     EXPECT_NE(why.find("is not in"), std::string::npos) << why;
-    EXPECT_FALSE(c->startAtLine(0, &why));
-    EXPECT_FALSE(c->startAtLine(8, &why));
+    EXPECT_FALSE(c->breakRun().startAtLine(0, &why));
+    EXPECT_FALSE(c->breakRun().startAtLine(8, &why));
     EXPECT_NE(why.find("O100, a subprogram"), std::string::npos) << why;
-    EXPECT_FALSE(c->startAtLine(3, &why));
+    EXPECT_FALSE(c->breakRun().startAtLine(3, &why));
     EXPECT_NE(why.find("never reaches"), std::string::npos) << why;
     // a refusal changes nothing: G91 was scanned, but the modal state is as it was
     EXPECT_NE(c->modalLine().find("G90"), std::string::npos) << c->modalLine();
     EXPECT_EQ(c->runState(), RunState::Idle);
 
-    ASSERT_TRUE(c->startAtLine(4, &why)) << why;
-    EXPECT_FALSE(c->startAtLine(4, &why));
+    ASSERT_TRUE(c->breakRun().startAtLine(4, &why)) << why;
+    EXPECT_FALSE(c->breakRun().startAtLine(4, &why));
     EXPECT_NE(why.find("RESET first"), std::string::npos) << why;
 
     auto cfg = machine();
     cfg.parameters.set(param::kHomeBeforeProcessing, 1);
     auto unhomed = loaded(std::move(cfg), program, nullptr, false);
-    EXPECT_FALSE(unhomed->startAtLine(4, &why));
+    EXPECT_FALSE(unhomed->breakRun().startAtLine(4, &why));
     EXPECT_NE(why.find("parameter 220"), std::string::npos) << why;
 }
 
@@ -150,24 +150,24 @@ TEST(StartAtLine, RefusesAToolChangeBeforeTheLineOnAMachineWithAMagazine) {
     Recorder rec;
     auto c = loaded(bundledMachine(), lines({"T2", "G0 X10", "M30"}), &rec);
     std::string why;
-    EXPECT_FALSE(c->startAtLine(2, &why));
+    EXPECT_FALSE(c->breakRun().startAtLine(2, &why));
     EXPECT_NE(why.find("tool accounting cannot be scanned"), std::string::npos) << why;
     EXPECT_TRUE(rec.moves().empty()); // nothing moved
-    EXPECT_TRUE(c->startAtLine(1, &why)) << why; // the change itself may start
+    EXPECT_TRUE(c->breakRun().startAtLine(1, &why)) << why; // the change itself may start
 }
 
 TEST(StartAtLine, RefusesWhatAScanCannotFollow) {
     auto c = loaded(machine(), lines({"G31 X10 F100", "G0 X1", "M30"}));
     std::string why;
-    EXPECT_FALSE(c->startAtLine(2, &why));
+    EXPECT_FALSE(c->breakRun().startAtLine(2, &why));
     EXPECT_NE(why.find("G31"), std::string::npos) << why;
 
     auto alarmed = loaded(machine(), lines({"#3000 = 1(stop)", "G0 X1", "M30"}));
-    EXPECT_FALSE(alarmed->startAtLine(2, &why));
+    EXPECT_FALSE(alarmed->breakRun().startAtLine(2, &why));
     EXPECT_NE(why.find("raise an alarm"), std::string::npos) << why;
 
     auto compensating = loaded(machine(), lines({"G41 D1 G1 X10 F100", "X20", "G40 X30", "M30"}));
-    EXPECT_FALSE(compensating->startAtLine(2, &why));
+    EXPECT_FALSE(compensating->breakRun().startAtLine(2, &why));
     EXPECT_NE(why.find("G41/G42"), std::string::npos) << why;
 }
 
@@ -192,16 +192,16 @@ void pauseResetResume(double resumeMode, std::vector<machine::MachineEvent>& aft
     ASSERT_TRUE(c->start());
     c->advance(1.5); // halfway through the second pass
     c->hold();
-    auto point = c->pauseBreakPoint();
+    auto point = c->breakRun().pauseBreakPoint();
     ASSERT_TRUE(point);
     EXPECT_EQ(point->line, 4u);
     c->advance(1.0);
     c->reset();
-    ASSERT_TRUE(c->pauseBreakPoint()); // kept through RESET
+    ASSERT_TRUE(c->breakRun().pauseBreakPoint()); // kept through RESET
     std::size_t before = rec.events.size();
     std::string why;
-    ASSERT_TRUE(c->resumeAtPause(&why)) << why;
-    EXPECT_FALSE(c->pauseBreakPoint());
+    ASSERT_TRUE(c->breakRun().resumeAtPause(&why)) << why;
+    EXPECT_FALSE(c->breakRun().pauseBreakPoint());
     EXPECT_EQ(c->advance(100.0), RunState::Finished);
     after.assign(rec.events.begin() + static_cast<std::ptrdiff_t>(before), rec.events.end());
     end = c->snapshot();
@@ -236,7 +236,7 @@ TEST(ResumeAtPause, FromThePointWhereTheHoldStoppedWithParam93) {
 TEST(ResumeAtPause, NothingToResumeWithoutAPause) {
     auto c = loaded(machine(), kLoop);
     std::string why;
-    EXPECT_FALSE(c->resumeAtPause(&why));
+    EXPECT_FALSE(c->breakRun().resumeAtPause(&why));
     EXPECT_NE(why.find("no paused run"), std::string::npos) << why;
 }
 

@@ -74,9 +74,9 @@ TEST(TimeLimitPerRun, HomingCountsFromItsOwnStart) {
         ASSERT_EQ(c.run().status, RunStatus::Ok) << "run " << run;
     }
     ASSERT_GT(c.snapshot().simTime, 60.0);
-    const auto alarm = c.home(c.homeableAxes());
+    const auto alarm = c.homing().home(c.homing().homeableAxes());
     EXPECT_FALSE(alarm) << alarm->message;
-    EXPECT_TRUE(c.homed(0) && c.homed(1) && c.homed(2));
+    EXPECT_TRUE(c.homing().homed(0) && c.homing().homed(1) && c.homing().homed(2));
 }
 
 } // namespace

@@ -164,7 +164,7 @@ void SessionWorker::publish() {
     snapshot->programFile = programFile_;
     snapshot->lastError = lastError_;
     snapshot->machineName = machineName_;
-    snapshot->homingPrompt = controller_->needsBootHomingPrompt() && !busy(); // after sysstart.nc
+    snapshot->homingPrompt = controller_->homing().needsBootHomingPrompt() && !busy(); // after sysstart.nc
     snapshot->log = log_->entries();
     snapshot->workRecord = workRecord_;
     snapshot->breakPoints = breakPoints();
@@ -319,11 +319,11 @@ void SessionWorker::home(const QVector<int>& axes) {
     }
     std::vector<int> which(axes.begin(), axes.end());
     if (which.empty()) {
-        which = controller_->homeableAxes();
+        which = controller_->homing().homeableAxes();
     }
     lastError_.clear();
     log_->record(axes.isEmpty() ? "home_all" : "home_axis", axisNames(which));
-    if (auto alarm = controller_->home(which)) {
+    if (auto alarm = controller_->homing().home(which)) {
         lastError_ = QString::fromStdString(alarm->message);
     }
     publish();

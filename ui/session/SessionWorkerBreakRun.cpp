@@ -30,7 +30,7 @@ void SessionWorker::startAtLine(int line) {
         return;
     }
     std::string why;
-    startedAt("start_line", controller_->startAtLine(static_cast<std::uint32_t>(line), &why), why);
+    startedAt("start_line", controller_->breakRun().startAtLine(static_cast<std::uint32_t>(line), &why), why);
 }
 
 void SessionWorker::resumeAtPause() {
@@ -40,7 +40,7 @@ void SessionWorker::resumeAtPause() {
         return;
     }
     std::string why;
-    startedAt("break_run", controller_->resumeAtPause(&why), why);
+    startedAt("break_run", controller_->breakRun().resumeAtPause(&why), why);
 }
 
 void SessionWorker::powerResume() {
@@ -62,7 +62,7 @@ void SessionWorker::powerResume() {
         return;
     }
     std::string why;
-    startedAt("break_run", controller_->startAtLine(static_cast<std::uint32_t>(kept.keptLine), &why), why);
+    startedAt("break_run", controller_->breakRun().startAtLine(static_cast<std::uint32_t>(kept.keptLine), &why), why);
 }
 
 void SessionWorker::startedAt(const char* event, bool started, const std::string& why) {
@@ -82,7 +82,7 @@ void SessionWorker::startedAt(const char* event, bool started, const std::string
 // After a pause or a reset mid-run: the break point goes to the machine folder, so a restart
 // can resume there.
 void SessionWorker::keepBreakPoint() {
-    auto point = controller_->pauseBreakPoint();
+    auto point = controller_->breakRun().pauseBreakPoint();
     if (!point) {
         return;
     }
@@ -96,7 +96,7 @@ void SessionWorker::keepBreakPoint() {
 
 BreakPoints SessionWorker::breakPoints() const {
     BreakPoints out;
-    if (auto point = controller_->pauseBreakPoint()) {
+    if (auto point = controller_->breakRun().pauseBreakPoint()) {
         out.pauseFile = QString::fromStdString(point->file);
         out.pauseLine = static_cast<int>(point->line);
     }

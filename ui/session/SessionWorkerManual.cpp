@@ -12,55 +12,55 @@ using controller::Controller;
 
 void SessionWorker::jogPress(int axis, int direction) {
     lastError_.clear();
-    controller_->jogPress(axis, direction);
+    controller_->manual().jogPress(axis, direction);
     publish();
 }
 
 void SessionWorker::jogRelease(int axis) {
     lastError_.clear();
-    controller_->jogRelease(axis);
+    controller_->manual().jogRelease(axis);
     publish();
 }
 
 void SessionWorker::cycleJogMode() {
     lastError_.clear();
-    using Mode = Controller::JogMode;
-    switch (controller_->jogMode()) {
-    case Mode::Continuous: controller_->setJogMode(Mode::Step); break;
-    case Mode::Step: controller_->setJogMode(Mode::Mpg); break;
-    case Mode::Mpg: controller_->setJogMode(Mode::Continuous); break;
+    using Mode = controller::JogMode;
+    switch (controller_->manual().jogMode()) {
+    case Mode::Continuous: controller_->manual().setJogMode(Mode::Step); break;
+    case Mode::Step: controller_->manual().setJogMode(Mode::Mpg); break;
+    case Mode::Mpg: controller_->manual().setJogMode(Mode::Continuous); break;
     }
     publish();
 }
 
 void SessionWorker::setJogStep(double distance) {
     lastError_.clear();
-    controller_->setJogStep(distance);
+    controller_->manual().setJogStep(distance);
     publish();
 }
 
 void SessionWorker::toggleJogHighSpeed() {
     lastError_.clear();
     jogHigh_ = !jogHigh_;
-    controller_->setJogHighSpeed(jogHigh_);
+    controller_->manual().setJogHighSpeed(jogHigh_);
     publish();
 }
 
 void SessionWorker::wheel(int axis, int multiplier, int detents, double seconds) {
     lastError_.clear();
-    controller_->wheelTurn(axis, multiplier, detents, seconds);
+    controller_->manual().wheelTurn(axis, multiplier, detents, seconds);
     publish();
 }
 
 void SessionWorker::toggleHandwheelGuide() {
     lastError_.clear();
-    controller_->setHandwheelGuide(!controller_->handwheelGuide());
+    controller_->manual().setHandwheelGuide(!controller_->manual().handwheelGuide());
     publish();
 }
 
 void SessionWorker::setGuideRetrace(bool retrace) {
     lastError_.clear();
-    controller_->setGuideReverse(retrace ? Controller::GuideReverse::Retrace : Controller::GuideReverse::Hold);
+    controller_->manual().setGuideReverse(retrace ? controller::GuideReverse::Retrace : controller::GuideReverse::Hold);
     publish();
 }
 
@@ -73,7 +73,7 @@ void SessionWorker::feedOverrideKey(int step) {
 
 void SessionWorker::spindleOverrideKey(int step) {
     lastError_.clear();
-    spindleOverride_ = controller_->setSpindleOverride(step == 0 ? 100.0 : spindleOverride_ + step);
+    spindleOverride_ = controller_->manual().setSpindleOverride(step == 0 ? 100.0 : spindleOverride_ + step);
     publish();
 }
 
@@ -93,7 +93,7 @@ void SessionWorker::spindleKey(int code) {
 
 void SessionWorker::setOutput(int port, int level) {
     lastError_.clear();
-    if (!controller_->setOutputByOperator(port, level)) {
+    if (!controller_->manual().setOutputByOperator(port, level)) {
         refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
         return;
     }

@@ -1,10 +1,15 @@
 // 断点加工 Break Run: the loaded program starts at a line of its main file, or again at the block a
 // hold stopped, with the machine's state rebuilt by scanning the blocks before it (ScanMachine).
-#include "core/controller/Controller.h"
+#include "core/controller/BreakRun.h"
 
+#include "core/controller/ContinueRemainder.h"
+#include "core/controller/Homing.h"
+#include "core/controller/ManualControl.h"
+#include "core/macro/Executor.h"
 #include "core/params/ParameterNumbers.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 namespace m350::controller {
@@ -22,15 +27,39 @@ bool refuse(std::string* why, std::string text) {
     return false;
 }
 
+// What the scan rebuilt where the run starts, read as the scan ends.
+struct Scanned {
+    machine::Axes programAt;
+    machine::SpindleState spindle;
+    double rpm;
+    bool coolant;
+    std::array<std::optional<int>, machine::kOutputCount> outputs;
+};
+
+Scanned endScan(machine::ScanMachine& scan) {
+    Scanned scanned{scan.position(), scan.spindleState(), scan.spindleRpm(), scan.coolantOn(), {}};
+    for (int port = 1; port <= machine::kOutputCount; ++port) {
+        scanned.outputs[static_cast<std::size_t>(port - 1)] = scan.scannedOutput(port);
+    }
+    scan.endScan();
+    return scanned;
+}
+
 } // namespace
 
-std::string Controller::lineText(std::uint32_t block) const {
+BreakRun::BreakRun(const gcode::Program& program, machine::SimulatedMachine& machine, machine::ScanMachine& scan,
+                   interp::ModalInterpreter& interp, const params::ParameterTable& parameters,
+                   const ManualControl& manual, const Homing& homing, Starter& starter)
+    : program_(program), machine_(machine), scan_(scan), interp_(interp), parameters_(parameters), manual_(manual),
+      homing_(homing), starter_(starter) {}
+
+std::string BreakRun::lineText(std::uint32_t block) const {
     const gcode::SourceLocation& where = program_.blocks[block].location;
     return program_.fileName(where) + ":" + std::to_string(where.line);
 }
 
-bool Controller::startAtLine(std::uint32_t line, std::string* why) {
-    auto unit = executor_ && !mdi_ ? program_.mainUnit() : std::nullopt;
+bool BreakRun::startAtLine(std::uint32_t line, std::string* why) {
+    auto unit = starter_.programExecutor() ? program_.mainUnit() : std::nullopt;
     if (!unit) {
         return refuse(why, "no program file is loaded");
     }
@@ -72,16 +101,16 @@ bool Controller::startAtLine(std::uint32_t line, std::string* why) {
     return startAt(*found, 0, false, why);
 }
 
-bool Controller::resumeAtPause(std::string* why) {
+bool BreakRun::resumeAtPause(std::string* why) {
     if (!paused_) {
         return refuse(why, "no paused run to resume (PAUSE, then RESET)");
     }
     const PausePoint pause = *paused_;
-    const bool fromStop = config_.parameters.get(param::kPauseResumeMode) != 0.0 && pause.mainMove;
+    const bool fromStop = parameters_.get(param::kPauseResumeMode) != 0.0 && pause.mainMove;
     return startAt(pause.block, pause.pass, fromStop, why);
 }
 
-std::optional<Controller::BreakPoint> Controller::pauseBreakPoint() const {
+std::optional<BreakRun::BreakPoint> BreakRun::pauseBreakPoint() const {
     if (!paused_) {
         return std::nullopt;
     }
@@ -89,17 +118,18 @@ std::optional<Controller::BreakPoint> Controller::pauseBreakPoint() const {
     return BreakPoint{program_.files[where.file].path, where.line};
 }
 
-void Controller::rememberPause(const machine::SimulatedMachine::Remainder& rest) {
-    if (!executor_ || mdi_ || !executor_->mainBlock()) {
+void BreakRun::rememberPause(const machine::SimulatedMachine::Remainder& rest) {
+    const macro::Executor* executor = starter_.programExecutor();
+    if (!executor || !executor->mainBlock()) {
         return;
     }
     using Kind = machine::SimulatedMachine::Remainder::Kind;
     PausePoint pause;
-    pause.block = *executor_->mainBlock();
-    pause.pass = executor_->mainBlocksStarted();
+    pause.block = *executor->mainBlock();
+    pause.pass = executor->mainBlocksStarted();
     pause.stoppedAt = machine_.position();
     pause.rest = rest;
-    pause.mainMove = executor_->callDepth() == 1 &&
+    pause.mainMove = executor->callDepth() == 1 &&
                      (rest.kind == Kind::Rapid || rest.kind == Kind::Feed || rest.kind == Kind::Arc);
     pause.runFrom = runStartedFrom_;
     paused_ = pause;
@@ -107,100 +137,74 @@ void Controller::rememberPause(const machine::SimulatedMachine::Remainder& rest)
 
 // Starts at `block` of the main program (on its `pass`-th start; 0: the first time it comes).
 // With `fromStopPoint` the block is scanned too and the machine finishes the move the hold cut.
-bool Controller::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopPoint, std::string* why) {
-    if (state_ == RunState::Running || state_ == RunState::Hold) {
+bool BreakRun::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopPoint, std::string* why) {
+    if (const RunState state = starter_.runState(); state == RunState::Running || state == RunState::Hold) {
         return refuse(why, "the program is running: RESET first");
     }
-    if (jogging()) {
+    if (manual_.jogging()) {
         return refuse(why, "a manual move is under way");
     }
-    if (config_.parameters.get(param::kHomeBeforeProcessing) != 0.0 && !(homed(0) && homed(1) && homed(2))) {
+    if (parameters_.get(param::kHomeBeforeProcessing) != 0.0 && !homing_.xyzHomed()) {
         return refuse(why, "机械未归零不能自动加工! (home X, Y and Z first: parameter 220)");
     }
     // what a refusal puts back (variables stay as the scanned blocks set them)
     const interp::ModalState modal = interp_.state();
-    const interp::WorkOffsets offsets = offsets_;
-    const tools::ToolTable tools = tools_.table();
-    const params::ParameterTable parameters = config_.parameters;
+    const Starter::Saved saved = starter_.save();
 
-    alarm_.reset();
-    panel_.clearDialog();
-    panel_.clearSensorWait();
-    programStop_.clear();
-    devices_.closeOutputDevice(); // the scan opens it again where the program does (POPEN)
-    executor_->start(*program_.mainUnit());
+    starter_.clearForStart();
+    macro::Executor& executor = *starter_.programExecutor();
+    executor.start(*program_.mainUnit());
     // a new start counts from where the machine stands; a resume from where the paused run began
     const machine::Axes from = pass == 0 || !paused_ ? machine_.position() : paused_->runFrom;
-    std::optional<std::string> problem = scanTo(block, pass, fromStopPoint, from);
+    std::optional<std::string> problem = scanTo(executor, block, pass, fromStopPoint, from);
     if (!problem && interp_.state().group(7) != 40) {
         problem = "cutter compensation (G41/G42) is on at " + lineText(block) + ": start before the G41 or after the G40";
     }
     if (problem) {
         scan_.endScan();
         interp_.state() = modal;
-        offsets_ = offsets;
-        tools_.replace(tools);
-        config_.parameters = parameters;
-        panel_.clearDialog();
-        syncToolLength();
-        state_ = RunState::Idle;
+        starter_.restore(saved);
         return refuse(why, *problem);
     }
-    const machine::Axes programAt = scan_.position();
-    const machine::SpindleState spindle = scan_.spindleState();
-    const double rpm = scan_.spindleRpm();
-    const bool coolant = scan_.coolantOn();
-    std::array<std::optional<int>, machine::kOutputCount> outputs;
-    for (int port = 1; port <= machine::kOutputCount; ++port) {
-        outputs[static_cast<std::size_t>(port - 1)] = scan_.scannedOutput(port);
-    }
-    scan_.endScan();
-    syncToolLength();
-
-    displayTime_ = std::max(displayTime_, machine_.time());
-    machine_.blockTime(displayTime_ - machine_.time());
-    runStartedAt_ = displayTime_;
-    timeLimitFrom_ = runStartedAt_;
+    const Scanned scanned = endScan(scan_);
+    starter_.startClock(lineText(block));
     runStartedFrom_ = from;
-    if (trace_) {
-        trace_->runState(machine_.time(), "start at " + lineText(block));
-    }
     for (int port = 1; port <= machine::kOutputCount; ++port) {
-        const auto& level = outputs[static_cast<std::size_t>(port - 1)];
+        const auto& level = scanned.outputs[static_cast<std::size_t>(port - 1)];
         if (level && *level != machine_.output(port)) {
             machine_.setOutput(port, *level);
         }
     }
-    if (coolant != machine_.coolantOn()) {
-        machine_.coolant(coolant);
+    if (scanned.coolant != machine_.coolantOn()) {
+        machine_.coolant(scanned.coolant);
     }
     const std::optional<PausePoint> pause = paused_;
-    approach(fromStopPoint ? pause->stoppedAt : programAt, spindle, rpm);
+    approach(fromStopPoint ? pause->stoppedAt : scanned.programAt, scanned.spindle, scanned.rpm);
     if (fromStopPoint) {
-        continueRemainder(pause->rest);
+        continueRemainder(machine_, pause->rest);
     }
     paused_.reset();
-    state_ = executor_->state() == macro::Executor::State::Running ? RunState::Running : RunState::Finished;
+    starter_.setRunState(executor.state() == macro::Executor::State::Running ? RunState::Running : RunState::Finished);
     return true;
 }
 
 // Runs the main program's blocks as a scan until `block` is next (with `through`: until the main
 // program is next after it). The scan stays on, so the caller can read what it rebuilt.
-std::optional<std::string> Controller::scanTo(std::uint32_t block, std::uint64_t pass, bool through,
-                                              const machine::Axes& from) {
+std::optional<std::string> BreakRun::scanTo(macro::Executor& executor, std::uint32_t block, std::uint64_t pass,
+                                            bool through, const machine::Axes& from) {
     scan_.beginScan(from);
     bool reached = false;
     for (std::uint64_t budget = kScanBlockLimit;; --budget) {
-        if (executor_->state() == macro::Executor::State::Alarmed) {
-            const Alarm& alarm = *executor_->alarm();
+        if (executor.state() == macro::Executor::State::Alarmed) {
+            const Alarm& alarm = *executor.alarm();
             return "the blocks before " + lineText(block) + " raise an alarm at " + alarm.file + ":" +
                    std::to_string(alarm.line) + ": " + alarm.message;
         }
-        if (executor_->state() != macro::Executor::State::Running) {
+        if (executor.state() != macro::Executor::State::Running) {
             return "the program never reaches " + lineText(block) + " (it ends, or jumps over it, first)";
         }
-        auto next = executor_->nextMainBlock();
-        bool at = next && *next == block && (pass == 0 || executor_->mainBlocksStarted() + 1 == pass);
+        auto next = executor.nextMainBlock();
+        bool at = next && *next == block && (pass == 0 || executor.mainBlocksStarted() + 1 == pass);
         if (reached ? next.has_value() : at) {
             if (reached || !through) {
                 return std::nullopt;
@@ -208,50 +212,34 @@ std::optional<std::string> Controller::scanTo(std::uint32_t block, std::uint64_t
             reached = true;
         }
         if (budget == 0) {
-            auto where = executor_->location();
+            auto where = executor.location();
             return "the blocks before " + lineText(block) + " do not end in a scan (a wait for an input at " +
                    (where ? program_.fileName(*where) + ":" + std::to_string(where->line) : std::string("?")) + "?)";
         }
-        executor_->step();
+        executor.step();
         (void)interp_.takeStop(); // M00 and M01 before the line do not stop a scan
         if (scan_.refusal()) {
-            return *scan_.refusal() + " at " + lineText(*executor_->mainBlock()) + ", before the start line: a scan cannot";
+            return *scan_.refusal() + " at " + lineText(*executor.mainBlock()) + ", before the start line: a scan cannot";
         }
-        if (panel_.dialogPending()) {
-            return lineText(*executor_->mainBlock()) + " asks the operator (#1505) before the start line";
+        if (starter_.dialogPending()) {
+            return lineText(*executor.mainBlock()) + " asks the operator (#1505) before the start line";
         }
-        if (inToolChange()) {
-            return lineText(*executor_->mainBlock()) +
+        if (starter_.inToolChange()) {
+            return lineText(*executor.mainBlock()) +
                    " changes the tool: the magazine's tool accounting cannot be scanned (change the tool, then start "
                    "after that line)";
         }
     }
 }
 
-// Whether the scan is inside the T-code program on a machine whose magazine is a device.
-bool Controller::inToolChange() const {
-    if (!magazine_.device() || dialect().tCodeProgram < 0) {
-        return false;
-    }
-    auto unit = program_.findUnit(dialect().tCodeProgram);
-    auto where = executor_->location();
-    if (!unit || !where || program_.units[*unit].begin >= program_.units[*unit].end) {
-        return false;
-    }
-    const gcode::ProgramUnit& u = program_.units[*unit];
-    const gcode::SourceLocation& first = program_.blocks[u.begin].location;
-    const gcode::SourceLocation& last = program_.blocks[u.end - 1].location;
-    return where->file == first.file && where->line >= first.line && where->line <= last.line;
-}
-
 // From where the machine stands to `target`: Z up to the higher of the two (and to param 69's safe
 // height when param 90 asks for it), the spindle as the program has it, XY (A, B) over at rapid,
 // then Z down at the program's feed.
-void Controller::approach(const machine::Axes& target, machine::SpindleState spindle, double rpm) {
+void BreakRun::approach(const machine::Axes& target, machine::SpindleState spindle, double rpm) {
     const machine::Axes from = machine_.position();
     double safe = std::max(from(2), target(2));
-    if (config_.parameters.get(param::kLiftBeforeStart) != 0.0) {
-        safe = std::max(safe, config_.parameters.get(param::kSafeZ) + interp_.workOffset()(2));
+    if (parameters_.get(param::kLiftBeforeStart) != 0.0) {
+        safe = std::max(safe, parameters_.get(param::kSafeZ) + interp_.workOffset()(2));
     }
     if (from(2) < safe) {
         machine::Axes up = from;
@@ -271,7 +259,7 @@ void Controller::approach(const machine::Axes& target, machine::SpindleState spi
         if (interp_.state().group(5) == 95) {
             feed *= interp_.state().spindleSpeed;
         }
-        machine_.feed(target, feed > 0.0 ? feed : config_.parameters.get(param::kDefaultFeed));
+        machine_.feed(target, feed > 0.0 ? feed : parameters_.get(param::kDefaultFeed));
     }
 }
 
