@@ -25,7 +25,9 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
       interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters),
       magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}),
       devices_({config_.parameters, scan_, trace_, [this] { return machine_.time(); }, [this] { return source(); }},
-               config_.modbus, settings_.externalOutputLimit) {
+               config_.modbus, settings_.externalOutputLimit),
+      toolLife_(config_.toolLife, state_, executor_, *config_.dialect, scan_), breakage_(machine_, magazine_),
+      toolEdits_({tools_, savedToolMark_, state_, [this] { return jogging(); }, config_, interp_, machine_, magazine_}) {
     if (settings_.trace) {
         trace_ = std::make_unique<TraceWriter>(*settings_.trace, settings_.traceLimit);
     }
@@ -40,14 +42,13 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     for (const auto& [number, position] : config_.referencePoints) {
         interp_.setReferencePoint(number, Eigen::Map<const machine::Axes>(position.data()));
     }
-    toolLife_.setData(config_.toolLife);
-    if (toolLife_.enabled()) {
+    if (toolLife_.manager().enabled()) {
         machine_.setObserver(this); // cutting time counts from the machine's feed events
     }
     applyParameterOverrides();
     setUpBreakageWatch();
     applySettings();
-    loadWatch_.startAt(machine_.time());
+    breakage_.startAt(machine_.time());
     savedToolMark_ = tools_.mark();
 }
 
@@ -56,7 +57,7 @@ Controller::~Controller() = default;
 config::MachineConfig Controller::config() const {
     config::MachineConfig out = config_;
     out.toolTable = tools_.table();
-    out.toolLife = toolLife_.data(); // a 仿真 run selects the sister tools the machine would
+    out.toolLife = toolLife_.manager().data(); // a 仿真 run selects the sister tools the machine would
     return out;
 }
 
@@ -179,14 +180,45 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
     if (magazine_.device()) {
         feedMagazine(event);
     }
-    countCuttingTime(event);
-    watchSpindleLoad(event);
+    toolLife_.countCuttingTime(event);
+    // nothing to sample, nothing that breaks: the common case, every move of a program
+    if (breakage_.active()) {
+        watchSpindleLoad(event);
+    }
 }
 
 // Nothing listens to a straight move but a linear rack, which it passes wide of: no trace, no
 // observer, no cutting time counted, no spindle load or breakage to follow. Most moves of a program.
 bool Controller::ignoresMove(const machine::Axes& from, const machine::Axes& to) const {
-    return !trace_ && !settings_.observer && !toolLife_.inUse() && !watchesSpindleLoad() && magazine_.ignores(from, to);
+    return !trace_ && !settings_.observer && !toolLife_.manager().inUse() && !breakage_.active() && magazine_.ignores(from, to);
+}
+
+bool Controller::manageTools(macro::EvaluatedBlock& block) {
+    const bool took = toolLife_.applyBlock(block);
+    if (toolLife_.manager().enabled()) {
+        machine_.setObserver(this); // groups entered by G10 L3: cutting time counts from now on
+    }
+    return took;
+}
+
+// Tool breakage in the simulated world and the spindle load monitor (the FANUC article's second
+// method): the load is sampled as virtual time passes and an anomaly stops the run like any alarm.
+void Controller::setUpBreakageWatch() {
+    if (config_.spindleLoad) {
+        config_.spindleLoad->lambda = params::fanucParameter(config_.fanucParameters, params::kLoadMeterFullScale);
+    }
+    breakage_.setUp(config_, settings_);
+    if (breakage_.active()) {
+        machine_.setObserver(this); // the load follows every move; a break changes the tool's length
+    }
+}
+
+void Controller::watchSpindleLoad(const machine::MachineEvent& event) {
+    auto anomaly = breakage_.sample(event);
+    if (anomaly && state_ == RunState::Running && executor_) {
+        interruptMotion(anomaly->time, false); // the axes brake from where they were then
+        throw macro::MacroError{AlarmCode::SpindleLoad, anomaly->message, 0};
+    }
 }
 
 // The magazine sees every event, also the safe state an alarm drives the outputs to (the drawbar
@@ -276,7 +308,7 @@ bool Controller::start() {
         return false;
     }
     auto unit = program_.mainUnit();
-    toolLife_.startRun();
+    toolLife_.manager().startRun();
     displayTime_ = machine_.time();
     runStartedAt_ = displayTime_;
     timeLimitFrom_ = runStartedAt_;
@@ -381,7 +413,7 @@ void Controller::raiseAlarm(const Alarm& alarm) {
     alarm_ = alarm;
     pendingDialog_.reset();
     if (executor_ && executor_->changingTool()) {
-        toolLife_.revertChange(); // the change never completed: its tool is not in use
+        toolLife_.manager().revertChange(); // the change never completed: its tool is not in use
     }
     state_ = RunState::Alarm;
     enterSafeState();
@@ -391,29 +423,6 @@ void Controller::raiseAlarm(const Alarm& alarm) {
     if (alarm.code != AlarmCode::EmergencyStop) {
         runEventHook(config::Hook::Error); // its own alarm is only a message: the first one stands
     }
-}
-
-// The tool in the spindle decides where the setter trips: the simulated world's tool length (as
-// it is now: a broken tool is shorter) and radius.
-void Controller::syncToolLength() {
-    int tool = spindleTool();
-    machine_.setToolLength(world_.length(tool, machine_.time()));
-    machine_.setToolRadius(world_.diameter(tool).value_or(0.0) / 2.0);
-}
-
-int Controller::spindleTool() const {
-    // what the controller believes: #1300 on the M350, the tool M85 stored on a FANUC
-    const int believed = config_.dialect->id == gcode::DialectId::M350
-                             ? saturatingInt(config_.parameters.get(param::kCurrentTool))
-                             : fanucSpindleTool_;
-    const devices::Magazine* magazine = magazine_.device();
-    if (!magazine) {
-        return believed;
-    }
-    // what the spindle really holds; a virtual tool (above the magazine) was put in by hand,
-    // which the magazine does not see
-    const int held = magazine->spindleTool();
-    return held == 0 && believed > magazine->pocketCount() ? believed : held;
 }
 
 void Controller::fill(RunReport& out) const {

@@ -11,9 +11,12 @@
 #include "core/controller/PanelStatus.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
+#include "core/controller/RunState.h"
 #include "core/controller/SensorWatch.h"
-#include "core/controller/SpindleLoadWatch.h"
 #include "core/controller/MagazineDriver.h"
+#include "core/controller/ToolBreakage.h"
+#include "core/controller/ToolLifeCounter.h"
+#include "core/controller/ToolTableEdits.h"
 #include "core/controller/TraceWriter.h"
 #include "core/gcode/Program.h"
 #include "core/interp/ModalInterpreter.h"
@@ -24,7 +27,6 @@
 #include "core/macro/MachineAccess.h"
 #include "core/macro/VariableStore.h"
 #include "core/tools/ToolData.h"
-#include "core/tools/ToolLifeManager.h"
 
 #include <array>
 #include <map>
@@ -87,7 +89,7 @@ public:
     // program where it is (param 91: lift Z by param 70); resume() carries on from there; reset()
     // stops at once and rewinds; emergencyStop() (急停) stops at once with an alarm. Reset and E-stop
     // switch every output to its safe state.
-    enum class RunState { Idle, Running, Hold, Finished, Alarm, EStop };
+    using RunState = controller::RunState;
     bool start();
     RunState advance(double seconds);
     void hold();
@@ -249,40 +251,19 @@ public:
     std::vector<int> homeableAxes() const;
     static constexpr const char* kBootHomingPrompt = "是否进行开机寻零操作?";
 
-    // The tool table (ToolTableEdits.cpp; one store, see tools::ToolData): on the M350 a tool's Z is
-    // its parameter 930-945 / 973-992, on a FANUC offset n is tool n's row. Edits are refused while
-    // a program runs or holds; `why` says why. A FANUC's active G43 length is not re-read (the next
-    // G43 or H does), as in LinuxCNC.
-    tools::ToolTable toolTable() const { return tools_.table(); }
-    bool putTool(const tools::ToolEntry& entry, std::string* why = nullptr);
-    bool removeTool(int tool, std::string* why = nullptr);
-    bool replaceToolTable(const tools::ToolTable& table, std::string* why = nullptr);
-    // Touch off (LinuxCNC's "Touch Off" to the tool table): with tool n in the spindle and its tip on
-    // a gauge or a cut surface whose work Z is `workZ` (in the program's unit), the tool's Z changes
-    // so that the display reads `workZ` there: on the M350 its parameter 930+ (applied at once), on
-    // a FANUC its row (G10 L10 P n Z`workZ`) followed by G43 H n. Refused with no tool, a tool the
-    // M350 has no Z parameter for, while a program runs or holds or a manual move is under way.
-    bool touchOffTool(double workZ, std::string* why = nullptr);
+    // The tool table as the panel edits it (ToolTableEdits.h): rows, an import, touch off.
+    ToolTableEdits& toolTableEdits() { return toolEdits_; }
+    const ToolTableEdits& toolTableEdits() const { return toolEdits_; }
     // Writes the table to the machine folder's tool.tbl atomically (and the M350's Z parameters
     // params.toml already lists, so both files agree; tool.tbl is the one read). nullopt on success.
     std::optional<std::string> saveToolTable(const files::AtomicWriteHooks& hooks = {});
-    // Whether the tool data changed since the start or the last save (by an edit, G10, a macro
-    // writing #1430 ...): what a panel saves after.
-    bool toolTableChanged() const { return !(tools_.mark() == savedToolMark_); }
-    // Changes when the tool data does (for a view that redraws only then).
-    tools::ToolData::Mark toolTableMark() const { return tools_.mark(); }
 
     // Reads any variable as a macro would, for --print and the panel.
     macro::Value variable(int number);
     const gcode::Dialect& dialect() const { return *config_.dialect; }
-    // What the external output device (POPEN, DPRNT, BPRNT, PCLOS) received since the controller
-    // started (bounded: RunSettings::externalOutputLimit); whether a program ever opened it.
-    std::string externalOutput() const { return devices_.received(); }
-    bool externalOutputOpened() const { return devices_.outputOpened(); }
-    // Whether externalOutput() leaves records out (it reached its limit), and every record sent since
-    // the last call whatever that limit did (a bounded wait: ExternalDevices::NewRecords).
-    bool externalOutputCapped() const { return devices_.outputCapped(); }
-    ExternalDevices::NewRecords takeNewExternalRecords() { return devices_.takeNewRecords(); }
+    // The external output device (POPEN, DPRNT, BPRNT, PCLOS) and the Modbus slaves (ExternalDevices.h).
+    ExternalDevices& externalDevices() { return devices_; }
+    const ExternalDevices& externalDevices() const { return devices_; }
     // Writes the end of a trace that reached its limit (RunSettings::traceLimit): call once the run
     // is over, before the trace file is closed.
     void finishTrace() {
@@ -291,19 +272,12 @@ public:
     // The machine's configuration as it stands: parameters, offsets of the folder, the tool table now.
     config::MachineConfig config() const;
 
-    // FANUC tool life management (ToolLife.cpp; core/tools/ToolLifeManager.h): groups from the
-    // machine folder's toollife.txt or G10 L3; T<ignore+n> selects group n's tool, M06 (on the M350:
-    // the T word) starts counting, feed moves and arcs of a run count for a minutes group. The
-    // caller writes the data back (tools::saveToolLife) when changed().
-    tools::ToolLifeManager& toolLife() { return toolLife_; }
-    const tools::ToolLifeManager& toolLife() const { return toolLife_; }
-    // The operator's tool life reset of a group (its tools' used life to 0). Refused (false, with
-    // the reason) while a program runs or holds, or for a group that is not entered.
-    bool resetToolLife(int group, std::string* why = nullptr);
-    // Tool breakage (SpindleLoad.cpp): the spindle load as the PMC reads it, its monitor and history;
+    // FANUC tool life management (ToolLifeCounter.h): the groups, the tool in use, the operator's reset.
+    ToolLifeCounter& toolLife() { return toolLife_; }
+    const ToolLifeCounter& toolLife() const { return toolLife_; }
+    // Tool breakage (ToolBreakage.h): the spindle load as the PMC reads it, its monitor and history;
     // the tools as they really are (a break from RunSettings::toolBreaks shortens one at its time).
-    const SpindleLoadWatch& spindleLoad() const { return loadWatch_; }
-    const machine::ToolWorld& toolWorld() const { return world_; }
+    const ToolBreakage& toolBreakage() const { return breakage_; }
 
     // macro::MachineAccess
     bool manageTools(macro::EvaluatedBlock& block) override;
@@ -314,18 +288,16 @@ public:
     // machine::MachineObserver
     void onMachineEvent(const machine::MachineEvent& event) override;
     bool ignoresMove(const machine::Axes& from, const machine::Axes& to) const override;
-    void feedMagazine(const machine::MachineEvent& event);
 
 private:
+    void feedMagazine(const machine::MachineEvent& event);
     bool load(const gcode::SourceText& source, gcode::FileRole role);
     void applyParameterOverrides(); // --param, before anything reads the parameters
     void applySettings();
     void configureMachine();
-    void syncToolLength();
-    void countCuttingTime(const machine::MachineEvent& event);
+    void syncToolLength() { breakage_.syncToolLength(); }
     void setUpBreakageWatch();
     void watchSpindleLoad(const machine::MachineEvent& event);
-    bool watchesSpindleLoad() const { return loadWatch_.model() || !world_.breaks().empty(); }
     void enterSafeState();
     void stepOnce();
     int stepOnce(int toolBefore); // the spindle tool after the step
@@ -358,7 +330,7 @@ private:
     std::optional<Alarm> homeAxis(int axis, double since);
     bool homeSwitchWired(int axis) const;
     void fill(RunReport& out) const;
-    int spindleTool() const;
+    int spindleTool() const { return magazine_.spindleTool(); }
     TraceSource source() const;
     void postMessage(std::string text);
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
@@ -410,9 +382,9 @@ private:
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     ExternalDevices devices_; // the external output device and the Modbus slaves
-    tools::ToolLifeManager toolLife_;
-    machine::ToolWorld world_;
-    SpindleLoadWatch loadWatch_;
+    ToolLifeCounter toolLife_;
+    ToolBreakage breakage_;   // the tools as they really are, the spindle load
+    ToolTableEdits toolEdits_; // the panel's edits of tools_
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 
     // 断点加工 (StartAtLine.cpp): the main block a hold stopped, which pass over it, where it stopped

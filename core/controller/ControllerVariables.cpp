@@ -83,7 +83,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         }
     }
     case VariableKind::ToolOffset: return Value::of(tools_.offsetValue(info.index));
-    case VariableKind::SpindleLoad: return Value::of(loadWatch_.reg());
+    case VariableKind::SpindleLoad: return Value::of(breakage_.spindleLoad().reg());
     case VariableKind::Alarm:
     case VariableKind::StopMessage: return Value::of(0);
     default: return Value::empty();

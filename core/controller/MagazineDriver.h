@@ -58,6 +58,9 @@ public:
     void build();
     // The device, nullptr when the machine has none.
     const devices::Magazine* device() const { return device_.get(); }
+    // The tool in the spindle: what the magazine's spindle holds, else what the controller believes
+    // (#1300 on the M350, the tool M85 stored on a FANUC).
+    int spindleTool() const;
     // Feeds one machine event to the device; throws a `crash` or `sensor_timeout` MacroError.
     void onMachineEvent(const machine::MachineEvent& event);
     // A straight move from `from` to `to` the device need not be told of: far from a linear rack

@@ -26,7 +26,7 @@ void Controller::hold() {
         return;
     }
     remainder_ = interruptMotion(displayTime_, false);
-    toolLife_.cutShortAt(machine_.time());
+    toolLife_.manager().cutShortAt(machine_.time());
     rememberPause(remainder_);
     const params::ParameterTable& p = config_.parameters;
     if (p.get(param::kStopSpindleOnPause) != 0.0 && machine_.spindleState() != machine::SpindleState::Stop) {
@@ -73,7 +73,7 @@ void Controller::resume() {
     const bool cutting = remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Feed ||
                          remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Arc;
     if (cutting && !(executor_ && executor_->changingTool())) {
-        toolLife_.cut(remainderFrom, machine_.time()); // the rest of the cut the hold stopped
+        toolLife_.manager().cut(remainderFrom, machine_.time()); // the rest of the cut the hold stopped
     }
     remainder_ = {};
     programStop_.clear();
@@ -110,7 +110,7 @@ void Controller::continueRemainder(const machine::SimulatedMachine::Remainder& r
 
 void Controller::reset() {
     machine::SimulatedMachine::Remainder rest = interruptMotion(displayTime_, true);
-    toolLife_.cutShortAt(machine_.time());
+    toolLife_.manager().cutShortAt(machine_.time());
     if (state_ == RunState::Running) {
         rememberPause(rest); // a run stopped by RESET resumes as a paused one does
     }
@@ -161,7 +161,7 @@ bool Controller::spindleJog(bool on) {
 
 void Controller::emergencyStop(const std::string& why) {
     interruptMotion(displayTime_, true);
-    toolLife_.cutShortAt(machine_.time());
+    toolLife_.manager().cutShortAt(machine_.time());
     if (machine_.time() < displayTime_) {
         machine_.blockTime(displayTime_ - machine_.time());
     }
