@@ -267,7 +267,7 @@ int runCommand(int argc, char** argv) {
         json["spindle_load"] = sim::spindleLoadJson(controller.toolBreakage().spindleLoad(), controller.dialect().id == gcode::DialectId::Fanuc);
     }
     if (trace) {
-        controller.finishTrace();
+        controller.status().finishTrace();
         if (auto problem = trace->commit()) {
             std::cerr << "m350-sim: --trace: " << *problem << '\n';
             outputProblem = problem;

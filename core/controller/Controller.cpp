@@ -1,7 +1,6 @@
 #include "core/controller/Controller.h"
 #include "core/params/FanucParameters.h"
 
-#include "core/common/EchoText.h"
 #include "core/params/IoPorts.h"
 #include "core/common/Numeric.h"
 
@@ -23,14 +22,15 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)),
       tools_(*config_.dialect, config_.parameters, std::exchange(config_.toolTable, std::nullopt)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? this : nullptr),
       interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters),
-      magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}),
-      devices_({config_.parameters, scan_, trace_, [this] { return machine_.time(); }, [this] { return source(); }},
+      status_(settings_, machine_, interp_, executor_, program_),
+      magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_,
+                 [this] { return status_.source(); }}),
+      devices_({config_.parameters, scan_, status_.traceWriter(), [this] { return machine_.time(); },
+                [this] { return status_.source(); }},
                config_.modbus, settings_.externalOutputLimit),
       toolLife_(config_.toolLife, state_, executor_, *config_.dialect, scan_), breakage_(machine_, magazine_),
-      toolEdits_({tools_, savedToolMark_, state_, [this] { return jogging(); }, config_, interp_, machine_, magazine_}) {
-    if (settings_.trace) {
-        trace_ = std::make_unique<TraceWriter>(*settings_.trace, settings_.traceLimit);
-    }
+      toolEdits_({tools_, savedToolMark_, state_, [this] { return jogging(); }, config_, interp_, machine_,
+                  magazine_}) {
     for (int slot = 0; slot < interp::WorkOffsets::kSlots; ++slot) {
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
             offsets_.set(slot, axis, config_.offsets[static_cast<std::size_t>(slot)][static_cast<std::size_t>(axis)]);
@@ -148,19 +148,10 @@ void Controller::applySettings() {
     }
 }
 
-TraceSource Controller::source() const {
-    if (executor_) {
-        if (auto loc = executor_->location()) {
-            return {program_.fileName(*loc), loc->line};
-        }
-    }
-    return {};
-}
-
 void Controller::onMachineEvent(const machine::MachineEvent& event) {
-    if (trace_) {
+    if (status_.trace()) {
         // an input an IoLink drives changes because of the output switch that came before it
-        TraceSource where = source();
+        TraceSource where = status_.source();
         if (event.type == machine::MachineEvent::Type::Io && event.port < 0) {
             if (auto it = linkedInputSource_.find(-event.port); it != linkedInputSource_.end()) {
                 where = it->second;
@@ -172,7 +163,7 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
                 }
             }
         }
-        trace_->machineEvent(event, where);
+        status_.trace()->machineEvent(event, where);
     }
     if (settings_.observer) {
         settings_.observer->onMachineEvent(event);
@@ -190,7 +181,8 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
 // Nothing listens to a straight move but a linear rack, which it passes wide of: no trace, no
 // observer, no cutting time counted, no spindle load or breakage to follow. Most moves of a program.
 bool Controller::ignoresMove(const machine::Axes& from, const machine::Axes& to) const {
-    return !trace_ && !settings_.observer && !toolLife_.manager().inUse() && !breakage_.active() && magazine_.ignores(from, to);
+    return !status_.trace() && !settings_.observer && !toolLife_.manager().inUse() && !breakage_.active() &&
+           magazine_.ignores(from, to);
 }
 
 bool Controller::manageTools(macro::EvaluatedBlock& block) {
@@ -205,7 +197,8 @@ bool Controller::manageTools(macro::EvaluatedBlock& block) {
 // method): the load is sampled as virtual time passes and an anomaly stops the run like any alarm.
 void Controller::setUpBreakageWatch() {
     if (config_.spindleLoad) {
-        config_.spindleLoad->lambda = params::fanucParameter(config_.fanucParameters, params::kLoadMeterFullScale);
+        config_.spindleLoad->lambda =
+            params::fanucParameter(config_.fanucParameters, params::kLoadMeterFullScale);
     }
     breakage_.setUp(config_, settings_);
     if (breakage_.active()) {
@@ -232,16 +225,8 @@ void Controller::feedMagazine(const machine::MachineEvent& event) {
     try {
         magazine_.onMachineEvent(event);
     } catch (const macro::MacroError& error) {
-        postMessage(error.message);
+        status_.postMessage(error.message);
     }
-}
-
-void Controller::postMessage(std::string text) {
-    text = clipEcho(std::move(text));
-    if (trace_) {
-        trace_->message(machine_.time(), text, source());
-    }
-    messages_.add(std::move(text));
 }
 
 // Alarms stop motion and drive every output to its safe (off) state, as the real controller does.
@@ -262,13 +247,13 @@ RunReport Controller::run() {
     while (state_ == RunState::Running) {
         advance(std::numeric_limits<double>::infinity());
         if (state_ == RunState::Hold && !programStop_.empty()) {
-            postMessage(programStop_ + ": START pressed (run without an operator)");
+            status_.postMessage(programStop_ + ": START pressed (run without an operator)");
             displayTime_ = machine_.time(); // START comes the moment the machine stands still
             resume();
         }
     }
     pressStartWhenAwaited_ = false;
-    if (trace_) {
+    if (status_.trace()) {
         machine_.reportLinkedInputs(machine_.time());
     }
     return snapshot();
@@ -363,23 +348,23 @@ int Controller::stepOnce(int toolBefore) {
     }
     if (auto stop = interp_.takeStop()) {
         if (inEventHook_) {
-            postMessage(stop->what + ": START pressed (a hook file runs to its end)");
+            status_.postMessage(stop->what + ": START pressed (a hook file runs to its end)");
         } else {
             stopForOperator(*stop);
         }
     }
     if (interp_.hasLookAheadChanges()) {
         for (const std::string& code : interp_.takeLookAheadChanges()) {
-            if (trace_) {
-                trace_->lookAhead(machine_.time(), code, source());
+            if (status_.trace()) {
+                status_.trace()->lookAhead(machine_.time(), code, status_.source());
             }
         }
     }
     const int toolAfter = spindleTool();
     if (toolAfter != toolBefore) {
         syncToolLength();
-        if (trace_) {
-            trace_->toolChange(machine_.time(), toolBefore, toolAfter, source());
+        if (status_.trace()) {
+            status_.trace()->toolChange(machine_.time(), toolBefore, toolAfter, status_.source());
         }
     }
     return toolAfter;
@@ -392,8 +377,8 @@ void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& s
     TraceSource where{program_.fileName(stop.location), stop.location.line};
     programStop_ = stop.what + " (" + where.file + ":" + std::to_string(where.line) + ")";
     state_ = RunState::Hold;
-    if (trace_) {
-        trace_->programStop(machine_.time(), stop.what, where);
+    if (status_.trace()) {
+        status_.trace()->programStop(machine_.time(), stop.what, where);
     }
     runPauseHook();
 }
@@ -417,8 +402,8 @@ void Controller::raiseAlarm(const Alarm& alarm) {
     }
     state_ = RunState::Alarm;
     enterSafeState();
-    if (trace_) {
-        trace_->alarm(machine_.time(), alarm);
+    if (status_.trace()) {
+        status_.trace()->alarm(machine_.time(), alarm);
     }
     if (alarm.code != AlarmCode::EmergencyStop) {
         runEventHook(config::Hook::Error); // its own alarm is only a message: the first one stands
@@ -447,8 +432,8 @@ void Controller::fill(RunReport& out) const {
     for (int port = 1; port <= machine::kOutputCount; ++port) {
         out.outputs[static_cast<std::size_t>(port - 1)] = machine_.output(port);
     }
-    out.messages = messages_.list();
-    out.messagesOmitted = messages_.omitted();
+    out.messages = status_.messages().list();
+    out.messagesOmitted = status_.messages().omitted();
     out.simTime = machine_.time();
     out.blocks = executor_ ? executor_->blocksExecuted() : 0;
 }

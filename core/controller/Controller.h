@@ -13,6 +13,7 @@
 #include "core/controller/RunSettings.h"
 #include "core/controller/RunState.h"
 #include "core/controller/SensorWatch.h"
+#include "core/controller/StatusBoard.h"
 #include "core/controller/MagazineDriver.h"
 #include "core/controller/ToolBreakage.h"
 #include "core/controller/ToolLifeCounter.h"
@@ -167,8 +168,6 @@ public:
     RunReport snapshot() const;
     // What the panel shows now (PanelStatusView.cpp): positions at the display time, modes, IO.
     PanelStatus panelStatus();
-    // The active modal codes as the Monitor page prints them: "G00 G17 G90 G94 G21 G40 G49 G80 G54 F3000 S0".
-    std::string modalLine() const;
 
     // 回零: homes the given axes (0 X .. 4 B), Z first. An alarm when an axis has no home switch.
     std::optional<Alarm> home(const std::vector<int>& axes);
@@ -194,9 +193,6 @@ public:
     // G00 follows it when param 253 = 1. Returns the percentage in effect.
     double setFeedOverride(double percent);
 
-    // The spindle as the panel shows it: STOP FWD REV ORIENT, JOG while the spindle jog key turns
-    // it, TAP while a tapping cycle (G84/G74) is active and it turns.
-    machine::SpindleState spindleDisplay() const;
     // The panel's spindle jog key (主轴点动): turns the spindle at param 85's speed, or stops it.
     // Refused (false) while a program runs.
     bool spindleJog(bool on);
@@ -264,11 +260,9 @@ public:
     // The external output device (POPEN, DPRNT, BPRNT, PCLOS) and the Modbus slaves (ExternalDevices.h).
     ExternalDevices& externalDevices() { return devices_; }
     const ExternalDevices& externalDevices() const { return devices_; }
-    // Writes the end of a trace that reached its limit (RunSettings::traceLimit): call once the run
-    // is over, before the trace file is closed.
-    void finishTrace() {
-        if (trace_) trace_->finish();
-    }
+    // What the controller says as a run goes (StatusBoard.h): the messages, the #1503 status line, the trace.
+    StatusBoard& status() { return status_; }
+    const StatusBoard& status() const { return status_; }
     // The machine's configuration as it stands: parameters, offsets of the folder, the tool table now.
     config::MachineConfig config() const;
 
@@ -331,8 +325,6 @@ private:
     bool homeSwitchWired(int axis) const;
     void fill(RunReport& out) const;
     int spindleTool() const { return magazine_.spindleTool(); }
-    TraceSource source() const;
-    void postMessage(std::string text);
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
     bool optionalStopOn();
     void watchInput(int pin, int level);
@@ -352,13 +344,11 @@ private:
     gcode::Program program_;
     std::vector<gcode::Diagnostic> diagnostics_;
     std::unique_ptr<macro::Executor> executor_;
-    std::unique_ptr<TraceWriter> trace_;
+    StatusBoard status_; // before devices_, which writes to its trace
     std::array<int, machine::kAxisCount> homed_{};
     int fanucSpindleTool_ = 0;
     double dialogAnswer_ = 0.0;
     std::optional<Dialog> pendingDialog_; // see pendingDialog()
-    MessageLog messages_;
-    std::string statusMessage_; // the #1503 text the status line shows now (cleared by #1503 = 1000)
     double feedOverride_ = 100.0;
     double runStartedAt_ = 0.0;
     double timeLimitFrom_ = 0.0; // the run's start, moved on by its holds: --max-sim-time counts from here

@@ -45,8 +45,8 @@ void Controller::watchInput(int pin, int level) {
     case SensorWatch::Verdict::Reading:
     case SensorWatch::Verdict::Waiting: return;
     case SensorWatch::Verdict::WaitBegins:
-        if (trace_) {
-            trace_->sensorWait(machine_.time(), params::inputName(pin), 1 - level,
+        if (status_.trace()) {
+            status_.trace()->sensorWait(machine_.time(), params::inputName(pin), 1 - level,
                                {program_.fileName(*where), where->line});
         }
         return;
@@ -72,7 +72,7 @@ void Controller::pressStartIfAwaited(const params::PortAssignment& key, int pin,
         return;
     }
     machine_.pulseInput(pin, key.activeLevel, kKeyPress);
-    postMessage("外部启动 extern START (" + params::inputName(pin) + ") pressed at " + program_.fileName(where) + ":" +
+    status_.postMessage("外部启动 extern START (" + params::inputName(pin) + ") pressed at " + program_.fileName(where) + ":" +
                 std::to_string(where.line) + " (run without an operator)");
 }
 

@@ -14,19 +14,19 @@ constexpr double kMessageOnly = -5000; // `#1505 = -5000(text)`: a text to show,
 
 std::optional<std::string> Controller::showDialog(double kind, std::string_view text) {
     if (!operatorAnswers()) {
-        postMessage(std::string(text) + " [dialog answered: Enter]");
+        status_.postMessage(std::string(text) + " [dialog answered: Enter]");
         dialogAnswer_ = 1;
         return std::nullopt;
     }
     if (kind == kMessageOnly) {
-        statusMessage_ = std::string(text);
-        postMessage(std::string(text));
+        status_.showStatus(std::string(text));
+        status_.postMessage(std::string(text));
         return std::nullopt;
     }
     // advance() executes no further block while the dialog is pending
     pendingDialog_ = Dialog{std::string(text), roundToInt(kind)};
-    if (trace_) {
-        trace_->message(machine_.time(), "dialog: " + std::string(text), source());
+    if (status_.trace()) {
+        status_.trace()->message(machine_.time(), "dialog: " + std::string(text), status_.source());
     }
     return std::nullopt;
 }
@@ -36,7 +36,7 @@ void Controller::answerDialog(bool enter) {
         return;
     }
     dialogAnswer_ = enter ? 1 : 0;
-    postMessage(pendingDialog_->text + (enter ? " [dialog answered: Enter]" : " [dialog answered: Esc]"));
+    status_.postMessage(pendingDialog_->text + (enter ? " [dialog answered: Enter]" : " [dialog answered: Esc]"));
     pendingDialog_.reset();
     if (machine_.time() < displayTime_) {
         machine_.blockTime(displayTime_ - machine_.time()); // the clock ran while the operator read it

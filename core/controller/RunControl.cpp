@@ -19,8 +19,8 @@ void Controller::hold() {
         // the handwheel guide has the display behind the moves already issued (a retrace): their
         // blocks have run, so the run waits where the display is and goes on from there
         state_ = RunState::Hold;
-        if (trace_) {
-            trace_->runState(displayTime_, "pause");
+        if (status_.trace()) {
+            status_.trace()->runState(displayTime_, "pause");
         }
         runPauseHook();
         return;
@@ -40,8 +40,8 @@ void Controller::hold() {
         machine_.rapid(up);
     }
     state_ = RunState::Hold;
-    if (trace_) {
-        trace_->runState(displayTime_, "pause");
+    if (status_.trace()) {
+        status_.trace()->runState(displayTime_, "pause");
     }
     runPauseHook();
 }
@@ -54,8 +54,8 @@ void Controller::resume() {
         timeLimitFrom_ += displayTime_ - machine_.time(); // a long hold is no runaway
         machine_.blockTime(displayTime_ - machine_.time()); // the clock ran while paused
     }
-    if (trace_) {
-        trace_->runState(machine_.time(), "resume");
+    if (status_.trace()) {
+        status_.trace()->runState(machine_.time(), "resume");
     }
     returnAfterPauseHook();
     if (liftedBy_ > 0.0) {
@@ -127,8 +127,8 @@ void Controller::reset() {
     sensorWatch_.clear();
     pendingDialog_.reset();
     state_ = RunState::Idle; // start() runs the program again from its beginning
-    if (trace_) {
-        trace_->runState(displayTime_, "reset");
+    if (status_.trace()) {
+        status_.trace()->runState(displayTime_, "reset");
     }
 }
 
@@ -138,13 +138,6 @@ double Controller::setFeedOverride(double percent) {
     feedOverride_ = applied;
     machine_.setFeedOverride(applied / 100.0, config_.parameters.get(param::kOverrideActsOnRapids) != 0.0);
     return applied;
-}
-
-machine::SpindleState Controller::spindleDisplay() const {
-    machine::SpindleState state = machine_.spindleState();
-    const int cycle = interp_.state().group(9);
-    bool turning = state == machine::SpindleState::Forward || state == machine::SpindleState::Reverse;
-    return turning && (cycle == 84 || cycle == 74) ? machine::SpindleState::Tap : state;
 }
 
 bool Controller::spindleJog(bool on) {
@@ -170,8 +163,8 @@ void Controller::emergencyStop(const std::string& why) {
                      (why.empty() ? std::string("急停 emergency stop") : why) + ": motion stopped at once, outputs off",
                      "", 0, 0});
     state_ = RunState::EStop;
-    if (trace_) {
-        trace_->runState(displayTime_, "estop");
+    if (status_.trace()) {
+        status_.trace()->runState(displayTime_, "estop");
     }
 }
 

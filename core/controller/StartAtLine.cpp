@@ -162,8 +162,8 @@ bool Controller::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopP
     runStartedAt_ = displayTime_;
     timeLimitFrom_ = runStartedAt_;
     runStartedFrom_ = from;
-    if (trace_) {
-        trace_->runState(machine_.time(), "start at " + lineText(block));
+    if (status_.trace()) {
+        status_.trace()->runState(machine_.time(), "start at " + lineText(block));
     }
     for (int port = 1; port <= machine::kOutputCount; ++port) {
         const auto& level = outputs[static_cast<std::size_t>(port - 1)];

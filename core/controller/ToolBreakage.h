@@ -29,7 +29,8 @@ public:
     // Whether there is anything to follow: a load model to sample or a tool that breaks. Not so on
     // most machines, where every move of a program passes without a look.
     bool active() const { return load_.model() || !world_.breaks().empty(); }
-    // The machine's tool length and radius from the world's tool in the spindle (as it is now).
+    // The tool in the spindle decides where the setter trips: the simulated world's tool length (as
+    // it is now: a broken tool is shorter) and radius.
     void syncToolLength();
     // Follows one machine event: the broken tool's length, the load samples due; the first anomaly.
     std::optional<SpindleLoadWatch::Anomaly> sample(const machine::MachineEvent& event);

@@ -94,7 +94,8 @@ bool ToolTableEdits::touchOffTool(double workZ, std::string* why) {
     }
     const double unit = context_.interp.axisUnit(2);
     const double others = context_.interp.workOffset()(2) - context_.interp.toolLengthOffset();
-    if (auto problem = context_.tools.setZ(tool, tools::roundedOffset((machineZ - others - workZ * unit) / unit))) {
+    const double z = tools::roundedOffset((machineZ - others - workZ * unit) / unit);
+    if (auto problem = context_.tools.setZ(tool, z)) {
         return refuse(why, *problem);
     }
     context_.interp.applyLengthOffset(tool);
