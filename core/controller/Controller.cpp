@@ -22,9 +22,9 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)),
       tools_(*config_.dialect, config_.parameters, std::exchange(config_.toolTable, std::nullopt)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? this : nullptr),
       interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters),
-      status_(settings_, machine_, interp_, executor_, program_),
       magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_,
                  [this] { return status_.source(); }}),
+      status_({config_, machine_, interp_, magazine_, executor_, program_, diagnostics_, state_, alarm_}, settings_),
       devices_({config_.parameters, scan_, status_.traceWriter(), [this] { return machine_.time(); },
                 [this] { return status_.source(); }},
                config_.modbus, settings_.externalOutputLimit),
@@ -256,20 +256,7 @@ RunReport Controller::run() {
     if (status_.trace()) {
         machine_.reportLinkedInputs(machine_.time());
     }
-    return snapshot();
-}
-
-RunReport Controller::snapshot() const {
-    RunReport out;
-    switch (state_) {
-    case RunState::Alarm:
-    case RunState::EStop: out.status = RunStatus::Alarm; break;
-    default: out.status = executor_ ? RunStatus::Ok : RunStatus::Error; break;
-    }
-    out.alarm = alarm_;
-    out.diagnostics = diagnostics_;
-    fill(out);
-    return out;
+    return status_.report();
 }
 
 bool Controller::start() {
@@ -408,34 +395,6 @@ void Controller::raiseAlarm(const Alarm& alarm) {
     if (alarm.code != AlarmCode::EmergencyStop) {
         runEventHook(config::Hook::Error); // its own alarm is only a message: the first one stands
     }
-}
-
-void Controller::fill(RunReport& out) const {
-    out.machine = machine_.position();
-    out.work = interp_.workPosition();
-    out.tool = spindleTool();
-    const devices::Magazine* magazine = magazine_.device();
-    int capacity = config_.dialect->id == gcode::DialectId::M350
-                       ? params::magazineCapacity(config_.parameters)
-                       : magazine ? magazine->pocketCount() : std::clamp(config_.magazineCapacity, 0, params::kMostPockets);
-    // Without a magazine device every tool has its own pocket, empty while it is in the spindle.
-    for (int pocket = 1; pocket <= capacity; ++pocket) {
-        if (magazine) {
-            out.pockets[pocket] = pocket <= magazine->pocketCount() ? magazine->pocketTool(pocket) : 0;
-        } else {
-            out.pockets[pocket] = pocket == out.tool ? 0 : pocket;
-        }
-    }
-    if (magazine) {
-        out.fallenTools = magazine->droppedTools();
-    }
-    for (int port = 1; port <= machine::kOutputCount; ++port) {
-        out.outputs[static_cast<std::size_t>(port - 1)] = machine_.output(port);
-    }
-    out.messages = status_.messages().list();
-    out.messagesOmitted = status_.messages().omitted();
-    out.simTime = machine_.time();
-    out.blocks = executor_ ? executor_->blocksExecuted() : 0;
 }
 
 } // namespace m350::controller

@@ -165,7 +165,6 @@ public:
     std::optional<BreakPoint> pauseBreakPoint() const;
     double displayTime() const { return displayTime_; }
     machine::Axes displayPosition() const { return machine_.positionAt(displayTime_); }
-    RunReport snapshot() const;
     // What the panel shows now (PanelStatusView.cpp): positions at the display time, modes, IO.
     PanelStatus panelStatus();
 
@@ -323,7 +322,6 @@ private:
     // `since`: the machine time --max-sim-time counts from (the homing's or the run's start).
     std::optional<Alarm> homeAxis(int axis, double since);
     bool homeSwitchWired(int axis) const;
-    void fill(RunReport& out) const;
     int spindleTool() const { return magazine_.spindleTool(); }
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
     bool optionalStopOn();
@@ -344,7 +342,6 @@ private:
     gcode::Program program_;
     std::vector<gcode::Diagnostic> diagnostics_;
     std::unique_ptr<macro::Executor> executor_;
-    StatusBoard status_; // before devices_, which writes to its trace
     std::array<int, machine::kAxisCount> homed_{};
     int fanucSpindleTool_ = 0;
     double dialogAnswer_ = 0.0;
@@ -371,6 +368,7 @@ private:
     std::vector<OperatorKey> operatorKeys_;
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
+    StatusBoard status_;      // before devices_, which writes to its trace
     ExternalDevices devices_; // the external output device and the Modbus slaves
     ToolLifeCounter toolLife_;
     ToolBreakage breakage_;   // the tools as they really are, the spindle load

@@ -204,7 +204,7 @@ void pauseResetResume(double resumeMode, std::vector<machine::MachineEvent>& aft
     EXPECT_FALSE(c->pauseBreakPoint());
     EXPECT_EQ(c->advance(100.0), RunState::Finished);
     after.assign(rec.events.begin() + static_cast<std::ptrdiff_t>(before), rec.events.end());
-    end = c->snapshot();
+    end = c->status().report();
     EXPECT_EQ(c->variable(100).number, 3.0);
 }
 
