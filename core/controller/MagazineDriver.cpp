@@ -43,20 +43,6 @@ MagazineDriver::MagazineDriver(Context context) : context_(std::move(context)) {
 
 MagazineDriver::~MagazineDriver() = default;
 
-int MagazineDriver::spindleTool() const {
-    // what the controller believes: #1300 on the M350, the tool M85 stored on a FANUC
-    const int believed = context_.config.dialect->id == gcode::DialectId::M350
-                             ? saturatingInt(context_.config.parameters.get(param::kCurrentTool))
-                             : context_.pmcSpindleTool;
-    if (!device_) {
-        return believed;
-    }
-    // what the spindle really holds; a virtual tool (above the magazine) was put in by hand,
-    // which the magazine does not see
-    const int held = device_->spindleTool();
-    return held == 0 && believed > device_->pocketCount() ? believed : held;
-}
-
 void MagazineDriver::build() {
     device_.reset();
     rack_ = nullptr;
