@@ -47,12 +47,12 @@ std::optional<std::string> missingHook(const SimOptions& o, const config::Machin
 std::optional<controller::RunReport> homeBeforeRun(controller::Controller& controller) {
     if (!controller.hasHook(config::Hook::HomeAll)) {
         if (controller.homing().home(controller.homing().homeableAxes())) {
-            return controller.snapshot();
+            return controller.status().report();
         }
         return std::nullopt;
     }
     if (!controller.loadHook(config::Hook::HomeAll)) {
-        controller::RunReport report = controller.snapshot();
+        controller::RunReport report = controller.status().report();
         report.status = controller::RunStatus::Error;
         return report;
     }

@@ -84,7 +84,7 @@ int listTools(controller::Controller& controller, const SimOptions& o) {
             }
         }
     }
-    const tools::ToolTable table = controller.toolTable();
+    const tools::ToolTable table = controller.toolTableEdits().table();
     if (o.toolsAsTable) {
         std::cout << tools::formatToolTable(table);
         return skipped ? kExitError : kExitOk;
@@ -106,7 +106,7 @@ std::optional<std::string> exportTools(controller::Controller& controller, const
     if (!o.toolsOut) {
         return std::nullopt;
     }
-    return files::writeOutputFile(*o.toolsOut, tools::formatToolTable(controller.toolTable()));
+    return files::writeOutputFile(*o.toolsOut, tools::formatToolTable(controller.toolTableEdits().table()));
 }
 
 } // namespace m350::sim

@@ -120,11 +120,11 @@ std::optional<std::string> checkAgainstMachine(const sim::SimOptions& o, const c
 // dprnt.txt beside the program, written whole and atomically after the run; what went wrong, if
 // anything (said on stderr).
 std::optional<std::string> writeExternalOutput(const controller::Controller& controller, const sim::SimOptions& o) {
-    if (!controller.externalOutputOpened()) {
+    if (!controller.externalDevices().outputOpened()) {
         return std::nullopt;
     }
     const std::string file = sim::externalOutputPath(o);
-    if (auto problem = files::writeOutputFile(file, controller.externalOutput())) {
+    if (auto problem = files::writeOutputFile(file, controller.externalDevices().received())) {
         std::cerr << "m350-sim: cannot write the external output (DPRNT) to " << file << ": " << *problem << '\n';
         return problem;
     }
@@ -134,16 +134,16 @@ std::optional<std::string> writeExternalOutput(const controller::Controller& con
 
 // Tool life data the run used or entered (G10 L3) go back into the machine folder's toollife.txt.
 std::optional<std::string> saveToolLife(controller::Controller& controller, const config::MachineFolder& folder) {
-    if (!controller.toolLife().changed()) {
+    if (!controller.toolLife().manager().changed()) {
         return std::nullopt;
     }
-    if (auto problem = folder.saveToolLife(controller.toolLife().data())) {
+    if (auto problem = folder.saveToolLife(controller.toolLife().manager().data())) {
         std::cerr << "m350-sim: cannot write the tool life data to " << folder.path().string() << "/"
                   << config::MachineFolder::fileName(config::FolderFile::ToolLife) << ": "
                   << *problem << '\n';
         return problem;
     }
-    controller.toolLife().markSaved();
+    controller.toolLife().manager().markSaved();
     return std::nullopt;
 }
 
@@ -264,14 +264,14 @@ int runCommand(int argc, char** argv) {
         report.status = controller::RunStatus::Error;
     }
     nlohmann::json json = sim::reportJson(report, controller, o.printVariables);
-    if (controller.toolLife().enabled() || !lifeIssues.empty()) {
-        json["tool_life"] = sim::toolLifeJson(controller.toolLife(), lifeIssues);
+    if (controller.toolLife().manager().enabled() || !lifeIssues.empty()) {
+        json["tool_life"] = sim::toolLifeJson(controller.toolLife().manager(), lifeIssues);
     }
-    if (controller.spindleLoad().model()) {
-        json["spindle_load"] = sim::spindleLoadJson(controller.spindleLoad(), controller.dialect().id == gcode::DialectId::Fanuc);
+    if (controller.toolBreakage().spindleLoad().model()) {
+        json["spindle_load"] = sim::spindleLoadJson(controller.toolBreakage().spindleLoad(), controller.dialect().id == gcode::DialectId::Fanuc);
     }
     if (trace) {
-        controller.finishTrace();
+        controller.status().finishTrace();
         if (auto problem = trace->commit()) {
             std::cerr << "m350-sim: --trace: " << *problem << '\n';
             outputProblem = problem;

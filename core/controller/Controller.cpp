@@ -1,7 +1,6 @@
 #include "core/controller/Controller.h"
 #include "core/params/FanucParameters.h"
 
-#include "core/common/EchoText.h"
 #include "core/params/IoPorts.h"
 #include "core/common/Numeric.h"
 
@@ -23,13 +22,15 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)),
       tools_(*config_.dialect, config_.parameters, std::exchange(config_.toolTable, std::nullopt)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? this : nullptr),
       interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters),
-      magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_, [this] { return source(); }}),
-      devices_({config_.parameters, scan_, trace_, [this] { return machine_.time(); }, [this] { return source(); }},
+      magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_,
+                 [this] { return status_.source(); }}),
+      status_({config_, machine_, interp_, magazine_, executor_, program_, diagnostics_, state_, alarm_}, settings_),
+      devices_({config_.parameters, scan_, status_.traceWriter(), [this] { return machine_.time(); },
+                [this] { return status_.source(); }},
                config_.modbus, settings_.externalOutputLimit),
+      toolLife_(config_.toolLife, state_, executor_, *config_.dialect, scan_), breakage_(machine_, magazine_),
+      toolEdits_({tools_, state_, [this] { return manual_.jogging(); }, config_, interp_, machine_, magazine_}),
       panel_(newOperatorPanel()) {
-    if (settings_.trace) {
-        trace_ = std::make_unique<TraceWriter>(*settings_.trace, settings_.traceLimit);
-    }
     for (int slot = 0; slot < interp::WorkOffsets::kSlots; ++slot) {
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
             offsets_.set(slot, axis, config_.offsets[static_cast<std::size_t>(slot)][static_cast<std::size_t>(axis)]);
@@ -41,29 +42,28 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     for (const auto& [number, position] : config_.referencePoints) {
         interp_.setReferencePoint(number, Eigen::Map<const machine::Axes>(position.data()));
     }
-    toolLife_.setData(config_.toolLife);
-    if (toolLife_.enabled()) {
+    if (toolLife_.manager().enabled()) {
         machine_.setObserver(this); // cutting time counts from the machine's feed events
     }
     applyParameterOverrides();
     setUpBreakageWatch();
     applySettings();
-    loadWatch_.startAt(machine_.time());
-    savedToolMark_ = tools_.mark();
+    breakage_.startAt(machine_.time());
+    toolEdits_.markSaved(tools_.mark());
 }
 
 Controller::~Controller() = default;
 
 OperatorPanel Controller::newOperatorPanel() {
-    auto post = [this](std::string text) { postMessage(std::move(text)); };
+    auto post = [this](std::string text) { status_.postMessage(std::move(text)); };
     OperatorDialog::Context dialog{
         post,
         [this](std::string text) {
-            statusMessage_ = text;
-            postMessage(std::move(text));
+            status_.showStatus(text);
+            status_.postMessage(std::move(text));
         },
         [this](std::string text) {
-            if (trace_) trace_->message(machine_.time(), text, source());
+            if (status_.trace()) status_.trace()->message(machine_.time(), text, status_.source());
         },
         [this] {
             if (machine_.time() < displayTime_) machine_.blockTime(displayTime_ - machine_.time());
@@ -85,7 +85,7 @@ OperatorPanel Controller::newOperatorPanel() {
                                settings_,
                                machine_,
                                program_,
-                               trace_,
+                               status_.traceWriter(),
                                [this] { return executor_ ? executor_->location() : std::nullopt; },
                                [this](int pin) { return magazine_.describeInput(pin); },
                                post};
@@ -96,7 +96,7 @@ OperatorPanel Controller::newOperatorPanel() {
 config::MachineConfig Controller::config() const {
     config::MachineConfig out = config_;
     out.toolTable = tools_.table();
-    out.toolLife = toolLife_.data(); // a 仿真 run selects the sister tools the machine would
+    out.toolLife = toolLife_.manager().data(); // a 仿真 run selects the sister tools the machine would
     return out;
 }
 
@@ -186,19 +186,10 @@ void Controller::applySettings() {
     }
 }
 
-TraceSource Controller::source() const {
-    if (executor_) {
-        if (auto loc = executor_->location()) {
-            return {program_.fileName(*loc), loc->line};
-        }
-    }
-    return {};
-}
-
 void Controller::onMachineEvent(const machine::MachineEvent& event) {
-    if (trace_) {
+    if (status_.trace()) {
         // an input an IoLink drives changes because of the output switch that came before it
-        TraceSource where = source();
+        TraceSource where = status_.source();
         if (event.type == machine::MachineEvent::Type::Io && event.port < 0) {
             if (auto it = linkedInputSource_.find(-event.port); it != linkedInputSource_.end()) {
                 where = it->second;
@@ -210,7 +201,7 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
                 }
             }
         }
-        trace_->machineEvent(event, where);
+        status_.trace()->machineEvent(event, where);
     }
     if (settings_.observer) {
         settings_.observer->onMachineEvent(event);
@@ -218,14 +209,47 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
     if (magazine_.device()) {
         feedMagazine(event);
     }
-    countCuttingTime(event);
-    watchSpindleLoad(event);
+    toolLife_.countCuttingTime(event);
+    // nothing to sample, nothing that breaks: the common case, every move of a program
+    if (breakage_.active()) {
+        watchSpindleLoad(event);
+    }
 }
 
 // Nothing listens to a straight move but a linear rack, which it passes wide of: no trace, no
 // observer, no cutting time counted, no spindle load or breakage to follow. Most moves of a program.
 bool Controller::ignoresMove(const machine::Axes& from, const machine::Axes& to) const {
-    return !trace_ && !settings_.observer && !toolLife_.inUse() && !watchesSpindleLoad() && magazine_.ignores(from, to);
+    return !status_.trace() && !settings_.observer && !toolLife_.manager().inUse() && !breakage_.active() &&
+           magazine_.ignores(from, to);
+}
+
+bool Controller::manageTools(macro::EvaluatedBlock& block) {
+    const bool took = toolLife_.applyBlock(block);
+    if (toolLife_.manager().enabled()) {
+        machine_.setObserver(this); // groups entered by G10 L3: cutting time counts from now on
+    }
+    return took;
+}
+
+// Tool breakage in the simulated world and the spindle load monitor (the FANUC article's second
+// method): the load is sampled as virtual time passes and an anomaly stops the run like any alarm.
+void Controller::setUpBreakageWatch() {
+    if (config_.spindleLoad) {
+        config_.spindleLoad->lambda =
+            params::fanucParameter(config_.fanucParameters, params::kLoadMeterFullScale);
+    }
+    breakage_.setUp(config_, settings_);
+    if (breakage_.active()) {
+        machine_.setObserver(this); // the load follows every move; a break changes the tool's length
+    }
+}
+
+void Controller::watchSpindleLoad(const machine::MachineEvent& event) {
+    auto anomaly = breakage_.sample(event);
+    if (anomaly && state_ == RunState::Running && executor_) {
+        interruptMotion(anomaly->time, false); // the axes brake from where they were then
+        throw macro::MacroError{AlarmCode::SpindleLoad, anomaly->message, 0};
+    }
 }
 
 // The magazine sees every event, also the safe state an alarm drives the outputs to (the drawbar
@@ -239,16 +263,8 @@ void Controller::feedMagazine(const machine::MachineEvent& event) {
     try {
         magazine_.onMachineEvent(event);
     } catch (const macro::MacroError& error) {
-        postMessage(error.message);
+        status_.postMessage(error.message);
     }
-}
-
-void Controller::postMessage(std::string text) {
-    text = clipEcho(std::move(text));
-    if (trace_) {
-        trace_->message(machine_.time(), text, source());
-    }
-    messages_.add(std::move(text));
 }
 
 // Alarms stop motion and drive every output to its safe (off) state, as the real controller does.
@@ -269,29 +285,16 @@ RunReport Controller::run() {
     while (state_ == RunState::Running) {
         advance(std::numeric_limits<double>::infinity());
         if (state_ == RunState::Hold && !programStop_.empty()) {
-            postMessage(programStop_ + ": START pressed (run without an operator)");
+            status_.postMessage(programStop_ + ": START pressed (run without an operator)");
             displayTime_ = machine_.time(); // START comes the moment the machine stands still
             resume();
         }
     }
     panel_.setUnattended(false);
-    if (trace_) {
+    if (status_.trace()) {
         machine_.reportLinkedInputs(machine_.time());
     }
-    return snapshot();
-}
-
-RunReport Controller::snapshot() const {
-    RunReport out;
-    switch (state_) {
-    case RunState::Alarm:
-    case RunState::EStop: out.status = RunStatus::Alarm; break;
-    default: out.status = executor_ ? RunStatus::Ok : RunStatus::Error; break;
-    }
-    out.alarm = alarm_;
-    out.diagnostics = diagnostics_;
-    fill(out);
-    return out;
+    return status_.report();
 }
 
 bool Controller::start() {
@@ -315,7 +318,7 @@ bool Controller::start() {
         return false;
     }
     auto unit = program_.mainUnit();
-    toolLife_.startRun();
+    toolLife_.manager().startRun();
     displayTime_ = machine_.time();
     runStartedAt_ = displayTime_;
     timeLimitFrom_ = runStartedAt_;
@@ -373,23 +376,23 @@ int Controller::stepOnce(int toolBefore) {
     }
     if (auto stop = interp_.takeStop()) {
         if (inEventHook_) {
-            postMessage(stop->what + ": START pressed (a hook file runs to its end)");
+            status_.postMessage(stop->what + ": START pressed (a hook file runs to its end)");
         } else {
             stopForOperator(*stop);
         }
     }
     if (interp_.hasLookAheadChanges()) {
         for (const std::string& code : interp_.takeLookAheadChanges()) {
-            if (trace_) {
-                trace_->lookAhead(machine_.time(), code, source());
+            if (status_.trace()) {
+                status_.trace()->lookAhead(machine_.time(), code, status_.source());
             }
         }
     }
     const int toolAfter = spindleTool();
     if (toolAfter != toolBefore) {
         syncToolLength();
-        if (trace_) {
-            trace_->toolChange(machine_.time(), toolBefore, toolAfter, source());
+        if (status_.trace()) {
+            status_.trace()->toolChange(machine_.time(), toolBefore, toolAfter, status_.source());
         }
     }
     return toolAfter;
@@ -402,8 +405,8 @@ void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& s
     TraceSource where{program_.fileName(stop.location), stop.location.line};
     programStop_ = stop.what + " (" + where.file + ":" + std::to_string(where.line) + ")";
     state_ = RunState::Hold;
-    if (trace_) {
-        trace_->programStop(machine_.time(), stop.what, where);
+    if (status_.trace()) {
+        status_.trace()->programStop(machine_.time(), stop.what, where);
     }
     runPauseHook();
 }
@@ -423,67 +426,16 @@ void Controller::raiseAlarm(const Alarm& alarm) {
     alarm_ = alarm;
     panel_.clearDialog();
     if (executor_ && executor_->changingTool()) {
-        toolLife_.revertChange(); // the change never completed: its tool is not in use
+        toolLife_.manager().revertChange(); // the change never completed: its tool is not in use
     }
     state_ = RunState::Alarm;
     enterSafeState();
-    if (trace_) {
-        trace_->alarm(machine_.time(), alarm);
+    if (status_.trace()) {
+        status_.trace()->alarm(machine_.time(), alarm);
     }
     if (alarm.code != AlarmCode::EmergencyStop) {
         runEventHook(config::Hook::Error); // its own alarm is only a message: the first one stands
     }
-}
-
-// The tool in the spindle decides where the setter trips: the simulated world's tool length (as
-// it is now: a broken tool is shorter) and radius.
-void Controller::syncToolLength() {
-    int tool = spindleTool();
-    machine_.setToolLength(world_.length(tool, machine_.time()));
-    machine_.setToolRadius(world_.diameter(tool).value_or(0.0) / 2.0);
-}
-
-int Controller::spindleTool() const {
-    // what the controller believes: #1300 on the M350, the tool M85 stored on a FANUC
-    const int believed = config_.dialect->id == gcode::DialectId::M350
-                             ? saturatingInt(config_.parameters.get(param::kCurrentTool))
-                             : fanucSpindleTool_;
-    const devices::Magazine* magazine = magazine_.device();
-    if (!magazine) {
-        return believed;
-    }
-    // what the spindle really holds; a virtual tool (above the magazine) was put in by hand,
-    // which the magazine does not see
-    const int held = magazine->spindleTool();
-    return held == 0 && believed > magazine->pocketCount() ? believed : held;
-}
-
-void Controller::fill(RunReport& out) const {
-    out.machine = machine_.position();
-    out.work = interp_.workPosition();
-    out.tool = spindleTool();
-    const devices::Magazine* magazine = magazine_.device();
-    int capacity = config_.dialect->id == gcode::DialectId::M350
-                       ? params::magazineCapacity(config_.parameters)
-                       : magazine ? magazine->pocketCount() : std::clamp(config_.magazineCapacity, 0, params::kMostPockets);
-    // Without a magazine device every tool has its own pocket, empty while it is in the spindle.
-    for (int pocket = 1; pocket <= capacity; ++pocket) {
-        if (magazine) {
-            out.pockets[pocket] = pocket <= magazine->pocketCount() ? magazine->pocketTool(pocket) : 0;
-        } else {
-            out.pockets[pocket] = pocket == out.tool ? 0 : pocket;
-        }
-    }
-    if (magazine) {
-        out.fallenTools = magazine->droppedTools();
-    }
-    for (int port = 1; port <= machine::kOutputCount; ++port) {
-        out.outputs[static_cast<std::size_t>(port - 1)] = machine_.output(port);
-    }
-    out.messages = messages_.list();
-    out.messagesOmitted = messages_.omitted();
-    out.simTime = machine_.time();
-    out.blocks = executor_ ? executor_->blocksExecuted() : 0;
 }
 
 } // namespace m350::controller

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "core/files/AtomicFile.h"
 #include "core/config/HookFiles.h"
 #include "core/params/IoPorts.h"
 #include "core/config/MachineConfig.h"
@@ -15,8 +14,11 @@
 #include "core/controller/RunSettings.h"
 #include "core/controller/RunState.h"
 #include "core/controller/RunView.h"
-#include "core/controller/SpindleLoadWatch.h"
+#include "core/controller/StatusBoard.h"
 #include "core/controller/MagazineDriver.h"
+#include "core/controller/ToolBreakage.h"
+#include "core/controller/ToolLifeCounter.h"
+#include "core/controller/ToolTableEdits.h"
 #include "core/controller/TraceWriter.h"
 #include "core/gcode/Program.h"
 #include "core/interp/ModalInterpreter.h"
@@ -27,7 +29,6 @@
 #include "core/macro/MachineAccess.h"
 #include "core/macro/VariableStore.h"
 #include "core/tools/ToolData.h"
-#include "core/tools/ToolLifeManager.h"
 
 #include <array>
 #include <map>
@@ -114,11 +115,8 @@ public:
     const BreakRun& breakRun() const { return breakRun_; }
     double displayTime() const override { return displayTime_; }
     machine::Axes displayPosition() const { return machine_.positionAt(displayTime_); }
-    RunReport snapshot() const;
     // What the panel shows now (PanelStatusView.cpp): positions at the display time, modes, IO.
     PanelStatus panelStatus();
-    // The active modal codes as the Monitor page prints them: "G00 G17 G90 G94 G21 G40 G49 G80 G54 F3000 S0".
-    std::string modalLine() const;
 
     // 回零 homing and which axes are homed (Homing.h).
     Homing& homing() { return homing_; }
@@ -142,9 +140,6 @@ public:
     // G00 follows it when param 253 = 1. Returns the percentage in effect.
     double setFeedOverride(double percent);
 
-    // The spindle as the panel shows it: STOP FWD REV ORIENT, JOG while the spindle jog key turns
-    // it, TAP while a tapping cycle (G84/G74) is active and it turns.
-    machine::SpindleState spindleDisplay() const;
     // The operator's manual control: jog keys, handwheel, 试切 guide, manual and spindle
     // overrides, spindle jog, the IO page's output switches (ManualControl.h).
     ManualControl& manual() { return manual_; }
@@ -156,63 +151,29 @@ public:
     // A trainer presses what is wired to input `pin` for a moment: it reads `level` for `seconds`.
     void pressInput(int pin, int level, double seconds) { machine_.pulseInput(pin, level, seconds); }
 
-    // The tool table (ToolTableEdits.cpp; one store, see tools::ToolData): on the M350 a tool's Z is
-    // its parameter 930-945 / 973-992, on a FANUC offset n is tool n's row. Edits are refused while
-    // a program runs or holds; `why` says why. A FANUC's active G43 length is not re-read (the next
-    // G43 or H does), as in LinuxCNC.
-    tools::ToolTable toolTable() const { return tools_.table(); }
-    bool putTool(const tools::ToolEntry& entry, std::string* why = nullptr);
-    bool removeTool(int tool, std::string* why = nullptr);
-    bool replaceToolTable(const tools::ToolTable& table, std::string* why = nullptr);
-    // Touch off (LinuxCNC's "Touch Off" to the tool table): with tool n in the spindle and its tip on
-    // a gauge or a cut surface whose work Z is `workZ` (in the program's unit), the tool's Z changes
-    // so that the display reads `workZ` there: on the M350 its parameter 930+ (applied at once), on
-    // a FANUC its row (G10 L10 P n Z`workZ`) followed by G43 H n. Refused with no tool, a tool the
-    // M350 has no Z parameter for, while a program runs or holds or a manual move is under way.
-    bool touchOffTool(double workZ, std::string* why = nullptr);
-    // What the machine folder keeps beside tool.tbl (config::MachineFolder::saveToolTable writes
-    // both; controller::saveToolTable is the whole save): on the M350 the tools' Z parameters
-    // 930-945 and 973-992 as they are now, on a FANUC none.
-    std::map<int, double> toolZParameters() const;
-    // Whether the tool data changed since the start or the last save (by an edit, G10, a macro
-    // writing #1430 ...): what a panel saves after. The saver marks the data it saved.
-    bool toolTableChanged() const { return !(tools_.mark() == savedToolMark_); }
-    void markToolTableSaved(tools::ToolData::Mark saved) { savedToolMark_ = saved; }
-    // Changes when the tool data does (for a view that redraws only then).
-    tools::ToolData::Mark toolTableMark() const { return tools_.mark(); }
+    // The tool table as the panel edits it (ToolTableEdits.h): rows, an import, touch off, whether
+    // it changed since the last save (controller::saveToolTable in ToolTableSave.h saves it).
+    ToolTableEdits& toolTableEdits() { return toolEdits_; }
+    const ToolTableEdits& toolTableEdits() const { return toolEdits_; }
 
     // Reads any variable as a macro would, for --print and the panel.
     macro::Value variable(int number);
     const gcode::Dialect& dialect() const { return *config_.dialect; }
-    // What the external output device (POPEN, DPRNT, BPRNT, PCLOS) received since the controller
-    // started (bounded: RunSettings::externalOutputLimit); whether a program ever opened it.
-    std::string externalOutput() const { return devices_.received(); }
-    bool externalOutputOpened() const { return devices_.outputOpened(); }
-    // Whether externalOutput() leaves records out (it reached its limit), and every record sent since
-    // the last call whatever that limit did (a bounded wait: ExternalDevices::NewRecords).
-    bool externalOutputCapped() const { return devices_.outputCapped(); }
-    ExternalDevices::NewRecords takeNewExternalRecords() { return devices_.takeNewRecords(); }
-    // Writes the end of a trace that reached its limit (RunSettings::traceLimit): call once the run
-    // is over, before the trace file is closed.
-    void finishTrace() {
-        if (trace_) trace_->finish();
-    }
+    // The external output device (POPEN, DPRNT, BPRNT, PCLOS) and the Modbus slaves (ExternalDevices.h).
+    ExternalDevices& externalDevices() { return devices_; }
+    const ExternalDevices& externalDevices() const { return devices_; }
+    // What the controller says as a run goes (StatusBoard.h): the messages, the #1503 status line, the trace.
+    StatusBoard& status() { return status_; }
+    const StatusBoard& status() const { return status_; }
     // The machine's configuration as it stands: parameters, offsets of the folder, the tool table now.
     config::MachineConfig config() const;
 
-    // FANUC tool life management (ToolLife.cpp; core/tools/ToolLifeManager.h): groups from the
-    // machine folder's toollife.txt or G10 L3; T<ignore+n> selects group n's tool, M06 (on the M350:
-    // the T word) starts counting, feed moves and arcs of a run count for a minutes group. The
-    // caller writes the data back (config::MachineFolder::saveToolLife) when changed().
-    tools::ToolLifeManager& toolLife() { return toolLife_; }
-    const tools::ToolLifeManager& toolLife() const { return toolLife_; }
-    // The operator's tool life reset of a group (its tools' used life to 0). Refused (false, with
-    // the reason) while a program runs or holds, or for a group that is not entered.
-    bool resetToolLife(int group, std::string* why = nullptr);
-    // Tool breakage (SpindleLoad.cpp): the spindle load as the PMC reads it, its monitor and history;
+    // FANUC tool life management (ToolLifeCounter.h): the groups, the tool in use, the operator's reset.
+    ToolLifeCounter& toolLife() { return toolLife_; }
+    const ToolLifeCounter& toolLife() const { return toolLife_; }
+    // Tool breakage (ToolBreakage.h): the spindle load as the PMC reads it, its monitor and history;
     // the tools as they really are (a break from RunSettings::toolBreaks shortens one at its time).
-    const SpindleLoadWatch& spindleLoad() const { return loadWatch_; }
-    const machine::ToolWorld& toolWorld() const { return world_; }
+    const ToolBreakage& toolBreakage() const { return breakage_; }
 
     // macro::MachineAccess
     bool manageTools(macro::EvaluatedBlock& block) override;
@@ -223,18 +184,16 @@ public:
     // machine::MachineObserver
     void onMachineEvent(const machine::MachineEvent& event) override;
     bool ignoresMove(const machine::Axes& from, const machine::Axes& to) const override;
-    void feedMagazine(const machine::MachineEvent& event);
 
 private:
+    void feedMagazine(const machine::MachineEvent& event);
     bool load(const gcode::SourceText& source, gcode::FileRole role);
     void applyParameterOverrides(); // --param, before anything reads the parameters
     void applySettings();
     void configureMachine();
-    void syncToolLength();
-    void countCuttingTime(const machine::MachineEvent& event);
+    void syncToolLength() { breakage_.syncToolLength(); }
     void setUpBreakageWatch();
     void watchSpindleLoad(const machine::MachineEvent& event);
-    bool watchesSpindleLoad() const { return loadWatch_.model() || !world_.breaks().empty(); }
     void enterSafeState();
     void stepOnce();
     int stepOnce(int toolBefore); // the spindle tool after the step
@@ -261,10 +220,7 @@ private:
     std::optional<Alarm> runHookProgramToEnd(const std::string& name);
     void runPauseHook();
     void returnAfterPauseHook();
-    void fill(RunReport& out) const;
-    int spindleTool() const;
-    TraceSource source() const;
-    void postMessage(std::string text);
+    int spindleTool() const { return magazine_.spindleTool(); }
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
     bool optionalStopOn();
     OperatorPanel newOperatorPanel();
@@ -273,7 +229,6 @@ private:
     RunSettings settings_;
     interp::WorkOffsets offsets_;
     tools::ToolData tools_; // before interp_, which reads it
-    tools::ToolData::Mark savedToolMark_;
     machine::SimulatedMachine machine_;
     machine::ScanMachine scan_{machine_}; // what the interpreter drives: machine_, or a scan of it
     interp::ModalInterpreter interp_;
@@ -281,10 +236,7 @@ private:
     gcode::Program program_;
     std::vector<gcode::Diagnostic> diagnostics_;
     std::unique_ptr<macro::Executor> executor_;
-    std::unique_ptr<TraceWriter> trace_;
     int fanucSpindleTool_ = 0;
-    MessageLog messages_;
-    std::string statusMessage_; // the #1503 text the status line shows now (cleared by #1503 = 1000)
     double feedOverride_ = 100.0;
     double runStartedAt_ = 0.0;
     double timeLimitFrom_ = 0.0; // the run's start, moved on by its holds: --max-sim-time counts from here
@@ -300,11 +252,12 @@ private:
     std::string programStop_;                        // see programStop()
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
+    StatusBoard status_;      // before devices_, which writes to its trace
     ExternalDevices devices_; // the external output device and the Modbus slaves
-    tools::ToolLifeManager toolLife_;
-    machine::ToolWorld world_;
-    SpindleLoadWatch loadWatch_;
-    OperatorPanel panel_; // after what its parts read
+    ToolLifeCounter toolLife_;
+    ToolBreakage breakage_;    // the tools as they really are, the spindle load
+    ToolTableEdits toolEdits_; // the panel's edits of tools_
+    OperatorPanel panel_;      // after what its parts read
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 
     // BreakRun::Starter (RunStart.cpp)

@@ -83,7 +83,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         }
     }
     case VariableKind::ToolOffset: return Value::of(tools_.offsetValue(info.index));
-    case VariableKind::SpindleLoad: return Value::of(loadWatch_.reg());
+    case VariableKind::SpindleLoad: return Value::of(breakage_.spindleLoad().reg());
     case VariableKind::Alarm:
     case VariableKind::StopMessage: return Value::of(0);
     default: return Value::empty();
@@ -109,10 +109,10 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
     }
     case VariableKind::Message:
         if (value == kClearMessage) {
-            statusMessage_.clear();
+            status_.clearStatus();
         } else if (!text.empty()) {
-            statusMessage_ = std::string(text);
-            postMessage(std::string(text));
+            status_.showStatus(std::string(text));
+            status_.postMessage(std::string(text));
         }
         return std::nullopt;
     case VariableKind::Dialog: panel_.showDialog(value, text); return std::nullopt;
@@ -121,7 +121,7 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
         return "macro alarm " + std::to_string(3000 + n) + (text.empty() ? "" : ": " + std::string(text));
     }
     case VariableKind::StopMessage:
-        postMessage(std::string(text) + " (#3006 stop: continued in a headless run)");
+        status_.postMessage(std::string(text) + " (#3006 stop: continued in a headless run)");
         return std::nullopt;
     default: return "cannot write " + store_.map().describeText(number);
     }

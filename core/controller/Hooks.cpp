@@ -102,7 +102,7 @@ std::optional<Alarm> Controller::runEventHook(config::Hook hook) {
     const std::string name(config::hookFile(hook).fileName);
     auto source = gcode::readSourceFile(*path);
     if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
-        postMessage(name + ": not run: " + error->message);
+        status_.postMessage(name + ": not run: " + error->message);
         return std::nullopt;
     }
     const auto& text = std::get<gcode::SourceText>(source);
@@ -112,7 +112,7 @@ std::optional<Alarm> Controller::runEventHook(config::Hook hook) {
     if (gcode::hasBlockingError(diagnostics)) {
         for (const gcode::Diagnostic& d : diagnostics) {
             if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
-                postMessage(gcode::formatDiagnostic(d) + " (" + name + " not run)");
+                status_.postMessage(gcode::formatDiagnostic(d) + " (" + name + " not run)");
                 break;
             }
         }
@@ -133,8 +133,8 @@ std::optional<Alarm> Controller::runHookProgramToEnd(const std::string& name) {
     if (!unit || !executor_->start(*unit)) {
         return std::nullopt;
     }
-    if (trace_) {
-        trace_->message(machine_.time(), name + " runs", source());
+    if (status_.trace()) {
+        status_.trace()->message(machine_.time(), name + " runs", status_.source());
     }
     const bool unattended = panel_.unattended();
     panel_.setUnattended(true);
@@ -155,7 +155,7 @@ std::optional<Alarm> Controller::runHookProgramToEnd(const std::string& name) {
     const Alarm& alarm = *executor_->alarm();
     std::ostringstream where;
     where << alarm.file << ':' << alarm.line << ':' << alarm.column << ": " << alarm.message;
-    postMessage(where.str() + " (alarm in " + name + ")");
+    status_.postMessage(where.str() + " (alarm in " + name + ")");
     return alarm;
 }
 

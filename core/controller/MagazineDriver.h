@@ -1,9 +1,12 @@
 #pragma once
 
+#include "core/common/Numeric.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/RunSettings.h"
 #include "core/controller/TraceWriter.h"
+#include "core/devices/Magazine.h"
 #include "core/machine/MachineTypes.h"
+#include "core/params/ParameterNumbers.h"
 
 #include <Eigen/Core>
 
@@ -14,7 +17,6 @@
 #include <string>
 
 namespace m350::devices {
-class Magazine;
 class LinearRack;
 class ServoDisc;
 class UmbrellaCarousel;
@@ -58,6 +60,20 @@ public:
     void build();
     // The device, nullptr when the machine has none.
     const devices::Magazine* device() const { return device_.get(); }
+    // The tool in the spindle: what the magazine's spindle holds, else what the controller believes
+    // (#1300 on the M350, the tool M85 stored on a FANUC). Asked before every block: inline.
+    int spindleTool() const {
+        const int believed = context_.config.dialect->id == gcode::DialectId::M350
+                                 ? saturatingInt(context_.config.parameters.get(param::kCurrentTool))
+                                 : context_.pmcSpindleTool;
+        if (!device_) {
+            return believed;
+        }
+        // what the spindle really holds; a virtual tool (above the magazine) was put in by hand,
+        // which the magazine does not see
+        const int held = device_->spindleTool();
+        return held == 0 && believed > device_->pocketCount() ? believed : held;
+    }
     // Feeds one machine event to the device; throws a `crash` or `sensor_timeout` MacroError.
     void onMachineEvent(const machine::MachineEvent& event);
     // A straight move from `from` to `to` the device need not be told of: far from a linear rack

@@ -25,33 +25,7 @@ PanelStatus::Run runOf(Controller::RunState state) {
     return PanelStatus::Run::Idle;
 }
 
-// One modal group as the panel's modal line prints it: G00, G17, G80 ...
-std::string gWord(double code) {
-    char text[16];
-    double whole = std::floor(code);
-    if (code == whole) {
-        std::snprintf(text, sizeof text, "G%02d", static_cast<int>(whole));
-    } else {
-        std::snprintf(text, sizeof text, "G%.1f", code);
-    }
-    return text;
-}
-
 } // namespace
-
-std::string Controller::modalLine() const {
-    const interp::ModalState& s = interp_.state();
-    std::string line;
-    for (int group : {1, 2, 3, 5, 6, 7, 8, 9}) {
-        line += gWord(s.groups[static_cast<std::size_t>(group)]);
-        line += ' ';
-    }
-    int slot = interp_.activeSlot();
-    line += slot == 0 ? "G92" : gWord(53 + slot);
-    char words[64];
-    std::snprintf(words, sizeof words, " F%.0f S%.0f", s.feed, s.spindleSpeed);
-    return line + words;
-}
 
 PanelStatus Controller::panelStatus() {
     PanelStatus out;
@@ -81,7 +55,7 @@ PanelStatus Controller::panelStatus() {
     out.guideDirection = manual_.state().guide ? manual_.state().override.direction() : 0;
     out.guideOverride = manual_.state().guide ? std::abs(manual_.state().override.value()) * 100.0 : 0.0;
     out.feed = interp_.state().feed;
-    out.spindle = spindleDisplay();
+    out.spindle = status_.spindleDisplay();
     // SRO scales what the spindle turns at, up to its maximum (param 82)
     out.spindleRpm = machine_.spindleTurning() ? std::min(machine_.spindleRpm() * manual_.state().spindleOverride / 100.0,
                                                           machine_.limits().maxSpindleRpm)
@@ -90,8 +64,8 @@ PanelStatus Controller::panelStatus() {
     out.totalCount = saturatingInt(config_.parameters.get(param::kTotalRunCount));
     out.pieceCount = saturatingInt(config_.parameters.get(param::kPieceCount));
     out.runSeconds = state_ == RunState::Idle ? 0.0 : std::max(0.0, displayTime_ - runStartedAt_);
-    out.modalLine = modalLine();
-    out.message = statusMessage_;
+    out.modalLine = status_.modalLine();
+    out.message = status_.statusLine();
     out.programStop = programStop_;
     if (auto dialog = panel_.pendingDialog()) {
         out.dialog = dialog->text;

@@ -13,7 +13,7 @@ bool Controller::load(const gcode::SourceText& source, gcode::FileRole role) {
     executor_.reset();
     breakRun_.forgetPause();
     hook_.reset();
-    loadWatch_.monitor().restart();
+    breakage_.restartMonitor();
     program_ = gcode::Program{};
     diagnostics_.clear();
     parseWithLibraries(program_, source, role, diagnostics_);

@@ -19,14 +19,14 @@ void Controller::hold() {
         // the handwheel guide has the display behind the moves already issued (a retrace): their
         // blocks have run, so the run waits where the display is and goes on from there
         state_ = RunState::Hold;
-        if (trace_) {
-            trace_->runState(displayTime_, "pause");
+        if (status_.trace()) {
+            status_.trace()->runState(displayTime_, "pause");
         }
         runPauseHook();
         return;
     }
     remainder_ = interruptMotion(displayTime_, false);
-    toolLife_.cutShortAt(machine_.time());
+    toolLife_.manager().cutShortAt(machine_.time());
     breakRun_.rememberPause(remainder_);
     const params::ParameterTable& p = config_.parameters;
     if (p.get(param::kStopSpindleOnPause) != 0.0 && machine_.spindleState() != machine::SpindleState::Stop) {
@@ -40,8 +40,8 @@ void Controller::hold() {
         machine_.rapid(up);
     }
     state_ = RunState::Hold;
-    if (trace_) {
-        trace_->runState(displayTime_, "pause");
+    if (status_.trace()) {
+        status_.trace()->runState(displayTime_, "pause");
     }
     runPauseHook();
 }
@@ -54,8 +54,8 @@ void Controller::resume() {
         timeLimitFrom_ += displayTime_ - machine_.time(); // a long hold is no runaway
         machine_.blockTime(displayTime_ - machine_.time()); // the clock ran while paused
     }
-    if (trace_) {
-        trace_->runState(machine_.time(), "resume");
+    if (status_.trace()) {
+        status_.trace()->runState(machine_.time(), "resume");
     }
     returnAfterPauseHook();
     if (liftedBy_ > 0.0) {
@@ -73,7 +73,7 @@ void Controller::resume() {
     const bool cutting = remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Feed ||
                          remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Arc;
     if (cutting && !(executor_ && executor_->changingTool())) {
-        toolLife_.cut(remainderFrom, machine_.time()); // the rest of the cut the hold stopped
+        toolLife_.manager().cut(remainderFrom, machine_.time()); // the rest of the cut the hold stopped
     }
     remainder_ = {};
     programStop_.clear();
@@ -82,7 +82,7 @@ void Controller::resume() {
 
 void Controller::reset() {
     machine::SimulatedMachine::Remainder rest = interruptMotion(displayTime_, true);
-    toolLife_.cutShortAt(machine_.time());
+    toolLife_.manager().cutShortAt(machine_.time());
     if (state_ == RunState::Running) {
         breakRun_.rememberPause(rest); // a run stopped by RESET resumes as a paused one does
     }
@@ -99,8 +99,8 @@ void Controller::reset() {
     panel_.clearSensorWait();
     panel_.clearDialog();
     state_ = RunState::Idle; // start() runs the program again from its beginning
-    if (trace_) {
-        trace_->runState(displayTime_, "reset");
+    if (status_.trace()) {
+        status_.trace()->runState(displayTime_, "reset");
     }
 }
 
@@ -112,16 +112,9 @@ double Controller::setFeedOverride(double percent) {
     return applied;
 }
 
-machine::SpindleState Controller::spindleDisplay() const {
-    machine::SpindleState state = machine_.spindleState();
-    const int cycle = interp_.state().group(9);
-    bool turning = state == machine::SpindleState::Forward || state == machine::SpindleState::Reverse;
-    return turning && (cycle == 84 || cycle == 74) ? machine::SpindleState::Tap : state;
-}
-
 void Controller::emergencyStop(const std::string& why) {
     interruptMotion(displayTime_, true);
-    toolLife_.cutShortAt(machine_.time());
+    toolLife_.manager().cutShortAt(machine_.time());
     if (machine_.time() < displayTime_) {
         machine_.blockTime(displayTime_ - machine_.time());
     }
@@ -130,8 +123,8 @@ void Controller::emergencyStop(const std::string& why) {
                      (why.empty() ? std::string("急停 emergency stop") : why) + ": motion stopped at once, outputs off",
                      "", 0, 0});
     state_ = RunState::EStop;
-    if (trace_) {
-        trace_->runState(displayTime_, "estop");
+    if (status_.trace()) {
+        status_.trace()->runState(displayTime_, "estop");
     }
 }
 

@@ -30,8 +30,8 @@ void Controller::startClock(const std::string& where) {
     machine_.blockTime(displayTime_ - machine_.time());
     runStartedAt_ = displayTime_;
     timeLimitFrom_ = runStartedAt_;
-    if (trace_) {
-        trace_->runState(machine_.time(), "start at " + where);
+    if (status_.trace()) {
+        status_.trace()->runState(machine_.time(), "start at " + where);
     }
 }
 

@@ -152,7 +152,7 @@ test::ProgramRun passesThroughASmallLimit() {
 TEST(BoundedOutput, ExternalOutputInALoopKeepsItsFirstAndLastRecords) {
     auto run = passesThroughASmallLimit();
     EXPECT_RUN_OK(run);
-    const std::string out = run.controller->externalOutput();
+    const std::string out = run.controller->externalDevices().received();
     EXPECT_LT(out.size(), 4200u);
     EXPECT_EQ(out.substr(0, 10), "PASS    1\n");
     EXPECT_EQ(out.substr(out.size() - 10), "PASS 2000\n");
@@ -165,15 +165,15 @@ TEST(BoundedOutput, ExternalOutputInALoopKeepsItsFirstAndLastRecords) {
 TEST(BoundedOutput, EveryExternalRecordIsHandedOverPastTheLimit) {
     auto run = passesThroughASmallLimit();
     EXPECT_RUN_OK(run);
-    EXPECT_TRUE(run.controller->externalOutputCapped());
-    const controller::ExternalDevices::NewRecords fresh = run.controller->takeNewExternalRecords();
+    EXPECT_TRUE(run.controller->externalDevices().outputCapped());
+    const controller::ExternalDevices::NewRecords fresh = run.controller->externalDevices().takeNewRecords();
     EXPECT_EQ(fresh.missed, 0u);
     ASSERT_EQ(fresh.records.size(), 2000u);
     for (std::size_t i = 0; i < fresh.records.size(); ++i) {
         ASSERT_EQ(fresh.records[i].rfind("PASS", 0), 0u) << fresh.records[i];
         ASSERT_EQ(std::stoi(fresh.records[i].substr(4)), static_cast<int>(i + 1)) << fresh.records[i];
     }
-    EXPECT_TRUE(run.controller->takeNewExternalRecords().records.empty()) << "taken once";
+    EXPECT_TRUE(run.controller->externalDevices().takeNewRecords().records.empty()) << "taken once";
 }
 
 // A run nobody takes records from (m350-sim) holds only the newest megabyte of them.
@@ -181,8 +181,8 @@ TEST(BoundedOutput, RecordsNobodyTakesWaitWithinTheirBudget) {
     auto run = test::runFanuc(lines({"#1 = 0", "POPEN", "WHILE [#1 LT 80000] DO1", "#1 = #1 + 1",
                                      "DPRNT[RECORD*NUMBER*#1[60]]", "END1", "PCLOS", "M30"}));
     EXPECT_RUN_OK(run);
-    EXPECT_FALSE(run.controller->externalOutputCapped()) << "1.7 MB is within the default 64 MiB";
-    const controller::ExternalDevices::NewRecords fresh = run.controller->takeNewExternalRecords();
+    EXPECT_FALSE(run.controller->externalDevices().outputCapped()) << "1.7 MB is within the default 64 MiB";
+    const controller::ExternalDevices::NewRecords fresh = run.controller->externalDevices().takeNewRecords();
     std::size_t bytes = 0;
     for (const std::string& record : fresh.records) {
         bytes += record.size();

@@ -98,7 +98,7 @@ TEST(BreakageBySpindleLoad, TheCutReadsItsHandComputedLoadIn1032) {
                           withTool(1));
     ASSERT_EQ(run.report.status, controller::RunStatus::Ok) << run.alarmText();
     EXPECT_EQ(run.number(100), 3329); // 33.3 % -> L 7630 -> 14300 x 7630 / 32767
-    const auto& history = run.controller->spindleLoad().monitor().history();
+    const auto& history = run.controller->toolBreakage().spindleLoad().monitor().history();
     ASSERT_FALSE(history.empty());
     EXPECT_DOUBLE_EQ(history.back().percent, 33.29);
     EXPECT_TRUE(history.back().cutting);

@@ -94,7 +94,7 @@ std::string changeTo(gcode::DialectId dialect, int tool) {
 }
 
 std::string alarmText(const Controller& c) {
-    const controller::RunReport r = c.snapshot();
+    const controller::RunReport r = c.status().report();
     return r.alarm ? r.alarm->file + ":" + std::to_string(r.alarm->line) + ": " + r.alarm->message : std::string();
 }
 
@@ -123,10 +123,10 @@ TEST_P(EStopSoak, EveryToolStaysInOnePlaceOutputsAreSafeAndTheMachineRunsAgain) 
     const gcode::DialectId dialect = cfg.dialect->id;
     Controller c(std::move(cfg), {});
     std::set<int> tools;
-    for (auto [tool, count] : census(c.snapshot()).places) {
+    for (auto [tool, count] : census(c.status().report()).places) {
         tools.insert(tool);
     }
-    ASSERT_GE(tools.size(), 2u) << census(c.snapshot()).text;
+    ASSERT_GE(tools.size(), 2u) << census(c.status().report()).text;
     std::mt19937 random(kSeed);
     std::uniform_int_distribution<std::size_t> pick(0, tools.size() - 1);
     std::uniform_real_distribution<double> moment(0.0, kLongestStopSeconds);
@@ -146,7 +146,7 @@ TEST_P(EStopSoak, EveryToolStaysInOnePlaceOutputsAreSafeAndTheMachineRunsAgain) 
 
         c.emergencyStop();
         ASSERT_EQ(c.runState(), Controller::RunState::EStop);
-        const controller::RunReport r = c.snapshot();
+        const controller::RunReport r = c.status().report();
         expectEveryToolInOnePlace(r, tools);
         for (int port = 1; port <= machine::kOutputCount; ++port) {
             auto function = params::outputOnPin(parameters, port);
@@ -156,13 +156,13 @@ TEST_P(EStopSoak, EveryToolStaysInOnePlaceOutputsAreSafeAndTheMachineRunsAgain) 
 
         c.reset();
         ASSERT_EQ(c.runState(), Controller::RunState::Idle);
-        ASSERT_FALSE(c.snapshot().alarm) << alarmText(c);
+        ASSERT_FALSE(c.status().report().alarm) << alarmText(c);
         // What the operator does after an E-stop in a change: the controller knows its tool only
         // from #1300 (M350) or the PMC's store (FANUC), which the macro sets at its own moments, so
         // they enter the tool the spindle holds.
         ASSERT_TRUE(c.setSpindleToolNumber(r.tool));
     }
-    const int held = c.snapshot().tool;
+    const int held = c.status().report().tool;
     const int last = *std::next(tools.begin(), static_cast<std::ptrdiff_t>(pick(random)));
     const int target = last != held ? last : *tools.begin() != last ? *tools.begin() : *tools.rbegin();
     ASSERT_TRUE(c.loadMdi({changeTo(dialect, target)}));

@@ -145,8 +145,8 @@ TEST(ExternalOutputRun, RecordsGoToTheDevice) {
         "M30",
     }));
     EXPECT_RUN_OK(run);
-    EXPECT_TRUE(run.controller->externalOutputOpened());
-    EXPECT_EQ(run.controller->externalOutput(), "X   128.474Y-   91.200T 23\n"
+    EXPECT_TRUE(run.controller->externalDevices().outputOpened());
+    EXPECT_EQ(run.controller->externalDevices().received(), "X   128.474Y-   91.200T 23\n"
                                                 "   MEASURED DIAMETER   \n"
                                                 "\n"
                                                 "X\x00\x01\xF5\xDA\n"s);
@@ -161,7 +161,7 @@ TEST(ExternalOutputRun, DprntWithoutPopenAlarmsOnItsLine) {
     EXPECT_EQ(run.report.alarm->message,
               "DPRNT without POPEN: the external output device is closed (open it with POPEN before DPRNT, close "
               "it with PCLOS)");
-    EXPECT_TRUE(run.controller->externalOutput().empty());
+    EXPECT_TRUE(run.controller->externalDevices().received().empty());
 }
 
 TEST(ExternalOutputRun, PclosClosesTheDevice) {
@@ -169,7 +169,7 @@ TEST(ExternalOutputRun, PclosClosesTheDevice) {
     ASSERT_TRUE(run.report.alarm);
     EXPECT_EQ(run.report.alarm->line, 4u);
     EXPECT_EQ(run.report.alarm->message.rfind("BPRNT without POPEN", 0), 0u) << run.report.alarm->message;
-    EXPECT_EQ(run.controller->externalOutput(), "A\n");
+    EXPECT_EQ(run.controller->externalDevices().received(), "A\n");
 }
 
 TEST(ExternalOutputRun, BprntValueTooLargeAlarmsAtTheVariable) {
@@ -188,7 +188,7 @@ TEST(ExternalOutputRun, BreakRunSendsOnlyWhatComesAfterTheStartLine) {
     std::string why;
     ASSERT_TRUE(c.breakRun().startAtLine(3, &why)) << why;
     EXPECT_EQ(c.advance(100.0), controller::Controller::RunState::Finished);
-    EXPECT_EQ(c.externalOutput(), "B\n"); // POPEN was scanned: the device is open; A is not sent again
+    EXPECT_EQ(c.externalDevices().received(), "B\n"); // POPEN was scanned: the device is open; A is not sent again
 }
 
 } // namespace

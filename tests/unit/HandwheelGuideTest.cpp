@@ -170,7 +170,7 @@ TEST(HandwheelGuide, ResetDuringARetraceLeavesTheMachineWhereItIsShown) {
     turn(*c, -2, 1.5);
     const machine::Axes retraced = at(*c);
     c->reset();
-    EXPECT_NEAR((c->snapshot().machine - retraced).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((c->status().report().machine - retraced).norm(), 0.0, 1e-12);
     EXPECT_NEAR((at(*c) - retraced).norm(), 0.0, 1e-12);
 }
 

@@ -49,14 +49,14 @@ TEST(HomeSwitchWorld, TheSwitchStaysWherePhysicallyItIsAfterJogsAndHoming) {
     Controller c(machineWithXSwitch(), unhomed());
     ASSERT_TRUE(c.loadMdi({"G91 G1 X-30 F3000"})); // 30 mm closer before homing
     ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
-    const double before = c.snapshot().simTime;
+    const double before = c.status().report().simTime;
     ASSERT_FALSE(c.homing().home({0}));
     // param 122 = 0: the switch, 2 mm beyond where homing leaves X, is now at machine X -2
-    EXPECT_NEAR(c.snapshot().machine(0), 0.0, 1e-9);
+    EXPECT_NEAR(c.status().report().machine(0), 0.0, 1e-9);
     ASSERT_TRUE(c.loadMdi(kMacroHoming));
     ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
     EXPECT_NEAR(c.variable(101).number, -2.0, 1e-6);
-    EXPECT_GT(c.snapshot().simTime, before);
+    EXPECT_GT(c.status().report().simTime, before);
 }
 
 TEST(HomeSwitchWorld, TheInputReadsTheSwitchByWhereTheAxisStands) {

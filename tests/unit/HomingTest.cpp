@@ -40,7 +40,7 @@ TEST(Homing, AxisRunsToItsSwitchBacksOffAndTakesTheHomePosition) {
     EXPECT_DOUBLE_EQ(c.variable(882).number, -5);
     EXPECT_DOUBLE_EQ(c.variable(1543).number, 1); // released again after the back-off
     // 30 mm at 10 mm/s, then 2 mm back at 2 mm/s
-    controller::RunReport r = c.snapshot();
+    controller::RunReport r = c.status().report();
     EXPECT_NEAR(r.simTime, 3.0 + 1.0, 1e-6);
 }
 

@@ -91,7 +91,7 @@ TEST_F(HookMachine, DualYGantryFndzeroLeavesFourAxesHomedWithAEqualToY) {
     Controller c(std::move(cfg), unhomed());
     ASSERT_TRUE(c.loadMdi({"G91 G00 A30", "G90"}));
     ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
-    ASSERT_DOUBLE_EQ(c.snapshot().machine(3), 30.0);
+    ASSERT_DOUBLE_EQ(c.status().report().machine(3), 30.0);
     ASSERT_TRUE(c.hasHook(Hook::HomeAll));
     ASSERT_TRUE(c.loadHook(Hook::HomeAll)) << diagnosticsOf(c);
     controller::RunReport r = c.run();
@@ -107,7 +107,7 @@ TEST_F(HookMachine, DualYGantryFndzeroLeavesFourAxesHomedWithAEqualToY) {
 TEST_F(HookMachine, WritingAMachinePositionUnhomesTheAxisWithoutMoving) {
     Controller c(machine(), {});
     ASSERT_TRUE(c.homing().homed(0));
-    double before = c.snapshot().simTime;
+    double before = c.status().report().simTime;
     ASSERT_TRUE(c.loadMdi({"#880=7.5"}));
     controller::RunReport r = c.run();
     EXPECT_DOUBLE_EQ(r.machine(0), 7.5);
@@ -199,7 +199,7 @@ TEST_F(HookMachine, PauseNcRunsWhenARunHoldsAndStartReturnsFirst) {
     c.hold();
     ASSERT_EQ(c.runState(), Controller::RunState::Hold);
     EXPECT_DOUBLE_EQ(c.variable(100).number, 1);
-    controller::RunReport held = c.snapshot();
+    controller::RunReport held = c.status().report();
     EXPECT_NEAR(held.machine(2), 5.0, 1e-9);
     double stoppedX = held.machine(0);
     EXPECT_GT(stoppedX, 5.0);
@@ -207,7 +207,7 @@ TEST_F(HookMachine, PauseNcRunsWhenARunHoldsAndStartReturnsFirst) {
     c.resume();
     while (c.advance(std::numeric_limits<double>::infinity()) == Controller::RunState::Running) {
     }
-    controller::RunReport done = c.snapshot();
+    controller::RunReport done = c.status().report();
     EXPECT_EQ(done.status, controller::RunStatus::Ok);
     EXPECT_NEAR(done.machine(0), 100.0, 1e-9);
     EXPECT_NEAR(done.machine(2), 0.0, 1e-9); // back down to where the hold stopped it
@@ -279,9 +279,9 @@ TEST_F(HookMachine, UserKeysRunTheirHookSwitchAnOutputOrNameAPanelKey) {
     EXPECT_DOUBLE_EQ(c.variable(100).number, 11);
 
     EXPECT_EQ(c.operatorPanel().pressUserKey(2).kind, controller::KeyPress::Kind::Output);
-    EXPECT_EQ(c.snapshot().outputs[8], 1);
+    EXPECT_EQ(c.status().report().outputs[8], 1);
     c.operatorPanel().pressUserKey(2);
-    EXPECT_EQ(c.snapshot().outputs[8], 0);
+    EXPECT_EQ(c.status().report().outputs[8], 0);
 
     controller::KeyPress k3 = c.operatorPanel().pressUserKey(3);
     EXPECT_EQ(k3.kind, controller::KeyPress::Kind::PanelKey);

@@ -132,7 +132,7 @@ TEST(IgnoredMove, TheSpindleLoadFollowsTheMovesFarFromTheRack) {
     config.spindleLoad = model;
     ProgramRun run = runProgram(config, "S6000 M03\n" + farProgram());
     EXPECT_RUN_OK(run);
-    const auto& history = run.controller->spindleLoad().monitor().history();
+    const auto& history = run.controller->toolBreakage().spindleLoad().monitor().history();
     // sampled while the feed moves lasted; with their events left out, only at the spindle's events
     EXPECT_TRUE(std::any_of(history.begin(), history.end(), [](const tools::LoadSample& s) { return s.cutting; }));
 }

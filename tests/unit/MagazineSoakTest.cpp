@@ -34,7 +34,7 @@ TEST_P(MagazineSoak, HundredRandomChangesLeaveEveryToolAccountedFor) {
     for (int change = 0; change < 100; ++change) {
         int target = pick(random);
         ASSERT_TRUE(c.loadMdi({"T" + std::to_string(target)}));
-        double before = c.snapshot().simTime;
+        double before = c.status().report().simTime;
         controller::RunReport r = c.run();
         ASSERT_EQ(r.status, controller::RunStatus::Ok) << "change " << change << " to T" << target << ": "
                                                       << (r.alarm ? r.alarm->message : "");

@@ -46,15 +46,15 @@ TEST(OperatorDialog, TheRunHoldsUntilEnterAndTakesTheEnterPath) {
     EXPECT_EQ(c->operatorPanel().pendingDialog()->text, "Change to T2?");
     EXPECT_EQ(c->operatorPanel().pendingDialog()->kind, 1);
     EXPECT_EQ(c->panelStatus().dialog, std::optional<std::string>("Change to T2?"));
-    EXPECT_EQ(c->snapshot().machine(0), 0.0); // nothing after the dialog's block ran
+    EXPECT_EQ(c->status().report().machine(0), 0.0); // nothing after the dialog's block ran
     EXPECT_EQ(c->variable(100).number, 0.0);
     c->operatorPanel().answerDialog(true);
     EXPECT_FALSE(c->operatorPanel().pendingDialog());
     EXPECT_FALSE(c->panelStatus().dialog);
     EXPECT_EQ(c->advance(60.0), RunState::Finished);
-    EXPECT_NEAR(c->snapshot().machine(0), 10.0, 1e-9);
+    EXPECT_NEAR(c->status().report().machine(0), 10.0, 1e-9);
     EXPECT_EQ(c->variable(100).number, 5.0);
-    EXPECT_TRUE(said(c->snapshot(), "Change to T2? [dialog answered: Enter]"));
+    EXPECT_TRUE(said(c->status().report(), "Change to T2? [dialog answered: Enter]"));
 }
 
 TEST(OperatorDialog, EscTakesTheOtherPath) {
@@ -63,17 +63,17 @@ TEST(OperatorDialog, EscTakesTheOtherPath) {
     ASSERT_TRUE(c->operatorPanel().pendingDialog());
     c->operatorPanel().answerDialog(false);
     EXPECT_EQ(c->advance(60.0), RunState::Finished);
-    EXPECT_NEAR(c->snapshot().machine(0), 20.0, 1e-9);
+    EXPECT_NEAR(c->status().report().machine(0), 20.0, 1e-9);
     EXPECT_EQ(c->variable(1505).number, 0.0);
     // the machine's clock ran while the operator read the dialog
-    EXPECT_GE(c->snapshot().simTime, 5.0);
+    EXPECT_GE(c->status().report().simTime, 5.0);
 }
 
 TEST(OperatorDialog, MessageOnlyDoesNotHold) {
     auto c = started(lines({"#1505 = -5000(Spindle warming up)", "G00 X7", "M30"}), true);
     EXPECT_EQ(c->advance(60.0), RunState::Finished);
     EXPECT_FALSE(c->operatorPanel().pendingDialog());
-    EXPECT_NEAR(c->snapshot().machine(0), 7.0, 1e-9);
+    EXPECT_NEAR(c->status().report().machine(0), 7.0, 1e-9);
     EXPECT_EQ(c->panelStatus().message, "Spindle warming up");
 }
 
@@ -81,8 +81,8 @@ TEST(OperatorDialog, WithoutAnOperatorEnterComesAtOnce) {
     auto c = started(kAsk, false);
     EXPECT_EQ(c->advance(60.0), RunState::Finished);
     EXPECT_FALSE(c->operatorPanel().pendingDialog());
-    EXPECT_NEAR(c->snapshot().machine(0), 10.0, 1e-9);
-    EXPECT_TRUE(said(c->snapshot(), "Change to T2? [dialog answered: Enter]"));
+    EXPECT_NEAR(c->status().report().machine(0), 10.0, 1e-9);
+    EXPECT_TRUE(said(c->status().report(), "Change to T2? [dialog answered: Enter]"));
 }
 
 TEST(OperatorDialog, RunAnswersEnterEvenWithAnOperatorSet) {

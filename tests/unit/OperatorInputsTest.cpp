@@ -121,9 +121,9 @@ TEST(OperatorInputs, TheExternEStopStopsMotionAndHoldsThroughReset) {
     const double x = c.panelStatus().machine(0);
     press(c, kPin);
     EXPECT_EQ(c.runState(), Controller::RunState::EStop);
-    ASSERT_TRUE(c.snapshot().alarm);
-    EXPECT_NE(c.snapshot().alarm->message.find("extern E-stop (IN21)"), std::string::npos) << c.snapshot().alarm->message;
-    EXPECT_EQ(c.snapshot().outputs[2], 0);
+    ASSERT_TRUE(c.status().report().alarm);
+    EXPECT_NE(c.status().report().alarm->message.find("extern E-stop (IN21)"), std::string::npos) << c.status().report().alarm->message;
+    EXPECT_EQ(c.status().report().outputs[2], 0);
     c.advance(1.0);
     EXPECT_NEAR(c.panelStatus().machine(0), x, 0.5); // stopped where the key was pressed
     c.reset();

@@ -29,19 +29,19 @@ TEST(OperatorStop, M00HoldsUntilStartAndM01IsSkippedWhileItsSwitchIsOff) {
     auto c = started(m350Machine(), kProgram, file);
     EXPECT_EQ(c->advance(100.0), RunState::Hold);
     EXPECT_EQ(c->programStop(), "M00 program stop (" + file + ":2)");
-    EXPECT_NEAR(c->snapshot().machine(0), 10.0, 1e-9); // the move before it is complete
+    EXPECT_NEAR(c->status().report().machine(0), 10.0, 1e-9); // the move before it is complete
     EXPECT_EQ(c->advance(50.0), RunState::Hold);       // waits as long as nobody presses START
-    EXPECT_NEAR(c->snapshot().machine(0), 10.0, 1e-9);
+    EXPECT_NEAR(c->status().report().machine(0), 10.0, 1e-9);
 
     c->resume(); // START
     EXPECT_TRUE(c->programStop().empty());
     EXPECT_EQ(c->advance(100.0), RunState::Hold); // M01 passed by (#1500 = 0): stopped at G04 P-1
     EXPECT_EQ(c->programStop(), "G04 P-1 waits for START (" + file + ":6)");
-    EXPECT_NEAR(c->snapshot().machine(0), 30.0, 1e-9);
+    EXPECT_NEAR(c->status().report().machine(0), 30.0, 1e-9);
 
     c->resume();
     EXPECT_EQ(c->advance(100.0), RunState::Finished);
-    EXPECT_NEAR(c->snapshot().machine(0), 40.0, 1e-9);
+    EXPECT_NEAR(c->status().report().machine(0), 40.0, 1e-9);
 }
 
 TEST(OperatorStop, M01StopsWhenTheOptionalStopIsOn) {
@@ -57,7 +57,7 @@ TEST(OperatorStop, M01StopsWhenTheOptionalStopIsOn) {
         c->resume();
         EXPECT_EQ(c->advance(100.0), RunState::Hold) << bySetting;
         EXPECT_EQ(c->programStop(), "M01 optional stop (" + file + ":4)") << bySetting;
-        EXPECT_NEAR(c->snapshot().machine(0), 20.0, 1e-9);
+        EXPECT_NEAR(c->status().report().machine(0), 20.0, 1e-9);
     }
 }
 

@@ -251,7 +251,7 @@ TEST(ProgramKeptInPart, StartingAtALineIsTheSameAsWithTheProgramKeptWhole) {
         EXPECT_NE(why.find("its blocks are on lines 1-"), std::string::npos) << why;
         ASSERT_TRUE(c.breakRun().startAtLine(15000, &why)) << why; // in the fourth chunk
         EXPECT_EQ(c.advance(1e9), controller::Controller::RunState::Finished);
-        reports.push_back(c.snapshot());
+        reports.push_back(c.status().report());
         std::remove(path.c_str());
     }
     EXPECT_EQ(reports[0].blocks, reports[1].blocks);

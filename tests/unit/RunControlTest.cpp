@@ -34,7 +34,7 @@ TEST(RunControl, HoldDeceleratesAndResumeFinishesTheMove) {
     EXPECT_NEAR(c->displayPosition()(0), 50.0, 1e-9); // nothing moves while held
     c->resume();
     EXPECT_EQ(c->advance(100.0), RunState::Finished);
-    controller::RunReport r = c->snapshot();
+    controller::RunReport r = c->status().report();
     EXPECT_EQ(r.status, controller::RunStatus::Ok);
     EXPECT_NEAR(r.machine(0), 100.0, 1e-9);
     // resumed at 7.0 s; the remaining 50 mm take 5.02 s; then M30's 0.1 ms (the G01 block's own
@@ -50,26 +50,26 @@ TEST(RunControl, HoldLiftsZByParam70WhenParam91SaysSo) {
     c->advance(1.0);
     c->hold();
     c->advance(2.0);
-    EXPECT_NEAR(c->snapshot().machine(2), 3.0, 1e-9);
+    EXPECT_NEAR(c->status().report().machine(2), 3.0, 1e-9);
     c->resume();
     c->advance(100.0);
-    EXPECT_NEAR(c->snapshot().machine(2), 0.0, 1e-9); // back down before the move went on
-    EXPECT_NEAR(c->snapshot().machine(0), 100.0, 1e-9);
+    EXPECT_NEAR(c->status().report().machine(2), 0.0, 1e-9); // back down before the move went on
+    EXPECT_NEAR(c->status().report().machine(0), 100.0, 1e-9);
 }
 
 TEST(RunControl, ResetStopsAtOnceSwitchesOutputsOffAndRewinds) {
     auto c = loaded(machine(), lines({"#1552 = 1", "M03 S1000", "G01 X100 F600", "M30"}));
     c->advance(3.0);
-    EXPECT_EQ(c->snapshot().outputs[0], 1);
+    EXPECT_EQ(c->status().report().outputs[0], 1);
     c->reset();
     EXPECT_EQ(c->runState(), RunState::Idle);
-    controller::RunReport r = c->snapshot();
+    controller::RunReport r = c->status().report();
     EXPECT_EQ(r.outputs[0], 0);
     EXPECT_GT(r.machine(0), 0.0);
     EXPECT_LT(r.machine(0), 100.0); // stopped mid-move
     EXPECT_TRUE(c->start());        // cycle start runs it again from the top
     EXPECT_EQ(c->advance(1000.0), RunState::Finished);
-    EXPECT_NEAR(c->snapshot().machine(0), 100.0, 1e-9);
+    EXPECT_NEAR(c->status().report().machine(0), 100.0, 1e-9);
 }
 
 TEST(RunControl, EmergencyStopIsAnAlarmWithEverythingOff) {
@@ -77,7 +77,7 @@ TEST(RunControl, EmergencyStopIsAnAlarmWithEverythingOff) {
     c->advance(3.0);
     c->emergencyStop();
     EXPECT_EQ(c->runState(), RunState::EStop);
-    controller::RunReport r = c->snapshot();
+    controller::RunReport r = c->status().report();
     EXPECT_EQ(r.status, controller::RunStatus::Alarm);
     ASSERT_TRUE(r.alarm.has_value());
     EXPECT_EQ(r.alarm->code, AlarmCode::EmergencyStop);

@@ -26,7 +26,7 @@ TEST(SpindleDisplay, M3WithoutSRunsAtTheDefaultSpeed) {
     controller::Controller c(machine(), settings);
     ASSERT_TRUE(c.loadMdi({"M03"}));
     c.run();
-    EXPECT_EQ(c.spindleDisplay(), SpindleState::Forward);
+    EXPECT_EQ(c.status().spindleDisplay(), SpindleState::Forward);
     EXPECT_NE(trace.str().find(R"("rpm":9000.0,"state":"FWD")"), std::string::npos) << trace.str();
 }
 
@@ -37,30 +37,30 @@ TEST(SpindleDisplay, TapWhileATappingCycleTurnsTheSpindle) {
     bool sawTap = false;
     for (int step = 0; step < 400 && c.runState() == controller::Controller::RunState::Running; ++step) {
         c.advance(0.05);
-        sawTap |= c.spindleDisplay() == SpindleState::Tap;
+        sawTap |= c.status().spindleDisplay() == SpindleState::Tap;
     }
     EXPECT_TRUE(sawTap);
-    EXPECT_EQ(c.spindleDisplay(), SpindleState::Stop);
+    EXPECT_EQ(c.status().spindleDisplay(), SpindleState::Stop);
 }
 
 TEST(SpindleDisplay, TheJogKeyTurnsTheSpindleOnlyWhileNoProgramRuns) {
     controller::Controller c(machine(), controller::RunSettings{});
     EXPECT_TRUE(c.manual().spindleJog(true));
-    EXPECT_EQ(c.spindleDisplay(), SpindleState::Jog);
+    EXPECT_EQ(c.status().spindleDisplay(), SpindleState::Jog);
     EXPECT_TRUE(c.manual().spindleJog(false));
-    EXPECT_EQ(c.spindleDisplay(), SpindleState::Stop);
+    EXPECT_EQ(c.status().spindleDisplay(), SpindleState::Stop);
     ASSERT_TRUE(c.loadMdi({"G04 P5000"}));
     ASSERT_TRUE(c.start());
     c.advance(1.0);
     EXPECT_FALSE(c.manual().spindleJog(true));
-    EXPECT_EQ(c.spindleDisplay(), SpindleState::Stop);
+    EXPECT_EQ(c.status().spindleDisplay(), SpindleState::Stop);
 }
 
 TEST(SpindleDisplay, OrientShowsOrient) {
     controller::Controller c(machine(), controller::RunSettings{});
     ASSERT_TRUE(c.loadMdi({"M19"}));
     c.run();
-    EXPECT_EQ(c.spindleDisplay(), SpindleState::Orient);
+    EXPECT_EQ(c.status().spindleDisplay(), SpindleState::Orient);
 }
 
 } // namespace

@@ -67,7 +67,7 @@ TEST(StartAtLine, RebuildsTheModalStateAndApproachesZUpXYOverZDown) {
     std::string why;
     ASSERT_TRUE(c->breakRun().startAtLine(7, &why)) << why;
     EXPECT_EQ(c->runState(), RunState::Running);
-    const std::string modal = c->modalLine();
+    const std::string modal = c->status().modalLine();
     EXPECT_NE(modal.find("G91"), std::string::npos) << modal;
     EXPECT_NE(modal.find("G55"), std::string::npos) << modal;
     EXPECT_NE(modal.find("F600"), std::string::npos) << modal;
@@ -132,7 +132,7 @@ TEST(StartAtLine, Refusals) {
     EXPECT_FALSE(c->breakRun().startAtLine(3, &why));
     EXPECT_NE(why.find("never reaches"), std::string::npos) << why;
     // a refusal changes nothing: G91 was scanned, but the modal state is as it was
-    EXPECT_NE(c->modalLine().find("G90"), std::string::npos) << c->modalLine();
+    EXPECT_NE(c->status().modalLine().find("G90"), std::string::npos) << c->status().modalLine();
     EXPECT_EQ(c->runState(), RunState::Idle);
 
     ASSERT_TRUE(c->breakRun().startAtLine(4, &why)) << why;
@@ -204,7 +204,7 @@ void pauseResetResume(double resumeMode, std::vector<machine::MachineEvent>& aft
     EXPECT_FALSE(c->breakRun().pauseBreakPoint());
     EXPECT_EQ(c->advance(100.0), RunState::Finished);
     after.assign(rec.events.begin() + static_cast<std::ptrdiff_t>(before), rec.events.end());
-    end = c->snapshot();
+    end = c->status().report();
     EXPECT_EQ(c->variable(100).number, 3.0);
 }
 

@@ -27,7 +27,7 @@ TEST(TimeLimitPerRun, AControllerPastTheLimitStillRunsAShortProgram) {
         ASSERT_TRUE(c.loadMdi({"G04 P1500"}));
         ASSERT_EQ(c.run().status, RunStatus::Ok) << "run " << run;
     }
-    ASSERT_GT(c.snapshot().simTime, 4.0); // over twice the limit on the machine's clock
+    ASSERT_GT(c.status().report().simTime, 4.0); // over twice the limit on the machine's clock
     ASSERT_TRUE(c.loadMdi({"G91 G01 X10 F6000"}));
     const controller::RunReport r = c.run();
     EXPECT_EQ(r.status, RunStatus::Ok) << (r.alarm ? r.alarm->message : std::string());
@@ -61,8 +61,8 @@ TEST(TimeLimitPerRun, ALongHoldIsNoRunaway) {
     ASSERT_EQ(c.advance(10.0), Controller::RunState::Hold); // the operator leaves it paused for 10 s
     c.resume();
     EXPECT_EQ(c.advance(5.0), Controller::RunState::Finished)
-        << (c.snapshot().alarm ? c.snapshot().alarm->message : std::string());
-    EXPECT_NEAR(c.snapshot().machine(0), 10.0, 1e-9);
+        << (c.status().report().alarm ? c.status().report().alarm->message : std::string());
+    EXPECT_NEAR(c.status().report().machine(0), 10.0, 1e-9);
 }
 
 TEST(TimeLimitPerRun, HomingCountsFromItsOwnStart) {
@@ -73,7 +73,7 @@ TEST(TimeLimitPerRun, HomingCountsFromItsOwnStart) {
         ASSERT_TRUE(c.loadMdi({"G04 P40000"}));
         ASSERT_EQ(c.run().status, RunStatus::Ok) << "run " << run;
     }
-    ASSERT_GT(c.snapshot().simTime, 60.0);
+    ASSERT_GT(c.status().report().simTime, 60.0);
     const auto alarm = c.homing().home(c.homing().homeableAxes());
     EXPECT_FALSE(alarm) << alarm->message;
     EXPECT_TRUE(c.homing().homed(0) && c.homing().homed(1) && c.homing().homed(2));

@@ -60,30 +60,30 @@ TEST(ToolData, TheParametersAndTheTablesZAreOneStoreWhoeverWrites) {
     EXPECT_DOUBLE_EQ(c.parameter(976), -30.0) << "T20 is virtual tool 4 (16 + 4): parameter 973 + 3";
     ASSERT_TRUE(c.loadMdi({"#1431 = -41.5", "#1432 = -33"})); // as O502 stores a set tool
     ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
-    tools::ToolTable table = c.toolTable();
+    tools::ToolTable table = c.toolTableEdits().table();
     EXPECT_DOUBLE_EQ(table.find(2)->offset(tools::kZ), -41.5) << "a macro's #1431 is the table's T2 Z";
     ASSERT_NE(table.find(3), nullptr) << "T3 has a parameter: it joins the table once set";
     EXPECT_EQ(table.find(3)->pocket, 3);
     tools::ToolEntry t1 = *table.find(1);
     t1.offsets[tools::kZ] = -52.25;
-    ASSERT_TRUE(c.putTool(t1));
+    ASSERT_TRUE(c.toolTableEdits().putTool(t1));
     EXPECT_DOUBLE_EQ(c.variable(1430).number, -52.25) << "an edit of the table is #1430";
     ASSERT_TRUE(c.setParameter(945, -10.0)); // the Param page
-    EXPECT_DOUBLE_EQ(c.toolTable().find(16)->offset(tools::kZ), -10.0);
-    ASSERT_TRUE(c.removeTool(2));
+    EXPECT_DOUBLE_EQ(c.toolTableEdits().table().find(16)->offset(tools::kZ), -10.0);
+    ASSERT_TRUE(c.toolTableEdits().removeTool(2));
     EXPECT_DOUBLE_EQ(c.parameter(931), 0.0) << "a tool taken out of the table has no Z left";
-    EXPECT_DOUBLE_EQ(c.toolTable().find(50)->offset(tools::kZ), 1.0) << "a tool beyond the M350's keeps its own Z";
+    EXPECT_DOUBLE_EQ(c.toolTableEdits().table().find(50)->offset(tools::kZ), 1.0) << "a tool beyond the M350's keeps its own Z";
 }
 
 TEST(ToolData, WithoutAToolTableTheM350StartsFromItsParameters) {
     controller::Controller c(load(machineFolder("seeded", "930 = -53.677\n931 = -41.296\n", nullptr)), {});
-    tools::ToolTable table = c.toolTable();
+    tools::ToolTable table = c.toolTableEdits().table();
     ASSERT_EQ(table.size(), 16u) << "one row per pocket of the magazine";
     EXPECT_EQ(table.find(16)->pocket, 16);
     EXPECT_DOUBLE_EQ(table.find(1)->offset(tools::kZ), -53.677);
     EXPECT_DOUBLE_EQ(table.find(2)->offset(tools::kZ), -41.296);
     EXPECT_EQ(tools::formatToolEntry(*table.find(3)), "T3 P3 Z0");
-    EXPECT_FALSE(c.toolTableChanged());
+    EXPECT_FALSE(c.toolTableEdits().changed());
 }
 
 TEST(ToolData, ADifferentValueInParamsTomlIsSaidAndTheTableWins) {
@@ -110,10 +110,10 @@ TEST(ToolData, TouchOffSavedSurvivesAReloadWithTheCommentsAndParamsTomlAgrees) {
         ASSERT_TRUE(c.loadMdi({"G53 Z-80", "#1431 = -41.5"}));
         ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
         std::string why;
-        ASSERT_TRUE(c.touchOffTool(0.0, &why)) << why; // G54 Z is 0: T1's Z becomes -80
-        ASSERT_TRUE(c.toolTableChanged());
+        ASSERT_TRUE(c.toolTableEdits().touchOffTool(0.0, &why)) << why; // G54 Z is 0: T1's Z becomes -80
+        ASSERT_TRUE(c.toolTableEdits().changed());
         ASSERT_EQ(controller::saveToolTable(c, config::MachineFolder(folder)), std::nullopt);
-        EXPECT_FALSE(c.toolTableChanged());
+        EXPECT_FALSE(c.toolTableEdits().changed());
     }
     EXPECT_EQ(readText(folder / "tool.tbl"), "; the router's tools\n"
                                              "T1 P1 Z-80 ;roughing {rpm=18000 teeth=3 type=flat}\n"
@@ -129,7 +129,7 @@ TEST(ToolData, TouchOffSavedSurvivesAReloadWithTheCommentsAndParamsTomlAgrees) {
     controller::Controller c(std::move(again), {});
     EXPECT_DOUBLE_EQ(c.parameter(930), -80.0);
     EXPECT_DOUBLE_EQ(c.parameter(931), -41.5);
-    EXPECT_EQ(*c.toolTable().find(1)->teeth, 3);
+    EXPECT_EQ(*c.toolTableEdits().table().find(1)->teeth, 3);
 }
 
 // Saves in a child process that the hook kills with SIGKILL, as a crash or a power cut would.

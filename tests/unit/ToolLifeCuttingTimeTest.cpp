@@ -47,7 +47,7 @@ TEST(ToolLifeCuttingTime, AHoldThenResetCountsOnlyTheCutBeforeTheHold) {
     c.hold();
     c.advance(30.0);
     c.reset(); // the rest of the cut never happens
-    EXPECT_EQ(c.toolLife().data().group(2)->tools[0].used, 2);
+    EXPECT_EQ(c.toolLife().manager().data().group(2)->tools[0].used, 2);
 }
 
 } // namespace

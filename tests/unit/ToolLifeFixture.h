@@ -23,7 +23,7 @@ inline config::MachineConfig fanucWithGroups(int usedByT11 = 0) {
 }
 
 inline int used(const ProgramRun& run, int groupNumber, int tool) {
-    const tools::LifeGroup* g = run.controller->toolLife().data().group(groupNumber);
+    const tools::LifeGroup* g = run.controller->toolLife().manager().data().group(groupNumber);
     EXPECT_NE(g, nullptr);
     for (const tools::LifeTool& t : g ? g->tools : std::vector<tools::LifeTool>{}) {
         if (t.tool == tool) {

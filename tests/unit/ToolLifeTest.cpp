@@ -14,7 +14,7 @@ TEST(ToolLife, G10L3EntersGroupsAndToolsUpToG11) {
     ProgramRun run = runFanuc(lines({"G10 L3", "P1 L3 Q1", "T11 H11 D31", "T12 H12 D32", "P2 L1 Q2", "T21 H21",
                                      "G11", "M30"}));
     EXPECT_RUN_OK(run);
-    const tools::LifeData& data = run.controller->toolLife().data();
+    const tools::LifeData& data = run.controller->toolLife().manager().data();
     ASSERT_EQ(data.groups.size(), 2u);
     EXPECT_EQ(data.groups[0].kind, tools::LifeKind::Count);
     EXPECT_EQ(data.groups[0].life, 3);
@@ -24,7 +24,7 @@ TEST(ToolLife, G10L3EntersGroupsAndToolsUpToG11) {
     EXPECT_EQ(data.groups[0].tools[1].d, 32);
     EXPECT_EQ(data.groups[1].kind, tools::LifeKind::Minutes);
     EXPECT_EQ(data.groups[1].tools[0].d, 0);
-    EXPECT_TRUE(run.controller->toolLife().changed());
+    EXPECT_TRUE(run.controller->toolLife().manager().changed());
     // the T words of the data selected nothing
     EXPECT_EQ(run.number(4120), 0);
 }
@@ -32,20 +32,20 @@ TEST(ToolLife, G10L3EntersGroupsAndToolsUpToG11) {
 TEST(ToolLife, G10L3ReplacesEverythingP1ChangesAGroupP2DeletesOne) {
     ProgramRun replaced = runProgram(fanucWithGroups(2), lines({"G10 L3", "P3 L5", "T31", "G11", "M30"}));
     EXPECT_RUN_OK(replaced);
-    ASSERT_EQ(replaced.controller->toolLife().data().groups.size(), 1u);
-    EXPECT_EQ(replaced.controller->toolLife().data().groups[0].number, 3);
+    ASSERT_EQ(replaced.controller->toolLife().manager().data().groups.size(), 1u);
+    EXPECT_EQ(replaced.controller->toolLife().manager().data().groups[0].number, 3);
 
     ProgramRun changed = runProgram(fanucWithGroups(2), lines({"G10 L3 P1", "P1 L4", "T13", "T11", "G11", "M30"}));
     EXPECT_RUN_OK(changed);
-    ASSERT_EQ(changed.controller->toolLife().data().groups.size(), 2u);
+    ASSERT_EQ(changed.controller->toolLife().manager().data().groups.size(), 2u);
     EXPECT_EQ(used(changed, 1, 11), 2); // a changed group keeps what its tools used
     EXPECT_EQ(used(changed, 1, 13), 0);
-    EXPECT_EQ(changed.controller->toolLife().data().group(1)->life, 4);
+    EXPECT_EQ(changed.controller->toolLife().manager().data().group(1)->life, 4);
 
     ProgramRun deleted = runProgram(fanucWithGroups(), lines({"G10 L3 P2", "P2", "G11", "M30"}));
     EXPECT_RUN_OK(deleted);
-    EXPECT_EQ(deleted.controller->toolLife().data().group(2), nullptr);
-    EXPECT_NE(deleted.controller->toolLife().data().group(1), nullptr);
+    EXPECT_EQ(deleted.controller->toolLife().manager().data().group(2), nullptr);
+    EXPECT_NE(deleted.controller->toolLife().manager().data().group(1), nullptr);
 }
 
 TEST(ToolLife, BadDataBlocksAlarmAtTheirLine) {
@@ -57,7 +57,7 @@ TEST(ToolLife, BadDataBlocksAlarmAtTheirLine) {
     ProgramRun motion = runFanuc(lines({"G10 L3", "P1 L3", "G1 X10", "G11", "M30"}));
     ASSERT_EQ(motion.report.status, controller::RunStatus::Alarm);
     EXPECT_EQ(motion.report.alarm->line, 3u);
-    EXPECT_EQ(motion.controller->toolLife().data().groups.size(), 0u); // nothing entered without G11
+    EXPECT_EQ(motion.controller->toolLife().manager().data().groups.size(), 0u); // nothing entered without G11
 
     ProgramRun noG10 = runFanuc(lines({"G11", "M30"}));
     ASSERT_EQ(noG10.report.status, controller::RunStatus::Alarm);
@@ -150,7 +150,7 @@ TEST(ToolLife, AFeedHoldCountsNeitherTheWaitNorTheCutTwice) {
     while (c.advance(1.0) == controller::Controller::RunState::Running) {
     }
     EXPECT_EQ(c.runState(), controller::Controller::RunState::Finished);
-    const tools::LifeTool& t21 = c.toolLife().data().group(2)->tools[0];
+    const tools::LifeTool& t21 = c.toolLife().manager().data().group(2)->tools[0];
     EXPECT_EQ(t21.used, 2); // 10 s of cutting in all: 5 s before the hold, 5 s after
 }
 
@@ -196,8 +196,8 @@ TEST(ToolLife, AChangeThatNeverCompletesNeitherCountsNorPutsTheToolInUse) {
     ASSERT_EQ(refused.report.status, controller::RunStatus::Alarm);
     EXPECT_EQ(refused.report.alarm->code, AlarmCode::SensorTimeout);
     EXPECT_EQ(used(refused, 1, 4), 0);
-    EXPECT_FALSE(refused.controller->toolLife().inUse().has_value());
-    EXPECT_TRUE(refused.controller->toolLife().selected().has_value()); // T4 stays selected for a retry
+    EXPECT_FALSE(refused.controller->toolLife().manager().inUse().has_value());
+    EXPECT_TRUE(refused.controller->toolLife().manager().selected().has_value()); // T4 stays selected for a retry
 
     settings.heldInputs.clear(); // the sensor repaired: the same change counts once
     ProgramRun retried = runProgram(config, lines({"T101", "M30"}), settings);

@@ -15,7 +15,7 @@ TEST(ToolLifeView, ShowsTheSisterInUseTheExpiredOneAndWhatIsLeft) {
     // T11 has 3 of 3 uses: T101 takes its sister T12, which this run counts once
     ProgramRun run = runProgram(fanucWithGroups(3), lines({"T101 M06", "T102", "M30"}));
     EXPECT_RUN_OK(run);
-    tools::LifeView view = tools::makeLifeView(run.controller->toolLife());
+    tools::LifeView view = tools::makeLifeView(run.controller->toolLife().manager());
     EXPECT_EQ(view.ignoreNumber, 100);
     EXPECT_EQ(view.capacity.groups, 16);
     ASSERT_TRUE(view.inUse);
@@ -56,25 +56,25 @@ TEST(ToolLifeView, TheOperatorResetsAGroupWhenNoProgramRuns) {
     ASSERT_TRUE(c.start());
     c.advance(1.0);
     std::string why;
-    EXPECT_FALSE(c.resetToolLife(1, &why));
+    EXPECT_FALSE(c.toolLife().resetGroup(1, &why));
     EXPECT_EQ(why, "a program runs: reset the tool life of group 1 when it has stopped");
     while (c.advance(1.0) == controller::Controller::RunState::Running) {
     }
-    const std::uint64_t before = c.toolLife().revision();
-    c.toolLife().markSaved();
-    ASSERT_TRUE(c.resetToolLife(1, &why)) << why;
-    EXPECT_TRUE(c.toolLife().changed());
-    EXPECT_GT(c.toolLife().revision(), before);
-    EXPECT_EQ(c.toolLife().data().group(1)->tools[0].used, 0);
-    EXPECT_EQ(c.toolLife().data().group(1)->tools[1].used, 0);
-    EXPECT_FALSE(c.resetToolLife(7, &why));
+    const std::uint64_t before = c.toolLife().manager().revision();
+    c.toolLife().manager().markSaved();
+    ASSERT_TRUE(c.toolLife().resetGroup(1, &why)) << why;
+    EXPECT_TRUE(c.toolLife().manager().changed());
+    EXPECT_GT(c.toolLife().manager().revision(), before);
+    EXPECT_EQ(c.toolLife().manager().data().group(1)->tools[0].used, 0);
+    EXPECT_EQ(c.toolLife().manager().data().group(1)->tools[1].used, 0);
+    EXPECT_FALSE(c.toolLife().resetGroup(7, &why));
     EXPECT_EQ(why, "tool life group 7 is not entered");
     // the next run starts again from T11
     ASSERT_TRUE(c.start());
     while (c.advance(1.0) == controller::Controller::RunState::Running) {
     }
-    EXPECT_EQ(c.toolLife().inUse()->tool, 11);
-    EXPECT_EQ(c.toolLife().data().group(1)->tools[0].used, 1);
+    EXPECT_EQ(c.toolLife().manager().inUse()->tool, 11);
+    EXPECT_EQ(c.toolLife().manager().data().group(1)->tools[0].used, 1);
 }
 
 } // namespace

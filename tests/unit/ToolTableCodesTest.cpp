@@ -22,7 +22,7 @@ config::MachineConfig fanucWithTable(const std::string& tbl = "T1 P1 Z0 ;end mil
 }
 
 tools::ToolEntry row(const ProgramRun& run, int tool) {
-    const tools::ToolTable table = run.controller->toolTable();
+    const tools::ToolTable table = run.controller->toolTableEdits().table();
     const tools::ToolEntry* found = table.find(tool);
     EXPECT_NE(found, nullptr) << "tool " << tool;
     return found ? *found : tools::ToolEntry{};
@@ -100,7 +100,7 @@ TEST(ToolTableCodes, G10ToolCodesRefuseWhatLinuxCncRefuses) {
         ASSERT_EQ(run.report.status, controller::RunStatus::Alarm) << c.block;
         EXPECT_THAT(run.alarmText(), HasSubstr(c.message)) << c.block;
         EXPECT_THAT(run.alarmText(), HasSubstr(":2:")) << c.block;
-        EXPECT_DOUBLE_EQ(run.controller->toolTable().find(1)->offset(tools::kZ), 7.0) << "a refused block changes nothing";
+        EXPECT_DOUBLE_EQ(run.controller->toolTableEdits().table().find(1)->offset(tools::kZ), 7.0) << "a refused block changes nothing";
     }
     auto m350 = runM350(lines({"G10 L1 P1 Z5", "M30"}));
     EXPECT_THAT(m350.alarmText(), HasSubstr("not available on the M350"));
@@ -114,7 +114,7 @@ TEST(ToolTableCodes, TheOffsetMemoryIsTheTable) {
     ASSERT_EQ(run.report.status, controller::RunStatus::Ok) << run.alarmText();
     EXPECT_DOUBLE_EQ(run.number(100), 126.0);
     EXPECT_DOUBLE_EQ(run.number(101), 40.0);
-    tools::ToolTable table = run.controller->toolTable();
+    tools::ToolTable table = run.controller->toolTableEdits().table();
     ASSERT_NE(table.find(3), nullptr);
     EXPECT_EQ(table.find(3)->pocket, 3);
     EXPECT_DOUBLE_EQ(table.find(4)->offset(tools::kZ), 2.0);
@@ -139,12 +139,12 @@ TEST(ToolTableCodes, TouchOffOnTheM350WritesTheToolsParameterAndTheDisplayReadsT
     ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
     EXPECT_DOUBLE_EQ(c.variable(852).number, -10.0) << "-80 - (-20) - (-50)";
     std::string why;
-    ASSERT_TRUE(c.touchOffTool(5.0, &why)) << why;
+    ASSERT_TRUE(c.toolTableEdits().touchOffTool(5.0, &why)) << why;
     EXPECT_DOUBLE_EQ(c.parameter(930), -65.0) << "-80 - (-20) - 5";
     EXPECT_DOUBLE_EQ(c.variable(1430).number, -65.0);
-    EXPECT_DOUBLE_EQ(c.toolTable().find(1)->offset(tools::kZ), -65.0);
+    EXPECT_DOUBLE_EQ(c.toolTableEdits().table().find(1)->offset(tools::kZ), -65.0);
     EXPECT_DOUBLE_EQ(c.variable(852).number, 5.0) << "the display shows the measured value at once";
-    EXPECT_TRUE(c.toolTableChanged());
+    EXPECT_TRUE(c.toolTableEdits().changed());
 }
 
 TEST(ToolTableCodes, TouchOffRefusesAnEmptySpindleAToolWithoutAParameterAndARun) {
@@ -152,20 +152,20 @@ TEST(ToolTableCodes, TouchOffRefusesAnEmptySpindleAToolWithoutAParameterAndARun)
     settings.tool = 0;
     controller::Controller empty(m350Machine(), settings);
     std::string why;
-    EXPECT_FALSE(empty.touchOffTool(0.0, &why));
+    EXPECT_FALSE(empty.toolTableEdits().touchOffTool(0.0, &why));
     EXPECT_THAT(why, HasSubstr("empty"));
     settings.tool = 40; // capacity 16 + 20 virtual tools: 36 at most
     controller::Controller beyond(m350Machine(), settings);
-    EXPECT_FALSE(beyond.touchOffTool(0.0, &why));
+    EXPECT_FALSE(beyond.toolTableEdits().touchOffTool(0.0, &why));
     EXPECT_THAT(why, HasSubstr("tool 40 has no Z offset parameter"));
     settings.tool = 1;
     controller::Controller running(m350Machine(), settings);
     ASSERT_TRUE(running.loadMdi({"G04 P5000"}));
     ASSERT_TRUE(running.start());
     running.advance(0.5);
-    EXPECT_FALSE(running.touchOffTool(0.0, &why));
+    EXPECT_FALSE(running.toolTableEdits().touchOffTool(0.0, &why));
     EXPECT_THAT(why, HasSubstr("a program is running"));
-    EXPECT_FALSE(running.touchOffTool(std::nan(""), &why));
+    EXPECT_FALSE(running.toolTableEdits().touchOffTool(std::nan(""), &why));
     EXPECT_DOUBLE_EQ(running.parameter(930), 0.0);
 }
 
@@ -176,8 +176,8 @@ TEST(ToolTableCodes, TouchOffOnAFanucWritesTheRowAndAppliesG43) {
     ASSERT_TRUE(c.loadMdi({"G10 L2 P1 Z-100", "G90 G54 G00 Z70"})); // machine Z -30 under G49
     ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
     std::string why;
-    ASSERT_TRUE(c.touchOffTool(10.0, &why)) << why;
-    EXPECT_DOUBLE_EQ(c.toolTable().find(2)->offset(tools::kZ), 60.0) << "-30 - (-100) - 10";
+    ASSERT_TRUE(c.toolTableEdits().touchOffTool(10.0, &why)) << why;
+    EXPECT_DOUBLE_EQ(c.toolTableEdits().table().find(2)->offset(tools::kZ), 60.0) << "-30 - (-100) - 10";
     EXPECT_DOUBLE_EQ(c.variable(2002).number, 60.0);
     EXPECT_DOUBLE_EQ(c.variable(5043).number, 10.0) << "G43 H2 applied: the display reads 10";
     EXPECT_DOUBLE_EQ(c.variable(4008).number, 43.0);

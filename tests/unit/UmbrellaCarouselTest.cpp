@@ -235,7 +235,7 @@ TEST(UmbrellaMachine, HundredRandomChangesLeaveEveryToolAccountedFor) {
     const auto wallStart = std::chrono::steady_clock::now();
     for (int change = 0; change < 100; ++change) {
         const int target = pick(random);
-        const double before = u.c.snapshot().simTime;
+        const double before = u.c.status().report().simTime;
         controller::RunReport r = u.mdi({"M06 T" + std::to_string(target)});
         ASSERT_OK(r) << " at change " << change << " to T" << target;
         slowest = std::max(slowest, r.simTime - before);

@@ -41,14 +41,14 @@ std::string readableSize(std::uint64_t bytes) {
 } // namespace
 
 void SessionWorker::keepExternalOutput() {
-    const controller::ExternalDevices::NewRecords fresh = controller_->takeNewExternalRecords();
+    const controller::ExternalDevices::NewRecords fresh = controller_->externalDevices().takeNewRecords();
     if (fresh.missed > 0) {
         log_->record("dprnt_missed", QString::number(fresh.missed));
     }
     for (const std::string& record : fresh.records) {
         logRecordLines(*log_, record);
     }
-    if (!externalOutputCapLogged_ && controller_->externalOutputCapped()) {
+    if (!externalOutputCapLogged_ && controller_->externalDevices().outputCapped()) {
         externalOutputCapLogged_ = true;
         log_->record("dprnt_limit", QString::fromStdString(readableSize(options_.externalOutputLimit)));
     }
@@ -64,7 +64,7 @@ void SessionWorker::saveExternalOutput() {
     }
     externalOutputUnsaved_ = false;
     externalOutputSaved_.start();
-    if (auto problem = folder_.write(config::FolderFile::ExternalOutput, controller_->externalOutput())) {
+    if (auto problem = folder_.write(config::FolderFile::ExternalOutput, controller_->externalDevices().received())) {
         lastError_ = tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*problem);
     }
 }

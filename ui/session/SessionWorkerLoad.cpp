@@ -6,7 +6,7 @@
 namespace m350::ui {
 
 void SessionWorker::keepSpindleLoad(int tool) {
-    const controller::SpindleLoadWatch& watch = controller_->spindleLoad();
+    const controller::SpindleLoadWatch& watch = controller_->toolBreakage().spindleLoad();
     if (!watch.model()) {
         return;
     }

@@ -81,7 +81,7 @@ void SessionWorker::spindleOverrideKey(int step) {
 // the M code as an MDI line. SPINDLE is M3 or M5.
 void SessionWorker::spindleKey(int code) {
     if (code == 0) {
-        bool turning = controller_->spindleDisplay() != machine::SpindleState::Stop;
+        bool turning = controller_->status().spindleDisplay() != machine::SpindleState::Stop;
         code = turning ? 5 : 3;
     }
     if (auto step = mCodeKeyStep(code)) {

@@ -11,7 +11,7 @@ namespace m350::ui {
 void SessionWorker::putTool(const tools::ToolEntry& entry) {
     lastError_.clear();
     std::string why;
-    if (!controller_->putTool(entry, &why)) {
+    if (!controller_->toolTableEdits().putTool(entry, &why)) {
         refuse(QString::fromStdString(why));
         return;
     }
@@ -22,7 +22,7 @@ void SessionWorker::putTool(const tools::ToolEntry& entry) {
 void SessionWorker::removeTool(int tool) {
     lastError_.clear();
     std::string why;
-    if (!controller_->removeTool(tool, &why)) {
+    if (!controller_->toolTableEdits().removeTool(tool, &why)) {
         refuse(QString::fromStdString(why));
         return;
     }
@@ -33,7 +33,7 @@ void SessionWorker::removeTool(int tool) {
 void SessionWorker::replaceToolTable(const tools::ToolTable& table, const QString& from) {
     lastError_.clear();
     std::string why;
-    if (!controller_->replaceToolTable(table, &why)) {
+    if (!controller_->toolTableEdits().replaceTable(table, &why)) {
         refuse(QString::fromStdString(why));
         return;
     }
@@ -44,7 +44,7 @@ void SessionWorker::replaceToolTable(const tools::ToolTable& table, const QStrin
 void SessionWorker::touchOffTool(double workZ) {
     lastError_.clear();
     std::string why;
-    if (!controller_->touchOffTool(workZ, &why)) {
+    if (!controller_->toolTableEdits().touchOffTool(workZ, &why)) {
         refuse(QString::fromStdString(why));
         return;
     }
@@ -54,8 +54,8 @@ void SessionWorker::touchOffTool(double workZ) {
 
 // A save that failed is tried again when the data changes again, not at every frame.
 void SessionWorker::keepToolTable() {
-    const tools::ToolData::Mark mark = controller_->toolTableMark();
-    if (!folder_.path().empty() && controller_->toolTableChanged() && !(failedToolMark_ && *failedToolMark_ == mark)) {
+    const tools::ToolData::Mark mark = controller_->toolTableEdits().mark();
+    if (!folder_.path().empty() && controller_->toolTableEdits().changed() && !(failedToolMark_ && *failedToolMark_ == mark)) {
         if (auto error = controller::saveToolTable(*controller_, folder_)) {
             toolTableProblem_ = QString::fromStdString(*error);
             failedToolMark_ = mark;
@@ -65,7 +65,7 @@ void SessionWorker::keepToolTable() {
         }
     }
     if (!shownToolMark_ || !(*shownToolMark_ == mark)) {
-        toolTable_ = std::make_shared<const tools::ToolTable>(controller_->toolTable());
+        toolTable_ = std::make_shared<const tools::ToolTable>(controller_->toolTableEdits().table());
         shownToolMark_ = mark;
     }
 }
@@ -73,7 +73,7 @@ void SessionWorker::keepToolTable() {
 void SessionWorker::resetToolLife(int group) {
     lastError_.clear();
     std::string why;
-    if (!controller_->resetToolLife(group, &why)) {
+    if (!controller_->toolLife().resetGroup(group, &why)) {
         refuse(QString::fromStdString(why));
         return;
     }
@@ -84,7 +84,7 @@ void SessionWorker::resetToolLife(int group) {
 // Counting changes the data every 4 s of cutting: a save that failed is tried again only when
 // the data changed since.
 void SessionWorker::keepToolLife() {
-    tools::ToolLifeManager& life = controller_->toolLife();
+    tools::ToolLifeManager& life = controller_->toolLife().manager();
     const std::uint64_t revision = life.revision();
     if (!folder_.path().empty() && life.changed() && failedLifeRevision_ != revision) {
         if (auto error = folder_.saveToolLife(life.data())) {

@@ -1,0 +1,116 @@
+#include "core/controller/StatusBoard.h"
+
+#include "core/common/EchoText.h"
+#include "core/controller/MagazineDriver.h"
+#include "core/devices/Magazine.h"
+#include "core/gcode/Program.h"
+#include "core/interp/ModalInterpreter.h"
+#include "core/machine/SimulatedMachine.h"
+#include "core/macro/Executor.h"
+#include "core/params/ParameterLimits.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace m350::controller {
+
+namespace {
+
+// One modal group as the panel's modal line prints it: G00, G17, G80 ...
+std::string gWord(double code) {
+    char text[16];
+    double whole = std::floor(code);
+    if (code == whole) {
+        std::snprintf(text, sizeof text, "G%02d", static_cast<int>(whole));
+    } else {
+        std::snprintf(text, sizeof text, "G%.1f", code);
+    }
+    return text;
+}
+
+} // namespace
+
+StatusBoard::StatusBoard(Context context, const RunSettings& settings) : context_(context) {
+    if (settings.trace) {
+        trace_ = std::make_unique<TraceWriter>(*settings.trace, settings.traceLimit);
+    }
+}
+
+TraceSource StatusBoard::source() const {
+    if (context_.executor) {
+        if (auto loc = context_.executor->location()) {
+            return {context_.program.fileName(*loc), loc->line};
+        }
+    }
+    return {};
+}
+
+void StatusBoard::postMessage(std::string text) {
+    text = clipEcho(std::move(text));
+    if (trace_) {
+        trace_->message(context_.machine.time(), text, source());
+    }
+    messages_.add(std::move(text));
+}
+
+RunReport StatusBoard::report() const {
+    RunReport out;
+    switch (context_.state) {
+    case RunState::Alarm:
+    case RunState::EStop: out.status = RunStatus::Alarm; break;
+    default: out.status = context_.executor ? RunStatus::Ok : RunStatus::Error; break;
+    }
+    out.alarm = context_.alarm;
+    out.diagnostics = context_.diagnostics;
+    out.machine = context_.machine.position();
+    out.work = context_.interp.workPosition();
+    out.tool = context_.magazine.spindleTool();
+    const config::MachineConfig& config = context_.config;
+    const devices::Magazine* magazine = context_.magazine.device();
+    int capacity = config.dialect->id == gcode::DialectId::M350
+                       ? params::magazineCapacity(config.parameters)
+                       : magazine ? magazine->pocketCount() : std::clamp(config.magazineCapacity, 0, params::kMostPockets);
+    // Without a magazine device every tool has its own pocket, empty while it is in the spindle.
+    for (int pocket = 1; pocket <= capacity; ++pocket) {
+        if (magazine) {
+            out.pockets[pocket] = pocket <= magazine->pocketCount() ? magazine->pocketTool(pocket) : 0;
+        } else {
+            out.pockets[pocket] = pocket == out.tool ? 0 : pocket;
+        }
+    }
+    if (magazine) {
+        out.fallenTools = magazine->droppedTools();
+    }
+    for (int port = 1; port <= machine::kOutputCount; ++port) {
+        out.outputs[static_cast<std::size_t>(port - 1)] = context_.machine.output(port);
+    }
+    out.messages = messages_.list();
+    out.messagesOmitted = messages_.omitted();
+    out.simTime = context_.machine.time();
+    out.blocks = context_.executor ? context_.executor->blocksExecuted() : 0;
+    return out;
+}
+
+std::string StatusBoard::modalLine() const {
+    const interp::ModalState& s = context_.interp.state();
+    std::string line;
+    for (int group : {1, 2, 3, 5, 6, 7, 8, 9}) {
+        line += gWord(s.groups[static_cast<std::size_t>(group)]);
+        line += ' ';
+    }
+    int slot = context_.interp.activeSlot();
+    line += slot == 0 ? "G92" : gWord(53 + slot);
+    char words[64];
+    std::snprintf(words, sizeof words, " F%.0f S%.0f", s.feed, s.spindleSpeed);
+    return line + words;
+}
+
+machine::SpindleState StatusBoard::spindleDisplay() const {
+    machine::SpindleState state = context_.machine.spindleState();
+    const int cycle = context_.interp.state().group(9);
+    bool turning = state == machine::SpindleState::Forward || state == machine::SpindleState::Reverse;
+    return turning && (cycle == 84 || cycle == 74) ? machine::SpindleState::Tap : state;
+}
+
+} // namespace m350::controller
