@@ -307,7 +307,7 @@ bool Controller::start() {
     breakRun_.forgetPause();
     devices_.closeOutputDevice();
     if (!executor_) {
-        state_ = RunState::Idle;
+        setState(RunState::Idle);
         return false;
     }
     if (!mdi_ && !hook_ && config_.parameters.get(param::kHomeBeforeProcessing) != 0.0 &&
@@ -324,10 +324,10 @@ bool Controller::start() {
     timeLimitFrom_ = runStartedAt_;
     breakRun_.runStartsFrom(machine_.position());
     if (!unit || !executor_->start(*unit)) {
-        state_ = RunState::Finished;
+        setState(RunState::Finished);
         return true;
     }
-    state_ = RunState::Running;
+    setState(RunState::Running);
     return true;
 }
 
@@ -359,7 +359,7 @@ Controller::RunState Controller::advance(double seconds) {
     if (executor_->state() == macro::Executor::State::Alarmed) {
         raiseAlarm(*executor_->alarm());
     } else if (executor_->state() == macro::Executor::State::Finished) {
-        state_ = RunState::Finished;
+        setState(RunState::Finished);
     }
     return state_;
 }
@@ -404,7 +404,7 @@ void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& s
     }
     TraceSource where{program_.fileName(stop.location), stop.location.line};
     programStop_ = stop.what + " (" + where.file + ":" + std::to_string(where.line) + ")";
-    state_ = RunState::Hold;
+    setState(RunState::Hold);
     if (status_.trace()) {
         status_.trace()->programStop(machine_.time(), stop.what, where);
     }
@@ -428,7 +428,7 @@ void Controller::raiseAlarm(const Alarm& alarm) {
     if (executor_ && executor_->changingTool()) {
         toolLife_.manager().revertChange(); // the change never completed: its tool is not in use
     }
-    state_ = RunState::Alarm;
+    setState(RunState::Alarm);
     enterSafeState();
     if (status_.trace()) {
         status_.trace()->alarm(machine_.time(), alarm);

@@ -244,7 +244,9 @@ private:
     std::optional<config::Hook> hook_;  // the loaded program is this hook file
     bool inEventHook_ = false;          // pause.nc or error.nc runs: no hook starts inside it
     std::optional<machine::Axes> beforePauseHook_; // where the hold stopped the axes, if pause.nc moved them
+    // The run state changes only through setState(); the parts read it by const reference.
     RunState state_ = RunState::Idle;
+    void setState(RunState next) { state_ = next; }
     std::optional<Alarm> alarm_;
     double displayTime_ = 0.0;
     machine::SimulatedMachine::Remainder remainder_; // what a hold cut short
@@ -268,7 +270,7 @@ private:
     Saved save() const final;
     void restore(const Saved& saved) final;
     void startClock(const std::string& where) final;
-    void setRunState(RunState state) final { state_ = state; }
+    void setRunState(RunState state) final { setState(state); }
 
     ManualControl manual_{machine_, config_.parameters, *this};
     Homing homing_{machine_, config_.parameters, config_.folder, *this};

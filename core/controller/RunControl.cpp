@@ -18,7 +18,7 @@ void Controller::hold() {
     if (machine_.keepsHistory() && displayTime_ < machine_.moveStart()) {
         // the handwheel guide has the display behind the moves already issued (a retrace): their
         // blocks have run, so the run waits where the display is and goes on from there
-        state_ = RunState::Hold;
+        setState(RunState::Hold);
         if (status_.trace()) {
             status_.trace()->runState(displayTime_, "pause");
         }
@@ -39,7 +39,7 @@ void Controller::hold() {
         up(2) += liftedBy_;
         machine_.rapid(up);
     }
-    state_ = RunState::Hold;
+    setState(RunState::Hold);
     if (status_.trace()) {
         status_.trace()->runState(displayTime_, "pause");
     }
@@ -77,7 +77,7 @@ void Controller::resume() {
     }
     remainder_ = {};
     programStop_.clear();
-    state_ = RunState::Running;
+    setState(RunState::Running);
 }
 
 void Controller::reset() {
@@ -98,7 +98,7 @@ void Controller::reset() {
     programStop_.clear();
     panel_.clearSensorWait();
     panel_.clearDialog();
-    state_ = RunState::Idle; // start() runs the program again from its beginning
+    setState(RunState::Idle); // start() runs the program again from its beginning
     if (status_.trace()) {
         status_.trace()->runState(displayTime_, "reset");
     }
@@ -122,7 +122,7 @@ void Controller::emergencyStop(const std::string& why) {
     raiseAlarm(Alarm{AlarmCode::EmergencyStop,
                      (why.empty() ? std::string("急停 emergency stop") : why) + ": motion stopped at once, outputs off",
                      "", 0, 0});
-    state_ = RunState::EStop;
+    setState(RunState::EStop);
     if (status_.trace()) {
         status_.trace()->runState(displayTime_, "estop");
     }

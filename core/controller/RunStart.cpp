@@ -21,7 +21,7 @@ void Controller::restore(const Saved& saved) {
     config_.parameters = saved.parameters;
     panel_.clearDialog();
     syncToolLength();
-    state_ = RunState::Idle;
+    setState(RunState::Idle);
 }
 
 void Controller::startClock(const std::string& where) {
