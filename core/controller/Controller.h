@@ -47,7 +47,10 @@ namespace m350::controller {
 // The one façade the CLI and the panel's session use: load a program with the machine's macro
 // libraries, run it in virtual time, inspect the result. Owns the machine, the interpreter, the
 // variables and the executor; implements the machine-side variables for the macro layer. Its
-// parts: manual() (jog, handwheel, guide, overrides), homing() and breakRun() (断点加工).
+// parts, each a class with its own state: manual() (jog, handwheel, 试切 guide, overrides),
+// homing() (回零), breakRun() (断点加工), operatorPanel() (dialogs, keys, watched inputs),
+// toolTableEdits(), toolLife(), toolBreakage(), externalDevices() and status() (messages, trace,
+// the run report).
 class Controller : public macro::MachineAccess,
                    public machine::MachineObserver,
                    private RunView,

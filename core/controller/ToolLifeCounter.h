@@ -25,7 +25,7 @@ namespace m350::controller {
 // FANUC tool life management as the controller runs it (core/tools/ToolLifeManager.h): groups from
 // the machine folder's toollife.txt or G10 L3; T<ignore+n> selects group n's tool, M06 (on the
 // M350: the T word) starts counting, feed moves and arcs of a run count for a minutes group. The
-// caller writes the data back (tools::saveToolLife) when manager().changed().
+// caller writes the data back (config::MachineFolder::saveToolLife) when manager().changed().
 class ToolLifeCounter {
 public:
     // `state` and `executor` are the controller's (the executor is made anew for each program).

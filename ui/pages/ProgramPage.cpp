@@ -1,6 +1,7 @@
 #include "ui/pages/ProgramPage.h"
 
 #include "ui/pages/PanelContext.h"
+#include "core/params/ParameterNumbers.h"
 #include "ui/program/CodeView.h"
 #include "ui/program/PathView.h"
 #include "ui/program/ProgramEditor.h"
@@ -75,7 +76,7 @@ QString ProgramPage::folderOf(ProgramFiles::Disk disk) const {
 }
 
 ProgramFiles::Sort ProgramPage::sortOrder() const {
-    int value = snapshot_ ? static_cast<int>(snapshot_->status.parameters.get(149)) : 0;
+    int value = snapshot_ ? static_cast<int>(snapshot_->status.parameters.get(param::kFileSortOrder)) : 0;
     return value == 1 ? ProgramFiles::Sort::Suffix : value == 2 ? ProgramFiles::Sort::Date : ProgramFiles::Sort::Name;
 }
 
@@ -158,7 +159,7 @@ void ProgramPage::listSoftkey(int number) {
     case 11: clearLocal(); break;
     case 12: {
         int next = (static_cast<int>(sortOrder()) + 1) % 3;
-        context().session().setParameter(149, next);
+        context().session().setParameter(param::kFileSortOrder, next);
         list_->showFolder(list_->disk(), list_->folder(), static_cast<ProgramFiles::Sort>(next));
         break;
     }
@@ -294,7 +295,7 @@ bool ProgramPage::busyWith(const QString& path) const {
 }
 
 void ProgramPage::render(const PanelSnapshot& snapshot) {
-    const bool sortChanged = !snapshot_ || snapshot_->status.parameters.get(149) != snapshot.status.parameters.get(149);
+    const bool sortChanged = !snapshot_ || snapshot_->status.parameters.get(param::kFileSortOrder) != snapshot.status.parameters.get(param::kFileSortOrder);
     snapshot_ = context().snapshot();
     if (!snapshot_ || &*snapshot_ != &snapshot) {
         snapshot_ = std::make_shared<const PanelSnapshot>(snapshot);

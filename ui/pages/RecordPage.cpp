@@ -1,5 +1,6 @@
 #include "ui/pages/RecordPage.h"
 
+#include "ui/pages/PageId.h"
 #include "ui/pages/PanelContext.h"
 
 #include <QDir>
@@ -71,7 +72,7 @@ void RecordPage::exportRecord() {
 
 bool RecordPage::key(const QString& name) {
     if (name == QLatin1String("ESC")) {
-        emit navigate(QStringLiteral("monitor"));
+        emit navigate(PageId::monitor);
         return true;
     }
     return false;

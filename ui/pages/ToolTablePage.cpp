@@ -2,6 +2,7 @@
 
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
+#include "ui/pages/PageId.h"
 #include "ui/pages/PanelContext.h"
 #include "ui/widgets/PanelTable.h"
 
@@ -108,8 +109,8 @@ void ToolTablePage::softkey(int number) {
     case 4: touchOff(); break;
     case 5: importTable(); break;
     case 6: exportTable(); break;
-    case 7: emit navigate(QStringLiteral("toollife")); break;
-    case 8: emit navigate(QStringLiteral("breakage")); break;
+    case 7: emit navigate(PageId::toolLife); break;
+    case 8: emit navigate(PageId::breakage); break;
     default: break;
     }
 }
@@ -125,7 +126,7 @@ bool ToolTablePage::key(const QString& name) {
     } else if (name == QLatin1String("ENTER")) {
         edit();
     } else if (name == QLatin1String("ESC")) {
-        emit navigate(QStringLiteral("probe"));
+        emit navigate(PageId::probe);
     } else {
         return false;
     }

@@ -24,8 +24,9 @@ namespace m350::ui {
 
 class SimulationRun;
 
-// Lives in the session's worker thread and is the only code of the panel that touches the
-// Controller. Each method runs one operator command, then publishes a snapshot.
+// Lives in the session's worker thread and is, with the SimulationRun it owns, the only code of
+// the panel that touches the Controller. Each method runs one operator command, then publishes a
+// snapshot.
 class SessionWorker : public QObject {
     Q_OBJECT
 public:
@@ -35,6 +36,7 @@ public:
     void begin();  // in the worker thread: starts the display clock, runs sysstart.nc
     void finish(); // in the worker thread: stops it
 
+    // SessionWorker.cpp: the cycle keys, loading, the Monitor's axis commands, one parameter
     void start();
     void pause();
     void reset();
@@ -43,20 +45,28 @@ public:
     void runMdi(const QStringList& lines, Activity activity, bool throughMdiFile = false);
     void answerDialog(bool enter);
     void pressExternStart();
-    // SessionWorkerHooks.cpp: the keys and events that run the machine folder's hook files
     void home(const QVector<int>& axes);
-    void runHooks(const QVector<MachineSession::HookStep>& steps, Activity activity);
-    void userKey(int key);
-    void functionKey(int key);
     void zeroAxes(const QVector<int>& axes);
     void setWorkPosition(int axis, double value);
     void setVariable(int number, double value);
     void clearWorkRecord();
+    void setParameter(int number, double value);
+    void advanceManual(double seconds);
+    void publish();
+    // 仿真 (a SimulationRun beside the machine): speed 0 = as fast as the core goes.
+    void startSimulation(const QString& path, double speed);
+    void setSimulationSpeed(double speed);
+    void stopSimulation();
+    // SessionWorkerHooks.cpp: the keys and events that run the machine folder's hook files
+    void runHooks(const QVector<MachineSession::HookStep>& steps, Activity activity);
+    void userKey(int key);
+    void functionKey(int key);
     // 断点加工 (SessionWorkerBreakRun.cpp); a pause or a reset mid-run keeps the break point in the
     // machine folder's `breakpoint` file
     void startAtLine(int line);
     void resumeAtPause();
     void powerResume();
+    // SessionWorkerManual.cpp: jog, handwheel, 试切, overrides, spindle keys, the IO page
     void jogPress(int axis, int direction);
     void jogRelease(int axis);
     void cycleJogMode();
@@ -69,7 +79,6 @@ public:
     void spindleOverrideKey(int step);
     void spindleKey(int code);
     void setOutput(int port, int level);
-    void setParameter(int number, double value);
     void forceInput(int pin, MachineSession::Fault fault, int level, double seconds);
     // SessionWorkerSettings.cpp: the Param page's batch, the #50-#499 view, the user level
     void setParameters(const std::map<int, double>& values);
@@ -84,12 +93,6 @@ public:
     void touchOffTool(double workZ);
     // The 刀具寿命 view's reset of a group's used life; toollife.txt is saved like tool.tbl.
     void resetToolLife(int group);
-    void advanceManual(double seconds);
-    void publish();
-    // 仿真 (SimulationRun.cpp): the file on a second controller; speed 0 = as fast as the core goes.
-    void startSimulation(const QString& path, double speed);
-    void setSimulationSpeed(double speed);
-    void stopSimulation();
 
 signals:
     void published(const m350::ui::SnapshotPtr& snapshot);

@@ -1,7 +1,7 @@
 // The external output device of a FANUC machine (POPEN / DPRNT / BPRNT / PCLOS) on the panel: what
 // it received goes into the machine folder's dprnt.txt, as `m350-sim` writes it beside a program,
 // and each record into the system log, where an operator sees it. The records come from the
-// controller one by one (takeNewExternalRecords), so the log goes on past the output's limit, where
+// controller one by one (externalDevices().takeNewRecords()), so the log goes on past the output's limit, where
 // dprnt.txt keeps only the first and the last of them.
 #include "ui/session/SessionWorker.h"
 
