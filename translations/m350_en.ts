@@ -250,6 +250,16 @@
         <translation>2:[Deeper] and [Move Up]Modified Z ext-offset.</translation>
     </message>
     <message>
+        <source>Clear 4th</source>
+        <comment>msg 507</comment>
+        <translation>Clear 4th</translation>
+    </message>
+    <message>
+        <source>Clear 5th</source>
+        <comment>msg 508</comment>
+        <translation>Clear 5th</translation>
+    </message>
+    <message>
         <source>Select Coord</source>
         <comment>msg 500</comment>
         <translation>Select Coord</translation>
@@ -283,16 +293,6 @@
         <source>Move up</source>
         <comment>msg 506</comment>
         <translation>Move up</translation>
-    </message>
-    <message>
-        <source>Clear 4th</source>
-        <comment>msg 507</comment>
-        <translation>Clear 4th</translation>
-    </message>
-    <message>
-        <source>Clear 5th</source>
-        <comment>msg 508</comment>
-        <translation>Clear 5th</translation>
     </message>
     <message>
         <source>Select the work system: 0 = G92, 1-6 = G54-G59</source>
@@ -1375,6 +1375,14 @@
         <source>PRCE STOP</source>
         <comment>msg 45</comment>
         <translation>PRCE STOP</translation>
+    </message>
+    <message>
+        <source>deg</source>
+        <translation>deg</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
     </message>
 </context>
 <context>

@@ -250,6 +250,16 @@
         <translation>2:[加深]和[抬高]功能仅对公共偏置Z轴数据有效.</translation>
     </message>
     <message>
+        <source>Clear 4th</source>
+        <comment>msg 507</comment>
+        <translation>设置4th</translation>
+    </message>
+    <message>
+        <source>Clear 5th</source>
+        <comment>msg 508</comment>
+        <translation>设置5th</translation>
+    </message>
+    <message>
         <source>Select Coord</source>
         <comment>msg 500</comment>
         <translation>选择坐标系</translation>
@@ -283,16 +293,6 @@
         <source>Move up</source>
         <comment>msg 506</comment>
         <translation>抬高</translation>
-    </message>
-    <message>
-        <source>Clear 4th</source>
-        <comment>msg 507</comment>
-        <translation>设置4th</translation>
-    </message>
-    <message>
-        <source>Clear 5th</source>
-        <comment>msg 508</comment>
-        <translation>设置5th</translation>
     </message>
     <message>
         <source>Select the work system: 0 = G92, 1-6 = G54-G59</source>
@@ -1375,6 +1375,14 @@
         <source>PRCE STOP</source>
         <comment>msg 45</comment>
         <translation>准停</translation>
+    </message>
+    <message>
+        <source>deg</source>
+        <translation>度</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
     </message>
 </context>
 <context>

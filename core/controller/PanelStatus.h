@@ -23,7 +23,11 @@ struct PanelStatus {
     machine::Axes machine = machine::Axes::Zero(); // 机械坐标
     machine::Axes work = machine::Axes::Zero();    // 工件坐标
     std::array<bool, machine::kAxisCount> homed{}; // #1515-#1519
-    std::array<bool, machine::kAxisCount> axisShown{true, true, true, false, false}; // A, B when configured
+    // The axes the machine has (params::axisSetup: the drive assignment, params 488-492), their
+    // names (params 443/444: the 4th and 5th are A, B or C) and which turn (449/450: degrees).
+    std::array<bool, machine::kAxisCount> axisShown{true, true, true, false, false};
+    std::array<char, machine::kAxisCount> axisName{'X', 'Y', 'Z', 'A', 'B'};
+    std::array<bool, machine::kAxisCount> axisRotary{};
     int workSystem = 1; // #578: 0 = G92, 1..6 = G54..G59
     // Offsets in the variables' slot order: 0 G92, 1-6 G54-G59, 7 G52, 8 the common offset (公共偏置).
     std::array<machine::Axes, 9> workOffsets{};

@@ -2,6 +2,7 @@
 #include "core/controller/Controller.h"
 
 #include "core/common/Numeric.h"
+#include "core/params/AxisSetup.h"
 #include "core/params/ParameterNumbers.h"
 
 #include <algorithm>
@@ -37,8 +38,13 @@ PanelStatus Controller::panelStatus() {
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         out.homed[static_cast<std::size_t>(axis)] = homing_.homed(axis);
     }
-    for (int axis = 3; axis < machine::kAxisCount; ++axis) {
-        out.axisShown[static_cast<std::size_t>(axis)] = homing_.homeSwitchWired(axis);
+    static_assert(params::AxisSetup::kAxes == machine::kAxisCount);
+    const params::AxisSetup axes = params::axisSetup(config_.parameters);
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        const auto i = static_cast<std::size_t>(axis);
+        out.axisShown[i] = axes.present(axis);
+        out.axisName[i] = axes.names[i];
+        out.axisRotary[i] = axes.rotary[i];
     }
     out.workSystem = interp_.activeSlot();
     for (int slot = 0; slot < interp::WorkOffsets::kSlots; ++slot) {

@@ -35,7 +35,9 @@ void ActionDispatcher::dispatch(const OperatorAction& action) {
         }
         break;
     case Kind::Wheel:
-        session_.wheel(action.wheel.axis, action.wheel.step, action.wheel.detents, action.wheel.seconds);
+        if (axisPresent(action.wheel.axis)) {
+            session_.wheel(action.wheel.axis, action.wheel.step, action.wheel.detents, action.wheel.seconds);
+        }
         break;
     case Kind::Page: screen_.showPage(action.name); break;
     case Kind::Force: force(action.force); break;
@@ -61,12 +63,20 @@ bool ActionDispatcher::machineKey(const PanelKey* key) {
 // A jog key held (key_down .. key_up) jogs while held; a plain key press is a tap: one step in
 // STEP mode, a short nudge in CONT.
 void ActionDispatcher::jogKey(const PanelKey& key, OperatorAction::Kind kind) {
-    if (kind != OperatorAction::Kind::KeyUp) {
+    if (kind != OperatorAction::Kind::KeyUp && axisPresent(key.axis)) {
         session_.jogPress(key.axis, key.direction);
     }
     if (kind != OperatorAction::Kind::KeyDown) {
         session_.jogRelease(key.axis);
     }
+}
+
+// The 4th and 5th jog keys (and the wheel's 4th and 5th) move nothing on a machine without that
+// axis: greyed out on the panel, and the same from the keyboard or a replay.
+bool ActionDispatcher::axisPresent(int axis) const {
+    SnapshotPtr snapshot = session_.latest();
+    return !snapshot || axis < 0 || axis >= machine::kAxisCount ||
+           snapshot->status.axisShown[static_cast<std::size_t>(axis)];
 }
 
 // Keys for the screen: the prompt first, then page keys and softkeys, then the current page.

@@ -26,6 +26,7 @@ signals:
 private:
     bool machineKey(const PanelKey* key);
     void jogKey(const PanelKey& key, OperatorAction::Kind kind);
+    bool axisPresent(int axis) const;
     void screenKey(const PanelKey* key, const QString& name); // key: nullptr for a name the table lacks
     void force(const OperatorAction::Force& force);
     PanelScreen& screen_;

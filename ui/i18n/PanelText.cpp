@@ -63,4 +63,21 @@ QString PanelText::axis(int axis) {
     return QString::fromLatin1(names[axis]);
 }
 
+QString PanelText::axis(int axis, const controller::PanelStatus& status) {
+    const auto i = static_cast<std::size_t>(axis);
+    return status.axisShown[i] ? QString(QChar::fromLatin1(status.axisName[i])) : PanelText::axis(axis);
+}
+
+QString PanelText::axisUnit(int axis, const controller::PanelStatus& status) {
+    return status.axisRotary[static_cast<std::size_t>(axis)] ? tr("deg") : tr("mm");
+}
+
+QString PanelText::withAxisName(const QString& text, int axis, const controller::PanelStatus& status) {
+    if (axis < 3 || !status.axisShown[static_cast<std::size_t>(axis)]) {
+        return text;
+    }
+    QString named = text;
+    return named.replace(PanelText::axis(axis), PanelText::axis(axis, status));
+}
+
 } // namespace m350::ui

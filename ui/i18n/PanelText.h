@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/controller/PanelStatus.h"
 #include "core/machine/MachineTypes.h"
 
 #include <QCoreApplication>
@@ -22,7 +23,14 @@ public:
     static QString state(State state);
     static QString stateKey(State state); // "READY", "BUSY" ...
     static QString spindle(machine::SpindleState state);
-    static QString axis(int axis); // X Y Z 4th 5th as the panel labels them
+    static QString axis(int axis); // X Y Z 4th 5th: the axis's place, as the firmware's softkeys say it
+    // The axis's name on this machine: X Y Z, then the 4th and 5th as the parameters call them (A B
+    // C); a 4th or 5th the machine lacks keeps its place's name.
+    static QString axis(int axis, const controller::PanelStatus& status);
+    static QString axisUnit(int axis, const controller::PanelStatus& status); // mm, or deg when it turns
+    // A firmware text about the 4th or 5th axis ("Clear 4th", "机械4th轴回") with the machine's name
+    // for it ("Clear A", "机械A轴回").
+    static QString withAxisName(const QString& text, int axis, const controller::PanelStatus& status);
     // True while the panel speaks Chinese: names that come from the core in both languages
     // (IO functions) pick their zh or en form by it.
     static bool chinese();

@@ -36,6 +36,8 @@ CompactDro::CompactDro(QWidget* parent) : QWidget(parent) {
         names_[i] = new QLabel(PanelText::axis(axis), this);
         machine_[i] = new QLabel(this);
         work_[i] = new QLabel(this);
+        units_[i] = new QLabel(this);
+        units_[i]->setProperty("droUnit", true);
         for (QLabel* value : {machine_[i], work_[i]}) {
             value->setProperty("smallDro", true);
             value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -43,8 +45,9 @@ CompactDro::CompactDro(QWidget* parent) : QWidget(parent) {
         grid->addWidget(names_[i], axis + 1, 0);
         grid->addWidget(machine_[i], axis + 1, 1);
         grid->addWidget(work_[i], axis + 1, 2);
+        grid->addWidget(units_[i], axis + 1, 3);
     }
-    grid->setColumnStretch(3, 1);
+    grid->setColumnStretch(4, 1);
     retranslate();
 }
 
@@ -65,14 +68,19 @@ void CompactDro::render(const PanelSnapshot& snapshot) {
     for (int axis = 0; axis < 5; ++axis) {
         const auto i = static_cast<std::size_t>(axis);
         bool shown = s.axisShown[i];
-        names_[i]->setVisible(shown);
-        machine_[i]->setVisible(shown);
-        work_[i]->setVisible(shown);
+        for (QLabel* label : {names_[i], machine_[i], work_[i], units_[i]}) {
+            label->setVisible(shown);
+        }
+        names_[i]->setText(PanelText::axis(axis, s));
+        units_[i]->setText(PanelText::axisUnit(axis, s));
         machine_[i]->setText(droText(s.machine(axis)));
         work_[i]->setText(droText(s.work(axis)));
     }
 }
 
 QString CompactDro::workText(int axis) const { return work_[static_cast<std::size_t>(axis)]->text().trimmed(); }
+QString CompactDro::axisText(int axis) const { return names_[static_cast<std::size_t>(axis)]->text(); }
+QString CompactDro::unitText(int axis) const { return units_[static_cast<std::size_t>(axis)]->text(); }
+bool CompactDro::axisVisible(int axis) const { return !names_[static_cast<std::size_t>(axis)]->isHidden(); }
 
 } // namespace m350::ui

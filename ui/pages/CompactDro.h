@@ -18,6 +18,9 @@ public:
     explicit CompactDro(QWidget* parent = nullptr);
     void render(const PanelSnapshot& snapshot);
     QString workText(int axis) const;
+    QString axisText(int axis) const; // the row's name and unit ("A", "deg"), for tests
+    QString unitText(int axis) const;
+    bool axisVisible(int axis) const;
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -29,6 +32,7 @@ private:
     std::array<QLabel*, 5> names_{};
     std::array<QLabel*, 5> machine_{};
     std::array<QLabel*, 5> work_{};
+    std::array<QLabel*, 5> units_{};
 };
 
 // A coordinate as the panel shows it: three decimals, fixed width, no "-0.000", so digits never jump.

@@ -58,7 +58,6 @@ void CoordPage::retranslate() {
                                      : QStringLiteral("G%1").arg(53 + slot));
     }
     table_->setVerticalHeaderLabels(rows);
-    table_->setHorizontalHeaderLabels({"X", "Y", "Z", "4th", "5th"});
     help_->setText(tr("1:[Knob]Move the cursor,[Enter]modify.", "msg 997") + QLatin1Char('\n') +
                    tr("2:[Deeper] and [Move Up]Modified Z ext-offset.", "msg 998"));
     if (auto s = context().snapshot()) {
@@ -67,11 +66,17 @@ void CoordPage::retranslate() {
 }
 
 QVector<Page::Softkey> CoordPage::softkeys() const {
+    QString fourth = tr("Clear 4th", "msg 507");
+    QString fifth = tr("Clear 5th", "msg 508");
+    if (auto s = context().snapshot()) {
+        fourth = PanelText::withAxisName(fourth, 3, s->status);
+        fifth = PanelText::withAxisName(fifth, 4, s->status);
+    }
     return {{tr("Select Coord", "msg 500"), true, {}}, {tr("Clear X", "msg 501"), true, {}},
             {tr("Clear Y", "msg 502"), true, {}},      {tr("Clear Z", "msg 503"), true, {}},
             {tr("Z Step", "msg 504"), true, {}},       {tr("Deeper", "msg 505"), true, {}},
-            {tr("Move up", "msg 506"), true, {}},      {tr("Clear 4th", "msg 507"), shown_[3], {}},
-            {tr("Clear 5th", "msg 508"), shown_[4], {}}, {}, {}, {}};
+            {tr("Move up", "msg 506"), true, {}},      {fourth, shown_[3], {}},
+            {fifth, shown_[4], {}}, {}, {}, {}};
 }
 
 void CoordPage::softkey(int number) {
@@ -116,7 +121,9 @@ void CoordPage::setAxis(int axis) {
     if (!shown_[static_cast<std::size_t>(axis)]) {
         return;
     }
-    context().askText(PanelText::axis(axis) + tr("Axis Abs pos:", "msg 93"), QStringLiteral("0"),
+    auto s = context().snapshot();
+    const QString name = s ? PanelText::axis(axis, s->status) : PanelText::axis(axis);
+    context().askText(name + tr("Axis Abs pos:", "msg 93"), QStringLiteral("0"),
                       [this, axis](std::optional<QString> text) {
                           bool ok = false;
                           double value = text ? text->trimmed().toDouble(&ok) : 0.0;
@@ -148,11 +155,18 @@ bool CoordPage::key(const QString& name) {
 void CoordPage::render(const PanelSnapshot& snapshot) {
     const controller::PanelStatus& s = snapshot.status;
     bool axesChanged = false;
+    QStringList headings;
     for (int axis = 0; axis < 5; ++axis) {
         const auto a = static_cast<std::size_t>(axis);
         axesChanged = axesChanged || shown_[a] != s.axisShown[a];
         shown_[a] = s.axisShown[a];
         table_->setColumnHidden(axis, !shown_[a]);
+        headings << QStringLiteral("%1 (%2)").arg(PanelText::axis(axis, s), PanelText::axisUnit(axis, s));
+    }
+    if (headings.join(QLatin1Char('|')) != names_) {
+        names_ = headings.join(QLatin1Char('|'));
+        table_->setHorizontalHeaderLabels(headings);
+        axesChanged = true;
     }
     for (int row = 0; row < table_->rowCount(); ++row) {
         const int slot = kSlots[row];
@@ -177,6 +191,12 @@ QString CoordPage::offsetText(int slot, int axis) const {
     }
     return {};
 }
+
+QString CoordPage::columnText(int axis) const {
+    const QTableWidgetItem* item = table_->horizontalHeaderItem(axis);
+    return item ? item->text() : QString();
+}
+bool CoordPage::columnShown(int axis) const { return !table_->isColumnHidden(axis); }
 
 QJsonObject CoordPage::state() const { return {{"coord_z_step", zStep_}}; }
 

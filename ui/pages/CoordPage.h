@@ -29,6 +29,8 @@ public:
 
     double zStep() const { return zStep_; }
     QString offsetText(int slot, int axis) const; // slot 0 G92, 1-6 G54-G59, 8 common
+    QString columnText(int axis) const;           // the column's heading ("A (deg)")
+    bool columnShown(int axis) const;
 
 private:
     void setAxis(int axis);
@@ -38,6 +40,7 @@ private:
     QLabel* help_;
     double zStep_ = 0.1;
     std::array<bool, 5> shown_{true, true, true, false, false};
+    QString names_; // the headings the softkeys were made with
 };
 
 } // namespace m350::ui

@@ -63,10 +63,14 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
             value->setProperty("dro", true);
             value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         }
+        unit_[axis] = new QLabel(this);
+        unit_[axis]->setObjectName(QStringLiteral("droUnit%1").arg(axis));
+        unit_[axis]->setProperty("droUnit", true);
         axisName_[axis]->setProperty("droAxis", true);
         dro->addWidget(axisName_[axis], axis + 1, 0);
         dro->addWidget(machine_[axis], axis + 1, 1);
         dro->addWidget(work_[axis], axis + 1, 2);
+        dro->addWidget(unit_[axis], axis + 1, 3);
     }
     dro->setRowStretch(6, 1);
     auto* info = new QGridLayout;
@@ -121,10 +125,12 @@ void MonitorPage::retranslate() {
 
 QVector<Page::Softkey> MonitorPage::softkeys() const {
     auto axisRow = [this](const QStringList& labels) {
+        auto s = context().snapshot();
         QVector<Softkey> keys;
         for (int i = 0; i < labels.size(); ++i) {
             bool axisKey = i < 5;
-            keys.push_back({labels[i], !axisKey || shown_[static_cast<std::size_t>(i)], {}});
+            QString label = axisKey && s ? PanelText::withAxisName(labels[i], i, s->status) : labels[i];
+            keys.push_back({label, !axisKey || shown_[static_cast<std::size_t>(i)], {}});
         }
         return keys;
     };
@@ -221,21 +227,26 @@ bool MonitorPage::key(const QString& name) {
 void MonitorPage::render(const PanelSnapshot& snapshot) {
     const controller::PanelStatus& s = snapshot.status;
     bool axesChanged = false;
+    QString names;
     for (int axis = 0; axis < 5; ++axis) {
         const auto index = static_cast<std::size_t>(axis);
         bool shown = s.axisShown[index];
         axesChanged = axesChanged || shown != shown_[index];
         shown_[index] = shown;
-        for (QLabel* label : {axisName_[index], machine_[index], work_[index]}) {
+        names += PanelText::axis(axis, s);
+        for (QLabel* label : {axisName_[index], machine_[index], work_[index], unit_[index]}) {
             label->setVisible(shown);
         }
         // the homed marker: a filled circle beside a homed axis, as the panel's home icon
-        axisName_[index]->setText(PanelText::axis(axis) + (s.homed[index] ? QStringLiteral(" ●") : QStringLiteral(" ○")));
+        axisName_[index]->setText(PanelText::axis(axis, s) +
+                                  (s.homed[index] ? QStringLiteral(" ●") : QStringLiteral(" ○")));
+        unit_[index]->setText(PanelText::axisUnit(axis, s));
         axisName_[index]->setToolTip(s.homed[index] ? tr("Homed") : tr("Not homed"));
         machine_[index]->setText(droText(s.machine(axis)));
         work_[index]->setText(droText(s.work(axis)));
     }
-    if (axesChanged) {
+    if (axesChanged || names != names_) {
+        names_ = names;
         emit softkeysChanged();
     }
     values_["coord"]->setText(workSystemName(s.workSystem));
@@ -258,6 +269,9 @@ void MonitorPage::render(const PanelSnapshot& snapshot) {
 
 QString MonitorPage::machineText(int axis) const { return machine_[static_cast<std::size_t>(axis)]->text().trimmed(); }
 QString MonitorPage::workText(int axis) const { return work_[static_cast<std::size_t>(axis)]->text().trimmed(); }
+QString MonitorPage::axisText(int axis) const { return axisName_[static_cast<std::size_t>(axis)]->text(); }
+QString MonitorPage::unitText(int axis) const { return unit_[static_cast<std::size_t>(axis)]->text(); }
+bool MonitorPage::axisVisible(int axis) const { return !axisName_[static_cast<std::size_t>(axis)]->isHidden(); }
 QString MonitorPage::infoText(const QString& name) const { return values_.value(name) ? values_.value(name)->text() : QString(); }
 
 QJsonObject MonitorPage::state() const {

@@ -30,6 +30,9 @@ public:
     Menu menu() const { return menu_; }
     QString machineText(int axis) const; // what the DRO shows, for tests
     QString workText(int axis) const;
+    QString axisText(int axis) const; // the DRO row's name ("A ○") and unit ("deg"), for tests
+    QString unitText(int axis) const;
+    bool axisVisible(int axis) const;
     QString infoText(const QString& name) const; // "tool", "feed", "spindle", "fro" ...
 
 private:
@@ -39,6 +42,7 @@ private:
     std::array<QLabel*, 5> axisName_{};
     std::array<QLabel*, 5> machine_{};
     std::array<QLabel*, 5> work_{};
+    std::array<QLabel*, 5> unit_{};
     QLabel* axisHeader_;
     QLabel* machineHeader_;
     QLabel* workHeader_;
@@ -47,6 +51,7 @@ private:
     QLabel* modal_;
     Menu menu_ = Menu::Main;
     std::array<bool, 5> shown_{true, true, true, false, false};
+    QString names_; // the axes' names the softkeys were made with
 };
 
 } // namespace m350::ui

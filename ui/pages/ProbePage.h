@@ -39,6 +39,7 @@ public:
     bool selecting() const { return selecting_; }
     bool toolSelected(int tool) const { return selected_[static_cast<std::size_t>(tool - 1)]; }
     QString progressText() const;
+    const CompactDro* dro() const { return dro_; }
 
 private:
     void floating();

@@ -1,5 +1,7 @@
 #include "ui/panel/HandwheelWidget.h"
 
+#include "ui/i18n/PanelText.h"
+
 #include <QButtonGroup>
 #include <QHBoxLayout>
 #include <QMouseEvent>
@@ -28,9 +30,8 @@ HandwheelWidget::HandwheelWidget(Sink sink, QWidget* parent) : QWidget(parent), 
     auto* stepRow = new QHBoxLayout;
     axes_ = new QButtonGroup(this);
     steps_ = new QButtonGroup(this);
-    const char* const axisNames[] = {"X", "Y", "Z", "4th", "5th"};
     for (int axis = 0; axis < 5; ++axis) {
-        auto* b = new QPushButton(QString::fromLatin1(axisNames[axis]), this);
+        auto* b = new QPushButton(PanelText::axis(axis), this);
         b->setObjectName(QStringLiteral("wheelAxis%1").arg(axis));
         b->setCheckable(true);
         b->setFocusPolicy(Qt::NoFocus);
@@ -64,6 +65,20 @@ HandwheelWidget::HandwheelWidget(Sink sink, QWidget* parent) : QWidget(parent), 
 }
 
 void HandwheelWidget::render(const PanelSnapshot& snapshot) {
+    const controller::PanelStatus& s = snapshot.status;
+    for (int axis = 3; axis < 5; ++axis) {
+        QAbstractButton* b = axes_->button(axis);
+        const bool shown = s.axisShown[static_cast<std::size_t>(axis)];
+        if (b->text() != PanelText::axis(axis, s)) {
+            b->setText(PanelText::axis(axis, s));
+        }
+        b->setEnabled(shown);
+        if (!shown && axis_ == axis) { // the machine no longer has it: the wheel goes back to X
+            flush();
+            axis_ = 0;
+            axes_->button(0)->setChecked(true);
+        }
+    }
     bool guide = snapshot.status.guide;
     if (guide != guide_) {
         guide_ = guide;

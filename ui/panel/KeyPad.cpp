@@ -1,5 +1,6 @@
 #include "ui/panel/KeyPad.h"
 
+#include "ui/i18n/PanelText.h"
 #include "ui/panel/HandwheelWidget.h"
 
 #include <QEvent>
@@ -97,7 +98,14 @@ void KeyPad::render(const PanelSnapshot& snapshot) {
             button->setStyleSheet({}); // re-polish for the lamp property
         }
         if (key.role == PanelKey::Role::Jog && key.axis >= 3) {
-            button->setEnabled(s.axisShown[static_cast<std::size_t>(key.axis)]);
+            // the 4th and 5th keys move the axis the machine has there, under its name (A+, C-)
+            const bool shown = s.axisShown[static_cast<std::size_t>(key.axis)];
+            const QString text = shown ? PanelText::axis(key.axis, s) + QChar(key.direction > 0 ? '+' : '-')
+                                       : QString(key.caption);
+            if (button->text() != text) {
+                button->setText(text);
+            }
+            button->setEnabled(shown);
         }
     }
     wheel_->render(snapshot);
