@@ -27,6 +27,59 @@ GROUP_ZH_OVERRIDES = {6: "IO参数及自定义按键"}
 
 NUMBER = re.compile(r"-?\d+(?:\.\d+)?")
 
+# The firmware's `eng` file gives some hidden parameters their Chinese name, stored in GBK; the
+# extraction read those bytes as Latin-1 ("×Ô¶¨ÒåG´úÂëºÅ" is 自定义G代码号). Such text is decoded
+# back (repair_gbk). An English name that is then Chinese would show Chinese on the English
+# panel: these English names are ours, translated from the Chinese.
+ENGLISH_NAMES = {
+    71: "Enable G0 motion planning",              # G0段运动规划使能
+    134: "Tool setting start position",           # 对刀初始位置
+    242: "Main screen layout",                    # 主界面显示方案
+    249: "J parameter gradient",                  # J参数梯度
+    254: "Toolpath view width",                   # 刀轨宽度
+    255: "Toolpath view height",                  # 刀轨高度
+    256: "Toolpath view thickness",               # 刀轨厚度
+    257: "Toolpath canvas thickness in relief mode",  # 雕像模式下刀轨画板厚度
+    258: "Canvas origin X position",              # 画板原点X轴位置
+    259: "Canvas origin Y position",              # 画板原点Y轴位置
+    260: "Canvas origin Z position",              # 画板原点Z轴位置
+    270: "User permission key",                   # 用户权限密匙
+    969: "Custom G code number",                  # 自定义G代码号 (Gxx, 100-200: G100-G199)
+}
+# The same for options: (parameter, value) -> English. The language options of 240 name each
+# language in its own script in `eng` (中文, Рус); the English panel says it in English.
+ENGLISH_OPTIONS = {
+    (71, 0): "No", (71, 1): "Yes",                               # 禁止, 使能
+    (134, 0): "Current position", (134, 1): "Fixed position",    # 当前位置, 固定位置
+    (240, 1): "Chinese", (240, 2): "Russian",                    # 中文, Рус
+    (242, 0): "Layout 1", (242, 1): "Layout 2", (242, 2): "Layout 3",  # 方案1-3
+}
+
+
+def repair_gbk(text, where):
+    """GBK text read as Latin-1 back to what it says; other text unchanged. Latin-1 letters do not
+    occur in the source's names otherwise (Chinese, English, Russian only)."""
+    if not any(0x80 <= ord(c) <= 0xFF for c in text):
+        return text
+    try:
+        return text.encode("latin-1").decode("gbk")
+    except (UnicodeEncodeError, UnicodeDecodeError) as e:
+        raise ValueError(f"{where}: {text!r} is neither real text nor GBK read as Latin-1 ({e})")
+
+
+def has_cjk(text):
+    return any(is_cjk(c) for c in text)
+
+
+def english_name(number, en, where):
+    en = repair_gbk(en, where)
+    if has_cjk(en):
+        if number not in ENGLISH_NAMES:
+            raise ValueError(f"{where}: the English name of parameter {number} is Chinese ({en}): "
+                             "give it one in ENGLISH_NAMES")
+        return ENGLISH_NAMES[number]
+    return en
+
 
 def is_cjk(ch):
     # CJK punctuation, ideographs and full-width forms all sit at or above U+3000; the mojibake in
@@ -54,15 +107,22 @@ def split_group(cell):
     return group, GROUP_ZH_OVERRIDES.get(group, zh), en
 
 
-def parse_options(cell, where):
-    options = [o.strip() for o in cell.split(";") if o.strip()]
-    for option in options:
+def parse_options(cell, number, where):
+    options = []
+    for option in (o.strip() for o in cell.split(";") if o.strip()):
         value, eq, text = option.partition("=")
         if not eq or not NUMBER.fullmatch(value.strip()):
             raise ValueError(f"{where}: option {option!r} is not value=zh/en")
+        # split before repairing: the mojibake half holds no CJK, so the split rule still holds
         parts = split_zh_en(text.strip())
         if parts is None or not parts[0].strip() or not parts[1].strip():
             raise ValueError(f"{where}: option {option!r} does not split into zh/en")
+        zh, en = repair_gbk(parts[0], where), repair_gbk(parts[1], where)
+        en = ENGLISH_OPTIONS.get((number, int(float(value))), en)
+        if has_cjk(en):
+            raise ValueError(f"{where}: option {option!r} has a Chinese English name: give it one "
+                             "in ENGLISH_OPTIONS")
+        options.append(f"{value.strip()}={zh}/{en}")
     return "; ".join(options)
 
 
@@ -84,8 +144,10 @@ def convert(source_text):
         if default and not NUMBER.fullmatch(default):
             raise ValueError(f"{where}: default {default!r} is not a number")
         group, group_zh, group_en = split_group(group_cell)
+        zh = repair_gbk(zh, where)
+        en = english_name(int(number), en, where)
         # Rows 950-953 (int/real) carry an empty "0= ; 1=" placeholder; options mean nothing there.
-        options = parse_options(options, where) if typ == "select" else ""
+        options = parse_options(options, int(number), where) if typ == "select" else ""
         if typ == "select" and not options:
             raise ValueError(f"{where}: select parameter without options")
         rows.append([number, str(group), group_zh, group_en, zh, en, unit, typ, low, high, options,

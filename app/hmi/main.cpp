@@ -22,6 +22,7 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <string_view>
 #include <variant>
 
 using namespace m350;
@@ -43,6 +44,21 @@ bool writeState(const ui::MainWindow& window, const QString& path, QString* erro
     return true;
 }
 
+// --help and --version are answered before any Qt platform is opened: on a machine without a
+// display (an SSH session, a build server) the panel still says how to run it.
+bool asksForHelpOrVersion(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view argument = argv[i];
+        if (argument == "--") {
+            return false; // what follows is a file name
+        }
+        if (argument == "-h" || argument == "--help" || argument == "--version") {
+            return true;
+        }
+    }
+    return false;
+}
+
 } // namespace
 
 // --measure: run the loaded program in real time and report what the operator would see.
@@ -61,6 +77,9 @@ int measure(QApplication& app, ui::MainWindow& window, ui::MachineSession& sessi
 }
 
 int main(int argc, char** argv) {
+    if (asksForHelpOrVersion(argc, argv)) {
+        return hmi::parseHmiCommandLine(argc, argv).exitStatus;
+    }
     const qint64 startNs = ui::steadyNowNs();
     QApplication app(argc, argv); // takes Qt's own options (-platform ...) out of argv first
     QApplication::setApplicationName(QStringLiteral("m350-studio"));

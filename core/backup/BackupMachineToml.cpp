@@ -110,6 +110,27 @@ void world(const ControllerBackup& backup, ImportedMachine& out) {
                               std::to_string(tools - set) + " assumed 60 mm"});
 }
 
+// Params 488-492 give each motor output the programmed axis it drives. A 4th or 5th motor driving
+// Y or Z is the second motor of a gantry (a dual-Y router: 491 = 1; an owner's fndzero.nc then
+// writes #883=#881). X is left out: 0 is also the value of a motor never set.
+void gantryMotors(const params::ParameterTable& p, ImportedMachine& out) {
+    for (int motor = 4; motor <= 5; ++motor) {
+        const int n = param::kMotorAxisFirst + motor - 1;
+        const double axis = p.get(n);
+        if (axis != 1.0 && axis != 2.0) {
+            continue;
+        }
+        const char* programmed = axis == 1.0 ? "Y" : "Z";
+        const char* own = motor == 4 ? "A (the 4th axis, #883)" : "B (the 5th axis, #884)";
+        out.unsupported.push_back("motor " + std::to_string(motor) + " drives " + programmed + " (param " +
+                                  std::to_string(n) + " = " + params::tomlNumber(axis) +
+                                  "): a gantry's second motor. The simulator moves " + programmed +
+                                  " alone; " + own + " keeps what homing or a macro gives it (fndzero.nc's #" +
+                                  std::to_string(880 + motor - 1) + "=#" + std::to_string(880 + static_cast<int>(axis)) +
+                                  ") and does not follow " + programmed + "'s moves");
+    }
+}
+
 } // namespace
 
 ImportedMachine formatImportedMachine(const ControllerBackup& backup) {
@@ -125,6 +146,7 @@ ImportedMachine formatImportedMachine(const ControllerBackup& backup) {
     world(backup, out);
     out.review.insert(out.review.begin(), wiring.review.begin(), wiring.review.end());
     out.unsupported.insert(out.unsupported.end(), wiring.unsupported.begin(), wiring.unsupported.end());
+    gantryMotors(backup.setting, out);
     return out;
 }
 

@@ -39,6 +39,7 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     for (const machine::IoLink& link : config_.ioLinks) {
         machine_.addLink(link);
     }
+    interp_.setHomedFlags(&homing_.flags());
     for (const auto& [number, position] : config_.referencePoints) {
         interp_.setReferencePoint(number, Eigen::Map<const machine::Axes>(position.data()));
     }

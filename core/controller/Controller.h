@@ -184,6 +184,7 @@ public:
     std::optional<std::string> writeSystem(const macro::VariableInfo& info, int number, double value,
                                            std::string_view text) override;
     std::optional<HomingFailure> builtInHoming(int axis) override;
+    void homingStarts(int axis) override;
     // machine::MachineObserver
     void onMachineEvent(const machine::MachineEvent& event) override;
     bool ignoresMove(const machine::Axes& from, const machine::Axes& to) const override;
@@ -212,6 +213,7 @@ private:
     std::string timeLimitText(const std::string& what, double since) const final;
     double runStartedAt() const final { return runStartedAt_; }
     void raiseAlarm(const Alarm& alarm) final;
+    bool axisHomed(int axis) const final { return homing_.homed(axis); }
     void parseWithLibraries(gcode::Program& program, const gcode::SourceText& source, gcode::FileRole role,
                             std::vector<gcode::Diagnostic>& diagnostics) const;
     static bool addSourceFile(gcode::Parser& parser, gcode::Program& program, const std::string& path,

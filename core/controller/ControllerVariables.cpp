@@ -47,8 +47,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         if (info.index >= machine::kAxisCount) {
             return Value::of(probe.position(info.index - machine::kAxisCount));
         }
-        bool moved = (probe.axes & (1u << info.index)) != 0;
-        return Value::of(moved && probe.triggered ? 2 : 0);
+        return Value::of(probe.status[static_cast<std::size_t>(info.index)]);
     }
     case VariableKind::Input: {
         int level = machine_.input(info.index);
@@ -98,6 +97,7 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
     case VariableKind::Output: scan_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
     case VariableKind::ToolOffset: return tools_.setOffsetValue(info.index, value);
     case VariableKind::Homed: homing_.setHomed(info.index, value != 0.0); return std::nullopt;
+    case VariableKind::ProbeResult: interp_.setProbeStatus(info.index, value); return std::nullopt; // #1920-#1924
     case VariableKind::MachinePosition: {
         // M350 #880-#884: the axis takes this machine position where it stands, without moving, and
         // is no longer homed (a dual-Y gantry's fndzero.nc copies Y to A so, then sets #1518 = 1)

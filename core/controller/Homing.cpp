@@ -90,6 +90,7 @@ std::optional<Alarm> Homing::homeAxis(int axis, double since) {
     const double slow = p.get(param::kHomingSecondSpeed) > 0 ? p.get(param::kHomingSecondSpeed) : speed / 10.0;
     const int cycles = std::max(1, saturatingInt(p.get(param::kHomingCycles)));
     const double home = p.get(param::kHomePositionX + axis);
+    homed_[static_cast<std::size_t>(axis)] = 0; // searching: no trusted position until the switch
 
     // the switch is where the simulated world has it (placeHomeSwitches); from beyond it the
     // approach starts at once

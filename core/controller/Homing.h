@@ -35,6 +35,8 @@ public:
     bool homed(int axis) const { return homed_[static_cast<std::size_t>(axis)] != 0; }
     bool xyzHomed() const { return homed(0) && homed(1) && homed(2); }
     void setHomed(int axis, bool homed) { homed_[static_cast<std::size_t>(axis)] = homed ? 1 : 0; }
+    // #1515-#1519 as one array (1 homed), which the interpreter's soft limits read.
+    const std::array<int, machine::kAxisCount>& flags() const { return homed_; }
     // Param 127 = 0 asks at boot whether to home (是否进行开机寻零操作?) while X, Y, Z are not homed.
     bool needsBootHomingPrompt() const;
     // X, Y and Z always; the 4th and 5th axes when their home switch is set.

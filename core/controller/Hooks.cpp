@@ -189,6 +189,15 @@ void Controller::returnAfterPauseHook() {
     }
 }
 
+// A library's O501 takes over the homing of `axis`: as the firmware's own homing, it starts by
+// forgetting the axis's position (the homed marker goes out), so the soft limits no longer hold
+// the axis while it searches for its switch (see checkAgainstSoftLimits).
+void Controller::homingStarts(int axis) {
+    if (!scan_.scanning()) {
+        homing_.setHomed(axis, false);
+    }
+}
+
 std::optional<macro::MachineAccess::HomingFailure> Controller::builtInHoming(int axis) {
     if (scan_.scanning()) {
         return HomingFailure{AlarmCode::NotHomed, "homing (M98 P501) cannot be scanned: start after it"};

@@ -111,8 +111,8 @@ bool ManualControl::wheelTurn(int axis, int multiplier, int detents, double seco
     return moveManually(axis, distance, speed, manual::mpgAcceleration(p, axis));
 }
 
-// One manual move of `axis` by `distance`, stopped at the soft limits when they are on (an axis
-// already beyond one may still come back). False when nothing can move.
+// One manual move of `axis` by `distance`, stopped at the soft limits when they are on and the
+// axis is homed (an axis already beyond one may still come back). False when nothing can move.
 bool ManualControl::moveManually(int axis, double distance, double speed, double acceleration) {
     const double now = run_.displayTime();
     if (machine_.time() < now) {
@@ -122,7 +122,7 @@ bool ManualControl::moveManually(int axis, double distance, double speed, double
     const machine::Axes from = machine_.position();
     machine::Axes target = from;
     target(axis) += distance;
-    if (manual::softLimitsOn(p)) {
+    if (manual::softLimitsOn(p) && run_.axisHomed(axis)) {
         manual::Travel travel = manual::softLimits(p, axis);
         target(axis) = std::clamp(target(axis), std::min(travel.low, from(axis)), std::max(travel.high, from(axis)));
     }

@@ -18,6 +18,8 @@ public:
     // The machine time the run started at (the guide retraces no further back).
     virtual double runStartedAt() const = 0;
     virtual void raiseAlarm(const Alarm& alarm) = 0;
+    // #1515-#1519: the soft limits guard a manual move only on a homed axis, as a program's.
+    virtual bool axisHomed(int axis) const = 0;
     // True once what started at machine time `since` ran longer than --max-sim-time; the motion
     // under way is then stopped where the limit found it.
     virtual bool passedTimeLimit(double since) = 0;

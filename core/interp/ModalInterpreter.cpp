@@ -1,6 +1,7 @@
 #include "core/interp/ModalInterpreter.h"
 #include "core/common/Numeric.h"
 
+#include "core/params/IoPorts.h"
 #include "core/params/ParameterNumbers.h"
 
 #include <algorithm>
@@ -192,9 +193,20 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
             case 4: machine_.spindle(machine::SpindleState::Reverse, state_.spindleSpeed); break;
             case 5: machine_.spindle(machine::SpindleState::Stop, 0.0); break;
             case 19: machine_.spindle(machine::SpindleState::Orient, 0.0); break;
-            case 8: machine_.coolant(true); break;
-            case 9: machine_.coolant(false); break;
+            case 8: case 9:
+                machine_.coolant(code == 8);
+                if (dialect_.id == gcode::DialectId::M350) {
+                    switchFunctionOutput(param::kCoolantOutput, code == 8, param::kCoolantResponse);
+                }
+                break;
             case 0: case 1: case 2: case 30: case 6: break; // handled after motion (M6: empty on the M350)
+            case 10: case 11:
+                if (dialect_.id == gcode::DialectId::M350) { // 润滑 lubrication, the firmware's own
+                    switchFunctionOutput(param::kLubricationOutput, code == 10, param::kLubricationResponse);
+                    break;
+                }
+                machine_.auxiliary(code); // FANUC: the PMC's (the umbrella carousel's clamp)
+                break;
             default:
                 if (dialect_.id == gcode::DialectId::M350) {
                     const std::optional<std::int32_t> handler = dialect_.handlerProgram('M', code);
@@ -232,6 +244,10 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 cancelCycle();
                 machine_.spindle(machine::SpindleState::Stop, 0.0);
                 machine_.coolant(false);
+                if (dialect_.id == gcode::DialectId::M350) { // as the factory's M30 handler's M5M9M11
+                    switchFunctionOutput(param::kCoolantOutput, false, std::nullopt);
+                    switchFunctionOutput(param::kLubricationOutput, false, std::nullopt);
+                }
                 if (code == 30 && dialect_.id == gcode::DialectId::M350) { // 总加工数, 加工件数
                     parameters_.set(param::kTotalRunCount, parameters_.get(param::kTotalRunCount) + 1);
                     parameters_.set(param::kPieceCount, parameters_.get(param::kPieceCount) + 1);
@@ -242,6 +258,28 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         return {endProgram, std::nullopt};
     } catch (const MacroError& error) {
         return {false, error};
+    }
+}
+
+// M8/M9 and M10/M11 on the M350 switch their function's output (its IO triple: pin, enable,
+// active level; nothing when it is not enabled). When the output changes, the block lasts the
+// command's response time (params 92, 94, seconds) for the pump or valve it drives, as the
+// spindle's start delay holds the block after M3; a command that changes nothing waits for nothing.
+void ModalInterpreter::switchFunctionOutput(int outputTriple, bool on, std::optional<int> responseParameter) {
+    const params::PortAssignment port = params::portAssignment(parameters_, outputTriple);
+    if (!port.wired() || port.pin > machine::kOutputCount) {
+        return;
+    }
+    const int level = on ? port.activeLevel : 1 - port.activeLevel;
+    if (machine_.output(port.pin) == level) {
+        return;
+    }
+    machine_.setOutput(port.pin, level);
+    if (responseParameter) {
+        const double seconds = parameters_.get(*responseParameter);
+        if (seconds > 0.0 && std::isfinite(seconds)) {
+            machine_.dwell(seconds);
+        }
     }
 }
 

@@ -81,8 +81,15 @@ public:
         bool triggered = false;
         machine::Axes position = machine::Axes::Zero();
         std::uint32_t axes = 0; // bit per axis commanded in the G31 block
+        // M350 #1920-#1924: 2 where the signal came on a commanded axis, else 0; a macro may write
+        // them (probing macros clear them to 0 before the next probe)
+        std::array<double, machine::kAxisCount> status{};
     };
     const Probe& lastProbe() const { return probe_; }
+    // Which axes are homed (#1515-#1519, 1 homed, kept by the controller); without them every axis
+    // counts as homed. The soft limits guard only homed axes.
+    void setHomedFlags(const std::array<int, machine::kAxisCount>* homed) { homed_ = homed; }
+    void setProbeStatus(int axis, double value) { probe_.status[static_cast<std::size_t>(axis)] = value; }
 
     // A stop for the operator met by the last block: the run waits for START (循环启动) there.
     struct OperatorStop {
@@ -187,6 +194,7 @@ private:
     void latchLengthOffset(const Words& words);
     void goToReference(const Words& words, int point);
     void probeMove(const Words& words);
+    void switchFunctionOutput(int outputTriple, bool on, std::optional<int> responseParameter);
     void moveTo(const machine::Axes& target, const Words& words);
     // Asked before every move: the limits are looked at only when param 155 switches them on.
     void checkSoftLimits(const machine::Axes& target, const Words& words) const {
@@ -278,6 +286,7 @@ private:
     std::map<int, machine::Axes> referencePoints_;
     CutterCompensation compensation_;
     Probe probe_;
+    const std::array<int, machine::kAxisCount>* homed_ = nullptr;
     machine::Axes programmed_ = machine::Axes::Zero();    // where the program is, ahead of the machine
     machine::Axes pendingHeight_ = machine::Axes::Zero(); // Z, A, B of the move being compensated
     int pendingMode_ = 1;                                  // its motion mode (0 rapid, 1 feed)

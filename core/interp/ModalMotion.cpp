@@ -86,9 +86,14 @@ std::uint32_t ModalInterpreter::motionColumn(const Words& words) const {
 }
 
 // Param 155 switches the limits of params 161-170 on; a move that would cross one is refused before
-// the machine moves, as the controller checks the whole block first.
+// the machine moves, as the controller checks the whole block first. They guard only a homed axis
+// (#1515-#1519): one not homed, or whose homing has begun, has no trusted machine position, and the
+// homing search (a factory O501's long G31 toward the switch) must be free to run past them.
 void ModalInterpreter::checkAgainstSoftLimits(const machine::Axes& target, const Words& words) const {
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        if (homed_ != nullptr && (*homed_)[static_cast<std::size_t>(axis)] == 0) {
+            continue;
+        }
         double low = parameters_.get(param::kSoftLimitNegativeX + axis);
         double high = parameters_.get(param::kSoftLimitPositiveX + axis);
         char name = machine::kAxisNames[static_cast<std::size_t>(axis)];
@@ -250,6 +255,9 @@ void ModalInterpreter::probeMove(const Words& words) {
     machine::ProbeResult result = machine_.probe(target, feedRate(g31.column), port, level);
     probe_.triggered = result.triggered;
     probe_.position = result.position;
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        probe_.status[static_cast<std::size_t>(axis)] = (probe_.axes & (1u << axis)) && result.triggered ? 2.0 : 0.0;
+    }
     // A FANUC G31 that never sees the signal ends at its end point, which #5061-#5065 then hold: the
     // TS27R macros move beside the stylus by G31 so that a touch on the way stops them. The M350
     // alarms, as its probing hooks expect.

@@ -211,12 +211,20 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         callColumn = g65->column;
     }
     std::optional<int> homeAxis; // the dialect's built-in homing program, called by M98
+    std::optional<int> libraryHomeAxis; // a library's homing program (O501), called by M98 for this axis
     if (auto m98 = take([](const WordValue& w) { return isCode(w, 'M', 98); })) {
         WordValue p = needP(*m98, "M98");
         auto l = takeLetter('L');
-        if (roundToInt(p.value) == dialect_.homingProgram && !program_.findUnit(dialect_.homingProgram)) {
+        const bool homing = roundToInt(p.value) == dialect_.homingProgram;
+        if (homing && !program_.findUnit(dialect_.homingProgram)) {
             homeAxis = builtInHomingAxis(words, m98->column);
         } else {
+            if (homing) {
+                auto x = std::find_if(words.begin(), words.end(), [](const WordValue& w) { return w.letter == 'X'; });
+                if (x != words.end() && wholeNumber(x->value) && x->value <= 4) {
+                    libraryHomeAxis = roundToInt(x->value);
+                }
+            }
             Call call{programUnit(p.value, "M98", p.column), l ? std::llround(l->value) : 1,
                       dialect_.m98OpensLocalLevel, -1, {}};
             if (dialect_.m98OpensLocalLevel) {
@@ -291,6 +299,9 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         if (auto failure = machine_.builtInHoming(*homeAxis)) {
             throw MacroError{failure->code, failure->message, callColumn};
         }
+    }
+    if (libraryHomeAxis) {
+        machine_.homingStarts(*libraryHomeAxis);
     }
     if (m99) {
         returnFromFrame(m99Label ? std::optional<double>(m99Label->value) : std::nullopt,

@@ -35,6 +35,9 @@ public:
     virtual std::optional<HomingFailure> builtInHoming(int axis) {
         return HomingFailure{AlarmCode::NotHomed, "axis " + std::to_string(axis) + ": this machine cannot home"};
     }
+    // A library's homing program (the M350's O501) is called for `axis`: the axis searches for its
+    // switch from here on, with no trusted machine position until the program marks it homed.
+    virtual void homingStarts(int axis) { (void)axis; }
 
     // The machine's tool management sees each block's words before the executor takes its calls
     // out (tool life management: a group's T becomes its tool, H99/D99, the tool change, G10 L3 ..

@@ -37,7 +37,10 @@ VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable +
         add(1515, 1519, K::Homed, false, 0);
         add(1520, 1543, K::Input, true, 1);
         add(1552, 1572, K::Output, false, 1);
-        add(1920, 1929, K::ProbeResult, true, 0);
+        // G31's result per axis (#1920-#1924, 2 = the signal came) is written back to 0 by probing
+        // macros before the next probe; the trigger positions (#1925-#1929) only the probe sets
+        add(1920, 1924, K::ProbeResult, false, 0);
+        add(1925, 1929, K::ProbeResult, true, 5); // index 5-9: X..B after the five results
         // stored like any system value, named here because the Probe page and O505 share them:
         // #1970-#1989 the tools of a multi-tool setting (0 = none), #1993 1 while it runs
         add(1970, 1989, K::System);

@@ -52,9 +52,46 @@ int parseInt(std::string_view text, std::string_view what) {
     return value;
 }
 
+// Why a name is not text a panel can show, or nothing: the catalogue is UTF-8, and its names are
+// Chinese, English or Russian. Bytes that are not UTF-8 (GBK written as is) and GBK that was once
+// read as Latin-1 (×Ô¶¨ÒåG´úÂëºÅ for 自定义G代码号: every GBK byte of a Chinese character
+// becomes a code point U+0080-U+00FF, so they come in runs) are refused.
+std::optional<std::string> notText(std::string_view text) {
+    bool previousLatin1 = false;
+    for (std::size_t i = 0; i < text.size();) {
+        const auto lead = static_cast<unsigned char>(text[i]);
+        const std::size_t length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3
+                                                   : (lead >> 3) == 0x1E ? 4 : 0;
+        bool valid = length != 0 && i + length <= text.size();
+        for (std::size_t k = 1; valid && k < length; ++k) {
+            valid = (static_cast<unsigned char>(text[i + k]) & 0xC0) == 0x80;
+        }
+        if (!valid) {
+            return "is not UTF-8 at its byte " + std::to_string(i + 1) + " (GBK? the catalogue is UTF-8)";
+        }
+        // U+0080-U+00FF is 0xC2 or 0xC3 and one continuation byte
+        const bool latin1 = length == 2 && (lead == 0xC2 || lead == 0xC3);
+        if (latin1 && previousLatin1) {
+            return "looks like GBK text read as Latin-1: write the text it stands for "
+                   "(scripts/gen-parameter-catalogue.py decodes it)";
+        }
+        previousLatin1 = latin1;
+        i += length;
+    }
+    return std::nullopt;
+}
+
+std::string checkedName(std::string_view text, std::string_view field) {
+    if (auto why = notText(text)) {
+        const bool printable = why->rfind("is not UTF-8", 0) != 0; // a message stays UTF-8 itself
+        throw LineError{std::string(field) + (printable ? " '" + std::string(text) + "' " : " ") + *why};
+    }
+    return std::string(text);
+}
+
 // "zh/en" splits at the first '/' after which no CJK follows, since Chinese option names may hold
 // a '/' themselves ("脉冲/度/pulse/deg"). UTF-8 lead bytes 0xE3 and up start code points from U+3000
-// (CJK punctuation, ideographs, full-width forms); the Latin-1 mojibake in some names stays below.
+// (CJK punctuation, ideographs, full-width forms).
 ParameterOption parseOption(std::string_view text) {
     auto equals = text.find('=');
     if (equals == std::string_view::npos) throw LineError{"option '" + std::string(text) + "' lacks '='"};
@@ -66,8 +103,8 @@ ParameterOption parseOption(std::string_view text) {
     auto slash = names.find('/', static_cast<std::size_t>(names.rend() - lastCjk));
     if (slash == std::string_view::npos)
         throw LineError{"option '" + std::string(text) + "' is not value=zh/en"};
-    option.zh = std::string(names.substr(0, slash));
-    option.en = std::string(names.substr(slash + 1));
+    option.zh = checkedName(names.substr(0, slash), "option name");
+    option.en = checkedName(names.substr(slash + 1), "option name");
     return option;
 }
 
@@ -96,10 +133,10 @@ ParameterInfo parseRow(std::string_view line) {
     ParameterInfo p;
     p.number = parseInt(f[0], "number");
     p.group = parseInt(f[1], "group");
-    p.groupZh = f[2];
-    p.groupEn = f[3];
-    p.nameZh = f[4];
-    p.nameEn = f[5];
+    p.groupZh = checkedName(f[2], "group_zh");
+    p.groupEn = checkedName(f[3], "group_en");
+    p.nameZh = checkedName(f[4], "name_zh");
+    p.nameEn = checkedName(f[5], "name_en");
     p.unit = f[6];
     if (f[7] == "int") p.type = ParameterInfo::Type::Int;
     else if (f[7] == "real") p.type = ParameterInfo::Type::Real;

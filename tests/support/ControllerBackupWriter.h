@@ -26,6 +26,15 @@ struct ControllerBackupWriter {
     // string table that the import skips.
     static ControllerBackupWriter smallRouter();
 
+    // An owner's dual-Y gantry router as its system disk holds it: soft limits on (param 155),
+    // home switches for X, Y, Z (NPN) searched by the library's O501 with a long G31, the 4th motor
+    // driving the gantry's second side as Y (param 491 = 1), lubrication on OUT09 (params 733-735,
+    // 94) and coolant on OUT08, no magazine, param 969 at the factory's 0 (outside its range).
+    // slib-g.nc holds O501; slib-m.nc the M30 handler O10030 (M5M9M11, the counters); fndzero.nc
+    // homes Z, X, Y by O501 and gives A Y's position; key-2.nc lubricates the guides (M10, M11);
+    // key-3.nc sets the work Z on the floating block, clearing #1922 between its probes.
+    static ControllerBackupWriter dualYGantry();
+
     void writeTo(const std::filesystem::path& folder) const;
 };
 

@@ -173,3 +173,70 @@ TEST(ParameterCatalogue, MalformedValuesAreRefused) {
     EXPECT_THAT(loadError("param-bad-header.tsv", "N\tname\n"), HasSubstr("param-bad-header.tsv:1: header"));
     EXPECT_THAT(loadError("param-missing.tsv/none", ""), HasSubstr("cannot open"));
 }
+
+// Some of the firmware's English names are GBK-encoded Chinese; the extraction once read them as
+// Latin-1 (parameter 969 showed as ×Ô¶¨ÒåG´úÂëºÅ in the importer's report). Every name now reads
+// as text: the hidden parameters have English names, the language options say the language.
+TEST(ParameterCatalogue, EveryNameIsRealTextInBothLanguages) {
+    EXPECT_EQ(param(969).nameEn, "Custom G code number");
+    EXPECT_EQ(param(71).nameEn, "Enable G0 motion planning");
+    EXPECT_EQ(param(71).options[1].en, "Yes");
+    EXPECT_EQ(param(134).options[1].en, "Fixed position");
+    const ParameterInfo& language = param(240);
+    ASSERT_EQ(language.options.size(), 4u);
+    EXPECT_EQ(language.options[1].zh, "中文");
+    EXPECT_EQ(language.options[1].en, "Chinese");
+    EXPECT_EQ(language.options[2].zh, "Рус");
+    EXPECT_EQ(language.options[2].en, "Russian");
+    auto latin1Run = [](const std::string& text) {
+        for (std::size_t i = 0; i + 3 < text.size(); ++i) {
+            auto a = static_cast<unsigned char>(text[i]), b = static_cast<unsigned char>(text[i + 2]);
+            if ((a == 0xC2 || a == 0xC3) && (b == 0xC2 || b == 0xC3)) {
+                return true;
+            }
+        }
+        return false;
+    };
+    for (const ParameterInfo& p : bundled().all()) {
+        EXPECT_FALSE(latin1Run(p.nameEn) || latin1Run(p.nameZh)) << p.number << ": " << p.nameZh << " " << p.nameEn;
+        for (const auto& option : p.options) {
+            EXPECT_FALSE(latin1Run(option.en) || latin1Run(option.zh)) << p.number << ": " << option.en;
+            // the English panel shows English: no Chinese in an English name
+            EXPECT_EQ(option.en.find_first_of("\xe4\xe5\xe6\xe7\xe8\xe9"), std::string::npos) << p.number;
+        }
+        EXPECT_EQ(p.nameEn.find_first_of("\xe4\xe5\xe6\xe7\xe8\xe9"), std::string::npos) << p.number << ": " << p.nameEn;
+    }
+}
+
+// 自定义G代码号 in GBK, written into the catalogue as bytes and as those bytes read as Latin-1:
+// both are refused naming the line, so such text never reaches a panel or an import report.
+TEST(ParameterCatalogue, GbkBytesAndGbkReadAsLatin1AreRefused) {
+    const std::string gbk = "\xd7\xd4\xb6\xa8\xd2\xe5G\xb4\xfa\xc2\xeb\xba\xc5";
+    std::string latin1; // each byte as the code point U+00XX, in UTF-8
+    for (char c : gbk) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte < 0x80) {
+            latin1 += c;
+        } else {
+            latin1 += static_cast<char>(0xC0 | (byte >> 6));
+            latin1 += static_cast<char>(0x80 | (byte & 0x3F));
+        }
+    }
+    ASSERT_EQ(latin1, "×Ô¶¨ÒåG´úÂëºÅ");
+    const std::string before = "969\t0\t\thidden\tT3主轴速度\t";
+    const std::string after = "\tGxx\tint\t100\t200\t\t0\t1\n";
+    std::string raw = loadError("param-gbk.tsv", kHeader + before + gbk + after);
+    EXPECT_THAT(raw, HasSubstr("param-gbk.tsv:2: name_en is not UTF-8 at its byte 1"));
+    EXPECT_EQ(raw.find(gbk), std::string::npos); // the message stays UTF-8 itself
+    EXPECT_THAT(loadError("param-latin1.tsv", kHeader + before + latin1 + after),
+                HasSubstr("param-latin1.tsv:2: name_en '×Ô¶¨ÒåG´úÂëºÅ' looks like GBK text read as Latin-1"));
+    EXPECT_THAT(loadError("param-gbk-option.tsv",
+                          kHeader + "71\t0\t\thidden\tG0\tG0 planning\t\tselect\t0\t1\t0=禁止/" + latin1 + "\t0\t1\n"),
+                HasSubstr(":2: option name"));
+    // the same name in UTF-8 loads
+    std::string path = testing::TempDir() + "param-utf8.tsv";
+    std::ofstream(path, std::ios::binary) << kHeader + before + "自定义G代码号" + after;
+    auto loaded = ParameterCatalogue::load(path);
+    ASSERT_TRUE(std::holds_alternative<ParameterCatalogue>(loaded)) << std::get<std::string>(loaded);
+    EXPECT_EQ(std::get<ParameterCatalogue>(loaded).find(969)->nameEn, "自定义G代码号");
+}

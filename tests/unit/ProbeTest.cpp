@@ -23,6 +23,29 @@ TEST(ProbeM350, G31StopsWhereTheToolTripsTheSetter) {
     EXPECT_NEAR(run.number(103), -48.12, 1e-9);    // and the machine stopped there
 }
 
+// `#1922=0 ;clear probe status before retract`, as probing macros write it; the next G31 sets it
+// again. The trigger position stays the probe's own.
+TEST(ProbeM350, AMacroClearsTheResultAndTheNextProbeSetsItAgain) {
+    controller::RunSettings settings;
+    settings.tool = 2;
+    auto run = runProgram(bundledMachine(), lines({"G53 Z-20", "G53 X555.269 Y66.381", "G91 G31 Z-100 F200 P12 L1",
+                                                   "#1922=0 ;clear probe status before retract", "#100 = #1922",
+                                                   "#101 = #1927", "G91 G00 Z2", "#102 = #1922",
+                                                   "G91 G31 Z-5 F100 P12 L1", "#103 = #1922", "#1920 = 7",
+                                                   "#104 = #1920", "M30"}),
+                          settings);
+    ASSERT_EQ(run.report.status, controller::RunStatus::Ok) << run.alarmText();
+    EXPECT_DOUBLE_EQ(run.number(100), 0);
+    EXPECT_NEAR(run.number(101), -48.12, 1e-9); // the position is not cleared
+    EXPECT_DOUBLE_EQ(run.number(102), 0);       // a move is no probe
+    EXPECT_DOUBLE_EQ(run.number(103), 2);
+    EXPECT_DOUBLE_EQ(run.number(104), 7);
+
+    auto positions = runProgram(bundledMachine(), lines({"#1927 = 0", "M30"}));
+    ASSERT_EQ(positions.report.status, controller::RunStatus::Alarm);
+    EXPECT_EQ(positions.report.alarm->code, AlarmCode::ReadOnlyVariable);
+}
+
 TEST(ProbeM350, G31AwayFromTheSetterIsAnAlarmNamingTheInput) {
     auto run = runProgram(bundledMachine(), lines({"G53 Z-20", "G53 X100 Y66.381", "G91 G31 Z-100 F200 P12 L1",
                                                    "M30"}));

@@ -32,4 +32,15 @@ TEST(StaticCheck, AMachineCodeProgramTakesItsBlocksWords) {
     EXPECT_TRUE(checked("M150 X1 X2\nM30\n", {{{'M', 150}, 9001}}).empty());
 }
 
+// Probing macros clear G31's result per axis before the next probe (`#1922=0 ;clear probe status
+// before retract`): #1920-#1924 are written on the controller; the trigger positions are not.
+TEST(StaticCheck, TheProbeResultsMayBeClearedButNotTheTriggerPositions) {
+    EXPECT_TRUE(checked("#1920=0\n#1921=0\n#1922=0 ;clear probe status before retract\n#1924=0\nM30\n").empty());
+    for (int n = 1925; n <= 1929; ++n) {
+        std::vector<gcode::Diagnostic> found = checked("#" + std::to_string(n) + "=0\nM30\n");
+        ASSERT_EQ(found.size(), 1u) << n;
+        EXPECT_NE(found[0].message.find("read-only"), std::string::npos) << found[0].message;
+    }
+}
+
 } // namespace

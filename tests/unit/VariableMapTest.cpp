@@ -112,7 +112,9 @@ TEST(VariableMapM350, SystemMessagesAndIo) {
         {1553, K::Output, false, 2},
         {1572, K::Output, false, 21},
         {1573, K::System, false, kAny},
-        {1920, K::ProbeResult, true, 0},
+        {1920, K::ProbeResult, false, 0},
+        {1924, K::ProbeResult, false, 4},
+        {1925, K::ProbeResult, true, 5},
         {1929, K::ProbeResult, true, 9},
         {2999, K::System, false, kAny},
     });
