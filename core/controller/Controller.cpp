@@ -31,6 +31,7 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
       toolLife_(config_.toolLife, state_, executor_, *config_.dialect, scan_), breakage_(machine_, magazine_),
       toolEdits_({tools_, state_, [this] { return manual_.jogging(); }, config_, interp_, machine_, magazine_}),
       panel_(newOperatorPanel()) {
+    tools_.setOffsetMemory(config_.offsetMemory);
     for (int slot = 0; slot < interp::WorkOffsets::kSlots; ++slot) {
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
             offsets_.set(slot, axis, config_.offsets[static_cast<std::size_t>(slot)][static_cast<std::size_t>(axis)]);
@@ -228,7 +229,23 @@ bool Controller::manageTools(macro::EvaluatedBlock& block) {
     if (toolLife_.manager().enabled()) {
         machine_.setObserver(this); // groups entered by G10 L3: cutting time counts from now on
     }
+    if (!took && block.has('T') && magazine_.device()) [[unlikely]] {
+        checkToolWord(block);
+    }
     return took;
+}
+
+// The T code goes to the PMC as the block starts (FANUC's T strobe), before its motion and before
+// M06 calls the change program: a T the magazine cannot serve is refused there, at the T word. A T
+// that is a macro's argument (G65/G66 P.. T..) selects nothing.
+void Controller::checkToolWord(const macro::EvaluatedBlock& block) const {
+    if (block.gCodes.has(65) || block.gCodes.has(66) || block.otherCodes) {
+        return;
+    }
+    const macro::WordValue& t = block.words[block.firstOf['T' - 'A']];
+    if (auto why = magazine_.refusedTool(roundToInt(t.value))) {
+        throw macro::MacroError{AlarmCode::InvalidArgument, *why, t.column};
+    }
 }
 
 // Tool breakage in the simulated world and the spindle load monitor (the FANUC article's second
@@ -373,6 +390,9 @@ int Controller::stepOnce(int toolBefore) {
     executor_->step();
     if (executor_->blocksExecuted() != blocksBefore) {
         machine_.blockTime(settings_.blockTime);
+    }
+    if (auto changed = interp_.takeToolChange(); changed && !magazine_.device()) [[unlikely]] {
+        fanucSpindleTool_ = *changed; // no changer: M06 is the operator's change by hand
     }
     if (auto stop = interp_.takeStop()) {
         if (inEventHook_) {

@@ -82,7 +82,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         default: return Value::empty();
         }
     }
-    case VariableKind::ToolOffset: return Value::of(tools_.offsetValue(info.index));
+    case VariableKind::ToolOffset: return Value::of(tools_.offsetVariable(info.index));
     case VariableKind::SpindleLoad: return Value::of(breakage_.spindleLoad().reg());
     case VariableKind::Alarm:
     case VariableKind::StopMessage: return Value::of(0);
@@ -96,7 +96,7 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
     switch (info.kind) {
     case VariableKind::WorkOffset: offsets_.set(info.index >> 3, info.index & 7, value); return std::nullopt;
     case VariableKind::Output: scan_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
-    case VariableKind::ToolOffset: return tools_.setOffsetValue(info.index, value);
+    case VariableKind::ToolOffset: return tools_.setOffsetVariable(info.index, value);
     case VariableKind::Homed: homing_.setHomed(info.index, value != 0.0); return std::nullopt;
     case VariableKind::MachinePosition: {
         // M350 #880-#884: the axis takes this machine position where it stands, without moving, and

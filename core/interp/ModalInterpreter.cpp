@@ -88,14 +88,14 @@ double ModalInterpreter::toolLengthOffset() const {
 void ModalInterpreter::latchLengthOffset(const Words& words) {
     const int mode = state_.group(8);
     if ((mode == 43 || mode == 44) && (words.hasG(43) || words.hasG(44) || words.has('H'))) {
-        state_.lengthOffsetValue = tools_.offsetValue(state_.lengthOffset);
+        state_.lengthOffsetValue = tools_.lengthOffset(state_.lengthOffset);
     }
 }
 
 void ModalInterpreter::applyLengthOffset(int number) {
     state_.groups[8] = 43;
     state_.lengthOffset = number;
-    state_.lengthOffsetValue = tools_.offsetValue(number);
+    state_.lengthOffsetValue = tools_.lengthOffset(number);
 }
 
 int ModalInterpreter::activeSlot() const {
@@ -225,6 +225,8 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 stopForOperator(OperatorStop::Kind::Program, "M00 program stop");
             } else if (code == 1) {
                 stopForOperator(OperatorStop::Kind::Optional, "M01 optional stop");
+            } else if (code == 6 && dialect_.id != gcode::DialectId::M350) {
+                toolChange_ = state_.selectedTool;
             } else if (code == 2 || code == 30) {
                 flushCompensation();
                 compensation_.reset();

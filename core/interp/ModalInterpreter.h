@@ -20,6 +20,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace m350::interp {
@@ -102,6 +103,10 @@ public:
     bool hasLookAheadChanges() const { return !lookAheadChanges_.empty(); }
     std::vector<std::string> takeLookAheadChanges();
 
+    // A FANUC M06 the interpreter ran itself (no program is mapped to it): the tool T selected is
+    // the spindle's now, as far as the control knows. The controller takes it after each block.
+    std::optional<int> takeToolChange() { return std::exchange(toolChange_, std::nullopt); }
+
 private:
     // The words of one block by letter, as the executor indexed them (EvaluatedBlock, which
     // outlives execute()). `present` holds the letters other than G and M.
@@ -183,7 +188,9 @@ private:
     machine::Axes targetFor(const Words& words, bool machineCoordinates) const;
     void setCoordinateSystem(const Words& words); // G92, G52
     void setOffsets(const Words& words);          // G10
-    void setToolTable(const Words& words, const macro::WordValue& g10, int kind); // G10 L1 / L10 / L11
+    void setToolOffsets(const Words& words, const macro::WordValue& g10, int kind); // G10 L1, L10-L13
+    void setOffsetRegister(const Words& words, int kind);                             // FANUC's P R
+    void setToolTable(const Words& words, const macro::WordValue& g10, int kind); // LinuxCNC's, axis words
     void latchLengthOffset(const Words& words);
     void goToReference(const Words& words, int point);
     void probeMove(const Words& words);
@@ -274,6 +281,7 @@ private:
     mutable OffsetCache offsetCache_;
     std::optional<OperatorStop> stop_;
     std::vector<std::string> lookAheadChanges_;
+    std::optional<int> toolChange_;
     const gcode::Block* block_ = nullptr; // the block being executed
     std::map<int, machine::Axes> referencePoints_;
     CutterCompensation compensation_;

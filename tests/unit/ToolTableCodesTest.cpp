@@ -120,11 +120,11 @@ TEST(ToolTableCodes, TheOffsetMemoryIsTheTable) {
     EXPECT_DOUBLE_EQ(table.find(4)->offset(tools::kZ), 2.0);
     params::ParameterTable parameters;
     tools::ToolData data(gcode::Dialect::fanuc(), parameters, tools::parseToolTable("T5 P5 Z40 D8\n", "t").table);
-    ASSERT_EQ(data.setOffsetValue(4, 2.0), std::nullopt);
+    ASSERT_EQ(data.setOffsetVariable(4, 2.0), std::nullopt);
     EXPECT_DOUBLE_EQ(data.radiusOffset(5), 4.0) << "D5: tool 5's diameter / 2";
     EXPECT_DOUBLE_EQ(data.radiusOffset(4), 2.0) << "D4: row 4 has no D, so its one value is the radius";
     EXPECT_DOUBLE_EQ(data.radiusOffset(6), 0.0);
-    ASSERT_EQ(data.setOffsetValue(7, 0.0), std::nullopt);
+    ASSERT_EQ(data.setOffsetVariable(7, 0.0), std::nullopt);
     EXPECT_EQ(data.table().find(7), nullptr) << "an offset of 0 makes no row";
 }
 
