@@ -375,7 +375,11 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
             fail(dir / MachineFolder::fileName(FolderFile::Modbus), *wrong);
         }
         loadToolTable(dir, config);
-        auto life = tools::loadToolLife(folder);
+        tools::LifeData lifeSettings;
+        if (config.dialect->id == gcode::DialectId::Fanuc) {
+            lifeSettings.applyFanucParameters(config.fanucParameters);
+        }
+        auto life = tools::loadToolLife(folder, lifeSettings.fromParameters ? &lifeSettings : nullptr);
         if (auto* unreadable = std::get_if<std::string>(&life)) {
             fail(dir / MachineFolder::fileName(FolderFile::ToolLife), *unreadable);
         }

@@ -47,6 +47,9 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
         machine_.setObserver(this); // cutting time counts from the machine's feed events
     }
     applyParameterOverrides();
+    if (toolLife_.manager().data().fromParameters) {
+        toolLife_.manager().applyFanucParameters(config_.fanucParameters); // --param 6800 ... too
+    }
     setUpBreakageWatch();
     applySettings();
     breakage_.startAt(machine_.time());
@@ -228,6 +231,9 @@ bool Controller::manageTools(macro::EvaluatedBlock& block) {
     const bool took = toolLife_.applyBlock(block);
     if (toolLife_.manager().enabled()) {
         machine_.setObserver(this); // groups entered by G10 L3: cutting time counts from now on
+        if (auto notice = toolLife_.manager().takeNotice()) {
+            status_.postMessage(std::move(*notice));
+        }
     }
     if (!took && block.has('T') && magazine_.device()) [[unlikely]] {
         checkToolWord(block);

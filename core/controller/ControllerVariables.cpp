@@ -66,6 +66,9 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         case 0: return Value::of(commanded == fanucSpindleTool_ ? 1 : 0); // T already in the spindle
         case 1: return Value::of(fanucSpindleTool_ == 0 ? 1 : 0);         // spindle holds no tool
         case 2: return Value::of(commanded == 0 ? 1 : 0);                 // T0 commanded
+        // tool life management's F064 as our ladder copies it to G54.3 / G54.4
+        case 3: return Value::of(toolLife_.manager().toolChangeSignal() ? 1 : 0); // TLCH
+        case 4: return Value::of(toolLife_.manager().newToolSignal() ? 1 : 0);    // TLNW
         default: return Value::of(0);
         }
     }

@@ -140,7 +140,10 @@ TEST_F(CliToolDataTest, AnOffsetMemoryTheSimulatorHasNotIsRefusedAtItsPlace) {
     std::ifstream in(dir_ / "machine" / "machine.toml");
     std::stringstream toml;
     toml << in.rdbuf();
-    write("machine/machine.toml", toml.str() + "\n[tool_data]\noffset_memory = \"B\"\n");
+    std::string text = toml.str();
+    ASSERT_NE(text.find("offset_memory = \"A\""), std::string::npos);
+    text.replace(text.find("offset_memory = \"A\""), 19, "offset_memory = \"B\"");
+    write("machine/machine.toml", text);
     write("p.nc", "M30\n");
     ProcessResult r = sim({"run", "p.nc", "--config", "machine"});
     EXPECT_EQ(r.exitStatus, kExitError) << r.err;
@@ -184,6 +187,83 @@ TEST_F(CliToolDataTest, TheBreakageArticlesCalibrationProgramRunsAsWritten) {
     EXPECT_NEAR(j["vars"]["522"].get<double>(), 411.358, 1e-9);
     EXPECT_NEAR(j["vars"]["523"].get<double>(), -38.642, 1e-9);
     EXPECT_NEAR(j["vars"]["524"].get<double>(), -61.358, 1e-9);
+}
+
+// FANUC tool life settings are the control's parameters (fanuc-0i's params.toml, or --param):
+// 6800 #0 GS1 / #1 GS2 as the 0i seed's table gives them (GS1 alone 64 x 4, GS2 alone 32 x 8),
+// #2 LTM the kind of a group entered without Q, 6801 #6 EXT for G10 L3 P1 / P2, 6810 the ignore
+// number. toollife.txt holds only the groups; a setting line there is refused at its place.
+TEST_F(CliToolDataTest, FanucToolLifeSettingsAreTheControlsParameters) {
+    copyMachine("fanuc-0i");
+    std::string fiveTools = "G10 L3\nP1 L2\nT1\nT2\nT3\nT4\nT5\nG11\nM30\n";
+    json gs1 = run("gs1.nc", fiveTools, {"--config", "machine", "--param", "6800=1"}, kExitAlarm);
+    EXPECT_EQ(gs1["alarm"]["line"], 7);
+    EXPECT_NE(gs1["alarm"]["message"].get<std::string>().find("at most 4 tools"), std::string::npos) << gs1["alarm"];
+    json gs2 = run("gs2.nc", "G10 L3\nP33 L2\nT1\nG11\nM30\n", {"--config", "machine", "--param", "6800=2"},
+                   kExitAlarm);
+    EXPECT_EQ(gs2["alarm"]["line"], 2);
+    EXPECT_NE(gs2["alarm"]["message"].get<std::string>().find("32 groups"), std::string::npos) << gs2["alarm"];
+    run("eight.nc", "G10 L3\nP32 L2\nT1\nT2\nT3\nT4\nT5\nT6\nT7\nT8\nG11\nM30\n",
+        {"--config", "machine", "--param", "6800=2"});
+
+    json ltm = run("ltm.nc", "G10 L3\nP1 L2\nT11\nG11\nM30\n", {"--config", "machine", "--param", "6800=4"});
+    EXPECT_EQ(ltm["tool_life"]["groups"][0]["kind"], "minutes") << "LTM = 1: no Q is minutes";
+    EXPECT_EQ(ltm["tool_life"]["gs"], 0);
+
+    json noExt = run("p1.nc", "G10 L3 P1\nP2 L3\nT21\nG11\nM30\n", {"--config", "machine", "--param", "6801=0"},
+                     kExitAlarm);
+    EXPECT_EQ(noExt["alarm"]["line"], 1);
+    EXPECT_NE(noExt["alarm"]["message"].get<std::string>().find("6801 #6 EXT"), std::string::npos);
+    json ext = run("p1ok.nc", "G10 L3 P1\nP2 L3\nT21\nG11\nM30\n", {"--config", "machine"});
+    EXPECT_EQ(ext["tool_life"]["groups"].size(), 2u) << "params.toml's 6801 = 64: P1 adds group 2";
+
+    json ignore = run("t51.nc", "T51 M6\nM30\n", {"--config", "machine", "--param", "6810=50"});
+    EXPECT_EQ(ignore["tool"], 11) << "6810 = 50: T51 is group 1";
+    EXPECT_EQ(ignore["tool_life"]["ignore"], 50);
+
+    std::ifstream in(dir_ / "machine" / "toollife.txt");
+    std::stringstream life;
+    life << in.rdbuf();
+    EXPECT_EQ(life.str().find("\ngs "), std::string::npos) << "the settings are not the file's:\n" << life.str();
+    write("machine/toollife.txt", life.str() + "ignore 200\n");
+    json refused = run("any.nc", "M30\n", {"--config", "machine"});
+    ASSERT_EQ(refused["tool_life"]["issues"].size(), 1u) << refused["tool_life"];
+    EXPECT_NE(refused["tool_life"]["issues"][0]["message"].get<std::string>().find("parameter 6810"),
+              std::string::npos);
+    EXPECT_EQ(refused["tool_life"]["issues"][0]["column"], 1);
+    EXPECT_EQ(refused["tool_life"]["ignore"], 100);
+
+    ProcessResult bad = sim({"run", "any.nc", "--config", "machine", "--param", "6800=1.5"});
+    EXPECT_EQ(bad.exitStatus, kExitUsage) << bad.err;
+    EXPECT_NE(bad.err.find("6800 must be a whole number from 0 to 255"), std::string::npos) << bad.err;
+}
+
+// With every tool of a group spent the control goes on with the group's last tool and raises the
+// tool change signal TLCH; the new tool signal TLNW marks the T that moved on to a sister tool.
+// The PMC hands both to macros as #1003 and #1004.
+TEST_F(CliToolDataTest, AnExpiredGroupGoesOnWithItsLastToolAndRaisesTheToolChangeSignal) {
+    copyMachine("fanuc-0i");
+    run("enter.nc", "G10 L3\nP1 L1 Q1\nT11 H11 D31\nT12 H12 D32\nG11\nM30\n", {"--config", "machine"});
+    const std::string program = "T101 M6\n#100 = #1003\n#101 = #1004\nM30\n";
+    json first = run("use.nc", program, {"--config", "machine", "--print", "100,101"});
+    EXPECT_EQ(first["tool"], 11);
+    EXPECT_EQ(first["vars"]["100"], 0.0);
+    EXPECT_EQ(first["vars"]["101"], 0.0);
+    json second = run("use.nc", program, {"--config", "machine", "--print", "100,101"});
+    EXPECT_EQ(second["tool"], 12);
+    EXPECT_EQ(second["vars"]["101"], 1.0) << "TLNW: T12 took over from T11";
+    EXPECT_EQ(second["vars"]["100"], 1.0) << "TLCH: T12's only use spent the group";
+    json spent = run("use.nc", program, {"--config", "machine", "--print", "100,101"});
+    EXPECT_EQ(spent["status"], "ok") << "no alarm: the last tool goes on";
+    EXPECT_EQ(spent["tool"], 12);
+    EXPECT_EQ(spent["vars"]["100"], 1.0);
+    EXPECT_EQ(spent["vars"]["101"], 0.0);
+    EXPECT_EQ(spent["tool_life"]["tool_change_signal"], true);
+    EXPECT_EQ(spent["tool_life"]["groups"][0]["tools"][1]["used"], 2) << "its uses go on being counted";
+    ASSERT_FALSE(spent["messages"].empty());
+    EXPECT_NE(spent["messages"][0].get<std::string>().find("every tool of group 1 has reached its life"),
+              std::string::npos)
+        << spent["messages"];
 }
 
 } // namespace m350::clitest
