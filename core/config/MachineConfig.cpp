@@ -355,6 +355,7 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
         }
     }
     config.toolTable = std::move(parsed.table);
+    config.toolTableFile = file.string();
 }
 
 } // namespace

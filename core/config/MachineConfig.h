@@ -75,6 +75,7 @@ struct MachineConfig {
     // tool.tbl as read (refused lines are in `warnings` with file:line:col); nullopt when the folder
     // has none: an M350 then starts its table from params 930-945 (tools::ToolData).
     std::optional<tools::ToolTable> toolTable;
+    std::string toolTableFile; // where toolTable was read (G10 L0 reads it again); empty: none
     // [tool_data] in machine.toml: the FANUC offset memory, LinuxCNC's random tool changer.
     tools::OffsetMemory offsetMemory = tools::OffsetMemory::A;
     bool randomToolChanger = false;

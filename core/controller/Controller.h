@@ -187,6 +187,7 @@ public:
 
 private:
     void checkToolWord(const macro::EvaluatedBlock& block) const;
+    void takeToolChange(const interp::ModalInterpreter::ToolChange& change);
     void feedMagazine(const machine::MachineEvent& event);
     bool load(const gcode::SourceText& source, gcode::FileRole role);
     void applyParameterOverrides(); // --param, before anything reads the parameters

@@ -152,6 +152,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
     Words& words = words_; // reused across blocks
     words.reset(block);
     block_ = block.source;
+    dynamicLength_ = false;
     if (block.repeated >= 0) {
         const WordValue& w = block.words[static_cast<std::size_t>(block.repeated)];
         return {false, MacroError{AlarmCode::InvalidWord,
@@ -195,6 +196,12 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
             case 8: machine_.coolant(true); break;
             case 9: machine_.coolant(false); break;
             case 0: case 1: case 2: case 30: case 6: break; // handled after motion (M6: empty on the M350)
+            case 61:
+                if (dialect_.id != gcode::DialectId::M350) {
+                    setToolNumber(m, words);
+                    break;
+                }
+                [[fallthrough]];
             default:
                 if (dialect_.id == gcode::DialectId::M350) {
                     const std::optional<std::int32_t> handler = dialect_.handlerProgram('M', code);
@@ -217,7 +224,9 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         }
         latchLengthOffset(words);
         // 7. motion
-        moveAxes(words);
+        if (!std::exchange(dynamicLength_, false)) [[likely]] {
+            moveAxes(words);
+        }
         // 8. stops and program end
         for (const WordValue& m : words.m) {
             int code = roundToInt(m.value);
@@ -226,7 +235,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
             } else if (code == 1) {
                 stopForOperator(OperatorStop::Kind::Optional, "M01 optional stop");
             } else if (code == 6 && dialect_.id != gcode::DialectId::M350) {
-                toolChange_ = state_.selectedTool;
+                toolChange_ = ToolChange{state_.selectedTool, false};
             } else if (code == 2 || code == 30) {
                 flushCompensation();
                 compensation_.reset();
@@ -251,6 +260,9 @@ bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, double value) {
     if (dialect.lookAheadCodes && isLookAheadCode(value)) {
         return true;
     }
+    if (dialect.id != gcode::DialectId::M350 && std::abs(value - 43.1) < 1e-6) {
+        return true; // LinuxCNC's dynamic tool length, where the machine keeps a tool.tbl
+    }
     const int code = roundToInt(value);
     if (std::abs(value - code) > 1e-6) {
         return false;
@@ -268,6 +280,10 @@ void ModalInterpreter::applyGCodes(const Words& words) {
             continue;
         }
         const double value = g.value;
+        if (std::abs(value - 43.1) < 1e-6 && dialect_.id != gcode::DialectId::M350) {
+            setDynamicLength(g, words);
+            continue;
+        }
         int code = 0;
         if (value >= 0 && value < 128 && value == static_cast<double>(static_cast<int>(value))) {
             code = static_cast<int>(value); // as written, most codes: no rounding

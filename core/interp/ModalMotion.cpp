@@ -327,11 +327,19 @@ void ModalInterpreter::setOffsets(const Words& words) {
     }
     const WordValue* l = words.find('L');
     const WordValue* p = words.find('P');
+    if (l && !p && std::abs(l->value) < 1e-9) {
+        reloadToolTable(g10); // LinuxCNC's G10 L0 has no P
+        return;
+    }
     if (!l || !p) {
         invalid(g10, "G10 needs L and P (L2 P1 X.. for G54, L20, L10-L13 P.. R.. for tool offsets, L1/L10 P<tool> Z..)");
     }
     int kind = roundToInt(l->value);
     int number = roundToInt(p->value);
+    if (kind == 0 && std::abs(l->value) < 1e-9) {
+        reloadToolTable(g10);
+        return;
+    }
     if (kind == 1 || (kind >= 10 && kind <= 13)) {
         setToolOffsets(words, g10, kind);
         return;

@@ -23,6 +23,60 @@ namespace m350::interp {
 
 using macro::WordValue;
 
+// LinuxCNC's own tool table codes (its seed: G10 L0, M61, the random changer; G43.1 beside them)
+// belong to a machine that keeps a LinuxCNC tool.tbl; elsewhere they would be guesses.
+void ModalInterpreter::needLinuxCncTable(const WordValue& w, const std::string& what) const {
+    if (!tools_.keepsToolTable()) {
+        invalid(w, what + " is LinuxCNC's and works on a machine that keeps a tool table (tool.tbl in the machine "
+                          "folder, or --tool-table): this one keeps none");
+    }
+}
+
+// G10 L0: read tool.tbl again (LinuxCNC refuses it while a tool is loaded: M61 Q0 first).
+void ModalInterpreter::reloadToolTable(const WordValue& g10) {
+    needLinuxCncTable(g10, "G10 L0 (reload the tool table)");
+    if (const int loaded = spindleTool_ ? spindleTool_() : 0; loaded != 0) {
+        invalid(g10, "G10 L0 is not allowed with a tool loaded (T" + std::to_string(loaded) +
+                         "), as in LinuxCNC: unload it first (M61 Q0)");
+    }
+    std::vector<std::string> skipped;
+    if (auto why = tools_.reload(skipped)) {
+        invalid(g10, "G10 L0: " + *why);
+    }
+    reloadIssues_ = std::move(skipped);
+}
+
+// G43.1 Z..: LinuxCNC's dynamic tool length offset, the value itself instead of a table's entry;
+// the block moves nothing (its Z is the offset), the next move applies it. G49 cancels it.
+void ModalInterpreter::setDynamicLength(const WordValue& g, const Words& words) {
+    needLinuxCncTable(g, "G43.1 (dynamic tool length)");
+    for (char letter : {'X', 'Y', 'A', 'B', 'H'}) {
+        if (words.has(letter)) {
+            invalid(words[letter], std::string("G43.1 here takes Z, the tool length, only: ") + letter +
+                                       " has no tool offset on this machine");
+        }
+    }
+    if (!words.has('Z')) {
+        invalid(g, "G43.1 needs Z<tool length>");
+    }
+    state_.groups[8] = 43.1;
+    state_.lengthOffset = 0;
+    state_.lengthOffsetValue = words['Z'].value;
+    dynamicLength_ = true;
+}
+
+// M61 Qn: the spindle holds tool n now, without a change (LinuxCNC's "set current tool").
+void ModalInterpreter::setToolNumber(const WordValue& m, const Words& words) {
+    needLinuxCncTable(m, "M61 (set the tool number)");
+    const WordValue* q = words.find('Q');
+    const int tool = q ? roundToInt(q->value) : -1;
+    if (!q || std::abs(q->value - tool) > 1e-9 || tool < 0) {
+        invalid(q ? *q : m, "M61 needs Q<tool number>, a whole number from 0");
+    }
+    state_.selectedTool = tool;
+    toolChange_ = ToolChange{tool, true};
+}
+
 void ModalInterpreter::setToolOffsets(const Words& words, const WordValue& g10, int kind) {
     const bool linuxCnc = words.hasAxis() || words.has('I') || words.has('J') || words.has('Q') || words.has('C') ||
                           words.has('U') || words.has('V') || words.has('W');

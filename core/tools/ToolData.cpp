@@ -2,9 +2,11 @@
 
 #include "core/common/Numeric.h"
 #include "core/params/ParameterNumbers.h"
+#include "core/tools/ToolTableFile.h"
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 namespace m350::tools {
 
@@ -106,6 +108,7 @@ std::optional<std::string> ToolData::put(const ToolEntry& entry) {
     if (auto why = rows_.put(entry)) {
         return why;
     }
+    changedSinceLoad_.insert(entry.tool);
     if (auto p = zParameter(entry.tool)) {
         parameters_->set(*p, entry.offset(kZ));
     }
@@ -248,6 +251,56 @@ double ToolData::offsetVariable(int index) const {
 std::optional<std::string> ToolData::setOffsetVariable(int index, double value) {
     auto [r, number] = variableRegister(index);
     return setRegister(r, number, value);
+}
+
+std::optional<std::string> ToolData::reload(std::vector<std::string>& skipped) {
+    auto read = readToolTableFile(sourceFile_);
+    if (auto* error = std::get_if<std::string>(&read)) {
+        return *error;
+    }
+    ParsedToolTable& parsed = std::get<ParsedToolTable>(read);
+    for (const ToolTableIssue& issue : parsed.issues) {
+        skipped.push_back(formatIssue(issue));
+    }
+    ToolTable table = std::move(parsed.table);
+    for (int tool : changedSinceLoad_) {
+        if (const ToolEntry* mine = rows_.find(tool)) {
+            if (const ToolEntry* other = table.findPocket(mine->pocket); other && other->tool != tool) {
+                continue; // the file moved another tool into its pocket: the file's word stands
+            }
+            table.put(*mine);
+        }
+    }
+    const std::set<int> kept = changedSinceLoad_;
+    replace(table);
+    changedSinceLoad_ = kept;
+    return std::nullopt;
+}
+
+bool ToolData::setPocket(int tool, int pocket) {
+    const ToolEntry* row = rows_.find(tool);
+    if (!row) {
+        return false;
+    }
+    ToolEntry entry = *row;
+    entry.pocket = pocket;
+    return !put(entry);
+}
+
+void ToolData::swapPockets(int from, int to) {
+    const ToolEntry* incoming = rows_.find(to);
+    if (from == to || !incoming) {
+        return;
+    }
+    const int freed = incoming->pocket;
+    const std::optional<int> aside = rows_.freePocket(ToolTable::kMaxPocket);
+    if (!aside || !setPocket(to, *aside)) {
+        return;
+    }
+    if (rows_.find(from)) {
+        setPocket(from, freed);
+    }
+    setPocket(to, 0);
 }
 
 ToolData::Mark ToolData::mark() const {

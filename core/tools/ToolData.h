@@ -7,6 +7,8 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <set>
+#include <vector>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -78,6 +80,18 @@ public:
     double offsetVariable(int index) const;
     std::optional<std::string> setOffsetVariable(int index, double value);
 
+    // LinuxCNC's tool table codes work on a machine that keeps a tool.tbl (FANUC dialect): G10 L0
+    // reads the file again. What the run itself changed stays as it is (LinuxCNC writes each G10 L1
+    // / L10 / L11 and M61 to the file at once, so its reload finds them there). The reason when the
+    // file cannot be read; its skipped lines in `skipped`.
+    void setSourceFile(std::string path) { sourceFile_ = std::move(path); }
+    bool keepsToolTable() const { return !sourceFile_.empty(); }
+    std::optional<std::string> reload(std::vector<std::string>& skipped);
+    // LinuxCNC's random tool changer ([EMCIO]RANDOM_TOOLCHANGER = 1) at M6: tool `to` leaves its
+    // pocket for the spindle (pocket 0) and tool `from` goes into that pocket. Tools not in the
+    // table keep no pocket.
+    void swapPockets(int from, int to);
+
     // Whether anything changed between two marks (edits here, and the M350's Z parameters however
     // they were written).
     struct Mark {
@@ -93,10 +107,13 @@ private:
     std::vector<int> toolsWithZParameters() const;
 
     std::pair<OffsetRegister, int> variableRegister(int index) const;
+    bool setPocket(int tool, int pocket);
 
     const gcode::Dialect* dialect_;
     params::ParameterTable* parameters_;
     OffsetMemory memory_ = OffsetMemory::A;
+    std::string sourceFile_;
+    std::set<int> changedSinceLoad_; // tools whose rows this session wrote (G10 L0 keeps them)
     ToolTable rows_; // M350: the Z of a tool with a Z parameter is not read from here
     std::uint64_t revision_ = 0;
 };

@@ -266,4 +266,60 @@ TEST_F(CliToolDataTest, AnExpiredGroupGoesOnWithItsLastToolAndRaisesTheToolChang
         << spent["messages"];
 }
 
+// LinuxCNC's random tool changer ([EMCIO]RANDOM_TOOLCHANGER = 1, here machine.toml's [tool_data]
+// random_changer = true): at M6 the new tool leaves its pocket for the spindle (pocket 0) and the
+// old one takes that pocket, so the table's P column follows the tools. rs274 leaves the pockets
+// to iocontrol (its table is not rewritten), so the pockets are checked against the seed's rule.
+TEST_F(CliToolDataTest, TheRandomChangerSwapsPocketsAtEachChange) {
+    copyMachine("fanuc-ts27r");
+    write("machine/tool.tbl", "T1 P0 Z120.0 D10.0 ;in the spindle\nT2 P2 Z95.5\nT3 P3 Z150.25\n");
+    std::ifstream in(dir_ / "machine" / "machine.toml");
+    std::stringstream toml;
+    toml << in.rdbuf();
+    write("machine/machine.toml", toml.str() + "random_changer = true\n");
+    json j = run("swap.nc", "T2 M6\nT3 M6\nG43 H3 G0 Z0\nM30\n",
+                 {"--config", "machine", "--tool", "1", "--tools-out", "out.tbl"});
+    EXPECT_EQ(j["tool"], 3);
+    EXPECT_NEAR(j["machine"]["Z"].get<double>(), 150.25, 1e-9);
+    std::ifstream out(dir_ / "out.tbl");
+    std::stringstream table;
+    table << out.rdbuf();
+    EXPECT_EQ(table.str(), "T1 P2 Z120 D10 ;in the spindle\nT2 P3 Z95.5\nT3 P0 Z150.25\n") << table.str();
+
+    json fixed = run("fixed.nc", "T2 M6\nM30\n",
+                     {"--config", bundled("fanuc-ts27r"), "--tool", "1", "--tools-out", "fixed.tbl"});
+    std::ifstream f(dir_ / "fixed.tbl");
+    std::stringstream fixedTable;
+    fixedTable << f.rdbuf();
+    EXPECT_NE(fixedTable.str().find("T1 P1 Z120.0"), std::string::npos) << "a fixed-pocket changer keeps P";
+}
+
+// G10 L0, M61 and G43.1 where they cannot mean what LinuxCNC means: refused at their word.
+TEST_F(CliToolDataTest, LinuxCncToolCodesAreRefusedWhereTheyHaveNoMeaning) {
+    json noTable = run("m61.nc", "M61 Q3\nM30\n", {"--config", bundled("fanuc-0i")}, kExitAlarm);
+    EXPECT_EQ(noTable["alarm"]["column"], 1);
+    EXPECT_NE(noTable["alarm"]["message"].get<std::string>().find("keeps a tool table"), std::string::npos);
+    json g431 = run("g431.nc", "G43.1 Z5.\nM30\n", {"--config", bundled("fanuc-0i")}, kExitAlarm);
+    EXPECT_NE(g431["alarm"]["message"].get<std::string>().find("G43.1"), std::string::npos);
+
+    json loaded = run("l0.nc", "G10 L0\nM30\n", {"--config", bundled("fanuc-ts27r"), "--tool", "2"}, kExitAlarm);
+    EXPECT_NE(loaded["alarm"]["message"].get<std::string>().find("not allowed with a tool loaded (T2)"),
+              std::string::npos)
+        << loaded["alarm"];
+    json unloaded = run("l0ok.nc", "M61 Q0\nG10 L0\n#100 = #2202\nM30\n",
+                        {"--config", bundled("fanuc-ts27r"), "--tool", "2", "--print", "100"});
+    EXPECT_EQ(unloaded["tool"], 0) << "M61 Q0: nothing in the spindle, no change made";
+    EXPECT_EQ(unloaded["vars"]["100"], 95.5);
+
+    json xWord = run("x.nc", "G43.1 X1. Z5.\nM30\n", {"--config", bundled("fanuc-ts27r")}, kExitAlarm);
+    EXPECT_EQ(xWord["alarm"]["column"], 7);
+
+    json carousel = run("um.nc", "M61 Q3\nM30\n", {"--config", bundled("fanuc-umbrella"), "--tool", "4"}, kExitAlarm);
+    EXPECT_NE(carousel["alarm"]["message"].get<std::string>().find("magazine knows"), std::string::npos);
+    EXPECT_EQ(carousel["tool"], 4);
+
+    json m350 = run("m350.nc", "M61 Q3\nM30\n", {}, kExitAlarm);
+    EXPECT_EQ(m350["alarm"]["line"], 1);
+}
+
 } // namespace m350::clitest
