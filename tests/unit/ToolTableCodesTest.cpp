@@ -93,7 +93,7 @@ TEST(ToolTableCodes, G10ToolCodesRefuseWhatLinuxCncRefuses) {
         const char* message;
     };
     for (const Case& c : {Case{"G10 L1 P9 Z1", "tool 9 is not in the tool table"},
-                          Case{"G10 L1 P1", "G10 L1 without offsets has no effect"},
+                          Case{"G10 L1 P1", "G10 L1 needs R<value> (FANUC: G10 L1 P<offset> R..) or axis words"},
                           Case{"G10 L10 P0 Z1", "P is the tool number"},
                           Case{"G10 L1 P1 Q12", "the orientation Q runs from 0 to 9"}}) {
         auto run = runProgram(fanucWithTable(), lines({"G10 L1 P1 Z7", c.block, "M30"}));
