@@ -36,8 +36,13 @@ nlohmann::json toolLifeJson(const tools::ToolLifeManager& manager, const std::ve
                              {"column", issue.column},
                              {"message", issue.message}});
     }
-    return {{"ignore", view.ignoreNumber}, {"gs", view.gs},     {"in_use", inUse},
-            {"groups", groups},            {"issues", issueList}};
+    return {{"ignore", view.ignoreNumber},
+            {"gs", view.gs},
+            {"in_use", inUse},
+            {"groups", groups},
+            {"issues", issueList},
+            {"tool_change_signal", manager.toolChangeSignal()},
+            {"new_tool_signal", manager.newToolSignal()}};
 }
 
 } // namespace m350::sim

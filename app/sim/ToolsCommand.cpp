@@ -61,6 +61,7 @@ std::optional<std::string> useToolTableFile(const SimOptions& o, config::Machine
         std::cerr << tools::formatIssue(issue) << '\n';
     }
     machine.toolTable = std::move(parsed.table);
+    machine.toolTableFile = *o.toolTableFile;
     return std::nullopt;
 }
 

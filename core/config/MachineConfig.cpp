@@ -68,6 +68,35 @@ void readNumberedTools(const fs::path& file, const toml::table& t, MachineConfig
     }
 }
 
+// [tool_data]: what the control keeps of its tools, which no parameter of ours says.
+//   offset_memory = "A" | "C"   FANUC tool compensation memory (a FANUC option; ToolData.h)
+//   random_changer = true       LinuxCNC's [EMCIO]RANDOM_TOOLCHANGER = 1: pockets swap on M6
+void readToolData(const fs::path& file, const toml::table& t, MachineConfig& config) {
+    const toml::table* data = t["tool_data"].as_table();
+    if (!data) {
+        return;
+    }
+    if (const toml::node* memory = data->get("offset_memory")) {
+        const std::optional<std::string> type = memory->value<std::string>();
+        if (!type || (*type != "A" && *type != "C")) {
+            fail(file, "[tool_data] offset_memory is \"A\" or \"C\" (FANUC tool compensation memory A or C)",
+                 memory->source());
+        }
+        if (config.dialect->id != gcode::DialectId::Fanuc) {
+            fail(file, "[tool_data] offset_memory is a FANUC control's: the M350 keeps its tools' Z in parameters",
+                 memory->source());
+        }
+        config.offsetMemory = *type == "A" ? tools::OffsetMemory::A : tools::OffsetMemory::C;
+    }
+    if (const toml::node* random = data->get("random_changer")) {
+        const std::optional<bool> on = random->value<bool>();
+        if (!on) {
+            fail(file, "[tool_data] random_changer is true or false", random->source());
+        }
+        config.randomToolChanger = *on;
+    }
+}
+
 void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     fs::path file = folder / MachineFolder::fileName(FolderFile::Machine);
     if (!fs::exists(file)) {
@@ -88,7 +117,8 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                      "tools", "tools.*", // tools.length, tools.diameter, [tools.N]
                      "stock", "stock.top", "stock.x", "stock.y", "spindle_load",
                      "spindle_load.idle", "spindle_load.per_krpm", "spindle_load.per_cm3", "spindle_load.spike_factor",
-                     "spindle_load.spike_ms", "reference_points", "reference_points.*"},
+                     "spindle_load.spike_ms", "reference_points", "reference_points.*", "tool_data",
+                     "tool_data.offset_memory", "tool_data.random_changer"},
                     config.warnings);
     config.name = t["name"].value_or(folder.filename().string());
     std::string dialect = t["dialect"].value_or(std::string("m350"));
@@ -192,6 +222,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         }
     }
     readNumberedTools(file, t, config);
+    readToolData(file, t, config);
     readSpindleLoadWorld(file, t, config.spindleLoad);
     if (auto points = t["reference_points"].as_table()) {
         for (auto&& [key, value] : *points) {
@@ -324,6 +355,7 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
         }
     }
     config.toolTable = std::move(parsed.table);
+    config.toolTableFile = file.string();
 }
 
 } // namespace
@@ -344,7 +376,11 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
             fail(dir / MachineFolder::fileName(FolderFile::Modbus), *wrong);
         }
         loadToolTable(dir, config);
-        auto life = tools::loadToolLife(folder);
+        tools::LifeData lifeSettings;
+        if (config.dialect->id == gcode::DialectId::Fanuc) {
+            lifeSettings.applyFanucParameters(config.fanucParameters);
+        }
+        auto life = tools::loadToolLife(folder, lifeSettings.fromParameters ? &lifeSettings : nullptr);
         if (auto* unreadable = std::get_if<std::string>(&life)) {
             fail(dir / MachineFolder::fileName(FolderFile::ToolLife), *unreadable);
         }

@@ -8,6 +8,7 @@
 #include "core/machine/SimulatedMachine.h"
 #include "core/machine/SpindleLoadModel.h"
 #include "core/tools/SpindleLoadLimits.h"
+#include "core/tools/ToolData.h"
 #include "core/tools/ToolTable.h"
 #include "core/tools/ToolLifeFile.h"
 
@@ -29,7 +30,7 @@ struct LibraryFile {
 // A machine folder, as loaded: which dialect it speaks, its macro libraries, its parameters and
 // offsets, and the wiring of its IO. Files:
 //   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine], [reference_points], [homing],
-//                  [tool_setter], [floating_setter], [tools]
+//                  [tool_setter], [floating_setter], [tools], [tool_data]
 //   params.toml    [params] N = value (parameters 0-999; the rest stay 0; FANUC machines also 1000-99999)
 //   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
@@ -74,6 +75,10 @@ struct MachineConfig {
     // tool.tbl as read (refused lines are in `warnings` with file:line:col); nullopt when the folder
     // has none: an M350 then starts its table from params 930-945 (tools::ToolData).
     std::optional<tools::ToolTable> toolTable;
+    std::string toolTableFile; // where toolTable was read (G10 L0 reads it again); empty: none
+    // [tool_data] in machine.toml: the FANUC offset memory, LinuxCNC's random tool changer.
+    tools::OffsetMemory offsetMemory = tools::OffsetMemory::A;
+    bool randomToolChanger = false;
     tools::LifeData toolLife; // toollife.txt
     // its skipped lines (also in `warnings` as text); the lines themselves stay in toolLife.unreadLines
     std::vector<tools::LifeFileIssue> toolLifeIssues;

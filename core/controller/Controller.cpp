@@ -31,6 +31,11 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
       toolLife_(config_.toolLife, state_, executor_, *config_.dialect, scan_), breakage_(machine_, magazine_),
       toolEdits_({tools_, state_, [this] { return manual_.jogging(); }, config_, interp_, machine_, magazine_}),
       panel_(newOperatorPanel()) {
+    tools_.setOffsetMemory(config_.offsetMemory);
+    if (config_.dialect->id == gcode::DialectId::Fanuc && !config_.toolTableFile.empty()) {
+        tools_.setSourceFile(config_.toolTableFile);
+    }
+    interp_.setSpindleToolSource([this] { return spindleTool(); });
     for (int slot = 0; slot < interp::WorkOffsets::kSlots; ++slot) {
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
             offsets_.set(slot, axis, config_.offsets[static_cast<std::size_t>(slot)][static_cast<std::size_t>(axis)]);
@@ -47,6 +52,9 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
         machine_.setObserver(this); // cutting time counts from the machine's feed events
     }
     applyParameterOverrides();
+    if (toolLife_.manager().data().fromParameters) {
+        toolLife_.manager().applyFanucParameters(config_.fanucParameters); // --param 6800 ... too
+    }
     setUpBreakageWatch();
     applySettings();
     breakage_.startAt(machine_.time());
@@ -228,8 +236,35 @@ bool Controller::manageTools(macro::EvaluatedBlock& block) {
     const bool took = toolLife_.applyBlock(block);
     if (toolLife_.manager().enabled()) {
         machine_.setObserver(this); // groups entered by G10 L3: cutting time counts from now on
+        if (auto notice = toolLife_.manager().takeNotice()) {
+            status_.postMessage(std::move(*notice));
+        }
+    }
+    if (!took && magazine_.device() && (block.has('T') || block.mCodes.has(61))) [[unlikely]] {
+        checkToolWord(block);
     }
     return took;
+}
+
+// The T code goes to the PMC as the block starts (FANUC's T strobe), before its motion and before
+// M06 calls the change program: a T the magazine cannot serve is refused there, at the T word. A T
+// that is a macro's argument (G65/G66 P.. T..) selects nothing.
+void Controller::checkToolWord(const macro::EvaluatedBlock& block) const {
+    if (block.mCodes.has(61)) {
+        const auto m61 = std::find_if(block.words.begin(), block.words.end(),
+                                      [](const macro::WordValue& w) { return w.letter == 'M' && w.value == 61.0; });
+        throw macro::MacroError{AlarmCode::InvalidWord,
+                                "M61 sets the tool number without a change: this machine's magazine knows what the "
+                                "spindle holds, change tools with M06",
+                                m61->column};
+    }
+    if (block.gCodes.has(65) || block.gCodes.has(66) || block.otherCodes) {
+        return;
+    }
+    const macro::WordValue& t = block.words[block.firstOf['T' - 'A']];
+    if (auto why = magazine_.refusedTool(roundToInt(t.value))) {
+        throw macro::MacroError{AlarmCode::InvalidArgument, *why, t.column};
+    }
 }
 
 // Tool breakage in the simulated world and the spindle load monitor (the FANUC article's second
@@ -375,6 +410,14 @@ int Controller::stepOnce(int toolBefore) {
     if (executor_->blocksExecuted() != blocksBefore) {
         machine_.blockTime(settings_.blockTime);
     }
+    if (auto changed = interp_.takeToolChange()) [[unlikely]] {
+        takeToolChange(*changed);
+    }
+    if (interp_.hasReloadIssues()) [[unlikely]] {
+        for (std::string& issue : interp_.takeReloadIssues()) {
+            status_.postMessage(std::move(issue));
+        }
+    }
     if (auto stop = interp_.takeStop()) {
         if (inEventHook_) {
             status_.postMessage(stop->what + ": START pressed (a hook file runs to its end)");
@@ -397,6 +440,19 @@ int Controller::stepOnce(int toolBefore) {
         }
     }
     return toolAfter;
+}
+
+// A FANUC M06 the interpreter ran (no changer: the operator's change by hand) or LinuxCNC's M61:
+// the spindle's tool is the one named. LinuxCNC's random changer puts the old tool into the new
+// one's pocket at M06.
+void Controller::takeToolChange(const interp::ModalInterpreter::ToolChange& change) {
+    if (magazine_.device()) {
+        return; // the magazine knows what the spindle holds
+    }
+    if (!change.byHand && config_.randomToolChanger) {
+        tools_.swapPockets(fanucSpindleTool_, change.tool);
+    }
+    fanucSpindleTool_ = change.tool;
 }
 
 void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& stop) {

@@ -190,6 +190,8 @@ public:
     bool ignoresMove(const machine::Axes& from, const machine::Axes& to) const override;
 
 private:
+    void checkToolWord(const macro::EvaluatedBlock& block) const;
+    void takeToolChange(const interp::ModalInterpreter::ToolChange& change);
     void feedMagazine(const machine::MachineEvent& event);
     bool load(const gcode::SourceText& source, gcode::FileRole role);
     void applyParameterOverrides(); // --param, before anything reads the parameters

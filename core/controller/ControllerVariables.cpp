@@ -65,6 +65,9 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         case 0: return Value::of(commanded == fanucSpindleTool_ ? 1 : 0); // T already in the spindle
         case 1: return Value::of(fanucSpindleTool_ == 0 ? 1 : 0);         // spindle holds no tool
         case 2: return Value::of(commanded == 0 ? 1 : 0);                 // T0 commanded
+        // tool life management's F064 as our ladder copies it to G54.3 / G54.4
+        case 3: return Value::of(toolLife_.manager().toolChangeSignal() ? 1 : 0); // TLCH
+        case 4: return Value::of(toolLife_.manager().newToolSignal() ? 1 : 0);    // TLNW
         default: return Value::of(0);
         }
     }
@@ -81,7 +84,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         default: return Value::empty();
         }
     }
-    case VariableKind::ToolOffset: return Value::of(tools_.offsetValue(info.index));
+    case VariableKind::ToolOffset: return Value::of(tools_.offsetVariable(info.index));
     case VariableKind::SpindleLoad: return Value::of(breakage_.spindleLoad().reg());
     case VariableKind::Alarm:
     case VariableKind::StopMessage: return Value::of(0);
@@ -95,7 +98,7 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
     switch (info.kind) {
     case VariableKind::WorkOffset: offsets_.set(info.index >> 3, info.index & 7, value); return std::nullopt;
     case VariableKind::Output: scan_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
-    case VariableKind::ToolOffset: return tools_.setOffsetValue(info.index, value);
+    case VariableKind::ToolOffset: return tools_.setOffsetVariable(info.index, value);
     case VariableKind::Homed: homing_.setHomed(info.index, value != 0.0); return std::nullopt;
     case VariableKind::ProbeResult: interp_.setProbeStatus(info.index, value); return std::nullopt; // #1920-#1924
     case VariableKind::MachinePosition: {

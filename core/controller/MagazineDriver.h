@@ -74,6 +74,9 @@ public:
         const int held = device_->spindleTool();
         return held == 0 && believed > device_->pocketCount() ? believed : held;
     }
+    // Why the machine's PMC refuses T`tool` at the T word, before anything moves (an umbrella
+    // carousel's ladder checks the T code against its pockets); nullopt when it takes it.
+    std::optional<std::string> refusedTool(int tool) const;
     // Feeds one machine event to the device; throws a `crash` or `sensor_timeout` MacroError.
     void onMachineEvent(const machine::MachineEvent& event);
     // A straight move from `from` to `to` the device need not be told of: far from a linear rack

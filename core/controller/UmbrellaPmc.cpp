@@ -40,6 +40,14 @@ void MagazineDriver::awaitSensor(int pin, int level, int mCode) {
     }
 }
 
+std::optional<std::string> MagazineDriver::refusedTool(int tool) const {
+    if (!carousel_ || (tool >= 0 && tool <= carousel_->pocketCount())) {
+        return std::nullopt;
+    }
+    return "T" + std::to_string(tool) + " is not in the carousel: its pockets are 1-" +
+           std::to_string(carousel_->pocketCount()) + " (the PMC refused the T code; nothing moved)";
+}
+
 void MagazineDriver::answerPmc(int code) {
     const config::MagazineConfig& m = context_.config.magazine;
     const int commanded = context_.interp.state().selectedTool;

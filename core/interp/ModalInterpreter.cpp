@@ -89,14 +89,14 @@ double ModalInterpreter::toolLengthOffset() const {
 void ModalInterpreter::latchLengthOffset(const Words& words) {
     const int mode = state_.group(8);
     if ((mode == 43 || mode == 44) && (words.hasG(43) || words.hasG(44) || words.has('H'))) {
-        state_.lengthOffsetValue = tools_.offsetValue(state_.lengthOffset);
+        state_.lengthOffsetValue = tools_.lengthOffset(state_.lengthOffset);
     }
 }
 
 void ModalInterpreter::applyLengthOffset(int number) {
     state_.groups[8] = 43;
     state_.lengthOffset = number;
-    state_.lengthOffsetValue = tools_.offsetValue(number);
+    state_.lengthOffsetValue = tools_.lengthOffset(number);
 }
 
 int ModalInterpreter::activeSlot() const {
@@ -153,6 +153,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
     Words& words = words_; // reused across blocks
     words.reset(block);
     block_ = block.source;
+    dynamicLength_ = false;
     if (block.repeated >= 0) {
         const WordValue& w = block.words[static_cast<std::size_t>(block.repeated)];
         return {false, MacroError{AlarmCode::InvalidWord,
@@ -207,6 +208,12 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 }
                 machine_.auxiliary(code); // FANUC: the PMC's (the umbrella carousel's clamp)
                 break;
+            case 61:
+                if (dialect_.id != gcode::DialectId::M350) {
+                    setToolNumber(m, words);
+                    break;
+                }
+                [[fallthrough]];
             default:
                 if (dialect_.id == gcode::DialectId::M350) {
                     const std::optional<std::int32_t> handler = dialect_.handlerProgram('M', code);
@@ -229,7 +236,9 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         }
         latchLengthOffset(words);
         // 7. motion
-        moveAxes(words);
+        if (!std::exchange(dynamicLength_, false)) [[likely]] {
+            moveAxes(words);
+        }
         // 8. stops and program end
         for (const WordValue& m : words.m) {
             int code = roundToInt(m.value);
@@ -237,6 +246,8 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 stopForOperator(OperatorStop::Kind::Program, "M00 program stop");
             } else if (code == 1) {
                 stopForOperator(OperatorStop::Kind::Optional, "M01 optional stop");
+            } else if (code == 6 && dialect_.id != gcode::DialectId::M350) {
+                toolChange_ = ToolChange{state_.selectedTool, false};
             } else if (code == 2 || code == 30) {
                 flushCompensation();
                 compensation_.reset();
@@ -287,6 +298,9 @@ bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, double value) {
     if (dialect.lookAheadCodes && isLookAheadCode(value)) {
         return true;
     }
+    if (dialect.id != gcode::DialectId::M350 && std::abs(value - 43.1) < 1e-6) {
+        return true; // LinuxCNC's dynamic tool length, where the machine keeps a tool.tbl
+    }
     const int code = roundToInt(value);
     if (std::abs(value - code) > 1e-6) {
         return false;
@@ -304,6 +318,10 @@ void ModalInterpreter::applyGCodes(const Words& words) {
             continue;
         }
         const double value = g.value;
+        if (std::abs(value - 43.1) < 1e-6 && dialect_.id != gcode::DialectId::M350) {
+            setDynamicLength(g, words);
+            continue;
+        }
         int code = 0;
         if (value >= 0 && value < 128 && value == static_cast<double>(static_cast<int>(value))) {
             code = static_cast<int>(value); // as written, most codes: no rounding

@@ -16,10 +16,12 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace m350::interp {
@@ -109,6 +111,20 @@ public:
     bool hasLookAheadChanges() const { return !lookAheadChanges_.empty(); }
     std::vector<std::string> takeLookAheadChanges();
 
+    // A FANUC M06 the interpreter ran itself (no program is mapped to it): the tool T selected is
+    // the spindle's now, as far as the control knows; `byHand` for LinuxCNC's M61 Qn, which sets
+    // the number without a change (no pockets move). The controller takes it after each block.
+    struct ToolChange {
+        int tool = 0;
+        bool byHand = false;
+    };
+    std::optional<ToolChange> takeToolChange() { return std::exchange(toolChange_, std::nullopt); }
+    // The tool the spindle holds, as the controller knows it (G10 L0 is refused with one loaded).
+    void setSpindleToolSource(std::function<int()> source) { spindleTool_ = std::move(source); }
+    // Lines of tool.tbl the last G10 L0 skipped, for the controller to tell.
+    bool hasReloadIssues() const { return !reloadIssues_.empty(); }
+    std::vector<std::string> takeReloadIssues() { return std::exchange(reloadIssues_, {}); }
+
 private:
     // The words of one block by letter, as the executor indexed them (EvaluatedBlock, which
     // outlives execute()). `present` holds the letters other than G and M.
@@ -190,7 +206,13 @@ private:
     machine::Axes targetFor(const Words& words, bool machineCoordinates) const;
     void setCoordinateSystem(const Words& words); // G92, G52
     void setOffsets(const Words& words);          // G10
-    void setToolTable(const Words& words, const macro::WordValue& g10, int kind); // G10 L1 / L10 / L11
+    void setToolOffsets(const Words& words, const macro::WordValue& g10, int kind); // G10 L1, L10-L13
+    void reloadToolTable(const macro::WordValue& g10);                               // G10 L0
+    void setDynamicLength(const macro::WordValue& g, const Words& words);             // G43.1
+    void setToolNumber(const macro::WordValue& m, const Words& words);                // M61
+    void needLinuxCncTable(const macro::WordValue& w, const std::string& what) const;
+    void setOffsetRegister(const Words& words, int kind);                             // FANUC's P R
+    void setToolTable(const Words& words, const macro::WordValue& g10, int kind); // LinuxCNC's, axis words
     void latchLengthOffset(const Words& words);
     void goToReference(const Words& words, int point);
     void probeMove(const Words& words);
@@ -282,6 +304,10 @@ private:
     mutable OffsetCache offsetCache_;
     std::optional<OperatorStop> stop_;
     std::vector<std::string> lookAheadChanges_;
+    std::optional<ToolChange> toolChange_;
+    std::function<int()> spindleTool_;
+    std::vector<std::string> reloadIssues_;
+    bool dynamicLength_ = false; // the block is G43.1: its axis words are offsets, nothing moves
     const gcode::Block* block_ = nullptr; // the block being executed
     std::map<int, machine::Axes> referencePoints_;
     CutterCompensation compensation_;

@@ -324,8 +324,8 @@ void ModalInterpreter::setCoordinateSystem(const Words& words) {
 }
 
 // FANUC G10: L2 P0-6 writes a work offset (P0 the external one), L20 sets system P so the current
-// position reads the given values (LinuxCNC's meaning), L11 P R writes offset P (Memory A). With
-// axis words, L11 is LinuxCNC's, as are L1 and L10: they write the tool table (ToolTableCodes.cpp).
+// position reads the given values (LinuxCNC's meaning). L1 and L10-L13 write tool offsets: FANUC's
+// P R forms and LinuxCNC's P<tool> forms with axis words (ToolTableCodes.cpp).
 void ModalInterpreter::setOffsets(const Words& words) {
     const WordValue& g10 = *std::find_if(words.g.begin(), words.g.end(), [](const WordValue& w) {
         return std::abs(w.value - 10) < 1e-9;
@@ -335,30 +335,26 @@ void ModalInterpreter::setOffsets(const Words& words) {
     }
     const WordValue* l = words.find('L');
     const WordValue* p = words.find('P');
+    if (l && !p && std::abs(l->value) < 1e-9) {
+        reloadToolTable(g10); // LinuxCNC's G10 L0 has no P
+        return;
+    }
     if (!l || !p) {
-        invalid(g10, "G10 needs L and P (L2 P1 X.. for G54, L20, L11 P.. R.., L1/L10 P<tool> Z..)");
+        invalid(g10, "G10 needs L and P (L2 P1 X.. for G54, L20, L10-L13 P.. R.. for tool offsets, L1/L10 P<tool> Z..)");
     }
     int kind = roundToInt(l->value);
     int number = roundToInt(p->value);
-    if (kind == 1 || kind == 10 || (kind == 11 && words.hasAxis())) {
-        setToolTable(words, g10, kind);
+    if (kind == 0 && std::abs(l->value) < 1e-9) {
+        reloadToolTable(g10);
         return;
     }
-    if (kind == 11) {
-        const WordValue* r = words.find('R');
-        if (!tools::ToolData::validOffsetNumber(number) || !r) {
-            invalid(g10, "G10 L11 needs P1-" + std::to_string(tools::ToolData::kOffsetNumbers) +
-                             " and R<value> (or axis words: LinuxCNC's L11 P<tool> Z..)");
-        }
-        double value = (state_.incremental() ? tools_.offsetValue(number) : 0.0) + r->value;
-        if (auto why = tools_.setOffsetValue(number, value)) {
-            invalid(g10, *why);
-        }
+    if (kind == 1 || (kind >= 10 && kind <= 13)) {
+        setToolOffsets(words, g10, kind);
         return;
     }
     if ((kind != 2 && kind != 20) || number < 0 || number > 6) {
-        invalid(g10, "supported: L2 or L20 with P0-P6 (P0 external, P1-P6 G54-G59), L11 P R for tool offsets, "
-                     "L1 / L10 / L11 P<tool> for the tool table");
+        invalid(g10, "supported: L2 or L20 with P0-P6 (P0 external, P1-P6 G54-G59), L1 / L10-L13 P R for tool offsets, "
+                     "L1 / L10 / L11 P<tool> with axis words for the tool table");
     }
     int slot = number == 0 ? WorkOffsets::kCommon : number;
     machine::Axes position = machine_.position();

@@ -1,15 +1,20 @@
-// LinuxCNC's G10 L1 / L10 / L11 on a FANUC machine: they write tool P's row of the tool table
-// (tool.tbl), as LinuxCNC does:
-//   L1  the words are the offsets:                      offset = value
-//   L10 the current position shall read `value` in the active work system (G54-G59 with G52/G92):
-//                                                       offset = machine - work offsets - value
-//   L11 the same in LinuxCNC's fixture 9 (G59.3); this machine has none, so it counts from machine
-//       zero:                                           offset = machine - value
-// R sets the radius (the row's D is 2R), I and J the lathe angles, Q the orientation. G91 changes
-// nothing (the values are absolute in LinuxCNC). The tool must be in the table. The length that
-// G43/G44 applies is not re-read: the next G43 or H word does (see latchLengthOffset).
-// A FANUC's offset memory keeps numbers in the input unit of the moment, and so does the table
-// here: under G20 a computed offset is stored in inches.
+// G10 L1 and L10-L13 on a FANUC machine, in the two forms the source documents write:
+//   FANUC 0i, `G10 L.. P<offset> R<value>` (R and nothing of LinuxCNC's): the offset memory the
+//   machine has (ToolData.h). Memory A: L11 (or L1, the older form) writes offset P. Memory C:
+//   L10 H geometry, L11 H wear, L12 D geometry, L13 D wear. G91 adds R to the register.
+//   LinuxCNC, `G10 L1 / L10 / L11 P<tool>` with axis words (or I J Q): tool P's row of the table:
+//     L1  the words are the offsets:                      offset = value
+//     L10 the current position shall read `value` in the active work system (G54-G59 with G52/G92):
+//                                                         offset = machine - work offsets - value
+//     L11 the same in LinuxCNC's fixture 9 (G59.3); this machine has none, so it counts from machine
+//         zero:                                           offset = machine - value
+//     R sets the radius (the row's D is 2R), I and J the lathe angles, Q the orientation. G91
+//     changes nothing (the values are absolute in LinuxCNC). The tool must be in the table.
+// A block is never read both ways: a form that names a register other than the one the programmer
+// meant on this machine (L10, L12, L13 on memory A; L1 P R on memory C; L12/L13 with axis words) is
+// refused at its L word. The length G43/G44 applies is not re-read: the next G43 or H word does
+// (see latchLengthOffset). A FANUC's offset memory keeps numbers in the input unit of the moment,
+// and so does the table here: under G20 a computed offset is stored in inches.
 #include "core/interp/ModalInterpreter.h"
 
 #include "core/common/Numeric.h"
@@ -17,6 +22,111 @@
 namespace m350::interp {
 
 using macro::WordValue;
+
+// LinuxCNC's own tool table codes (its seed: G10 L0, M61, the random changer; G43.1 beside them)
+// belong to a machine that keeps a LinuxCNC tool.tbl; elsewhere they would be guesses.
+void ModalInterpreter::needLinuxCncTable(const WordValue& w, const std::string& what) const {
+    if (!tools_.keepsToolTable()) {
+        invalid(w, what + " is LinuxCNC's and works on a machine that keeps a tool table (tool.tbl in the machine "
+                          "folder, or --tool-table): this one keeps none");
+    }
+}
+
+// G10 L0: read tool.tbl again (LinuxCNC refuses it while a tool is loaded: M61 Q0 first).
+void ModalInterpreter::reloadToolTable(const WordValue& g10) {
+    needLinuxCncTable(g10, "G10 L0 (reload the tool table)");
+    if (const int loaded = spindleTool_ ? spindleTool_() : 0; loaded != 0) {
+        invalid(g10, "G10 L0 is not allowed with a tool loaded (T" + std::to_string(loaded) +
+                         "), as in LinuxCNC: unload it first (M61 Q0)");
+    }
+    std::vector<std::string> skipped;
+    if (auto why = tools_.reload(skipped)) {
+        invalid(g10, "G10 L0: " + *why);
+    }
+    reloadIssues_ = std::move(skipped);
+}
+
+// G43.1 Z..: LinuxCNC's dynamic tool length offset, the value itself instead of a table's entry;
+// the block moves nothing (its Z is the offset), the next move applies it. G49 cancels it.
+void ModalInterpreter::setDynamicLength(const WordValue& g, const Words& words) {
+    needLinuxCncTable(g, "G43.1 (dynamic tool length)");
+    for (char letter : {'X', 'Y', 'A', 'B', 'H'}) {
+        if (words.has(letter)) {
+            invalid(words[letter], std::string("G43.1 here takes Z, the tool length, only: ") + letter +
+                                       " has no tool offset on this machine");
+        }
+    }
+    if (!words.has('Z')) {
+        invalid(g, "G43.1 needs Z<tool length>");
+    }
+    state_.groups[8] = 43.1;
+    state_.lengthOffset = 0;
+    state_.lengthOffsetValue = words['Z'].value;
+    dynamicLength_ = true;
+}
+
+// M61 Qn: the spindle holds tool n now, without a change (LinuxCNC's "set current tool").
+void ModalInterpreter::setToolNumber(const WordValue& m, const Words& words) {
+    needLinuxCncTable(m, "M61 (set the tool number)");
+    const WordValue* q = words.find('Q');
+    const int tool = q ? roundToInt(q->value) : -1;
+    if (!q || std::abs(q->value - tool) > 1e-9 || tool < 0) {
+        invalid(q ? *q : m, "M61 needs Q<tool number>, a whole number from 0");
+    }
+    state_.selectedTool = tool;
+    toolChange_ = ToolChange{tool, true};
+}
+
+void ModalInterpreter::setToolOffsets(const Words& words, const WordValue& g10, int kind) {
+    const bool linuxCnc = words.hasAxis() || words.has('I') || words.has('J') || words.has('Q') || words.has('C') ||
+                          words.has('U') || words.has('V') || words.has('W');
+    const WordValue& l = words['L'];
+    if (linuxCnc) {
+        if (kind == 12 || kind == 13) {
+            invalid(l, "G10 L" + std::to_string(kind) + " P.. R.. writes a D offset (FANUC); axis words belong to "
+                       "LinuxCNC's G10 L1 / L10 / L11 P<tool>");
+        }
+        setToolTable(words, g10, kind);
+        return;
+    }
+    if (!words.has('R')) {
+        invalid(g10, "G10 L" + std::to_string(kind) + " needs R<value> (FANUC: G10 L" + std::to_string(kind) +
+                         " P<offset> R..) or axis words (LinuxCNC: G10 L1 / L10 / L11 P<tool> Z..)");
+    }
+    setOffsetRegister(words, kind);
+}
+
+void ModalInterpreter::setOffsetRegister(const Words& words, int kind) {
+    const WordValue& l = words['L'];
+    const WordValue& p = words['P'];
+    const WordValue& r = words['R'];
+    tools::OffsetRegister which = tools::OffsetRegister::LengthGeometry;
+    if (tools_.offsetMemory() == tools::OffsetMemory::A) {
+        if (kind != 1 && kind != 11) {
+            invalid(l, "this machine has FANUC offset memory A, one value per offset: G10 L11 P.. R.. (or L1) "
+                       "writes it; L10, L12 and L13 are offset memory C's (H/D geometry and wear)");
+        }
+    } else {
+        if (kind == 1) {
+            invalid(l, "G10 L1 P.. R.. is offset memory A's form (FANUC) and sets the radius in LinuxCNC: this "
+                       "machine has offset memory C, write G10 L10 (H geometry), L11 (H wear), L12 (D geometry) "
+                       "or L13 (D wear)");
+        }
+        which = kind == 10   ? tools::OffsetRegister::LengthGeometry
+                : kind == 11 ? tools::OffsetRegister::LengthWear
+                : kind == 12 ? tools::OffsetRegister::RadiusGeometry
+                             : tools::OffsetRegister::RadiusWear;
+    }
+    const int number = roundToInt(p.value);
+    if (std::abs(p.value - number) > 1e-9 || !tools_.validOffsetNumber(number)) {
+        invalid(p, "G10 L" + std::to_string(kind) + ": P is the offset number, 1-" +
+                       std::to_string(tools_.offsetCount()) + " on this machine");
+    }
+    const double value = (state_.incremental() ? tools_.registerValue(which, number) : 0.0) + r.value;
+    if (auto why = tools_.setRegister(which, number, value)) {
+        invalid(l, *why);
+    }
+}
 
 void ModalInterpreter::setToolTable(const Words& words, const WordValue& g10, int kind) {
     const WordValue& p = *words.find('P');

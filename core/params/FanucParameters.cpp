@@ -12,11 +12,17 @@ struct Simulated {
     double low;
     double high;
     double defaultValue;
+    bool whole = false; // a bit parameter's byte or a count
 };
 
 // The article on spindle-load breakage detection: Load% = L / 32767 x lambda, lambda default 143.
+// Tool life: 6800 and 6801 are bit parameters (0-255), 6810 the ignore number 0-9999; its default is
+// the 100 the 0i manual's examples assume (T101 = group 1).
 constexpr Simulated kSimulated[] = {
     {kLoadMeterFullScale, 1.0, 1000.0, 143.0},
+    {kToolLifeSettings, 0.0, 255.0, 0.0, true},
+    {kToolLifeExtended, 0.0, 255.0, 0.0, true},
+    {kToolLifeIgnoreNumber, 0.0, 9999.0, 100.0, true},
 };
 
 const Simulated* find(int number) {
@@ -38,9 +44,10 @@ std::optional<std::string> refusedFanucParameter(int number, double value) {
     if (!std::isfinite(value)) {
         return "parameter " + std::to_string(number) + " must be a finite number";
     }
-    if (const Simulated* p = find(number); p && (value < p->low || value > p->high)) {
+    if (const Simulated* p = find(number); p && (value < p->low || value > p->high || (p->whole && value != std::floor(value)))) {
         char text[128];
-        std::snprintf(text, sizeof text, "parameter %d must be from %g to %g", number, p->low, p->high);
+        std::snprintf(text, sizeof text, "parameter %d must be %sfrom %g to %g", number,
+                      p->whole ? "a whole number " : "", p->low, p->high);
         return std::string(text);
     }
     return std::nullopt;

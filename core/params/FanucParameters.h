@@ -12,6 +12,11 @@ namespace m350::params {
 inline constexpr int kFirstFanucParameter = 1000;
 inline constexpr int kLastFanucParameter = 99999;
 inline constexpr int kLoadMeterFullScale = 4127; // lambda: the load % the meter's full scale stands for
+// Tool life management (the 0i seed's T function chapter): bit parameters are written as the byte's
+// value (#0 = 1, #1 = 2, ... #7 = 128).
+inline constexpr int kToolLifeSettings = 6800;     // #0 GS1, #1 GS2 (groups x tools), #2 LTM (0 count, 1 minutes)
+inline constexpr int kToolLifeExtended = 6801;     // #6 EXT: G10 L3 P1 / P2 allowed
+inline constexpr int kToolLifeIgnoreNumber = 6810; // T(ignore + n) selects group n
 
 bool isFanucParameterNumber(int number);
 

@@ -2,9 +2,11 @@
 
 #include "core/common/Numeric.h"
 #include "core/params/ParameterNumbers.h"
+#include "core/tools/ToolTableFile.h"
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 namespace m350::tools {
 
@@ -106,6 +108,7 @@ std::optional<std::string> ToolData::put(const ToolEntry& entry) {
     if (auto why = rows_.put(entry)) {
         return why;
     }
+    changedSinceLoad_.insert(entry.tool);
     if (auto p = zParameter(entry.tool)) {
         parameters_->set(*p, entry.offset(kZ));
     }
@@ -161,11 +164,21 @@ std::optional<std::string> ToolData::setZ(int tool, double value) {
     return put(entry);
 }
 
-std::optional<std::string> ToolData::setOffsetValue(int number, double value) {
-    if (!rows_.find(number) && value == 0.0) {
-        return std::nullopt; // an offset that is 0 needs no row
+std::string_view offsetRegisterName(OffsetRegister r) {
+    switch (r) {
+    case OffsetRegister::LengthGeometry: return "H geometry";
+    case OffsetRegister::LengthWear: return "H wear";
+    case OffsetRegister::RadiusGeometry: return "D geometry";
+    case OffsetRegister::RadiusWear: return "D wear";
     }
-    return setZ(number, value);
+    return "H geometry";
+}
+
+double ToolData::lengthOffset(int number) const {
+    if (memory_ == OffsetMemory::A) {
+        return z(number);
+    }
+    return registerValue(OffsetRegister::LengthGeometry, number) + registerValue(OffsetRegister::LengthWear, number);
 }
 
 double ToolData::radiusOffset(int number) const {
@@ -173,7 +186,121 @@ double ToolData::radiusOffset(int number) const {
     if (!row) {
         return 0.0;
     }
-    return row->diameter ? *row->diameter / 2.0 : row->offset(kZ);
+    if (memory_ == OffsetMemory::A) {
+        return row->diameter ? *row->diameter / 2.0 : row->offset(kZ);
+    }
+    return row->diameter.value_or(0.0) / 2.0 + row->radiusWear.value_or(0.0);
+}
+
+double ToolData::registerValue(OffsetRegister r, int number) const {
+    if (r == OffsetRegister::LengthGeometry) {
+        return z(number);
+    }
+    const ToolEntry* row = rows_.find(number);
+    if (!row) {
+        return 0.0;
+    }
+    switch (r) {
+    case OffsetRegister::LengthWear: return row->lengthWear.value_or(0.0);
+    case OffsetRegister::RadiusGeometry: return row->diameter.value_or(0.0) / 2.0;
+    default: return row->radiusWear.value_or(0.0);
+    }
+}
+
+std::optional<std::string> ToolData::setRegister(OffsetRegister r, int number, double value) {
+    const ToolEntry* row = rows_.find(number);
+    if (!row && value == 0.0) {
+        return std::nullopt; // an offset that is 0 needs no row
+    }
+    if (r == OffsetRegister::LengthGeometry) {
+        return setZ(number, value);
+    }
+    ToolEntry entry;
+    if (row) {
+        entry = *row;
+    } else {
+        std::optional<int> pocket = rows_.freePocket(number);
+        if (!pocket) {
+            return "the tool table is full (" + std::to_string(ToolTable::kMaxTools) + " tools): no row for offset " +
+                   std::to_string(number);
+        }
+        entry.tool = number;
+        entry.pocket = *pocket;
+    }
+    switch (r) {
+    case OffsetRegister::LengthWear: entry.lengthWear = value; break;
+    case OffsetRegister::RadiusGeometry: entry.diameter = 2.0 * value; break;
+    default: entry.radiusWear = value; break;
+    }
+    return put(entry);
+}
+
+std::pair<OffsetRegister, int> ToolData::variableRegister(int index) const {
+    if (memory_ == OffsetMemory::A) {
+        return {OffsetRegister::LengthGeometry, index};
+    }
+    return index <= kMemoryCOffsets ? std::pair{OffsetRegister::LengthWear, index}
+                                    : std::pair{OffsetRegister::LengthGeometry, index - kMemoryCOffsets};
+}
+
+double ToolData::offsetVariable(int index) const {
+    auto [r, number] = variableRegister(index);
+    return registerValue(r, number);
+}
+
+std::optional<std::string> ToolData::setOffsetVariable(int index, double value) {
+    auto [r, number] = variableRegister(index);
+    return setRegister(r, number, value);
+}
+
+std::optional<std::string> ToolData::reload(std::vector<std::string>& skipped) {
+    auto read = readToolTableFile(sourceFile_);
+    if (auto* error = std::get_if<std::string>(&read)) {
+        return *error;
+    }
+    ParsedToolTable& parsed = std::get<ParsedToolTable>(read);
+    for (const ToolTableIssue& issue : parsed.issues) {
+        skipped.push_back(formatIssue(issue));
+    }
+    ToolTable table = std::move(parsed.table);
+    for (int tool : changedSinceLoad_) {
+        if (const ToolEntry* mine = rows_.find(tool)) {
+            if (const ToolEntry* other = table.findPocket(mine->pocket); other && other->tool != tool) {
+                continue; // the file moved another tool into its pocket: the file's word stands
+            }
+            table.put(*mine);
+        }
+    }
+    const std::set<int> kept = changedSinceLoad_;
+    replace(table);
+    changedSinceLoad_ = kept;
+    return std::nullopt;
+}
+
+bool ToolData::setPocket(int tool, int pocket) {
+    const ToolEntry* row = rows_.find(tool);
+    if (!row) {
+        return false;
+    }
+    ToolEntry entry = *row;
+    entry.pocket = pocket;
+    return !put(entry);
+}
+
+void ToolData::swapPockets(int from, int to) {
+    const ToolEntry* incoming = rows_.find(to);
+    if (from == to || !incoming) {
+        return;
+    }
+    const int freed = incoming->pocket;
+    const std::optional<int> aside = rows_.freePocket(ToolTable::kMaxPocket);
+    if (!aside || !setPocket(to, *aside)) {
+        return;
+    }
+    if (rows_.find(from)) {
+        setPocket(from, freed);
+    }
+    setPocket(to, 0);
 }
 
 ToolData::Mark ToolData::mark() const {

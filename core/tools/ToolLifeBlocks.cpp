@@ -103,8 +103,7 @@ void check(const std::optional<std::string>& problem, std::uint32_t column) {
             } else {
                 ToolLifeManager::Selection chosen = manager.selectGroup(t);
                 if (chosen.refusal) {
-                    throw MacroError{chosen.expired ? AlarmCode::ToolLifeExpired : AlarmCode::InvalidWord,
-                                     *chosen.refusal, w.column};
+                    throw MacroError{AlarmCode::InvalidWord, *chosen.refusal, w.column};
                 }
                 w.value = chosen.tool;
             }

@@ -1,16 +1,28 @@
 #include "core/tools/ToolLifeData.h"
 
+#include "core/common/Numeric.h"
+#include "core/params/FanucParameters.h"
+
 #include <algorithm>
 
 namespace m350::tools {
 
 LifeCapacity lifeCapacity(int gs) {
     switch (gs) {
-    case 1: return {32, 8};
-    case 2: return {64, 4};
+    case 1: return {64, 4}; // GS1
+    case 2: return {32, 8}; // GS2
     case 3: return {128, 2};
     default: return {16, 16};
     }
+}
+
+void LifeData::applyFanucParameters(const std::map<int, double>& parameters) {
+    const int settings = saturatingInt(params::fanucParameter(parameters, params::kToolLifeSettings));
+    gs = settings & 3;
+    defaultKind = (settings & 4) != 0 ? LifeKind::Minutes : LifeKind::Count;
+    extendedEntry = (saturatingInt(params::fanucParameter(parameters, params::kToolLifeExtended)) & 64) != 0;
+    ignoreNumber = saturatingInt(params::fanucParameter(parameters, params::kToolLifeIgnoreNumber));
+    fromParameters = true;
 }
 
 LifeGroup* LifeData::group(int number) {

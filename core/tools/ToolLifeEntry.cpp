@@ -13,6 +13,11 @@ std::optional<std::string> ToolLifeManager::beginEntry(int mode) {
         return "G10 L3 P" + std::to_string(mode) + ": P1 adds or changes groups, P2 deletes them, no P enters "
                                                   "all data anew";
     }
+    if (mode != 0 && !data_.extendedEntry) {
+        return "G10 L3 P" + std::to_string(mode) + " (" + (mode == 1 ? "add or change" : "delete") +
+               " groups) needs the extended tool life management: parameter 6801 #6 EXT = 1 (6801 = 64 in "
+               "params.toml); without it G10 L3 enters all data anew";
+    }
     Entry entry;
     entry.mode = mode;
     entry.staged.gs = data_.gs;

@@ -84,6 +84,14 @@ std::vector<int> namedNumbers(const std::vector<std::string_view>& f, std::size_
 }
 
 void parseSetting(const std::vector<std::string_view>& f, LifeData& data) {
+    if (data.fromParameters && (f[0] == "gs" || f[0] == "ignore" || f[0] == "ltm")) {
+        const char* where = f[0] == "gs"       ? "parameter 6800 #0 GS1 / #1 GS2"
+                            : f[0] == "ignore" ? "parameter 6810"
+                                               : "parameter 6800 #2 LTM";
+        throw LineError{"on a FANUC machine '" + std::string(f[0]) + "' is the control's " + where +
+                            ": set it in params.toml",
+                        f[0]};
+    }
     if (f[0] == "gs" && f.size() == 2) {
         data.gs = number(f[1], 0, 3, "gs");
     } else if (f[0] == "ignore" && f.size() == 2) {
@@ -134,7 +142,15 @@ LifeTool parseTool(const std::vector<std::string_view>& f, const LifeGroup& grou
 // (no tools, beyond the capacity) is kept as text with them.
 class LifeReader {
 public:
-    explicit LifeReader(std::string file) : file_(std::move(file)) {}
+    LifeReader(std::string file, const LifeData* settings) : file_(std::move(file)) {
+        if (settings) {
+            out_.data.gs = settings->gs;
+            out_.data.ignoreNumber = settings->ignoreNumber;
+            out_.data.defaultKind = settings->defaultKind;
+            out_.data.extendedEntry = settings->extendedEntry;
+            out_.data.fromParameters = settings->fromParameters;
+        }
+    }
 
     void line(std::string_view raw, std::uint32_t number) {
         std::string_view text = raw.substr(0, raw.find_last_not_of("\r") + 1);
@@ -205,8 +221,8 @@ std::string LifeFileIssue::text() const {
     return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: " + message + " (line skipped)";
 }
 
-ParsedToolLife parseToolLife(std::string_view text, const std::string& file) {
-    LifeReader reader(file);
+ParsedToolLife parseToolLife(std::string_view text, const std::string& file, const LifeData* settings) {
+    LifeReader reader(file, settings);
     std::uint32_t lineNumber = 0;
     std::size_t at = 0;
     while (at < text.size()) {
@@ -218,26 +234,30 @@ ParsedToolLife parseToolLife(std::string_view text, const std::string& file) {
     return reader.finish();
 }
 
-std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder) {
+std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder, const LifeData* settings) {
     std::filesystem::path path = std::filesystem::path(folder) / kToolLifeFile;
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) {
-        return ParsedToolLife{};
+        return parseToolLife("", path.string(), settings);
     }
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
     if (!in || !(text << in.rdbuf())) {
         return std::string("cannot read the file");
     }
-    return parseToolLife(text.str(), path.string());
+    return parseToolLife(text.str(), path.string(), settings);
 }
 
 std::string formatToolLife(const LifeData& data) {
     std::ostringstream out;
-    out << "; tool life management data (FANUC 0i style), kept by the controller\n"
-        << "gs " << data.gs << "          ; GS2*2+GS1: 0 = 16x16, 1 = 32x8, 2 = 64x4, 3 = 128x2\n"
-        << "ignore " << data.ignoreNumber << "    ; T(ignore+n) selects group n\n"
-        << "ltm " << (data.defaultKind == LifeKind::Count ? "count" : "minutes") << '\n';
+    out << "; tool life management data (FANUC 0i style), kept by the controller\n";
+    if (data.fromParameters) {
+        out << "; GS1/GS2 and LTM are parameter 6800, EXT 6801 #6, the ignore number 6810 (params.toml)\n";
+    } else {
+        out << "gs " << data.gs << "          ; GS2*2+GS1: 0 = 16x16, 1 = 64x4 (GS1), 2 = 32x8 (GS2), 3 = 128x2\n"
+            << "ignore " << data.ignoreNumber << "    ; T(ignore+n) selects group n\n"
+            << "ltm " << (data.defaultKind == LifeKind::Count ? "count" : "minutes") << '\n';
+    }
     for (const LifeGroup& g : data.groups) {
         out << "group " << g.number << " life " << g.life << ' '
             << (g.kind == LifeKind::Count ? "count" : "minutes") << '\n';

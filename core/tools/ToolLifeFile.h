@@ -16,6 +16,7 @@ namespace m350::tools {
 //   gs 0              GS2 * 2 + GS1 (parameter 6800 #0 #1): 0 = 16 groups x 16 tools ... 3 = 128 x 2
 //   ignore 100        parameter 6810, the tool life management ignore number (T101 = group 1)
 //   ltm count         parameter 6800 #2: the kind of a group G10 L3 enters without Q (count|minutes)
+// (these three only on the M350, whose tool life is a simulator extra: a FANUC's are its parameters)
 //   group 1 life 100 count
 //   tool 12 h 12 d 32 used 5        uses, or cutting time in 4 s units for a minutes group
 // A line the reader cannot take is reported with file:line:col and skipped; the rest loads. A
@@ -39,9 +40,11 @@ struct ParsedToolLife {
     std::vector<LifeFileIssue> issues;
 };
 
-ParsedToolLife parseToolLife(std::string_view text, const std::string& file);
+// `settings`: a FANUC machine's, from its parameters (LifeData::applyFanucParameters); the file's
+// own gs / ignore / ltm lines are then refused as lines that belong in params.toml.
+ParsedToolLife parseToolLife(std::string_view text, const std::string& file, const LifeData* settings = nullptr);
 // No file is no groups; a file that cannot be read is an error (the text says what), since saving
 // over it would lose it.
-std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder);
+std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder, const LifeData* settings = nullptr);
 std::string formatToolLife(const LifeData& data);
 } // namespace m350::tools

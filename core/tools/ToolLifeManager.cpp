@@ -49,26 +49,42 @@ ToolLifeManager::Selection ToolLifeManager::selectGroup(int t) {
     const LifeGroup* group = data_.group(number);
     if (!group) {
         return {0, "T" + std::to_string(t) + ": tool life group " + std::to_string(number) + " is not entered (T" +
-               std::to_string(data_.ignoreNumber) + "+n selects group n; enter groups with G10 L3)", false};
+                       std::to_string(data_.ignoreNumber) + "+n selects group n; enter groups with G10 L3)",
+                };
     }
+    ++revision_;
     if (auto counted = countedTools_.find(number); counted != countedTools_.end() && group->kind == LifeKind::Count) {
         selected_ = InUse{number, counted->second}; // counted once this run: the same tool, no new one
-        ++revision_;
-        return {counted->second, std::nullopt, false};
+        newTool_ = false;
+        return {counted->second, std::nullopt};
     }
-    for (const LifeTool& tool : group->tools) {
+    for (std::size_t i = 0; i < group->tools.size(); ++i) {
+        const LifeTool& tool = group->tools[i];
         if (!group->expired(tool)) {
             selected_ = InUse{number, tool.tool};
-            ++revision_;
-            return {tool.tool, std::nullopt, false};
+            newTool_ = i > 0 && tool.used == 0; // a sister tool takes over from an expired one
+            return {tool.tool, std::nullopt};
         }
     }
+    // FANUC: with every tool expired the last one goes on, and the tool change signal tells the PMC
+    const LifeTool& last = group->tools.back();
+    selected_ = InUse{number, last.tool};
+    newTool_ = false;
     std::string list;
     for (const LifeTool& tool : group->tools) {
         list += (list.empty() ? "" : ", ") + usedText(*group, tool);
     }
-    return {0, "tool life: every tool of group " + std::to_string(number) + " has reached its life (" + list +
-           (group->kind == LifeKind::Count ? " uses" : " x 4 s") + "); replace the tools and enter the group again", true};
+    notice_ = "tool life: every tool of group " + std::to_string(number) + " has reached its life (" + list +
+              (group->kind == LifeKind::Count ? " uses" : " x 4 s") + "): T" + std::to_string(last.tool) +
+              " goes on; tool change signal TLCH (#1003) = 1, replace the tools and reset the group";
+    return {last.tool, std::nullopt};
+}
+
+bool ToolLifeManager::toolChangeSignal() const {
+    return std::any_of(data_.groups.begin(), data_.groups.end(), [](const LifeGroup& g) {
+        return !g.tools.empty() &&
+               std::all_of(g.tools.begin(), g.tools.end(), [&g](const LifeTool& t) { return g.expired(t); });
+    });
 }
 
 void ToolLifeManager::changeTool(bool count) {

@@ -7,13 +7,17 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <variant>
 
 namespace m350::tools {
 
 // FANUC 0i tool life management, as the 0i manual's T function chapter gives it:
 // - `T<ignore + n>` selects group n: its first tool, in the order entered, whose life is not over;
-//   a T below the ignore number is an ordinary tool. Every tool of the group expired is an alarm.
+//   a T below the ignore number is an ordinary tool. When every tool of the group is expired the
+//   control goes on with the group's last tool and raises the tool change signal (TLCH).
+// - The PMC signals (FANUC F064): TLCH (#0) while a group has no tool left, TLNW (#1) from the T
+//   command that selected a new tool of a group (a sister tool starting its life) to the next T.
 // - The tool change (M06; on the M350, where T itself changes the tool, the T word) ends the life
 //   counting of the tool in use and starts it for the selected one.
 // - Count groups: a tool's use counts once per run (from reset into automatic operation), however
@@ -27,6 +31,11 @@ namespace m350::tools {
 class ToolLifeManager {
 public:
     void setData(LifeData data);
+    // A FANUC control's settings from its parameters (LifeData::applyFanucParameters), the groups kept.
+    void applyFanucParameters(const std::map<int, double>& parameters) {
+        data_.applyFanucParameters(parameters);
+        ++revision_;
+    }
     const LifeData& data() const { return data_; }
     // Management is on while there is at least one group.
     bool enabled() const { return !data_.groups.empty(); }
@@ -48,14 +57,20 @@ public:
     // The tool a group command selects; it waits for the tool change. An ordinary T selects no group.
     struct Selection {
         int tool = 0;
-        std::optional<std::string> refusal; // no such group, or (expired) every tool's life is over
-        bool expired = false;
+        std::optional<std::string> refusal; // no such group
     };
+    // What the last selection has to tell the operator (every tool of its group expired), once.
+    std::optional<std::string> takeNotice() { return std::exchange(notice_, std::nullopt); }
     Selection selectGroup(int t);
     void selectOrdinaryTool() {
         selected_.reset();
+        newTool_ = false;
         ++revision_;
     }
+    // TLCH: a group whose every tool has reached its life (until the operator resets it).
+    bool toolChangeSignal() const;
+    // TLNW: the last T command selected a new tool of its group.
+    bool newToolSignal() const { return newTool_; }
     // The tool change: the selected group's tool becomes the one in use and counts (`count` false
     // while a run is only scanned for 断点加工).
     void changeTool(bool count);
@@ -101,6 +116,8 @@ private:
     std::map<int, int> countedTools_; // count group -> the tool whose use this run has counted
     std::optional<InUse> selected_;
     std::optional<InUse> active_;
+    bool newTool_ = false;
+    std::optional<std::string> notice_;
     // the use of the tool in use for a minutes group
     double useSeconds_ = 0.0;
     int usedBefore_ = 0;

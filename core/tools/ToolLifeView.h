@@ -27,7 +27,7 @@ struct LifeGroupView {
     LifeKind kind = LifeKind::Count;
     int life = 0;      // uses, or minutes
     int lifeUnits = 0; // uses, or 4 s units
-    bool allExpired = false; // selecting the group is the tool life alarm
+    bool allExpired = false; // its last tool goes on and TLCH is raised
     std::vector<LifeToolView> tools;
 };
 

@@ -37,8 +37,9 @@ std::optional<std::string> invalidEntry(const ToolEntry& entry) {
             return tool + ": the " + std::string(1, kOffsetLetters[axis]) + " offset is not a finite number";
         }
     }
-    if (!finite(entry.diameter) || !finite(entry.frontAngle) || !finite(entry.backAngle)) {
-        return tool + ": D, I and J must be finite numbers";
+    if (!finite(entry.diameter) || !finite(entry.frontAngle) || !finite(entry.backAngle) || !finite(entry.lengthWear) ||
+        !finite(entry.radiusWear)) {
+        return tool + ": D, I, J and the wear must be finite numbers";
     }
     if (entry.orientation && (*entry.orientation < 0 || *entry.orientation > 9)) {
         return tool + ": orientation Q runs from 0 to 9";

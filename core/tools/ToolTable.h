@@ -38,10 +38,14 @@ struct ToolEntry {
     std::optional<double> maxRpm;     // {rpm=...}
     std::optional<int> teeth;         // {teeth=...}
     std::optional<ToolType> type;     // {type=...}
+    // FANUC offset memory C's wear columns, where LinuxCNC's table has none: H wear (length) and D
+    // wear (radius), {hwear=... dwear=...}. The geometry columns are the row's Z and D / 2.
+    std::optional<double> lengthWear; // {hwear=...}
+    std::optional<double> radiusWear; // {dwear=...}
     std::string comment;              // after ';', without the extras group
 
     double offset(int axis) const { return offsets[static_cast<std::size_t>(axis)].value_or(0.0); }
-    bool hasExtras() const { return maxRpm || teeth || type; }
+    bool hasExtras() const { return maxRpm || teeth || type || lengthWear || radiusWear; }
     bool operator==(const ToolEntry&) const = default;
 };
 

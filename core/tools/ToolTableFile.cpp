@@ -121,6 +121,8 @@ private:
             entry.maxRpm = parts.maxRpm;
             entry.teeth = parts.teeth;
             entry.type = parts.type;
+            entry.lengthWear = parts.lengthWear;
+            entry.radiusWear = parts.radiusWear;
         }
     }
 

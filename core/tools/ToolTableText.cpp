@@ -74,8 +74,13 @@ std::optional<std::string> readItem(const Item& item, CommentParts& parts) {
         std::optional<ToolType> type = toolTypeFromKey(value);
         if (!type) return shown + ": the types are " + typeKeys();
         parts.type = type;
+    } else if (key == "hwear" || key == "dwear") {
+        std::optional<double>& wear = key == "hwear" ? parts.lengthWear : parts.radiusWear;
+        if (wear) return shown + ": " + std::string(key) + " is given twice";
+        wear = parseTableNumber(value);
+        if (!wear) return shown + ": " + std::string(key) + " needs a number (FANUC offset memory C's wear)";
     } else {
-        return shown + ": the extras are rpm, teeth and type";
+        return shown + ": the extras are rpm, teeth, type, hwear and dwear";
     }
     return std::nullopt;
 }
@@ -160,6 +165,8 @@ std::string joinComment(const ToolEntry& entry) {
     if (entry.maxRpm) item("rpm=" + tableNumber(*entry.maxRpm));
     if (entry.teeth) item("teeth=" + std::to_string(*entry.teeth));
     if (entry.type) item("type=" + std::string(toolTypeKey(*entry.type)));
+    if (entry.lengthWear) item("hwear=" + tableNumber(*entry.lengthWear));
+    if (entry.radiusWear) item("dwear=" + tableNumber(*entry.radiusWear));
     return entry.comment + (entry.comment.empty() ? "" : " ") + "{" + group + "}";
 }
 

@@ -32,6 +32,8 @@ struct CommentParts {
     std::optional<double> maxRpm;
     std::optional<int> teeth;
     std::optional<ToolType> type;
+    std::optional<double> lengthWear;
+    std::optional<double> radiusWear;
     std::vector<CommentProblem> problems;
 };
 CommentParts splitComment(std::string_view comment, int firstColumn);

@@ -1,6 +1,6 @@
 // FANUC 0i tool life management through the controller: G10 L3 data entry up to G11, T101 picking
 // the group's first live tool, count life once per run at M06, minutes life in 4 s units of
-// cutting feed only, the whole-group-expired alarm, H99/D99 (toollife.txt: ToolLifeFileTest.cpp).
+// cutting feed only, a whole expired group going on with its last tool, H99/D99 (toollife.txt: ToolLifeFileTest.cpp).
 #include "ToolLifeFixture.h"
 
 #include <gtest/gtest.h>
@@ -63,9 +63,9 @@ TEST(ToolLife, BadDataBlocksAlarmAtTheirLine) {
     ASSERT_EQ(noG10.report.status, controller::RunStatus::Alarm);
     EXPECT_NE(noG10.report.alarm->message.find("G11 without G10 L3"), std::string::npos);
 
-    // GS1 = 1: 32 groups of 8 tools
+    // GS2 = 1: 32 groups of 8 tools (the 0i seed's table)
     config::MachineConfig gs1 = fanucMachine();
-    gs1.toolLife.gs = 1;
+    gs1.toolLife.gs = 2;
     std::string nine = "G10 L3\nP20 L1\n";
     for (int t = 1; t <= 9; ++t) {
         nine += "T" + std::to_string(t) + "\n";
@@ -109,17 +109,20 @@ TEST(ToolLife, CountLifeCountsOncePerRunAtTheToolChange) {
     EXPECT_EQ(used(noChange, 1, 11), 0);
 }
 
-TEST(ToolLife, AWholeExpiredGroupIsAnAlarmAtTheTWord) {
+TEST(ToolLife, AWholeExpiredGroupGoesOnWithItsLastToolAndRaisesTlch) {
     config::MachineConfig config = fanucWithGroups(3);
     config.toolLife.group(1)->tools[1].used = 3;
-    ProgramRun run = runProgram(config, lines({"G0 X0", "T101 M06", "M30"}));
-    ASSERT_EQ(run.report.status, controller::RunStatus::Alarm);
-    EXPECT_EQ(run.report.alarm->code, AlarmCode::ToolLifeExpired);
-    EXPECT_EQ(run.report.alarm->line, 2u);
-    EXPECT_EQ(run.report.alarm->column, 1u);
-    EXPECT_EQ(run.report.alarm->message,
-              "tool life: every tool of group 1 has reached its life (T11 3/3, T12 3/3 uses); replace the tools and "
-              "enter the group again");
+    ProgramRun run = runProgram(config, lines({"G0 X0", "T101 M06", "#100 = #1003", "M30"}));
+    EXPECT_RUN_OK(run);
+    EXPECT_EQ(run.number(4120), 12);
+    EXPECT_EQ(run.number(100), 1);
+    EXPECT_TRUE(run.controller->toolLife().manager().toolChangeSignal());
+    EXPECT_EQ(used(run, 1, 12), 4); // its uses go on being counted
+    const std::vector<std::string>& messages = run.report.messages;
+    ASSERT_FALSE(messages.empty());
+    EXPECT_EQ(messages.front(),
+              "tool life: every tool of group 1 has reached its life (T11 3/3, T12 3/3 uses): T12 goes on; tool change "
+              "signal TLCH (#1003) = 1, replace the tools and reset the group");
 }
 
 TEST(ToolLife, MinutesLifeCountsCuttingFeedIn4SecondUnits) {

@@ -93,7 +93,7 @@ TEST(ToolTableCodes, G10ToolCodesRefuseWhatLinuxCncRefuses) {
         const char* message;
     };
     for (const Case& c : {Case{"G10 L1 P9 Z1", "tool 9 is not in the tool table"},
-                          Case{"G10 L1 P1", "G10 L1 without offsets has no effect"},
+                          Case{"G10 L1 P1", "G10 L1 needs R<value> (FANUC: G10 L1 P<offset> R..) or axis words"},
                           Case{"G10 L10 P0 Z1", "P is the tool number"},
                           Case{"G10 L1 P1 Q12", "the orientation Q runs from 0 to 9"}}) {
         auto run = runProgram(fanucWithTable(), lines({"G10 L1 P1 Z7", c.block, "M30"}));
@@ -120,11 +120,11 @@ TEST(ToolTableCodes, TheOffsetMemoryIsTheTable) {
     EXPECT_DOUBLE_EQ(table.find(4)->offset(tools::kZ), 2.0);
     params::ParameterTable parameters;
     tools::ToolData data(gcode::Dialect::fanuc(), parameters, tools::parseToolTable("T5 P5 Z40 D8\n", "t").table);
-    ASSERT_EQ(data.setOffsetValue(4, 2.0), std::nullopt);
+    ASSERT_EQ(data.setOffsetVariable(4, 2.0), std::nullopt);
     EXPECT_DOUBLE_EQ(data.radiusOffset(5), 4.0) << "D5: tool 5's diameter / 2";
     EXPECT_DOUBLE_EQ(data.radiusOffset(4), 2.0) << "D4: row 4 has no D, so its one value is the radius";
     EXPECT_DOUBLE_EQ(data.radiusOffset(6), 0.0);
-    ASSERT_EQ(data.setOffsetValue(7, 0.0), std::nullopt);
+    ASSERT_EQ(data.setOffsetVariable(7, 0.0), std::nullopt);
     EXPECT_EQ(data.table().find(7), nullptr) << "an offset of 0 makes no row";
 }
 

@@ -137,7 +137,7 @@ TEST(ToolTableFile, ABadExtraIsAWarningAndTheGroupStaysCommentText) {
     ASSERT_EQ(parsed.issues.size(), 3u);
     EXPECT_THAT(formatIssue(parsed.issues[0]),
                 HasSubstr("tool.tbl:1:14: warning: 'rpm=fast': rpm needs a positive number"));
-    EXPECT_THAT(formatIssue(parsed.issues[1]), HasSubstr("tool.tbl:2:12: warning: 'flutes=2': the extras are rpm, teeth and type"));
+    EXPECT_THAT(formatIssue(parsed.issues[1]), HasSubstr("tool.tbl:2:12: warning: 'flutes=2': the extras are rpm, teeth, type, hwear and dwear"));
     EXPECT_THAT(formatIssue(parsed.issues[2]), HasSubstr("'type=saw': the types are flat, ball"));
     EXPECT_EQ(parsed.table.find(1)->comment, "x {rpm=fast teeth=2}");
     EXPECT_FALSE(parsed.table.find(1)->teeth);

@@ -154,8 +154,11 @@ TEST(UmbrellaMachine, TheSameToolDoesNothingAndAToolItDoesNotHaveIsRefused) {
     r = u.mdi({"M06 T13"});
     ASSERT_TRUE(r.alarm);
     EXPECT_EQ(r.alarm->code, AlarmCode::InvalidArgument);
-    EXPECT_EQ(r.alarm->message, "T13 is not in the carousel: its pockets are 1-12 (PMC refused M81)");
+    EXPECT_EQ(r.alarm->message, "T13 is not in the carousel: its pockets are 1-12 (the PMC refused the T code; "
+                                "nothing moved)");
+    EXPECT_EQ(r.alarm->column, 5u) << "at the T word";
     EXPECT_EQ(r.tool, 4);
+    EXPECT_LT(r.simTime, 0.01) << "refused before O9001 oriented the spindle or moved Z";
 }
 
 // O9001 with one line made wrong, carried by the program file: "M06 T5" with T3 in the spindle.
