@@ -142,6 +142,8 @@ Executor::State Executor::step() {
         if (error.column != 0) {
             alarm_->column = error.column;
         }
+        alarm_->messageId = error.messageId;
+        alarm_->messageArguments = error.messageArguments;
     }
     return state_;
 }
