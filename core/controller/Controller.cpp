@@ -305,7 +305,7 @@ bool Controller::start() {
     panel_.clearDialog();
     panel_.clearSensorWait();
     breakRun_.forgetPause();
-    devices_.closeOutputDevice();
+    devices_.beginRun();
     if (!executor_) {
         setState(RunState::Idle);
         return false;

@@ -76,7 +76,7 @@ std::optional<std::string> ExternalDevices::output(std::string_view statement, s
     return std::nullopt;
 }
 
-std::variant<macro::Peripherals::ModbusAnswer, macro::MacroError>
+std::variant<macro::Peripherals::ModbusAnswer, macro::Peripherals::ModbusPending, macro::MacroError>
 ExternalDevices::modbus(const ModbusRequest& request) {
     const std::string name = gcode::ModbusStatement::name(request.write);
     const std::string slave = std::to_string(request.slave);
@@ -95,7 +95,12 @@ ExternalDevices::modbus(const ModbusRequest& request) {
     TraceWriter::ModbusTransfer transfer{name,         request.slave, request.function, request.address,
                                          request.bytes, devices::modbus::hex(sent), std::nullopt, std::nullopt};
     if (!answer) {
-        context_.wait(gcode::ModbusStatement::kTimeout);
+        if (silentSlave_ != request.slave) {
+            silentSlave_ = request.slave; // the statement runs again when the wait is over
+            context_.wait(gcode::ModbusStatement::kTimeout);
+            return ModbusPending{};
+        }
+        silentSlave_.reset();
         if (context_.trace) {
             context_.trace->modbus(context_.time(), transfer, context_.source());
         }

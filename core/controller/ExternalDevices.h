@@ -28,8 +28,9 @@ namespace m350::controller {
 // - the M350's Modbus RTU slaves (modbus.toml): with parameter 279 on, MSETDATA and MGETDATA send
 //   a Modbus RTU frame (devices/ModbusRtu.h) that the slave it names answers from its tables in
 //   memory (devices::ModbusSlave); each transfer goes to the trace with both frames in hex. A
-//   slave modbus.toml does not declare is silent: after the controller's timeout (16 s of virtual
-//   time) the statement alarms, naming the slave (the controller itself would hang on MGETDATA).
+//   slave modbus.toml does not declare is silent: the statement waits the controller's timeout
+//   (16 s of virtual time), then alarms naming the slave (the controller itself would hang on
+//   MGETDATA).
 // A view that shows each record as it comes (the panel's system log) takes them with
 // takeNewRecords(), which hands over every record whatever the limit leaves of received().
 // While 断点加工 scans the blocks before its start line, POPEN and PCLOS open and close the device
@@ -61,16 +62,21 @@ public:
     // True once received() leaves records out: the output reached its limit.
     bool outputCapped() const { return receivedKept_.omitted() > 0; }
     NewRecords takeNewRecords();
-    void closeOutputDevice() { open_ = false; }   // a new run starts with the device closed
+    // A new run starts with the output device closed and no Modbus wait under way.
+    void beginRun() {
+        open_ = false;
+        silentSlave_.reset();
+    }
 
     std::optional<std::string> openOutput() override;
     std::optional<std::string> closeOutput() override;
     std::optional<std::string> output(std::string_view statement, std::string_view record) override;
-    std::variant<ModbusAnswer, macro::MacroError> modbus(const ModbusRequest& request) override;
+    std::variant<ModbusAnswer, ModbusPending, macro::MacroError> modbus(const ModbusRequest& request) override;
 
 private:
     Context context_;
     std::map<int, devices::ModbusSlave> slaves_;
+    std::optional<int> silentSlave_; // the slave whose answer a statement has waited for
     std::string receivedFirst_;
     HeadTail<std::string> receivedKept_;
     HeadTail<std::string> newRecords_{0, kNewRecordsBudget}; // no head: every record waits in its tail

@@ -206,8 +206,9 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
     case Control::MSetData:
     case Control::MGetData:
     case Control::ModbusConversion:
-        executeDeviceStatement(block);
-        ++frame.pc;
+        if (executeDeviceStatement(block)) {
+            ++frame.pc;
+        }
         return;
     }
 }

@@ -22,7 +22,7 @@ void check(const std::optional<std::string>& refusal, std::uint32_t column) {
 
 } // namespace
 
-void Executor::executeDeviceStatement(const gcode::Block& block) {
+bool Executor::executeDeviceStatement(const gcode::Block& block) {
     using gcode::Control;
     const std::uint32_t column = block.controlColumn;
     Peripherals* devices = options_.peripherals;
@@ -35,8 +35,8 @@ void Executor::executeDeviceStatement(const gcode::Block& block) {
             ? std::span<const gcode::StatementItem>{}
             : program_.statements[block.statement];
     switch (block.control) {
-    case Control::Popen: check(devices->openOutput(), column); return;
-    case Control::Pclos: check(devices->closeOutput(), column); return;
+    case Control::Popen: check(devices->openOutput(), column); return true;
+    case Control::Pclos: check(devices->closeOutput(), column); return true;
     case Control::Dprnt:
     case Control::Bprnt: {
         const bool binary = block.control == Control::Bprnt;
@@ -61,10 +61,10 @@ void Executor::executeDeviceStatement(const gcode::Block& block) {
         }
         record += kEndOfBlock;
         check(devices->output(binary ? "BPRNT" : "DPRNT", record), column);
-        return;
+        return true;
     }
     case Control::MSetData:
-    case Control::MGetData: modbusTransfer(block.control == Control::MSetData, items, column); return;
+    case Control::MGetData: return modbusTransfer(block.control == Control::MSetData, items, column);
     default:
         throw MacroError{AlarmCode::DeviceError, "this statement is not simulated", column};
     }
@@ -72,7 +72,7 @@ void Executor::executeDeviceStatement(const gcode::Block& block) {
 
 // MSETDATA[X1..X6] and MGETDATA[X1..X6] (gcode/ModbusStatement.h): #X1.. carry one byte each; the
 // slave's exception code goes into #X6, 0 when it did what was asked (MGETDATA then fills #X1..).
-void Executor::modbusTransfer(bool write, std::span<const gcode::StatementItem> items, std::uint32_t column) {
+bool Executor::modbusTransfer(bool write, std::span<const gcode::StatementItem> items, std::uint32_t column) {
     using gcode::ModbusStatement;
     const char* name = ModbusStatement::name(write);
     int value[ModbusStatement::kCount] = {};
@@ -109,6 +109,9 @@ void Executor::modbusTransfer(bool write, std::span<const gcode::StatementItem> 
         }
     }
     auto result = options_.peripherals->modbus(request);
+    if (std::holds_alternative<Peripherals::ModbusPending>(result)) {
+        return false;
+    }
     if (auto* alarm = std::get_if<MacroError>(&result)) {
         MacroError error = std::move(*alarm);
         error.column = error.column != 0 ? error.column : column;
@@ -122,6 +125,7 @@ void Executor::modbusTransfer(bool write, std::span<const gcode::StatementItem> 
     }
     evaluator_.writeVariable(value[ModbusStatement::ExceptionVariable], Value::of(answer.exception), {},
                              items[ModbusStatement::ExceptionVariable].column);
+    return true;
 }
 
 } // namespace m350::macro

@@ -39,8 +39,11 @@ public:
         int exception = 0;
         std::vector<std::uint8_t> data;
     };
-    // The answer, or the alarm when there is none (Modbus off, the slave silent).
-    virtual std::variant<ModbusAnswer, MacroError> modbus(const ModbusRequest& request) = 0;
+    // No answer yet: the controller waits for it (the virtual time has been let pass); the
+    // statement runs again once the wait is over, and then has its answer or its alarm.
+    struct ModbusPending {};
+    // The answer, the wait, or the alarm when there is none (Modbus off, the slave silent).
+    virtual std::variant<ModbusAnswer, ModbusPending, MacroError> modbus(const ModbusRequest& request) = 0;
 };
 
 } // namespace m350::macro
