@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace m350 {
 
@@ -49,6 +50,10 @@ struct Alarm {
     // program or MDI that called it; callerLine 0 when the alarm is on the user's own line.
     std::string callerFile{};
     std::uint32_t callerLine = 0;
+    // The message's words by a stable id, for the panel to say in its language ("modbus_no_answer"
+    // with its arguments in order: ui/i18n/AlarmText); empty for the alarms `message` alone says.
+    std::string messageId{};
+    std::vector<std::string> messageArguments{};
 };
 
 } // namespace m350

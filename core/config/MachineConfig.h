@@ -38,7 +38,7 @@ struct LibraryFile {
 //                  M350 its Z column replaces params 930-945 / 973-992 of params.toml
 //   hook files     optional: the M350's fndzero.nc, probe.nc, key-1.nc ... (HookFiles.h); slibuser.nc
 //                  is loaded as a G library beside the listed ones
-//   modbus.toml    optional: the Modbus RTU slaves' holding registers (ModbusSlaves.h)
+//   modbus.toml    optional: the Modbus RTU slaves' registers and coils (ModbusSlaves.h)
 //   toollife.txt   optional: tool life management groups (core/tools/ToolLifeFile.h)
 //   spindle-load.toml optional: the breakage monitor's per-tool load limits (core/tools/SpindleLoadLimits.h)
 struct MachineConfig {

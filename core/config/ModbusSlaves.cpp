@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 namespace m350::config {
@@ -44,20 +45,46 @@ std::optional<std::string> loadModbusSlaves(const std::string& path, ModbusSlave
     }
     for (auto&& [key, node] : *slaves) {
         auto slave = numberKey(key.str(), 1, 247);
-        const toml::table* holding = node.as_table() ? (*node.as_table())["holding"].as_table() : nullptr;
-        if (!slave || !holding) {
+        const toml::table* tables = node.as_table();
+        if (!slave || !tables) {
             return lineOf(node) + "[slave." + std::string(key.str()) +
-                   "] must be a slave address 1-247 with a table of holding registers: [slave.1.holding]";
+                   "] must be a slave address 1-247 with tables of what it holds: [slave.1.holding]";
         }
-        auto& registers = out.holding[*slave];
-        for (auto&& [address, value] : *holding) {
-            auto number = numberKey(address.str(), 0, 65535);
-            auto v = value.value<double>();
-            if (!number || !v || *v != std::floor(*v) || *v < -32768 || *v > 65535) {
-                return lineOf(value) + "slave " + std::to_string(*slave) + " register '" + std::string(address.str()) +
-                       "': addresses are 0-65535 and values whole numbers from -32768 to 65535";
+        devices::ModbusMemory& memory = out.slaves[*slave];
+        for (auto&& [kind, entries] : *tables) {
+            const std::string name(kind.str());
+            const bool registers = name == "holding" || name == "input";
+            const bool bits = name == "coils" || name == "discrete";
+            const toml::table* table = entries.as_table();
+            if ((!registers && !bits) || !table) {
+                return lineOf(entries) + "slave " + std::to_string(*slave) + ": '" + name +
+                       "' is none of its tables: holding, input (registers), coils, discrete (bits), e.g. "
+                       "[slave." + std::to_string(*slave) + ".holding]";
             }
-            registers[*number] = static_cast<std::uint16_t>(static_cast<int>(*v) & 0xFFFF);
+            for (auto&& [address, value] : *table) {
+                auto number = numberKey(address.str(), 0, 65535);
+                const std::string where = lineOf(value) + "slave " + std::to_string(*slave) + " " + name + " '" +
+                                          std::string(address.str()) + "': addresses are 0-65535 and ";
+                if (registers) {
+                    auto v = value.value<double>();
+                    if (!number || !v || *v != std::floor(*v) || *v < -32768 || *v > 65535) {
+                        return where + "values whole numbers from -32768 to 65535";
+                    }
+                    auto& target = name == "holding" ? memory.holding : memory.input;
+                    target[*number] = static_cast<std::uint16_t>(static_cast<int>(*v) & 0xFFFF);
+                    continue;
+                }
+                std::optional<bool> on;
+                if (auto b = value.value_exact<bool>()) {
+                    on = *b;
+                } else if (auto i = value.value_exact<std::int64_t>(); i && (*i == 0 || *i == 1)) {
+                    on = *i == 1;
+                }
+                if (!number || !on) {
+                    return where + "values 0 or 1 (false or true)";
+                }
+                (name == "coils" ? memory.coils : memory.discrete)[*number] = *on;
+            }
         }
     }
     return std::nullopt;

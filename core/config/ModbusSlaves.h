@@ -1,6 +1,7 @@
 #pragma once
 
-#include <cstdint>
+#include "core/devices/ModbusSlave.h"
+
 #include <map>
 #include <optional>
 #include <string>
@@ -8,14 +9,17 @@
 namespace m350::config {
 
 // The Modbus RTU slaves on the M350's serial port, as the machine folder's modbus.toml states them
-// at power-on: each slave address (1-247) with its holding registers (address 0-65535 -> 16-bit
-// value). A run reads and writes them in memory; the file is never written.
+// at power-on: each slave address (1-247) with what it holds, by address 0-65535. A run reads and
+// writes them in memory; the file is never written.
 //
-//   [slave.1.holding]      # slave address 1
-//   8192 = 0               # register address = value (0-65535, or -32768..-1 as two's complement)
-//   8193 = 5000
+//   [slave.1.holding]      # holding registers of slave 1 (functions 3 and 16)
+//   0 = 0                  # register address = value (0-65535, or -32768..-1 as two's complement)
+//   10 = 16951             # = 66 << 8 | 55: MGETDATA reads #n = 55, #n+1 = 66
+//   [slave.1.input]        # input registers (function 4)
+//   [slave.1.coils]        # coils (functions 1 and 15): address = 0 or 1 (or false, true)
+//   [slave.1.discrete]     # discrete inputs (function 2)
 struct ModbusSlaves {
-    std::map<int, std::map<int, std::uint16_t>> holding;
+    std::map<int, devices::ModbusMemory> slaves;
 };
 
 // Reads modbus.toml; what is wrong with it (with its line), if anything. A missing file is no slave.

@@ -26,7 +26,7 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
                  [this] { return status_.source(); }}),
       status_({config_, machine_, interp_, magazine_, executor_, program_, diagnostics_, state_, alarm_}, settings_),
       devices_({config_.parameters, scan_, status_.traceWriter(), [this] { return machine_.time(); },
-                [this] { return status_.source(); }},
+                [this] { return status_.source(); }, [this](double seconds) { machine_.dwell(seconds); }},
                config_.modbus, settings_.externalOutputLimit),
       toolLife_(config_.toolLife, state_, executor_, *config_.dialect, scan_), breakage_(machine_, magazine_),
       toolEdits_({tools_, state_, [this] { return manual_.jogging(); }, config_, interp_, machine_, magazine_}),
@@ -341,7 +341,7 @@ bool Controller::start() {
     panel_.clearDialog();
     panel_.clearSensorWait();
     breakRun_.forgetPause();
-    devices_.closeOutputDevice();
+    devices_.beginRun();
     if (!executor_) {
         setState(RunState::Idle);
         return false;

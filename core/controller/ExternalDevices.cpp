@@ -1,12 +1,19 @@
 #include "core/controller/ExternalDevices.h"
 
+#include "core/gcode/ModbusStatement.h"
 #include "core/params/ParameterNumbers.h"
+
+#include <cstdio>
 
 namespace m350::controller {
 
 ExternalDevices::ExternalDevices(Context context, config::ModbusSlaves slaves, std::uint64_t limit)
-    : context_(std::move(context)), slaves_(std::move(slaves)),
-      receivedKept_(static_cast<std::size_t>(limit - limit / 4), static_cast<std::size_t>(limit / 4)) {}
+    : context_(std::move(context)),
+      receivedKept_(static_cast<std::size_t>(limit - limit / 4), static_cast<std::size_t>(limit / 4)) {
+    for (auto& [address, memory] : slaves.slaves) {
+        slaves_.emplace(address, devices::ModbusSlave(address, std::move(memory)));
+    }
+}
 
 std::string ExternalDevices::received() const {
     std::string out = receivedFirst_;
@@ -69,49 +76,60 @@ std::optional<std::string> ExternalDevices::output(std::string_view statement, s
     return std::nullopt;
 }
 
-std::optional<std::string> ExternalDevices::modbusRefusal(const char* statement, int slave, int address) {
+std::variant<macro::Peripherals::ModbusAnswer, macro::Peripherals::ModbusPending, macro::MacroError>
+ExternalDevices::modbus(const ModbusRequest& request) {
+    const std::string name = gcode::ModbusStatement::name(request.write);
+    const std::string slave = std::to_string(request.slave);
     if (context_.parameters.get(param::kModbusRtu) == 0.0) {
-        return std::string(statement) + ": Modbus RTU is off (parameter 279 = 0)";
-    }
-    auto found = slaves_.holding.find(slave);
-    if (found == slaves_.holding.end()) {
-        return std::string(statement) + ": Modbus slave " + std::to_string(slave) +
-               " does not answer (the machine folder's modbus.toml has no [slave." + std::to_string(slave) +
-               ".holding])";
-    }
-    if (found->second.count(address) == 0) {
-        return std::string(statement) + ": slave " + std::to_string(slave) + " has no holding register " +
-               std::to_string(address) + " (Modbus exception 02, illegal data address)";
+        return macro::MacroError{AlarmCode::DeviceError, name + ": Modbus RTU is off (parameter 279 = 0)", 0};
     }
     if (context_.scan.scanning()) {
-        context_.scan.refuse(std::string(statement) + " talks to Modbus slave " + std::to_string(slave));
+        context_.scan.refuse(name + " talks to Modbus slave " + slave);
+        return ModbusAnswer{};
     }
-    return std::nullopt;
-}
-
-std::optional<std::string> ExternalDevices::writeRegister(int slave, int address, std::uint16_t value) {
-    if (auto refusal = modbusRefusal("MSETDATA", slave, address)) {
-        return refusal;
+    const devices::modbus::Frame sent =
+        devices::modbus::request(request.slave, request.function, request.address, request.bytes, request.data);
+    auto found = slaves_.find(request.slave);
+    const std::optional<devices::modbus::Frame> answer =
+        found != slaves_.end() ? found->second.answer(sent) : std::nullopt;
+    TraceWriter::ModbusTransfer transfer{name,         request.slave, request.function, request.address,
+                                         request.bytes, devices::modbus::hex(sent), std::nullopt, std::nullopt};
+    if (!answer) {
+        if (silentSlave_ != request.slave) {
+            silentSlave_ = request.slave; // the statement runs again when the wait is over
+            context_.wait(gcode::ModbusStatement::kTimeout);
+            return ModbusPending{};
+        }
+        silentSlave_.reset();
+        if (context_.trace) {
+            context_.trace->modbus(context_.time(), transfer, context_.source());
+        }
+        char seconds[16];
+        std::snprintf(seconds, sizeof seconds, "%.0f", gcode::ModbusStatement::kTimeout);
+        macro::MacroError error{AlarmCode::DeviceError,
+                                name + ": Modbus slave " + slave + " did not answer within " + seconds + " s",
+                                0,
+                                request.write ? "modbus_write_no_answer" : "modbus_read_no_answer",
+                                {slave, seconds}};
+        if (!request.write) {
+            error.message += "; on the controller this hangs MGETDATA until a reboot";
+        }
+        error.message += " (modbus.toml declares no [slave." + slave + "])";
+        return error;
     }
-    if (context_.scan.scanning()) {
-        return std::nullopt;
+    auto reply = devices::modbus::readReply(sent, request.bytes, *answer);
+    transfer.answer = devices::modbus::hex(*answer);
+    if (auto* read = std::get_if<devices::modbus::Reply>(&reply)) {
+        transfer.exception = read->exception;
     }
-    slaves_.holding[slave][address] = value;
     if (context_.trace) {
-        context_.trace->modbus(context_.time(), "write", slave, address, value, context_.source());
+        context_.trace->modbus(context_.time(), transfer, context_.source());
     }
-    return std::nullopt;
-}
-
-std::variant<std::uint16_t, std::string> ExternalDevices::readRegister(int slave, int address) {
-    if (auto refusal = modbusRefusal("MGETDATA", slave, address)) {
-        return *refusal;
+    if (auto* why = std::get_if<std::string>(&reply)) {
+        return macro::MacroError{AlarmCode::DeviceError, name + ": slave " + slave + "'s answer: " + *why, 0};
     }
-    const std::uint16_t value = slaves_.holding[slave][address];
-    if (context_.trace && !context_.scan.scanning()) {
-        context_.trace->modbus(context_.time(), "read", slave, address, value, context_.source());
-    }
-    return value;
+    auto& read = std::get<devices::modbus::Reply>(reply);
+    return ModbusAnswer{read.exception, std::move(read.data)};
 }
 
 } // namespace m350::controller

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/config/ModbusSlaves.h"
+#include "core/devices/ModbusSlave.h"
 #include "core/params/ParameterTable.h"
 #include "core/common/HeadTail.h"
 #include "core/controller/TraceWriter.h"
@@ -10,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,8 +25,12 @@ namespace m350::controller {
 //   line between them saying how much was left out. Each record goes to the trace as it is sent.
 //   DPRNT or BPRNT while it is closed is an alarm, as on the FANUC-compatible controls that
 //   document it.
-// - the M350's Modbus RTU slaves (modbus.toml): MSETDATA and MGETDATA read and write their holding
-//   registers in memory, with parameter 279 on; each transfer goes to the trace.
+// - the M350's Modbus RTU slaves (modbus.toml): with parameter 279 on, MSETDATA and MGETDATA send
+//   a Modbus RTU frame (devices/ModbusRtu.h) that the slave it names answers from its tables in
+//   memory (devices::ModbusSlave); each transfer goes to the trace with both frames in hex. A
+//   slave modbus.toml does not declare is silent: the statement waits the controller's timeout
+//   (16 s of virtual time), then alarms naming the slave (the controller itself would hang on
+//   MGETDATA).
 // A view that shows each record as it comes (the panel's system log) takes them with
 // takeNewRecords(), which hands over every record whatever the limit leaves of received().
 // While 断点加工 scans the blocks before its start line, POPEN and PCLOS open and close the device
@@ -47,6 +53,7 @@ public:
         const std::unique_ptr<TraceWriter>& trace;
         std::function<double()> time;
         std::function<TraceSource()> source;
+        std::function<void(double)> wait; // lets `seconds` of virtual time pass (a silent slave)
     };
     ExternalDevices(Context context, config::ModbusSlaves slaves, std::uint64_t limit);
 
@@ -55,19 +62,21 @@ public:
     // True once received() leaves records out: the output reached its limit.
     bool outputCapped() const { return receivedKept_.omitted() > 0; }
     NewRecords takeNewRecords();
-    void closeOutputDevice() { open_ = false; }   // a new run starts with the device closed
+    // A new run starts with the output device closed and no Modbus wait under way.
+    void beginRun() {
+        open_ = false;
+        silentSlave_.reset();
+    }
 
     std::optional<std::string> openOutput() override;
     std::optional<std::string> closeOutput() override;
     std::optional<std::string> output(std::string_view statement, std::string_view record) override;
-    std::optional<std::string> writeRegister(int slave, int address, std::uint16_t value) override;
-    std::variant<std::uint16_t, std::string> readRegister(int slave, int address) override;
+    std::variant<ModbusAnswer, ModbusPending, macro::MacroError> modbus(const ModbusRequest& request) override;
 
 private:
-    std::optional<std::string> modbusRefusal(const char* statement, int slave, int address);
-
     Context context_;
-    config::ModbusSlaves slaves_;
+    std::map<int, devices::ModbusSlave> slaves_;
+    std::optional<int> silentSlave_; // the slave whose answer a statement has waited for
     std::string receivedFirst_;
     HeadTail<std::string> receivedKept_;
     HeadTail<std::string> newRecords_{0, kNewRecordsBudget}; // no head: every record waits in its tail

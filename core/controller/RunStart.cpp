@@ -10,7 +10,7 @@ void Controller::clearForStart() {
     panel_.clearDialog();
     panel_.clearSensorWait();
     programStop_.clear();
-    devices_.closeOutputDevice(); // the scan opens it again where the program does (POPEN)
+    devices_.beginRun(); // the scan opens it again where the program does (POPEN)
 }
 
 BreakRun::Starter::Saved Controller::save() const { return {offsets_, tools_.table(), config_.parameters}; }

@@ -140,10 +140,19 @@ void TraceWriter::externalOutput(double time, std::string_view statement, std::s
     writeLine(j.dump());
 }
 
-void TraceWriter::modbus(double time, std::string_view operation, int slave, int address, int value,
-                         const TraceSource& source) {
-    nlohmann::json j{{"t", time},       {"type", "modbus"},    {"op", std::string(operation)},
-                     {"slave", slave},  {"register", address}, {"value", value}};
+void TraceWriter::modbus(double time, const ModbusTransfer& transfer, const TraceSource& source) {
+    nlohmann::json j{{"t", time},
+                     {"type", "modbus"},
+                     {"statement", transfer.statement},
+                     {"slave", transfer.slave},
+                     {"function", transfer.function},
+                     {"address", transfer.address},
+                     {"bytes", transfer.bytes},
+                     {"request", transfer.request},
+                     {"answer", transfer.answer ? nlohmann::json(*transfer.answer) : nlohmann::json()}};
+    if (transfer.exception) {
+        j["exception"] = *transfer.exception;
+    }
     withSource(j, source);
     writeLine(j.dump());
 }

@@ -5,6 +5,7 @@
 #include "core/machine/MachineTypes.h"
 
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -43,8 +44,19 @@ public:
     // The external output device: POPEN and PCLOS (no record), a DPRNT record (as text) or a BPRNT
     // record (as hexadecimal bytes).
     void externalOutput(double time, std::string_view statement, std::string_view record, const TraceSource& source);
-    // A Modbus transfer: "read" or "write" of a slave's holding register.
-    void modbus(double time, std::string_view operation, int slave, int address, int value, const TraceSource& source);
+    // An MSETDATA or MGETDATA transfer: the request frame and the slave's answer (hex), none when
+    // the slave was silent; the exception code when the answer is a Modbus frame (0 = OK).
+    struct ModbusTransfer {
+        std::string statement;
+        int slave = 0;
+        int function = 0;
+        int address = 0;
+        int bytes = 0;
+        std::string request;
+        std::optional<std::string> answer;
+        std::optional<int> exception;
+    };
+    void modbus(double time, const ModbusTransfer& transfer, const TraceSource& source);
     // A macro began waiting for an input to reach `level` (the sensor watchdog's first notice).
     void sensorWait(double time, std::string_view port, int level, const TraceSource& source);
 

@@ -92,6 +92,7 @@ private:
     void parseDeviceStatement(Block& block, const Token& keyword);
     void parsePrintItems(Block& block, const Token& keyword);
     void parseModbusArguments(Block& block, const Token& keyword);
+    void checkModbusTransfer(const Token& keyword, bool write, const std::vector<StatementItem>& arguments);
     std::uint32_t storeStatement(const std::vector<StatementItem>& items);
     std::uint32_t columnAt(std::size_t offset) const;
 

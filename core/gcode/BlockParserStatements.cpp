@@ -3,6 +3,7 @@
 // MBYTE2DATA[...], MDATA2BYTE[...]). A DPRNT's text is no G-code (`DPRNT[TOOL*LENGTH#100[53]]`), so
 // it is read from the line's characters; the Modbus arguments are expressions.
 #include "core/gcode/BlockParser.h"
+#include "core/gcode/ModbusStatement.h"
 
 namespace m350::gcode {
 
@@ -192,17 +193,18 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
     block.statement = storeStatement(items);
 }
 
-// MSETDATA[slave, register, value] and MGETDATA[slave, register, #variable]. MBYTE2DATA and
+// The firmware's MSETDATA[X1, X2, X3, X4, X5, X6] and MGETDATA[...] (ModbusStatement.h): six
+// arguments, those written as numbers checked here, the others when the line runs. MBYTE2DATA and
 // MDATA2BYTE parse, but no public document gives what their arguments mean: `check` flags them and
 // a run alarms when it reaches one, instead of guessing.
 void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
     const std::string name = keywordSpelling(keyword.keyword);
-    const char* usage = keyword.keyword == Keyword::MSetData   ? "MSETDATA[slave, register, value]"
-                        : keyword.keyword == Keyword::MGetData ? "MGETDATA[slave, register, #variable]"
-                                                               : nullptr;
+    const bool transfer = keyword.keyword == Keyword::MSetData || keyword.keyword == Keyword::MGetData;
+    const bool write = keyword.keyword == Keyword::MSetData;
+    const std::string usage = transfer ? ModbusStatement::usage(write) : std::string();
     if (peek().kind != TokenKind::LBracket) {
-        fail(peek(), name + " must be followed by [...]" + (usage ? std::string(": ") + usage : std::string()) +
-                         ", found " + describe(peek()));
+        fail(peek(), name + " must be followed by [...]" + (transfer ? ": " + usage : std::string()) + ", found " +
+                         describe(peek()));
     }
     const Token& open = next();
     std::vector<StatementItem> arguments;
@@ -227,21 +229,67 @@ void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
     if (peek().kind != TokenKind::End) {
         fail(peek(), "unexpected " + describe(peek()) + " after " + name + "[...]");
     }
-    if (usage) {
-        if (arguments.size() != 3) {
-            fail(keyword, name + " takes 3 arguments, not " + std::to_string(arguments.size()) + ": " + usage);
-        }
-        if (keyword.keyword == Keyword::MGetData && pool_[arguments[2].value].kind != ExprKind::Variable) {
-            fail(arguments[2].column, std::string("the third argument of ") + usage +
-                                          " is the variable that receives the register, e.g. #100");
-        }
-        block.control = keyword.keyword == Keyword::MSetData ? Control::MSetData : Control::MGetData;
+    if (transfer) {
+        checkModbusTransfer(keyword, write, arguments);
+        block.control = write ? Control::MSetData : Control::MGetData;
     } else {
         block.control = Control::ModbusConversion;
         lint(keyword.column, name + " is not simulated: no public document gives the meaning of its arguments, so "
                                     "a run alarms when it reaches this line");
     }
     block.statement = storeStatement(arguments);
+}
+
+// The six arguments of MSETDATA or MGETDATA: their count, and the values written as numbers.
+void BlockParser::checkModbusTransfer(const Token& keyword, bool write, const std::vector<StatementItem>& arguments) {
+    const std::string name = ModbusStatement::name(write);
+    const std::string example = write ? "MSETDATA[200,1,0,4,16,300] writes #200-#203 into registers 0-1 of slave 1"
+                                      : "MGETDATA[200,1,10,4,3,300] reads registers 10-11 of slave 1 into #200-#203";
+    if (arguments.size() == 3) {
+        fail(keyword, name + "[slave, register, " + (write ? "value" : "#variable") +
+                          "] was this simulator's own form, not the firmware's: the M350 takes six arguments, " +
+                          ModbusStatement::usage(write) + ", e.g. " + example);
+    }
+    if (arguments.size() != ModbusStatement::kCount) {
+        fail(keyword, name + " takes 6 arguments, not " + std::to_string(arguments.size()) + ": " +
+                          ModbusStatement::usage(write) + ", e.g. " + example);
+    }
+    // A number as written (-5 included); nothing for an expression, checked when the line runs.
+    auto literal = [&](const StatementItem& item) -> std::optional<double> {
+        const ExprNode& node = pool_[item.value];
+        if (node.kind == ExprKind::Number) {
+            return node.number;
+        }
+        if (node.kind == ExprKind::Unary && pool_[node.lhs].kind == ExprKind::Number) {
+            const double v = pool_[node.lhs].number;
+            return static_cast<UnaryOp>(node.op) == UnaryOp::Negate ? -v : v;
+        }
+        return std::nullopt;
+    };
+    for (int k = 0; k < ModbusStatement::kCount; ++k) {
+        const StatementItem& item = arguments[static_cast<std::size_t>(k)];
+        if (auto v = literal(item)) {
+            if (auto problem = ModbusStatement::argumentProblem(write, k, *v)) {
+                fail(item.column, name + ": " + *problem);
+            }
+        }
+    }
+    const auto first = literal(arguments[ModbusStatement::FirstVariable]);
+    const auto bytes = literal(arguments[ModbusStatement::Bytes]);
+    if (first && bytes) {
+        if (auto problem = ModbusStatement::spanProblem(static_cast<int>(*first), static_cast<int>(*bytes))) {
+            fail(arguments[ModbusStatement::Bytes].column, name + ": " + *problem);
+        }
+    }
+    for (int k : {ModbusStatement::FirstVariable, ModbusStatement::ExceptionVariable}) {
+        const StatementItem& item = arguments[static_cast<std::size_t>(k)];
+        const ExprNode& node = pool_[item.value];
+        if (node.kind == ExprKind::Variable && node.lhs == kNoExpr) {
+            const std::string n = std::to_string(static_cast<long long>(node.number));
+            note(item.column, name + ": X" + std::to_string(k + 1) + " is a variable's number: #" + n +
+                                  " stands for the number #" + n + " holds; write " + n + " to mean #" + n);
+        }
+    }
 }
 
 } // namespace m350::gcode

@@ -142,6 +142,8 @@ Executor::State Executor::step() {
         if (error.column != 0) {
             alarm_->column = error.column;
         }
+        alarm_->messageId = error.messageId;
+        alarm_->messageArguments = error.messageArguments;
     }
     return state_;
 }
@@ -204,8 +206,9 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
     case Control::MSetData:
     case Control::MGetData:
     case Control::ModbusConversion:
-        executeDeviceStatement(block);
-        ++frame.pc;
+        if (executeDeviceStatement(block)) {
+            ++frame.pc;
+        }
         return;
     }
 }

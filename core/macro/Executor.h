@@ -12,6 +12,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -78,7 +79,9 @@ private:
 
     void executeBlock(const gcode::Block& block, std::size_t frameIndex);
     void executeOrdinary(const gcode::Block& block, std::size_t frameIndex);
-    void executeDeviceStatement(const gcode::Block& block); // ExecutorStatements.cpp
+    // ExecutorStatements.cpp; false while the statement waits (it runs again at the next step)
+    bool executeDeviceStatement(const gcode::Block& block);
+    bool modbusTransfer(bool write, std::span<const gcode::StatementItem> items, std::uint32_t column);
     // Whether any word of the block may start a call; most blocks (G1 X.. Y..) do not, and skip the
     // call planning. Asked for every block: a block with no T, no other codes and no handler
     // cycle active is answered here on its code bits.

@@ -1,6 +1,7 @@
 // The part of the Executor that runs the statements talking to devices beside the CNC: FANUC's
 // POPEN, DPRNT, BPRNT, PCLOS and the M350's MSETDATA, MGETDATA. The records and registers go to
 // the Peripherals; what they refuse becomes an alarm on the statement's line.
+#include "core/gcode/ModbusStatement.h"
 #include "core/macro/Executor.h"
 #include "core/macro/PrintFormat.h"
 
@@ -21,7 +22,7 @@ void check(const std::optional<std::string>& refusal, std::uint32_t column) {
 
 } // namespace
 
-void Executor::executeDeviceStatement(const gcode::Block& block) {
+bool Executor::executeDeviceStatement(const gcode::Block& block) {
     using gcode::Control;
     const std::uint32_t column = block.controlColumn;
     Peripherals* devices = options_.peripherals;
@@ -33,19 +34,9 @@ void Executor::executeDeviceStatement(const gcode::Block& block) {
         block.control == Control::Popen || block.control == Control::Pclos
             ? std::span<const gcode::StatementItem>{}
             : program_.statements[block.statement];
-    // A Modbus argument: a whole number from `low` to `high`.
-    auto whole = [&](std::size_t k, const char* what, double low, double high) {
-        const double v = evaluator_.number(items[k].value);
-        if (std::abs(v - std::round(v)) > 1e-9 || v < low || v > high) {
-            char range[64];
-            std::snprintf(range, sizeof range, " must be a whole number from %.0f to %.0f, not %g", low, high, v);
-            throw MacroError{AlarmCode::InvalidArgument, std::string(what) + range, items[k].column};
-        }
-        return static_cast<int>(std::lround(v));
-    };
     switch (block.control) {
-    case Control::Popen: check(devices->openOutput(), column); return;
-    case Control::Pclos: check(devices->closeOutput(), column); return;
+    case Control::Popen: check(devices->openOutput(), column); return true;
+    case Control::Pclos: check(devices->closeOutput(), column); return true;
     case Control::Dprnt:
     case Control::Bprnt: {
         const bool binary = block.control == Control::Bprnt;
@@ -70,29 +61,71 @@ void Executor::executeDeviceStatement(const gcode::Block& block) {
         }
         record += kEndOfBlock;
         check(devices->output(binary ? "BPRNT" : "DPRNT", record), column);
-        return;
+        return true;
     }
-    case Control::MSetData: {
-        const int slave = whole(0, "the slave address", 1, 247);
-        const int address = whole(1, "the register address", 0, 65535);
-        const int value = whole(2, "a 16-bit register value", -32768, 65535);
-        check(devices->writeRegister(slave, address, static_cast<std::uint16_t>(value & 0xFFFF)), column);
-        return;
-    }
-    case Control::MGetData: {
-        const int slave = whole(0, "the slave address", 1, 247);
-        const int address = whole(1, "the register address", 0, 65535);
-        auto read = devices->readRegister(slave, address);
-        if (auto* refusal = std::get_if<std::string>(&read)) {
-            throw MacroError{AlarmCode::DeviceError, *refusal, column};
-        }
-        const int variable = evaluator_.variableNumber(items[2].value);
-        evaluator_.writeVariable(variable, Value::of(std::get<std::uint16_t>(read)), {}, items[2].column);
-        return;
-    }
+    case Control::MSetData:
+    case Control::MGetData: return modbusTransfer(block.control == Control::MSetData, items, column);
     default:
         throw MacroError{AlarmCode::DeviceError, "this statement is not simulated", column};
     }
+}
+
+// MSETDATA[X1..X6] and MGETDATA[X1..X6] (gcode/ModbusStatement.h): #X1.. carry one byte each; the
+// slave's exception code goes into #X6, 0 when it did what was asked (MGETDATA then fills #X1..).
+bool Executor::modbusTransfer(bool write, std::span<const gcode::StatementItem> items, std::uint32_t column) {
+    using gcode::ModbusStatement;
+    const char* name = ModbusStatement::name(write);
+    int value[ModbusStatement::kCount] = {};
+    for (int k = 0; k < ModbusStatement::kCount; ++k) {
+        const gcode::StatementItem& item = items[static_cast<std::size_t>(k)];
+        const double v = evaluator_.number(item.value);
+        if (auto problem = ModbusStatement::argumentProblem(write, k, v)) {
+            throw MacroError{AlarmCode::InvalidArgument, std::string(name) + ": " + *problem, item.column};
+        }
+        value[k] = static_cast<int>(std::lround(v));
+    }
+    const int first = value[ModbusStatement::FirstVariable];
+    const int bytes = value[ModbusStatement::Bytes];
+    if (auto problem = ModbusStatement::spanProblem(first, bytes)) {
+        throw MacroError{AlarmCode::InvalidArgument, std::string(name) + ": " + *problem,
+                         items[ModbusStatement::Bytes].column};
+    }
+    Peripherals::ModbusRequest request{write, value[ModbusStatement::Slave], value[ModbusStatement::Function],
+                                       value[ModbusStatement::Address], bytes, {}};
+    const std::uint32_t firstColumn = items[ModbusStatement::FirstVariable].column;
+    if (write) {
+        request.data.reserve(static_cast<std::size_t>(bytes));
+        for (int n = first; n < first + bytes; ++n) {
+            const double v = evaluator_.readVariable(n, firstColumn).asNumber();
+            if (std::abs(v - std::round(v)) > 1e-9 || v < 0 || v > 255) {
+                char text[160];
+                std::snprintf(text, sizeof text,
+                              "MSETDATA sends #%d = %.10g: each variable carries one byte, a whole number from 0 to "
+                              "255 (split a larger value over two variables)",
+                              n, v);
+                throw MacroError{AlarmCode::InvalidArgument, text, firstColumn};
+            }
+            request.data.push_back(static_cast<std::uint8_t>(std::lround(v)));
+        }
+    }
+    auto result = options_.peripherals->modbus(request);
+    if (std::holds_alternative<Peripherals::ModbusPending>(result)) {
+        return false;
+    }
+    if (auto* alarm = std::get_if<MacroError>(&result)) {
+        MacroError error = std::move(*alarm);
+        error.column = error.column != 0 ? error.column : column;
+        throw error;
+    }
+    const Peripherals::ModbusAnswer& answer = std::get<Peripherals::ModbusAnswer>(result);
+    if (!write && answer.exception == 0) {
+        for (std::size_t i = 0; i < answer.data.size(); ++i) {
+            evaluator_.writeVariable(first + static_cast<int>(i), Value::of(answer.data[i]), {}, firstColumn);
+        }
+    }
+    evaluator_.writeVariable(value[ModbusStatement::ExceptionVariable], Value::of(answer.exception), {},
+                             items[ModbusStatement::ExceptionVariable].column);
+    return true;
 }
 
 } // namespace m350::macro

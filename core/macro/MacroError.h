@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace m350::macro {
 
@@ -13,6 +14,9 @@ struct MacroError {
     AlarmCode code;
     std::string message;
     std::uint32_t column = 0;
+    // The message's words by id, for the panel to say in its language (Alarm::messageId).
+    std::string messageId{};
+    std::vector<std::string> messageArguments{};
 };
 
 } // namespace m350::macro

@@ -1,10 +1,13 @@
 #pragma once
 
+#include "core/macro/MacroError.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace m350::macro {
 
@@ -21,9 +24,26 @@ public:
     // One DPRNT or BPRNT record as the device receives it, its end-of-block code included.
     virtual std::optional<std::string> output(std::string_view statement, std::string_view record) = 0;
 
-    // A holding register of a slave (Modbus function 06 and 03).
-    virtual std::optional<std::string> writeRegister(int slave, int address, std::uint16_t value) = 0;
-    virtual std::variant<std::uint16_t, std::string> readRegister(int slave, int address) = 0;
+    // One MSETDATA or MGETDATA transfer: `bytes` bytes from or to the slave's registers (or coils)
+    // from `address`, by Modbus `function`. A write carries the variables' bytes in `data`.
+    struct ModbusRequest {
+        bool write = false;
+        int slave = 0;
+        int function = 0;
+        int address = 0;
+        int bytes = 0;
+        std::vector<std::uint8_t> data;
+    };
+    // The slave's answer: its exception code (0 = OK) and, for a read that succeeded, `bytes` bytes.
+    struct ModbusAnswer {
+        int exception = 0;
+        std::vector<std::uint8_t> data;
+    };
+    // No answer yet: the controller waits for it (the virtual time has been let pass); the
+    // statement runs again once the wait is over, and then has its answer or its alarm.
+    struct ModbusPending {};
+    // The answer, the wait, or the alarm when there is none (Modbus off, the slave silent).
+    virtual std::variant<ModbusAnswer, ModbusPending, MacroError> modbus(const ModbusRequest& request) = 0;
 };
 
 } // namespace m350::macro

@@ -136,40 +136,87 @@ fs::path machineWithModbus(const fs::path& into, const std::string& modbusToml) 
 
 } // namespace
 
+// MSETDATA then MGETDATA in the firmware's six-argument form against the folder's slave: the
+// bytes come back, and the trace has the frames a PC slave would log.
 TEST_F(CliTest, ModbusStatementsRunAgainstTheMachineFoldersSlaves) {
-    fs::path machine = machineWithModbus(dir_ / "machine", "[slave.1.holding]\n8192 = 0\n8193 = 1500\n");
-    write("vfd.nc", "MGETDATA[1,8193,#100]\nMSETDATA[1,8192,#100*2]\nMGETDATA[1,8192,#101]\nM30\n");
-    ProcessResult r = sim({"run", "vfd.nc", "--config", machine.string(), "--param", "279=1", "--print", "100,101",
-                           "--trace", "trace.jsonl"});
+    fs::path machine = machineWithModbus(dir_ / "machine", "[slave.1.holding]\n0 = 0\n1 = 0\n");
+    write("vfd.nc", "#200=11\n#201=22\n#202=33\n#203=44\nMSETDATA[200,1,0,4,16,300]\n"
+                    "MGETDATA[250,1,0,4,3,301]\nM30\n");
+    ProcessResult r = sim({"run", "vfd.nc", "--config", machine.string(), "--param", "279=1", "--print",
+                           "250,251,252,253,300,301", "--trace", "trace.jsonl"});
     EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
     json j = output(r);
-    EXPECT_EQ(j["vars"].value("100", json()), 1500) << r.out;
-    EXPECT_EQ(j["vars"].value("101", json()), 3000) << r.out;
+    const int expected[] = {11, 22, 33, 44, 0, 0};
+    const char* names[] = {"250", "251", "252", "253", "300", "301"};
+    for (int k = 0; k < 6; ++k) {
+        EXPECT_EQ(j["vars"].value(names[k], json()), expected[k]) << names[k] << ": " << r.out;
+    }
     std::ifstream trace(dir_ / "trace.jsonl");
     std::vector<std::string> transfers;
     for (std::string line; std::getline(trace, line);) {
         json event = json::parse(line);
         if (event["type"] == "modbus") {
-            transfers.push_back(event["op"].get<std::string>() + " " + std::to_string(event["slave"].get<int>()) + ":" +
-                                std::to_string(event["register"].get<int>()) + "=" +
-                                std::to_string(event["value"].get<int>()) + " @" +
-                                std::to_string(event["line"].get<int>()));
+            transfers.push_back(event["statement"].get<std::string>() + " @" + std::to_string(event["line"].get<int>()) +
+                                ": " + event["request"].get<std::string>() + " -> " + event["answer"].get<std::string>());
         }
     }
-    EXPECT_EQ(transfers, (std::vector<std::string>{"read 1:8193=1500 @1", "write 1:8192=3000 @2", "read 1:8192=3000 @3"}));
+    // the CRCs: CRC-16/MODBUS of each frame's other bytes, low byte first
+    EXPECT_EQ(transfers, (std::vector<std::string>{
+                             "MSETDATA @5: 01 10 00 00 00 02 04 16 0B 2C 21 5A FD -> 01 10 00 00 00 02 41 C8",
+                             "MGETDATA @6: 01 03 00 00 00 02 C4 0B -> 01 03 04 16 0B 2C 21 53 61",
+                         }));
     // the run works in memory: the folder's table is as it was
     std::ifstream in(machine / "modbus.toml");
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
-              "[slave.1.holding]\n8192 = 0\n8193 = 1500\n");
+              "[slave.1.holding]\n0 = 0\n1 = 0\n");
 }
 
 TEST_F(CliTest, ModbusNeedsParameter279) {
-    fs::path machine = machineWithModbus(dir_ / "machine", "[slave.1.holding]\n8192 = 0\n");
-    write("vfd.nc", "G0 X1\nMSETDATA[1,8192,5]\nM30\n");
+    fs::path machine = machineWithModbus(dir_ / "machine", "[slave.1.holding]\n0 = 0\n");
+    write("vfd.nc", "G0 X1\nMSETDATA[200,1,0,2,16,300]\nM30\n");
     ProcessResult r = sim({"run", "vfd.nc", "--config", machine.string()});
     EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
     EXPECT_NE(r.err.find("vfd.nc:2:1: alarm: MSETDATA: Modbus RTU is off (parameter 279 = 0)"), std::string::npos)
         << r.err;
+}
+
+// On the controller an MGETDATA to a slave that does not answer hangs it; the run stops after the
+// controller's 16 s with an alarm naming the slave.
+TEST_F(CliTest, AnUnansweredMgetdataAlarmsNamingTheSlave) {
+    fs::path machine = machineWithModbus(dir_ / "machine", "[slave.1.holding]\n0 = 0\n");
+    write("vfd.nc", "MGETDATA[200,3,0,2,3,300]\nM30\n");
+    ProcessResult r = sim({"run", "vfd.nc", "--config", machine.string(), "--param", "279=1"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    json j = output(r);
+    EXPECT_EQ(j["alarm"].value("code", ""), "device_error");
+    EXPECT_NE(r.err.find("vfd.nc:1:1: alarm: MGETDATA: Modbus slave 3 did not answer within 16 s; on the controller "
+                         "this hangs MGETDATA until a reboot (modbus.toml declares no [slave.3])"),
+              std::string::npos)
+        << r.err;
+}
+
+// The old three-argument form, arguments out of range and unknown functions: `check` and `run`
+// refuse them at their place.
+TEST_F(CliTest, CheckAndRunRefuseWrongModbusArguments) {
+    fs::path machine = machineWithModbus(dir_ / "machine", "[slave.1.holding]\n0 = 0\n");
+    write("bad.nc", "MSETDATA[1,8192,3000]\nMGETDATA[10,1,0,4,3,300]\nMGETDATA[498,1,0,4,3,300]\n"
+                    "MSETDATA[200,1,0,4,3,300]\nMGETDATA[200,1,0,4,3]\nM30\n");
+    const char* findings[] = {
+        "bad.nc:1:1: MSETDATA[slave, register, value] was this simulator's own form, not the firmware's: the M350 "
+        "takes six arguments, MSETDATA[first variable, slave, register, bytes, function, exception variable]",
+        "bad.nc:2:10: MGETDATA: the first variable (X1) must be a whole number from 50 to 499, not 10",
+        "bad.nc:3:18: MGETDATA: X4 = 4 bytes from #498 reach #501: the Modbus statements' variables end at #499",
+        "bad.nc:4:20: MSETDATA: the Modbus function (X5) of MSETDATA is 16 (write registers) or 15 (write coils), not 3",
+        "bad.nc:5:1: MGETDATA takes 6 arguments, not 5",
+    };
+    ProcessResult check = sim({"check", "bad.nc", "--config", machine.string()});
+    EXPECT_EQ(check.exitStatus, kExitError);
+    ProcessResult run = sim({"run", "bad.nc", "--config", machine.string(), "--param", "279=1"});
+    EXPECT_EQ(run.exitStatus, kExitError) << run.err;
+    for (const char* finding : findings) {
+        EXPECT_NE(check.err.find(finding), std::string::npos) << finding << "\n" << check.err;
+        EXPECT_NE(run.err.find(finding), std::string::npos) << finding << "\n" << run.err;
+    }
 }
 
 TEST_F(CliTest, ABrokenModbusTableIsAConfigError) {
@@ -178,7 +225,7 @@ TEST_F(CliTest, ABrokenModbusTableIsAConfigError) {
     ProcessResult r = sim({"run", "vfd.nc", "--config", machine.string()});
     EXPECT_EQ(r.exitStatus, kExitError) << r.err;
     EXPECT_EQ(output(r).value("status", ""), "error");
-    EXPECT_NE(r.err.find("modbus.toml: line 2: slave 1 register '8192'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("modbus.toml: line 2: slave 1 holding '8192'"), std::string::npos) << r.err;
 }
 
 TEST_F(CliTest, CheckFlagsTheModbusConversions) {

@@ -50,7 +50,7 @@ for folder in "$machines"/*/; do
 done
 printf '5; tool life groups\ngs 1\nignore 100\nltm count\ngroup 1 life 100 count\ntool 12 h 12 d 32 used 5\ntool 13 h 13 d 33\ngroup 2 life 30 minutes\ntool 4 used 7\n' \
     > "$corpus/machine-folder/seed-toollife.txt"
-printf '7[slave.1.holding]\n8192 = 0\n8193 = 5000\n[slave.2.holding]\n0 = -1\n' \
+printf '7[slave.1.holding]\n8192 = 0\n8193 = 5000\n[slave.1.input]\n0 = 258\n[slave.2.coils]\n0 = 1\n1 = false\n[slave.2.discrete]\n7 = true\n' \
     > "$corpus/machine-folder/seed-modbus.toml"
 
 # The bundled machines share hook files (M3.nc ...): one copy of each content is enough.

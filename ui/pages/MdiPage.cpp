@@ -1,5 +1,6 @@
 #include "ui/pages/MdiPage.h"
 
+#include "ui/i18n/AlarmText.h"
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/MdiLines.h"
 #include "ui/pages/PanelContext.h"
@@ -173,7 +174,7 @@ void MdiPage::render(const PanelSnapshot& snapshot) {
     case Run::Finished: result_->setText(head + tr("done")); break;
     case Run::Alarm:
     case Run::EStop:
-        result_->setText(head + (s.alarm ? QString::fromStdString(s.alarm->message) : tr("ALARM", "msg 24")));
+        result_->setText(head + (s.alarm ? AlarmText::message(*s.alarm) : tr("ALARM", "msg 24")));
         break;
     case Run::Idle: break;
     }

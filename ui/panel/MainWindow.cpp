@@ -2,6 +2,7 @@
 
 #include "ui/actions/ActionRecorder.h"
 #include "ui/actions/KeyboardMap.h"
+#include "ui/i18n/AlarmText.h"
 #include "ui/i18n/Language.h"
 #include "ui/pages/Page.h"
 #include "ui/pages/PageId.h"
@@ -171,11 +172,7 @@ void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
     message_->setText(message.isEmpty() ? notice_ : message);
     QString alarm;
     if (s.status.alarm) {
-        const Alarm& a = *s.status.alarm;
-        alarm = QString::fromStdString(a.message);
-        if (!a.file.empty()) {
-            alarm = QStringLiteral("%1:%2:%3: %4").arg(QString::fromStdString(a.file)).arg(a.line).arg(a.column).arg(alarm);
-        }
+        alarm = AlarmText::located(*s.status.alarm);
     } else if (s.status.sensorWait) {
         const auto& w = *s.status.sensorWait;
         alarm = tr("Waiting for %1 = %2 for %3 s (%4:%5)")

@@ -1,5 +1,6 @@
 #include "ui/session/SessionWorker.h"
 
+#include "ui/i18n/AlarmText.h"
 #include "ui/session/SimulationRun.h"
 
 #include "core/config/HookFiles.h"
@@ -136,7 +137,7 @@ void SessionWorker::noteAlarm() {
         if (auto alarm = controller_->panelStatus().alarm) {
             QString where = alarm->file.empty() ? QString()
                                                 : QStringLiteral("%1:%2: ").arg(QString::fromStdString(alarm->file)).arg(alarm->line);
-            log_->record("alarm", where + QString::fromStdString(alarm->message));
+            log_->record("alarm", where + AlarmText::message(*alarm));
         }
     }
     alarmLogged_ = alarmed;

@@ -1,5 +1,7 @@
 #include "ui/session/SimulationRun.h"
 
+#include "ui/i18n/AlarmText.h"
+
 #include "core/config/MachineConfig.h"
 #include "core/controller/Controller.h"
 #include "core/gcode/Diagnostic.h"
@@ -79,12 +81,7 @@ void SimulationRun::follow() {
         view_.run = SimulationView::Run::Alarm;
         controller::PanelStatus status = controller_->panelStatus();
         if (status.alarm) {
-            const Alarm& a = *status.alarm;
-            view_.alarm = QStringLiteral("%1:%2:%3: %4")
-                              .arg(QString::fromStdString(a.file))
-                              .arg(a.line)
-                              .arg(a.column)
-                              .arg(QString::fromStdString(a.message));
+            view_.alarm = AlarmText::located(*status.alarm);
         }
         break;
     }
