@@ -41,7 +41,8 @@ std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
 
 // `#1=1E308`, `G4 P1E3`: G-code has no exponent notation, and FANUC refuses it too. Read as a
 // number and an E word, the E would be silently ignored. On FANUC, a G65 line's `A1E2` is A and
-// the argument E (#8), as FANUC reads it.
+// the argument E (#8), as FANUC reads it. A variable's number is never a mantissa: `Y#32E2.` is
+// the words Y#32 and E2. in both dialects (a probing package's `G65P9730...Y#32E2.`).
 void BlockParser::checkExponents() {
     auto adjacent = [this](std::size_t a, std::size_t b) {
         return tokens_[a].offset + tokens_[a].length == tokens_[b].offset;
@@ -69,6 +70,9 @@ void BlockParser::checkExponents() {
             ++exponent;
         }
         if (tokens_[exponent].kind != TokenKind::Number || !adjacent(exponent - 1, exponent)) {
+            continue;
+        }
+        if (i > 0 && tokens_[i - 1].kind == TokenKind::Hash) {
             continue;
         }
         if (eArgument && i > 0 && tokens_[i - 1].kind == TokenKind::Letter) {
