@@ -7,6 +7,7 @@
 #include "core/gcode/Program.h"
 #include "core/machine/SimulatedMachine.h"
 #include "core/machine/SpindleLoadModel.h"
+#include "core/macro/CallCodes.h"
 #include "core/tools/SpindleLoadLimits.h"
 #include "core/tools/ToolTable.h"
 #include "core/tools/ToolLifeFile.h"
@@ -45,10 +46,14 @@ struct MachineConfig {
     std::string name;
     const gcode::Dialect* dialect = &gcode::Dialect::m350();
     std::vector<LibraryFile> libraries;
-    std::map<std::pair<char, int>, int> codePrograms;
+    macro::CallCodes codeCalls; // machine.toml's [codes]: M6 = 9001 (a subprogram call)
+    // The codes that call programs, as runs use them: [codes] and a FANUC's parameters 6050-6091
+    // (CallCodeParameters.h, rebuildCallCodes)
+    macro::CallCodes callCodes;
     std::vector<machine::IoLink> ioLinks;
     params::ParameterTable parameters;
     std::map<int, double> fanucParameters; // FANUC machines' parameters 1000-99999 (FanucParameters.h)
+    std::map<int, std::string> fanucParameterOrigins; // where each was set, for messages: "params.toml:4:8"
     std::array<std::array<double, 5>, 9> offsets{}; // slots as interp::WorkOffsets numbers them
     std::map<int, double> variables;
     int magazineCapacity = 0; // machines whose capacity is not a parameter (FANUC)

@@ -1,4 +1,5 @@
 #include "core/controller/Controller.h"
+#include "core/config/CallCodeParameters.h"
 #include "core/params/FanucParameters.h"
 
 #include "core/params/IoPorts.h"
@@ -143,11 +144,20 @@ void Controller::configureMachine() {
 }
 
 void Controller::applyParameterOverrides() {
+    bool fanuc = false;
     for (auto [number, value] : settings_.parameters) {
         if (params::isFanucParameterNumber(number)) {
             config_.fanucParameters[number] = value;
+            config_.fanucParameterOrigins[number] = "--param " + std::to_string(number);
+            fanuc = true;
         } else if (params::ParameterTable::valid(number)) {
             config_.parameters.set(number, value);
+        }
+    }
+    if (fanuc) {
+        // m350-sim refuses such a clash before it builds a controller; here the folder's table stays
+        if (auto refused = config::rebuildCallCodes(config_)) {
+            status_.postMessage(refused->message + " (the machine's call codes are kept)");
         }
     }
 }

@@ -36,7 +36,14 @@ bool Controller::load(const gcode::SourceText& source, gcode::FileRole role) {
 // libraries: what a run of that file needs.
 void Controller::parseWithLibraries(gcode::Program& program, const gcode::SourceText& source, gcode::FileRole role,
                                     std::vector<gcode::Diagnostic>& diagnostics) const {
-    gcode::Parser parser(*config_.dialect);
+    // The machine's macro-call codes pass arguments as G65 does: in their blocks E is an argument.
+    gcode::Dialect dialect = *config_.dialect;
+    for (const auto& [code, call] : config_.callCodes.codes()) {
+        if (call.kind == macro::CallKind::Macro) {
+            dialect.argumentCodes.push_back(code);
+        }
+    }
+    gcode::Parser parser(dialect);
     parser.setDropChunksAbove(static_cast<std::size_t>(settings_.programKeptWholeUpTo));
     parser.addSource(program, source, role);
     addCalledHooks(parser, program, source.path, diagnostics);
@@ -60,7 +67,7 @@ bool Controller::addSourceFile(gcode::Parser& parser, gcode::Program& program, c
 
 std::unique_ptr<macro::Executor> Controller::newExecutor() {
     macro::Executor::Options options;
-    options.codePrograms = config_.codePrograms;
+    options.callCodes = config_.callCodes;
     options.peripherals = &devices_;
     return std::make_unique<macro::Executor>(program_, *config_.dialect, store_, *this, interp_, options);
 }

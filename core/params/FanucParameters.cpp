@@ -12,16 +12,22 @@ struct Simulated {
     double low;
     double high;
     double defaultValue;
+    int last = 0; // a run of parameters number..last alike (0: the one number)
 };
 
-// The article on spindle-load breakage detection: Load% = L / 32767 x lambda, lambda default 143.
 constexpr Simulated kSimulated[] = {
+    // The article on spindle-load breakage detection: Load% = L / 32767 x lambda, lambda default 143.
     {kLoadMeterFullScale, 1.0, 1000.0, 143.0},
+    // Codes that call programs (CallCodeParameters.h); 0 calls nothing.
+    {kFirstGCodeMacroCall, 0.0, 9999.0, 0.0, kFirstGCodeMacroCall + 9},
+    {kFirstMCodeSubprogramCall, 0.0, 99999999.0, 0.0, kFirstMCodeSubprogramCall + 8},
+    {kFirstMCodeMacroCall, 0.0, 99999999.0, 0.0, kFirstMCodeMacroCall + 9},
+    {kFirstAddressCall, 0.0, 90.0, 0.0, kFirstAddressCall + 1},
 };
 
 const Simulated* find(int number) {
     for (const Simulated& p : kSimulated) {
-        if (p.number == number) {
+        if (p.number == number || (number > p.number && number <= p.last)) {
             return &p;
         }
     }
@@ -40,7 +46,7 @@ std::optional<std::string> refusedFanucParameter(int number, double value) {
     }
     if (const Simulated* p = find(number); p && (value < p->low || value > p->high)) {
         char text[128];
-        std::snprintf(text, sizeof text, "parameter %d must be from %g to %g", number, p->low, p->high);
+        std::snprintf(text, sizeof text, "parameter %d must be from %.10g to %.10g", number, p->low, p->high);
         return std::string(text);
     }
     return std::nullopt;

@@ -12,6 +12,11 @@ namespace m350::params {
 inline constexpr int kFirstFanucParameter = 1000;
 inline constexpr int kLastFanucParameter = 99999;
 inline constexpr int kLoadMeterFullScale = 4127; // lambda: the load % the meter's full scale stands for
+// Custom Macro B: codes that call programs (config/CallCodeParameters.h)
+inline constexpr int kFirstGCodeMacroCall = 6050;      // 6050-6059: G code -> macro O9010-O9019
+inline constexpr int kFirstMCodeSubprogramCall = 6071; // 6071-6079: M code -> subprogram O9001-O9009
+inline constexpr int kFirstMCodeMacroCall = 6080;      // 6080-6089: M code -> macro O9020-O9029
+inline constexpr int kFirstAddressCall = 6090;         // 6090-6091: address (ASCII) -> subprogram O9004, O9005
 
 bool isFanucParameterNumber(int number);
 

@@ -49,4 +49,88 @@ TEST_F(CliTest, ExponentNotationStaysRefusedAtItsLineAndColumn) {
     }
 }
 
+namespace {
+
+const char* const kFanucMill = "name = \"shop 0i\"\ndialect = \"fanuc\"\n";
+
+// The mould shop's facing macro, called as G100 by the owner's parameter 6050 = 100: arguments as
+// G65 passes them, and an M code of the pallet changer (6071 = 60 -> O9001) after its block's move.
+const char* const kMouldShop = "O2000\nG90G00X0.Y0.\nG100X40.Y30.Z-2.F800.\nG00X5.M60\nM30\n"
+                               "O9010(FACE)\n#100=#24*#25\n#101=#26\n#102=#9\nM99\n"
+                               "O9001(PALLET)\n#103=#5041\n#104=#24\nM99\n";
+
+} // namespace
+
+TEST_F(CliTest, GCodesAndMCodesCallTheirProgramsOnceTheParametersSaySo) {
+    write("shop/machine.toml", kFanucMill);
+    write("shop/params.toml", "[params]\n61 = 3000\n6050 = 100\n6071 = 60\n");
+    write("mould.nc", kMouldShop);
+    ProcessResult check = sim({"check", "mould.nc", "--config", "shop"});
+    EXPECT_EQ(check.exitStatus, kExitOk) << check.err;
+    EXPECT_EQ(check.err.find("not simulated"), std::string::npos) << "a live parameter is not warned:\n" << check.err;
+    ProcessResult r = sim({"run", "mould.nc", "--config", "shop", "--print", "100,101,102,103,104"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    json j = output(r);
+    EXPECT_EQ(j["vars"], json({{"100", 1200.0}, {"101", -2.0}, {"102", 800.0}, {"103", 5.0}, {"104", nullptr}}))
+        << r.out;
+}
+
+TEST_F(CliTest, WithoutTheParameterG100IsRefusedAtItsLineAndColumn) {
+    write("shop/machine.toml", kFanucMill);
+    write("mould.nc", kMouldShop);
+    ProcessResult check = sim({"check", "mould.nc", "--config", "shop"});
+    EXPECT_EQ(check.exitStatus, kExitError);
+    EXPECT_NE(check.err.find("mould.nc:3:1: G100: not a G code this machine knows"), std::string::npos) << check.err;
+    ProcessResult r = sim({"run", "mould.nc", "--config", "shop"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm);
+    EXPECT_NE(r.err.find("mould.nc:3:1: alarm: G100: not a G code this machine knows"), std::string::npos) << r.err;
+    // --param makes it a call for this run
+    ProcessResult set = sim({"run", "mould.nc", "--config", "shop", "--param", "6050=100", "--param", "6071=60",
+                             "--print", "100"});
+    EXPECT_EQ(set.exitStatus, kExitOk) << set.err;
+    EXPECT_EQ(output(set)["vars"].value("100", json()), 1200.0) << set.out;
+}
+
+TEST_F(CliTest, InsideAMacroACodeCalledItsCallingCodesAreOrdinary) {
+    write("shop/machine.toml", kFanucMill);
+    write("shop/params.toml", "[params]\n6050 = 100\n");
+    write("nest.nc", "G100X1.\nM30\nO9010\nG100X2.\nM99\n");
+    ProcessResult r = sim({"run", "nest.nc", "--config", "shop"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm);
+    EXPECT_NE(r.err.find("nest.nc:4:1: alarm: G100: not a G code this machine knows"), std::string::npos) << r.err;
+}
+
+TEST_F(CliTest, AParameterAndCodesCallingOneCodeAreALoadErrorNamingBoth) {
+    write("shop/machine.toml", std::string(kFanucMill) + "[codes]\nM6 = 9001\n");
+    write("shop/params.toml", "[params]\n61 = 3000\n6071 = 6\n");
+    write("t.nc", "M30\n");
+    ProcessResult r = sim({"run", "t.nc", "--config", "shop"});
+    EXPECT_EQ(r.exitStatus, kExitError);
+    EXPECT_NE(r.err.find("shop/params.toml:3:8: parameter 6071 = 6 makes M6 call O9001, but [codes] M6 = 9001 (shop/"
+                         "machine.toml:4:1) already makes it call O9001: keep one of them"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(output(r)["alarm"].value("code", ""), "config_error");
+    // the same clash from the command line is a usage error
+    write("shop/params.toml", "[params]\n61 = 3000\n");
+    ProcessResult usage = sim({"run", "t.nc", "--config", "shop", "--param", "6071=6"});
+    EXPECT_EQ(usage.exitStatus, kExitUsage);
+    EXPECT_NE(usage.err.find("--param 6071: parameter 6071 = 6 makes M6 call O9001, but [codes] M6 = 9001"),
+              std::string::npos)
+        << usage.err;
+}
+
+TEST_F(CliTest, AnAddressCallsItsSubprogramWithItsValue) {
+    write("shop/machine.toml", kFanucMill);
+    write("shop/params.toml", "[params]\n6090 = 66\n");
+    write("b.nc", "G90G00X5.B90.\nM30\nO9004\n#100=#146\n#101=#5041\nM99\n");
+    ProcessResult check = sim({"check", "b.nc", "--config", "shop"});
+    EXPECT_EQ(check.exitStatus, kExitOk) << check.err;
+    ProcessResult r = sim({"run", "b.nc", "--config", "shop", "--print", "100,101"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    json j = output(r);
+    EXPECT_EQ(j["vars"], json({{"100", 90.0}, {"101", 5.0}})) << r.out;
+    EXPECT_EQ(j["machine"].value("B", -1.0), 0.0) << "B called O9004; it moved no axis";
+}
+
 } // namespace m350::clitest
