@@ -94,7 +94,8 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                      "tools", "tools.*", // tools.length, tools.diameter, [tools.N]
                      "stock", "stock.top", "stock.x", "stock.y", "spindle_load",
                      "spindle_load.idle", "spindle_load.per_krpm", "spindle_load.per_cm3", "spindle_load.spike_factor",
-                     "spindle_load.spike_ms", "reference_points", "reference_points.*"},
+                     "spindle_load.spike_ms", "reference_points", "reference_points.*", "interface_signals",
+                     "interface_signals.*"},
                     config.warnings);
     config.name = t["name"].value_or(folder.filename().string());
     std::string dialect = t["dialect"].value_or(std::string("m350"));
@@ -204,6 +205,13 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     }
     readNumberedTools(file, t, config);
     readSpindleLoadWorld(file, t, config.spindleLoad);
+    if (config.dialect->id == gcode::DialectId::Fanuc) {
+        readInterfaceSignals(file, t, config.interfaceSignals);
+    } else if (const toml::node* signals = t.get("interface_signals")) {
+        config.warnings.push_back(warningAt(file, signals->source(),
+                                            "[interface_signals] are a FANUC's (#1000-#1133): this M350 machine "
+                                            "ignores them"));
+    }
     if (auto points = t["reference_points"].as_table()) {
         for (auto&& [key, value] : *points) {
             int number = numberKey(file, key.str(), key.source(), 1, 4, "reference point");

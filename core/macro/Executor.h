@@ -50,6 +50,8 @@ public:
     // handler (FANUC's O9001). Its moves carry the tool, they do not cut with it.
     bool changingTool() const { return frames_.size() > 1 && changingToolInCall(); } // asked for every move
     std::uint64_t blocksExecuted() const { return blocksExecuted_; }
+    // The blocks whose words reached the machine (the BlockSink): what single block stops after.
+    std::uint64_t machineBlocksExecuted() const { return machineBlocks_; }
     // The main program's side of the run, for 断点加工: the block of the started unit that runs
     // now (the call that is running, when inside one), how many of its blocks have started, and
     // the block it will start next while no call is active.
@@ -139,6 +141,7 @@ private:
     std::uint32_t current_ = 0;
     bool hasCurrent_ = false;
     std::uint64_t blocksExecuted_ = 0;
+    std::uint64_t machineBlocks_ = 0;
     std::uint32_t mainBlock_ = 0;
     std::uint64_t mainStarted_ = 0;
     // The canned cycle a handler program runs, kept modal until G80 or G00-G03.

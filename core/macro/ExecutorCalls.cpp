@@ -172,6 +172,7 @@ bool Executor::otherCodeMayCall(const EvaluatedBlock& block) const {
 // False when the program ended (M30, M02).
 bool Executor::sendToSink(const EvaluatedBlock& block, std::size_t frameIndex) {
     if (!block.words.empty()) {
+        ++machineBlocks_;
         BlockOutcome outcome = sink_.execute(block);
         if (outcome.error) {
             throw *outcome.error;

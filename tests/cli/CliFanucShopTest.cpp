@@ -133,4 +133,95 @@ TEST_F(CliTest, AnAddressCallsItsSubprogramWithItsValue) {
     EXPECT_EQ(j["machine"].value("B", -1.0), 0.0) << "B called O9004; it moved no axis";
 }
 
+namespace {
+
+std::vector<std::string> messagesOf(const json& j) {
+    std::vector<std::string> out;
+    for (const json& m : j.value("messages", json::array())) {
+        out.push_back(m.get<std::string>());
+    }
+    return out;
+}
+
+// A probing cycle as Renishaw-style packages write it: single block and feed hold off while the
+// stylus is near the part, the feed override locked at 100 %, all given back at the end.
+const char* const kProbeMove = "G90G00X0.\n#3003=1\n#3004=3\nG91G01X50.F600\nG01X-5.\n#3004=0\n#3003=0\n"
+                               "G01X10.\nM30\n";
+
+} // namespace
+
+TEST_F(CliTest, SingleBlockDoesNotStopInsideAMacroThatSets3003) {
+    write("probe.nc", kProbeMove);
+    ProcessResult check = sim({"check", "probe.nc", "--dialect", "fanuc"});
+    EXPECT_EQ(check.exitStatus, kExitOk) << check.err;
+    ProcessResult r = sim({"run", "probe.nc", "--dialect", "fanuc", "--single-block"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_EQ(messagesOf(output(r)),
+              (std::vector<std::string>{"single block stop (probe.nc:1): START pressed (run without an operator)",
+                                        "single block stop (probe.nc:8): START pressed (run without an operator)"}));
+}
+
+TEST_F(CliTest, PauseIsHeldBackWhile3004SaysSo) {
+    write("probe.nc", kProbeMove);
+    // X50 at F600 runs from about 0 s to 5 s: PAUSE at 2 s waits for line 6
+    ProcessResult r = sim({"run", "probe.nc", "--dialect", "fanuc", "--pause-at", "2"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    json j = output(r);
+    EXPECT_EQ(messagesOf(j), (std::vector<std::string>{
+                                 "PAUSE pressed at 2 s (probe.nc:4)",
+                                 "PAUSE held back: #3004 = 3 keeps feed hold off (probe.nc:4); the run holds where it "
+                                 "allows it again",
+                                 "PAUSE takes effect: #3004 allows feed hold again (probe.nc:6)",
+                                 "PAUSE: START pressed (run without an operator)"}))
+        << r.out;
+    EXPECT_DOUBLE_EQ(j["machine"].value("X", 0.0), 55.0) << r.out;
+    // without #3004 the same PAUSE holds in the move
+    write("plain.nc", "G90G00X0.\nG91G01X50.F600\nG01X-5.\nM30\n");
+    ProcessResult plain = sim({"run", "plain.nc", "--dialect", "fanuc", "--pause-at", "2"});
+    EXPECT_EQ(messagesOf(output(plain)),
+              (std::vector<std::string>{"PAUSE pressed at 2 s (plain.nc:2)",
+                                        "PAUSE: START pressed (run without an operator)"}))
+        << plain.out;
+}
+
+TEST_F(CliTest, InterfaceSignalsAreTheMachineFoldersWiring) {
+    write("cell/machine.toml", std::string(kFanucMill) +
+                                   "[interface_signals]\nUI003 = \"IN05\"\nUI004 = \"IN06\"\nUO000 = \"OUT07\"\n"
+                                   "UO101 = \"OUT08\"\n");
+    // the pallet changer's macro: wait for pallet clamped (UI003), then signal done (UO000, UO101)
+    write("pallet.nc", "WHILE[#1003EQ0]DO1\nEND1\n#100=#1032\n#1100=1\n#1133=2\n#101=#1132\nM30\n");
+    ProcessResult check = sim({"check", "pallet.nc", "--config", "cell"});
+    EXPECT_EQ(check.exitStatus, kExitOk) << check.err;
+    ProcessResult r = sim({"run", "pallet.nc", "--config", "cell", "--input", "IN05=1", "--input", "IN06=1",
+                           "--print", "100,101,1003,1004,1100,1133"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    json j = output(r);
+    EXPECT_EQ(j["vars"], json({{"100", 24.0}, {"101", 1.0}, {"1003", 1.0}, {"1004", 1.0}, {"1100", 1.0},
+                               {"1133", 2.0}}))
+        << r.out;
+    EXPECT_EQ(j["outputs"][6], 1) << "OUT07 follows UO000";
+    EXPECT_EQ(j["outputs"][7], 1) << "OUT08 follows UO101";
+    // the clamp never comes: the wait stops with the input named
+    ProcessResult stuck = sim({"run", "pallet.nc", "--config", "cell", "--sensor-timeout", "1"});
+    EXPECT_EQ(stuck.exitStatus, kExitAlarm);
+    EXPECT_EQ(output(stuck)["alarm"].value("code", ""), "sensor_timeout") << stuck.out;
+    // an input is not the macro's to write
+    write("write.nc", "#1003=1\nM30\n");
+    ProcessResult refused = sim({"check", "write.nc", "--config", "cell"});
+    EXPECT_EQ(refused.exitStatus, kExitError);
+    EXPECT_NE(refused.err.find("write.nc:1:1: cannot write #1003 (interface input UI003): it is read-only"),
+              std::string::npos)
+        << refused.err;
+}
+
+TEST_F(CliTest, TheBundledFanucMachinesWireTheirSignals) {
+    const std::string machines = M350_MACHINES_DIR;
+    // fanuc-umbrella: #1000-#1002 from the paper's ladder; the spindle holds T3
+    write("t.nc", "T3\n#100=#1000\n#101=#1001\n#102=#1002\nT0\n#103=#1002\nM30\n");
+    ProcessResult r = sim({"run", "t.nc", "--config", machines + "/fanuc-umbrella", "--tool", "3", "--print",
+                           "100,101,102,103"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_EQ(output(r)["vars"], json({{"100", 1.0}, {"101", 0.0}, {"102", 0.0}, {"103", 1.0}})) << r.out;
+}
+
 } // namespace m350::clitest
