@@ -224,4 +224,48 @@ TEST_F(CliTest, TheBundledFanucMachinesWireTheirSignals) {
     EXPECT_EQ(output(r)["vars"], json({{"100", 1.0}, {"101", 0.0}, {"102", 0.0}, {"103", 1.0}})) << r.out;
 }
 
+// Programs for other controls meet a clear refusal at their line and column on every bundled FANUC
+// machine: Haas's G103 (block look-ahead) and #10000-range variables, a Brother's G100 T1 tool change.
+TEST_F(CliTest, ProgramsForOtherControlsAreRefusedWhereTheyStand) {
+    const std::string machines = M350_MACHINES_DIR;
+    write("haas.nc", "%\nO00010(HAAS VF2)\nG103P1\n#10100=5.\nG00X1.\nM30\n%\n");
+    write("brother.nc", "%\nO0001(BROTHER S700)\nG90G00X0.Y0.\nG100T1\nM30\n%\n");
+    for (const char* machine : {"fanuc-0i", "fanuc-umbrella", "fanuc-ts27r"}) {
+        const std::string config = machines + "/" + machine;
+        ProcessResult haas = sim({"check", "haas.nc", "--config", config});
+        EXPECT_EQ(haas.exitStatus, kExitError) << machine;
+        EXPECT_NE(haas.err.find("haas.nc:3:1: G103: not a G code this machine knows"), std::string::npos)
+            << machine << "\n" << haas.err;
+        EXPECT_NE(haas.err.find("haas.nc:4:1: #[10100]"), std::string::npos) << machine << "\n" << haas.err;
+        ProcessResult run = sim({"run", "haas.nc", "--config", config});
+        EXPECT_EQ(run.exitStatus, kExitAlarm) << machine;
+        json a = output(run)["alarm"];
+        EXPECT_EQ(a.value("code", ""), "invalid_word") << machine;
+        EXPECT_EQ(a.value("line", 0), 3) << machine;
+        EXPECT_EQ(a.value("column", 0), 1) << machine;
+        ProcessResult brother = sim({"check", "brother.nc", "--config", config});
+        EXPECT_EQ(brother.exitStatus, kExitError) << machine;
+        EXPECT_NE(brother.err.find("brother.nc:4:1: G100: not a G code this machine knows"), std::string::npos)
+            << machine << "\n" << brother.err;
+        ProcessResult changed = sim({"run", "brother.nc", "--config", config});
+        EXPECT_EQ(changed.exitStatus, kExitAlarm) << machine;
+        EXPECT_NE(changed.err.find("brother.nc:4:1: alarm: G100: not a G code this machine knows"), std::string::npos)
+            << machine << "\n" << changed.err;
+    }
+    // the variable alone, past the G103 line
+    write("vars.nc", "#10100=5.\nM30\n");
+    ProcessResult vars = sim({"run", "vars.nc", "--dialect", "fanuc"});
+    EXPECT_EQ(vars.exitStatus, kExitAlarm);
+    json a = output(vars)["alarm"];
+    EXPECT_EQ(a.value("line", 0), 1);
+    EXPECT_EQ(a.value("column", 0), 1);
+    EXPECT_NE(a.value("message", "").find("10100"), std::string::npos) << vars.out;
+    // unless the owner makes G100 a macro call: then the Brother's T1 is its argument #20
+    write("brother-macro.nc", "G100T1\nM30\nO9010\n#100=#20\nM99\n");
+    ProcessResult macro = sim({"run", "brother-macro.nc", "--config", machines + "/fanuc-0i", "--param", "6050=100",
+                               "--print", "100"});
+    EXPECT_EQ(macro.exitStatus, kExitOk) << macro.err;
+    EXPECT_EQ(output(macro)["vars"].value("100", json()), 1.0) << macro.out;
+}
+
 } // namespace m350::clitest

@@ -101,6 +101,17 @@ TEST(FanucCallParameters, WithoutTheParameterG100IsRefusedAtItsLineAndColumn) {
     EXPECT_EQ(run.alarmText(), "invalid_word at " + run.fileName + ":2:1: G100: not a G code this machine knows");
 }
 
+TEST(FanucCallParameters, HaasCodesAndVariablesAreRefusedAtTheirLineAndColumn) {
+    auto g103 = runFanuc(lines({"G00X1.", "G103P1", "M30"}));
+    ASSERT_EQ(g103.report.status, controller::RunStatus::Alarm);
+    EXPECT_EQ(g103.alarmText(), "invalid_word at " + g103.fileName + ":2:1: G103: not a G code this machine knows");
+    auto common = runFanuc(lines({"#1=2.", "#10000=#1", "M30"}));
+    ASSERT_EQ(common.report.status, controller::RunStatus::Alarm);
+    EXPECT_EQ(common.report.alarm->line, 2u);
+    EXPECT_EQ(common.report.alarm->column, 1u);
+    EXPECT_NE(common.report.alarm->message.find("10000"), std::string::npos) << common.alarmText();
+}
+
 TEST(FanucCallParameters, ASettingThatIsNoCodeIsRefused) {
     struct Case {
         int number;
