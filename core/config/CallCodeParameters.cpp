@@ -48,7 +48,8 @@ std::string shortNumber(double value) {
 
 } // namespace
 
-std::optional<CallParameterError> addCallParameters(macro::CallCodes& table, const std::map<int, double>& values,
+std::optional<CallParameterError> addCallParameters(macro::CallCodes& table,
+                                                    const std::map<int, double>& values,
                                                     const std::map<int, std::string>& origins) {
     for (const Range& range : kRanges) {
         for (int k = 0; k < range.count; ++k) {
@@ -58,8 +59,10 @@ std::optional<CallParameterError> addCallParameters(macro::CallCodes& table, con
                 continue;
             }
             auto place = origins.find(number);
-            const std::string setting = "parameter " + std::to_string(number) + " = " + shortNumber(value->second);
-            const std::string origin = setting + (place != origins.end() ? " (" + place->second + ")" : std::string());
+            const std::string setting =
+                "parameter " + std::to_string(number) + " = " + shortNumber(value->second);
+            const std::string origin =
+                setting + (place != origins.end() ? " (" + place->second + ")" : std::string());
             const double v = value->second;
             if (v != std::floor(v)) {
                 return CallParameterError{setting + ": a code number is a whole number", number};
@@ -69,30 +72,33 @@ std::optional<CallParameterError> addCallParameters(macro::CallCodes& table, con
             if (range.letter == 0) {
                 const char letter = static_cast<char>(code);
                 if (code < 'A' || code > 'Z' || kCallingAddresses.find(letter) == std::string_view::npos) {
-                    return CallParameterError{setting + ": an address that calls O" + std::to_string(call.program) +
-                                                  " is the ASCII code of one of A B D F H I J K Q R S T (65 A, 66 B, ...)",
-                                              number};
+                    return CallParameterError{
+                        setting + ": an address that calls O" + std::to_string(call.program) +
+                            " is the ASCII code of one of A B D F H I J K Q R S T (65 A, 66 B, ...)",
+                        number};
                 }
                 call.valueVariable = kFirstAddressVariable + k;
                 if (auto clash = table.addAddress(letter, call)) {
-                    return CallParameterError{setting + " makes the address " + std::string(1, letter) + " call O" +
-                                                  std::to_string(call.program) + ", but " + clash->origin +
-                                                  " already makes it call O" + std::to_string(clash->program) +
-                                                  ": keep one of them",
+                    return CallParameterError{setting + " makes the address " + std::string(1, letter) +
+                                                  " call O" + std::to_string(call.program) + ", but " +
+                                                  clash->origin + " already makes it call O" +
+                                                  std::to_string(clash->program) + ": keep one of them",
                                               number};
                 }
                 continue;
             }
             const std::string name = std::string(1, range.letter) + std::to_string(code);
             if (reservedCode(range.letter, code)) {
-                return CallParameterError{setting + ": " + name + " cannot call a program (the controller itself "
-                                                                 "needs it)",
+                return CallParameterError{setting + ": " + name +
+                                              " cannot call a program (the controller itself "
+                                              "needs it)",
                                           number};
             }
             if (auto clash = table.add(range.letter, code, call)) {
-                return CallParameterError{setting + " makes " + name + " call O" + std::to_string(call.program) +
-                                              ", but " + clash->origin + " already makes it call O" +
-                                              std::to_string(clash->program) + ": keep one of them",
+                return CallParameterError{setting + " makes " + name + " call O" +
+                                              std::to_string(call.program) + ", but " + clash->origin +
+                                              " already makes it call O" + std::to_string(clash->program) +
+                                              ": keep one of them",
                                           number};
             }
         }

@@ -23,7 +23,8 @@ struct CallParameterError {
     std::string message;
     int parameter = 0; // the setting refused
 };
-std::optional<CallParameterError> addCallParameters(macro::CallCodes& table, const std::map<int, double>& values,
+std::optional<CallParameterError> addCallParameters(macro::CallCodes& table,
+                                                    const std::map<int, double>& values,
                                                     const std::map<int, std::string>& origins);
 
 struct MachineConfig;

@@ -36,7 +36,8 @@ int signalNumber(std::string_view key, std::string_view prefix) {
 
 } // namespace
 
-void readInterfaceSignals(const std::filesystem::path& file, const toml::table& machine, InterfaceSignals& out) {
+void readInterfaceSignals(const std::filesystem::path& file, const toml::table& machine,
+                          InterfaceSignals& out) {
     const toml::table* table = machine["interface_signals"].as_table();
     if (!table) {
         return;
@@ -49,11 +50,13 @@ void readInterfaceSignals(const std::filesystem::path& file, const toml::table& 
         const std::string name = "[interface_signals] " + std::string(k);
         auto text = node.value<std::string>();
         if (!text) {
-            fail(file, name + " must be a signal's name in quotes, such as \"IN05\" or \"OUT07\"", node.source());
+            fail(file, name + " must be a signal's name in quotes, such as \"IN05\" or \"OUT07\"",
+                 node.source());
         }
         if (k == "UI") {
             if (*text != "spindle_load") {
-                fail(file, name + " = \"" + *text + "\": all sixteen inputs at once can only be \"spindle_load\"",
+                fail(file,
+                     name + " = \"" + *text + "\": all sixteen inputs at once can only be \"spindle_load\"",
                      node.source());
             }
             out.inputsAreSpindleLoad = true;
@@ -62,7 +65,8 @@ void readInterfaceSignals(const std::filesystem::path& file, const toml::table& 
         }
         if (const int bit = signalNumber(k, "UI"); bit >= 0) {
             if (bit >= InterfaceSignals::kInputs) {
-                fail(file, name + ": the interface inputs run from UI000 to UI015 (#1000-#1015)", key.source());
+                fail(file, name + ": the interface inputs run from UI000 to UI015 (#1000-#1015)",
+                     key.source());
             }
             InterfaceSignals::Bit& wired = out.inputs[static_cast<std::size_t>(bit)];
             if (const int pin = pinNamed(*text, "IN", machine::kInputCount)) {
@@ -75,7 +79,8 @@ void readInterfaceSignals(const std::filesystem::path& file, const toml::table& 
                 wired = {Source::T0Commanded, 0};
             } else {
                 fail(file,
-                     name + " = \"" + *text + "\": an input is IN01-IN" + std::to_string(machine::kInputCount) +
+                     name + " = \"" + *text + "\": an input is IN01-IN" +
+                         std::to_string(machine::kInputCount) +
                          ", \"commanded_tool_in_spindle\", \"spindle_empty\" or \"t0_commanded\"",
                      node.source());
             }
@@ -93,14 +98,18 @@ void readInterfaceSignals(const std::filesystem::path& file, const toml::table& 
         }
         const int pin = pinNamed(*text, "OUT", machine::kOutputCount);
         if (pin == 0) {
-            fail(file, name + " = \"" + *text + "\": an interface output drives OUT01-OUT" +
-                           std::to_string(machine::kOutputCount),
+            fail(file,
+                 name + " = \"" + *text + "\": an interface output drives OUT01-OUT" +
+                     std::to_string(machine::kOutputCount),
                  node.source());
         }
-        (narrow ? out.outputs[static_cast<std::size_t>(bit)] : out.wideOutputs[static_cast<std::size_t>(bit - 100)]) = pin;
+        (narrow ? out.outputs[static_cast<std::size_t>(bit)]
+                : out.wideOutputs[static_cast<std::size_t>(bit - 100)]) = pin;
     }
     if (out.inputsAreSpindleLoad && bitsWired) {
-        fail(file, "[interface_signals] UI gives all sixteen inputs the spindle load: UI000-UI015 cannot be wired too",
+        fail(file,
+             "[interface_signals] UI gives all sixteen inputs the spindle load: UI000-UI015 cannot be wired "
+             "too",
              wordAt);
     }
 }

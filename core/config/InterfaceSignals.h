@@ -32,13 +32,14 @@ struct InterfaceSignals {
     static constexpr int kWideOutputs = 32; // UO100-UO131
 
     std::array<Bit, kInputs> inputs{};
-    bool inputsAreSpindleLoad = false;          // UI = "spindle_load"
+    bool inputsAreSpindleLoad = false;           // UI = "spindle_load"
     std::array<int, kOutputs> outputs{};         // OUTnn each drives, 0 none
     std::array<int, kWideOutputs> wideOutputs{}; // UO100-UO131
 };
 
 // Reads machine.toml's [interface_signals] into `out`; a key or value it cannot use fails with
 // file:line:col.
-void readInterfaceSignals(const std::filesystem::path& file, const toml::table& machine, InterfaceSignals& out);
+void readInterfaceSignals(const std::filesystem::path& file, const toml::table& machine,
+                          InterfaceSignals& out);
 
 } // namespace m350::config

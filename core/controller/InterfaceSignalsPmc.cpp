@@ -21,11 +21,16 @@ int InterfaceSignalsPmc::inputBit(int bit) const {
     }
     const config::InterfaceSignals::Bit& wired = context_.wiring.inputs[static_cast<std::size_t>(bit)];
     switch (wired.source) {
-    case Source::None: return 0;
-    case Source::Input: return context_.readInput(wired.pin) != 0 ? 1 : 0;
-    case Source::CommandedToolInSpindle: return context_.commandedTool() == context_.spindleTool() ? 1 : 0;
-    case Source::SpindleEmpty: return context_.spindleTool() == 0 ? 1 : 0;
-    case Source::T0Commanded: return context_.commandedTool() == 0 ? 1 : 0;
+    case Source::None:
+        return 0;
+    case Source::Input:
+        return context_.readInput(wired.pin) != 0 ? 1 : 0;
+    case Source::CommandedToolInSpindle:
+        return context_.commandedTool() == context_.spindleTool() ? 1 : 0;
+    case Source::SpindleEmpty:
+        return context_.spindleTool() == 0 ? 1 : 0;
+    case Source::T0Commanded:
+        return context_.commandedTool() == 0 ? 1 : 0;
     }
     return 0;
 }
@@ -76,8 +81,8 @@ std::optional<std::string> InterfaceSignalsPmc::setOutputs(int word, double valu
     const double least = word == 0 ? 0.0 : -kMostWide;
     if (value != std::floor(value) || value < least || value > most) {
         char text[128];
-        std::snprintf(text, sizeof text, "#%d = %.10g: it takes a whole number from %.10g to %.10g", 1132 + word,
-                      value, least, most);
+        std::snprintf(text, sizeof text, "#%d = %.10g: it takes a whole number from %.10g to %.10g",
+                      1132 + word, value, least, most);
         return std::string(text);
     }
     if (word == 0) {
@@ -90,7 +95,8 @@ std::optional<std::string> InterfaceSignalsPmc::setOutputs(int word, double valu
     wideOutputs_ = static_cast<std::int32_t>(value);
     const auto bits = static_cast<std::uint32_t>(wideOutputs_); // a negative number sets bit 31
     for (int bit = 0; bit < config::InterfaceSignals::kWideOutputs; ++bit) {
-        drive(context_.wiring.wideOutputs[static_cast<std::size_t>(bit)], static_cast<int>((bits >> bit) & 1u));
+        drive(context_.wiring.wideOutputs[static_cast<std::size_t>(bit)],
+              static_cast<int>((bits >> bit) & 1u));
     }
     return std::nullopt;
 }

@@ -20,7 +20,7 @@ namespace m350::controller {
 // keeps the outputs the macros write (#1100-#1115 and #1132: UO000-UO015; #1133: UO100-UO131)
 // and switches the machine outputs they are wired to.
 class InterfaceSignalsPmc {
-public:
+  public:
     // What the ladder reads; all of it belongs to the Controller and outlives this.
     struct Context {
         const config::InterfaceSignals& wiring;
@@ -33,21 +33,21 @@ public:
 
     explicit InterfaceSignalsPmc(Context context) : context_(std::move(context)) {}
 
-    macro::Value input(int bit) const;  // #1000 + bit
-    macro::Value inputs() const;        // #1032
-    macro::Value output(int bit) const; // #1100 + bit
+    macro::Value input(int bit) const;    // #1000 + bit
+    macro::Value inputs() const;          // #1032
+    macro::Value output(int bit) const;   // #1100 + bit
     macro::Value outputs(int word) const; // #1132 (word 0), #1133 (word 1)
     // A macro's write; what is wrong with the value, if anything.
     std::optional<std::string> setOutput(int bit, double value);
     std::optional<std::string> setOutputs(int word, double value);
 
-private:
+  private:
     int inputBit(int bit) const;
     void drive(int pin, int level);
 
     Context context_;
-    std::uint16_t outputs_ = 0;     // UO000-UO015
-    std::int32_t wideOutputs_ = 0;  // UO100-UO131, as #1133 was written
+    std::uint16_t outputs_ = 0;    // UO000-UO015
+    std::int32_t wideOutputs_ = 0; // UO100-UO131, as #1133 was written
 };
 
 } // namespace m350::controller

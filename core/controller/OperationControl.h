@@ -11,7 +11,7 @@ namespace m350::controller {
 //   #3004 bit 0: no feed hold; bit 1: no feed override (100 %); bit 2: no exact stop check
 // Both read 0 at power-on, after a reset and at the start of a run.
 class OperationControl {
-public:
+  public:
     double value(int variable) const { return variable == 3 ? singleBlock_ : feedHold_; }
     // #3003 (variable 3) or #3004 (4) = value; what is wrong with the value, if anything.
     std::optional<std::string> set(int variable, double value);
@@ -23,7 +23,7 @@ public:
     bool overrideSuppressed() const { return (feedHold_ & 2) != 0; }
     bool exactStopSuppressed() const { return (feedHold_ & 4) != 0; }
 
-private:
+  private:
     int singleBlock_ = 0; // #3003
     int feedHold_ = 0;    // #3004
 };

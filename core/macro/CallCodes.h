@@ -26,7 +26,7 @@ struct CodeCall {
 // and the FANUC parameters 6050-6091 fill this one table (config/CallCodeParameters.h), which the
 // executor and `check` read.
 class CallCodes {
-public:
+  public:
     // Adds a G or M code (letter 'G' or 'M'). When the code calls a program already, nothing
     // changes and the entry it clashes with is returned.
     std::optional<CodeCall> add(char letter, int code, CodeCall call);
@@ -40,7 +40,7 @@ public:
     bool empty() const { return codes_.empty() && addressLetters_ == 0; }
     const std::map<std::pair<char, int>, CodeCall>& codes() const { return codes_; }
 
-private:
+  private:
     std::map<std::pair<char, int>, CodeCall> codes_;
     std::map<char, CodeCall> addresses_;
     std::uint32_t addressLetters_ = 0;

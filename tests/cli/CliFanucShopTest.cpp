@@ -12,9 +12,10 @@ namespace {
 
 // The probing package's call as the shop wrote it: every argument from a variable, no spaces, the
 // last one `E2.` right after `Y#32`.
-const char* const kProbeCall = "%\nO1000(PROBE WEB)\n#7=6.#15=150.#11=1.#13=0.5\n#19=3.#20=12.#23=4.#31=25.#32=-18.5\n"
-                               "G65P9730D#7F#15H#11M#13S#19T#20W#23X#31Y#32E2.\nM30\n"
-                               "O9730\n#100=#24\n#101=#25\n#102=#8\n#103=#7+#9+#11+#13+#19+#20+#23\nM99\n%\n";
+const char* const kProbeCall =
+    "%\nO1000(PROBE WEB)\n#7=6.#15=150.#11=1.#13=0.5\n#19=3.#20=12.#23=4.#31=25.#32=-18.5\n"
+    "G65P9730D#7F#15H#11M#13S#19T#20W#23X#31Y#32E2.\nM30\n"
+    "O9730\n#100=#24\n#101=#25\n#102=#8\n#103=#7+#9+#11+#13+#19+#20+#23\nM99\n%\n";
 
 } // namespace
 
@@ -45,7 +46,8 @@ TEST_F(CliTest, ExponentNotationStaysRefusedAtItsLineAndColumn) {
         write("exp.nc", "#1=2.\nG1X#1Y1.E2\nM30\n");
         ProcessResult r = sim({"check", "exp.nc", "--dialect", dialect});
         EXPECT_EQ(r.exitStatus, kExitError) << dialect;
-        EXPECT_NE(r.err.find("exp.nc:2:7: '1.E2' is not a G-code number"), std::string::npos) << dialect << r.err;
+        EXPECT_NE(r.err.find("exp.nc:2:7: '1.E2' is not a G-code number"), std::string::npos)
+            << dialect << r.err;
     }
 }
 
@@ -67,11 +69,13 @@ TEST_F(CliTest, GCodesAndMCodesCallTheirProgramsOnceTheParametersSaySo) {
     write("mould.nc", kMouldShop);
     ProcessResult check = sim({"check", "mould.nc", "--config", "shop"});
     EXPECT_EQ(check.exitStatus, kExitOk) << check.err;
-    EXPECT_EQ(check.err.find("not simulated"), std::string::npos) << "a live parameter is not warned:\n" << check.err;
+    EXPECT_EQ(check.err.find("not simulated"), std::string::npos) << "a live parameter is not warned:\n"
+                                                                  << check.err;
     ProcessResult r = sim({"run", "mould.nc", "--config", "shop", "--print", "100,101,102,103,104"});
     EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
     json j = output(r);
-    EXPECT_EQ(j["vars"], json({{"100", 1200.0}, {"101", -2.0}, {"102", 800.0}, {"103", 5.0}, {"104", nullptr}}))
+    EXPECT_EQ(j["vars"],
+              json({{"100", 1200.0}, {"101", -2.0}, {"102", 800.0}, {"103", 5.0}, {"104", nullptr}}))
         << r.out;
 }
 
@@ -80,13 +84,15 @@ TEST_F(CliTest, WithoutTheParameterG100IsRefusedAtItsLineAndColumn) {
     write("mould.nc", kMouldShop);
     ProcessResult check = sim({"check", "mould.nc", "--config", "shop"});
     EXPECT_EQ(check.exitStatus, kExitError);
-    EXPECT_NE(check.err.find("mould.nc:3:1: G100: not a G code this machine knows"), std::string::npos) << check.err;
+    EXPECT_NE(check.err.find("mould.nc:3:1: G100: not a G code this machine knows"), std::string::npos)
+        << check.err;
     ProcessResult r = sim({"run", "mould.nc", "--config", "shop"});
     EXPECT_EQ(r.exitStatus, kExitAlarm);
-    EXPECT_NE(r.err.find("mould.nc:3:1: alarm: G100: not a G code this machine knows"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("mould.nc:3:1: alarm: G100: not a G code this machine knows"), std::string::npos)
+        << r.err;
     // --param makes it a call for this run
-    ProcessResult set = sim({"run", "mould.nc", "--config", "shop", "--param", "6050=100", "--param", "6071=60",
-                             "--print", "100"});
+    ProcessResult set = sim({"run", "mould.nc", "--config", "shop", "--param", "6050=100", "--param",
+                             "6071=60", "--print", "100"});
     EXPECT_EQ(set.exitStatus, kExitOk) << set.err;
     EXPECT_EQ(output(set)["vars"].value("100", json()), 1200.0) << set.out;
 }
@@ -97,7 +103,8 @@ TEST_F(CliTest, InsideAMacroACodeCalledItsCallingCodesAreOrdinary) {
     write("nest.nc", "G100X1.\nM30\nO9010\nG100X2.\nM99\n");
     ProcessResult r = sim({"run", "nest.nc", "--config", "shop"});
     EXPECT_EQ(r.exitStatus, kExitAlarm);
-    EXPECT_NE(r.err.find("nest.nc:4:1: alarm: G100: not a G code this machine knows"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("nest.nc:4:1: alarm: G100: not a G code this machine knows"), std::string::npos)
+        << r.err;
 }
 
 TEST_F(CliTest, AParameterAndCodesCallingOneCodeAreALoadErrorNamingBoth) {
@@ -106,8 +113,9 @@ TEST_F(CliTest, AParameterAndCodesCallingOneCodeAreALoadErrorNamingBoth) {
     write("t.nc", "M30\n");
     ProcessResult r = sim({"run", "t.nc", "--config", "shop"});
     EXPECT_EQ(r.exitStatus, kExitError);
-    EXPECT_NE(r.err.find("shop/params.toml:3:8: parameter 6071 = 6 makes M6 call O9001, but [codes] M6 = 9001 (shop/"
-                         "machine.toml:4:1) already makes it call O9001: keep one of them"),
+    EXPECT_NE(r.err.find(
+                  "shop/params.toml:3:8: parameter 6071 = 6 makes M6 call O9001, but [codes] M6 = 9001 (shop/"
+                  "machine.toml:4:1) already makes it call O9001: keep one of them"),
               std::string::npos)
         << r.err;
     EXPECT_EQ(output(r)["alarm"].value("code", ""), "config_error");
@@ -157,8 +165,9 @@ TEST_F(CliTest, SingleBlockDoesNotStopInsideAMacroThatSets3003) {
     ProcessResult r = sim({"run", "probe.nc", "--dialect", "fanuc", "--single-block"});
     EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
     EXPECT_EQ(messagesOf(output(r)),
-              (std::vector<std::string>{"single block stop (probe.nc:1): START pressed (run without an operator)",
-                                        "single block stop (probe.nc:8): START pressed (run without an operator)"}));
+              (std::vector<std::string>{
+                  "single block stop (probe.nc:1): START pressed (run without an operator)",
+                  "single block stop (probe.nc:8): START pressed (run without an operator)"}));
 }
 
 TEST_F(CliTest, PauseIsHeldBackWhile3004SaysSo) {
@@ -167,12 +176,13 @@ TEST_F(CliTest, PauseIsHeldBackWhile3004SaysSo) {
     ProcessResult r = sim({"run", "probe.nc", "--dialect", "fanuc", "--pause-at", "2"});
     EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
     json j = output(r);
-    EXPECT_EQ(messagesOf(j), (std::vector<std::string>{
-                                 "PAUSE pressed at 2 s (probe.nc:4)",
-                                 "PAUSE held back: #3004 = 3 keeps feed hold off (probe.nc:4); the run holds where it "
-                                 "allows it again",
-                                 "PAUSE takes effect: #3004 allows feed hold again (probe.nc:6)",
-                                 "PAUSE: START pressed (run without an operator)"}))
+    EXPECT_EQ(messagesOf(j),
+              (std::vector<std::string>{
+                  "PAUSE pressed at 2 s (probe.nc:4)",
+                  "PAUSE held back: #3004 = 3 keeps feed hold off (probe.nc:4); the run holds where it "
+                  "allows it again",
+                  "PAUSE takes effect: #3004 allows feed hold again (probe.nc:6)",
+                  "PAUSE: START pressed (run without an operator)"}))
         << r.out;
     EXPECT_DOUBLE_EQ(j["machine"].value("X", 0.0), 55.0) << r.out;
     // without #3004 the same PAUSE holds in the move
@@ -185,9 +195,10 @@ TEST_F(CliTest, PauseIsHeldBackWhile3004SaysSo) {
 }
 
 TEST_F(CliTest, InterfaceSignalsAreTheMachineFoldersWiring) {
-    write("cell/machine.toml", std::string(kFanucMill) +
-                                   "[interface_signals]\nUI003 = \"IN05\"\nUI004 = \"IN06\"\nUO000 = \"OUT07\"\n"
-                                   "UO101 = \"OUT08\"\n");
+    write("cell/machine.toml",
+          std::string(kFanucMill) +
+              "[interface_signals]\nUI003 = \"IN05\"\nUI004 = \"IN06\"\nUO000 = \"OUT07\"\n"
+              "UO101 = \"OUT08\"\n");
     // the pallet changer's macro: wait for pallet clamped (UI003), then signal done (UO000, UO101)
     write("pallet.nc", "WHILE[#1003EQ0]DO1\nEND1\n#100=#1032\n#1100=1\n#1133=2\n#101=#1132\nM30\n");
     ProcessResult check = sim({"check", "pallet.nc", "--config", "cell"});
@@ -196,8 +207,8 @@ TEST_F(CliTest, InterfaceSignalsAreTheMachineFoldersWiring) {
                            "--print", "100,101,1003,1004,1100,1133"});
     EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
     json j = output(r);
-    EXPECT_EQ(j["vars"], json({{"100", 24.0}, {"101", 1.0}, {"1003", 1.0}, {"1004", 1.0}, {"1100", 1.0},
-                               {"1133", 2.0}}))
+    EXPECT_EQ(j["vars"],
+              json({{"100", 24.0}, {"101", 1.0}, {"1003", 1.0}, {"1004", 1.0}, {"1100", 1.0}, {"1133", 2.0}}))
         << r.out;
     EXPECT_EQ(j["outputs"][6], 1) << "OUT07 follows UO000";
     EXPECT_EQ(j["outputs"][7], 1) << "OUT08 follows UO101";
@@ -235,7 +246,8 @@ TEST_F(CliTest, ProgramsForOtherControlsAreRefusedWhereTheyStand) {
         ProcessResult haas = sim({"check", "haas.nc", "--config", config});
         EXPECT_EQ(haas.exitStatus, kExitError) << machine;
         EXPECT_NE(haas.err.find("haas.nc:3:1: G103: not a G code this machine knows"), std::string::npos)
-            << machine << "\n" << haas.err;
+            << machine << "\n"
+            << haas.err;
         EXPECT_NE(haas.err.find("haas.nc:4:1: #[10100]"), std::string::npos) << machine << "\n" << haas.err;
         ProcessResult run = sim({"run", "haas.nc", "--config", config});
         EXPECT_EQ(run.exitStatus, kExitAlarm) << machine;
@@ -245,12 +257,16 @@ TEST_F(CliTest, ProgramsForOtherControlsAreRefusedWhereTheyStand) {
         EXPECT_EQ(a.value("column", 0), 1) << machine;
         ProcessResult brother = sim({"check", "brother.nc", "--config", config});
         EXPECT_EQ(brother.exitStatus, kExitError) << machine;
-        EXPECT_NE(brother.err.find("brother.nc:4:1: G100: not a G code this machine knows"), std::string::npos)
-            << machine << "\n" << brother.err;
+        EXPECT_NE(brother.err.find("brother.nc:4:1: G100: not a G code this machine knows"),
+                  std::string::npos)
+            << machine << "\n"
+            << brother.err;
         ProcessResult changed = sim({"run", "brother.nc", "--config", config});
         EXPECT_EQ(changed.exitStatus, kExitAlarm) << machine;
-        EXPECT_NE(changed.err.find("brother.nc:4:1: alarm: G100: not a G code this machine knows"), std::string::npos)
-            << machine << "\n" << changed.err;
+        EXPECT_NE(changed.err.find("brother.nc:4:1: alarm: G100: not a G code this machine knows"),
+                  std::string::npos)
+            << machine << "\n"
+            << changed.err;
     }
     // the variable alone, past the G103 line
     write("vars.nc", "#10100=5.\nM30\n");
@@ -262,8 +278,8 @@ TEST_F(CliTest, ProgramsForOtherControlsAreRefusedWhereTheyStand) {
     EXPECT_NE(a.value("message", "").find("10100"), std::string::npos) << vars.out;
     // unless the owner makes G100 a macro call: then the Brother's T1 is its argument #20
     write("brother-macro.nc", "G100T1\nM30\nO9010\n#100=#20\nM99\n");
-    ProcessResult macro = sim({"run", "brother-macro.nc", "--config", machines + "/fanuc-0i", "--param", "6050=100",
-                               "--print", "100"});
+    ProcessResult macro = sim({"run", "brother-macro.nc", "--config", machines + "/fanuc-0i", "--param",
+                               "6050=100", "--print", "100"});
     EXPECT_EQ(macro.exitStatus, kExitOk) << macro.err;
     EXPECT_EQ(output(macro)["vars"].value("100", json()), 1.0) << macro.out;
 }

@@ -26,13 +26,14 @@ controller::RunSettings withParameters(std::map<int, double> parameters) {
 
 TEST(FanucCallParameters, AGCodeCallsItsMacroWithArgumentsAsG65Does) {
     // the mould shop's G100: every letter of argument specification I, M and T included
-    auto run = runFanuc(lines({"#1=99.", "G100A1.B2.C3.I4.J5.K6.D7.E8.F9.H11.M13.Q17.R18.S19.T20.U21.V22.W23.X24.Y25.Z26.",
-                               "#101=#1", "M30", "O9010", "#100=0", "#110=1", "WHILE[#110LE26]DO1",
-                               "IF[#[#110]EQ#0]GOTO5", "#100=#100+#[#110]", "N5#110=#110+1", "END1", "#1=-1.", "M99"}),
-                        withParameters({{6050, 100}}));
+    auto run = runFanuc(
+        lines({"#1=99.", "G100A1.B2.C3.I4.J5.K6.D7.E8.F9.H11.M13.Q17.R18.S19.T20.U21.V22.W23.X24.Y25.Z26.",
+               "#101=#1", "M30", "O9010", "#100=0", "#110=1", "WHILE[#110LE26]DO1", "IF[#[#110]EQ#0]GOTO5",
+               "#100=#100+#[#110]", "N5#110=#110+1", "END1", "#1=-1.", "M99"}),
+        withParameters({{6050, 100}}));
     EXPECT_RUN_OK(run);
-    EXPECT_DOUBLE_EQ(run.number(100), 1 + 2 + 3 + 4 + 5 + 6 + 7 + 8 + 9 + 11 + 13 + 17 + 18 + 19 + 20 + 21 + 22 +
-                                          23 + 24 + 25 + 26);
+    EXPECT_DOUBLE_EQ(run.number(100), 1 + 2 + 3 + 4 + 5 + 6 + 7 + 8 + 9 + 11 + 13 + 17 + 18 + 19 + 20 + 21 +
+                                          22 + 23 + 24 + 25 + 26);
     EXPECT_DOUBLE_EQ(run.number(101), 99) << "the macro's locals are a level of their own";
 }
 
@@ -53,9 +54,9 @@ TEST(FanucCallParameters, AnMCodeMacroGetsArguments) {
 
 TEST(FanucCallParameters, AnMCodeSubprogramRunsAfterTheBlockWithTheCallersLocals) {
     // the pallet changer's M61: the move of its block first, then O9003 with no arguments
-    auto run = runFanuc(lines({"#1=7.", "G90G00X12.M61", "M30", "O9003", "#100=#1", "#101=#5041", "#102=#24",
-                               "M99"}),
-                        withParameters({{6073, 61}}));
+    auto run = runFanuc(
+        lines({"#1=7.", "G90G00X12.M61", "M30", "O9003", "#100=#1", "#101=#5041", "#102=#24", "M99"}),
+        withParameters({{6073, 61}}));
     EXPECT_RUN_OK(run);
     EXPECT_DOUBLE_EQ(run.number(100), 7) << "no new level of locals";
     EXPECT_DOUBLE_EQ(run.number(101), 12) << "the block's move came first";
@@ -63,8 +64,8 @@ TEST(FanucCallParameters, AnMCodeSubprogramRunsAfterTheBlockWithTheCallersLocals
 }
 
 TEST(FanucCallParameters, AnAddressCallsItsSubprogramWithItsValueInACommonVariable) {
-    auto run = runFanuc(lines({"G90G00X5.B100.", "G00Y2.D3.", "M30", "O9004", "#100=#146", "#101=#5041", "M99",
-                               "O9005", "#102=#147", "#103=#5042", "M99"}),
+    auto run = runFanuc(lines({"G90G00X5.B100.", "G00Y2.D3.", "M30", "O9004", "#100=#146", "#101=#5041",
+                               "M99", "O9005", "#102=#147", "#103=#5042", "M99"}),
                         withParameters({{6090, 66}, {6091, 68}}));
     EXPECT_RUN_OK(run);
     EXPECT_DOUBLE_EQ(run.number(100), 100);
@@ -98,13 +99,15 @@ TEST(FanucCallParameters, InsideAProgramACodeCalledItsCodesAreOrdinary) {
 TEST(FanucCallParameters, WithoutTheParameterG100IsRefusedAtItsLineAndColumn) {
     auto run = runFanuc(lines({"G00X1.", "G100T1", "M30"}));
     ASSERT_EQ(run.report.status, controller::RunStatus::Alarm);
-    EXPECT_EQ(run.alarmText(), "invalid_word at " + run.fileName + ":2:1: G100: not a G code this machine knows");
+    EXPECT_EQ(run.alarmText(),
+              "invalid_word at " + run.fileName + ":2:1: G100: not a G code this machine knows");
 }
 
 TEST(FanucCallParameters, HaasCodesAndVariablesAreRefusedAtTheirLineAndColumn) {
     auto g103 = runFanuc(lines({"G00X1.", "G103P1", "M30"}));
     ASSERT_EQ(g103.report.status, controller::RunStatus::Alarm);
-    EXPECT_EQ(g103.alarmText(), "invalid_word at " + g103.fileName + ":2:1: G103: not a G code this machine knows");
+    EXPECT_EQ(g103.alarmText(),
+              "invalid_word at " + g103.fileName + ":2:1: G103: not a G code this machine knows");
     auto common = runFanuc(lines({"#1=2.", "#10000=#1", "M30"}));
     ASSERT_EQ(common.report.status, controller::RunStatus::Alarm);
     EXPECT_EQ(common.report.alarm->line, 2u);
@@ -118,12 +121,14 @@ TEST(FanucCallParameters, ASettingThatIsNoCodeIsRefused) {
         double value;
         const char* message;
     };
-    for (Case c : {Case{6050, 100.5, "parameter 6050 = 100.5: a code number is a whole number"},
-                   Case{6050, 65, "parameter 6050 = 65: G65 cannot call a program (the controller itself needs it)"},
-                   Case{6080, 98, "parameter 6080 = 98: M98 cannot call a program (the controller itself needs it)"},
-                   Case{6071, 30, "parameter 6071 = 30: M30 cannot call a program (the controller itself needs it)"},
-                   Case{6090, 77, "parameter 6090 = 77: an address that calls O9004 is the ASCII code of one of "
-                                  "A B D F H I J K Q R S T (65 A, 66 B, ...)"}}) {
+    for (Case c :
+         {Case{6050, 100.5, "parameter 6050 = 100.5: a code number is a whole number"},
+          Case{6050, 65, "parameter 6050 = 65: G65 cannot call a program (the controller itself needs it)"},
+          Case{6080, 98, "parameter 6080 = 98: M98 cannot call a program (the controller itself needs it)"},
+          Case{6071, 30, "parameter 6071 = 30: M30 cannot call a program (the controller itself needs it)"},
+          Case{6090, 77,
+               "parameter 6090 = 77: an address that calls O9004 is the ASCII code of one of "
+               "A B D F H I J K Q R S T (65 A, 66 B, ...)"}}) {
         macro::CallCodes table;
         auto refused = config::addCallParameters(table, {{c.number, c.value}}, {});
         ASSERT_TRUE(refused.has_value()) << c.number << " = " << c.value;
@@ -135,11 +140,13 @@ TEST(FanucCallParameters, ASettingThatIsNoCodeIsRefused) {
 
 TEST(FanucCallParameters, TwoSettingsForOneCodeAreRefusedNamingBoth) {
     macro::CallCodes table;
-    ASSERT_FALSE(table.add('M', 6, {9001, macro::CallKind::Subprogram, 0, "[codes] M6 = 9001 (machine.toml:13:1)"}));
+    ASSERT_FALSE(
+        table.add('M', 6, {9001, macro::CallKind::Subprogram, 0, "[codes] M6 = 9001 (machine.toml:13:1)"}));
     auto refused = config::addCallParameters(table, {{6071, 6}}, {{6071, "params.toml:5:8"}});
     ASSERT_TRUE(refused.has_value());
-    EXPECT_EQ(refused->message, "parameter 6071 = 6 makes M6 call O9001, but [codes] M6 = 9001 (machine.toml:13:1) "
-                                "already makes it call O9001: keep one of them");
+    EXPECT_EQ(refused->message,
+              "parameter 6071 = 6 makes M6 call O9001, but [codes] M6 = 9001 (machine.toml:13:1) "
+              "already makes it call O9001: keep one of them");
     macro::CallCodes two;
     refused = config::addCallParameters(two, {{6050, 100}, {6052, 100}}, {{6050, "params.toml:2:8"}});
     ASSERT_TRUE(refused.has_value());
@@ -159,10 +166,11 @@ TEST(FanucCallParameters, ACallParameterIsSimulatedAndNoLongerWarned) {
 }
 
 class CallParameterFolder : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
-        folder_ = std::filesystem::path(testing::TempDir()) /
-                  ("m350-callparams-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+        folder_ =
+            std::filesystem::path(testing::TempDir()) /
+            ("m350-callparams-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
         std::filesystem::remove_all(folder_);
         std::filesystem::create_directories(folder_);
     }
@@ -197,8 +205,9 @@ TEST_F(CallParameterFolder, AClashWithCodesIsALoadErrorAtTheParameter) {
     ASSERT_NE(error, nullptr);
     EXPECT_EQ(error->where(), (folder_ / "params.toml").string() + ":3:8");
     EXPECT_EQ(error->message, "parameter 6071 = 6 makes M6 call O9001, but [codes] M6 = 9001 (" +
-                                  (folder_ / "machine.toml").string() + ":4:1) already makes it call O9001: keep one "
-                                                                        "of them");
+                                  (folder_ / "machine.toml").string() +
+                                  ":4:1) already makes it call O9001: keep one "
+                                  "of them");
 }
 
 } // namespace

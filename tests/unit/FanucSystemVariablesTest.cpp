@@ -40,17 +40,17 @@ controller::RunSettings withInputs(std::map<int, int> levels, std::optional<int>
 }
 
 std::size_t countMessages(const controller::RunReport& report, const std::string& part) {
-    return static_cast<std::size_t>(std::count_if(report.messages.begin(), report.messages.end(), [&](const std::string& m) {
-        return m.find(part) != std::string::npos;
-    }));
+    return static_cast<std::size_t>(
+        std::count_if(report.messages.begin(), report.messages.end(),
+                      [&](const std::string& m) { return m.find(part) != std::string::npos; }));
 }
 
 // --- interface signals ------------------------------------------------------------------------
 
 TEST(InterfaceSignals, InputsReadTheWiredSignalsOneByOneAndAllAtOnce) {
-    auto run = runProgram(wiredMill(), lines({"T3", "#100=#1000", "#101=#1001", "#102=#1002", "#103=#1003",
-                                              "#104=#1015", "#105=#1004", "#106=#1032", "T0", "#107=#1002",
-                                              "M30"}),
+    auto run = runProgram(wiredMill(),
+                          lines({"T3", "#100=#1000", "#101=#1001", "#102=#1002", "#103=#1003", "#104=#1015",
+                                 "#105=#1004", "#106=#1032", "T0", "#107=#1002", "M30"}),
                           withInputs({{5, 1}, {6, 1}}, 3));
     EXPECT_RUN_OK(run);
     EXPECT_EQ(run.number(100), 1) << "T3 is in the spindle";
@@ -94,10 +94,11 @@ TEST(InterfaceSignals, AValueAnOutputCannotTakeIsRefused) {
         const char* line;
         const char* message;
     };
-    for (Case c : {Case{"#1100=2", "#1100 = 2: an interface output is 0 or 1"},
-                   Case{"#1132=65536", "#1132 = 65536: it takes a whole number from 0 to 65535"},
-                   Case{"#1132=1.5", "#1132 = 1.5: it takes a whole number from 0 to 65535"},
-                   Case{"#1133=100000000", "#1133 = 100000000: it takes a whole number from -99999999 to 99999999"}}) {
+    for (Case c :
+         {Case{"#1100=2", "#1100 = 2: an interface output is 0 or 1"},
+          Case{"#1132=65536", "#1132 = 65536: it takes a whole number from 0 to 65535"},
+          Case{"#1132=1.5", "#1132 = 1.5: it takes a whole number from 0 to 65535"},
+          Case{"#1133=100000000", "#1133 = 100000000: it takes a whole number from -99999999 to 99999999"}}) {
         auto run = runProgram(wiredMill(), lines({c.line, "M30"}));
         ASSERT_EQ(run.report.status, controller::RunStatus::Alarm) << c.line;
         EXPECT_EQ(run.report.alarm->code, AlarmCode::InvalidArgument);
@@ -118,25 +119,30 @@ TEST(InterfaceSignals, AnUnwiredMachineReadsZeroAndKeepsItsOutputs) {
 }
 
 class InterfaceSignalsFolder : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
-        folder_ = std::filesystem::path(testing::TempDir()) /
-                  ("m350-signals-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+        folder_ =
+            std::filesystem::path(testing::TempDir()) /
+            ("m350-signals-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
         std::filesystem::remove_all(folder_);
         std::filesystem::create_directories(folder_);
     }
     void TearDown() override { std::filesystem::remove_all(folder_); }
-    std::variant<config::MachineConfig, config::ConfigError> load(const std::string& dialect, const std::string& table) {
-        std::ofstream(folder_ / "machine.toml") << "name = \"t\"\ndialect = \"" << dialect << "\"\n[interface_signals]\n"
-                                                << table;
+    std::variant<config::MachineConfig, config::ConfigError> load(const std::string& dialect,
+                                                                  const std::string& table) {
+        std::ofstream(folder_ / "machine.toml")
+            << "name = \"t\"\ndialect = \"" << dialect << "\"\n[interface_signals]\n"
+            << table;
         return config::loadMachineFolder(folder_.string());
     }
     std::filesystem::path folder_;
 };
 
 TEST_F(InterfaceSignalsFolder, MachineTomlWiresThem) {
-    auto loaded = load("fanuc", "UI003 = \"IN05\"\nUI001 = \"spindle_empty\"\nUO000 = \"OUT07\"\nUO131 = \"OUT21\"\n");
-    ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(loaded)) << std::get<config::ConfigError>(loaded).message;
+    auto loaded =
+        load("fanuc", "UI003 = \"IN05\"\nUI001 = \"spindle_empty\"\nUO000 = \"OUT07\"\nUO131 = \"OUT21\"\n");
+    ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(loaded))
+        << std::get<config::ConfigError>(loaded).message;
     const config::InterfaceSignals& s = std::get<config::MachineConfig>(loaded).interfaceSignals;
     EXPECT_EQ(s.inputs[3].source, Source::Input);
     EXPECT_EQ(s.inputs[3].pin, 5);
@@ -151,19 +157,26 @@ TEST_F(InterfaceSignalsFolder, WhatCannotBeWiredIsALoadErrorAtItsPlace) {
         const char* where;
         const char* message;
     };
-    for (Case c : {Case{"UI016 = \"IN05\"\n", ":4:1", "[interface_signals] UI016: the interface inputs run from UI000 to "
-                                                     "UI015 (#1000-#1015)"},
-                   Case{"UI000 = \"IN25\"\n", ":4:9", "[interface_signals] UI000 = \"IN25\": an input is IN01-IN24, "
-                                                     "\"commanded_tool_in_spindle\", \"spindle_empty\" or \"t0_commanded\""},
-                   Case{"UO016 = \"OUT01\"\n", ":4:1", "[interface_signals] UO016: the interface signals are UI000-UI015 "
-                                                      "(or UI for all of them), UO000-UO015 and UO100-UO131"},
-                   Case{"UO100 = \"IN01\"\n", ":4:9", "[interface_signals] UO100 = \"IN01\": an interface output drives "
-                                                     "OUT01-OUT21"},
-                   Case{"UI = \"spindle_load\"\nUI000 = \"IN01\"\n", ":4:6",
-                        "[interface_signals] UI gives all sixteen inputs the spindle load: UI000-UI015 cannot be wired "
-                        "too"},
-                   Case{"UI000 = 5\n", ":4:9", "[interface_signals] UI000 must be a signal's name in quotes, such as "
-                                               "\"IN05\" or \"OUT07\""}}) {
+    for (Case c :
+         {Case{"UI016 = \"IN05\"\n", ":4:1",
+               "[interface_signals] UI016: the interface inputs run from UI000 to "
+               "UI015 (#1000-#1015)"},
+          Case{"UI000 = \"IN25\"\n", ":4:9",
+               "[interface_signals] UI000 = \"IN25\": an input is IN01-IN24, "
+               "\"commanded_tool_in_spindle\", \"spindle_empty\" or \"t0_commanded\""},
+          Case{"UO016 = \"OUT01\"\n", ":4:1",
+               "[interface_signals] UO016: the interface signals are UI000-UI015 "
+               "(or UI for all of them), UO000-UO015 and UO100-UO131"},
+          Case{"UO100 = \"IN01\"\n", ":4:9",
+               "[interface_signals] UO100 = \"IN01\": an interface output drives "
+               "OUT01-OUT21"},
+          Case{
+              "UI = \"spindle_load\"\nUI000 = \"IN01\"\n", ":4:6",
+              "[interface_signals] UI gives all sixteen inputs the spindle load: UI000-UI015 cannot be wired "
+              "too"},
+          Case{"UI000 = 5\n", ":4:9",
+               "[interface_signals] UI000 must be a signal's name in quotes, such as "
+               "\"IN05\" or \"OUT07\""}}) {
         auto loaded = load("fanuc", c.table);
         const auto* error = std::get_if<config::ConfigError>(&loaded);
         ASSERT_NE(error, nullptr) << c.table;
@@ -177,8 +190,9 @@ TEST_F(InterfaceSignalsFolder, AnM350MachineIgnoresThemWithAWarning) {
     ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(loaded));
     const auto& warnings = std::get<config::MachineConfig>(loaded).warnings;
     ASSERT_EQ(warnings.size(), 1u);
-    EXPECT_NE(warnings[0].find("[interface_signals] are a FANUC's (#1000-#1133): this M350 machine ignores them"),
-              std::string::npos)
+    EXPECT_NE(
+        warnings[0].find("[interface_signals] are a FANUC's (#1000-#1133): this M350 machine ignores them"),
+        std::string::npos)
         << warnings[0];
 }
 
@@ -191,12 +205,14 @@ TEST(OperationControl, ValuesAreReadBackAndOutOfRangeOnesRefused) {
     EXPECT_EQ(run.number(101), 7);
     auto wrong = runFanuc(lines({"#3004=8", "M30"}));
     ASSERT_EQ(wrong.report.status, controller::RunStatus::Alarm);
-    EXPECT_EQ(wrong.report.alarm->message,
-              "#3004 = 8: it takes 0 to 7 (bit 0 no feed hold, bit 1 no feed override, bit 2 no exact stop check)");
+    EXPECT_EQ(
+        wrong.report.alarm->message,
+        "#3004 = 8: it takes 0 to 7 (bit 0 no feed hold, bit 1 no feed override, bit 2 no exact stop check)");
     auto half = runFanuc(lines({"#3003=0.5", "M30"}));
     ASSERT_EQ(half.report.status, controller::RunStatus::Alarm);
-    EXPECT_EQ(half.report.alarm->message,
-              "#3003 = 0.5: it takes 0 to 3 (bit 0 no single block stop, bit 1 no wait for M, S, T completion)");
+    EXPECT_EQ(
+        half.report.alarm->message,
+        "#3003 = 0.5: it takes 0 to 3 (bit 0 no single block stop, bit 1 no wait for M, S, T completion)");
 }
 
 TEST(OperationControl, FeedOverrideIsIgnoredWhileBit1OfThe3004IsOn) {
@@ -250,8 +266,8 @@ TEST(OperationControl, WithoutTheBitPauseHoldsAtOnce) {
 TEST(OperationControl, SingleBlockDoesNotStopWhileBit0OfThe3003IsOn) {
     controller::RunSettings settings;
     settings.singleBlock = true;
-    auto run = runFanuc(lines({"G91G1X1.F600", "G1X1.", "#3003=1", "G1X1.", "G1X1.", "#3003=0", "G1X1.", "M30"}),
-                        settings);
+    auto run = runFanuc(
+        lines({"G91G1X1.F600", "G1X1.", "#3003=1", "G1X1.", "G1X1.", "#3003=0", "G1X1.", "M30"}), settings);
     EXPECT_RUN_OK(run);
     EXPECT_EQ(countMessages(run.report, "single block stop"), 3u) << "after lines 1, 2 and 7 only";
     EXPECT_EQ(countMessages(run.report, ":7): START pressed"), 1u);
