@@ -117,4 +117,14 @@ std::optional<CallParameterError> rebuildCallCodes(MachineConfig& config) {
     return std::nullopt;
 }
 
+gcode::Dialect parsingDialect(const MachineConfig& config) {
+    gcode::Dialect dialect = *config.dialect;
+    for (const auto& [code, call] : config.callCodes.codes()) {
+        if (call.kind == macro::CallKind::Macro) {
+            dialect.argumentCodes.push_back(code);
+        }
+    }
+    return dialect;
+}
+
 } // namespace m350::config

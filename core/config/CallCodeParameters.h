@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/gcode/Dialect.h"
 #include "core/macro/CallCodes.h"
 
 #include <cstddef>
@@ -31,5 +32,9 @@ struct MachineConfig;
 // config.callCodes made again from config.codeCalls ([codes]) and, on a FANUC machine, its call
 // parameters: at load and after --param changed one. On a refusal callCodes stays as it was.
 std::optional<CallParameterError> rebuildCallCodes(MachineConfig& config);
+
+// The machine's dialect as its programs are parsed: the codes that call macros pass arguments as
+// G65 does, so in their blocks `X1.E2.` is X and the argument E (gcode::Dialect::argumentCodes).
+gcode::Dialect parsingDialect(const MachineConfig& config);
 
 } // namespace m350::config

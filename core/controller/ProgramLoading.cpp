@@ -1,6 +1,7 @@
 // Loading what runs: a program file, MDI lines or a hook, parsed with the machine's libraries,
 // and the executor that runs it.
 #include "core/controller/Controller.h"
+#include "core/config/CallCodeParameters.h"
 
 #include "core/gcode/Parser.h"
 #include "core/gcode/SourceText.h"
@@ -36,13 +37,7 @@ bool Controller::load(const gcode::SourceText& source, gcode::FileRole role) {
 // libraries: what a run of that file needs.
 void Controller::parseWithLibraries(gcode::Program& program, const gcode::SourceText& source, gcode::FileRole role,
                                     std::vector<gcode::Diagnostic>& diagnostics) const {
-    // The machine's macro-call codes pass arguments as G65 does: in their blocks E is an argument.
-    gcode::Dialect dialect = *config_.dialect;
-    for (const auto& [code, call] : config_.callCodes.codes()) {
-        if (call.kind == macro::CallKind::Macro) {
-            dialect.argumentCodes.push_back(code);
-        }
-    }
+    const gcode::Dialect dialect = config::parsingDialect(config_);
     gcode::Parser parser(dialect);
     parser.setDropChunksAbove(static_cast<std::size_t>(settings_.programKeptWholeUpTo));
     parser.addSource(program, source, role);

@@ -79,6 +79,21 @@ TEST_F(CliTest, GCodesAndMCodesCallTheirProgramsOnceTheParametersSaySo) {
         << r.out;
 }
 
+TEST_F(CliTest, AMacroCallCodesEAfterANumberIsItsArgument) {
+    write("shop/machine.toml", kFanucMill);
+    write("shop/params.toml", "[params]\n6050 = 100\n");
+    write("e.nc", "G100X1.E2.\nM30\nO9010\n#100=#8\nM99\n");
+    ProcessResult check = sim({"check", "e.nc", "--config", "shop"});
+    EXPECT_EQ(check.exitStatus, kExitOk) << check.err;
+    ProcessResult r = sim({"run", "e.nc", "--config", "shop", "--print", "100"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_EQ(output(r)["vars"].value("100", json()), 2.0) << r.out;
+    // without the call the same line is an exponent
+    ProcessResult plain = sim({"check", "e.nc", "--dialect", "fanuc"});
+    EXPECT_EQ(plain.exitStatus, kExitError);
+    EXPECT_NE(plain.err.find("e.nc:1:6: '1.E2.' is not a G-code number"), std::string::npos) << plain.err;
+}
+
 TEST_F(CliTest, WithoutTheParameterG100IsRefusedAtItsLineAndColumn) {
     write("shop/machine.toml", kFanucMill);
     write("mould.nc", kMouldShop);
