@@ -149,6 +149,13 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
             ->check(nonEmptyPath);
         cmd->add_option("--max-sim-time", o.settings.maxSimTime, "simulated seconds before a runaway stops")
             ->check(positiveFinite);
+        cmd->add_flag("--single-block", o.settings.singleBlock,
+                      "single block: hold after each block that reaches the machine, START pressed at once "
+                      "(FANUC #3003 bit 0 suppresses it)");
+        cmd->add_option("--pause-at", o.settings.pauseAt,
+                        "press PAUSE (feed hold) when the run has gone S simulated seconds, START once the "
+                        "machine stands (FANUC #3004 bit 0 holds it back)")
+            ->check(positiveFinite);
         cmd->add_option("--sensor-timeout", o.settings.sensorTimeout,
                         "simulated seconds a macro may wait for a sensor input before an alarm (default 10)")
             ->check(positiveFinite);

@@ -10,6 +10,7 @@
 #include "app/sim/SpindleLoadJson.h"
 
 #include "core/check/StaticCheck.h"
+#include "core/config/CallCodeParameters.h"
 #include "core/params/FanucParameters.h"
 #include "core/files/OutputFile.h"
 #include "core/config/MachineConfig.h"
@@ -82,7 +83,7 @@ int check(controller::Controller& controller, const sim::SimOptions& o) {
     if (!gcode::hasBlockingError(diagnostics)) {
         const config::MachineConfig machine = controller.config();
         std::vector<gcode::Diagnostic> findings =
-            check::StaticCheck(controller.program(), *machine.dialect, machine.codePrograms).findings();
+            check::StaticCheck(controller.program(), *machine.dialect, machine.callCodes).findings();
         diagnostics.insert(diagnostics.end(), findings.begin(), findings.end());
     }
     return checkResult(diagnostics);
@@ -189,6 +190,21 @@ int runCommand(int argc, char** argv) {
                           << machineConfig.name << "); 1000-99999 are FANUC parameters\n";
                 return 64;
             }
+        }
+    }
+    if (machineConfig.dialect->id == gcode::DialectId::Fanuc) {
+        // --param may make a code call a program (6050-6091): a clash is said before the run
+        bool fanucParameters = false;
+        for (const auto& [number, value] : o.settings.parameters) {
+            if (params::isFanucParameterNumber(number)) {
+                machineConfig.fanucParameters[number] = value;
+                machineConfig.fanucParameterOrigins[number] = "--param " + std::to_string(number);
+                fanucParameters = true;
+            }
+        }
+        if (auto refused = fanucParameters ? config::rebuildCallCodes(machineConfig) : std::nullopt) {
+            std::cerr << "m350-sim: --param " << refused->parameter << ": " << refused->message << '\n';
+            return 64;
         }
     }
     if (auto error = sim::useToolTableFile(o, machineConfig)) {

@@ -52,9 +52,9 @@ public:
 
 class ProgramCheck {
 public:
-    ProgramCheck(const gcode::Program& program, const gcode::Dialect& dialect, const StaticCheck::CodePrograms& codePrograms,
+    ProgramCheck(const gcode::Program& program, const gcode::Dialect& dialect, const macro::CallCodes& callCodes,
                  macro::Evaluator& evaluator, const macro::VariableMap& variables, std::vector<gcode::Diagnostic>& out)
-        : program_(program), dialect_(dialect), codePrograms_(codePrograms), evaluator_(evaluator),
+        : program_(program), dialect_(dialect), callCodes_(callCodes), evaluator_(evaluator),
           variables_(variables), out_(out) {}
 
     void block(const Block& b) {
@@ -232,7 +232,7 @@ private:
             return true;
         }
         const int code = roundToInt(w.number);
-        if (codePrograms_.count({w.letter, code}) != 0 || isWord(w, 'G', 65) ||
+        if (callCodes_.find(w.letter, code) != nullptr || isWord(w, 'G', 65) ||
             isWord(w, 'M', 98) || isWord(w, 'M', 99) || isWord(w, 'G', 10) || isWord(w, 'G', 11)) {
             return true; // G10/G11: FANUC tool life entry takes its own words
         }
@@ -243,7 +243,7 @@ private:
 
     void words(const Block& b) {
         for (const Word& w : b.words) {
-            if ((w.letter == 'G' || w.letter == 'M') && mayCall(w)) {
+            if (((w.letter == 'G' || w.letter == 'M') && mayCall(w)) || callCodes_.address(w.letter) != nullptr) {
                 return;
             }
         }
@@ -273,7 +273,7 @@ private:
 
     const gcode::Program& program_;
     const gcode::Dialect& dialect_;
-    const StaticCheck::CodePrograms& codePrograms_;
+    const macro::CallCodes& callCodes_;
     macro::Evaluator& evaluator_;
     const macro::VariableMap& variables_;
     std::vector<gcode::Diagnostic>& out_;
@@ -288,7 +288,7 @@ std::vector<gcode::Diagnostic> StaticCheck::findings() const {
     macro::VariableStore variables(dialect_, parameters);
     NoMachine machine;
     macro::Evaluator evaluator(program_.expressions, dialect_, variables, machine);
-    ProgramCheck check(program_, dialect_, codePrograms_, evaluator, variables.map(), findings);
+    ProgramCheck check(program_, dialect_, callCodes_, evaluator, variables.map(), findings);
     gcode::DiagnosticCap cap; // a million lines of `#1=1/0` list the first and the last findings
     for (const gcode::ProgramUnit& unit : program_.units) {
         if (!check.checked(unit)) {

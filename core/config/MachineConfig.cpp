@@ -3,6 +3,7 @@
 #include "core/common/Numeric.h"
 
 #include "core/params/FanucParameters.h"
+#include "core/config/CallCodeParameters.h"
 #include "core/config/HookFiles.h"
 #include "core/config/MachineFolder.h"
 #include "core/files/LastGoodCopy.h"
@@ -26,6 +27,11 @@ namespace fs = std::filesystem;
 namespace {
 
 using namespace toml_reading;
+
+// "file:line:col", where a setting stands, for messages that name it.
+std::string placeOf(const fs::path& file, const toml::source_region& where) {
+    return file.string() + ":" + std::to_string(where.begin.line) + ":" + std::to_string(where.begin.column);
+}
 
 // slibuser.nc, the user's G-code handlers (O9100-O9199 = G100-G199), is loaded beside slib-g.nc
 // as the M350 does, whether or not machine.toml lists it.
@@ -118,7 +124,8 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                      "stock", "stock.top", "stock.x", "stock.y", "spindle_load",
                      "spindle_load.idle", "spindle_load.per_krpm", "spindle_load.per_cm3", "spindle_load.spike_factor",
                      "spindle_load.spike_ms", "reference_points", "reference_points.*", "tool_data",
-                     "tool_data.offset_memory", "tool_data.random_changer"},
+                     "tool_data.offset_memory", "tool_data.random_changer", "interface_signals",
+                     "interface_signals.*"},
                     config.warnings);
     config.name = t["name"].value_or(folder.filename().string());
     std::string dialect = t["dialect"].value_or(std::string("m350"));
@@ -170,7 +177,12 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                 fail(file, "[codes] key '" + std::string(k) + "' must be an M or G code such as M6");
             }
             int code = numberKey(file, k.substr(1), key.source(), 0, 9999, "code");
-            config.codePrograms[{k[0], code}] = roundToInt(numberValue(file, value, k));
+            const int program = roundToInt(numberValue(file, value, k));
+            const std::string origin = "[codes] " + std::string(k) + " = " + std::to_string(program) + " (" +
+                                       placeOf(file, key.source()) + ")";
+            if (config.codeCalls.add(k[0], code, {program, macro::CallKind::Subprogram, 0, origin})) {
+                fail(file, "[codes] names " + std::string(1, k[0]) + std::to_string(code) + " twice", key.source());
+            }
         }
     }
     if (auto links = t["io_links"].as_array()) {
@@ -224,6 +236,13 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     readNumberedTools(file, t, config);
     readToolData(file, t, config);
     readSpindleLoadWorld(file, t, config.spindleLoad);
+    if (config.dialect->id == gcode::DialectId::Fanuc) {
+        readInterfaceSignals(file, t, config.interfaceSignals);
+    } else if (const toml::node* signals = t.get("interface_signals")) {
+        config.warnings.push_back(warningAt(file, signals->source(),
+                                            "[interface_signals] are a FANUC's (#1000-#1133): this M350 machine "
+                                            "ignores them"));
+    }
     if (auto points = t["reference_points"].as_table()) {
         for (auto&& [key, value] : *points) {
             int number = numberKey(file, key.str(), key.source(), 1, 4, "reference point");
@@ -243,6 +262,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
 void loadParams(const fs::path& folder, MachineConfig& config) {
     fs::path file = folder / MachineFolder::fileName(FolderFile::Params);
     if (!fs::exists(file)) {
+        rebuildCallCodes(config); // [codes] alone: nothing to clash with
         return;
     }
     toml::table t = parseToml(file);
@@ -262,6 +282,7 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
                     config.warnings.push_back(warningAt(file, value.source(), *unread));
                 }
                 config.fanucParameters[n] = v;
+                config.fanucParameterOrigins[n] = placeOf(file, value.source());
                 continue;
             }
             if (auto refused = params::refusedParameterValue(n, v)) {
@@ -276,6 +297,10 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
             }
             config.parameters.set(n, v);
         }
+    }
+    if (auto refused = rebuildCallCodes(config)) {
+        const toml::node* setting = t["params"].as_table()->get(std::to_string(refused->parameter));
+        fail(file, refused->message, setting ? setting->source() : toml::source_region{});
     }
 }
 

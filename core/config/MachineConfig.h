@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/config/InterfaceSignals.h"
 #include "core/config/MagazineConfig.h"
 #include "core/config/ModbusSlaves.h"
 #include "core/params/ParameterTable.h"
@@ -7,6 +8,7 @@
 #include "core/gcode/Program.h"
 #include "core/machine/SimulatedMachine.h"
 #include "core/machine/SpindleLoadModel.h"
+#include "core/macro/CallCodes.h"
 #include "core/tools/SpindleLoadLimits.h"
 #include "core/tools/ToolData.h"
 #include "core/tools/ToolTable.h"
@@ -30,7 +32,7 @@ struct LibraryFile {
 // A machine folder, as loaded: which dialect it speaks, its macro libraries, its parameters and
 // offsets, and the wiring of its IO. Files:
 //   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine], [reference_points], [homing],
-//                  [tool_setter], [floating_setter], [tools], [tool_data]
+//                  [tool_setter], [floating_setter], [tools], [tool_data], [interface_signals]
 //   params.toml    [params] N = value (parameters 0-999; the rest stay 0; FANUC machines also 1000-99999)
 //   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
@@ -46,10 +48,14 @@ struct MachineConfig {
     std::string name;
     const gcode::Dialect* dialect = &gcode::Dialect::m350();
     std::vector<LibraryFile> libraries;
-    std::map<std::pair<char, int>, int> codePrograms;
+    macro::CallCodes codeCalls; // machine.toml's [codes]: M6 = 9001 (a subprogram call)
+    // The codes that call programs, as runs use them: [codes] and a FANUC's parameters 6050-6091
+    // (CallCodeParameters.h, rebuildCallCodes)
+    macro::CallCodes callCodes;
     std::vector<machine::IoLink> ioLinks;
     params::ParameterTable parameters;
     std::map<int, double> fanucParameters; // FANUC machines' parameters 1000-99999 (FanucParameters.h)
+    std::map<int, std::string> fanucParameterOrigins; // where each was set, for messages: "params.toml:4:8"
     std::array<std::array<double, 5>, 9> offsets{}; // slots as interp::WorkOffsets numbers them
     std::map<int, double> variables;
     int magazineCapacity = 0; // machines whose capacity is not a parameter (FANUC)
@@ -59,6 +65,7 @@ struct MachineConfig {
     // switch ([homing] switch_distance = [X, Y, Z, A, B]); no parameter says this.
     std::array<double, 5> homeSwitchDistance{100.0, 100.0, 50.0, 30.0, 30.0};
     MagazineConfig magazine; // [magazine]: the device beside the machine, if any
+    InterfaceSignals interfaceSignals; // [interface_signals]: a FANUC's #1000-#1015, #1032, #1100-#1133
     // The fixed tool setter's top ([tool_setter] top: spindle-nose machine Z at contact with a
     // zero-length tool) and reach; the tools' true lengths ([tools] length = [T1, T2, ...], mm).
     double setterTop = -100.0;

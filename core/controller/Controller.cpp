@@ -1,4 +1,5 @@
 #include "core/controller/Controller.h"
+#include "core/config/CallCodeParameters.h"
 #include "core/params/FanucParameters.h"
 
 #include "core/params/IoPorts.h"
@@ -10,6 +11,7 @@
 #include "core/macro/MacroError.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -17,6 +19,15 @@
 
 namespace m350::controller {
 
+namespace {
+
+std::string shortSeconds(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", seconds);
+    return text;
+}
+
+} // namespace
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)),
@@ -30,7 +41,18 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
                config_.modbus, settings_.externalOutputLimit),
       toolLife_(config_.toolLife, state_, executor_, *config_.dialect, scan_), breakage_(machine_, magazine_),
       toolEdits_({tools_, state_, [this] { return manual_.jogging(); }, config_, interp_, machine_, magazine_}),
-      panel_(newOperatorPanel()) {
+      panel_(newOperatorPanel()),
+      interfacePmc_({config_.interfaceSignals, scan_,
+                     [this](int pin) {
+                         const int level = machine_.input(pin);
+                         panel_.readInput(pin, level);
+                         return level;
+                     },
+                     [this] { return interp_.state().selectedTool; }, [this] { return fanucSpindleTool_; },
+                     [this] { return breakage_.spindleLoad().reg(); },
+                     [this] { return toolLife_.manager().toolChangeSignal(); },
+                     [this] { return toolLife_.manager().newToolSignal(); }}),
+      singleBlock_(settings_.singleBlock) {
     tools_.setOffsetMemory(config_.offsetMemory);
     if (config_.dialect->id == gcode::DialectId::Fanuc && !config_.toolTableFile.empty()) {
         tools_.setSourceFile(config_.toolTableFile);
@@ -152,11 +174,20 @@ void Controller::configureMachine() {
 }
 
 void Controller::applyParameterOverrides() {
+    bool fanuc = false;
     for (auto [number, value] : settings_.parameters) {
         if (params::isFanucParameterNumber(number)) {
             config_.fanucParameters[number] = value;
+            config_.fanucParameterOrigins[number] = "--param " + std::to_string(number);
+            fanuc = true;
         } else if (params::ParameterTable::valid(number)) {
             config_.parameters.set(number, value);
+        }
+    }
+    if (fanuc) {
+        // m350-sim refuses such a clash before it builds a controller; here the folder's table stays
+        if (auto refused = config::rebuildCallCodes(config_)) {
+            status_.postMessage(refused->message + " (the machine's call codes are kept)");
         }
     }
 }
@@ -318,10 +349,25 @@ void Controller::enterSafeState() {
 RunReport Controller::run() {
     panel_.setUnattended(true);
     start();
+    std::optional<double> pauseAt;
+    if (settings_.pauseAt && state_ == RunState::Running) {
+        pauseAt = runStartedAt_ + *settings_.pauseAt;
+    }
     while (state_ == RunState::Running) {
-        advance(std::numeric_limits<double>::infinity());
-        if (state_ == RunState::Hold && !programStop_.empty()) {
-            status_.postMessage(programStop_ + ": START pressed (run without an operator)");
+        if (pauseAt) {
+            advance(std::max(0.0, *pauseAt - displayTime_));
+            if (state_ == RunState::Running) {
+                status_.postMessage("PAUSE pressed at " + shortSeconds(*pauseAt - runStartedAt_) + " s (" +
+                                    status_.source().file + ":" + std::to_string(status_.source().line) + ")");
+                hold();
+            }
+            pauseAt.reset();
+        } else {
+            advance(std::numeric_limits<double>::infinity());
+        }
+        if (state_ == RunState::Hold) {
+            status_.postMessage((programStop_.empty() ? std::string("PAUSE") : programStop_) +
+                                ": START pressed (run without an operator)");
             displayTime_ = machine_.time(); // START comes the moment the machine stands still
             resume();
         }
@@ -353,6 +399,7 @@ bool Controller::start() {
                          program_.files.empty() ? std::string() : program_.files.front().name, 0, 0});
         return false;
     }
+    resetOperationControl();
     auto unit = program_.mainUnit();
     toolLife_.manager().startRun();
     displayTime_ = machine_.time();
@@ -406,6 +453,7 @@ void Controller::stepOnce() {
 
 int Controller::stepOnce(int toolBefore) {
     std::uint64_t blocksBefore = executor_->blocksExecuted();
+    const std::uint64_t machineBlocksBefore = executor_->machineBlocksExecuted();
     executor_->step();
     if (executor_->blocksExecuted() != blocksBefore) {
         machine_.blockTime(settings_.blockTime);
@@ -424,6 +472,9 @@ int Controller::stepOnce(int toolBefore) {
         } else {
             stopForOperator(*stop);
         }
+    }
+    if ((singleBlock_ || holdPending_) && !inEventHook_) {
+        stopAfterStep(machineBlocksBefore);
     }
     if (interp_.hasLookAheadChanges()) {
         for (const std::string& code : interp_.takeLookAheadChanges()) {

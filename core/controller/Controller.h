@@ -6,8 +6,10 @@
 #include "core/controller/BreakRun.h"
 #include "core/controller/ExternalDevices.h"
 #include "core/controller/Homing.h"
+#include "core/controller/InterfaceSignalsPmc.h"
 #include "core/controller/ManualControl.h"
 #include "core/controller/MessageLog.h"
+#include "core/controller/OperationControl.h"
 #include "core/controller/OperatorPanel.h"
 #include "core/controller/PanelStatus.h"
 #include "core/controller/RunReport.h"
@@ -140,8 +142,16 @@ public:
     bool setSpindleToolNumber(int tool);
 
     // The panel's feed override (进给倍率) in percent, from 0 up to param 295 (150 % when it is 0);
-    // G00 follows it when param 253 = 1. Returns the percentage in effect.
+    // G00 follows it when param 253 = 1. Returns the percentage set; while a FANUC macro's #3004
+    // bit 1 is on, the machine runs at 100 % regardless.
     double setFeedOverride(double percent);
+    // Single block (FANUC SBK): the run holds after each block that reaches the machine (not after
+    // macro statements), unless #3003 bit 0 says otherwise; START goes on. RunSettings::singleBlock
+    // sets it for a run (m350-sim --single-block).
+    void setSingleBlock(bool on) { singleBlock_ = on; }
+    bool singleBlock() const { return singleBlock_; }
+    // FANUC #3003 / #3004 as the running macros set them (OperationControl.h).
+    const OperationControl& operationControl() const { return operation_; }
 
     // The operator's manual control: jog keys, handwheel, 试切 guide, manual and spindle
     // overrides, spindle jog, the IO page's output switches (ManualControl.h).
@@ -229,6 +239,11 @@ private:
     void returnAfterPauseHook();
     int spindleTool() const { return magazine_.spindleTool(); }
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
+    // After a step: the single block stop, and the PAUSE #3004 held back (RunControl.cpp).
+    void stopAfterStep(std::uint64_t machineBlocksBefore);
+    std::optional<std::string> setOperationControl(int variable, double value);
+    void resetOperationControl();
+    void applyFeedOverride();
     bool optionalStopOn();
     OperatorPanel newOperatorPanel();
 
@@ -267,6 +282,10 @@ private:
     ToolBreakage breakage_;    // the tools as they really are, the spindle load
     ToolTableEdits toolEdits_; // the panel's edits of tools_
     OperatorPanel panel_;      // after what its parts read
+    InterfaceSignalsPmc interfacePmc_; // a FANUC's #1000-#1015, #1032, #1100-#1133
+    OperationControl operation_;       // #3003, #3004
+    bool singleBlock_ = false;
+    bool holdPending_ = false;         // PAUSE came while #3004 kept feed hold off
     std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 
     // BreakRun::Starter (RunStart.cpp)

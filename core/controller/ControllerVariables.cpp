@@ -58,19 +58,11 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
     case VariableKind::Homed: return Value::of(homing_.homed(info.index) ? 1 : 0);
     case VariableKind::Dialog: return Value::of(panel_.dialogAnswer());
     case VariableKind::Message: return Value::of(0);
-    case VariableKind::PmcSignal: {
-        // The umbrella-magazine interface of the FANUC seed: G54.0 .. G54.2
-        int commanded = interp_.state().selectedTool;
-        switch (info.index) {
-        case 0: return Value::of(commanded == fanucSpindleTool_ ? 1 : 0); // T already in the spindle
-        case 1: return Value::of(fanucSpindleTool_ == 0 ? 1 : 0);         // spindle holds no tool
-        case 2: return Value::of(commanded == 0 ? 1 : 0);                 // T0 commanded
-        // tool life management's F064 as our ladder copies it to G54.3 / G54.4
-        case 3: return Value::of(toolLife_.manager().toolChangeSignal() ? 1 : 0); // TLCH
-        case 4: return Value::of(toolLife_.manager().newToolSignal() ? 1 : 0);    // TLNW
-        default: return Value::of(0);
-        }
-    }
+    case VariableKind::InterfaceInput: return interfacePmc_.input(info.index);
+    case VariableKind::InterfaceInputs: return interfacePmc_.inputs();
+    case VariableKind::InterfaceOutput: return interfacePmc_.output(info.index);
+    case VariableKind::InterfaceOutputs: return interfacePmc_.outputs(info.index);
+    case VariableKind::OperationControl: return Value::of(operation_.value(info.index));
     case VariableKind::ModalGroup: return Value::of(interp_.state().groups[static_cast<std::size_t>(info.index)]);
     case VariableKind::ModalWord: {
         const interp::ModalState& s = interp_.state();
@@ -101,6 +93,9 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
     case VariableKind::ToolOffset: return tools_.setOffsetVariable(info.index, value);
     case VariableKind::Homed: homing_.setHomed(info.index, value != 0.0); return std::nullopt;
     case VariableKind::ProbeResult: interp_.setProbeStatus(info.index, value); return std::nullopt; // #1920-#1924
+    case VariableKind::InterfaceOutput: return interfacePmc_.setOutput(info.index, value);
+    case VariableKind::InterfaceOutputs: return interfacePmc_.setOutputs(info.index, value);
+    case VariableKind::OperationControl: return setOperationControl(info.index, value);
     case VariableKind::MachinePosition: {
         // M350 #880-#884: the axis takes this machine position where it stands, without moving, and
         // is no longer homed (a dual-Y gantry's fndzero.nc copies Y to A so, then sets #1518 = 1)

@@ -1,6 +1,7 @@
 // Loading what runs: a program file, MDI lines or a hook, parsed with the machine's libraries,
 // and the executor that runs it.
 #include "core/controller/Controller.h"
+#include "core/config/CallCodeParameters.h"
 
 #include "core/gcode/Parser.h"
 #include "core/gcode/SourceText.h"
@@ -36,7 +37,8 @@ bool Controller::load(const gcode::SourceText& source, gcode::FileRole role) {
 // libraries: what a run of that file needs.
 void Controller::parseWithLibraries(gcode::Program& program, const gcode::SourceText& source, gcode::FileRole role,
                                     std::vector<gcode::Diagnostic>& diagnostics) const {
-    gcode::Parser parser(*config_.dialect);
+    const gcode::Dialect dialect = config::parsingDialect(config_);
+    gcode::Parser parser(dialect);
     parser.setDropChunksAbove(static_cast<std::size_t>(settings_.programKeptWholeUpTo));
     parser.addSource(program, source, role);
     addCalledHooks(parser, program, source.path, diagnostics);
@@ -60,7 +62,7 @@ bool Controller::addSourceFile(gcode::Parser& parser, gcode::Program& program, c
 
 std::unique_ptr<macro::Executor> Controller::newExecutor() {
     macro::Executor::Options options;
-    options.codePrograms = config_.codePrograms;
+    options.callCodes = config_.callCodes;
     options.peripherals = &devices_;
     return std::make_unique<macro::Executor>(program_, *config_.dialect, store_, *this, interp_, options);
 }

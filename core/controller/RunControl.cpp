@@ -15,6 +15,17 @@ void Controller::hold() {
     if (state_ != RunState::Running) {
         return;
     }
+    if (operation_.feedHoldSuppressed()) {
+        // FANUC: the feed hold lamp lights, the run goes on and holds at the first block that
+        // allows feed hold again
+        if (!holdPending_) {
+            holdPending_ = true;
+            status_.postMessage("PAUSE held back: #3004 = " + std::to_string(static_cast<int>(operation_.value(4))) +
+                                " keeps feed hold off (" + status_.source().file + ":" +
+                                std::to_string(status_.source().line) + "); the run holds where it allows it again");
+        }
+        return;
+    }
     if (machine_.keepsHistory() && displayTime_ < machine_.moveStart()) {
         // the handwheel guide has the display behind the moves already issued (a retrace): their
         // blocks have run, so the run waits where the display is and goes on from there
@@ -98,6 +109,7 @@ void Controller::reset() {
     programStop_.clear();
     panel_.clearSensorWait();
     panel_.clearDialog();
+    resetOperationControl(); // FANUC clears #3003 and #3004 on reset
     setState(RunState::Idle); // start() runs the program again from its beginning
     if (status_.trace()) {
         status_.trace()->runState(displayTime_, "reset");
@@ -108,8 +120,53 @@ double Controller::setFeedOverride(double percent) {
     double maximum = config_.parameters.get(param::kMaxFeedOverride);
     double applied = std::clamp(percent, 0.0, maximum > 0.0 ? maximum : 150.0);
     feedOverride_ = applied;
-    machine_.setFeedOverride(applied / 100.0, config_.parameters.get(param::kOverrideActsOnRapids) != 0.0);
+    applyFeedOverride();
     return applied;
+}
+
+// The panel's override, or 100 % while a macro's #3004 bit 1 is on.
+void Controller::applyFeedOverride() {
+    const double factor = operation_.overrideSuppressed() ? 1.0 : feedOverride_ / 100.0;
+    machine_.setFeedOverride(factor, config_.parameters.get(param::kOverrideActsOnRapids) != 0.0);
+}
+
+std::optional<std::string> Controller::setOperationControl(int variable, double value) {
+    if (auto refused = operation_.set(variable, value)) {
+        return refused;
+    }
+    applyFeedOverride();
+    return std::nullopt;
+}
+
+void Controller::resetOperationControl() {
+    operation_.reset();
+    holdPending_ = false;
+    applyFeedOverride();
+}
+
+// After a step of the run: with single block on, the run holds after a block that reached the
+// machine (not after a macro statement), unless #3003 bit 0 suppresses it; a PAUSE #3004 held
+// back takes effect after the block that allows feed hold again.
+void Controller::stopAfterStep(std::uint64_t machineBlocksBefore) {
+    if (state_ != RunState::Running || executor_->state() != macro::Executor::State::Running) {
+        return;
+    }
+    const TraceSource where = status_.source();
+    const std::string place = where.file + ":" + std::to_string(where.line);
+    if (holdPending_ && !operation_.feedHoldSuppressed()) {
+        holdPending_ = false;
+        status_.postMessage("PAUSE takes effect: #3004 allows feed hold again (" + place + ")");
+        hold();
+        return;
+    }
+    if (singleBlock_ && executor_->machineBlocksExecuted() != machineBlocksBefore &&
+        !operation_.singleBlockSuppressed()) {
+        programStop_ = "single block stop (" + place + ")";
+        setState(RunState::Hold);
+        if (status_.trace()) {
+            status_.trace()->programStop(machine_.time(), "single block stop", where);
+        }
+    }
 }
 
 void Controller::emergencyStop(const std::string& why) {

@@ -26,6 +26,10 @@ struct RunSettings {
     double sensorTimeout = 10.0;
     bool homed = true;
     bool optionalStop = false;  // the M01 switch (on the M350 #1500 = 1 turns it on too)
+    bool singleBlock = false;   // the single block switch (Controller::setSingleBlock)
+    // run() presses PAUSE when the run has gone this many seconds of virtual time, and START once
+    // the machine stands (m350-sim --pause-at).
+    std::optional<double> pauseAt;
     // A person at the panel (the panel sets it): a #1505 dialog holds the run until answered
     // (Controller::answerDialog). Without one, run() answers every dialog with Enter.
     bool operatorPresent = false;

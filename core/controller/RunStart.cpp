@@ -10,6 +10,7 @@ void Controller::clearForStart() {
     panel_.clearDialog();
     panel_.clearSensorWait();
     programStop_.clear();
+    resetOperationControl();
     devices_.beginRun(); // the scan opens it again where the program does (POPEN)
 }
 

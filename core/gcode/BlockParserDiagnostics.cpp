@@ -41,16 +41,31 @@ std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
 
 // `#1=1E308`, `G4 P1E3`: G-code has no exponent notation, and FANUC refuses it too. Read as a
 // number and an E word, the E would be silently ignored. On FANUC, a G65 line's `A1E2` is A and
-// the argument E (#8), as FANUC reads it.
+// the argument E (#8), as FANUC reads it; so is a line of a code that calls a macro
+// (Dialect::argumentCodes). A variable's number is never a mantissa: `Y#32E2.` is
+// the words Y#32 and E2. in both dialects (a probing package's `G65P9730...Y#32E2.`).
 void BlockParser::checkExponents() {
     auto adjacent = [this](std::size_t a, std::size_t b) {
         return tokens_[a].offset + tokens_[a].length == tokens_[b].offset;
     };
+    auto passesArguments = [this](const Token& letter, const Token& number) {
+        if (letter.kind != TokenKind::Letter || number.kind != TokenKind::Number) {
+            return false;
+        }
+        if (letter.letter == 'G' && number.number == 65) {
+            return true;
+        }
+        for (auto [codeLetter, code] : dialect_.argumentCodes) {
+            if (letter.letter == codeLetter && number.number == code) {
+                return true;
+            }
+        }
+        return false;
+    };
     bool eArgument = false;
     if (dialect_.callArgument('E')) {
         for (std::size_t i = 0; i + 1 < tokens_.size(); ++i) {
-            eArgument |= tokens_[i].kind == TokenKind::Letter && tokens_[i].letter == 'G' &&
-                         tokens_[i + 1].kind == TokenKind::Number && tokens_[i + 1].number == 65;
+            eArgument |= passesArguments(tokens_[i], tokens_[i + 1]);
         }
     }
     for (std::size_t i = 0; i + 2 < tokens_.size(); ++i) {
@@ -69,6 +84,9 @@ void BlockParser::checkExponents() {
             ++exponent;
         }
         if (tokens_[exponent].kind != TokenKind::Number || !adjacent(exponent - 1, exponent)) {
+            continue;
+        }
+        if (i > 0 && tokens_[i - 1].kind == TokenKind::Hash) {
             continue;
         }
         if (eArgument && i > 0 && tokens_[i - 1].kind == TokenKind::Letter) {

@@ -82,6 +82,7 @@ Dialect makeFanuc() {
                                {'F', 9}, {'H', 11}, {'M', 13}, {'Q', 17}, {'R', 18}, {'S', 19}, {'T', 20},
                                {'U', 21}, {'V', 22}, {'W', 23}, {'X', 24}, {'Y', 25}, {'Z', 26}});
     d.handlerArguments = d.callArguments;
+    d.codeCallsNest = false;
     d.dwellXSeconds = true;
     d.lookAheadCodes = true;
     d.externalOutput = true;

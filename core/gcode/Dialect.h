@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace m350::gcode {
@@ -52,6 +53,9 @@ struct Dialect {
     // M350: `M98 P501 X<axis>` homes one axis (0 X .. 4 B) with the firmware's own routine, unless
     // a library defines O501 (fndX.nc .. fndB.nc and fndzero.nc call it)
     int homingProgram = -1;
+    // M350: a handler program may call the handlers of other codes. FANUC: inside a program that a
+    // G or M code called (parameters 6050-6091, [codes]), G and M codes are ordinary codes.
+    bool codeCallsNest = true;
     int gHandlerBase = -1;             // `Gxx` runs O(9000+xx) from the G library
     int mHandlerBase = -1;             // `Mn` runs O(10000+n) from the M library
     bool externalOutput = false;       // FANUC: POPEN, DPRNT[...], BPRNT[...], PCLOS
@@ -61,6 +65,10 @@ struct Dialect {
     bool dwellXSeconds = false;        // FANUC: G04 X<seconds>
 
     std::vector<IndexedTable> indexedTables; // for the `X[#1330+#1300-1]` lint
+    // Codes besides G65 whose blocks pass arguments: the machine's macro-call codes (FANUC
+    // parameters 6050-6059, 6080-6089), set on a copy the controller parses with. In their blocks,
+    // as in G65's, `A1E2` is A1 and the argument E2.
+    std::vector<std::pair<char, std::int32_t>> argumentCodes;
 
     static const Dialect& m350();
     static const Dialect& fanuc();

@@ -4,6 +4,7 @@
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
 #include "core/macro/BlockSink.h"
+#include "core/macro/CallCodes.h"
 #include "core/macro/Evaluator.h"
 #include "core/macro/MachineAccess.h"
 #include "core/macro/Peripherals.h"
@@ -24,8 +25,9 @@ namespace m350::macro {
 class Executor {
 public:
     struct Options {
-        // Codes the machine maps to programs beyond the dialect's own rules, e.g. {'M', 6} -> 9001.
-        std::map<std::pair<char, int>, int> codePrograms;
+        // Codes the machine makes call programs beyond the dialect's own rules: [codes] M6 = 9001,
+        // a FANUC's parameters 6050-6091 (config::MachineConfig::callCodes).
+        CallCodes callCodes;
         bool blockDelete = false; // optional block skip switch: skip '/' blocks when on
         // The external output device and Modbus slaves (none: their statements alarm).
         Peripherals* peripherals = nullptr;
@@ -49,6 +51,8 @@ public:
     // handler (FANUC's O9001). Its moves carry the tool, they do not cut with it.
     bool changingTool() const { return frames_.size() > 1 && changingToolInCall(); } // asked for every move
     std::uint64_t blocksExecuted() const { return blocksExecuted_; }
+    // The blocks whose words reached the machine (the BlockSink): what single block stops after.
+    std::uint64_t machineBlocksExecuted() const { return machineBlocks_; }
     // The main program's side of the run, for 断点加工: the block of the started unit that runs
     // now (the call that is running, when inside one), how many of its blocks have started, and
     // the block it will start next while no call is active.
@@ -86,7 +90,7 @@ private:
     // call planning. Asked for every block: a block with no T, no other codes and no handler
     // cycle active is answered here on its code bits.
     bool mayCall(const EvaluatedBlock& block) const {
-        if (!handlerCycle_ && !block.has('T') && !block.otherCodes) {
+        if (!handlerCycle_ && !block.has('T') && !block.otherCodes && (block.letters & addressLetters_) == 0) {
             return block.gCodes.meets(callingG_) || block.mCodes.meets(callingM_);
         }
         return mayCallInFull(block);
@@ -100,6 +104,12 @@ private:
     void returnFromFrame(std::optional<double> label, std::uint32_t column, bool explicitM99);
     void pushCall(const Call& call, std::uint32_t column);
     bool handlingCode(std::int32_t code) const;
+    // Whether a frame a code opened runs (FANUC: its G and M codes then call nothing).
+    bool inCodeCall() const;
+    // The program a machine-configured code calls, or nullptr when it calls none here.
+    const CodeCall* configuredCall(char letter, int code) const;
+    // FANUC 6090/6091: each word of a calling address is taken out, its value stored, its call planned.
+    void takeAddressCalls(std::vector<WordValue>& words, std::vector<Call>& calls, std::uint32_t& callColumn);
     std::uint32_t programUnit(double number, const char* how, std::uint32_t column) const;
     std::optional<std::uint32_t> handlerFor(char letter, int code) const;
     void indexHandlers();
@@ -128,11 +138,13 @@ private:
     std::optional<std::uint32_t> tCodeUnit_;
     CodeBits callingG_; // whole codes that start a call (indexCallingCodes)
     CodeBits callingM_;
+    std::uint32_t addressLetters_ = 0; // letters that call (FANUC 6090/6091), bit (letter - 'A')
     State state_ = State::Idle;
     std::optional<Alarm> alarm_;
     std::uint32_t current_ = 0;
     bool hasCurrent_ = false;
     std::uint64_t blocksExecuted_ = 0;
+    std::uint64_t machineBlocks_ = 0;
     std::uint32_t mainBlock_ = 0;
     std::uint64_t mainStarted_ = 0;
     // The canned cycle a handler program runs, kept modal until G80 or G00-G03.

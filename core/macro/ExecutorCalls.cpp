@@ -36,6 +36,44 @@ int builtInHomingAxis(std::vector<WordValue>& words, std::uint32_t column) {
 
 } // namespace
 
+bool Executor::inCodeCall() const {
+    for (const Frame& f : frames_) {
+        if (f.handledCode != -1) {
+            return true;
+        }
+    }
+    return false;
+}
+
+const CodeCall* Executor::configuredCall(char letter, int code) const {
+    if (options_.callCodes.empty()) {
+        return nullptr;
+    }
+    const CodeCall* call = options_.callCodes.find(letter, code);
+    return call && (dialect_.codeCallsNest || !inCodeCall()) ? call : nullptr;
+}
+
+// `G00X123Y456B100` with parameter 6090 = 66 (B): the block moves X and Y, then O9004 runs as a
+// subprogram with #146 = 100.
+void Executor::takeAddressCalls(std::vector<WordValue>& words, std::vector<Call>& calls, std::uint32_t& callColumn) {
+    if (!dialect_.codeCallsNest && inCodeCall()) {
+        return; // inside a program a code called, the address is an ordinary one
+    }
+    for (std::size_t i = 0; i < words.size();) {
+        const WordValue w = words[i];
+        const CodeCall* call = options_.callCodes.address(w.letter);
+        const std::int32_t key = codeKey(w.letter, 0xFFFF);
+        if (call == nullptr || handlingCode(key)) {
+            ++i;
+            continue;
+        }
+        words.erase(words.begin() + static_cast<std::ptrdiff_t>(i));
+        evaluator_.writeVariable(call->valueVariable, Value::of(w.value), {}, w.column);
+        calls.push_back(Call{programUnit(call->program, "address call", w.column), 1, dialect_.m98OpensLocalLevel, key, {}});
+        callColumn = w.column;
+    }
+}
+
 bool Executor::changingToolInCall() const {
     return handlingCode(codeKey('T', 0)) || handlingCode(codeKey('M', 6));
 }
@@ -74,9 +112,10 @@ std::optional<std::uint32_t> Executor::handlerFor(char letter, int code) const {
 // The whole codes 0-127 that start a call (G65, M98, M99, the machine's mapped codes and those
 // with handler programs), so that mayCall() meets a block's codes with them in two tests.
 void Executor::indexCallingCodes() {
+    addressLetters_ = options_.callCodes.addressLetters();
     for (int code = 0; code < CodeBits::kCodes; ++code) {
         auto calls = [this, code](char letter) {
-            return options_.codePrograms.count({letter, code}) != 0 || handlerFor(letter, code).has_value();
+            return options_.callCodes.find(letter, code) != nullptr || handlerFor(letter, code).has_value();
         };
         if (code == 65 || calls('G')) {
             callingG_.add(code);
@@ -93,6 +132,9 @@ bool Executor::mayCallInFull(const EvaluatedBlock& block) const {
         return true; // a block may repeat or end the modal cycle
     }
     if (block.has('T') && tCodeUnit_ && !handlingCode(codeKey('T', 0))) {
+        return true;
+    }
+    if ((block.letters & addressLetters_) != 0) {
         return true;
     }
     if (block.otherCodes) {
@@ -114,7 +156,7 @@ bool Executor::otherCodeMayCall(const EvaluatedBlock& block) const {
             }
             const auto code = exact ? static_cast<int>(w.value) : static_cast<int>(std::round(w.value));
             if ((w.letter == 'G' && code == 65) || (w.letter == 'M' && (code == 98 || code == 99)) ||
-                (!options_.codePrograms.empty() && options_.codePrograms.count({w.letter, code}) != 0) ||
+                (!options_.callCodes.empty() && options_.callCodes.find(w.letter, code) != nullptr) ||
                 handlerFor(w.letter, code)) {
                 return true;
             }
@@ -130,6 +172,7 @@ bool Executor::otherCodeMayCall(const EvaluatedBlock& block) const {
 // False when the program ended (M30, M02).
 bool Executor::sendToSink(const EvaluatedBlock& block, std::size_t frameIndex) {
     if (!block.words.empty()) {
+        ++machineBlocks_;
         BlockOutcome outcome = sink_.execute(block);
         if (outcome.error) {
             throw *outcome.error;
@@ -260,11 +303,14 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
         }
         int n = roundToInt(w.value);
         std::int32_t key = codeKey(w.letter, n);
+        const CodeCall* configured = configuredCall(w.letter, n);
+        if (configured == nullptr && !options_.callCodes.empty() && options_.callCodes.find(w.letter, n)) {
+            ++i; // FANUC: inside a program a code called, the code is an ordinary one
+            continue;
+        }
         std::optional<std::uint32_t> unit;
-        bool mapped = false;
-        if (auto it = options_.codePrograms.find({w.letter, n}); it != options_.codePrograms.end()) {
-            unit = programUnit(it->second, isM ? "M code program" : "G code program", w.column);
-            mapped = true;
+        if (configured) {
+            unit = programUnit(configured->program, isM ? "M code program" : "G code program", w.column);
         } else {
             unit = handlerFor(w.letter, n);
         }
@@ -273,16 +319,27 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
             continue;
         }
         words.erase(words.begin() + static_cast<std::ptrdiff_t>(i));
-        // A code mapped by the machine (M6 -> O9001) is a subprogram call; a handler gets arguments.
-        Call call{*unit, 1, mapped ? dialect_.m98OpensLocalLevel : true, key, {}};
-        if (!mapped) {
+        if (configured && configured->kind == CallKind::Macro) {
+            // FANUC 6050-6059, 6080-6089: called as G65 calls, the block's other words its arguments
+            auto l = takeLetter('L');
+            Call call{*unit, l ? std::llround(l->value) : 1, true, key, {}};
+            takeArguments(words, dialect_.callArguments, call.arguments, true);
+            calls.push_back(std::move(call));
+        } else if (configured) {
+            // [codes] M6 = 9001, FANUC 6071-6079: a subprogram call, after the block's other words
+            calls.push_back(Call{*unit, 1, dialect_.m98OpensLocalLevel, key, {}});
+        } else {
+            Call call{*unit, 1, true, key, {}}; // a handler program gets arguments
             takeArguments(words, isM ? dialect_.callArguments : dialect_.handlerArguments, call.arguments, false);
+            if (!isM && cycleHandlerCall(n)) {
+                prepareCycleCall(call, n, words, w.column);
+            }
+            calls.push_back(std::move(call));
         }
-        if (!isM && !mapped && cycleHandlerCall(n)) {
-            prepareCycleCall(call, n, words, w.column);
-        }
-        calls.push_back(std::move(call));
         callColumn = w.column;
+    }
+    if (addressLetters_ != 0) {
+        takeAddressCalls(words, calls, callColumn);
     }
     if (calls.empty()) {
         if (auto repeat = repeatCycle(words, dialect_.handlerArguments)) {

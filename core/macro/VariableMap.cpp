@@ -54,14 +54,16 @@ VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable +
         add(1, 33, K::Local);
         add(100, 199, K::Common);
         add(500, 999, K::Retained);
-        add(1000, 1015, K::PmcSignal, true, 0);
-        // the PMC copies the spindle load register (the article's R1212-R1213) to G54-G55,
-        // which macros read as one 16-bit word
-        add(1032, 1032, K::SpindleLoad, true);
-        add(1100, 1115, K::System);
+        // the interface signals, as the machine folder's [interface_signals] wires them (a PMC may
+        // copy the spindle load register, the article's R1212-R1213, to G54-G55: #1032)
+        add(1000, 1015, K::InterfaceInput, true, 0);
+        add(1032, 1032, K::InterfaceInputs, true, 0);
+        add(1100, 1115, K::InterfaceOutput, false, 0);
+        add(1132, 1133, K::InterfaceOutputs, false, 0);
         add(2001, 2400, K::ToolOffset, false, 1);
         add(3000, 3000, K::Alarm);
         add(3001, 3002, K::System);
+        add(3003, 3004, K::OperationControl, false, 3);
         add(3006, 3006, K::StopMessage);
         add(3011, 3012, K::System);
         add(3901, 3902, K::System);
@@ -116,7 +118,11 @@ std::string_view kindName(VariableKind kind) {
     case VariableKind::Input: return "input";
     case VariableKind::Output: return "output";
     case VariableKind::Homed: return "homed flag";
-    case VariableKind::PmcSignal: return "PMC interface signal";
+    case VariableKind::InterfaceInput: return "interface input";
+    case VariableKind::InterfaceInputs: return "interface inputs, 16 bits";
+    case VariableKind::InterfaceOutput: return "interface output";
+    case VariableKind::InterfaceOutputs: return "interface outputs";
+    case VariableKind::OperationControl: return "automatic operation control";
     case VariableKind::Alarm: return "alarm";
     case VariableKind::StopMessage: return "stop with message";
     case VariableKind::ModalGroup: return "modal group";
@@ -135,6 +141,8 @@ std::string VariableMap::describeText(int number) const {
     case VariableKind::Parameter: text += " " + std::to_string(info.index); break;
     case VariableKind::Input: text += " IN" + std::string(info.index < 10 ? "0" : "") + std::to_string(info.index); break;
     case VariableKind::Output: text += " OUT" + std::string(info.index < 10 ? "0" : "") + std::to_string(info.index); break;
+    case VariableKind::InterfaceInput: text += " UI0" + std::string(info.index < 10 ? "0" : "") + std::to_string(info.index); break;
+    case VariableKind::InterfaceOutput: text += " UO0" + std::string(info.index < 10 ? "0" : "") + std::to_string(info.index); break;
     default: break;
     }
     return text + ")";

@@ -30,13 +30,17 @@ enum class VariableKind : std::uint8_t {
     Input,           // M350 #1520+k-1 = INk (read-only)
     Output,          // M350 #1552+k-1 = OUTk
     Homed,           // M350 #1515-#1519
-    PmcSignal,       // FANUC #1000-#1002 (umbrella magazine interface, read-only)
+    InterfaceInput,  // FANUC #1000-#1015: the interface inputs UI000-UI015 (read-only)
+    InterfaceInputs, // FANUC #1032: UI000-UI015 as one 16-bit number (read-only)
+    InterfaceOutput, // FANUC #1100-#1115: the interface outputs UO000-UO015
+    InterfaceOutputs,// FANUC #1132 (UO000-UO015, 16 bits), #1133 (UO100-UO131, 32 bits)
+    OperationControl,// FANUC #3003 (single block, completion wait), #3004 (feed hold, override, exact stop)
     Alarm,           // FANUC #3000: writing raises an alarm with the comment as message
     StopMessage,     // FANUC #3006: stop with a message
     ModalGroup,      // FANUC #4001-#4022
     ModalWord,       // FANUC #4107-#4120 (D E F H M N O S T ...)
     ToolOffset,      // FANUC #2001-#2400: tool offset memory 1-400
-    SpindleLoad,     // FANUC #1032, M350 #2990 (a simulator extra): spindle load % x 100, read-only
+    SpindleLoad,     // M350 #2990 (a simulator extra, as FANUC's #1032): spindle load % x 100, read-only
     System           // other system values, kept as plain storage
 };
 

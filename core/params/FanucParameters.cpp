@@ -13,21 +13,27 @@ struct Simulated {
     double high;
     double defaultValue;
     bool whole = false; // a bit parameter's byte or a count
+    int last = 0;       // a run of parameters number..last alike (0: the one number)
 };
 
-// The article on spindle-load breakage detection: Load% = L / 32767 x lambda, lambda default 143.
-// Tool life: 6800 and 6801 are bit parameters (0-255), 6810 the ignore number 0-9999; its default is
-// the 100 the 0i manual's examples assume (T101 = group 1).
 constexpr Simulated kSimulated[] = {
+    // The article on spindle-load breakage detection: Load% = L / 32767 x lambda, lambda default 143.
     {kLoadMeterFullScale, 1.0, 1000.0, 143.0},
+    // Tool life: 6800 and 6801 are bit parameters (0-255), 6810 the ignore number 0-9999; its default is
+    // the 100 the 0i manual's examples assume (T101 = group 1).
     {kToolLifeSettings, 0.0, 255.0, 0.0, true},
     {kToolLifeExtended, 0.0, 255.0, 0.0, true},
     {kToolLifeIgnoreNumber, 0.0, 9999.0, 100.0, true},
+    // Codes that call programs (CallCodeParameters.h); 0 calls nothing.
+    {kFirstGCodeMacroCall, 0.0, 9999.0, 0.0, false, kFirstGCodeMacroCall + 9},
+    {kFirstMCodeSubprogramCall, 0.0, 99999999.0, 0.0, false, kFirstMCodeSubprogramCall + 8},
+    {kFirstMCodeMacroCall, 0.0, 99999999.0, 0.0, false, kFirstMCodeMacroCall + 9},
+    {kFirstAddressCall, 0.0, 90.0, 0.0, false, kFirstAddressCall + 1},
 };
 
 const Simulated* find(int number) {
     for (const Simulated& p : kSimulated) {
-        if (p.number == number) {
+        if (p.number == number || (number > p.number && number <= p.last)) {
             return &p;
         }
     }
@@ -46,7 +52,7 @@ std::optional<std::string> refusedFanucParameter(int number, double value) {
     }
     if (const Simulated* p = find(number); p && (value < p->low || value > p->high || (p->whole && value != std::floor(value)))) {
         char text[128];
-        std::snprintf(text, sizeof text, "parameter %d must be %sfrom %g to %g", number,
+        std::snprintf(text, sizeof text, "parameter %d must be %sfrom %.10g to %.10g", number,
                       p->whole ? "a whole number " : "", p->low, p->high);
         return std::string(text);
     }

@@ -17,6 +17,11 @@ inline constexpr int kLoadMeterFullScale = 4127; // lambda: the load % the meter
 inline constexpr int kToolLifeSettings = 6800;     // #0 GS1, #1 GS2 (groups x tools), #2 LTM (0 count, 1 minutes)
 inline constexpr int kToolLifeExtended = 6801;     // #6 EXT: G10 L3 P1 / P2 allowed
 inline constexpr int kToolLifeIgnoreNumber = 6810; // T(ignore + n) selects group n
+// Custom Macro B: codes that call programs (config/CallCodeParameters.h)
+inline constexpr int kFirstGCodeMacroCall = 6050;      // 6050-6059: G code -> macro O9010-O9019
+inline constexpr int kFirstMCodeSubprogramCall = 6071; // 6071-6079: M code -> subprogram O9001-O9009
+inline constexpr int kFirstMCodeMacroCall = 6080;      // 6080-6089: M code -> macro O9020-O9029
+inline constexpr int kFirstAddressCall = 6090;         // 6090-6091: address (ASCII) -> subprogram O9004, O9005
 
 bool isFanucParameterNumber(int number);
 

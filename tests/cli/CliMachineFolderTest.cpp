@@ -130,7 +130,7 @@ TEST_F(MachineFolderTest, FanucParametersAreParamsOfFanucMachinesOnly) {
 
     fs::path fanuc = copyMachine("fanuc-ts27r");
     edit(fanuc / "machine.toml", "[spindle_load]\n", "[spindle_load]\nlambda = 150\n");
-    expectConfigError({"mdi", "G4 P1", "--config", "machine"}, "machine/machine.toml:42:10",
+    expectConfigError({"mdi", "G4 P1", "--config", "machine"}, "machine/machine.toml:47:10",
                       "[spindle_load] lambda is FANUC parameter 4127: set it in params.toml");
 }
 

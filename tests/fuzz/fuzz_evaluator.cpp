@@ -56,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     m350::controller::Controller controller(machine(machineIndex), settings);
     if (controller.loadMdi({std::string(source->text)})) {
         const m350::config::MachineConfig config = controller.config();
-        m350::check::StaticCheck(controller.program(), *config.dialect, config.codePrograms).findings();
+        m350::check::StaticCheck(controller.program(), *config.dialect, config.callCodes).findings();
         controller.run();
     }
     return 0;

@@ -29,7 +29,7 @@ std::string joined(const std::vector<gcode::Diagnostic>& diagnostics) {
 
 std::vector<gcode::Diagnostic> checkWithoutRunning(const controller::Controller& controller) {
     const config::MachineConfig machine = controller.config();
-    return check::StaticCheck(controller.program(), *machine.dialect, machine.codePrograms).findings();
+    return check::StaticCheck(controller.program(), *machine.dialect, machine.callCodes).findings();
 }
 
 // evaluator found-m-code-beyond-int: `M9999999930` saturates to INT_MAX, and the handler number

@@ -100,6 +100,37 @@ TEST(ExponentNumbers, AFanucMacroCallKeepsItsEArgument) {
     EXPECT_EQ(run.number(101), 2);
 }
 
+// A variable's number followed by E is two words: the probing package's `...X#31Y#32E2.` passes
+// Y = #32 and E = 2., in both dialects; only a number written with E is refused.
+TEST(ExponentNumbers, AnEAfterAVariableStartsTheNextWord) {
+    for (const Dialect* dialect : {&Dialect::m350(), &Dialect::fanuc()}) {
+        Parsed p = support::parse("G1X#31Y#32E2.\n#1=#2E-3\n", *dialect);
+        ASSERT_TRUE(p.diagnostics.empty()) << dialect->name << ":\n" << listDiagnostics(p.diagnostics);
+        const Block& move = p.program.blocks.at(0);
+        ASSERT_EQ(move.words.size(), 4u) << dialect->name;
+        EXPECT_EQ(move.words[2].letter, 'Y');
+        EXPECT_EQ(support::show(p.program, move.words[2].value), "#32");
+        EXPECT_EQ(move.words[3].letter, 'E');
+        EXPECT_TRUE(move.words[3].isNumber());
+        EXPECT_EQ(move.words[3].number, 2.0);
+        const Block& assignment = p.program.blocks.at(1);
+        ASSERT_EQ(assignment.words.size(), 1u) << dialect->name;
+        EXPECT_EQ(assignment.words[0].letter, 'E');
+        EXPECT_EQ(assignment.words[0].number, -3.0);
+    }
+}
+
+TEST(ExponentNumbers, AProbingCallPassesEAfterAVariable) {
+    auto run = runFanuc("#7=6.#15=150.#11=1.#13=0.5#19=3.#20=12.#23=4.#31=25.#32=-18.5\n"
+                        "G65P9730D#7F#15H#11M#13S#19T#20W#23X#31Y#32E2.\nM30\n"
+                        "O9730\n#100=#7+#9+#11+#13+#19+#20+#23\n#101=#24\n#102=#25\n#103=#8\nM99\n");
+    EXPECT_RUN_OK(run);
+    EXPECT_EQ(run.number(100), 6 + 150 + 1 + 0.5 + 3 + 12 + 4);
+    EXPECT_EQ(run.number(101), 25);
+    EXPECT_EQ(run.number(102), -18.5);
+    EXPECT_EQ(run.number(103), 2);
+}
+
 // --- labels stay exact --------------------------------------------------------------------------
 
 TEST(Labels, BeyondEightDigitsAreRefused) {

@@ -11,7 +11,7 @@ namespace {
 
 using namespace m350;
 
-std::vector<gcode::Diagnostic> checked(const std::string& text, const check::StaticCheck::CodePrograms& codes = {}) {
+std::vector<gcode::Diagnostic> checked(const std::string& text, const macro::CallCodes& codes = {}) {
     gcode::Parser parser(gcode::Dialect::m350());
     gcode::Program program;
     parser.addFile(program, "main.nc", text, gcode::FileRole::Main);
@@ -29,7 +29,16 @@ TEST(StaticCheck, FindsWhatTheRunWouldAlarmOnWithoutAController) {
 
 TEST(StaticCheck, AMachineCodeProgramTakesItsBlocksWords) {
     EXPECT_EQ(checked("M150 X1 X2\nM30\n").size(), 1u);
-    EXPECT_TRUE(checked("M150 X1 X2\nM30\n", {{{'M', 150}, 9001}}).empty());
+    macro::CallCodes codes;
+    codes.add('M', 150, {9001, macro::CallKind::Subprogram, 0, "[codes] M150 = 9001"});
+    EXPECT_TRUE(checked("M150 X1 X2\nM30\n", codes).empty());
+}
+
+TEST(StaticCheck, ABlockWithACallingAddressTakesItsWords) {
+    EXPECT_EQ(checked("G0 X1 X2 B5\nM30\n").size(), 1u);
+    macro::CallCodes codes;
+    codes.addAddress('B', {9004, macro::CallKind::Subprogram, 146, "parameter 6090 = 66"});
+    EXPECT_TRUE(checked("G0 X1 X2 B5\nM30\n", codes).empty());
 }
 
 // Probing macros clear G31's result per axis before the next probe (`#1922=0 ;clear probe status

@@ -166,8 +166,16 @@ TEST(VariableMapFanuc, NullLocalsCommonRetained) {
 TEST(VariableMapFanuc, SystemVariables) {
     VariableMap map(Dialect::fanuc());
     checkAll(map, {
-        {1000, K::PmcSignal, true, 0},
-        {1002, K::PmcSignal, true, 2},
+        {1000, K::InterfaceInput, true, 0},
+        {1002, K::InterfaceInput, true, 2},
+        {1015, K::InterfaceInput, true, 15},
+        {1032, K::InterfaceInputs, true, 0},
+        {1100, K::InterfaceOutput, false, 0},
+        {1115, K::InterfaceOutput, false, 15},
+        {1132, K::InterfaceOutputs, false, 0},
+        {1133, K::InterfaceOutputs, false, 1},
+        {3003, K::OperationControl, false, 3},
+        {3004, K::OperationControl, false, 4},
         {3000, K::Alarm, false, kAny},
         {3006, K::StopMessage, false, kAny},
         {4001, K::ModalGroup, true, 1},
@@ -196,7 +204,8 @@ TEST(VariableMapFanuc, SystemVariables) {
 TEST(VariableMapFanuc, UndefinedNumbers) {
     VariableMap map(Dialect::fanuc());
     // gaps between the ranges, the M350's own numbers, the last number and beyond
-    for (int n : {-1, 34, 50, 99, 200, 499, 1300, 1503, 1520, 1552, 4000, 5000, 5026, 5206, 5326, 9999, 10000}) {
+    for (int n : {-1, 34, 50, 99, 200, 499, 1016, 1031, 1033, 1116, 1131, 1134, 1300, 1503, 1520, 1552, 3005, 4000,
+                  5000, 5026, 5206, 5326, 9999, 10000}) {
         EXPECT_EQ(map.describe(n).kind, K::Undefined) << "#" << n << " is " << map.describeText(n);
     }
 }
