@@ -3,6 +3,8 @@
 #include "core/gcode/Diagnostic.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
+#include "core/interp/ModalInterpreter.h"
+#include "core/macro/VariableLayout.h"
 
 #include <map>
 #include <utility>
@@ -18,15 +20,28 @@ namespace m350::check {
 class StaticCheck {
 public:
     using CodePrograms = std::map<std::pair<char, int>, int>;
+    // What the machine's control has beyond its dialect (config::MachineConfig): its common
+    // variables and G54.1 systems, and whether it rotates (G68).
+    struct Options {
+        macro::VariableLayout variables;
+        interp::ModalInterpreter::CoordinateFeatures coordinates;
+    };
+    // With the dialect's own variables, and FANUC's G54.1 P1-P48 and G68.
     StaticCheck(const gcode::Program& program, const gcode::Dialect& dialect, const CodePrograms& codePrograms)
-        : program_(program), dialect_(dialect), codePrograms_(codePrograms) {}
+        : StaticCheck(program, dialect, codePrograms, dialectOptions(dialect)) {}
+    StaticCheck(const gcode::Program& program, const gcode::Dialect& dialect, const CodePrograms& codePrograms,
+                Options options)
+        : program_(program), dialect_(dialect), codePrograms_(codePrograms), options_(std::move(options)) {}
 
     std::vector<gcode::Diagnostic> findings() const;
 
 private:
+    static Options dialectOptions(const gcode::Dialect& dialect);
+
     const gcode::Program& program_;
     const gcode::Dialect& dialect_;
     const CodePrograms& codePrograms_;
+    Options options_;
 };
 
 } // namespace m350::check

@@ -3,6 +3,7 @@
 #include "core/common/Numeric.h"
 
 #include "core/params/FanucParameters.h"
+#include "core/config/ControlOptionsToml.h"
 #include "core/config/HookFiles.h"
 #include "core/config/MachineFolder.h"
 #include "core/files/LastGoodCopy.h"
@@ -10,6 +11,7 @@
 #include "core/params/ParameterCatalogue.h"
 #include "core/params/ParameterLimits.h"
 #include "core/config/TomlReading.h"
+#include "core/macro/VariableMap.h"
 #include "core/config/SpindleLoadToml.h"
 #include "core/tools/ToolData.h"
 #include "core/tools/ToolTableFile.h"
@@ -88,7 +90,8 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                      "tools", "tools.*", // tools.length, tools.diameter, [tools.N]
                      "stock", "stock.top", "stock.x", "stock.y", "spindle_load",
                      "spindle_load.idle", "spindle_load.per_krpm", "spindle_load.per_cm3", "spindle_load.spike_factor",
-                     "spindle_load.spike_ms", "reference_points", "reference_points.*"},
+                     "spindle_load.spike_ms", "reference_points", "reference_points.*", "variables",
+                     "variables.common", "coordinates", "coordinates.additional_systems", "coordinates.rotation"},
                     config.warnings);
     config.name = t["name"].value_or(folder.filename().string());
     std::string dialect = t["dialect"].value_or(std::string("m350"));
@@ -193,6 +196,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     }
     readNumberedTools(file, t, config);
     readSpindleLoadWorld(file, t, config.spindleLoad);
+    readControlOptions(file, t, config);
     if (auto points = t["reference_points"].as_table()) {
         for (auto&& [key, value] : *points) {
             int number = numberKey(file, key.str(), key.source(), 1, 4, "reference point");
@@ -280,9 +284,19 @@ void loadVariables(const fs::path& folder, MachineConfig& config) {
     }
     toml::table t = parseToml(file);
     warnUnknownKeys(file, t, {"variables", "variables.*"}, config.warnings);
+    const macro::VariableMap map(*config.dialect, config.variableLayout);
     if (auto vars = t["variables"].as_table()) {
         for (auto&& [key, value] : *vars) {
-            config.variables[numberKey(file, key.str(), key.source(), 1, 9999, "variable")] = numberValue(file, value, key.str());
+            const int number = numberKey(file, key.str(), key.source(), 1, macro::VariableLayout::kLastVariable, "variable");
+            const double v = numberValue(file, value, key.str());
+            if (map.describe(number).kind == macro::VariableKind::Undefined) {
+                config.warnings.push_back(warningAt(file, key.source(),
+                                                    "#" + std::to_string(number) +
+                                                        " is no variable of this machine (machine.toml [variables] "
+                                                        "common lists its common variables); not loaded"));
+                continue;
+            }
+            config.variables[number] = v;
         }
     }
 }

@@ -47,6 +47,7 @@ int groupOf(int code) {
     case 73: case 74: case 80: case 81: case 82: case 83: case 84: return 9;
     case 98: case 99: return 10;
     case 54: case 55: case 56: case 57: case 58: case 59: return 14;
+    case 68: case 69: return 16;
     default: return -1;
     }
 }
@@ -102,6 +103,9 @@ int ModalInterpreter::activeSlot() const {
     if (dialect_.id == gcode::DialectId::M350) {
         int slot = saturatingInt(parameters_.get(param::kCurrentWorkSystem));
         return (slot >= 0 && slot <= 6) ? slot : 1;
+    }
+    if (state_.additionalSystem > 0) {
+        return WorkOffsets::additionalSlot(state_.additionalSystem);
     }
     return state_.group(14) - 53;
 }
@@ -218,6 +222,9 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         latchLengthOffset(words);
         // 7. motion
         moveAxes(words);
+        if (state_.rotating()) [[unlikely]] {
+            noteAbsoluteCommand(words);
+        }
         // 8. stops and program end
         for (const WordValue& m : words.m) {
             int code = roundToInt(m.value);
@@ -229,6 +236,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 flushCompensation();
                 compensation_.reset();
                 state_.groups[7] = 40;
+                state_.groups[16] = 69; // a FANUC reset cancels the rotation
                 cancelCycle();
                 machine_.spindle(machine::SpindleState::Stop, 0.0);
                 machine_.coolant(false);
@@ -245,9 +253,18 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
     }
 }
 
-bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, double value) {
+namespace {
+
+bool isAdditionalSystemCode(double value) { return std::abs(value - 54.1) < 1e-6; } // G54.1
+
+} // namespace
+
+bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, const CoordinateFeatures& features, double value) {
     if (dialect.lookAheadCodes && isLookAheadCode(value)) {
         return true;
+    }
+    if (isAdditionalSystemCode(value)) {
+        return features.additionalSystems > 0;
     }
     const int code = roundToInt(value);
     if (std::abs(value - code) > 1e-6) {
@@ -255,17 +272,30 @@ bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, double value) {
     }
     switch (code) {
     case 4: case 10: case 28: case 30: case 31: case 52: case 53: case 92: return true; // applyGCodes, moveAxes
+    case 68: case 69: return features.rotation;
     default: return groupOf(code) > 0;
     }
 }
 
 void ModalInterpreter::applyGCodes(const Words& words) {
+    if (state_.rotating() || words.hasG(68)) [[unlikely]] {
+        refuseUnderRotation(words);
+    }
     std::array<bool, 23> seen{};
+    const WordValue* g68 = nullptr;
     for (const WordValue& g : words.g) {
         if (dialect_.lookAheadCodes && lookAheadCode(g, words)) {
             continue;
         }
         const double value = g.value;
+        if (isAdditionalSystemCode(value)) [[unlikely]] {
+            if (seen[14]) {
+                invalid(g, "two G codes of the same group in one block");
+            }
+            seen[14] = true;
+            selectAdditionalSystem(words, g);
+            continue;
+        }
         int code = 0;
         if (value >= 0 && value < 128 && value == static_cast<double>(static_cast<int>(value))) {
             code = static_cast<int>(value); // as written, most codes: no rounding
@@ -281,7 +311,19 @@ void ModalInterpreter::applyGCodes(const Words& words) {
                 invalid(g, "two G codes of the same group in one block");
             }
             seen[static_cast<std::size_t>(group)] = true;
+            if (group == 16) {
+                if (!features_.rotation) {
+                    invalid(g, "not a G code this machine knows");
+                }
+                if (code == 68) {
+                    g68 = &g; // after the block's plane, units and distance mode
+                    continue;
+                }
+            }
             state_.groups[static_cast<std::size_t>(group)] = code;
+            if (group == 14) {
+                state_.additionalSystem = 0;
+            }
             if (group == 14 && dialect_.id == gcode::DialectId::M350) {
                 parameters_.set(param::kCurrentWorkSystem, code - 53);
             }
@@ -327,6 +369,26 @@ void ModalInterpreter::applyGCodes(const Words& words) {
     if (seen[1] || (seen[9] && state_.group(9) == 80)) {
         cancelCycle(); // a cycle begun again starts from new drilling data and a new initial level
     }
+    if (g68) [[unlikely]] {
+        startRotation(words, *g68);
+    }
+}
+
+// G54.1 Pn selects additional work system n; without P, P1 (as GSK's FANUC-compatible 980MDc
+// documents it).
+void ModalInterpreter::selectAdditionalSystem(const Words& words, const WordValue& g) {
+    if (features_.additionalSystems <= 0) {
+        invalid(g, "not a G code this machine knows");
+    }
+    const WordValue* p = words.find('P');
+    const double number = p ? p->value : 1.0;
+    const int systems = features_.additionalSystems;
+    if (number != std::round(number) || number < 1 || number > systems) {
+        invalid(p ? *p : g, "G54.1 selects the additional work systems P1-P" + std::to_string(systems) +
+                                " of this machine (machine.toml [coordinates] additional_systems)");
+    }
+    state_.groups[14] = 54.1;
+    state_.additionalSystem = static_cast<int>(number);
 }
 
 } // namespace m350::interp
