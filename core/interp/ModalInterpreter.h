@@ -27,11 +27,12 @@ namespace m350::interp {
 // Turns evaluated blocks into machine commands, keeping the modal state.
 //
 // Order of execution within one block (written once, followed by execute()):
-//   1. F, S, T, H, D words          5. work system (G54-G59)
+//   1. F, S, T, H, D words          5. work system (G54-G59, G54.1 Pn)
 //   2. spindle M3/M4/M5/M19, M8/M9  6. non-modal G4, G28, G53, G92
 //   3. plane, units, distance,      7. motion (G0 G1 G2 G3) with the axis words, or
-//      feed mode, return level,        the active canned cycle (G73 G74 G81-G84) at them
-//      canned cycle                 8. M0, M1, M2, M30
+//      feed mode, return level,        the active canned cycle (G73 G74 G81-G84) at them,
+//      canned cycle; G69, then G68     turned by G68 (CoordinateRotation.cpp)
+//      (its centre and angle)       8. M0, M1, M2, M30
 //   4. cutter compensation (G40-G42), tool length (G43 G44 G49: the H offset is read here),
 //      then G10 with the non-modal codes of 6, so `G43 H1 G10 L10 P1 Z0` applies tool 1's old
 //      length and then changes the table, as LinuxCNC orders it (a second G43 applies the new one)
