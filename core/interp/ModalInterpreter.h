@@ -61,6 +61,9 @@ public:
 
     const ModalState& state() const { return state_; }
     ModalState& state() { return state_; }
+    // RESET selects G69, as it does on controls with G68 (the ISO modes of Yaskawa and Siemens say
+    // so in as many words; a program's M02/M30 does it in execute()).
+    void cancelRotation() { state_.groups[16] = 69; }
 
     // The active system's slot in WorkOffsets (1..6 for G54..G59, from 9 on G54.1 P1.., 0 for the
     // M350's G92 system).

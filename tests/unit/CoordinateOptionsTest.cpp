@@ -276,10 +276,15 @@ TEST(CoordinateRotation, TheZxPlaneTurnsZTowardX) {
     EXPECT_NEAR(run.number(5023), 0, kTolerance);
 }
 
-TEST(CoordinateRotation, ProgramEndCancelsIt) {
+TEST(CoordinateRotation, ProgramEndAndResetCancelIt) {
     auto run = runFanuc(lines({"G68 X0 Y0 R45", "M30"}));
     EXPECT_RUN_OK(run);
     EXPECT_DOUBLE_EQ(run.number(4016), 69);
+    auto alarmed = runFanuc(lines({"G68 X0 Y0 R45", "#1 = 1 / 0", "M30"}));
+    ASSERT_EQ(alarmed.report.status, controller::RunStatus::Alarm);
+    EXPECT_DOUBLE_EQ(alarmed.number(4016), 68);
+    alarmed.controller->reset();
+    EXPECT_DOUBLE_EQ(alarmed.number(4016), 69);
 }
 
 TEST(CoordinateRotation, AMachineWithoutItAndTheM350RefuseG68AndG69) {
