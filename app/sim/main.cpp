@@ -83,7 +83,9 @@ int check(controller::Controller& controller, const sim::SimOptions& o) {
     if (!gcode::hasBlockingError(diagnostics)) {
         const config::MachineConfig machine = controller.config();
         std::vector<gcode::Diagnostic> findings =
-            check::StaticCheck(controller.program(), *machine.dialect, machine.callCodes).findings();
+            check::StaticCheck(controller.program(), *machine.dialect, machine.callCodes,
+                               {machine.variableLayout, {machine.additionalWorkSystems(), machine.rotation()}})
+                .findings();
         diagnostics.insert(diagnostics.end(), findings.begin(), findings.end());
     }
     return checkResult(diagnostics);
@@ -106,7 +108,7 @@ std::optional<std::string> checkAgainstMachine(const sim::SimOptions& o, const c
                                  : std::string());
         }
     }
-    macro::VariableMap variables(*machine.dialect);
+    macro::VariableMap variables(*machine.dialect, machine.variableLayout);
     for (const auto& [number, value] : o.settings.variables) {
         macro::VariableInfo info = variables.describe(number);
         if (info.kind == macro::VariableKind::Undefined || info.readOnly) {

@@ -14,6 +14,7 @@
 #include "core/params/ParameterTable.h"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <optional>
 #include <sstream>
@@ -53,9 +54,10 @@ public:
 class ProgramCheck {
 public:
     ProgramCheck(const gcode::Program& program, const gcode::Dialect& dialect, const macro::CallCodes& callCodes,
-                 macro::Evaluator& evaluator, const macro::VariableMap& variables, std::vector<gcode::Diagnostic>& out)
-        : program_(program), dialect_(dialect), callCodes_(callCodes), evaluator_(evaluator),
-          variables_(variables), out_(out) {}
+                 const interp::ModalInterpreter::CoordinateFeatures& coordinates, macro::Evaluator& evaluator,
+                 const macro::VariableMap& variables, std::vector<gcode::Diagnostic>& out)
+        : program_(program), dialect_(dialect), callCodes_(callCodes), coordinates_(coordinates),
+          evaluator_(evaluator), variables_(variables), out_(out) {}
 
     void block(const Block& b) {
         location_ = b.location;
@@ -199,9 +201,7 @@ private:
     int variableNumber(ExprId variable) {
         int number = evaluator_.variableNumber(variable);
         if (variables_.describe(number).kind == macro::VariableKind::Undefined) {
-            throw macro::MacroError{AlarmCode::UndefinedVariable,
-                                    "#" + std::to_string(number) + " does not exist in the " +
-                                        std::string(dialect_.name) + " dialect",
+            throw macro::MacroError{AlarmCode::UndefinedVariable, variables_.undefinedText(number),
                                     program_.expressions[variable].column};
         }
         return number;
@@ -249,8 +249,10 @@ private:
         }
         std::array<bool, 26> seen{};
         for (const Word& w : b.words) {
-            if (w.letter == 'G' && !interp::ModalInterpreter::knowsGCode(dialect_, w.number)) {
+            if (w.letter == 'G' && !interp::ModalInterpreter::knowsGCode(dialect_, coordinates_, w.number)) {
                 report(w.column, "G" + formatCode(w.number) + ": not a G code this machine knows");
+            } else if (w.letter == 'G' && std::abs(w.number - 54.1) < 1e-6) {
+                additionalSystem(b);
             }
             if (w.letter == 'G' || w.letter == 'M' || w.letter < 'A' || w.letter > 'Z') {
                 continue;
@@ -260,6 +262,18 @@ private:
                 report(w.column, std::string(1, w.letter) + " appears twice in one block");
             }
             twice = true;
+        }
+    }
+
+    // G54.1 P<constant> beyond the machine's systems, as the run would refuse it.
+    void additionalSystem(const Block& b) {
+        for (const Word& p : b.words) {
+            if (p.letter == 'P' && p.isNumber() &&
+                (p.number != std::round(p.number) || p.number < 1 || p.number > coordinates_.additionalSystems)) {
+                report(p.column, "P" + formatCode(p.number) + ": G54.1 selects the additional work systems P1-P" +
+                                     std::to_string(coordinates_.additionalSystems) +
+                                     " of this machine (machine.toml [coordinates] additional_systems)");
+            }
         }
     }
 
@@ -274,6 +288,7 @@ private:
     const gcode::Program& program_;
     const gcode::Dialect& dialect_;
     const macro::CallCodes& callCodes_;
+    const interp::ModalInterpreter::CoordinateFeatures& coordinates_;
     macro::Evaluator& evaluator_;
     const macro::VariableMap& variables_;
     std::vector<gcode::Diagnostic>& out_;
@@ -282,13 +297,20 @@ private:
 
 } // namespace
 
+StaticCheck::Options StaticCheck::dialectOptions(const gcode::Dialect& dialect) {
+    Options options;
+    const bool fanuc = dialect.id == gcode::DialectId::Fanuc;
+    options.coordinates = {options.variables.workSystems(dialect), fanuc};
+    return options;
+}
+
 std::vector<gcode::Diagnostic> StaticCheck::findings() const {
     std::vector<gcode::Diagnostic> findings;
     params::ParameterTable parameters;
-    macro::VariableStore variables(dialect_, parameters);
+    macro::VariableStore variables(dialect_, parameters, options_.variables);
     NoMachine machine;
     macro::Evaluator evaluator(program_.expressions, dialect_, variables, machine);
-    ProgramCheck check(program_, dialect_, callCodes_, evaluator, variables.map(), findings);
+    ProgramCheck check(program_, dialect_, callCodes_, options_.coordinates, evaluator, variables.map(), findings);
     gcode::DiagnosticCap cap; // a million lines of `#1=1/0` list the first and the last findings
     for (const gcode::ProgramUnit& unit : program_.units) {
         if (!check.checked(unit)) {

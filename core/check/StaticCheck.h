@@ -3,7 +3,9 @@
 #include "core/gcode/Diagnostic.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
+#include "core/interp/ModalInterpreter.h"
 #include "core/macro/CallCodes.h"
+#include "core/macro/VariableLayout.h"
 
 #include <vector>
 
@@ -17,15 +19,28 @@ namespace m350::check {
 // call's arguments.
 class StaticCheck {
 public:
+    // What the machine's control has beyond its dialect (config::MachineConfig): its common
+    // variables and G54.1 systems, and whether it rotates (G68).
+    struct Options {
+        macro::VariableLayout variables;
+        interp::ModalInterpreter::CoordinateFeatures coordinates;
+    };
+    // With the dialect's own variables, and FANUC's G54.1 P1-P48 and G68.
     StaticCheck(const gcode::Program& program, const gcode::Dialect& dialect, const macro::CallCodes& callCodes)
-        : program_(program), dialect_(dialect), callCodes_(callCodes) {}
+        : StaticCheck(program, dialect, callCodes, dialectOptions(dialect)) {}
+    StaticCheck(const gcode::Program& program, const gcode::Dialect& dialect, const macro::CallCodes& callCodes,
+                Options options)
+        : program_(program), dialect_(dialect), callCodes_(callCodes), options_(std::move(options)) {}
 
     std::vector<gcode::Diagnostic> findings() const;
 
 private:
+    static Options dialectOptions(const gcode::Dialect& dialect);
+
     const gcode::Program& program_;
     const gcode::Dialect& dialect_;
     const macro::CallCodes& callCodes_;
+    Options options_;
 };
 
 } // namespace m350::check

@@ -4,6 +4,7 @@
 
 #include "core/params/FanucParameters.h"
 #include "core/config/CallCodeParameters.h"
+#include "core/config/ControlOptionsToml.h"
 #include "core/config/HookFiles.h"
 #include "core/config/MachineFolder.h"
 #include "core/files/LastGoodCopy.h"
@@ -11,6 +12,7 @@
 #include "core/params/ParameterCatalogue.h"
 #include "core/params/ParameterLimits.h"
 #include "core/config/TomlReading.h"
+#include "core/macro/VariableMap.h"
 #include "core/config/SpindleLoadToml.h"
 #include "core/tools/ToolData.h"
 #include "core/tools/ToolTableFile.h"
@@ -125,7 +127,8 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                      "spindle_load.idle", "spindle_load.per_krpm", "spindle_load.per_cm3", "spindle_load.spike_factor",
                      "spindle_load.spike_ms", "reference_points", "reference_points.*", "tool_data",
                      "tool_data.offset_memory", "tool_data.random_changer", "interface_signals",
-                     "interface_signals.*"},
+                     "interface_signals.*", "variables", "variables.common", "coordinates",
+                     "coordinates.additional_systems", "coordinates.rotation"},
                     config.warnings);
     config.name = t["name"].value_or(folder.filename().string());
     std::string dialect = t["dialect"].value_or(std::string("m350"));
@@ -243,6 +246,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                                             "[interface_signals] are a FANUC's (#1000-#1133): this M350 machine "
                                             "ignores them"));
     }
+    readControlOptions(file, t, config);
     if (auto points = t["reference_points"].as_table()) {
         for (auto&& [key, value] : *points) {
             int number = numberKey(file, key.str(), key.source(), 1, 4, "reference point");
@@ -336,9 +340,19 @@ void loadVariables(const fs::path& folder, MachineConfig& config) {
     }
     toml::table t = parseToml(file);
     warnUnknownKeys(file, t, {"variables", "variables.*"}, config.warnings);
+    const macro::VariableMap map(*config.dialect, config.variableLayout);
     if (auto vars = t["variables"].as_table()) {
         for (auto&& [key, value] : *vars) {
-            config.variables[numberKey(file, key.str(), key.source(), 1, 9999, "variable")] = numberValue(file, value, key.str());
+            const int number = numberKey(file, key.str(), key.source(), 1, macro::VariableLayout::kLastVariable, "variable");
+            const double v = numberValue(file, value, key.str());
+            if (map.describe(number).kind == macro::VariableKind::Undefined) {
+                config.warnings.push_back(warningAt(file, key.source(),
+                                                    "#" + std::to_string(number) +
+                                                        " is no variable of this machine (machine.toml [variables] "
+                                                        "common lists its common variables); not loaded"));
+                continue;
+            }
+            config.variables[number] = v;
         }
     }
 }

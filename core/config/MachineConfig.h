@@ -6,6 +6,7 @@
 #include "core/params/ParameterTable.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Program.h"
+#include "core/macro/VariableLayout.h"
 #include "core/machine/SimulatedMachine.h"
 #include "core/machine/SpindleLoadModel.h"
 #include "core/macro/CallCodes.h"
@@ -32,7 +33,8 @@ struct LibraryFile {
 // A machine folder, as loaded: which dialect it speaks, its macro libraries, its parameters and
 // offsets, and the wiring of its IO. Files:
 //   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine], [reference_points], [homing],
-//                  [tool_setter], [floating_setter], [tools], [tool_data], [interface_signals]
+//                  [tool_setter], [floating_setter], [tools], [tool_data], [interface_signals],
+//                  [variables] common, [coordinates] (FANUC options)
 //   params.toml    [params] N = value (parameters 0-999; the rest stay 0; FANUC machines also 1000-99999)
 //   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
@@ -58,6 +60,12 @@ struct MachineConfig {
     std::map<int, std::string> fanucParameterOrigins; // where each was set, for messages: "params.toml:4:8"
     std::array<std::array<double, 5>, 9> offsets{}; // slots as interp::WorkOffsets numbers them
     std::map<int, double> variables;
+    // FANUC options the control has: [variables] common = ["100-499", ...] and [coordinates]
+    // additional_systems (G54.1 P1-Pn); unset, the dialect's (VariableLayout)
+    macro::VariableLayout variableLayout;
+    std::optional<bool> coordinateRotation; // [coordinates] rotation (G68/G69); unset: FANUC yes, M350 no
+    bool rotation() const { return coordinateRotation.value_or(dialect->id == gcode::DialectId::Fanuc); }
+    int additionalWorkSystems() const { return variableLayout.workSystems(*dialect); }
     int magazineCapacity = 0; // machines whose capacity is not a parameter (FANUC)
     std::vector<std::string> warnings; // values the panel would refuse, kept as written
     std::map<int, std::array<double, 5>> referencePoints; // G30 P2/P3 (FANUC G28: point 1), machine coordinates

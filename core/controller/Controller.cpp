@@ -32,7 +32,7 @@ std::string shortSeconds(double seconds) {
 Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)),
       tools_(*config_.dialect, config_.parameters, std::exchange(config_.toolTable, std::nullopt)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? this : nullptr),
-      interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters),
+      interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters, config_.variableLayout),
       magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_,
                  [this] { return status_.source(); }}),
       status_({config_, machine_, interp_, magazine_, executor_, program_, diagnostics_, state_, alarm_}, settings_),
@@ -58,6 +58,8 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
         tools_.setSourceFile(config_.toolTableFile);
     }
     interp_.setSpindleToolSource([this] { return spindleTool(); });
+    offsets_.setAdditionalCount(config_.additionalWorkSystems());
+    interp_.setCoordinateFeatures({config_.additionalWorkSystems(), config_.rotation()});
     for (int slot = 0; slot < interp::WorkOffsets::kSlots; ++slot) {
         for (int axis = 0; axis < machine::kAxisCount; ++axis) {
             offsets_.set(slot, axis, config_.offsets[static_cast<std::size_t>(slot)][static_cast<std::size_t>(axis)]);

@@ -73,6 +73,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
         case 113: return Value::of(s.lastM);
         case 119: return Value::of(s.spindleSpeed);
         case 120: return Value::of(s.selectedTool);
+        case 130: return Value::of(s.additionalSystem); // G54.1 P (0 under G54-G59)
         default: return Value::empty();
         }
     }

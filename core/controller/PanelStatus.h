@@ -28,7 +28,7 @@ struct PanelStatus {
     std::array<bool, machine::kAxisCount> axisShown{true, true, true, false, false};
     std::array<char, machine::kAxisCount> axisName{'X', 'Y', 'Z', 'A', 'B'};
     std::array<bool, machine::kAxisCount> axisRotary{};
-    int workSystem = 1; // #578: 0 = G92, 1..6 = G54..G59
+    int workSystem = 1; // #578: 0 = G92, 1..6 = G54..G59; FANUC: from 9 on G54.1 P1, P2 ...
     // Offsets in the variables' slot order: 0 G92, 1-6 G54-G59, 7 G52, 8 the common offset (公共偏置).
     std::array<machine::Axes, 9> workOffsets{};
 
@@ -73,5 +73,13 @@ struct PanelStatus {
     std::array<int, machine::kOutputCount> outputs{}; // OUT01-OUT21
     params::ParameterTable parameters; // as they stand now (tool Z offsets 930-945, setter 129-137, IO triples)
 };
+
+// The work system as the panel names it: "G92", "G54".."G59", "G54.1 P3".
+inline std::string workSystemName(int slot) {
+    if (slot >= 9) {
+        return "G54.1 P" + std::to_string(slot - 8);
+    }
+    return slot == 0 ? std::string("G92") : "G" + std::to_string(53 + slot);
+}
 
 } // namespace m350::controller

@@ -101,6 +101,7 @@ void Controller::reset() {
         machine_.blockTime(displayTime_ - machine_.time());
     }
     enterSafeState();
+    interp_.cancelRotation();
     remainder_ = {};
     liftedBy_ = 0.0;
     beforePauseHook_.reset();

@@ -2,6 +2,7 @@
 
 #include "core/common/EchoText.h"
 #include "core/controller/MagazineDriver.h"
+#include "core/controller/PanelStatus.h"
 #include "core/devices/Magazine.h"
 #include "core/gcode/Program.h"
 #include "core/interp/ModalInterpreter.h"
@@ -99,8 +100,10 @@ std::string StatusBoard::modalLine() const {
         line += gWord(s.groups[static_cast<std::size_t>(group)]);
         line += ' ';
     }
-    int slot = context_.interp.activeSlot();
-    line += slot == 0 ? "G92" : gWord(53 + slot);
+    line += workSystemName(context_.interp.activeSlot());
+    if (s.rotating()) {
+        line += " G68";
+    }
     char words[64];
     std::snprintf(words, sizeof words, " F%.0f S%.0f", s.feed, s.spindleSpeed);
     return line + words;

@@ -206,6 +206,11 @@ std::vector<machine::Axes> ModalInterpreter::cycleHoles(const Words& words, int 
     std::vector<machine::Axes> holes;
     machine::Axes hole = machine_.position();
     for (int i = 0; i < repeats; ++i) {
+        if (state_.rotating()) { // the holes of a pattern G68 turns (CoordinateRotation.cpp)
+            hole = turnedInPlane(hole, words);
+            holes.push_back(hole);
+            continue;
+        }
         for (int axis : axes.plane) {
             if (const WordValue* w = words.find(axisLetter(axis))) {
                 double value = w->value * axisUnit(axis);

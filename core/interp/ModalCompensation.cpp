@@ -43,14 +43,18 @@ void ModalInterpreter::compensatedMove(const machine::Axes& target, const Words&
     Eigen::Vector2d to = inPlane(target - offset);
     PathSegment segment = PathSegment::line(from, to);
     if (state_.group(1) == 2 || state_.group(1) == 3) {
-        Eigen::Vector2d center = from;
         static constexpr std::array<char, 3> kCenterLetter{'I', 'J', 'K'};
+        Eigen::Vector3d toCenter = Eigen::Vector3d::Zero();
         if (const macro::WordValue* c = words.find(kCenterLetter[static_cast<std::size_t>(u)])) {
-            center.x() += c->value * axisUnit(u);
+            toCenter(u) = c->value * axisUnit(u);
         }
         if (const macro::WordValue* c = words.find(kCenterLetter[static_cast<std::size_t>(v)])) {
-            center.y() += c->value * axisUnit(v);
+            toCenter(v) = c->value * axisUnit(v);
         }
+        if (state_.rotating()) {
+            turnVector(toCenter); // G68 turns the plane's I J K with the path
+        }
+        const Eigen::Vector2d center = from + Eigen::Vector2d(toCenter(u), toCenter(v));
         if (words.find('R')) {
             throw MacroError{AlarmCode::InvalidWord,
                              std::string("write arcs under cutter compensation with ") +

@@ -48,6 +48,7 @@ int groupOf(int code) {
     case 73: case 74: case 80: case 81: case 82: case 83: case 84: return 9;
     case 98: case 99: return 10;
     case 54: case 55: case 56: case 57: case 58: case 59: return 14;
+    case 68: case 69: return 16;
     default: return -1;
     }
 }
@@ -103,6 +104,9 @@ int ModalInterpreter::activeSlot() const {
     if (dialect_.id == gcode::DialectId::M350) {
         int slot = saturatingInt(parameters_.get(param::kCurrentWorkSystem));
         return (slot >= 0 && slot <= 6) ? slot : 1;
+    }
+    if (state_.additionalSystem > 0) {
+        return WorkOffsets::additionalSlot(state_.additionalSystem);
     }
     return state_.group(14) - 53;
 }
@@ -238,6 +242,9 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         // 7. motion
         if (!std::exchange(dynamicLength_, false)) [[likely]] {
             moveAxes(words);
+            if (state_.rotating()) [[unlikely]] {
+                noteAbsoluteCommand(words);
+            }
         }
         // 8. stops and program end
         for (const WordValue& m : words.m) {
@@ -252,6 +259,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 flushCompensation();
                 compensation_.reset();
                 state_.groups[7] = 40;
+                state_.groups[16] = 69; // a FANUC reset cancels the rotation
                 cancelCycle();
                 machine_.spindle(machine::SpindleState::Stop, 0.0);
                 machine_.coolant(false);
@@ -294,9 +302,18 @@ void ModalInterpreter::switchFunctionOutput(int outputTriple, bool on, std::opti
     }
 }
 
-bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, double value) {
+namespace {
+
+bool isAdditionalSystemCode(double value) { return std::abs(value - 54.1) < 1e-6; } // G54.1
+
+} // namespace
+
+bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, const CoordinateFeatures& features, double value) {
     if (dialect.lookAheadCodes && isLookAheadCode(value)) {
         return true;
+    }
+    if (isAdditionalSystemCode(value)) {
+        return features.additionalSystems > 0;
     }
     if (dialect.id != gcode::DialectId::M350 && std::abs(value - 43.1) < 1e-6) {
         return true; // LinuxCNC's dynamic tool length, where the machine keeps a tool.tbl
@@ -307,12 +324,17 @@ bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, double value) {
     }
     switch (code) {
     case 4: case 10: case 28: case 30: case 31: case 52: case 53: case 92: return true; // applyGCodes, moveAxes
+    case 68: case 69: return features.rotation;
     default: return groupOf(code) > 0;
     }
 }
 
 void ModalInterpreter::applyGCodes(const Words& words) {
+    if (state_.rotating() || words.hasG(68)) [[unlikely]] {
+        refuseUnderRotation(words);
+    }
     std::array<bool, 23> seen{};
+    const WordValue* g68 = nullptr;
     for (const WordValue& g : words.g) {
         if (dialect_.lookAheadCodes && lookAheadCode(g, words)) {
             continue;
@@ -320,6 +342,14 @@ void ModalInterpreter::applyGCodes(const Words& words) {
         const double value = g.value;
         if (std::abs(value - 43.1) < 1e-6 && dialect_.id != gcode::DialectId::M350) {
             setDynamicLength(g, words);
+            continue;
+        }
+        if (isAdditionalSystemCode(value)) [[unlikely]] {
+            if (seen[14]) {
+                invalid(g, "two G codes of the same group in one block");
+            }
+            seen[14] = true;
+            selectAdditionalSystem(words, g);
             continue;
         }
         int code = 0;
@@ -337,7 +367,19 @@ void ModalInterpreter::applyGCodes(const Words& words) {
                 invalid(g, "two G codes of the same group in one block");
             }
             seen[static_cast<std::size_t>(group)] = true;
+            if (group == 16) {
+                if (!features_.rotation) {
+                    invalid(g, "not a G code this machine knows");
+                }
+                if (code == 68) {
+                    g68 = &g; // after the block's plane, units and distance mode
+                    continue;
+                }
+            }
             state_.groups[static_cast<std::size_t>(group)] = code;
+            if (group == 14) {
+                state_.additionalSystem = 0;
+            }
             if (group == 14 && dialect_.id == gcode::DialectId::M350) {
                 parameters_.set(param::kCurrentWorkSystem, code - 53);
             }
@@ -383,6 +425,26 @@ void ModalInterpreter::applyGCodes(const Words& words) {
     if (seen[1] || (seen[9] && state_.group(9) == 80)) {
         cancelCycle(); // a cycle begun again starts from new drilling data and a new initial level
     }
+    if (g68) [[unlikely]] {
+        startRotation(words, *g68);
+    }
+}
+
+// G54.1 Pn selects additional work system n; without P, P1 (as GSK's FANUC-compatible 980MDc
+// documents it).
+void ModalInterpreter::selectAdditionalSystem(const Words& words, const WordValue& g) {
+    if (features_.additionalSystems <= 0) {
+        invalid(g, "not a G code this machine knows");
+    }
+    const WordValue* p = words.find('P');
+    const double number = p ? p->value : 1.0;
+    const int systems = features_.additionalSystems;
+    if (number != std::round(number) || number < 1 || number > systems) {
+        invalid(p ? *p : g, "G54.1 selects the additional work systems P1-P" + std::to_string(systems) +
+                                " of this machine (machine.toml [coordinates] additional_systems)");
+    }
+    state_.groups[14] = 54.1;
+    state_.additionalSystem = static_cast<int>(number);
 }
 
 } // namespace m350::interp

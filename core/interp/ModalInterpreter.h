@@ -29,33 +29,46 @@ namespace m350::interp {
 // Turns evaluated blocks into machine commands, keeping the modal state.
 //
 // Order of execution within one block (written once, followed by execute()):
-//   1. F, S, T, H, D words          5. work system (G54-G59)
+//   1. F, S, T, H, D words          5. work system (G54-G59, G54.1 Pn)
 //   2. spindle M3/M4/M5/M19, M8/M9  6. non-modal G4, G28, G53, G92
 //   3. plane, units, distance,      7. motion (G0 G1 G2 G3) with the axis words, or
-//      feed mode, return level,        the active canned cycle (G73 G74 G81-G84) at them
-//      canned cycle                 8. M0, M1, M2, M30
+//      feed mode, return level,        the active canned cycle (G73 G74 G81-G84) at them,
+//      canned cycle; G69, then G68     turned by G68 (CoordinateRotation.cpp)
+//      (its centre and angle)       8. M0, M1, M2, M30
 //   4. cutter compensation (G40-G42), tool length (G43 G44 G49: the H offset is read here),
 //      then G10 with the non-modal codes of 6, so `G43 H1 G10 L10 P1 Z0` applies tool 1's old
 //      length and then changes the table, as LinuxCNC orders it (a second G43 applies the new one)
 class ModalInterpreter : public macro::BlockSink {
 public:
+    // The coordinate functions FANUC sells as options, as the machine folder declares them
+    // (machine.toml [coordinates]): G54.1 P1-P`additionalSystems`, G68/G69 when `rotation`.
+    struct CoordinateFeatures {
+        int additionalSystems = 0;
+        bool rotation = false;
+    };
+
     ModalInterpreter(const gcode::Dialect& dialect, params::ParameterTable& parameters, WorkOffsets& offsets,
                      tools::ToolData& tools, machine::MachineInterface& machine);
 
     // G30 P2/P3 (and G28 on FANUC, point 1) go to these machine positions; G28 on the M350 goes to
     // the position after homing (params 122-126).
     void setReferencePoint(int number, const machine::Axes& position) { referencePoints_[number] = position; }
+    void setCoordinateFeatures(const CoordinateFeatures& features) { features_ = features; }
 
     macro::BlockOutcome execute(const macro::EvaluatedBlock& block) override;
     CycleContext cycleContext() const override;
     // Whether execute() acts on G`value` itself (not a macro call or a library's handler): what
     // `check` uses to say a G code is unknown without running.
-    static bool knowsGCode(const gcode::Dialect& dialect, double value);
+    static bool knowsGCode(const gcode::Dialect& dialect, const CoordinateFeatures& features, double value);
 
     const ModalState& state() const { return state_; }
     ModalState& state() { return state_; }
+    // RESET selects G69, as it does on controls with G68 (the ISO modes of Yaskawa and Siemens say
+    // so in as many words; a program's M02/M30 does it in execute()).
+    void cancelRotation() { state_.groups[16] = 69; }
 
-    // The active system's slot in WorkOffsets (1..6 for G54..G59; 0 for the M350's G92 system).
+    // The active system's slot in WorkOffsets (1..6 for G54..G59, from 9 on G54.1 P1.., 0 for the
+    // M350's G92 system).
     int activeSlot() const;
     // Total offset between machine and work coordinates for each axis, tool Z offset included.
     // Kept from block to block and computed again when what it is computed from changed.
@@ -190,7 +203,7 @@ private:
     static constexpr std::array<std::uint64_t, 2> kNotAPlainMove{
         (std::uint64_t{1} << 4) | (std::uint64_t{1} << 10) | (std::uint64_t{1} << 28) | (std::uint64_t{1} << 30) |
             (std::uint64_t{1} << 31) | (std::uint64_t{1} << 52) | (std::uint64_t{1} << 53),
-        std::uint64_t{1} << (92 - 64)}; // G4 G10 G28 G30 G31 G52 G53; G92
+        (std::uint64_t{1} << (68 - 64)) | (std::uint64_t{1} << (92 - 64))}; // G4 G10 G28 G30 G31 G52 G53; G68 G92
     void moveAxes(const Words& words) {
         // Most blocks are a plain move (G1 X.. Y..): none of those codes, no canned cycle
         if (!words.hasAnyG(kNotAPlainMove) && state_.group(9) == 80 &&
@@ -203,7 +216,22 @@ private:
         moveOtherwise(words);
     }
     void moveOtherwise(const Words& words); // the rest of moveAxes
-    machine::Axes targetFor(const Words& words, bool machineCoordinates) const;
+    machine::Axes targetFor(const Words& words, bool machineCoordinates) const {
+        if (state_.rotating() && !machineCoordinates) [[unlikely]] {
+            return rotatedTarget(words);
+        }
+        return plainTarget(words, machineCoordinates);
+    }
+    machine::Axes plainTarget(const Words& words, bool machineCoordinates) const;
+    // G68 (CoordinateRotation.cpp): the block's target with the plane's axes turned; `from` (machine
+    // coordinates) with the plane's words, as the program turned counts them, applied.
+    machine::Axes rotatedTarget(const Words& words) const;
+    machine::Axes turnedInPlane(const machine::Axes& from, const Words& words) const;
+    void turnVector(Eigen::Vector3d& vector) const; // an arc's I J K
+    void startRotation(const Words& words, const macro::WordValue& g68);
+    void refuseUnderRotation(const Words& words) const;
+    void noteAbsoluteCommand(const Words& words);
+    void selectAdditionalSystem(const Words& words, const macro::WordValue& g);
     void setCoordinateSystem(const Words& words); // G92, G52
     void setOffsets(const Words& words);          // G10
     void setToolOffsets(const Words& words, const macro::WordValue& g10, int kind); // G10 L1, L10-L13
@@ -271,7 +299,7 @@ private:
     struct OffsetInputs {
         std::uint64_t offsetsVersion = 0;
         std::uint64_t parametersVersion = 0;
-        std::array<std::uint64_t, 4> modal{};
+        std::array<std::uint64_t, 5> modal{};
         bool operator==(const OffsetInputs& other) const { // without a branch or memcmp a field
             std::uint64_t differ = (offsetsVersion ^ other.offsetsVersion) | (parametersVersion ^ other.parametersVersion);
             for (std::size_t i = 0; i < modal.size(); ++i) {
@@ -289,12 +317,14 @@ private:
         return {offsets_.version(),
                 parameters_.version(),
                 {std::bit_cast<std::uint64_t>(state_.groups[6]), std::bit_cast<std::uint64_t>(state_.groups[8]),
-                 std::bit_cast<std::uint64_t>(state_.groups[14]), std::bit_cast<std::uint64_t>(state_.lengthOffsetValue)}};
+                 std::bit_cast<std::uint64_t>(state_.groups[14]), std::bit_cast<std::uint64_t>(state_.lengthOffsetValue),
+                 static_cast<std::uint64_t>(state_.additionalSystem)}};
     }
     void refreshWorkOffset() const;
     machine::Axes computeWorkOffset() const;
 
     const gcode::Dialect& dialect_;
+    CoordinateFeatures features_;
     params::ParameterTable& parameters_;
     WorkOffsets& offsets_;
     tools::ToolData& tools_;

@@ -29,7 +29,7 @@ std::string millimetres(double v) {
 
 } // namespace
 
-machine::Axes ModalInterpreter::targetFor(const Words& words, bool machineCoordinates) const {
+machine::Axes ModalInterpreter::plainTarget(const Words& words, bool machineCoordinates) const {
     machine::Axes target = basePosition();
     const bool incremental = state_.incremental();
     const bool inches = state_.inches(); // else every axis unit is 1
@@ -160,6 +160,9 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
                 center(static_cast<Eigen::Index>(k)) = w->value * unit;
             }
         }
+        if (state_.rotating()) {
+            turnVector(center);
+        }
         spec.centerOffset = center;
     }
     auto arc = machine::makeArc(spec);
@@ -180,6 +183,9 @@ void ModalInterpreter::moveOtherwise(const Words& words) {
     }
     if (words.hasG(4)) {
         return; // in a G04 block, X is the dwell time (FANUC), not a move
+    }
+    if (words.hasG(68)) {
+        return; // its axis words are the centre of rotation (applyGCodes), R the angle
     }
     if (dialect_.lookAheadCodes && isLookAheadBlock(words)) {
         return; // its P and Q are the mode, not a canned cycle's data
@@ -323,9 +329,9 @@ void ModalInterpreter::setCoordinateSystem(const Words& words) {
     }
 }
 
-// FANUC G10: L2 P0-6 writes a work offset (P0 the external one), L20 sets system P so the current
-// position reads the given values (LinuxCNC's meaning). L1 and L10-L13 write tool offsets: FANUC's
-// P R forms and LinuxCNC's P<tool> forms with axis words (ToolTableCodes.cpp).
+// FANUC G10: L2 P0-6 writes a work offset (P0 the external one), L20 Pn the offset of the additional
+// system G54.1 Pn (both: G91 adds). L1 and L10-L13 write tool offsets: FANUC's P R forms and
+// LinuxCNC's P<tool> forms with axis words (ToolTableCodes.cpp); L0 reloads the tool table.
 void ModalInterpreter::setOffsets(const Words& words) {
     const WordValue& g10 = *std::find_if(words.g.begin(), words.g.end(), [](const WordValue& w) {
         return std::abs(w.value - 10) < 1e-9;
@@ -340,7 +346,8 @@ void ModalInterpreter::setOffsets(const Words& words) {
         return;
     }
     if (!l || !p) {
-        invalid(g10, "G10 needs L and P (L2 P1 X.. for G54, L20, L10-L13 P.. R.. for tool offsets, L1/L10 P<tool> Z..)");
+        invalid(g10, "G10 needs L and P (L2 P1 X.. for G54, L20 P1 X.. for G54.1 P1, L10-L13 P.. R.. for tool offsets, "
+                     "L1/L10 P<tool> Z..)");
     }
     int kind = roundToInt(l->value);
     int number = roundToInt(p->value);
@@ -352,13 +359,18 @@ void ModalInterpreter::setOffsets(const Words& words) {
         setToolOffsets(words, g10, kind);
         return;
     }
-    if ((kind != 2 && kind != 20) || number < 0 || number > 6) {
-        invalid(g10, "supported: L2 or L20 with P0-P6 (P0 external, P1-P6 G54-G59), L1 / L10-L13 P R for tool offsets, "
-                     "L1 / L10 / L11 P<tool> with axis words for the tool table");
+    const int systems = features_.additionalSystems;
+    if (kind == 20 && (number < 1 || number > systems)) {
+        invalid(g10, systems > 0 ? "G10 L20 writes the additional work systems P1-P" + std::to_string(systems) +
+                                       " (G54.1) of this machine"
+                                 : std::string("G10 L20 writes the additional work systems (G54.1), which this machine "
+                                               "does not have (machine.toml [coordinates] additional_systems)"));
     }
-    int slot = number == 0 ? WorkOffsets::kCommon : number;
-    machine::Axes position = machine_.position();
-    machine::Axes total = workOffset();
+    if (kind != 20 && (kind != 2 || number < 0 || number > 6)) {
+        invalid(g10, "supported: L2 with P0-P6 (P0 external, P1-P6 G54-G59), L20 P1-Pn for G54.1 Pn, L1 / L10-L13 P R "
+                     "for tool offsets, L1 / L10 / L11 P<tool> with axis words for the tool table");
+    }
+    const int slot = kind == 20 ? WorkOffsets::additionalSlot(number) : number == 0 ? WorkOffsets::kCommon : number;
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         const WordValue* w = words.find(machine::kAxisNames[static_cast<std::size_t>(axis)]);
         if (!w) {
@@ -366,13 +378,7 @@ void ModalInterpreter::setOffsets(const Words& words) {
         }
         double current = offsets_.get(slot, axis);
         double value = w->value * axisUnit(axis);
-        if (kind == 2) {
-            offsets_.set(slot, axis, state_.incremental() ? current + value : value);
-        } else {
-            // system P replaces the active one once selected: everything else stays in the sum
-            double others = total(axis) - offsets_.get(activeSlot(), axis);
-            offsets_.set(slot, axis, position(axis) - others - value);
-        }
+        offsets_.set(slot, axis, state_.incremental() ? current + value : value);
     }
 }
 

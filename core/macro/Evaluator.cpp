@@ -78,10 +78,10 @@ int Evaluator::variableNumber(gcode::ExprId variableNode) {
     const ExprNode& node = pool_[variableNode];
     double n = node.lhs == gcode::kNoExpr ? node.number : number(node.lhs);
     double rounded = std::round(n);
-    if (std::abs(n - rounded) > 1e-6 || rounded < 0 || rounded > VariableMap::kMaxVariable) {
+    if (std::abs(n - rounded) > 1e-6 || rounded < 0 || rounded > store_.map().lastNumber()) {
         throw MacroError{AlarmCode::UndefinedVariable,
                          "#[" + readableNumber(n) + "]: variable numbers are whole numbers from 0 to " +
-                             std::to_string(VariableMap::kMaxVariable),
+                             std::to_string(store_.map().lastNumber()),
                          node.column};
     }
     return static_cast<int>(rounded);
@@ -90,10 +90,7 @@ int Evaluator::variableNumber(gcode::ExprId variableNode) {
 Value Evaluator::readVariable(int number, std::uint32_t column) {
     VariableInfo info = store_.map().describe(number);
     if (info.kind == VariableKind::Undefined) {
-        throw MacroError{AlarmCode::UndefinedVariable,
-                         "#" + std::to_string(number) + " does not exist in the " + std::string(dialect_.name) +
-                             " dialect",
-                         column};
+        throw MacroError{AlarmCode::UndefinedVariable, store_.map().undefinedText(number), column};
     }
     return VariableStore::ownsKind(info.kind) ? store_.read(info, number) : machine_.readSystem(info, number);
 }
@@ -101,10 +98,7 @@ Value Evaluator::readVariable(int number, std::uint32_t column) {
 void Evaluator::writeVariable(int number, Value value, std::string_view text, std::uint32_t column) {
     VariableInfo info = store_.map().describe(number);
     if (info.kind == VariableKind::Undefined) {
-        throw MacroError{AlarmCode::UndefinedVariable,
-                         "#" + std::to_string(number) + " does not exist in the " + std::string(dialect_.name) +
-                             " dialect",
-                         column};
+        throw MacroError{AlarmCode::UndefinedVariable, store_.map().undefinedText(number), column};
     }
     if (info.readOnly) {
         throw MacroError{AlarmCode::ReadOnlyVariable,

@@ -1,5 +1,7 @@
 #include "core/macro/VariableMap.h"
 
+#include <algorithm>
+
 namespace m350::macro {
 
 namespace {
@@ -7,17 +9,25 @@ namespace {
 // Work-offset slots shared by both dialects' numbering.
 constexpr int kSlotG92 = 0;  // M350 #800-#804 (FANUC: none)
 constexpr int kSlotCommon = 8; // M350 #840-#844, FANUC EXT #5201-#5205
+constexpr int kFirstRetained = 500; // FANUC: common variables from #500 on survive power-off
 
 } // namespace
 
-VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable + 1, 0) {
+void VariableMap::add(int first, int last, VariableKind kind, bool readOnly, int indexBase) {
+    ranges_.push_back({first, last, kind, readOnly, indexBase});
+    lastNumber_ = std::max(lastNumber_, last);
+    if (first > kDenseLast) {
+        high_.push_back(ranges_.size() - 1);
+        return;
+    }
+    for (int n = first; n <= std::min(last, kDenseLast); ++n) {
+        lookup_[static_cast<std::size_t>(n)] = static_cast<std::uint16_t>(ranges_.size());
+    }
+}
+
+VariableMap::VariableMap(const gcode::Dialect& dialect, const VariableLayout& layout)
+    : lookup_(kDenseLast + 1, 0), dialectName_(dialect.name) {
     using K = VariableKind;
-    auto add = [this](int first, int last, K kind, bool readOnly = false, int indexBase = 0) {
-        ranges_.push_back({first, last, kind, readOnly, indexBase});
-        for (int n = first; n <= last; ++n) {
-            lookup_[static_cast<std::size_t>(n)] = static_cast<std::uint16_t>(ranges_.size());
-        }
-    };
     // Later entries override earlier ones where they overlap.
     if (dialect.id == gcode::DialectId::M350) {
         add(0, 49, K::Local);
@@ -50,10 +60,21 @@ VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable +
         add(3000, 3000, K::Alarm);
         add(2990, 2990, K::SpindleLoad, true); // a simulator extra, as FANUC's #1032 below
     } else {
+        // numbers run to six digits (the 30i's); which of them exist is the machine's
+        lastNumber_ = VariableLayout::kLastVariable;
         add(0, 0, K::Null, true);
         add(1, 33, K::Local);
-        add(100, 199, K::Common);
-        add(500, 999, K::Retained);
+        // the machine's common variables: those from #500 on are kept at power-off (variables.toml)
+        for (const VariableRange& r : layout.commonRanges(dialect)) {
+            commonText_ += (commonText_.empty() ? "#" : ", #") + std::to_string(r.first) +
+                           (r.last > r.first ? "-#" + std::to_string(r.last) : std::string());
+            if (r.first < kFirstRetained) {
+                add(r.first, std::min(r.last, kFirstRetained - 1), K::Common);
+            }
+            if (r.last >= kFirstRetained) {
+                add(std::max(r.first, kFirstRetained), r.last, K::Retained);
+            }
+        }
         // the interface signals, as the machine folder's [interface_signals] wires them (a PMC may
         // copy the spindle load register, the article's R1212-R1213, to G54-G55: #1032)
         add(1000, 1015, K::InterfaceInput, true, 0);
@@ -77,14 +98,45 @@ VariableMap::VariableMap(const gcode::Dialect& dialect) : lookup_(kMaxVariable +
         for (int slot = 1; slot <= 6; ++slot) {
             add(5201 + slot * 20, 5205 + slot * 20, K::WorkOffset, false, slot * 8);
         }
+        // G54.1 Pn, axis a (0 X .. 4 B): #7001 + 20(n-1) + a for P1-P48, and on a control with more
+        // systems (the 30i's 300) #14001 + 20(n-1) + a for all of them
+        const int systems = layout.workSystems(dialect);
+        for (int n = 1; n <= systems; ++n) {
+            const int slot = kFirstAdditionalSlot + n - 1;
+            if (n <= 48) {
+                add(7001 + 20 * (n - 1), 7005 + 20 * (n - 1), K::WorkOffset, false, slot * 8);
+            }
+            if (systems > 48) {
+                add(14001 + 20 * (n - 1), 14005 + 20 * (n - 1), K::WorkOffset, false, slot * 8);
+            }
+        }
     }
 }
 
+std::vector<VariableRange> VariableMap::rangesOf(VariableKind kind) const {
+    std::vector<VariableRange> out;
+    for (const Range& r : ranges_) {
+        if (r.kind == kind) {
+            out.push_back({r.first, r.last});
+        }
+    }
+    return out;
+}
+
 VariableInfo VariableMap::describe(int number) const {
-    if (number < 0 || number > kMaxVariable) {
+    if (number < 0 || number > lastNumber_) {
         return {};
     }
-    std::uint16_t r = lookup_[static_cast<std::size_t>(number)];
+    std::size_t r = 0;
+    if (number <= kDenseLast) {
+        r = lookup_[static_cast<std::size_t>(number)];
+    } else {
+        for (std::size_t i : high_) {
+            if (number >= ranges_[i].first && number <= ranges_[i].last) {
+                r = i + 1;
+            }
+        }
+    }
     if (r == 0) {
         return {};
     }
@@ -132,6 +184,14 @@ std::string_view kindName(VariableKind kind) {
     case VariableKind::System: return "system";
     }
     return "undefined";
+}
+
+std::string VariableMap::undefinedText(int number) const {
+    std::string text = "#" + std::to_string(number) + " does not exist in the " + std::string(dialectName_) + " dialect";
+    if (!commonText_.empty() && ((number >= 100 && number <= 999) || number >= 20000)) {
+        text += " (this machine's common variables are " + commonText_ + ": machine.toml [variables] common)";
+    }
+    return text;
 }
 
 std::string VariableMap::describeText(int number) const {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/gcode/Dialect.h"
+#include "core/macro/VariableLayout.h"
 
 #include <cstdint>
 #include <string>
@@ -15,10 +16,10 @@ enum class VariableKind : std::uint8_t {
     Undefined,       // no such variable: reading or writing it is an alarm
     Null,            // FANUC #0: always vacant, read-only
     Local,           // per call level
-    Common,          // FANUC #100-#199 (cleared at reset), M350 #50-#499 user/system area 1
-    Retained,        // FANUC #500-#999, kept in the machine folder
+    Common,          // FANUC #100-#199 or as the machine declares below #500 (cleared at reset), M350 #50-#499
+    Retained,        // FANUC #500-#999 and the machine's declared ranges from #500 on, kept in the machine folder
     Parameter,       // M350 #500-#1499: parameter (n - 500)
-    WorkOffset,      // M350 #800-#844, FANUC #5221..: coordinate system offsets
+    WorkOffset,      // M350 #800-#844, FANUC #5221.., G54.1 Pn #7001.. and #14001..: coordinate system offsets
     MachinePosition, // M350 #880-#884, FANUC #5021-#5025 (waits for motion)
     WorkPosition,    // M350 #850-#879, FANUC #5041-#5045 (waits for motion)
     BlockEnd,        // FANUC #5001-#5005: end point of the last block, in work coordinates
@@ -52,12 +53,22 @@ struct VariableInfo {
 
 class VariableMap {
 public:
-    explicit VariableMap(const gcode::Dialect& dialect);
+    explicit VariableMap(const gcode::Dialect& dialect, const VariableLayout& layout = {});
 
+    // Variables the macro layer stores lie below this or in a machine's declared common ranges.
     static constexpr int kMaxVariable = 9999;
+    // The slot in the work offsets (interp::WorkOffsets) of G54.1 P1; Pn is this + n - 1.
+    static constexpr int kFirstAdditionalSlot = 9;
 
     VariableInfo describe(int number) const;
     std::string describeText(int number) const;
+    // What the alarm and `check` say of a number that is no variable here.
+    std::string undefinedText(int number) const;
+    // What a #[expression] may reach before it is no variable number at all: M350 #9999, FANUC
+    // #999999 (the 30i's six digits), whether or not this machine has a variable there.
+    int lastNumber() const { return lastNumber_; }
+    // The ranges of one kind, in the order they were added (VariableStore clears the common ones).
+    std::vector<VariableRange> rangesOf(VariableKind kind) const;
 
 private:
     struct Range {
@@ -67,8 +78,15 @@ private:
         bool readOnly;
         int indexBase; // index = number - first + indexBase
     };
+    static constexpr int kDenseLast = 19999; // through the 30i's G54.1 P300 (#19981-#19985)
+    void add(int first, int last, VariableKind kind, bool readOnly = false, int indexBase = 0);
+
     std::vector<Range> ranges_;
-    std::vector<std::uint16_t> lookup_; // variable number -> range index + 1 (0 = undefined)
+    std::vector<std::uint16_t> lookup_; // variable number up to kDenseLast -> range index + 1 (0 = undefined)
+    std::vector<std::size_t> high_;     // indices into ranges_ of ranges above kDenseLast
+    int lastNumber_ = kMaxVariable;
+    std::string_view dialectName_;
+    std::string commonText_; // FANUC: "#100-#199, #500-#999", the machine's common variables
 };
 
 std::string_view kindName(VariableKind kind);

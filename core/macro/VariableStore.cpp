@@ -2,8 +2,9 @@
 
 namespace m350::macro {
 
-VariableStore::VariableStore(const gcode::Dialect& dialect, params::ParameterTable& parameters)
-    : dialect_(dialect), parameters_(parameters), map_(dialect),
+VariableStore::VariableStore(const gcode::Dialect& dialect, params::ParameterTable& parameters,
+                             const VariableLayout& layout)
+    : dialect_(dialect), parameters_(parameters), map_(dialect, layout),
       globals_(VariableMap::kMaxVariable + 1, dialect.hasVacant ? Value::empty() : Value::of(0)) {
     pushLocals();
 }
@@ -46,7 +47,12 @@ Value VariableStore::read(const VariableInfo& info, int number) const {
     case VariableKind::Null: return Value::empty();
     case VariableKind::Local: return localSlot(number);
     case VariableKind::Parameter: return Value::of(parameters_.get(info.index));
-    default: return globals_[static_cast<std::size_t>(number)];
+    default:
+        if (number > VariableMap::kMaxVariable) {
+            auto it = declared_.find(number);
+            return it == declared_.end() ? unset() : it->second;
+        }
+        return globals_[static_cast<std::size_t>(number)];
     }
 }
 
@@ -54,17 +60,25 @@ void VariableStore::write(const VariableInfo& info, int number, Value value) {
     switch (info.kind) {
     case VariableKind::Local: localSlot(number) = value; break;
     case VariableKind::Parameter: parameters_.set(info.index, value.asNumber()); break;
-    default: globals_[static_cast<std::size_t>(number)] = value; break;
+    default:
+        if (number > VariableMap::kMaxVariable) {
+            declared_[number] = value;
+        } else {
+            globals_[static_cast<std::size_t>(number)] = value;
+        }
+        break;
     }
 }
 
 void VariableStore::reset() {
     locals_.clear();
     pushLocals();
-    Value cleared = dialect_.hasVacant ? Value::empty() : Value::of(0);
-    for (int n = 0; n <= VariableMap::kMaxVariable; ++n) {
-        if (map_.describe(n).kind == VariableKind::Common && dialect_.hasVacant) {
-            globals_[static_cast<std::size_t>(n)] = cleared;
+    if (!dialect_.hasVacant) {
+        return;
+    }
+    for (const VariableRange& r : map_.rangesOf(VariableKind::Common)) {
+        for (int n = r.first; n <= r.last; ++n) {
+            write({VariableKind::Common, false, 0}, n, Value::empty());
         }
     }
 }

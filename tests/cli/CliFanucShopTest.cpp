@@ -256,14 +256,14 @@ TEST_F(CliTest, ProgramsForOtherControlsAreRefusedWhereTheyStand) {
     const std::string machines = M350_MACHINES_DIR;
     write("haas.nc", "%\nO00010(HAAS VF2)\nG103P1\n#10100=5.\nG00X1.\nM30\n%\n");
     write("brother.nc", "%\nO0001(BROTHER S700)\nG90G00X0.Y0.\nG100T1\nM30\n%\n");
-    for (const char* machine : {"fanuc-0i", "fanuc-umbrella", "fanuc-ts27r"}) {
+    for (const char* machine : {"fanuc-0i", "fanuc-umbrella", "fanuc-ts27r", "fanuc-30i"}) {
         const std::string config = machines + "/" + machine;
         ProcessResult haas = sim({"check", "haas.nc", "--config", config});
         EXPECT_EQ(haas.exitStatus, kExitError) << machine;
         EXPECT_NE(haas.err.find("haas.nc:3:1: G103: not a G code this machine knows"), std::string::npos)
             << machine << "\n"
             << haas.err;
-        EXPECT_NE(haas.err.find("haas.nc:4:1: #[10100]"), std::string::npos) << machine << "\n" << haas.err;
+        EXPECT_NE(haas.err.find("haas.nc:4:1: #10100 does not exist"), std::string::npos) << machine << "\n" << haas.err;
         ProcessResult run = sim({"run", "haas.nc", "--config", config});
         EXPECT_EQ(run.exitStatus, kExitAlarm) << machine;
         json a = output(run)["alarm"];

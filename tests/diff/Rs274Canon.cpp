@@ -61,8 +61,10 @@ class CanonReader {
         } else if (name == "USE_TOOL_LENGTH_OFFSET" && n.size() >= 3) {
             tool_ = scaled(n, 0);
         } else if (name == "SET_XY_ROTATION") {
-            if (n.empty() || std::abs(n[0]) > 1e-12) {
-                problem("a rotated coordinate system is not followed", line);
+            if (n.empty()) {
+                problem("a rotation without an angle", line);
+            } else {
+                rotation_ = n[0] * std::numbers::pi / 180.0;
             }
         } else if (name == "SELECT_PLANE") {
             readPlane(arguments, line);
@@ -134,8 +136,12 @@ class CanonReader {
         const Point start = last_;
         move("arc", end, line);
         const Point& to = run_.moves.back().machine;
-        const double cFirst = n[2] * scale_ + offset(first);
-        const double cSecond = n[3] * scale_ + offset(second);
+        Point centre = end;
+        centre[first] = n[2] * scale_;
+        centre[second] = n[3] * scale_;
+        centre = toMachine(centre);
+        const double cFirst = centre[first];
+        const double cSecond = centre[second];
         const int turns = static_cast<int>(std::lround(n[4]));
         if (turns == 0) {
             problem("an arc of 0 turns", line);
@@ -158,13 +164,26 @@ class CanonReader {
         run_.moves.back().arcLength = std::hypot(radius * sweep, to[normal] - start[normal]);
     }
 
-    double offset(std::size_t axis) const { return g5x_[axis] + g92_[axis] + tool_[axis]; }
+    // As LinuxCNC's canon turns a program position into a machine one (emccanon.cc,
+    // rotate_and_offset_pos): the G92 offset added, then turned about Z by the G5x system's
+    // rotation (G10 L2 R), then the G5x and tool offsets added.
+    Point toMachine(const Point& canonical) const {
+        Point p{};
+        for (std::size_t i = 0; i < 3; ++i) {
+            p[i] = canonical[i] + g92_[i];
+        }
+        const double x = p[0];
+        const double y = p[1];
+        p[0] = x * std::cos(rotation_) - y * std::sin(rotation_);
+        p[1] = x * std::sin(rotation_) + y * std::cos(rotation_);
+        for (std::size_t i = 0; i < 3; ++i) {
+            p[i] += g5x_[i] + tool_[i];
+        }
+        return p;
+    }
 
     void move(const char* kind, const Point& canonical, const std::string& line) {
-        CanonMove m{kind, {}, 0.0, line};
-        for (std::size_t i = 0; i < 3; ++i) {
-            m.machine[i] = canonical[i] + offset(i);
-        }
+        CanonMove m{kind, toMachine(canonical), 0.0, line};
         last_ = m.machine;
         run_.moves.push_back(std::move(m));
     }
@@ -179,6 +198,7 @@ class CanonReader {
     Point g5x_{};
     Point g92_{};
     Point tool_{};
+    double rotation_ = 0.0; // radians, counter-clockwise about Z
     Point last_{}; // machine position after the last move: where rs274 starts, with no offsets, is 0
 };
 

@@ -31,7 +31,9 @@ struct CanonRun {
 // experiment: with G10 L2 P1 X100 and G54 active, `G53 G0 X7` prints STRAIGHT_TRAVERSE(-93, ...);
 // with G52 X10 (G92 offset 10), `G0 X0` prints X0; with G43 H1 and a 12.7 mm tool, `G0 Z10` prints
 // Z10 beside USE_TOOL_LENGTH_OFFSET(0 0 12.7, ...). So the machine position is
-// canonical + G5x + G92 + tool offset, every term scaled to millimetres.
+// canonical + G5x + G92 + tool offset, every term scaled to millimetres. A rotation of the G5x
+// system (G10 L2 R, announced as SET_XY_ROTATION) turns the program position plus the G92 offset
+// about Z before the G5x and tool offsets are added, as LinuxCNC's emccanon.cc does.
 //
 // ARC_FEED(first_end, second_end, first_centre, second_centre, turns, axis_end, a, b, c) names its
 // axes by the plane of the last SELECT_PLANE: XY -> (X, Y, axis Z), XZ -> (Z, X, axis Y),

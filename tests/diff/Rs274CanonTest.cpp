@@ -101,8 +101,26 @@ TEST(Rs274Canon, InchesAreScaledWhenPrinted) {
     expectAt(run.moves[1], 50.8, 76.2, 0);
 }
 
-TEST(Rs274Canon, RotationIsAProblem) {
-    const CanonRun run = readCanonOutput("   10 N..... SET_XY_ROTATION(30.0000)\n");
+// G10 L2 P1 X110 Y70 R-45 / G52 X-10 Y-20 / G0 X10 Y20 / G1 X30 Y20 / G2 X30 Y0 I0 J-10 (from X30 Y20)
+TEST(Rs274Canon, ARotatedSystemTurnsTheProgramPositionWithItsG92Offset) {
+    const CanonRun run = readCanonOutput(R"(    9 N..... SET_G5X_OFFSET(1, 110.0000, 70.0000, 0.0000, 0.0000, 0.0000, 0.0000)
+   10 N..... SET_XY_ROTATION(-45.0000)
+   11 N..... SET_G92_OFFSET(-10.0000, -20.0000, 0.0000, 0.0000, 0.0000, 0.0000)
+   13 N..... STRAIGHT_TRAVERSE(10.0000, 20.0000, 0.0000, 0.0000, 0.0000, 0.0000)
+   15 N..... STRAIGHT_FEED(30.0000, 20.0000, 0.0000, 0.0000, 0.0000, 0.0000)
+   16 N..... ARC_FEED(30.0000, 0.0000, 30.0000, 10.0000, -1, 0.0000, 0.0000, 0.0000, 0.0000)
+)");
+    ASSERT_EQ(run.moves.size(), 3u);
+    EXPECT_TRUE(run.problems.empty());
+    const double h = std::sqrt(0.5);
+    expectAt(run.moves[0], 110, 70, 0);
+    expectAt(run.moves[1], 110 + 20 * h, 70 - 20 * h, 0);
+    expectAt(run.moves[2], 110 + 20 * h - 20 * h, 70 - 20 * h - 20 * h, 0);
+    EXPECT_NEAR(run.moves[2].arcLength, 10 * std::numbers::pi, 1e-9); // a half circle, turned
+}
+
+TEST(Rs274Canon, ARotationWithoutAnAngleIsAProblem) {
+    const CanonRun run = readCanonOutput("   10 N..... SET_XY_ROTATION()\n");
     EXPECT_EQ(run.problems.size(), 1u);
 }
 

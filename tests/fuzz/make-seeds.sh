@@ -26,6 +26,12 @@ for dir in tests/golden/*/; do
     [[ "$name" == fanuc-* ]] && machine=1 # fanuc-ts27r
     seed "$dir/input.nc" evaluator "$name.nc" "$machine"
 done
+# the differential programs are FANUC programs of the positioning codes (G10, G52, G68, G54.1 ...)
+for program in tests/diff/programs/*.nc; do
+    name=diff-$(basename "$program")
+    seed "$program" parser "$name"
+    seed "$program" evaluator "$name" 1 # fanuc-ts27r
+done
 for program in "$machines"/*/slib-*.nc "$machines"/*/T.nc "$machines"/fanuc-*/*.nc; do
     name=$(basename "$(dirname "$program")")-$(basename "$program")
     seed "$program" parser "$name"

@@ -1,6 +1,8 @@
 // The Monitor's sub-pages (坐标管理, 分中, 加工统计) and the 系统日志, through the operator's path.
 #include "tests/ui/PanelHarness.h"
 
+#include "core/config/MachineConfig.h"
+
 #include "ui/pages/CoordPage.h"
 #include "ui/pages/LogPage.h"
 #include "ui/pages/MiddlePage.h"
@@ -11,6 +13,9 @@
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
+
+#include <filesystem>
+#include <string>
 
 namespace m350::test {
 
@@ -152,6 +157,28 @@ TEST(LogPage, OperationsAndAlarmsAreLoggedNewestFirstAndKept) {
         ASSERT_TRUE(file.open(QIODevice::ReadOnly));
         EXPECT_TRUE(file.readAll().contains("mdi\tG0 X1"));
     }
+}
+
+} // namespace m350::test
+
+namespace m350::test {
+
+// On a FANUC with the additional work systems the Monitor names the one in force, and the modal
+// line says G68 while the program is turned.
+TEST(MonitorPage, ItNamesAnAdditionalWorkSystem) {
+    QTemporaryDir dir;
+    const std::filesystem::path folder = std::filesystem::path(dir.path().toStdString()) / "fanuc-30i";
+    std::filesystem::copy(config::bundledMachinesDirectory() + "/fanuc-30i", folder,
+                          std::filesystem::copy_options::recursive);
+    PanelHarness panel(QString::fromStdString(folder.string()));
+    panel.loadProgram("g54-1.nc", "G10 L20 P123 X5.\nG54.1 P123\nG68 X0 Y0 R15.\nM00\nG69\nM30\n");
+    panel.key("START");
+    panel.advance(0.5);
+    panel.key("MONITOR");
+    auto* monitor = panel.page<ui::MonitorPage>();
+    EXPECT_EQ(monitor->infoText("coord"), QStringLiteral("G54.1 P123"));
+    const std::string modal = panel.session().latest()->status.modalLine;
+    EXPECT_NE(modal.find(" G54.1 P123 G68 "), std::string::npos) << modal;
 }
 
 } // namespace m350::test

@@ -49,6 +49,7 @@ const std::vector<Changer> kChangers{{"m350-linear16", false},   {"m350-rack-top
                                      {"m350-multi-head", true},  {"fanuc-umbrella", true}};
 const std::map<std::string, std::string> kNoChanger{
     {"fanuc-0i", "a plain mill without a magazine"},
+    {"fanuc-30i", "a machining centre for the 30i's coordinate and variable options, without a magazine"},
     {"fanuc-ts27r", "no magazine: --tool says which tool is in the spindle"},
     {"m350-manual", "no magazine: the operator changes every tool by hand at an extern START prompt"},
 };

@@ -25,13 +25,16 @@ TEST(PositioningFanuc, G10L2WritesTheWorkOffsetAbsoluteOrIncremental) {
     EXPECT_DOUBLE_EQ(run.number(105), -31); // machine Z = 0 + G54 -30 + external -1
 }
 
-TEST(PositioningFanuc, G10L20MakesTheCurrentPositionReadTheGivenValue) {
-    auto run = runFanuc(lines({"G53 X40 Y10", "G10 L20 P2 X0 Y5", "G55", "#100 = #5041", "#101 = #5042",
-                               "#102 = #5241", "M30"}));
+// FANUC's L20 is the additional work systems' L2 (G54.1 Pn), not LinuxCNC's "set so the tool
+// reads this" (which a FANUC does not have).
+TEST(PositioningFanuc, G10L20WritesAnAdditionalSystemsOffsetAbsoluteOrIncremental) {
+    auto run = runFanuc(lines({"G53 X40 Y10", "G90 G10 L20 P2 X7 Y5", "#100 = #7021", "#101 = #7022",
+                               "G91 G10 L20 P2 X1", "G90", "#102 = #7021", "#103 = #5041", "M30"}));
     ASSERT_EQ(run.report.status, controller::RunStatus::Ok) << run.alarmText();
-    EXPECT_DOUBLE_EQ(run.number(100), 0);
+    EXPECT_DOUBLE_EQ(run.number(100), 7);
     EXPECT_DOUBLE_EQ(run.number(101), 5);
-    EXPECT_DOUBLE_EQ(run.number(102), 40);
+    EXPECT_DOUBLE_EQ(run.number(102), 8);
+    EXPECT_DOUBLE_EQ(run.number(103), 40); // G54 still active: writing P2 moved nothing
 }
 
 TEST(PositioningFanuc, G43AddsAndG44SubtractsTheToolLengthG49Cancels) {

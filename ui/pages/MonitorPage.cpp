@@ -26,7 +26,7 @@ QString clock(double seconds) {
         .arg(total % 60, 2, 10, QLatin1Char('0'));
 }
 
-QString workSystemName(int slot) { return slot == 0 ? QStringLiteral("G92") : QStringLiteral("G%1").arg(53 + slot); }
+QString workSystemName(int slot) { return QString::fromStdString(controller::workSystemName(slot)); }
 
 const QStringList& infoNames() {
     static const QStringList names{"coord", "fro", "sro", "sjr", "feed", "spindle", "tool", "total", "pieces", "time", "jog"};

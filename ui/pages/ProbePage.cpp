@@ -270,7 +270,7 @@ void ProbePage::render(const PanelSnapshot& snapshot) {
     const controller::PanelStatus& s = snapshot.status;
     const params::ParameterTable& p = s.parameters;
     dro_->render(snapshot);
-    fields_["coord"]->setText(s.workSystem == 0 ? QStringLiteral("G92") : QStringLiteral("G%1").arg(53 + s.workSystem));
+    fields_["coord"]->setText(QString::fromStdString(controller::workSystemName(s.workSystem)));
     fields_["tool"]->setText(QStringLiteral("T%1").arg(s.tool));
     fields_["thickness"]->setText(number(p.get(kThickness)));
     fields_["x"]->setText(number(p.get(kSetterX)));

@@ -1,0 +1,164 @@
+// FANUC's coordinate system rotation, G68 / G69 (an option of the 0i and the 30i: machine.toml
+// [coordinates] rotation). `G17 G68 X_ Y_ R_` turns what the program says after it about the point
+// X Y (absolute work coordinates; the tool's position for an axis left out) by R degrees,
+// counter-clockwise seen from the plane's normal; G69 ends it. As FANUC's operator's manuals have it:
+//   - an incremental command turns with the program: its move is the written one, turned;
+//   - until an absolute command names an axis of the plane, the program turns about where the tool
+//     stood at G68 (so a plane axis left out of that first absolute command reads from there);
+//   - arcs turn whole: their end point and their I J K; R is a length and stays;
+//   - reference returns (G27-G30) and changes of the coordinate system (G52-G59, G54.1, G92) must not
+//     be given in G68 mode, nor another plane: here they are refused at the block;
+//   - cutter compensation and tool length act on the turned path (they follow in ModalCompensation).
+// The DRO and #5041-#5045 stay in the unturned work coordinates (FANUC's default display; Mach4's
+// manual, which follows FANUC here, says the same), as do #5001-#5005.
+#include "core/interp/ModalInterpreter.h"
+
+#include "core/common/Numeric.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace m350::interp {
+
+using macro::WordValue;
+
+namespace {
+
+char letterOf(int axis) { return machine::kAxisNames[static_cast<std::size_t>(axis)]; }
+
+std::string planeName(int u, int v) { return std::string(1, letterOf(u)) + " " + letterOf(v); }
+
+} // namespace
+
+void ModalInterpreter::startRotation(const Words& words, const WordValue& g68) {
+    for (char c : {'I', 'J', 'K'}) {
+        if (const WordValue* w = words.find(c)) {
+            invalid(*w, "G68 with I, J, K is FANUC's three-dimensional coordinate conversion, which is not "
+                        "simulated; G68 here turns the plane of G17 / G18 / G19 (G68 X_ Y_ R_)");
+        }
+    }
+    const PlaneAxes plane = planeAxes(state_.group(2));
+    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
+        const WordValue* w = words.find(letterOf(axis));
+        if (w && axis != plane.u && axis != plane.v) {
+            invalid(*w, "G68 takes the centre of rotation on the plane's axes (" + planeName(plane.u, plane.v) +
+                            ") and R, the angle; this is no move");
+        }
+    }
+    if (compensating() && compensationPlane_.plane != plane.plane) {
+        invalid(g68, "the rotation's plane must be the cutter compensation's (FANUC alarm 144, illegal plane "
+                     "selected)");
+    }
+    const machine::Axes work = basePosition() - workOffset();
+    ModalState::Rotation r;
+    r.u = plane.u;
+    r.v = plane.v;
+    const WordValue* cu = words.find(letterOf(plane.u));
+    const WordValue* cv = words.find(letterOf(plane.v));
+    r.center[0] = cu ? cu->value * axisUnit(plane.u) : work(plane.u);
+    r.center[1] = cv ? cv->value * axisUnit(plane.v) : work(plane.v);
+    r.toolAtStart[0] = work(plane.u);
+    r.toolAtStart[1] = work(plane.v);
+    // R is absolute (FANUC parameter 5400 bit 0 RIN = 0, its default); without R parameter 5410,
+    // whose default is 0
+    const WordValue* angle = words.find('R');
+    r.degrees = angle ? angle->value : 0.0;
+    r.cosine = std::cos(r.degrees * std::numbers::pi / 180.0);
+    r.sine = std::sin(r.degrees * std::numbers::pi / 180.0);
+    state_.rotation = r;
+    state_.groups[16] = 68;
+}
+
+void ModalInterpreter::refuseUnderRotation(const Words& words) const {
+    const bool rotatingBefore = state_.rotating() && !words.hasG(69);
+    if (!rotatingBefore && !words.hasG(68)) {
+        return;
+    }
+    for (const WordValue& g : words.g) {
+        const int code = roundToInt(g.value);
+        const bool whole = std::abs(g.value - code) < 1e-6;
+        std::string why;
+        if (!whole && std::abs(g.value - 54.1) < 1e-6) {
+            why = "changes the coordinate system";
+        } else if (whole && ((code >= 54 && code <= 59) || code == 52 || code == 92)) {
+            why = "changes the coordinate system";
+        } else if (whole && code >= 27 && code <= 30) {
+            why = "returns to a reference position";
+        } else if (rotatingBefore && whole && code >= 17 && code <= 19 && code != state_.group(2)) {
+            invalid(g, "the plane of a rotation stays until G69 (FANUC: G17, G18, G19 must not be given in G68 "
+                       "mode)");
+        }
+        if (!why.empty()) {
+            invalid(g, why + " while G68 turns the program: FANUC forbids it in rotation mode; cancel the rotation "
+                             "with G69 first");
+        }
+    }
+}
+
+machine::Axes ModalInterpreter::rotatedTarget(const Words& words) const {
+    machine::Axes target = plainTarget(words, false);
+    const machine::Axes turned = turnedInPlane(basePosition(), words);
+    const ModalState::Rotation& r = state_.rotation;
+    target(r.u) = turned(r.u);
+    target(r.v) = turned(r.v);
+    return target;
+}
+
+machine::Axes ModalInterpreter::turnedInPlane(const machine::Axes& from, const Words& words) const {
+    const ModalState::Rotation& r = state_.rotation;
+    const WordValue* wu = words.find(letterOf(r.u));
+    const WordValue* wv = words.find(letterOf(r.v));
+    machine::Axes to = from;
+    if (!wu && !wv) {
+        return to;
+    }
+    const double du = wu ? wu->value * axisUnit(r.u) : 0.0;
+    const double dv = wv ? wv->value * axisUnit(r.v) : 0.0;
+    if (state_.incremental()) {
+        to(r.u) += r.cosine * du - r.sine * dv;
+        to(r.v) += r.sine * du + r.cosine * dv;
+        return to;
+    }
+    const machine::Axes offset = workOffset();
+    // where `from` is in the program's own (turned) coordinates: turned back about the point the
+    // program turns about so far
+    const double* pivot = r.absoluteSeen ? r.center : r.toolAtStart;
+    const double eu = from(r.u) - offset(r.u) - pivot[0];
+    const double ev = from(r.v) - offset(r.v) - pivot[1];
+    double pu = pivot[0] + r.cosine * eu + r.sine * ev;
+    double pv = pivot[1] - r.sine * eu + r.cosine * ev;
+    if (wu) {
+        pu = du;
+    }
+    if (wv) {
+        pv = dv;
+    }
+    const double qu = pu - r.center[0];
+    const double qv = pv - r.center[1];
+    to(r.u) = r.center[0] + r.cosine * qu - r.sine * qv + offset(r.u);
+    to(r.v) = r.center[1] + r.sine * qu + r.cosine * qv + offset(r.v);
+    return to;
+}
+
+void ModalInterpreter::turnVector(Eigen::Vector3d& vector) const {
+    const ModalState::Rotation& r = state_.rotation;
+    const double a = vector(r.u);
+    const double b = vector(r.v);
+    vector(r.u) = r.cosine * a - r.sine * b;
+    vector(r.v) = r.sine * a + r.cosine * b;
+}
+
+// From the first absolute command that names an axis of the plane on, the program turns about
+// G68's centre.
+void ModalInterpreter::noteAbsoluteCommand(const Words& words) {
+    ModalState::Rotation& r = state_.rotation;
+    if (r.absoluteSeen || state_.incremental() || words.hasG(4) || words.hasG(10) || words.hasG(53) ||
+        words.hasG(68)) {
+        return;
+    }
+    if (words.find(letterOf(r.u)) || words.find(letterOf(r.v))) {
+        r.absoluteSeen = true;
+    }
+}
+
+} // namespace m350::interp
