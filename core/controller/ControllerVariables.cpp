@@ -1,8 +1,10 @@
 // The variables that belong to the machine: what macros read and write through #-numbers
 // beyond their own storage.
 #include "core/controller/Controller.h"
+
 #include "core/common/Numeric.h"
 
+#include "core/params/AxisSetup.h"
 #include "core/params/ParameterNumbers.h"
 
 #include <cmath>
@@ -56,6 +58,7 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
     }
     case VariableKind::Output: return Value::of(scan_.output(info.index));
     case VariableKind::Homed: return Value::of(homing_.homed(info.index) ? 1 : 0);
+    case VariableKind::AxisCount: return Value::of(params::axisSetup(config_.parameters).count);
     case VariableKind::Dialog: return Value::of(panel_.dialogAnswer());
     case VariableKind::Message: return Value::of(0);
     case VariableKind::InterfaceInput: return interfacePmc_.input(info.index);

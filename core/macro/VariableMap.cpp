@@ -55,6 +55,7 @@ VariableMap::VariableMap(const gcode::Dialect& dialect, const VariableLayout& la
         // #1970-#1989 the tools of a multi-tool setting (0 = none), #1993 1 while it runs
         add(1970, 1989, K::System);
         add(1993, 1993, K::System);
+        add(1995, 1995, K::AxisCount, true); // "Current Max Axis Number"
         // a simulator extra: FANUC's macro alarm, so our tool-setting macros stop a run with an
         // alarm where the firmware's only leave a message (the M350 has no variable above #2999)
         add(3000, 3000, K::Alarm);
@@ -170,6 +171,7 @@ std::string_view kindName(VariableKind kind) {
     case VariableKind::Input: return "input";
     case VariableKind::Output: return "output";
     case VariableKind::Homed: return "homed flag";
+    case VariableKind::AxisCount: return "axis count";
     case VariableKind::InterfaceInput: return "interface input";
     case VariableKind::InterfaceInputs: return "interface inputs, 16 bits";
     case VariableKind::InterfaceOutput: return "interface output";

@@ -31,6 +31,7 @@ enum class VariableKind : std::uint8_t {
     Input,           // M350 #1520+k-1 = INk (read-only)
     Output,          // M350 #1552+k-1 = OUTk
     Homed,           // M350 #1515-#1519
+    AxisCount,       // M350 #1995: how many axes the machine has (3-5, from its parameters; read-only)
     InterfaceInput,  // FANUC #1000-#1015: the interface inputs UI000-UI015 (read-only)
     InterfaceInputs, // FANUC #1032: UI000-UI015 as one 16-bit number (read-only)
     InterfaceOutput, // FANUC #1100-#1115: the interface outputs UO000-UO015

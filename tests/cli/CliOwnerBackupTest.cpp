@@ -102,6 +102,23 @@ TEST_F(CliOwnerBackupTest, AProgramRunsToM30ThroughTheFactoryM30Handler) {
     EXPECT_EQ(j["outputs"][8], 0); // OUT09, lubrication (params 733-735): off
 }
 
+// The controller reports its axis count in #1995, read-only: the gantry's drives (0 1 2 1 4) make
+// five axes; a bundled machine that sets no drive has three.
+TEST_F(CliOwnerBackupTest, TheAxisCountIsReadInVariable1995) {
+    write("count.nc", "#100 = #1995\nM30\n");
+    json j = runOk({"run", "count.nc", "--print", "100"});
+    EXPECT_EQ(j["vars"]["100"], 5);
+    ProcessResult bundled = sim({"run", "count.nc", "--config", std::string(M350_MACHINES_DIR) + "/m350-linear16",
+                                 "--print", "100"});
+    EXPECT_EQ(bundled.exitStatus, kExitOk) << bundled.err;
+    EXPECT_EQ(output(bundled)["vars"]["100"], 3);
+    write("write.nc", "#1995 = 4\nM30\n");
+    ProcessResult refused = sim({"check", "write.nc", "--config", "machine"});
+    EXPECT_EQ(refused.exitStatus, kExitError);
+    EXPECT_NE(refused.err.find("write.nc:1:1: cannot write #1995 (axis count): it is read-only"), std::string::npos)
+        << refused.err;
+}
+
 // K2 oils the guides: M10 switches OUT09 on, M11 off, each switch lasting param 94's 2 s.
 TEST_F(CliOwnerBackupTest, KeyTwoLubricatesAndEndsWithoutAnAlarm) {
     fs::path trace = dir_ / "k2.jsonl";

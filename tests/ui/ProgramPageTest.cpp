@@ -14,10 +14,15 @@
 #include "ui/program/ProgramList.h"
 #include "ui/program/SimulationPanel.h"
 
+#include "core/config/MachineConfig.h"
+
 #include <QDir>
 #include <QFile>
+#include <QTemporaryDir>
 #include <QStringEncoder>
 #include <QTest>
+
+#include <filesystem>
 
 namespace m350::test {
 
@@ -129,6 +134,38 @@ TEST(ProgramPage, ASyntaxErrorIsMarkedAtItsLineAndGoesWhenFixed) {
     ASSERT_TRUE(checked(page));
     EXPECT_TRUE(page->editor()->view()->marks().isEmpty());
     EXPECT_EQ(page->editor()->view()->toPlainText(), "G0 X1\nM30\n");
+}
+
+// The editor parses as the machine's controller does: once parameter 6050 makes G100 a macro call,
+// `G100X1.E2.` passes X and the argument E as G65 would, and the editor marks nothing; on the plain
+// fanuc-0i the same line is the number 1.E2., which it marks where the run would refuse it.
+TEST(ProgramPage, TheEditorParsesWithTheMachinesMacroCallCodes) {
+    for (const bool called : {false, true}) {
+        QTemporaryDir dir;
+        const std::filesystem::path folder = std::filesystem::path(dir.path().toStdString()) / "fanuc-0i";
+        std::filesystem::copy(config::bundledMachinesDirectory() + "/fanuc-0i", folder,
+                              std::filesystem::copy_options::recursive);
+        if (called) {
+            QFile params(QString::fromStdString((folder / "params.toml").string()));
+            ASSERT_TRUE(params.open(QIODevice::Append));
+            params.write("6050 = 100  # G100 calls O9010\n");
+        }
+        PanelHarness panel(QString::fromStdString(folder.string()));
+        auto* page = openProgramPage(panel);
+        ASSERT_NE(page, nullptr);
+        writeFile(QDir(programs(panel)).filePath("call.nc"), "G100X1.E2.\nM30\n");
+        selectFile(panel, page, "call.nc");
+        panel.key("ENTER");
+        ASSERT_TRUE(checked(page));
+        const QVector<ui::CodeView::Mark> marks = page->editor()->view()->marks();
+        if (called) {
+            EXPECT_TRUE(marks.isEmpty()) << marks.front().message.toStdString();
+        } else {
+            ASSERT_FALSE(marks.isEmpty());
+            EXPECT_EQ(marks.front().line, 1);
+            EXPECT_EQ(marks.front().column, 6);
+        }
+    }
 }
 
 TEST(ProgramPage, AGbkFileIsSavedInGbk) {

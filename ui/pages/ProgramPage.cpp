@@ -1,6 +1,7 @@
 #include "ui/pages/ProgramPage.h"
 
 #include "ui/pages/PanelContext.h"
+#include "core/config/CallCodeParameters.h"
 #include "core/params/ParameterNumbers.h"
 #include "ui/program/CodeView.h"
 #include "ui/program/PathView.h"
@@ -37,13 +38,14 @@ QString modeName(ProgramPage::Mode mode) {
 } // namespace
 
 ProgramPage::ProgramPage(PanelContext& context, QWidget* parent)
-    : Page(context, parent), machine_(machineOf(context.machineFolder())), userFolder_(QDir::homePath()) {
+    : Page(context, parent), machine_(machineOf(context.machineFolder())), parsing_(config::parsingDialect(machine_)),
+      userFolder_(QDir::homePath()) {
     setObjectName("programPage");
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(4, 4, 4, 4);
     stack_ = new QStackedWidget(this);
     list_ = new ProgramList(stack_);
-    editor_ = new ProgramEditor(*machine_.dialect, machine_.libraries, stack_);
+    editor_ = new ProgramEditor(parsing_, machine_.libraries, stack_);
     simulation_ = new SimulationPanel(*machine_.dialect, stack_);
     stack_->addWidget(list_);
     stack_->addWidget(editor_);

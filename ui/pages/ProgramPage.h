@@ -68,6 +68,9 @@ private:
     QString nameProblemText(ProgramFiles::NameProblem problem) const;
 
     config::MachineConfig machine_; // for the dialect and the macro libraries
+    // the dialect as the controller parses this machine's programs: its macro-call codes take
+    // arguments as G65 does (config::parsingDialect), so the editor marks what a run would refuse
+    gcode::Dialect parsing_;
     QStackedWidget* stack_;
     ProgramList* list_;
     ProgramEditor* editor_;

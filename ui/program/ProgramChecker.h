@@ -38,7 +38,7 @@ signals:
 
 private:
     void run();
-    const gcode::Dialect& dialect_;
+    const gcode::Dialect dialect_; // a copy: a check still running on the pool outlives its page's members
     std::vector<config::LibraryFile> libraries_;
     QTimer timer_;
     QThreadPool pool_;
