@@ -17,7 +17,7 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
     }
     CLI::App app{"m350-hmi: the M350 panel (desktop). With --screenshot, --replay or --state it renders "
                  "and exits, for tests and docs."};
-    app.set_version_flag("--version", std::string("m350-hmi ") + M350_VERSION);
+    app.set_version_flag("--version", std::string("m350-hmi ") + M350_VERSION + " (commit " + M350_COMMIT + ")");
     app.add_option("program", o.program, "G-code file to load; START runs it")->check(CLI::ExistingFile);
     app.add_option("--config", o.configDir, "machine folder (default: the bundled M350 16-pocket linear rack)")
         ->check(CLI::ExistingDirectory);

@@ -105,6 +105,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     SimOptions o;
     CLI::App app{"m350-sim: runs M350 / FANUC macro programs on a simulated machine, headless"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("m350-sim ") + M350_VERSION + " (commit " + M350_COMMIT + ")");
     std::vector<std::string> params, vars, inputs, faults, breaks, loadLimits;
     std::string printList;
     bool unhomed = false;
@@ -129,7 +130,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--load-limits", loadLimits,
                         "spindle load limits of tool N, lower:upper % (T1=8:60), over spindle-load.toml, repeatable");
         cmd->add_flag("--unhomed", unhomed, "start with no axis homed");
-        cmd->add_flag("--home", o.home, "home (回零) every axis that has a home switch before the run");
+        cmd->add_flag("--home", o.home, "home (回零) every axis that has a home switch before the run")
+            ->excludes("--unhomed");
         cmd->add_option("--tool", tool, "tool in the spindle at start");
         cmd->add_option("--print", printList, "variables to report, e.g. 1,100,1300");
         cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE")->check(nonEmptyPath);
@@ -170,8 +172,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     check->add_option("PROGRAM", o.program, "program file (.nc)")->required();
     addMachineOptions(check);
     CLI::App* import = app.add_subcommand("import", "make a machine folder from a copy of an M350's system disk");
-    import->add_option("BACKUP_DIR", o.backupDir, "the backup: the folder that holds setting, slib-g.nc ...")->required();
-    import->add_option("--into", o.intoDir, "the new machine folder (missing or empty)")->required();
+    import->add_option("BACKUP_DIR", o.backupDir, "the backup: the folder that holds setting, slib-g.nc ...")
+        ->required()
+        ->check(nonEmptyPath);
+    import->add_option("--into", o.intoDir, "the new machine folder (missing or empty)")->required()->check(nonEmptyPath);
     CLI::App* hook = app.add_subcommand("hook", "run one of the machine folder's hook files as the panel would");
     hook->add_option("NAME", o.hookName, "fndzero, key-3, probe, T (#1504 = the target tool: --var 1504=5) ...")
         ->required()
@@ -263,6 +267,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         o.settings.tool = tool;
     } catch (const CLI::CallForHelp&) {
         std::cout << app.help();
+        return {std::nullopt, 0};
+    } catch (const CLI::CallForVersion& e) {
+        std::cout << e.what() << '\n';
         return {std::nullopt, 0};
     } catch (const CLI::CallForAllHelp&) {
         std::cout << app.help("", CLI::AppFormatMode::All);

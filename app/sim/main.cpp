@@ -116,6 +116,11 @@ std::optional<std::string> checkAgainstMachine(const sim::SimOptions& o, const c
                    (info.readOnly ? " is read-only" : " is not a variable of this dialect");
         }
     }
+    for (int number : o.printVariables) {
+        if (variables.describe(number).kind == macro::VariableKind::Undefined) {
+            return "--print " + std::to_string(number) + ": " + variables.undefinedText(number);
+        }
+    }
     return std::nullopt;
 }
 

@@ -43,6 +43,11 @@ TEST_F(CliTest, UsageErrorsExitWith64) {
         {"run", "ok.nc", "--max-sim-time", "0"},  // must be positive
         {"run", "ok.nc", "--print", "1,x"},       // variable numbers
         {"run", "ok.nc", "--tool", "two"},        // a whole number
+        {"run", "ok.nc", "--print", "99999999"},  // no machine has such a variable
+        {"run", "ok.nc", "--print", "5001"},      // a FANUC variable, not the M350's
+        {"run", "ok.nc", "--home", "--unhomed"},  // one or the other
+        {"import", "backup", "--into", ""},       // an empty name is no folder
+        {"import", "", "--into", "machine"},
     };
     for (const auto& args : usages) {
         std::string shown;
@@ -68,6 +73,14 @@ TEST_F(CliTest, HelpExitsZero) {
         }
         EXPECT_NE(r.out.find("--"), std::string::npos) << "help lists options:\n" << r.out;
     }
+}
+
+// --version names the version and the commit the build was configured at.
+TEST_F(CliTest, VersionNamesTheVersionAndTheCommit) {
+    ProcessResult r = sim({"--version"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_EQ(r.out.rfind("m350-sim " M350_VERSION " (commit ", 0), 0u) << r.out;
+    EXPECT_NE(r.out.find(')'), std::string::npos) << r.out;
 }
 
 TEST_F(CliTest, StdoutIsOneJsonObjectWithTheContractKeys) {
