@@ -18,6 +18,9 @@
 #include <array>
 #include <optional>
 #include <sstream>
+#include <unordered_set>
+#include <utility>
+#include <vector>
 
 namespace m350::check {
 
@@ -29,13 +32,39 @@ using gcode::ExprId;
 using gcode::ExprKind;
 using gcode::Word;
 
-bool isConstant(const gcode::ExpressionPool& pool, ExprId id) {
-    if (id == gcode::kNoExpr) {
-        return true;
+// The parts of one expression that read no variable, found bottom-up once with an explicit stack:
+// a generated sum of 100,000 terms is one chain as deep as it is long, and asking each node of it
+// again would take quadratic time.
+class ConstantParts {
+public:
+    ConstantParts(const gcode::ExpressionPool& pool, ExprId root) {
+        std::vector<std::pair<ExprId, bool>> stack; // a node, and whether its operands are done
+        if (root != gcode::kNoExpr) {
+            stack.emplace_back(root, false);
+        }
+        while (!stack.empty()) {
+            auto [id, operandsDone] = stack.back();
+            stack.pop_back();
+            const gcode::ExprNode& node = pool[id];
+            if (!operandsDone) {
+                stack.emplace_back(id, true);
+                for (ExprId operand : {node.rhs, node.lhs}) {
+                    if (operand != gcode::kNoExpr) {
+                        stack.emplace_back(operand, false);
+                    }
+                }
+                continue;
+            }
+            if (node.kind == ExprKind::Variable || !constant(node.lhs) || !constant(node.rhs)) {
+                readsVariable_.insert(id);
+            }
+        }
     }
-    const gcode::ExprNode& node = pool[id];
-    return node.kind != ExprKind::Variable && isConstant(pool, node.lhs) && isConstant(pool, node.rhs);
-}
+    bool constant(ExprId id) const { return id == gcode::kNoExpr || !readsVariable_.contains(id); }
+
+private:
+    std::unordered_set<ExprId> readsVariable_;
+};
 
 bool isWord(const Word& w, char letter, int code) {
     return w.letter == letter && w.isNumber() && w.number == code;
@@ -177,25 +206,31 @@ private:
     // The largest constant parts of an expression are evaluated (1/0, SQRT[-1], overflow); a
     // variable whose number is constant must exist.
     void expression(ExprId id) {
-        if (id == gcode::kNoExpr) {
-            return;
-        }
         const gcode::ExpressionPool& pool = program_.expressions;
-        if (isConstant(pool, id)) {
-            tryEvaluate([&] { evaluator_.evaluate(id); });
-            return;
-        }
-        const gcode::ExprNode& node = pool[id];
-        if (node.kind == ExprKind::Variable) {
-            if (node.lhs == gcode::kNoExpr || isConstant(pool, node.lhs)) {
-                tryEvaluate([&] { variableNumber(id); });
-            } else {
-                expression(node.lhs);
+        const ConstantParts parts(pool, id);
+        std::vector<ExprId> pending{id}; // depth first, the left operand first, without recursion
+        while (!pending.empty()) {
+            const ExprId next = pending.back();
+            pending.pop_back();
+            if (next == gcode::kNoExpr) {
+                continue;
             }
-            return;
+            if (parts.constant(next)) {
+                tryEvaluate([&] { evaluator_.evaluate(next); });
+                continue;
+            }
+            const gcode::ExprNode& node = pool[next];
+            if (node.kind == ExprKind::Variable) {
+                if (parts.constant(node.lhs)) {
+                    tryEvaluate([&] { variableNumber(next); });
+                } else {
+                    pending.push_back(node.lhs);
+                }
+                continue;
+            }
+            pending.push_back(node.rhs);
+            pending.push_back(node.lhs);
         }
-        expression(node.lhs);
-        expression(node.rhs);
     }
 
     int variableNumber(ExprId variable) {
@@ -210,7 +245,7 @@ private:
     void assignment(const gcode::Assignment& a) {
         const gcode::ExpressionPool& pool = program_.expressions;
         expression(a.value);
-        if (!isConstant(pool, pool[a.index].lhs)) {
+        if (!ConstantParts(pool, pool[a.index].lhs).constant(pool[a.index].lhs)) {
             expression(pool[a.index].lhs);
             return;
         }
