@@ -40,6 +40,8 @@ std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lin
 
 std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint32_t lineNumber) {
     line_ = line;
+    columnCacheOffset_ = 0;
+    columnCacheColumn_ = 1;
     lineNumber_ = lineNumber;
     Lexer(dialect_).tokenize(line, tokens_, comment_);
     if (comment_.openedOnThisLine) {

@@ -132,6 +132,10 @@ private:
     std::uint32_t fileIndex_;
 
     std::string_view line_;
+    // columnAt's last answer: DPRNT asks for one column per item, left to right, so each call
+    // counts on from the last instead of from the line's start (a 100,000-item DPRNT was quadratic)
+    mutable std::size_t columnCacheOffset_ = 0;
+    mutable std::uint32_t columnCacheColumn_ = 1;
     std::uint32_t lineNumber_ = 0;
     std::vector<Token> tokens_;
     std::vector<Assignment> assignments_; // of the block being parsed, stored when it parses

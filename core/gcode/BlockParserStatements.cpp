@@ -5,6 +5,8 @@
 #include "core/gcode/BlockParser.h"
 #include "core/gcode/ModbusStatement.h"
 
+#include <algorithm>
+
 namespace m350::gcode {
 
 namespace {
@@ -29,11 +31,16 @@ constexpr int kMaxPrintDigits = 8; // FANUC: c + d <= 8
 
 // Columns count characters: comments before the statement may hold multi-byte ones.
 std::uint32_t BlockParser::columnAt(std::size_t offset) const {
-    std::uint32_t column = 1;
-    for (std::size_t i = 0; i < offset && i < line_.size(); ++i) {
-        column += (static_cast<unsigned char>(line_[i]) & 0xC0) != 0x80 ? 1 : 0;
+    offset = std::min(offset, line_.size());
+    if (offset < columnCacheOffset_) {
+        columnCacheOffset_ = 0;
+        columnCacheColumn_ = 1;
     }
-    return column;
+    for (std::size_t i = columnCacheOffset_; i < offset; ++i) {
+        columnCacheColumn_ += (static_cast<unsigned char>(line_[i]) & 0xC0) != 0x80 ? 1 : 0;
+    }
+    columnCacheOffset_ = offset;
+    return columnCacheColumn_;
 }
 
 std::uint32_t BlockParser::storeStatement(const std::vector<StatementItem>& items) {
