@@ -121,6 +121,22 @@ TEST_F(CliTest, CheckOfAHugeExpressionNeedsNoDeepStack) {
     EXPECT_TRUE(divisionFound) << r.out.substr(0, 2000);
 }
 
+// Issue 26: a DPRNT of 100,000 items parsed in quadratic time (each item's column counted from the
+// line's start: 77 s); the columns are still right, here of a bad character after them.
+TEST_F(CliTest, ADprntOfManyItemsParsesInOnePass) {
+    std::string items = "DPRNT[";
+    for (int i = 0; i < 100000; ++i) {
+        items += "X#1[53]*";
+    }
+    const std::size_t badColumn = items.size() + 1;
+    write("many.nc", "POPEN\n" + items + "x]\nPCLOS\nM30\n");
+    ProcessResult r = sim({"check", "many.nc", "--dialect", "fanuc"});
+    EXPECT_EQ(r.exitStatus, kExitError);
+    EXPECT_NE(r.err.find("many.nc:2:" + std::to_string(badColumn) + ": DPRNT text may hold capital letters"),
+              std::string::npos)
+        << r.err.substr(0, 2000);
+}
+
 TEST_F(CliTest, CheckOnAMissingFileKeepsTheCheckLayout) {
     ProcessResult r = sim({"check", "missing.nc"});
     EXPECT_EQ(r.exitStatus, kExitError);
