@@ -17,7 +17,9 @@ struct LifeData;
 
 namespace m350::config {
 
-// The files of a machine folder, besides its hook programs (config/HookFiles names those).
+// The files of a machine folder that the store names, besides its hook programs (config/HookFiles
+// names those). Not here: the macro libraries machine.toml lists, and spindle-load.toml, which the
+// loader reads by tools::kSpindleLoadFileName; isFolderFile does not know them.
 enum class FolderFile : std::uint8_t {
     Machine,        // machine.toml: read only
     Offsets,        // offsets.toml: read only

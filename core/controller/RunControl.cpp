@@ -1,4 +1,6 @@
-// The operator's run controls: 暂停 hold and resume, reset, 急停 emergency stop.
+// The operator's run controls: 暂停 hold and resume, reset, 急停 emergency stop, the feed override;
+// and what a FANUC macro switches off of them (#3003, #3004: OperationControl), with the single
+// block stop.
 #include "core/controller/Controller.h"
 
 #include "core/controller/ContinueRemainder.h"

@@ -19,7 +19,10 @@ struct IndexedTable {
 };
 
 // Everything that differs between the M350 firmware's macro language and FANUC Custom Macro B.
-// One parser and one evaluator read this table; there are no dialect if-chains elsewhere.
+// One parser and one evaluator read this table; beside it the evaluator tests the dialect once
+// (ATAN's range). What each #number is, is macro::VariableMap's; where the machines themselves
+// differ (tool offsets, G92, G31, the M codes the firmware or the PMC answers) the machine side
+// tests `id`.
 struct Dialect {
     DialectId id = DialectId::M350;
     std::string_view name;

@@ -1,4 +1,4 @@
-// Importing a controller backup (core/config/BackupImport): the machine folder loads with the
+// Importing a controller backup (core/backup/BackupImport): the machine folder loads with the
 // backup's exact parameters and offsets, keeps its files' bytes, is the same twice, and a damaged
 // backup or a folder holding something else is refused with nothing written.
 #include "core/backup/BackupImport.h"

@@ -1,4 +1,4 @@
-// What an import makes of param 802 and the IO page's wiring (core/config/BackupWiring): our
+// What an import makes of param 802 and the IO page's wiring (core/backup/BackupWiring): our
 // magazine devices where they model the type, IO links where a sensor follows an actuator no device
 // drives, and plain words for the rest. Each generated [magazine] must load as machine.toml does.
 #include "core/backup/BackupWiring.h"

@@ -16,7 +16,7 @@ namespace m350::ui {
 class PanelContext;
 
 // The panel's 导入控制器备份 (Import controller backup...), the Panel menu's counterpart of
-// `m350-sim import`: choose the backup folder and a new machine folder, import (core/config/
+// `m350-sim import`: choose the backup folder and a new machine folder, import (core/backup/
 // BackupImport), show what was made and what to review in the panel's prompt, then offer to
 // switch the panel to the new machine when the application can (setSwitcher). The import reads
 // and writes files, so it runs on a thread of its own: the panel keeps drawing and answering keys.
