@@ -289,6 +289,11 @@ private:
             } else if (w.letter == 'G' && std::abs(w.number - 54.1) < 1e-6) {
                 additionalSystem(b);
             }
+            if (w.letter == 'M' && w.isNumber() && std::abs(w.number - std::round(w.number)) < 1e-9 &&
+                std::abs(w.number) < 1e9 && !interp::ModalInterpreter::knowsMCode(dialect_, roundToInt(w.number))) {
+                report(w.column, "M" + formatCode(w.number) + ": " +
+                                     interp::ModalInterpreter::unknownMCodeText(dialect_, roundToInt(w.number)));
+            }
             if (w.letter == 'G' || w.letter == 'M' || w.letter < 'A' || w.letter > 'Z') {
                 continue;
             }

@@ -219,10 +219,8 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 }
                 [[fallthrough]];
             default:
-                if (dialect_.id == gcode::DialectId::M350) {
-                    const std::optional<std::int32_t> handler = dialect_.handlerProgram('M', code);
-                    invalid(m, handler ? "no such M code (and no O" + std::to_string(*handler) + " handler in slib-m.nc)"
-                                       : std::string("no such M code"));
+                if (!knowsMCode(dialect_, code)) {
+                    invalid(m, unknownMCodeText(dialect_, code));
                 }
                 machine_.auxiliary(code); // FANUC: an M code the PMC answers (magazine, clamp ...)
                 break;
@@ -307,6 +305,23 @@ namespace {
 bool isAdditionalSystemCode(double value) { return std::abs(value - 54.1) < 1e-6; } // G54.1
 
 } // namespace
+
+bool ModalInterpreter::knowsMCode(const gcode::Dialect& dialect, int code) {
+    if (dialect.id != gcode::DialectId::M350) {
+        return true;
+    }
+    switch (code) { // the cases of execute()'s M switch that do not end in its default
+    case 0: case 1: case 2: case 3: case 4: case 5: case 6: case 8: case 9: case 10: case 11: case 19: case 30:
+        return true;
+    default: return false;
+    }
+}
+
+std::string ModalInterpreter::unknownMCodeText(const gcode::Dialect& dialect, int code) {
+    const std::optional<std::int32_t> handler = dialect.handlerProgram('M', code);
+    return handler ? "no such M code (and no O" + std::to_string(*handler) + " handler in slib-m.nc)"
+                   : std::string("no such M code");
+}
 
 bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, const CoordinateFeatures& features, double value) {
     if (dialect.lookAheadCodes && isLookAheadCode(value)) {

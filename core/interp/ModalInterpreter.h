@@ -60,6 +60,10 @@ public:
     // Whether execute() acts on G`value` itself (not a macro call or a library's handler): what
     // `check` uses to say a G code is unknown without running.
     static bool knowsGCode(const gcode::Dialect& dialect, const CoordinateFeatures& features, double value);
+    // Whether execute() takes M`code` (a FANUC's PMC takes every M code; an M350's firmware its own
+    // few, the rest must have a handler in slib-m.nc), and what the alarm says when it does not.
+    static bool knowsMCode(const gcode::Dialect& dialect, int code);
+    static std::string unknownMCodeText(const gcode::Dialect& dialect, int code);
 
     const ModalState& state() const { return state_; }
     ModalState& state() { return state_; }

@@ -137,6 +137,23 @@ TEST_F(CliTest, ADprntOfManyItemsParsesInOnePass) {
         << r.err.substr(0, 2000);
 }
 
+// Issue 26: check said ok to M999999, which every run of it alarms on an M350 (the firmware's own M
+// codes and slib-m.nc's handlers, nothing else); a FANUC's PMC takes any M code.
+TEST_F(CliTest, CheckKnowsTheM350sMCodes) {
+    write("m.nc", "M3 S1000\nM999999\nM123\nM8\nM30\n");
+    ProcessResult m350 = sim({"check", "m.nc"});
+    EXPECT_EQ(m350.exitStatus, kExitError);
+    EXPECT_NE(m350.err.find("m.nc:2:1: M999999: no such M code (and no O1009999 handler in slib-m.nc)"),
+              std::string::npos)
+        << m350.err;
+    EXPECT_NE(m350.err.find("m.nc:3:1: M123: no such M code (and no O10123 handler in slib-m.nc)"), std::string::npos)
+        << m350.err;
+    ProcessResult run = sim({"run", "m.nc"});
+    EXPECT_NE(run.err.find("m.nc:2:1: alarm: M999999: no such M code"), std::string::npos) << run.err;
+    ProcessResult fanuc = sim({"check", "m.nc", "--dialect", "fanuc"});
+    EXPECT_EQ(fanuc.exitStatus, kExitOk) << fanuc.err;
+}
+
 TEST_F(CliTest, CheckOnAMissingFileKeepsTheCheckLayout) {
     ProcessResult r = sim({"check", "missing.nc"});
     EXPECT_EQ(r.exitStatus, kExitError);

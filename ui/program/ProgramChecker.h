@@ -13,9 +13,9 @@
 namespace m350::ui {
 
 // `m350-sim check` for the editor: the text as it stands, parsed with the machine's dialect and
-// macro libraries (the file being a library replaces that library). The Program page gives it the
-// machine's dialect as loaded, while the Controller parses with config::parsingDialect, which adds
-// the codes that call macros (G65's argument rule in their blocks): there the two may differ.
+// macro libraries (the file being a library replaces that library). The Program page gives it
+// config::parsingDialect, as the Controller parses: the codes that call macros take G65's argument
+// rule in their blocks.
 // Runs a pause after the last keystroke, in a thread of its own, and reports the findings about
 // this file at their line and column.
 class ProgramChecker : public QObject {
