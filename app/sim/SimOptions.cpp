@@ -130,8 +130,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--load-limits", loadLimits,
                         "spindle load limits of tool N, lower:upper % (T1=8:60), over spindle-load.toml, repeatable");
         cmd->add_flag("--unhomed", unhomed, "start with no axis homed");
-        cmd->add_flag("--home", o.home, "home (回零) every axis that has a home switch before the run")
-            ->excludes("--unhomed");
+        cmd->add_flag("--home", o.home, "home (回零) every axis that has a home switch before the run");
         cmd->add_option("--tool", tool, "tool in the spindle at start");
         cmd->add_option("--print", printList, "variables to report, e.g. 1,100,1300");
         cmd->add_option("--trace", o.traceFile, "write JSON Lines events to FILE")->check(nonEmptyPath);

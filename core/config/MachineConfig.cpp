@@ -111,6 +111,11 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         fail(file, "not found: a machine folder needs machine.toml");
     }
     toml::table t = parseToml(file);
+    if (t.empty()) {
+        config.warnings.push_back(file.string() +
+                                  ": warning: empty: the machine is an M350 with no libraries, no magazine and "
+                                  "the folder's name (name, dialect, [libraries] ... are its keys)");
+    }
     warnUnknownKeys(file, t,
                     {"name", "dialect", "libraries", "libraries.g", "libraries.m", "libraries.other", "codes", "codes.*",
                      "io_links", "io_links.output", "io_links.input", "io_links.delay_ms", "io_links.inverted",
@@ -328,6 +333,12 @@ void loadOffsets(const fs::path& folder, MachineConfig& config) {
             }
             for (std::size_t i = 0; i < axes->size(); ++i) {
                 config.offsets[static_cast<std::size_t>(slot)][i] = numberValue(file, *axes->get(i), name);
+            }
+            if (axes->size() < 3) {
+                config.warnings.push_back(warningAt(file, axes->source(),
+                                                    std::string(name) + " has " + std::to_string(axes->size()) +
+                                                        (axes->size() == 1 ? " value" : " values") +
+                                                        " for [X, Y, Z, A, B]: the axes it leaves out are 0"));
             }
         }
     }

@@ -45,7 +45,6 @@ TEST_F(CliTest, UsageErrorsExitWith64) {
         {"run", "ok.nc", "--tool", "two"},        // a whole number
         {"run", "ok.nc", "--print", "99999999"},  // no machine has such a variable
         {"run", "ok.nc", "--print", "5001"},      // a FANUC variable, not the M350's
-        {"run", "ok.nc", "--home", "--unhomed"},  // one or the other
         {"import", "backup", "--into", ""},       // an empty name is no folder
         {"import", "", "--into", "machine"},
     };

@@ -111,6 +111,26 @@ TEST_F(MachineFolderTest, UnknownKeysAreWarnedAboutAndAWrongOffsetIsAnError) {
     expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/offsets.toml:1:13", "must be a number");
 }
 
+// Issue 26: an offset with fewer than X Y Z values and an empty machine.toml loaded without a word.
+TEST_F(MachineFolderTest, ShortOffsetsAndAnEmptyMachineFileAreWarnedAbout) {
+    fs::path machine = copyMachine();
+    std::ofstream(machine / "offsets.toml", std::ios::binary) << "G54 = [1.0]\n";
+    ProcessResult shortOffset = sim({"mdi", "G54 G0 X0", "--config", "machine"});
+    EXPECT_EQ(shortOffset.exitStatus, kExitOk) << shortOffset.err;
+    EXPECT_NE(shortOffset.err.find("machine/offsets.toml:1:7: warning: G54 has 1 value for [X, Y, Z, A, B]: the axes "
+                                   "it leaves out are 0"),
+              std::string::npos)
+        << shortOffset.err;
+    EXPECT_DOUBLE_EQ(output(shortOffset)["machine"]["X"].get<double>(), 1.0);
+
+    fs::path empty = dir_ / "empty";
+    fs::create_directories(empty);
+    std::ofstream(empty / "machine.toml", std::ios::binary) << "";
+    ProcessResult r = sim({"mdi", "G0 X1", "--config", "empty"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_NE(r.err.find("empty/machine.toml: warning: empty: the machine is an M350"), std::string::npos) << r.err;
+}
+
 // A TOML error or a nan named the line only inside the message, with line 0 in the JSON.
 TEST_F(MachineFolderTest, TomlErrorsAndBadValuesArePlacedByLineAndColumn) {
     fs::path machine = copyMachine();

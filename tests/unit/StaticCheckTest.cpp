@@ -28,7 +28,11 @@ TEST(StaticCheck, FindsWhatTheRunWouldAlarmOnWithoutAController) {
 }
 
 TEST(StaticCheck, AMachineCodeProgramTakesItsBlocksWords) {
-    EXPECT_EQ(checked("M150 X1 X2\nM30\n").size(), 1u);
+    // without the code the block is the M350's: M150 has no handler and X is there twice
+    const std::vector<gcode::Diagnostic> plain = checked("M150 X1 X2\nM30\n");
+    ASSERT_EQ(plain.size(), 2u);
+    EXPECT_EQ(plain[0].message, "M150: no such M code (and no O10150 handler in slib-m.nc)");
+    EXPECT_EQ(plain[1].message, "X appears twice in one block");
     macro::CallCodes codes;
     codes.add('M', 150, {9001, macro::CallKind::Subprogram, 0, "[codes] M150 = 9001"});
     EXPECT_TRUE(checked("M150 X1 X2\nM30\n", codes).empty());
