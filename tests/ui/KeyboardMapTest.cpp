@@ -5,6 +5,7 @@
 #include "ui/actions/KeyboardMap.h"
 #include "ui/actions/PanelKey.h"
 #include "ui/panel/KeyPad.h"
+#include "ui/panel/SoftkeyBar.h"
 
 #include <QKeyEvent>
 #include <QKeySequence>
@@ -154,7 +155,7 @@ TEST(ReplayKeys, EveryKeyTheReadmeListsIsAccepted) {
 }
 
 TEST(ReplayKeys, AReplayedKeyDoesWhatAClickDoes) {
-    for (const QString name : {QStringLiteral("K1"), QStringLiteral("M8")}) {
+    for (const QString& name : {QStringLiteral("K1"), QStringLiteral("M8")}) {
         PanelHarness replayed;
         PanelHarness clicked;
         QString why;
