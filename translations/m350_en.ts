@@ -472,6 +472,10 @@
         <translation>Select an output port first (UP/DOWN)</translation>
     </message>
     <message>
+        <source>T%1 is in the spindle: releasing the drawbar drops it. Release it?</source>
+        <translation>T%1 is in the spindle: releasing the drawbar drops it. Release it?</translation>
+    </message>
+    <message>
         <source>Select an input port first (UP/DOWN)</source>
         <translation>Select an input port first (UP/DOWN)</translation>
     </message>

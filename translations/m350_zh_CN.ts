@@ -472,6 +472,10 @@
         <translation>请先选择输出端口(上/下键)</translation>
     </message>
     <message>
+        <source>T%1 is in the spindle: releasing the drawbar drops it. Release it?</source>
+        <translation>主轴上有刀具T%1,松刀后刀具会掉落,是否松刀?</translation>
+    </message>
+    <message>
         <source>Select an input port first (UP/DOWN)</source>
         <translation>请先选择输入端口(上/下键)</translation>
     </message>

@@ -4,6 +4,7 @@
 #include "core/files/LastGoodCopy.h"
 #include "core/files/OutputFile.h"
 #include "core/params/ParameterBackup.h"
+#include "core/params/ParameterCatalogue.h"
 #include "core/params/ParamsFileWriter.h"
 #include "core/tools/ToolLifeFile.h"
 #include "core/tools/ToolTableFile.h"
@@ -122,7 +123,13 @@ std::optional<std::string> MachineFolder::saveParameters(const std::map<int, dou
             return error;
         }
     }
-    std::string updated = params::setTomlNumbers(text, "params", values, addMissing);
+    std::map<int, double> rounded = values;
+    if (const auto* catalogue = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled())) {
+        for (auto& [number, value] : rounded) {
+            value = catalogue->atResolution(number, value);
+        }
+    }
+    std::string updated = params::setTomlNumbers(text, "params", rounded, addMissing);
     if (!addMissing && updated == text) {
         return std::nullopt;
     }

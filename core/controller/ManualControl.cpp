@@ -108,7 +108,31 @@ bool ManualControl::wheelTurn(int axis, int multiplier, int detents, double seco
     double distance = detents * multiplier * manual::mpgDistance(p) * (manual::mpgReversed(p) ? -1.0 : 1.0);
     // the motion follows the wheel: no faster than it was turned, nor than the wheel's speed
     double speed = std::min({wheelSpeed / 60.0, manual::maxManualSpeed(p, axis) / 60.0, std::abs(distance) / seconds});
-    return moveManually(axis, distance, speed, manual::mpgAcceleration(p, axis));
+    const double acceleration = manual::mpgAcceleration(p, axis);
+    if (!manual::mpgPrecise(p)) {
+        // param 171 = 1: the pulses the axis cannot run while the wheel turns are dropped, so the
+        // axis is at rest when the turn ends
+        const double now = run_.displayTime();
+        const double window = now + seconds - std::max(machine_.time(), now);
+        const double reach = reachWithin(window, speed, acceleration);
+        if (reach <= 0.0) {
+            return false;
+        }
+        distance = std::copysign(std::min(std::abs(distance), reach), distance);
+    }
+    return moveManually(axis, distance, speed, acceleration);
+}
+
+// How far a move from rest to rest, at most `speed` and ramping at `acceleration`, gets in `seconds`.
+double ManualControl::reachWithin(double seconds, double speed, double acceleration) {
+    if (seconds <= 0.0 || speed <= 0.0) {
+        return 0.0;
+    }
+    if (acceleration <= 0.0) {
+        return speed * seconds;
+    }
+    const double ramps = 2.0 * speed / acceleration;
+    return seconds >= ramps ? speed * seconds - speed * speed / acceleration : acceleration * seconds * seconds / 4.0;
 }
 
 // One manual move of `axis` by `distance`, stopped at the soft limits when they are on and the

@@ -67,6 +67,7 @@ public:
 private:
     bool manualAllowed() const;
     bool moveManually(int axis, double distance, double speed, double acceleration);
+    static double reachWithin(double seconds, double speed, double acceleration);
     bool guideTurn(int multiplier, int detents, double seconds);
 
     machine::SimulatedMachine& machine_;

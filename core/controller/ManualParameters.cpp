@@ -51,6 +51,8 @@ double mpgDistance(const params::ParameterTable& p) { return orDefault(p, param:
 
 bool mpgReversed(const params::ParameterTable& p) { return p.get(param::kMpgReversed) != 0.0; }
 
+bool mpgPrecise(const params::ParameterTable& p) { return p.get(param::kMpgPrecise) == 0.0; }
+
 double mpgSpeed(const params::ParameterTable& p, int multiplier) {
     switch (multiplier) {
     case 1: return orDefault(p, param::kMpgSpeedX1, kMpgSpeed[0]);

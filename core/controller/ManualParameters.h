@@ -16,6 +16,9 @@ double stopAcceleration(const params::ParameterTable& p, int axis);    // 手动
 
 double mpgDistance(const params::ParameterTable& p);                   // mm per detent at x1 (172)
 bool mpgReversed(const params::ParameterTable& p);                     // 175
+// 171 手轮精准控制模式: 0 开启 (Yes): after the wheel stops the axis runs out every pulse it was
+// given; 1 关闭 (No, the factory value): it stops as the wheel stops.
+bool mpgPrecise(const params::ParameterTable& p);
 // The wheel's speed at x1, x10 or x100 (176-178); 0 for any other multiplier.
 double mpgSpeed(const params::ParameterTable& p, int multiplier);
 double mpgAcceleration(const params::ParameterTable& p, int axis);     // 181-185

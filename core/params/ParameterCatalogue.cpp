@@ -235,6 +235,18 @@ std::optional<std::string> ParameterCatalogue::validate(int number, double value
     return refusal("one of " + choices);
 }
 
+double ParameterCatalogue::atResolution(int number, double value) const {
+    const ParameterInfo* p = find(number);
+    if (p == nullptr || !std::isfinite(value)) {
+        return value;
+    }
+    // scaled by a whole number and divided back: the nearest double to the decimal, which the
+    // writer's shortest form then prints as it reads ("-48.12")
+    const double scale = p->type == ParameterInfo::Type::Real ? 1e4 : 1.0;
+    const double rounded = std::round(value * scale) / scale;
+    return rounded == 0.0 ? 0.0 : rounded; // no -0
+}
+
 void ParameterCatalogue::applyDefaults(ParameterTable& table) const {
     for (const ParameterInfo& p : params_)
         if (ParameterTable::valid(p.number)) table.set(p.number, p.defaultValue);

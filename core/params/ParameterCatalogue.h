@@ -44,6 +44,10 @@ public:
 
     // nullopt when the controller would accept `value`; else a plain English reason.
     std::optional<std::string> validate(int number, double value) const;
+    // `value` at the parameter's resolution, as params.toml keeps it: a whole number for an int or
+    // a select, four decimals for a real (the pages show three; taught positions such as the
+    // factory 135 = 5.7195 carry four); an uncatalogued number as it is.
+    double atResolution(int number, double value) const;
     // Sets every catalogued parameter that ParameterTable holds to its default.
     void applyDefaults(ParameterTable& table) const;
 

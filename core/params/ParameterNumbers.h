@@ -81,6 +81,7 @@ inline constexpr int kManualHighSpeedX = 40;       // 40-44 手动高速, mm/min
 inline constexpr int kManualLowSpeedX = 45;        // 45-49 手动低速, mm/min
 inline constexpr int kManualStartAccelerationX = 50; // 50-54 手动启动加速度, mm/s^2
 inline constexpr int kManualStopAccelerationX = 55;  // 55-59 手动停止加速度, mm/s^2: a released key
+inline constexpr int kMpgPrecise = 171;            // 手轮精准控制模式: 0 开启 (every pulse runs out), 1 关闭 (factory)
 inline constexpr int kMpgDistance = 172;           // 手轮X1距离: mm per detent at x1
 inline constexpr int kMpgReversed = 175;           // 手轮方向: 0 positive, 1 negative
 inline constexpr int kMpgSpeedX1 = 176;            // 176, 177, 178: speed at x1, x10, x100, mm/min

@@ -152,8 +152,8 @@ TEST(Axes, CoordSetShowsAAndBAndSetsAsWorkCoordinate) {
     EXPECT_EQ(coord->columnText(4), QStringLiteral("B (度)"));
     EXPECT_TRUE(coord->columnShown(3));
     EXPECT_TRUE(coord->columnShown(4));
-    EXPECT_EQ(panel.window().softkeys()->label(8), QStringLiteral("F2 设置A"));
-    EXPECT_EQ(panel.window().softkeys()->label(9), QStringLiteral("F3 设置B"));
+    EXPECT_EQ(panel.window().softkeys()->label(8), QStringLiteral("\u21e7F2 设置A"));
+    EXPECT_EQ(panel.window().softkeys()->label(9), QStringLiteral("\u21e7F3 设置B"));
     EXPECT_TRUE(panel.window().softkeys()->enabled(8));
 
     panel.softkey(8); // 设置A

@@ -132,6 +132,18 @@ TEST(MachineFolder, ParametersAreEditedInPlaceKeepingEveryOtherByte) {
     EXPECT_EQ(readText(folder / "params.toml"), expected) << "without addMissing only listed values change";
 }
 
+// A value goes into params.toml at its parameter's resolution: a measured tool length without the
+// double's last-digit noise, a select or an int whole, a real to four decimals (135's factory 5.7195).
+TEST(MachineFolder, ParametersAreWrittenAtTheirResolution) {
+    const fs::path folder = freshFolder("params-resolution");
+    writeText(folder / "params.toml", "[params]\n930 = -50\n");
+    const MachineFolder store(folder);
+    ASSERT_EQ(store.saveParameters({{930, -48.120000000000005}, {135, 5.71950000001}, {7, 0.9999999}, {11, 7000.4},
+                                    {61, -0.00001}}),
+              std::nullopt);
+    EXPECT_EQ(readText(folder / "params.toml"), "[params]\n930 = -48.12\n7 = 1\n11 = 7000\n61 = 0\n135 = 5.7195\n");
+}
+
 TEST(MachineFolder, TheToolTableGoesIntoToolTblAndItsZIntoTheParametersParamsTomlLists) {
     const fs::path folder = freshFolder("tools");
     writeText(folder / "params.toml", "[params]\n930 = -50\n");

@@ -153,6 +153,52 @@ TEST(ManualJog, TheAxisFollowsTheWheelNoFasterThanItTurns) {
     EXPECT_NEAR(x(*c), 0.04, 1e-12);
 }
 
+// Param 171 手轮精准控制模式: 1 (关闭, the factory value) stops the axis when the wheel stops; 0
+// (开启) runs out every pulse. 40 detents at x100 in one second ask 16 mm of an axis the wheel's
+// x100 speed (178: 100 mm/min) lets run 1.67 mm in that second.
+TEST(ManualJog, Param171OneStopsTheAxisWhenTheWheelStops) {
+    auto cfg = machine();
+    cfg.parameters.set(param::kMpgPrecise, 1);
+    auto c = idle(std::move(cfg));
+    c->manual().setJogMode(JogMode::Mpg);
+    ASSERT_TRUE(c->manual().wheelTurn(0, 100, 40, 1.0));
+    c->advance(1.0);
+    const double stopped = x(*c);
+    EXPECT_GT(stopped, 1.5);
+    EXPECT_LE(stopped, 100.0 / 60.0 + 1e-9);
+    EXPECT_FALSE(c->panelStatus().jogging) << "at rest as the wheel stops";
+    c->advance(10.0);
+    EXPECT_NEAR(x(*c), stopped, 1e-12) << "the pulses it could not run are dropped";
+}
+
+TEST(ManualJog, Param171ZeroRunsOutEveryPulse) {
+    auto cfg = machine();
+    cfg.parameters.set(param::kMpgPrecise, 0);
+    auto c = idle(std::move(cfg));
+    c->manual().setJogMode(JogMode::Mpg);
+    ASSERT_TRUE(c->manual().wheelTurn(0, 100, 40, 1.0));
+    c->advance(1.0);
+    EXPECT_TRUE(c->panelStatus().jogging) << "still running out the pulses";
+    c->advance(11.0);
+    EXPECT_NEAR(x(*c), 40 * 100 * 0.004, 1e-9);
+}
+
+// A wheel turned in short bursts with 171 = 1: the axis never runs behind the wheel.
+TEST(ManualJog, Param171OneNeverLagsTheWheel) {
+    auto cfg = machine();
+    cfg.parameters.set(param::kMpgPrecise, 1);
+    auto c = idle(std::move(cfg));
+    c->manual().setJogMode(JogMode::Mpg);
+    for (int frame = 0; frame < 60; ++frame) {
+        c->manual().wheelTurn(0, 100, 2, 1.0 / 60.0);
+        c->advance(1.0 / 60.0);
+    }
+    const double atStop = x(*c);
+    EXPECT_GT(atStop, 0.0);
+    c->advance(5.0);
+    EXPECT_NEAR(x(*c), atStop, 1e-9);
+}
+
 TEST(ManualJog, SoftLimitStopsAContinuousJog) {
     auto cfg = machine();
     cfg.parameters.set(param::kSoftLimitsEnabled, 1);

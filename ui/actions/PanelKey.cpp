@@ -44,12 +44,14 @@ PanelKey mCodeKey(int code, PanelKey::Place place, QList<QKeyCombination> keyboa
             .keyboard = std::move(keyboard)};
 }
 
+// K1-K7 are Ctrl+F1-F7 on the keyboard.
 PanelKey userKeyOf(int number, PanelKey::Place place) {
     return {.name = QStringLiteral("K%1").arg(number),
             .role = Role::Machine,
             .command = userKey,
             .argument = static_cast<double>(number),
-            .place = place};
+            .place = place,
+            .keyboard = {Qt::CTRL | Qt::Key(Qt::Key_F1 + number - 1)}};
 }
 
 // Axes 0-2 are X Y Z, 3 and 4 the 4th and 5th (A, B): JOG_A+ is labelled 4th+.
@@ -65,6 +67,7 @@ PanelKey jogKey(int axis, int direction, QList<QKeyCombination> keyboard = {}) {
             .keyboard = std::move(keyboard)};
 }
 
+// 0.001 .. 1 are Alt+1 .. Alt+4 on the keyboard.
 PanelKey stepKey(const char* millimetres, int column) {
     return {.name = QStringLiteral("STEP_") + QLatin1StringView(millimetres),
             .role = Role::Machine,
@@ -72,11 +75,15 @@ PanelKey stepKey(const char* millimetres, int column) {
             .command = jogStep,
             .argument = QByteArray(millimetres).toDouble(),
             .lamp = Lamp::JogStep,
-            .place = {2, column}};
+            .place = {2, column},
+            .keyboard = {Qt::ALT | Qt::Key(Qt::Key_1 + column)}};
 }
 
 PanelKey softkeyKey(int number) {
-    return {.name = QStringLiteral("F%1").arg(number), .role = Role::Softkey, .softkey = number};
+    return {.name = QStringLiteral("F%1").arg(number),
+            .role = Role::Softkey,
+            .softkey = number,
+            .keyboard = {Qt::Key(Qt::Key_F1 + number - 1)}};
 }
 
 QList<PanelKey> makeKeys() {
@@ -84,15 +91,15 @@ QList<PanelKey> makeKeys() {
         {.name = "MONITOR", .role = Role::Page, .label = QT_TRANSLATE_NOOP3("m350::ui::KeyPad", "Monitor", "msg 300"),
          .page = PageId::monitor, .place = {0, 0}, .keyboard = {Qt::CTRL | Qt::Key_M}},
         {.name = "PROGRAM", .role = Role::Page, .label = QT_TRANSLATE_NOOP3("m350::ui::KeyPad", "Program", "msg 301"),
-         .page = PageId::program, .place = {0, 1}},
+         .page = PageId::program, .place = {0, 1}, .keyboard = {Qt::CTRL | Qt::Key_O}},
         {.name = "PARAM", .role = Role::Page, .label = QT_TRANSLATE_NOOP3("m350::ui::KeyPad", "Param", "msg 302"),
-         .page = PageId::param, .place = {0, 2}},
+         .page = PageId::param, .place = {0, 2}, .keyboard = {Qt::CTRL | Qt::Key_R}},
         {.name = "IO", .role = Role::Page, .label = QT_TRANSLATE_NOOP3("m350::ui::KeyPad", "IO", "msg 303"),
          .page = PageId::io, .place = {0, 3}, .keyboard = {Qt::CTRL | Qt::Key_I}},
         {.name = "LOG", .role = Role::Page, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "Log")},
-         .page = PageId::log, .place = {0, 4}},
+         .page = PageId::log, .place = {0, 4}, .keyboard = {Qt::CTRL | Qt::Key_L}},
         {.name = "SYSTEM", .role = Role::Page, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "System")},
-         .page = PageId::system, .place = {0, 5}},
+         .page = PageId::system, .place = {0, 5}, .keyboard = {Qt::CTRL | Qt::Key_Y}},
         {.name = "MDI", .role = Role::Page, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "MDI")},
          .page = PageId::mdi, .place = {1, 0}, .keyboard = {Qt::CTRL | Qt::Key_D}},
         {.name = "PROBE", .role = Role::Page, .label = QT_TRANSLATE_NOOP3("m350::ui::KeyPad", "Probe", "msg 313"),
@@ -105,13 +112,13 @@ QList<PanelKey> makeKeys() {
         {.name = "HIGH_LOW", .role = Role::Machine, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "Hi/Lo")},
          .command = toggleJogSpeed, .lamp = Lamp::JogHighSpeed, .place = {1, 4}, .keyboard = {Qt::CTRL | Qt::Key_H}},
         {.name = "STEP_INPUT", .role = Role::JogStepInput, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "Step...")},
-         .place = {1, 5}},
+         .place = {1, 5}, .keyboard = {Qt::ALT | Qt::Key_5}},
         stepKey("0.001", 0),
         stepKey("0.01", 1),
         stepKey("0.1", 2),
         stepKey("1", 3),
         {.name = "EXT_START", .role = Role::Machine, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "Ext START")},
-         .command = externStart, .place = {2, 4}},
+         .command = externStart, .place = {2, 4}, .keyboard = {Qt::SHIFT | Qt::Key_F9}},
         {.name = "ESTOP", .role = Role::Machine, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "E-STOP")},
          .command = emergencyStop, .place = {2, 5}, .keyboard = {Qt::Key_F12}},
         {.name = "START", .role = Role::Machine, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "START")},
@@ -126,11 +133,12 @@ QList<PanelKey> makeKeys() {
         {.name = "FRO_DOWN", .role = Role::Machine, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "FRO\n-10%")},
          .command = feedOverride, .argument = -10, .place = {5, 2}, .keyboard = {Qt::CTRL | Qt::Key_Minus}},
         {.name = "SRO_100", .role = Role::Machine, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "SRO\n100%")},
-         .command = spindleOverride, .argument = 0, .place = {5, 3}},
+         .command = spindleOverride, .argument = 0, .place = {5, 3}, .keyboard = {Qt::ALT | Qt::Key_0}},
         {.name = "SRO_UP", .role = Role::Machine, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "SRO\n+10%")},
-         .command = spindleOverride, .argument = 10, .place = {5, 4}},
+         .command = spindleOverride, .argument = 10, .place = {5, 4},
+         .keyboard = {Qt::ALT | Qt::Key_Equal, Qt::ALT | Qt::Key_Plus}},
         {.name = "SRO_DOWN", .role = Role::Machine, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "SRO\n-10%")},
-         .command = spindleOverride, .argument = -10, .place = {5, 5}},
+         .command = spindleOverride, .argument = -10, .place = {5, 5}, .keyboard = {Qt::ALT | Qt::Key_Minus}},
         {.name = "SPINDLE", .role = Role::Machine, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "Spindle")},
          .command = spindleKey, .argument = 0, .lamp = Lamp::Spindle, .place = {6, 0},
          .keyboard = {Qt::CTRL | Qt::Key_S}},
@@ -140,11 +148,11 @@ QList<PanelKey> makeKeys() {
         {.name = "RESET", .role = Role::Machine, .label = {QT_TRANSLATE_NOOP("m350::ui::KeyPad", "RESET")},
          .command = reset, .place = {6, 4, 2}, .keyboard = {Qt::Key_F11}},
         userKeyOf(7, {8, 0}),
-        mCodeKey(8, {8, 1}),
-        mCodeKey(9, {8, 2}),
-        mCodeKey(10, {8, 3}),
-        mCodeKey(11, {8, 4}),
-        mCodeKey(19, {8, 5}),
+        mCodeKey(8, {8, 1}, {Qt::CTRL | Qt::Key_8}),
+        mCodeKey(9, {8, 2}, {Qt::CTRL | Qt::Key_9}),
+        mCodeKey(10, {8, 3}, {Qt::CTRL | Qt::ALT | Qt::Key_0}),
+        mCodeKey(11, {8, 4}, {Qt::CTRL | Qt::ALT | Qt::Key_1}),
+        mCodeKey(19, {8, 5}, {Qt::CTRL | Qt::ALT | Qt::Key_9}),
         {.name = "ENTER", .onPrompt = confirm, .keyboard = {Qt::Key_Return, Qt::Key_Enter}},
         {.name = "ESC", .onPrompt = cancel, .keyboard = {Qt::Key_Escape}},
         {.name = "BACKSPACE", .onPrompt = backspace, .keyboard = {Qt::Key_Backspace}},
@@ -160,9 +168,9 @@ QList<PanelKey> makeKeys() {
     keys << jogKey(0, 1, {Qt::CTRL | Qt::Key_Right}) << jogKey(0, -1, {Qt::CTRL | Qt::Key_Left})
          << jogKey(1, 1, {Qt::CTRL | Qt::Key_Up}) << jogKey(1, -1, {Qt::CTRL | Qt::Key_Down})
          << jogKey(2, 1, {Qt::CTRL | Qt::Key_PageUp}) << jogKey(2, -1, {Qt::CTRL | Qt::Key_PageDown});
-    for (int axis = 3; axis < 5; ++axis) {
-        keys << jogKey(axis, 1) << jogKey(axis, -1);
-    }
+    // Ctrl+Home/End the 4th, Ctrl+Insert/Delete the 5th
+    keys << jogKey(3, 1, {Qt::CTRL | Qt::Key_Home}) << jogKey(3, -1, {Qt::CTRL | Qt::Key_End})
+         << jogKey(4, 1, {Qt::CTRL | Qt::Key_Insert}) << jogKey(4, -1, {Qt::CTRL | Qt::Key_Delete});
     return keys;
 }
 

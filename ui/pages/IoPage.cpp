@@ -2,6 +2,7 @@
 #include "ui/widgets/PanelTable.h"
 
 #include "core/params/IoPorts.h"
+#include "core/params/ParameterNumbers.h"
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/PanelContext.h"
 
@@ -140,7 +141,19 @@ void IoPage::switchOutput(bool on) {
     const params::ParameterTable& p = s->status.parameters;
     int pin = pinOf(p, rows_[row].parameter);
     int active = static_cast<int>(p.get(rows_[row].parameter + 2));
-    context().session().setOutput(pin, on ? active : 1 - active);
+    const int level = on ? active : 1 - active;
+    const int tool = s->status.tool;
+    if (on && rows_[row].parameter == param::kDrawbarOutput && tool > 0) {
+        // the tool in the spindle falls out when the drawbar lets go: the operator says so first
+        context().ask(tr("T%1 is in the spindle: releasing the drawbar drops it. Release it?").arg(tool),
+                      [this, pin, level](bool yes) {
+                          if (yes) {
+                              context().session().setOutput(pin, level);
+                          }
+                      });
+        return;
+    }
+    context().session().setOutput(pin, level);
 }
 
 void IoPage::forceSelected(MachineSession::Fault fault, int level) {

@@ -62,7 +62,7 @@ MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language*
     setCentralWidget(central);
     prompt_ = new PromptBox(this);
     context_.attach(prompt_, [this](const QString& text) { notify(text); });
-    recorder_ = new ActionRecorder([this] { return snapshot_ ? snapshot_->status.time : 0.0; }, this);
+    recorder_ = new ActionRecorder([this] { return snapshot_ ? snapshot_->sessionTime : 0.0; }, this);
     connect(dispatcher_, &ActionDispatcher::dispatched, recorder_, &ActionRecorder::record);
     connect(softkeys_, &SoftkeyBar::pressed, this,
             [this](int number) { dispatcher_->dispatch(OperatorAction::softkeyPress(number)); });

@@ -32,7 +32,8 @@ void SoftkeyBar::show(const QVector<Page::Softkey>& keys) {
         }
         button->show();
         const Page::Softkey key = i < keys.size() ? keys[i] : Page::Softkey{{}, false, {}};
-        QString f = QStringLiteral("F%1").arg(i % 6 + 1);
+        // The second row is SHIFT with F1-F6 (the M350's SHIFT key, code 1025), marked ⇧F1-⇧F6.
+        QString f = (i < 6 ? QStringLiteral("F%1") : QStringLiteral("\u21e7F%1")).arg(i % 6 + 1);
         button->setText(key.text.isEmpty() ? QString() : f + QLatin1Char(' ') + key.text);
         button->setEnabled(key.enabled && !key.text.isEmpty());
         button->setToolTip(key.tooltip);

@@ -10,7 +10,7 @@ class QPushButton;
 namespace m350::ui {
 
 // The F1-F6 softkeys under the screen: one row, or two where the page has twelve (the second
-// row answers Shift+F1-F6). A click is the same action as the key.
+// row, labelled ⇧F1-⇧F6, answers SHIFT with F1-F6). A click is the same action as the key.
 class SoftkeyBar : public QWidget {
     Q_OBJECT
 public:

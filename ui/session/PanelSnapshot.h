@@ -46,6 +46,9 @@ struct BreakPoints {
 struct PanelSnapshot {
     controller::PanelStatus status;
     Activity activity = Activity::None;
+    // The session's virtual clock since power-on: it only grows, where status.time (the display's
+    // time) stands still or runs back while the 试切 wheel holds or retraces the program.
+    double sessionTime = 0.0;
     QString programFile;  // the file START runs (empty: none loaded)
     QString lastError;    // why the last command was refused (syntax error with file:line:col, ...)
     QString machineName;

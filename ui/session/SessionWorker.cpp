@@ -109,6 +109,7 @@ void SessionWorker::advanceManual(double seconds) {
 }
 
 void SessionWorker::advance(double seconds) {
+    sessionTime_ += seconds;
     advanceSimulation(seconds);
     const bool wasRunning = busy();
     Controller::RunState state = controller_->advance(seconds);
@@ -162,6 +163,7 @@ void SessionWorker::publish() {
     auto snapshot = std::make_shared<PanelSnapshot>();
     snapshot->status = controller_->panelStatus();
     snapshot->activity = activity_;
+    snapshot->sessionTime = sessionTime_;
     snapshot->programFile = programFile_;
     snapshot->lastError = lastError_;
     snapshot->machineName = machineName_;

@@ -154,6 +154,7 @@ private:
     WorkRecord workRecord_;
     bool alarmLogged_ = false; // the alarm in force is in the system log
     QString lastError_; // why the last command was refused; every command clears it first
+    double sessionTime_ = 0.0; // virtual seconds the session has run: only ever grows
     double feedOverride_ = 100.0;
     double spindleOverride_ = 100.0;
     bool jogHigh_ = false;

@@ -97,6 +97,7 @@ void SessionWorker::setOutput(int port, int level) {
         refuse(tr("A program is running: wait for it, or PAUSE / RESET first"));
         return;
     }
+    log_->record("output", QStringLiteral("OUT%1 = %2").arg(port, 2, 10, QLatin1Char('0')).arg(level));
     publish();
 }
 
