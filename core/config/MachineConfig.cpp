@@ -265,13 +265,18 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
 
 void loadParams(const fs::path& folder, MachineConfig& config) {
     fs::path file = folder / MachineFolder::fileName(FolderFile::Params);
+    const auto* known = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled());
+    // A parameter params.toml does not set has its factory value (the catalogue's default), as on
+    // the controller after 恢复出厂设置; the uncatalogued ones (IO enables and levels) stay 0.
+    if (known) {
+        known->applyDefaults(config.parameters);
+    }
     if (!fs::exists(file)) {
         rebuildCallCodes(config); // [codes] alone: nothing to clash with
         return;
     }
     toml::table t = parseToml(file);
     warnUnknownKeys(file, t, {"params", "params.*"}, config.warnings);
-    const auto* known = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled());
     if (auto params = t["params"].as_table()) {
         for (auto&& [key, value] : *params) {
             const bool fanuc = config.dialect->id == gcode::DialectId::Fanuc;
