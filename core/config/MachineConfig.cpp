@@ -266,9 +266,11 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
 void loadParams(const fs::path& folder, MachineConfig& config) {
     fs::path file = folder / MachineFolder::fileName(FolderFile::Params);
     const auto* known = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled());
-    // A parameter params.toml does not set has its factory value (the catalogue's default), as on
-    // the controller after 恢复出厂设置; the uncatalogued ones (IO enables and levels) stay 0.
-    if (known) {
+    // On an M350 a parameter params.toml does not set has its factory value (the catalogue's
+    // default, the firmware's default_setting), as after 恢复出厂设置; the uncatalogued ones (IO
+    // enables and levels) stay 0. A FANUC control has none of the M350's factory values: there an
+    // absent one stays 0, as before.
+    if (known && config.dialect->id != gcode::DialectId::Fanuc) {
         known->applyDefaults(config.parameters);
     }
     if (!fs::exists(file)) {

@@ -37,12 +37,14 @@ ProgramWindow::ProgramWindow(QString machineFolder, QWidget* parent)
     caption_ = rowLabel(this, "programWindowCaption");
     column->addWidget(caption_);
     auto* rows = new QGridLayout;
-    rows->setHorizontalSpacing(8);
+    rows->setHorizontalSpacing(0); // the highlight runs unbroken from the number to the text
     rows->setVerticalSpacing(0);
     for (int row = 0; row < kRows; ++row) {
         numbers_[static_cast<std::size_t>(row)] = rowLabel(this, "programLineNumber");
         numbers_[static_cast<std::size_t>(row)]->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         numbers_[static_cast<std::size_t>(row)]->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
+        numbers_[static_cast<std::size_t>(row)]->setMinimumWidth(
+            numbers_[static_cast<std::size_t>(row)]->fontMetrics().horizontalAdvance(QStringLiteral("00000  ")));
         texts_[static_cast<std::size_t>(row)] = rowLabel(this, "programLine");
         rows->addWidget(numbers_[static_cast<std::size_t>(row)], row, 0);
         rows->addWidget(texts_[static_cast<std::size_t>(row)], row, 1);
