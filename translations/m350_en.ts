@@ -2050,6 +2050,21 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::ProgramWindow</name>
+    <message>
+        <source>No program loaded</source>
+        <translation>No program loaded</translation>
+    </message>
+    <message>
+        <source>%1: cannot be read</source>
+        <translation>%1: cannot be read</translation>
+    </message>
+    <message>
+        <source>%1   Line %2</source>
+        <translation>%1   Line %2</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::PromptBox</name>
     <message>
         <source>[Enter] OK    [Esc] Cancel</source>

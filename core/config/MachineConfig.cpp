@@ -270,13 +270,20 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
 
 void loadParams(const fs::path& folder, MachineConfig& config) {
     fs::path file = folder / MachineFolder::fileName(FolderFile::Params);
+    const auto* known = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled());
+    // On an M350 a parameter params.toml does not set has its factory value (the catalogue's
+    // default, the firmware's default_setting), as after 恢复出厂设置; the uncatalogued ones (IO
+    // enables and levels) stay 0. A FANUC control has none of the M350's factory values: there an
+    // absent one stays 0, as before.
+    if (known && config.dialect->id != gcode::DialectId::Fanuc) {
+        known->applyDefaults(config.parameters);
+    }
     if (!fs::exists(file)) {
         rebuildCallCodes(config); // [codes] alone: nothing to clash with
         return;
     }
     toml::table t = parseToml(file);
     warnUnknownKeys(file, t, {"params", "params.*"}, config.warnings);
-    const auto* known = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled());
     if (auto params = t["params"].as_table()) {
         for (auto&& [key, value] : *params) {
             const bool fanuc = config.dialect->id == gcode::DialectId::Fanuc;

@@ -35,7 +35,9 @@ struct LibraryFile {
 //   machine.toml   name, dialect, [libraries], [codes], [[io_links]], [magazine], [reference_points], [homing],
 //                  [tool_setter], [floating_setter], [tools], [tool_data], [interface_signals],
 //                  [variables] common, [coordinates] (FANUC options)
-//   params.toml    [params] N = value (parameters 0-999; the rest stay 0; FANUC machines also 1000-99999)
+//   params.toml    [params] N = value (parameters 0-999; on an M350 the rest take their factory
+//                  values from the catalogue, uncatalogued ones 0; FANUC machines: the rest 0, and
+//                  also 1000-99999)
 //   offsets.toml   optional: G92/G54..G59/G52/common = [X, Y, Z, A, B]
 //   variables.toml optional: [variables] N = value (FANUC retained #500-#999 and other stored values)
 //   tool.tbl       optional: the tool table in LinuxCNC's format (core/tools/ToolTableFile.h); on the

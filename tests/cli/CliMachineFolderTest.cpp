@@ -155,3 +155,24 @@ TEST_F(MachineFolderTest, FanucParametersAreParamsOfFanucMachinesOnly) {
 }
 
 } // namespace m350::clitest
+
+namespace m350::clitest {
+
+// Issue 25: a parameter params.toml does not set has its factory value (the catalogue's default)
+// for the macros too; one it sets has that value.
+TEST_F(MachineFolderTest, AParameterTheFolderDoesNotSetReadsAsItsFactoryValue) {
+    fs::path machine = copyMachine();
+    ASSERT_EQ(read(machine / "params.toml").find("\n172 ="), std::string::npos) << "172 is left to its default";
+    ProcessResult r = sim({"mdi", "#100 = #672", "#101 = #676", "--config", "machine", "--print", "100,101"});
+    ASSERT_EQ(r.exitStatus, kExitOk) << r.err;
+    json j = output(r);
+    EXPECT_NEAR(j["vars"]["100"].get<double>(), 0.004, 1e-12) << "手轮X1距离 (param 172)";
+    EXPECT_NEAR(j["vars"]["101"].get<double>(), 20.0, 1e-12) << "手轮X1速度 (param 176)";
+
+    std::ofstream(machine / "params.toml", std::ios::app) << "172 = 0.01\n";
+    ProcessResult set = sim({"mdi", "#100 = #672", "--config", "machine", "--print", "100"});
+    ASSERT_EQ(set.exitStatus, kExitOk) << set.err;
+    EXPECT_NEAR(output(set)["vars"]["100"].get<double>(), 0.01, 1e-12) << "the folder's value wins";
+}
+
+} // namespace m350::clitest

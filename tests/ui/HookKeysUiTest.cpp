@@ -83,6 +83,9 @@ TEST(HookKeys, GoWorkZeroAllRunsGotozero) {
 
 TEST(HookKeys, UserKeysRunTheirHookOrSwitchTheirOutput) {
     PanelHarness panel;
+    // 0: the key runs key-N.nc (the factory value, 1, switches OUT1)
+    panel.session().setParameter(210, 0);
+    panel.session().setParameter(213, 0);
     writeHook(panel.folder(), "key-1.nc", "#1560=1\n");
     panel.key("K1");
     panel.advance(1.0);

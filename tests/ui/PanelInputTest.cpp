@@ -73,8 +73,8 @@ TEST(PanelInput, TheMouseWheelTurnsTheHandwheelInMpgMode) {
     }
     QTest::qWait(120); // the wheel sends what it gathered every 50 ms
     panel.advance(3.0);
-    // 5 detents x100 x param 172, which the default machine leaves at the factory 0.004 mm
-    ASSERT_EQ(panel.session().latest()->status.parameters.get(172), 0.0);
+    // 5 detents x100 x param 172, which the default machine leaves to its factory value, 0.004 mm
+    ASSERT_EQ(panel.session().latest()->status.parameters.get(172), 0.004);
     EXPECT_NEAR(machineX(panel) - start, 5 * 100 * 0.004, 1e-6);
 }
 

@@ -3,6 +3,7 @@
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/pages/ProgramWindow.h"
 #include "ui/session/HookSteps.h"
 
 #include <QGridLayout>
@@ -85,7 +86,12 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
         ++line;
     }
     info->setRowStretch(line, 1);
-    row->addLayout(dro, 3);
+    // the program window sits under the coordinates, beside the overrides and counters
+    auto* left = new QVBoxLayout;
+    left->addLayout(dro, 1);
+    program_ = new ProgramWindow(context.machineFolder(), this);
+    left->addWidget(program_);
+    row->addLayout(left, 3);
     row->addLayout(info, 2);
     column->addLayout(row, 1);
     modal_ = new QLabel(this);
@@ -118,6 +124,7 @@ void MonitorPage::retranslate() {
     captions_["pieces"]->setText(tr("Cur No.", "msg 48"));
     captions_["time"]->setText(tr("Work Time", "msg 49"));
     captions_["jog"]->setText(tr("INC Distance", "msg 244"));
+    program_->retranslate();
     if (auto s = context().snapshot()) {
         render(*s);
     }
@@ -250,7 +257,15 @@ void MonitorPage::render(const PanelSnapshot& snapshot) {
         emit softkeysChanged();
     }
     values_["coord"]->setText(workSystemName(s.workSystem));
-    values_["fro"]->setText(QStringLiteral("%1%").arg(s.feedOverride, 0, 'f', 0));
+    // 试切: the wheel sets the feed override, and the state shows which way it drives the program
+    if (s.guide) {
+        const QString way = s.guideDirection > 0   ? PanelText::state(PanelText::State::Forward)
+                            : s.guideDirection < 0 ? PanelText::state(PanelText::State::Reverse)
+                                                   : QString();
+        values_["fro"]->setText(QStringLiteral("%1%  %2").arg(s.guideOverride, 0, 'f', 0).arg(way).trimmed());
+    } else {
+        values_["fro"]->setText(QStringLiteral("%1%").arg(s.feedOverride, 0, 'f', 0));
+    }
     values_["sro"]->setText(QStringLiteral("%1%").arg(s.spindleOverride, 0, 'f', 0));
     values_["sjr"]->setText(QStringLiteral("%1%").arg(s.jogOverride, 0, 'f', 0));
     values_["feed"]->setText(QStringLiteral("%1").arg(s.feed, 0, 'f', 0));
@@ -265,6 +280,7 @@ void MonitorPage::render(const PanelSnapshot& snapshot) {
     values_["time"]->setText(clock(s.runSeconds));
     values_["jog"]->setText(QStringLiteral("%1  %2").arg(s.jogStep, 0, 'f', 3).arg(s.jogHighSpeed ? tr("High", "msg 873") : tr("Low", "msg 872")));
     modal_->setText(QString::fromStdString(s.modalLine));
+    program_->render(snapshot);
 }
 
 QString MonitorPage::machineText(int axis) const { return machine_[static_cast<std::size_t>(axis)]->text().trimmed(); }

@@ -8,10 +8,14 @@
 class QLabel;
 
 namespace m350::ui {
+class ProgramWindow;
+}
+
+namespace m350::ui {
 
 // 加工状态 Monitor: machine (机械坐标) and work (工件坐标) coordinates of every configured axis with
 // its homed marker, the work system, the overrides, feed, spindle, tool, counters, run time and
-// the modal line. Softkeys as on the panel (two rows); 回机械原点, 回工件原点 and 清零 open their
+// the modal line, and the program window (ProgramWindow) following the run. Softkeys as on the panel (two rows); 回机械原点, 回工件原点 and 清零 open their
 // own rows (per axis and all), Esc goes back.
 class MonitorPage : public Page {
     Q_OBJECT
@@ -34,6 +38,7 @@ public:
     QString unitText(int axis) const;
     bool axisVisible(int axis) const;
     QString infoText(const QString& name) const; // "tool", "feed", "spindle", "fro" ...
+    const ProgramWindow* programWindow() const { return program_; }
 
 private:
     void openMenu(Menu menu);
@@ -49,6 +54,7 @@ private:
     QMap<QString, QLabel*> captions_;
     QMap<QString, QLabel*> values_;
     QLabel* modal_;
+    ProgramWindow* program_ = nullptr;
     Menu menu_ = Menu::Main;
     std::array<bool, 5> shown_{true, true, true, false, false};
     QString names_; // the axes' names the softkeys were made with

@@ -14,6 +14,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -22,6 +23,8 @@ namespace m350::ui {
 namespace {
 
 enum Column { Number, Note, Value, Unit, ColumnCount };
+constexpr int kUnitMinWidth = 62;
+constexpr int kUnitMaxWidth = 110;
 constexpr int kFirstVariable = 50;
 constexpr int kLastVariable = 499;
 
@@ -200,8 +203,13 @@ void ParamPage::showCategory(std::size_t category) {
         table_->setItem(row, Note, new QTableWidgetItem);
         table_->setItem(row, Value, new QTableWidgetItem);
         table_->setItem(row, Unit, new QTableWidgetItem(QString::fromStdString(info.unit)));
+        table_->item(row, Unit)->setToolTip(QString::fromStdString(info.unit));
         table_->item(row, Value)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     }
+    // the unit column is as wide as this group's longest unit ("pulse/mm", "mm/s^2"), the name
+    // column takes the rest and shows a cut name in full as its tooltip
+    table_->resizeColumnToContents(Unit);
+    table_->setColumnWidth(Unit, std::clamp(table_->columnWidth(Unit), kUnitMinWidth, kUnitMaxWidth));
     table_->selectRow(0);
     retranslate();
 }

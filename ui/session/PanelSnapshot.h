@@ -50,6 +50,9 @@ struct PanelSnapshot {
     // time) stands still or runs back while the 试切 wheel holds or retraces the program.
     double sessionTime = 0.0;
     QString programFile;  // the file START runs (empty: none loaded)
+    // The lines the last MDI run was given directly (the run's file is then "MDI"); a new object
+    // per run, so the Monitor's program window reads them only when they change.
+    std::shared_ptr<const QStringList> mdiLines;
     QString lastError;    // why the last command was refused (syntax error with file:line:col, ...)
     QString machineName;
     int magazineCapacity = 0;

@@ -165,6 +165,7 @@ void SessionWorker::publish() {
     snapshot->activity = activity_;
     snapshot->sessionTime = sessionTime_;
     snapshot->programFile = programFile_;
+    snapshot->mdiLines = mdiLines_;
     snapshot->lastError = lastError_;
     snapshot->machineName = machineName_;
     snapshot->homingPrompt = controller_->homing().needsBootHomingPrompt() && !busy(); // after sysstart.nc
@@ -285,6 +286,9 @@ void SessionWorker::runMdi(const QStringList& lines, Activity activity, bool thr
     if (!(viaFile ? controller_->loadHook(config::Hook::Mdi) : controller_->loadMdi(text))) {
         refuse(diagnosticsText(controller_->diagnostics()));
         return;
+    }
+    if (!viaFile) {
+        mdiLines_ = std::make_shared<const QStringList>(lines);
     }
     if (controller_->start()) {
         activity_ = activity;

@@ -121,6 +121,7 @@ private:
     Activity stepsActivity_ = Activity::None;
     void keepToolTable(); // saves a changed table; the table snapshots carry
     std::shared_ptr<const tools::ToolTable> toolTable_;
+    std::shared_ptr<const QStringList> mdiLines_;
     std::optional<tools::ToolData::Mark> shownToolMark_;
     std::optional<tools::ToolData::Mark> failedToolMark_;
     QString toolTableProblem_;
