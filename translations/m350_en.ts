@@ -10,6 +10,22 @@
         <source>MSETDATA: Modbus slave %1 did not answer within %2 s (modbus.toml declares no [slave.%1])</source>
         <translation>MSETDATA: Modbus slave %1 did not answer within %2 s (modbus.toml declares no [slave.%1])</translation>
     </message>
+    <message>
+        <source>G00 drove T%1 %2 mm into the tool setter, below its trip point: a rapid must stop above the setter, only G31 may touch it</source>
+        <translation>G00 drove T%1 %2 mm into the tool setter, below its trip point: a rapid must stop above the setter, only G31 may touch it</translation>
+    </message>
+    <message>
+        <source>T%1 turns with no Z offset (param %2 = 0): set the tool before it cuts</source>
+        <translation>T%1 turns with no Z offset (param %2 = 0): set the tool before it cuts</translation>
+    </message>
+    <message>
+        <source>The change to T%1 was stopped: the target tool [T%1] may differ from the current one [T%2]; handle it by hand and enter the tool the spindle holds</source>
+        <translation>The change to T%1 was stopped: the target tool [T%1] may differ from the current one [T%2]; handle it by hand and enter the tool the spindle holds</translation>
+    </message>
+    <message>
+        <source>No tool change before the operator enters the tool the spindle holds: a change to T%1 was stopped</source>
+        <translation>No tool change before the operator enters the tool the spindle holds: a change to T%1 was stopped</translation>
+    </message>
 </context>
 <context>
     <name>m350::ui::BackupImportFlow</name>
@@ -711,6 +727,11 @@
         <translation>Tool touched off</translation>
     </message>
     <message>
+        <source>Set target tool No.:</source>
+        <comment>msg 883</comment>
+        <translation>Set target tool No.:</translation>
+    </message>
+    <message>
         <source>Tool life reset</source>
         <translation>Tool life reset</translation>
     </message>
@@ -750,6 +771,11 @@
         <source>Go to home?</source>
         <comment>msg 140</comment>
         <translation>Go to home?</translation>
+    </message>
+    <message>
+        <source>Set target tool No.:</source>
+        <comment>msg 883</comment>
+        <translation>Set target tool No.:</translation>
     </message>
     <message>
         <source>Recording stopped</source>
@@ -2141,6 +2167,11 @@
     <message>
         <source>A program is running: wait for it, or PAUSE / RESET first</source>
         <translation>A program is running: wait for it, or PAUSE / RESET first</translation>
+    </message>
+    <message>
+        <source>Set target tool No.:</source>
+        <comment>msg 883</comment>
+        <translation>Set target tool No.:</translation>
     </message>
     <message>
         <source>Parameter %1: invalid value</source>

@@ -65,6 +65,19 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
     j["machine"] = controller::axesJson(report.machine);
     j["work"] = controller::axesJson(report.work);
     j["tool"] = report.tool;
+    if (!report.warnings.empty()) {
+        nlohmann::json warnings = nlohmann::json::array();
+        for (const Alarm& w : report.warnings) {
+            warnings.push_back({{"message", w.message}, {"message_id", w.messageId}, {"arguments", w.messageArguments}});
+        }
+        j["warnings"] = warnings;
+    }
+    if (report.toolUnsure) {
+        // the controller does not know which tool the spindle holds (a stop in a change)
+        j["tool_unsure"] = {{"message", report.toolUnsure->message},
+                            {"message_id", report.toolUnsure->messageId},
+                            {"arguments", report.toolUnsure->messageArguments}};
+    }
     nlohmann::json pockets = nlohmann::json::object();
     for (auto [pocket, tool] : report.pockets) {
         pockets[std::to_string(pocket)] = tool;

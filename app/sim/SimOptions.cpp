@@ -157,6 +157,14 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                         "press PAUSE (feed hold) when the run has gone S simulated seconds, START once the "
                         "machine stands (FANUC #3004 bit 0 holds it back)")
             ->check(positiveFinite);
+        cmd->add_option("--estop-at", o.settings.estopAt,
+                        "press 急停 (E-stop) when the run has gone S simulated seconds; stopped inside a tool "
+                        "change, the report's tool_unsure says the controller no longer knows the spindle's tool")
+            ->check(positiveFinite);
+        cmd->add_option("--confirm-tool", o.confirmTool,
+                        "after the run, press RESET and enter N as the tool the spindle holds (the panel's "
+                        "设置目标刀具号), as the operator does after a stop in a change")
+            ->check(CLI::NonNegativeNumber);
         cmd->add_option("--sensor-timeout", o.settings.sensorTimeout,
                         "simulated seconds a macro may wait for a sensor input before an alarm (default 10)")
             ->check(positiveFinite);

@@ -24,6 +24,7 @@ struct SimOptions {
     std::optional<std::string> toolTableFile; // --tool-table: instead of the folder's tool.tbl
     std::optional<std::string> toolsOut;      // --tools-out: the tool table after the run
     bool toolsAsTable = false;                // tools --tbl: tool.tbl text instead of JSON
+    std::optional<int> confirmTool;           // --confirm-tool: after the run, RESET and enter the spindle's tool
     controller::RunSettings settings;
 };
 

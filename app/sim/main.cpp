@@ -266,6 +266,14 @@ int runCommand(int argc, char** argv) {
     if (!homing && !ready) {
         report.status = controller::RunStatus::Error;
     }
+    if (o.confirmTool && ready) {
+        controller.reset();
+        if (!controller.setSpindleToolNumber(*o.confirmTool)) {
+            std::cerr << "m350-sim: --confirm-tool " << *o.confirmTool << ": the controller refused it\n";
+            return 64;
+        }
+        report = controller.status().report();
+    }
     std::optional<std::string> outputProblem = writeExternalOutput(controller, o);
     if (auto lifeProblem = saveToolLife(controller, config::MachineFolder(folder))) {
         outputProblem = lifeProblem;

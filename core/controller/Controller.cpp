@@ -35,7 +35,7 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
       interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters, config_.variableLayout),
       magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_,
                  [this] { return status_.source(); }}),
-      status_({config_, machine_, interp_, magazine_, executor_, program_, diagnostics_, state_, alarm_}, settings_),
+      status_({config_, machine_, interp_, magazine_, executor_, program_, diagnostics_, state_, alarm_, toolDoubt_}, settings_),
       devices_({config_.parameters, scan_, status_.traceWriter(), [this] { return machine_.time(); },
                 [this] { return status_.source(); }, [this](double seconds) { machine_.dwell(seconds); }},
                config_.modbus, settings_.externalOutputLimit),
@@ -163,6 +163,9 @@ void Controller::configureMachine() {
     setter.top = config_.setterTop;
     setter.radius = config_.setterRadius;
     machine_.setToolSetter(setter);
+    if (setter.port != 0) {
+        machine_.setObserver(this); // a rapid into the setter is a crash (checkSetterRapid)
+    }
     machine::ToolSetter block; // the floating setter, where the machine folder puts one on the work
     if (auto input = params::wiredInput(p, param::kFloatingSetterInput); input && config_.floatingSetterTop) {
         block.port = input->pin;
@@ -248,6 +251,9 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
     if (settings_.observer) {
         settings_.observer->onMachineEvent(event);
     }
+    if (event.type == machine::MachineEvent::Type::Rapid) {
+        checkSetterRapid(event);
+    }
     if (magazine_.device()) {
         feedMagazine(event);
     }
@@ -262,10 +268,39 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
 // observer, no cutting time counted, no spindle load or breakage to follow. Most moves of a program.
 bool Controller::ignoresMove(const machine::Axes& from, const machine::Axes& to) const {
     return !status_.trace() && !settings_.observer && !toolLife_.manager().inUse() && !breakage_.active() &&
-           magazine_.ignores(from, to);
+           (!magazine_.device() || magazine_.ignores(from, to)) &&
+           machine_.setterPenetration(from, to) <= kSetterContact;
+}
+
+// The fixed setter is solid (the M350's 对刀仪, a FANUC's TS27R stylus): a rapid that drives the
+// tool below its trip point hits it, as a move into a rack pocket does. Only G31 may meet it.
+void Controller::checkSetterRapid(const machine::MachineEvent& event) {
+    const double depth = machine_.setterPenetration(event.from, event.to);
+    if (depth <= kSetterContact) {
+        return;
+    }
+    char mm[32];
+    std::snprintf(mm, sizeof mm, "%.3f", depth);
+    const std::string tool = std::to_string(spindleTool());
+    macro::MacroError crash{AlarmCode::Crash,
+                            "G00 drove T" + tool + " " + mm +
+                                " mm into the tool setter, below its trip point: a rapid must stop above "
+                                "the setter, only G31 may touch it",
+                            0, "setter_crash", {tool, mm}};
+    if (state_ == RunState::Alarm || state_ == RunState::EStop) {
+        status_.postMessage(crash.message); // the first alarm stays the one shown
+        return;
+    }
+    throw crash;
 }
 
 bool Controller::manageTools(macro::EvaluatedBlock& block) {
+    if (block.has('T')) [[unlikely]] {
+        lastToolWord_ = roundToInt(block.words[block.firstOf['T' - 'A']].value);
+    }
+    if (toolDoubt_.doubt()) [[unlikely]] {
+        refuseChangeInDoubt(block);
+    }
     const bool took = toolLife_.applyBlock(block);
     if (toolLife_.manager().enabled()) {
         machine_.setObserver(this); // groups entered by G10 L3: cutting time counts from now on
@@ -297,6 +332,37 @@ void Controller::checkToolWord(const macro::EvaluatedBlock& block) const {
     const macro::WordValue& t = block.words[block.firstOf['T' - 'A']];
     if (auto why = magazine_.refusedTool(roundToInt(t.value))) {
         throw macro::MacroError{AlarmCode::InvalidArgument, *why, t.column};
+    }
+}
+
+// After a stop in a change, the next change (an M350's T, a FANUC's M06) would start from a tool
+// the controller only believes is in the spindle: refused at its word until the operator says.
+void Controller::refuseChangeInDoubt(const macro::EvaluatedBlock& block) const {
+    if (!magazine_.device() || (executor_ && executor_->changingTool()) || block.gCodes.has(65) ||
+        block.gCodes.has(66)) {
+        return;
+    }
+    const bool m350 = config_.dialect->id == gcode::DialectId::M350;
+    const auto word = std::find_if(block.words.begin(), block.words.end(), [m350](const macro::WordValue& w) {
+        return m350 ? w.letter == 'T' : w.letter == 'M' && w.value == 6.0;
+    });
+    if (word != block.words.end()) {
+        const int target = toolDoubt_.doubt()->target;
+        throw macro::MacroError{AlarmCode::InvalidArgument, toolDoubt_.refusal(), word->column,
+                                "tool_unsure_refused", {std::to_string(target)}};
+    }
+}
+
+void Controller::noteStopInChange() {
+    if (!executor_ || !executor_->changingTool() ||
+        (state_ != RunState::Running && state_ != RunState::Hold && state_ != RunState::Alarm)) {
+        return;
+    }
+    const bool m350 = config_.dialect->id == gcode::DialectId::M350;
+    const macro::Value target = m350 ? variable(1504) : macro::Value::of(lastToolWord_);
+    const int recorded = m350 ? saturatingInt(config_.parameters.get(param::kCurrentTool)) : fanucSpindleTool_;
+    if (toolDoubt_.stoppedInChange(target.vacant ? 0 : roundToInt(target.number), recorded)) {
+        status_.postMessage(toolDoubt_.notice().message);
     }
 }
 
@@ -351,19 +417,28 @@ void Controller::enterSafeState() {
 RunReport Controller::run() {
     panel_.setUnattended(true);
     start();
-    std::optional<double> pauseAt;
-    if (settings_.pauseAt && state_ == RunState::Running) {
-        pauseAt = runStartedAt_ + *settings_.pauseAt;
-    }
+    constexpr double kNever = std::numeric_limits<double>::infinity();
+    const bool running = state_ == RunState::Running;
+    double pauseAt = settings_.pauseAt && running ? runStartedAt_ + *settings_.pauseAt : kNever;
+    double estopAt = settings_.estopAt && running ? runStartedAt_ + *settings_.estopAt : kNever;
     while (state_ == RunState::Running) {
-        if (pauseAt) {
-            advance(std::max(0.0, *pauseAt - displayTime_));
+        const auto where = [this] {
+            return " (" + status_.source().file + ":" + std::to_string(status_.source().line) + ")";
+        };
+        if (estopAt != kNever && estopAt < pauseAt) {
+            advance(std::max(0.0, estopAt - displayTime_));
+            if (state_ == RunState::Running || state_ == RunState::Hold) {
+                status_.postMessage("E-STOP pressed at " + shortSeconds(estopAt - runStartedAt_) + " s" + where());
+                emergencyStop();
+            }
+            estopAt = kNever;
+        } else if (pauseAt != kNever) {
+            advance(std::max(0.0, pauseAt - displayTime_));
             if (state_ == RunState::Running) {
-                status_.postMessage("PAUSE pressed at " + shortSeconds(*pauseAt - runStartedAt_) + " s (" +
-                                    status_.source().file + ":" + std::to_string(status_.source().line) + ")");
+                status_.postMessage("PAUSE pressed at " + shortSeconds(pauseAt - runStartedAt_) + " s" + where());
                 hold();
             }
-            pauseAt.reset();
+            pauseAt = kNever;
         } else {
             advance(std::numeric_limits<double>::infinity());
         }
@@ -486,6 +561,9 @@ int Controller::stepOnce(int toolBefore) {
         }
     }
     const int toolAfter = spindleTool();
+    if (toolAfter != lengthCheckedTool_ && machine_.spindleTurning()) [[unlikely]] {
+        checkToolLength(toolAfter);
+    }
     if (toolAfter != toolBefore) {
         syncToolLength();
         if (status_.trace()) {
@@ -506,6 +584,33 @@ void Controller::takeToolChange(const interp::ModalInterpreter::ToolChange& chan
         tools_.swapPockets(fanucSpindleTool_, change.tool);
     }
     fanucSpindleTool_ = change.tool;
+}
+
+// On the M350 with its fixed setter on (param 130) every tool is set (对刀) before it cuts: its Z
+// offset (params 930-945, a virtual tool's 973-992) is where it trips the setter, and one never set
+// leaves work Z wrong by the whole tool length. The spindle turning with such a tool warns once per
+// tool. Without the fixed setter an offset of 0 is how the manual's single-tool 清零 works.
+void Controller::checkToolLength(int tool) {
+    lengthCheckedTool_ = tool;
+    if (config_.dialect->id != gcode::DialectId::M350 || tool == 0 ||
+        config_.parameters.get(param::kFixedSetterValid) == 0.0 || !lengthWarned_.insert(tool).second) {
+        return;
+    }
+    const std::optional<int> parameter = tools::m350ZParameter(tool, config_.parameters);
+    if (!parameter || config_.parameters.get(*parameter) != 0.0) {
+        return;
+    }
+    const std::string t = std::to_string(tool);
+    const std::string p = std::to_string(*parameter);
+    const TraceSource where = status_.source();
+    Alarm warning;
+    warning.code = AlarmCode::InvalidArgument;
+    warning.message = "T" + t + " turns with no Z offset (param " + p + " = 0): set the tool before it cuts";
+    warning.file = where.file;
+    warning.line = where.line;
+    warning.messageId = "tool_length_unset";
+    warning.messageArguments = {t, p};
+    status_.warn(warning);
 }
 
 void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& stop) {
@@ -533,6 +638,7 @@ bool Controller::optionalStopOn() {
 }
 
 void Controller::raiseAlarm(const Alarm& alarm) {
+    noteStopInChange(); // before the state says Alarm: an alarm inside a change stops it too
     alarm_ = alarm;
     panel_.clearDialog();
     if (executor_ && executor_->changingTool()) {

@@ -19,6 +19,7 @@
 #include "core/controller/StatusBoard.h"
 #include "core/controller/MagazineDriver.h"
 #include "core/controller/ToolBreakage.h"
+#include "core/controller/ToolDoubt.h"
 #include "core/controller/ToolLifeCounter.h"
 #include "core/controller/ToolTableEdits.h"
 #include "core/controller/TraceWriter.h"
@@ -36,6 +37,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -138,8 +140,12 @@ public:
     bool setVariable(int number, double value, std::string* why = nullptr);
     // The operator says which tool the spindle holds (after an E-stop in a change the macro may
     // have stopped before it recorded the tool): param 800 (#1300) on the M350, the PMC's spindle
-    // tool (what M85 stores) on a FANUC. False while a program runs or holds, or below 0.
+    // tool (what M85 stores) on a FANUC. False while a program runs or holds, or below 0. It ends
+    // the doubt a stop in a change leaves (toolDoubt()).
     bool setSpindleToolNumber(int tool);
+    // Whether a stop in a tool change left the spindle's tool unknown (ToolDoubt.h): the next
+    // change is refused at its T (M06 on a FANUC) until setSpindleToolNumber().
+    const ToolDoubt& toolDoubt() const { return toolDoubt_; }
 
     // The panel's feed override (进给倍率) in percent, from 0 up to param 295 (150 % when it is 0);
     // G00 follows it when param 253 = 1. Returns the percentage set; while a FANUC macro's #3004
@@ -201,8 +207,13 @@ public:
 
 private:
     void checkToolWord(const macro::EvaluatedBlock& block) const;
+    void refuseChangeInDoubt(const macro::EvaluatedBlock& block) const;
+    // A RESET, an E-stop or an alarm stops the run inside a tool change: the spindle's tool is in doubt.
+    void noteStopInChange();
     void takeToolChange(const interp::ModalInterpreter::ToolChange& change);
     void feedMagazine(const machine::MachineEvent& event);
+    void checkSetterRapid(const machine::MachineEvent& event);
+    static constexpr double kSetterContact = 1e-3; // mm: a rapid that ends on the setter's top only touches it
     bool load(const gcode::SourceText& source, gcode::FileRole role);
     void applyParameterOverrides(); // --param, before anything reads the parameters
     void applySettings();
@@ -239,6 +250,7 @@ private:
     void returnAfterPauseHook();
     int spindleTool() const { return magazine_.spindleTool(); }
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
+    void checkToolLength(int tool);
     // After a step: the single block stop, and the PAUSE #3004 held back (RunControl.cpp).
     void stopAfterStep(std::uint64_t machineBlocksBefore);
     std::optional<std::string> setOperationControl(int variable, double value);
@@ -259,6 +271,10 @@ private:
     std::vector<gcode::Diagnostic> diagnostics_;
     std::unique_ptr<macro::Executor> executor_;
     int fanucSpindleTool_ = 0;
+    int lastToolWord_ = 0;
+    int lengthCheckedTool_ = 0;  // the spindle tool checkToolLength() last saw turning
+    std::set<int> lengthWarned_; // the tools a missing length was warned of, once each // the last T a block gave (a FANUC's change fetches it at M06)
+    ToolDoubt toolDoubt_;
     double feedOverride_ = 100.0;
     double runStartedAt_ = 0.0;
     double timeLimitFrom_ = 0.0; // the run's start, moved on by its holds: --max-sim-time counts from here

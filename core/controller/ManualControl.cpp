@@ -156,7 +156,10 @@ bool ManualControl::moveManually(int axis, double distance, double speed, double
     try {
         machine_.manualMove(target, speed, acceleration);
     } catch (const macro::MacroError& error) {
-        run_.raiseAlarm(Alarm{error.code, error.message, "", 0, 0}); // the magazine was hit
+        Alarm hit{error.code, error.message, "", 0, 0}; // the magazine or the setter was hit
+        hit.messageId = error.messageId;
+        hit.messageArguments = error.messageArguments;
+        run_.raiseAlarm(hit);
         return false;
     }
     state_.movingUntil = machine_.time();

@@ -24,6 +24,7 @@ bool Controller::setSpindleToolNumber(int tool) {
         fanucSpindleTool_ = tool;
     }
     syncToolLength();
+    toolDoubt_.confirmed();
     return true;
 }
 

@@ -46,12 +46,14 @@ struct PanelStatus {
     double spindleRpm = 0.0;        // speed of the turning spindle, with SRO applied
     machine::SpindleState spindle = machine::SpindleState::Stop; // 停止 正转 反转 点动 攻丝 准停
     int tool = 0;                   // 当前刀具: what the spindle holds
+    std::optional<Alarm> toolUnsure; // a stop in a change left the tool in doubt (ToolDoubt::notice())
     int totalCount = 0;             // 总加工数 (param 201)
     int pieceCount = 0;             // 加工件数 (param 202)
     double runSeconds = 0.0;        // 加工时间 of the current run
     std::string modalLine;          // "G00 G17 G90 G94 G21 G40 G49 G80 G54 F3000 S12000"
 
     std::string message;            // the status line's #1503 text (empty when cleared)
+    std::optional<Alarm> notice;    // the controller's warning that text is, by its message id (StatusBoard::warn)
     std::string programStop;        // why a run holds by itself (M00, G04 P-1), else empty
     std::optional<std::string> dialog; // the #1505 dialog the run waits on (Enter / Esc), if any
     std::optional<Alarm> alarm;

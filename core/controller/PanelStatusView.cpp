@@ -67,11 +67,15 @@ PanelStatus Controller::panelStatus() {
                                                           machine_.limits().maxSpindleRpm)
                                                : 0.0;
     out.tool = spindleTool();
+    if (toolDoubt_.doubt()) {
+        out.toolUnsure = toolDoubt_.notice();
+    }
     out.totalCount = saturatingInt(config_.parameters.get(param::kTotalRunCount));
     out.pieceCount = saturatingInt(config_.parameters.get(param::kPieceCount));
     out.runSeconds = state_ == RunState::Idle ? 0.0 : std::max(0.0, displayTime_ - runStartedAt_);
     out.modalLine = status_.modalLine();
     out.message = status_.statusLine();
+    out.notice = status_.notice();
     out.programStop = programStop_;
     if (auto dialog = panel_.pendingDialog()) {
         out.dialog = dialog->text;

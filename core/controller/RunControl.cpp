@@ -94,6 +94,7 @@ void Controller::resume() {
 }
 
 void Controller::reset() {
+    noteStopInChange();
     machine::SimulatedMachine::Remainder rest = interruptMotion(displayTime_, true);
     toolLife_.manager().cutShortAt(machine_.time());
     if (state_ == RunState::Running) {
@@ -173,6 +174,7 @@ void Controller::stopAfterStep(std::uint64_t machineBlocksBefore) {
 }
 
 void Controller::emergencyStop(const std::string& why) {
+    noteStopInChange();
     interruptMotion(displayTime_, true);
     toolLife_.manager().cutShortAt(machine_.time());
     if (machine_.time() < displayTime_) {

@@ -24,6 +24,11 @@ struct RunReport {
     machine::Axes machine = machine::Axes::Zero();
     machine::Axes work = machine::Axes::Zero();
     int tool = 0;
+    // A stop in a tool change left the spindle's tool in doubt (ToolDoubt::notice()): what the
+    // controller says until the operator enters the tool.
+    std::optional<Alarm> toolUnsure;
+    // What the controller warned of (StatusBoard::warn): a tool used without a length ...
+    std::vector<Alarm> warnings;
     std::map<int, int> pockets; // pocket -> tool (0 = empty)
     // Tools the spindle let fall onto the table (a drawbar released with no pocket under the tool,
     // as a stop mid-change can leave it), in the order they fell: in neither the spindle nor a pocket.

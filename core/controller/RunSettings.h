@@ -30,6 +30,8 @@ struct RunSettings {
     // run() presses PAUSE when the run has gone this many seconds of virtual time, and START once
     // the machine stands (m350-sim --pause-at).
     std::optional<double> pauseAt;
+    // run() presses 急停 when the run has gone this many seconds (m350-sim --estop-at).
+    std::optional<double> estopAt;
     // A person at the panel (the panel sets it): a #1505 dialog holds the run until answered
     // (Controller::answerDialog). Without one, run() answers every dialog with Enter.
     bool operatorPresent = false;

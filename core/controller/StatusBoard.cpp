@@ -55,6 +55,13 @@ void StatusBoard::postMessage(std::string text) {
     messages_.add(std::move(text));
 }
 
+void StatusBoard::warn(const Alarm& warning) {
+    postMessage(warning.message);
+    statusLine_ = warning.message;
+    notice_ = warning;
+    warnings_.push_back(warning);
+}
+
 RunReport StatusBoard::report() const {
     RunReport out;
     switch (context_.state) {
@@ -67,6 +74,10 @@ RunReport StatusBoard::report() const {
     out.machine = context_.machine.position();
     out.work = context_.interp.workPosition();
     out.tool = context_.magazine.spindleTool();
+    out.warnings = warnings_;
+    if (context_.toolDoubt.doubt()) {
+        out.toolUnsure = context_.toolDoubt.notice();
+    }
     const config::MachineConfig& config = context_.config;
     const devices::Magazine* magazine = context_.magazine.device();
     int capacity = config.dialect->id == gcode::DialectId::M350

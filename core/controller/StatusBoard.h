@@ -6,6 +6,7 @@
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
 #include "core/controller/RunState.h"
+#include "core/controller/ToolDoubt.h"
 #include "core/controller/TraceWriter.h"
 #include "core/machine/MachineTypes.h"
 
@@ -51,6 +52,7 @@ public:
         const std::vector<gcode::Diagnostic>& diagnostics;
         const RunState& state;
         const std::optional<Alarm>& alarm;
+        const ToolDoubt& toolDoubt;
     };
     // `settings`: where the trace goes (RunSettings::trace) and how much of it is kept.
     StatusBoard(Context context, const RunSettings& settings);
@@ -61,9 +63,20 @@ public:
     void postMessage(std::string text);
     const MessageLog& messages() const { return messages_; }
     // #1503: the status line's text, until #1503 = 1000 clears it.
-    void showStatus(std::string text) { statusLine_ = std::move(text); }
-    void clearStatus() { statusLine_.clear(); }
+    void showStatus(std::string text) {
+        statusLine_ = std::move(text);
+        notice_.reset();
+    }
+    void clearStatus() {
+        statusLine_.clear();
+        notice_.reset();
+    }
     const std::string& statusLine() const { return statusLine_; }
+    // A warning the controller itself gives (a tool without a length): a message, the report's
+    // warnings, and the status line's text until #1503 writes it; it carries its message id
+    // (Alarm::messageId) so that the panel says it in its language.
+    void warn(const Alarm& warning);
+    const std::optional<Alarm>& notice() const { return notice_; }
 
     // The run as `m350-sim` reports it: status, alarm, diagnostics, positions, tool, pockets,
     // outputs, messages, time and blocks.
@@ -87,6 +100,8 @@ private:
     Context context_;
     MessageLog messages_;
     std::string statusLine_;
+    std::optional<Alarm> notice_;  // the last warning, while the status line shows it
+    std::vector<Alarm> warnings_;  // every warning, for the report
     std::unique_ptr<TraceWriter> trace_;
 };
 

@@ -2,6 +2,9 @@
 
 #include "core/controller/MagazineDriver.h"
 #include "core/machine/SimulatedMachine.h"
+#include "core/tools/ToolData.h"
+
+#include <algorithm>
 
 namespace m350::controller {
 
@@ -10,6 +13,18 @@ ToolBreakage::ToolBreakage(machine::SimulatedMachine& machine, const MagazineDri
 
 void ToolBreakage::setUp(const config::MachineConfig& config, const RunSettings& settings) {
     world_ = machine::ToolWorld(config.toolLengths, config.toolDiameters);
+    if (config.dialect->id == gcode::DialectId::M350) {
+        // A tool machine.toml does not list (a virtual tool, params 973-992) is as long as its stored
+        // Z offset says (the machine Z it trips the fixed setter at, less the setter's top): setting
+        // it again finds what was stored instead of a zero length. One never set is 0 long.
+        const params::ParameterTable& parameters = config.parameters; // the Controller's: it follows every edit
+        const double top = config.setterTop;
+        world_.setUnlisted([&parameters, top](int tool) {
+            const std::optional<int> offset = tools::m350ZParameter(tool, parameters);
+            const double stored = offset ? parameters.get(*offset) : 0.0;
+            return stored != 0.0 ? std::max(0.0, stored - top) : 0.0;
+        });
+    }
     for (const machine::ToolBreak& broken : settings.toolBreaks) {
         world_.addBreak(broken);
     }

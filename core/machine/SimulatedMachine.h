@@ -65,6 +65,9 @@ public:
     void arc(const Arc& arc, double feed) override;
     ProbeResult probe(const Axes& target, double feed, int port, int level) override;
     void setToolSetter(const ToolSetter& setter) { setter_ = setter; }
+    // How far the straight move from `from` to `to` drives the tool into the fixed setter, past
+    // its top, beyond where the tool already stood (mm); 0 when it stays clear or leaves it.
+    double setterPenetration(const Axes& from, const Axes& to) const;
     // The floating setter (浮动对刀块): a block lying on the work; its `top` trips wherever X and Y are.
     void setFloatingSetter(const ToolSetter& setter) { floatingSetter_ = setter; }
     void setHomeSwitch(int axis, const HomeSwitch& homeSwitch) { homeSwitches_[static_cast<std::size_t>(axis)] = homeSwitch; }

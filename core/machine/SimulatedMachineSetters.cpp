@@ -55,6 +55,22 @@ bool SimulatedMachine::setterPressed(const ToolSetter& setter, const Axes& at) c
     return setter.port != 0 && under && at(2) <= setter.top + toolLength_ + 1e-9;
 }
 
+double SimulatedMachine::setterPenetration(const Axes& from, const Axes& to) const {
+    if (setter_.port == 0) {
+        return 0.0;
+    }
+    const double trip = setter_.top + toolLength_; // the spindle Z where the tip meets the top
+    const Span over = withinReach(from, to, setter_.x, setter_.y, setter_.radius + toolRadius_).within({0.0, 1.0});
+    if (over.empty()) {
+        return 0.0;
+    }
+    // Z is linear along the move: the deepest point over the setter is at one end of the span
+    const double dz = to(2) - from(2);
+    const double deepest = trip - std::min(from(2) + dz * over.from, from(2) + dz * over.to);
+    const double already = setterPressed(setter_, from) ? trip - from(2) : 0.0;
+    return std::max(0.0, deepest - std::max(already, 0.0));
+}
+
 // The setter whose switch is wired to `port`, if any.
 const ToolSetter* SimulatedMachine::setterOn(int port) const {
     for (const ToolSetter* setter : {&setter_, &floatingSetter_}) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -24,8 +25,14 @@ public:
     void addBreak(const ToolBreak& broken) { breaks_.push_back(broken); }
     const std::vector<ToolBreak>& breaks() const { return breaks_; }
 
-    // The length as made (0 for a tool the world does not know).
-    double nominalLength(int tool) const { return entry(lengths_, tool).value_or(0.0); }
+    // A tool the world does not list (a virtual tool the operator puts in by hand) is as long as
+    // `length` says; without it, 0.
+    void setUnlisted(std::function<double(int)> length) { unlisted_ = std::move(length); }
+    // The length as made.
+    double nominalLength(int tool) const {
+        const std::optional<double> listed = entry(lengths_, tool);
+        return listed ? *listed : unlisted_ ? unlisted_(tool) : 0.0;
+    }
     // The length at virtual time t: the nominal one less every break due by then.
     double length(int tool, double t) const;
     // The diameter, when the world says it (a setter's side contact and the width of a cut need it).
@@ -40,6 +47,7 @@ private:
     std::vector<double> lengths_;
     std::vector<double> diameters_;
     std::vector<ToolBreak> breaks_;
+    std::function<double(int)> unlisted_;
 };
 
 } // namespace m350::machine

@@ -15,8 +15,10 @@ const std::string kMachine = std::string(M350_MACHINES_DIR) + "/m350-linear16";
 class CliToolSettingTest : public CliTest {
   protected:
     // Runs m350-sim with the manual's setter Z start, returning the JSON (with the exit status checked).
-    json simManual(std::vector<std::string> args, int exitStatus) {
-        args.insert(args.end(), {"--config", kMachine, "--param", "137=-53.677"});
+    // That start is T1's trip height: a longer tool (T2 trips at -48.12) needs one above it, or the
+    // rapid down to it drives the tool into the setter (a crash): `probeStart` -30 is the folder's.
+    json simManual(std::vector<std::string> args, int exitStatus, const std::string& probeStart = "-53.677") {
+        args.insert(args.end(), {"--config", kMachine, "--param", "137=" + probeStart});
         ProcessResult r = sim(args);
         EXPECT_EQ(r.exitStatus, exitStatus) << r.err << r.out;
         json j = output(r);
@@ -73,7 +75,7 @@ TEST_F(CliToolSettingTest, FloatingSettingSetsTheActiveWorkZ) {
 TEST_F(CliToolSettingTest, MultiToolSettingChangesToAndSetsEachListedTool) {
     json j = simManual({"hook", "mulprobe", "--var", "1970=2", "--var", "1971=3", "--param", "931=0", "--param",
                         "932=0", "--print", "1431,1432,1993"},
-                       kExitOk);
+                       kExitOk, "-30");
     EXPECT_NEAR(j["vars"]["1431"].get<double>(), -48.12, 1e-9);
     EXPECT_NEAR(j["vars"]["1432"].get<double>(), -61.305, 1e-9);
     EXPECT_EQ(j["vars"]["1993"], 0.0);
@@ -84,7 +86,7 @@ TEST_F(CliToolSettingTest, MultiToolSettingChangesToAndSetsEachListedTool) {
 TEST_F(CliToolSettingTest, AMultiToolSettingStoppedByAnAlarmKeepsTheToolsSetBeforeIt) {
     json j = simManual({"hook", "mulprobe", "--var", "1970=2", "--var", "1971=40", "--param", "931=0", "--print",
                         "1431,1993"},
-                       kExitAlarm);
+                       kExitAlarm, "-30");
     EXPECT_EQ(j["alarm"]["code"], "macro_alarm");
     EXPECT_NEAR(j["vars"]["1431"].get<double>(), -48.12, 1e-9);
     EXPECT_EQ(j["vars"]["1993"], 0.0);
@@ -92,7 +94,7 @@ TEST_F(CliToolSettingTest, AMultiToolSettingStoppedByAnAlarmKeepsTheToolsSetBefo
 }
 
 TEST_F(CliToolSettingTest, Param805SetsTheToolAtTheEndOfTheChange) {
-    json j = simManual({"mdi", "T2", "--param", "805=1", "--param", "931=0", "--print", "1431"}, kExitOk);
+    json j = simManual({"mdi", "T2", "--param", "805=1", "--param", "931=0", "--print", "1431"}, kExitOk, "-30");
     EXPECT_NEAR(j["vars"]["1431"].get<double>(), -48.12, 1e-9);
     EXPECT_EQ(j["tool"], 2);
 }

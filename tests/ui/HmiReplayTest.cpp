@@ -85,6 +85,25 @@ TEST(HmiReplay, AStuckSensorDuringT2EndsInTheWatchdogAlarm) {
     EXPECT_EQ(run.state["tool"].toInt(), 1);
 }
 
+TEST(HmiReplay, AnEStopInT2ThenT3EndsInTheToolNumberPrompt) {
+    for (const char* lang : {"zh_CN", "en"}) {
+        HmiRun run = runHmi({"--replay", replay("estop-in-tool-change.jsonl"), "--lang", lang});
+        ASSERT_EQ(run.exitCode, 0) << lang << ": " << run.errors.toStdString();
+        EXPECT_TRUE(run.state["tool_unsure"].toBool()) << lang;
+        EXPECT_EQ(run.state["alarm"].toObject()["code"].toString(), "invalid_argument") << lang;
+        const QString prompt = run.state["prompt"].toString();
+        const bool zh = QLatin1String(lang) == QLatin1String("zh_CN");
+        EXPECT_TRUE(prompt.contains(zh ? QStringLiteral("设置目标刀具号") : QStringLiteral("Set target tool No.:")))
+            << lang << ": " << prompt.toStdString();
+        EXPECT_TRUE(prompt.contains(zh ? QStringLiteral("请手动处理") : QStringLiteral("handle it by hand")))
+            << lang << ": " << prompt.toStdString();
+        EXPECT_TRUE(run.state["alarm_text"].toString().contains(zh ? QStringLiteral("输入主轴上的刀号之前不能换刀")
+                                                                   : QStringLiteral("No tool change before")))
+            << lang << ": " << run.state["alarm_text"].toString().toStdString();
+        EXPECT_FALSE(run.screenshot.isNull());
+    }
+}
+
 TEST(HmiReplay, TheHandwheelGuideStopsWhenTheWheelStops) {
     HmiRun run = runHmi({"--replay", replay("handwheel-guide.jsonl")});
     ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();

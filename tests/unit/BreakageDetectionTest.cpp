@@ -80,10 +80,11 @@ TEST(BreakageBySetter, WithDAnEndMillIsMeasuredUnderItsEdge) {
 }
 
 TEST(BreakageBySetter, ATouchOnTheWayToAStartPointStopsTheCalibration) {
-    // started 6.5 mm lower than the stylus top (nose -120 < -113.511): the first G31 to the X+
-    // start point touches at once, so its end is not where it was sent
+    // started beside the stylus 6.5 mm lower than its top (nose -120 < -113.511; over it that
+    // rapid would be a crash): the first G31 to the X+ start point touches at once, so its end is
+    // not where it was sent
     auto run = runProgram(bundledMachine("fanuc-ts27r"),
-                          lines({"G90 G49", "G53 G00 X400 Y-50", "G53 G00 Z-120", "G65 P9855 T97 R10.016 D12.7",
+                          lines({"G90 G49", "G53 G00 X380 Y-50", "G53 G00 Z-120", "G65 P9855 T97 R10.016 D12.7",
                                  "M30"}),
                           withTool(97));
     ASSERT_EQ(run.report.status, controller::RunStatus::Alarm);

@@ -42,7 +42,8 @@ TEST(ToolSettingMacro, FirstFixedProbeKeepsTheWorkZeroRelativeToTheSetter) {
     auto cfg = bundledMachine();
     cfg.offsets[1][2] = -100;
     cfg.parameters.set(930, 0);
-    ProgramRun r = runProgram(cfg, lines({"#1502 = 1", "M98 P502", "G53 Z-100", "M30"}));
+    // (away from the setter first: straight down over it would drive T1 into it)
+    ProgramRun r = runProgram(cfg, lines({"#1502 = 1", "M98 P502", "G53 X100 Y100", "G53 Z-100", "M30"}));
     EXPECT_RUN_OK(r);
     const double trip = tripHeight(cfg, 1);
     EXPECT_NEAR(r.number(1430), trip, 1e-9);

@@ -68,6 +68,7 @@ QHash<QString, QString> LogPage::eventTable() {
     w["work_record_cleared"] = tr("Clear Record", "msg 548");
     w["tool_table"] = tr("Tool table changed");
     w["touch_off"] = tr("Tool touched off");
+    w["tool_number"] = tr("Set target tool No.:", "msg 883");
     w["tool_life_reset"] = tr("Tool life reset");
     w["dprnt"] = tr("DPRNT output");
     w["dprnt_limit"] = tr("DPRNT output reached its limit; dprnt.txt keeps the first and the last records");

@@ -274,7 +274,8 @@ void MonitorPage::render(const PanelSnapshot& snapshot) {
                                   : type == 2 ? tr("Mult S", "msg 39")
                                               : tr("Analog S", "msg 37"));
     values_["spindle"]->setText(QStringLiteral("%1  %2").arg(s.spindleRpm, 0, 'f', 0).arg(PanelText::spindle(s.spindle)));
-    values_["tool"]->setText(QStringLiteral("T%1").arg(s.tool));
+    // after a stop in a change the controller is unsure of the tool until the operator enters it
+    values_["tool"]->setText((s.toolUnsure ? QStringLiteral("T%1 ?") : QStringLiteral("T%1")).arg(s.tool));
     values_["total"]->setText(QString::number(s.totalCount));
     values_["pieces"]->setText(QString::number(s.pieceCount));
     values_["time"]->setText(clock(s.runSeconds));

@@ -161,7 +161,7 @@ void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
     status_->render(s, currentPage()->id(), currentPage()->title());
     currentPage()->render(s);
     keys_->render(s);
-    QString message = QString::fromStdString(s.status.message);
+    QString message = s.status.notice ? AlarmText::message(*s.status.notice) : QString::fromStdString(s.status.message);
     if (s.status.run == controller::PanelStatus::Run::Hold) {
         QString why = QString::fromStdString(s.status.programStop);
         message = tr("Pause", "msg 114") + (why.isEmpty() ? QString() : QStringLiteral(": ") + why);
@@ -185,6 +185,7 @@ void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
     alarm_->setText(alarm);
     alarm_->setVisible(!alarm.isEmpty());
     showMacroDialog(s);
+    askToolNumber(s);
     if (s.homingPrompt && !bootPromptAsked_) {
         bootPromptAsked_ = true;
         context_.ask(tr("Go to home?", "msg 140"), [this](bool yes) {
@@ -193,6 +194,29 @@ void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
             }
         });
     }
+}
+
+// After a stop in a change the controller does not know the spindle's tool: at the E-stop, and
+// again at each change it refuses, the operator is asked to enter it (the firmware's msg 883).
+void MainWindow::askToolNumber(const PanelSnapshot& s) {
+    if (!s.status.toolUnsure || !s.status.alarm) {
+        toolPromptAlarm_.clear();
+        return;
+    }
+    const std::string at = s.status.alarm->message + ":" + std::to_string(s.status.alarm->line);
+    if (at == toolPromptAlarm_ || prompt_->active()) {
+        return;
+    }
+    toolPromptAlarm_ = at;
+    const QString question = AlarmText::message(*s.status.toolUnsure) + QStringLiteral("\n") +
+                             tr("Set target tool No.:", "msg 883");
+    prompt_->ask(question, true, QString::number(s.status.tool), [this](std::optional<QString> answer) {
+        bool number = false;
+        const int tool = answer ? answer->trimmed().toInt(&number) : -1;
+        if (number && tool >= 0) {
+            session_.setSpindleToolNumber(tool);
+        }
+    });
 }
 
 // A macro's #1505 dialog: the run waits until the operator answers it.

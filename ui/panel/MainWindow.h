@@ -62,6 +62,7 @@ private:
     void onSnapshot(const SnapshotPtr& snapshot);
     void refreshSoftkeys();
     void showMacroDialog(const PanelSnapshot& snapshot);
+    void askToolNumber(const PanelSnapshot& snapshot);
     void buildMenu();
     void retranslate();
 
@@ -81,6 +82,7 @@ private:
     QString notice_;
     std::string dialogShown_;
     bool bootPromptAsked_ = false;
+    std::string toolPromptAlarm_; // the alarm the tool number prompt was last asked at
     QMenu* panelMenu_ = nullptr;
     class ActionRecorder* recorder_ = nullptr;
     BackupImportFlow* backupImport_ = nullptr;

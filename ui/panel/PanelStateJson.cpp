@@ -54,6 +54,7 @@ QJsonObject panelStateJson(const PanelSnapshot& snapshot) {
     }
     out["homed"] = homed;
     out["tool"] = s.tool;
+    out["tool_unsure"] = s.toolUnsure.has_value();
     out["status_message"] = QString::fromStdString(s.message);
     if (s.alarm) {
         out["alarm"] = QJsonObject{{"code", QString::fromLatin1(alarmKey(s.alarm->code).data(),

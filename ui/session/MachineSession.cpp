@@ -51,6 +51,9 @@ void MachineSession::runMdi(const QStringList& lines, Activity activity) {
     post([lines, activity](SessionWorker& w) { w.runMdi(lines, activity); });
 }
 void MachineSession::answerDialog(bool enter) { post([enter](SessionWorker& w) { w.answerDialog(enter); }); }
+void MachineSession::setSpindleToolNumber(int tool) {
+    post([tool](SessionWorker& w) { w.setSpindleToolNumber(tool); });
+}
 void MachineSession::pressExternStart() { post([](SessionWorker& w) { w.pressExternStart(); }); }
 void MachineSession::runHooks(const QVector<HookStep>& steps, Activity activity) {
     post([steps, activity](SessionWorker& w) { w.runHooks(steps, activity); });

@@ -60,6 +60,8 @@ public:
     void runMdi(const QStringList& lines, Activity activity = Activity::Mdi);
     void runMdiPageLine(const QString& line); // the MDI page: written into mdi.nc, which runs
     void answerDialog(bool enter);
+    // The operator enters the tool the spindle holds (after a stop in a change: Controller::toolDoubt).
+    void setSpindleToolNumber(int tool);
     void pressExternStart();
     // A key or softkey that has a hook file (core/config/HookFiles.h): each step runs its hook when
     // the machine folder has one, else its fallback MDI lines (the built-in behaviour), with

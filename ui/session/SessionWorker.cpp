@@ -303,6 +303,16 @@ void SessionWorker::answerDialog(bool enter) {
     publish();
 }
 
+void SessionWorker::setSpindleToolNumber(int tool) {
+    lastError_.clear();
+    if (!controller_->setSpindleToolNumber(tool)) {
+        refuse(tr("Set target tool No.:", "msg 883") + QStringLiteral(" T%1").arg(tool));
+        return;
+    }
+    log_->record("tool_number", QStringLiteral("T%1").arg(tool));
+    publish();
+}
+
 void SessionWorker::pressExternStart() {
     lastError_.clear();
     controller_->operatorPanel().pressExternStart();

@@ -44,6 +44,7 @@ public:
     void loadProgram(const QString& path);
     void runMdi(const QStringList& lines, Activity activity, bool throughMdiFile = false);
     void answerDialog(bool enter);
+    void setSpindleToolNumber(int tool);
     void pressExternStart();
     void home(const QVector<int>& axes);
     void zeroAxes(const QVector<int>& axes);
