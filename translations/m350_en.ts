@@ -1,17 +1,6 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="en_US">
 <context>
-    <name>m350::ui::AlarmText</name>
-    <message>
-        <source>MGETDATA: Modbus slave %1 did not answer within %2 s; on the controller this hangs MGETDATA until a reboot (modbus.toml declares no [slave.%1])</source>
-        <translation>MGETDATA: Modbus slave %1 did not answer within %2 s; on the controller this hangs MGETDATA until a reboot (modbus.toml declares no [slave.%1])</translation>
-    </message>
-    <message>
-        <source>MSETDATA: Modbus slave %1 did not answer within %2 s (modbus.toml declares no [slave.%1])</source>
-        <translation>MSETDATA: Modbus slave %1 did not answer within %2 s (modbus.toml declares no [slave.%1])</translation>
-    </message>
-</context>
-<context>
     <name>m350::ui::BackupImportFlow</name>
     <message>
         <source>Controller backup: the folder that holds setting, slib-g.nc ...</source>

@@ -1,17 +1,6 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="zh_CN">
 <context>
-    <name>m350::ui::AlarmText</name>
-    <message>
-        <source>MGETDATA: Modbus slave %1 did not answer within %2 s; on the controller this hangs MGETDATA until a reboot (modbus.toml declares no [slave.%1])</source>
-        <translation>MGETDATA：Modbus从站%1在%2秒内无应答；在控制器上这会使MGETDATA卡住，直到重启（modbus.toml中没有[slave.%1]）</translation>
-    </message>
-    <message>
-        <source>MSETDATA: Modbus slave %1 did not answer within %2 s (modbus.toml declares no [slave.%1])</source>
-        <translation>MSETDATA：Modbus从站%1在%2秒内无应答（modbus.toml中没有[slave.%1]）</translation>
-    </message>
-</context>
-<context>
     <name>m350::ui::BackupImportFlow</name>
     <message>
         <source>Controller backup: the folder that holds setting, slib-g.nc ...</source>

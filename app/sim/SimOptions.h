@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/controller/RunSettings.h"
 
 #include <optional>
@@ -24,6 +25,7 @@ struct SimOptions {
     std::optional<std::string> toolTableFile; // --tool-table: instead of the folder's tool.tbl
     std::optional<std::string> toolsOut;      // --tools-out: the tool table after the run
     bool toolsAsTable = false;                // tools --tbl: tool.tbl text instead of JSON
+    MessageLanguage language = MessageLanguage::English; // --lang: the alarm lines on stderr
     controller::RunSettings settings;
 };
 

@@ -112,7 +112,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     }
     toml::table t = parseToml(file);
     warnUnknownKeys(file, t,
-                    {"name", "dialect", "libraries", "libraries.g", "libraries.m", "libraries.other", "codes", "codes.*",
+                    {"name", "name_zh", "dialect", "libraries", "libraries.g", "libraries.m", "libraries.other", "codes", "codes.*",
                      "io_links", "io_links.output", "io_links.input", "io_links.delay_ms", "io_links.inverted",
                      "magazine", "magazine.device", "magazine.capacity", "magazine.loading", "magazine.opening",
                      "magazine.carried", "magazine.slide_travel", "magazine.fork_depth", "magazine.tolerance",
@@ -131,6 +131,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                      "coordinates.additional_systems", "coordinates.rotation"},
                     config.warnings);
     config.name = t["name"].value_or(folder.filename().string());
+    config.nameZh = t["name_zh"].value_or(std::string());
     std::string dialect = t["dialect"].value_or(std::string("m350"));
     config.dialect = gcode::Dialect::byName(dialect);
     if (!config.dialect) {

@@ -296,7 +296,7 @@ void Controller::checkToolWord(const macro::EvaluatedBlock& block) const {
     }
     const macro::WordValue& t = block.words[block.firstOf['T' - 'A']];
     if (auto why = magazine_.refusedTool(roundToInt(t.value))) {
-        throw macro::MacroError{AlarmCode::InvalidArgument, *why, t.column};
+        throw macro::MacroError::of(AlarmCode::InvalidArgument, *why, t.column);
     }
 }
 
@@ -317,7 +317,7 @@ void Controller::watchSpindleLoad(const machine::MachineEvent& event) {
     auto anomaly = breakage_.sample(event);
     if (anomaly && state_ == RunState::Running && executor_) {
         interruptMotion(anomaly->time, false); // the axes brake from where they were then
-        throw macro::MacroError{AlarmCode::SpindleLoad, anomaly->message, 0};
+        throw macro::MacroError::of(AlarmCode::SpindleLoad, anomaly->message);
     }
 }
 
@@ -397,8 +397,8 @@ bool Controller::start() {
     if (!mdi_ && !hook_ && config_.parameters.get(param::kHomeBeforeProcessing) != 0.0 &&
         !homing_.xyzHomed()) {
         // param 220: automatic runs need X, Y and Z homed (MDI does not)
-        raiseAlarm(Alarm{AlarmCode::NotHomed, "机械未归零不能自动加工! (home X, Y and Z first: parameter 220)",
-                         program_.files.empty() ? std::string() : program_.files.front().name, 0, 0});
+        raiseAlarm(Alarm::of(AlarmCode::NotHomed, message("not_homed_auto"),
+                             program_.files.empty() ? std::string() : program_.files.front().name));
         return false;
     }
     resetOperationControl();

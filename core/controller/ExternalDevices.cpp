@@ -106,16 +106,9 @@ ExternalDevices::modbus(const ModbusRequest& request) {
         }
         char seconds[16];
         std::snprintf(seconds, sizeof seconds, "%.0f", gcode::ModbusStatement::kTimeout);
-        macro::MacroError error{AlarmCode::DeviceError,
-                                name + ": Modbus slave " + slave + " did not answer within " + seconds + " s",
-                                0,
-                                request.write ? "modbus_write_no_answer" : "modbus_read_no_answer",
-                                {slave, seconds}};
-        if (!request.write) {
-            error.message += "; on the controller this hangs MGETDATA until a reboot";
-        }
-        error.message += " (modbus.toml declares no [slave." + slave + "])";
-        return error;
+        return macro::MacroError::of(AlarmCode::DeviceError,
+                                     message(request.write ? "modbus_write_no_answer" : "modbus_read_no_answer",
+                                             {slave, seconds}));
     }
     auto reply = devices::modbus::readReply(sent, request.bytes, *answer);
     transfer.answer = devices::modbus::hex(*answer);

@@ -50,11 +50,10 @@ void InputWatch::read(int pin, int level, bool unattended) {
         }
         return;
     case SensorWatch::Verdict::TimedOut: {
-        std::string what = context_.describeInput(pin) + " never became " + std::to_string(1 - level) +
-                           ": waited " + seconds(timeout) + " s at " + context_.program.fileName(*where) + ":" +
-                           std::to_string(where->line);
+        Message what = message("sensor_timeout", {context_.describeInput(pin), std::to_string(1 - level), seconds(timeout),
+                                                  context_.program.fileName(*where), std::to_string(where->line)});
         sensors_.clear();
-        throw macro::MacroError{AlarmCode::SensorTimeout, std::move(what), 0};
+        throw macro::MacroError::of(AlarmCode::SensorTimeout, what);
     }
     }
 }

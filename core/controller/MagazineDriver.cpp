@@ -228,7 +228,7 @@ bool MagazineDriver::ignores(const machine::Axes& from, const machine::Axes& to)
 
 void MagazineDriver::onMachineEvent(const machine::MachineEvent& event) {
     using Type = machine::MachineEvent::Type;
-    std::optional<std::string> crash;
+    std::optional<Message> crash;
     switch (event.type) {
     case Type::Rapid:
     case Type::Feed:
@@ -257,7 +257,7 @@ void MagazineDriver::onMachineEvent(const machine::MachineEvent& event) {
     default: break;
     }
     if (crash) {
-        throw macro::MacroError{AlarmCode::Crash, *crash, 0};
+        throw macro::MacroError::of(AlarmCode::Crash, *crash);
     }
 }
 
@@ -267,7 +267,7 @@ void MagazineDriver::moveStoppedAt(const machine::Axes& position) {
     }
 }
 
-std::optional<std::string> MagazineDriver::output(int port, int level, double now) {
+std::optional<Message> MagazineDriver::output(int port, int level, double now) {
     const Eigen::Vector3d nose = noseAt(context_.machine.position());
     if (port == drawbar_.output) {
         const bool released = level == drawbar_.releaseLevel;

@@ -1,31 +1,17 @@
 #include "ui/i18n/AlarmText.h"
 
+#include "ui/i18n/Language.h"
+
 namespace m350::ui {
 
-namespace {
-
-QString words(const std::string& id) {
-    if (id == "modbus_read_no_answer") {
-        return AlarmText::tr("MGETDATA: Modbus slave %1 did not answer within %2 s; on the controller this hangs "
-                             "MGETDATA until a reboot (modbus.toml declares no [slave.%1])");
-    }
-    if (id == "modbus_write_no_answer") {
-        return AlarmText::tr("MSETDATA: Modbus slave %1 did not answer within %2 s (modbus.toml declares no [slave.%1])");
-    }
-    return {};
-}
-
-} // namespace
-
 QString AlarmText::message(const Alarm& alarm) {
-    QString text = words(alarm.messageId);
-    if (text.isEmpty()) {
+    if (alarm.messageId.empty() || findMessagePattern(alarm.messageId) == nullptr) {
         return QString::fromStdString(alarm.message);
     }
-    for (const std::string& argument : alarm.messageArguments) {
-        text = text.arg(QString::fromStdString(argument));
-    }
-    return text;
+    // translations/messages.tsv, the table the core and m350-sim say their messages from
+    const MessageLanguage language =
+        Language::panelLanguage() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
+    return QString::fromStdString(messageText(alarm.messageId, alarm.messageArguments, language));
 }
 
 QString AlarmText::located(const Alarm& alarm) {

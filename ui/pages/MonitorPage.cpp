@@ -2,6 +2,7 @@
 
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/CompactDro.h"
+#include "ui/widgets/DroLabel.h"
 #include "ui/pages/PanelContext.h"
 #include "ui/session/HookSteps.h"
 
@@ -55,9 +56,9 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
     for (int axis = 0; axis < 5; ++axis) {
         axisName_[axis] = new QLabel(this);
         axisName_[axis]->setObjectName(QStringLiteral("droAxis%1").arg(axis));
-        machine_[axis] = new QLabel(this);
+        machine_[axis] = new DroLabel(this);
         machine_[axis]->setObjectName(QStringLiteral("droMachine%1").arg(axis));
-        work_[axis] = new QLabel(this);
+        work_[axis] = new DroLabel(this);
         work_[axis]->setObjectName(QStringLiteral("droWork%1").arg(axis));
         for (QLabel* value : {machine_[axis], work_[axis]}) {
             value->setProperty("dro", true);
