@@ -53,7 +53,11 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
                       {"line", a.line}, {"column", a.column}};
         if (!a.messageId.empty()) { // only then: the other alarms keep the contract's keys as they were
             j["alarm"]["message_id"] = a.messageId;
-            j["alarm"]["message_arguments"] = a.messageArguments;
+            nlohmann::json arguments = nlohmann::json::array();
+            for (const std::string& argument : a.messageArguments) {
+                arguments.push_back(argumentIn(argument, MessageLanguage::English)); // as `message` says it
+            }
+            j["alarm"]["message_arguments"] = std::move(arguments);
         }
     } else if (report.status == controller::RunStatus::Error) {
         j["alarm"] = firstError(report.diagnostics);

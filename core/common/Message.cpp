@@ -32,13 +32,15 @@ std::vector<MessagePattern> readTable() {
     return table;
 }
 
-std::string fill(const std::string& pattern, const std::vector<std::string>& arguments) {
+constexpr char kBilingual = '\x1f'; // between an argument's English and its Chinese
+
+std::string fill(const std::string& pattern, const std::vector<std::string>& arguments, MessageLanguage language) {
     std::string out;
     out.reserve(pattern.size() + 32);
     for (std::size_t i = 0; i < pattern.size(); ++i) {
         if (pattern[i] == '%' && i + 1 < pattern.size() && pattern[i + 1] >= '1' && pattern[i + 1] <= '9') {
             const auto n = static_cast<std::size_t>(pattern[i + 1] - '1');
-            out += n < arguments.size() ? arguments[n] : std::string("?");
+            out += n < arguments.size() ? argumentIn(arguments[n], language) : std::string("?");
             ++i;
         } else {
             out += pattern[i];
@@ -48,6 +50,18 @@ std::string fill(const std::string& pattern, const std::vector<std::string>& arg
 }
 
 } // namespace
+
+std::string bilingual(std::string_view english, std::string_view chinese) {
+    return std::string(english) + kBilingual + std::string(chinese);
+}
+
+std::string argumentIn(const std::string& argument, MessageLanguage language) {
+    const std::size_t split = argument.find(kBilingual);
+    if (split == std::string::npos) {
+        return argument;
+    }
+    return language == MessageLanguage::Chinese ? argument.substr(split + 1) : argument.substr(0, split);
+}
 
 const std::vector<MessagePattern>& messagePatterns() {
     static const std::vector<MessagePattern> table = readTable();
@@ -68,11 +82,11 @@ std::string messageText(std::string_view id, const std::vector<std::string>& arg
     if (pattern == nullptr) {
         std::string text(id);
         for (const std::string& argument : arguments) {
-            text += " " + argument;
+            text += " " + argumentIn(argument, language);
         }
         return text;
     }
-    return fill(language == MessageLanguage::Chinese ? pattern->chinese : pattern->english, arguments);
+    return fill(language == MessageLanguage::Chinese ? pattern->chinese : pattern->english, arguments, language);
 }
 
 std::string Message::english() const {

@@ -32,6 +32,11 @@ std::ostream& operator<<(std::ostream& out, const Message& m);
 // first test that reaches it.
 Message message(std::string_view id, std::vector<std::string> arguments = {});
 
+// An argument that is words after all (an input's function: "tool released", 松刀到位), in both
+// languages; english() and in() take the one they say.
+std::string bilingual(std::string_view english, std::string_view chinese);
+std::string argumentIn(const std::string& argument, MessageLanguage language);
+
 // One row of the table.
 struct MessagePattern {
     std::string id;

@@ -120,7 +120,9 @@ OperatorPanel Controller::newOperatorPanel() {
                                program_,
                                status_.traceWriter(),
                                [this] { return executor_ ? executor_->location() : std::nullopt; },
-                               [this](int pin) { return magazine_.describeInput(pin); },
+                               [this](int pin) {
+                                   return bilingual(magazine_.describeInput(pin), magazine_.describeInput(pin, true));
+                               },
                                post};
     return OperatorPanel({settings_, [this] { return state_ == RunState::Running; }}, std::move(dialog),
                          std::move(keys), std::move(inputs));

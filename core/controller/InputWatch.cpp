@@ -86,7 +86,7 @@ std::optional<SensorWait> InputWatch::wait() const {
         return std::nullopt;
     }
     SensorWait out;
-    out.input = context_.describeInput(wait->pin);
+    out.input = argumentIn(context_.describeInput(wait->pin), MessageLanguage::English);
     out.awaitedLevel = 1 - wait->level;
     out.seconds = context_.machine.time() - wait->since;
     out.file = context_.program.fileName(wait->where);

@@ -186,16 +186,17 @@ Eigen::Vector3d MagazineDriver::noseAt(const machine::Axes& position) const {
 }
 
 // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor.
-std::string MagazineDriver::describeInput(int pin) const {
+std::string MagazineDriver::describeInput(int pin, bool chinese) const {
     if (params::inputOnPin(context_.config.parameters, pin) || !context_.config.magazine.present()) {
-        return params::describeInput(context_.config.parameters, pin);
+        return params::describeInput(context_.config.parameters, pin, chinese);
     }
     const config::MagazineConfig& m = context_.config.magazine;
-    const char* what = pin == m.inPositionInput ? (disc_ ? "disc in position" : "carousel in position")
-                       : pin == m.atSpindleInput ? "carousel at the spindle"
-                       : pin == m.awayInput      ? "carousel away"
-                       : pin == m.releasedInput  ? "tool released"
-                       : pin == m.clampedInput   ? "tool clamped"
+    const char* what = pin == m.inPositionInput
+                           ? (disc_ ? (chinese ? "刀盘到位" : "disc in position") : (chinese ? "刀库到位" : "carousel in position"))
+                       : pin == m.atSpindleInput ? (chinese ? "刀库在主轴处" : "carousel at the spindle")
+                       : pin == m.awayInput      ? (chinese ? "刀库已退回" : "carousel away")
+                       : pin == m.releasedInput  ? (chinese ? "松刀到位" : "tool released")
+                       : pin == m.clampedInput   ? (chinese ? "夹刀到位" : "tool clamped")
                                                  : nullptr;
     return what && pin > 0 ? params::inputName(pin) + " (" + what + ")" : params::inputName(pin);
 }

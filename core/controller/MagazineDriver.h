@@ -84,8 +84,9 @@ public:
     bool ignores(const machine::Axes& from, const machine::Axes& to) const;
     // The move under way stopped short at `position` (Magazine::stoppedAt).
     void moveStoppedAt(const machine::Axes& position);
-    // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor.
-    std::string describeInput(int pin) const;
+    // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor;
+    // its Chinese name with `chinese`.
+    std::string describeInput(int pin, bool chinese = false) const;
 
 private:
     struct Sensor {

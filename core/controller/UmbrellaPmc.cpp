@@ -31,7 +31,7 @@ void MagazineDriver::awaitSensor(int pin, int level, int mCode) {
             char seconds[32];
             std::snprintf(seconds, sizeof seconds, "%.1f", context_.settings.sensorTimeout);
             throw macro::MacroError::of(AlarmCode::SensorTimeout, message("pmc_sensor_timeout",
-                                                                          {describeInput(pin), std::to_string(level),
+                                                                          {bilingual(describeInput(pin), describeInput(pin, true)), std::to_string(level),
                                                                            seconds, std::to_string(mCode)}));
         }
         context_.machine.blockTime(kPmcScan);

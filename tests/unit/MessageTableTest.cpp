@@ -99,6 +99,11 @@ TEST(MessageTable, SaysAMessageInEitherLanguageWithItsArguments) {
     EXPECT_EQ(alarm.messageId, "rack_dropped");
     EXPECT_EQ(alarm.messageArguments, drop.arguments);
     EXPECT_THROW(message("no_such_message"), std::logic_error);
+    // an input's function is words: said in the message's language
+    const Message timeout =
+        message("sensor_timeout", {bilingual("IN11 (tool released)", "IN11 (松刀到位)"), "1", "10.0", "slib-g.nc", "46"});
+    EXPECT_EQ(timeout.english(), "IN11 (tool released) never became 1: waited 10.0 s at slib-g.nc:46");
+    EXPECT_EQ(timeout.in(MessageLanguage::Chinese), "IN11 (松刀到位)未变为1：在slib-g.nc:46处已等待10.0秒");
 }
 
 } // namespace
