@@ -81,7 +81,7 @@ ExternalDevices::modbus(const ModbusRequest& request) {
     const std::string name = gcode::ModbusStatement::name(request.write);
     const std::string slave = std::to_string(request.slave);
     if (context_.parameters.get(param::kModbusRtu) == 0.0) {
-        return macro::MacroError{AlarmCode::DeviceError, name + ": Modbus RTU is off (parameter 279 = 0)", 0};
+        return macro::MacroError::of(AlarmCode::DeviceError, message(request.write ? "modbus_off_write" : "modbus_off_read"));
     }
     if (context_.scan.scanning()) {
         context_.scan.refuse(name + " talks to Modbus slave " + slave);
