@@ -74,6 +74,8 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
         dro->addWidget(unit_[axis], axis + 1, 3);
     }
     dro->setRowStretch(6, 1);
+    dro->setColumnStretch(1, 1); // the coordinates take the room the row gives the DRO
+    dro->setColumnStretch(2, 1);
     auto* info = new QGridLayout;
     info->setVerticalSpacing(3);
     int line = 0;

@@ -13,11 +13,13 @@ constexpr int kSmallestPoint = 7;
 constexpr int kLargestPoint = 60;
 constexpr int kPreferredPoint = 22; // what the 1024x600 panel shows
 constexpr int kPreferredWindowHeight = 600;
+constexpr int kSlack = 4; // px: a glyph's overhang past its advance (the sign, the last digit)
 
 } // namespace
 
 DroLabel::DroLabel(QWidget* parent) : QLabel(parent) {
-    setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    // wants the 22 pt width, takes any width down to the 7 pt one's
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
     QFont f = font();
     f.setPointSize(kPreferredPoint);
     setFont(f);
@@ -59,7 +61,7 @@ void DroLabel::fitFont() {
     int point = kSmallestPoint;
     for (int p = tallest; p > kSmallestPoint; --p) {
         f.setPointSize(p);
-        if (QFontMetrics(f).horizontalAdvance(widestText()) <= room.width()) {
+        if (QFontMetrics(f).horizontalAdvance(widestText()) + kSlack <= room.width()) {
             point = p;
             break;
         }
