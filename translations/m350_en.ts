@@ -1,33 +1,6 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="en_US">
 <context>
-    <name>m350::ui::AlarmText</name>
-    <message>
-        <source>MGETDATA: Modbus slave %1 did not answer within %2 s; on the controller this hangs MGETDATA until a reboot (modbus.toml declares no [slave.%1])</source>
-        <translation>MGETDATA: Modbus slave %1 did not answer within %2 s; on the controller this hangs MGETDATA until a reboot (modbus.toml declares no [slave.%1])</translation>
-    </message>
-    <message>
-        <source>MSETDATA: Modbus slave %1 did not answer within %2 s (modbus.toml declares no [slave.%1])</source>
-        <translation>MSETDATA: Modbus slave %1 did not answer within %2 s (modbus.toml declares no [slave.%1])</translation>
-    </message>
-    <message>
-        <source>G00 drove T%1 %2 mm into the tool setter, below its trip point: a rapid must stop above the setter, only G31 may touch it</source>
-        <translation>G00 drove T%1 %2 mm into the tool setter, below its trip point: a rapid must stop above the setter, only G31 may touch it</translation>
-    </message>
-    <message>
-        <source>T%1 turns with no Z offset (param %2 = 0): set the tool before it cuts</source>
-        <translation>T%1 turns with no Z offset (param %2 = 0): set the tool before it cuts</translation>
-    </message>
-    <message>
-        <source>The change to T%1 was stopped: the target tool [T%1] may differ from the current one [T%2]; handle it by hand and enter the tool the spindle holds</source>
-        <translation>The change to T%1 was stopped: the target tool [T%1] may differ from the current one [T%2]; handle it by hand and enter the tool the spindle holds</translation>
-    </message>
-    <message>
-        <source>No tool change before the operator enters the tool the spindle holds: a change to T%1 was stopped</source>
-        <translation>No tool change before the operator enters the tool the spindle holds: a change to T%1 was stopped</translation>
-    </message>
-</context>
-<context>
     <name>m350::ui::BackupImportFlow</name>
     <message>
         <source>Controller backup: the folder that holds setting, slib-g.nc ...</source>

@@ -1,33 +1,6 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="zh_CN">
 <context>
-    <name>m350::ui::AlarmText</name>
-    <message>
-        <source>MGETDATA: Modbus slave %1 did not answer within %2 s; on the controller this hangs MGETDATA until a reboot (modbus.toml declares no [slave.%1])</source>
-        <translation>MGETDATA：Modbus从站%1在%2秒内无应答；在控制器上这会使MGETDATA卡住，直到重启（modbus.toml中没有[slave.%1]）</translation>
-    </message>
-    <message>
-        <source>MSETDATA: Modbus slave %1 did not answer within %2 s (modbus.toml declares no [slave.%1])</source>
-        <translation>MSETDATA：Modbus从站%1在%2秒内无应答（modbus.toml中没有[slave.%1]）</translation>
-    </message>
-    <message>
-        <source>G00 drove T%1 %2 mm into the tool setter, below its trip point: a rapid must stop above the setter, only G31 may touch it</source>
-        <translation>G00快速移动使T%1撞入对刀仪%2毫米,低于触发点: 快速移动必须停在对刀仪上方,只有G31可以接触它!</translation>
-    </message>
-    <message>
-        <source>T%1 turns with no Z offset (param %2 = 0): set the tool before it cuts</source>
-        <translation>T%1没有Z偏置(参数%2 = 0)就旋转: 加工前请先对刀!</translation>
-    </message>
-    <message>
-        <source>The change to T%1 was stopped: the target tool [T%1] may differ from the current one [T%2]; handle it by hand and enter the tool the spindle holds</source>
-        <translation>换刀T%1被中断: 目标刀号[T%1]与当前刀号[T%2]可能不同,请手动处理,并输入主轴上的刀号!</translation>
-    </message>
-    <message>
-        <source>No tool change before the operator enters the tool the spindle holds: a change to T%1 was stopped</source>
-        <translation>换刀T%1被中断: 输入主轴上的刀号之前不能换刀!</translation>
-    </message>
-</context>
-<context>
     <name>m350::ui::BackupImportFlow</name>
     <message>
         <source>Controller backup: the folder that holds setting, slib-g.nc ...</source>

@@ -26,6 +26,21 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
     app.add_option("--programs", o.programs, "the Program page's U disk (default: the home folder)")
         ->check(CLI::ExistingDirectory);
     app.add_option("--screenshot", o.screenshot, "save the window as a PNG and exit");
+    app.add_option_function<std::string>(
+           "--size",
+           [&o](const std::string& size) {
+               const std::size_t x = size.find('x');
+               try {
+                   o.width = x == std::string::npos ? 0 : std::stoi(size.substr(0, x));
+                   o.height = x == std::string::npos ? 0 : std::stoi(size.substr(x + 1));
+               } catch (const std::exception&) {
+                   o.width = o.height = 0;
+               }
+               if (o.width < 640 || o.height < 400 || o.width > 4096 || o.height > 4096) {
+                   throw CLI::ValidationError("--size", "give WIDTHxHEIGHT in pixels, 640x400 to 4096x4096 (800x480)");
+               }
+           },
+           "the window's size, WIDTHxHEIGHT (default 1024x600; the controller's screens: 800x480, 1024x600, 1280x800)");
     app.add_option("--replay", o.replay, "play operator actions (JSON Lines) in virtual time, then exit")
         ->check(CLI::ExistingFile);
     app.add_option("--state", o.state, "write the panel's state as JSON and exit");

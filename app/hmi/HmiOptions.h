@@ -25,6 +25,7 @@ struct HmiOptions {
     std::vector<std::string> breaks; // --break T1=0.62@12: tools that break in the simulated world
     double rate = 1.0;       // virtual seconds per wall second
     std::uint64_t dprntLimit = controller::RunSettings{}.externalOutputLimit; // bytes of DPRNT output dprnt.txt keeps
+    int width = 1024, height = 600; // --size: the controller's screens are 800x480, 1024x600, 1280x800
     double measure = 0.0;    // > 0: start the program, measure the panel for this long, print JSON, exit
     bool headlessRun() const { return !screenshot.empty() || !replay.empty() || !state.empty(); }
 };

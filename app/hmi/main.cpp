@@ -156,6 +156,7 @@ int main(int argc, char** argv) {
             switchTo = machine;
             app.quit();
         });
+        window.resize(o.width, o.height);
         window.show();
         const int status = app.exec();
         if (switchTo.isEmpty()) {
@@ -166,6 +167,7 @@ int main(int argc, char** argv) {
                    ? 0
                    : fail(QStringLiteral("cannot start the panel again on %1").arg(switchTo));
     }
+    window.resize(o.width, o.height);
     window.show();
     ui::settle(session);
     if (!o.replay.empty()) {

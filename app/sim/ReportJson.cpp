@@ -51,6 +51,14 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
         const Alarm& a = *report.alarm;
         j["alarm"] = {{"code", std::string(alarmKey(a.code))}, {"message", a.message}, {"file", a.file},
                       {"line", a.line}, {"column", a.column}};
+        if (!a.messageId.empty()) { // only then: the other alarms keep the contract's keys as they were
+            j["alarm"]["message_id"] = a.messageId;
+            nlohmann::json arguments = nlohmann::json::array();
+            for (const std::string& argument : a.messageArguments) {
+                arguments.push_back(argumentIn(argument, MessageLanguage::English)); // as `message` says it
+            }
+            j["alarm"]["message_arguments"] = std::move(arguments);
+        }
     } else if (report.status == controller::RunStatus::Error) {
         j["alarm"] = firstError(report.diagnostics);
     } else {

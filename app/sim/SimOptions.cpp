@@ -117,6 +117,12 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         cmd->add_option("--dialect", o.dialect, "m350 or fanuc")->check(CLI::IsMember({"m350", "fanuc"}));
     };
     auto addRunOptions = [&](CLI::App* cmd) {
+        cmd->add_option_function<std::string>(
+               "--lang",
+               [&o](const std::string& name) { parseMessageLanguage(name, o.language); },
+               "language of the alarm lines on stderr: en (default) or zh_CN, as the panel says them; the JSON "
+               "keeps its English message and gives the message_id")
+            ->check(CLI::IsMember({"en", "zh_CN"}));
         addMachineOptions(cmd);
         cmd->add_option("--param", params, "set parameter N to V (N=V), repeatable");
         cmd->add_option("--var", vars, "set variable #N to V before the run (N=V), repeatable");

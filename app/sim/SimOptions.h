@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/controller/RunSettings.h"
 
 #include <optional>
@@ -25,6 +26,7 @@ struct SimOptions {
     std::optional<std::string> toolsOut;      // --tools-out: the tool table after the run
     bool toolsAsTable = false;                // tools --tbl: tool.tbl text instead of JSON
     std::optional<int> confirmTool;           // --confirm-tool: after the run, RESET and enter the spindle's tool
+    MessageLanguage language = MessageLanguage::English; // --lang: the alarm lines on stderr
     controller::RunSettings settings;
 };
 

@@ -50,12 +50,11 @@ void printDiagnostics(const std::vector<gcode::Diagnostic>& diagnostics) {
 }
 
 // A tool on the table is in neither `tool` nor `pockets`: said, so nobody counts it as lost.
-void printFallenTools(const std::vector<devices::FallenTool>& fallen) {
+void printFallenTools(const std::vector<devices::FallenTool>& fallen, MessageLanguage language) {
     for (const devices::FallenTool& f : fallen) {
         char at[96];
         std::snprintf(at, sizeof at, "X%.3f Y%.3f Z%.3f", f.at.x(), f.at.y(), f.at.z());
-        std::cerr << "m350-sim: T" << f.tool << " lies on the table: it fell where the spindle released it at " << at
-                  << " (it is in neither the spindle nor a pocket)\n";
+        std::cerr << "m350-sim: " << messageText("tool_on_table", {std::to_string(f.tool), at}, language) << '\n';
     }
 }
 
@@ -284,12 +283,13 @@ int runCommand(int argc, char** argv) {
         // an alarm with no line (a native homing alarm names params.toml) is not placed at :0:0
         std::cerr << (a.file.empty() ? std::string("m350-sim") : a.file)
                   << (a.line > 0 ? ":" + std::to_string(a.line) + ":" + std::to_string(a.column) : std::string())
-                  << ": alarm: " << a.message << '\n';
+                  << ": alarm: " << (a.messageId.empty() ? a.message : messageText(a.messageId, a.messageArguments, o.language))
+                  << '\n';
         if (a.callerLine > 0) {
             std::cerr << a.callerFile << ':' << a.callerLine << ": note: the alarm is in the library this line called\n";
         }
     }
-    printFallenTools(report.fallenTools);
+    printFallenTools(report.fallenTools, o.language);
     if (auto error = sim::exportTools(controller, o)) {
         std::cerr << "m350-sim: --tools-out: " << *error << '\n';
         report.status = controller::RunStatus::Error;

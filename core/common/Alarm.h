@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -54,6 +56,13 @@ struct Alarm {
     // with its arguments in order: ui/i18n/AlarmText); empty for the alarms `message` alone says.
     std::string messageId{};
     std::vector<std::string> messageArguments{};
+
+    // An alarm said by a message of the table: its English is `message`, its id and arguments
+    // let the panel and `m350-sim --lang` say it in theirs.
+    static Alarm of(AlarmCode code, const Message& words, std::string file = {}, std::uint32_t line = 0,
+                    std::uint32_t column = 0) {
+        return Alarm{code, words.english(), std::move(file), line, column, {}, 0, words.id, words.arguments};
+    }
 };
 
 } // namespace m350

@@ -117,7 +117,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                                   "the folder's name (name, dialect, [libraries] ... are its keys)");
     }
     warnUnknownKeys(file, t,
-                    {"name", "dialect", "libraries", "libraries.g", "libraries.m", "libraries.other", "codes", "codes.*",
+                    {"name", "name_zh", "dialect", "libraries", "libraries.g", "libraries.m", "libraries.other", "codes", "codes.*",
                      "io_links", "io_links.output", "io_links.input", "io_links.delay_ms", "io_links.inverted",
                      "magazine", "magazine.device", "magazine.capacity", "magazine.loading", "magazine.opening",
                      "magazine.carried", "magazine.slide_travel", "magazine.fork_depth", "magazine.tolerance",
@@ -136,6 +136,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                      "coordinates.additional_systems", "coordinates.rotation"},
                     config.warnings);
     config.name = t["name"].value_or(folder.filename().string());
+    config.nameZh = t["name_zh"].value_or(std::string());
     std::string dialect = t["dialect"].value_or(std::string("m350"));
     config.dialect = gcode::Dialect::byName(dialect);
     if (!config.dialect) {

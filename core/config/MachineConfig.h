@@ -50,6 +50,7 @@ struct LibraryFile {
 struct MachineConfig {
     std::string folder;
     std::string name;
+    std::string nameZh; // machine.toml's name_zh: what the Chinese panel calls it (empty: `name`)
     const gcode::Dialect* dialect = &gcode::Dialect::m350();
     std::vector<LibraryFile> libraries;
     macro::CallCodes codeCalls; // machine.toml's [codes]: M6 = 9001 (a subprogram call)

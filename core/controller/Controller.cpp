@@ -120,7 +120,9 @@ OperatorPanel Controller::newOperatorPanel() {
                                program_,
                                status_.traceWriter(),
                                [this] { return executor_ ? executor_->location() : std::nullopt; },
-                               [this](int pin) { return magazine_.describeInput(pin); },
+                               [this](int pin) {
+                                   return bilingual(magazine_.describeInput(pin), magazine_.describeInput(pin, true));
+                               },
                                post};
     return OperatorPanel({settings_, [this] { return state_ == RunState::Running; }}, std::move(dialog),
                          std::move(keys), std::move(inputs));
@@ -331,7 +333,7 @@ void Controller::checkToolWord(const macro::EvaluatedBlock& block) const {
     }
     const macro::WordValue& t = block.words[block.firstOf['T' - 'A']];
     if (auto why = magazine_.refusedTool(roundToInt(t.value))) {
-        throw macro::MacroError{AlarmCode::InvalidArgument, *why, t.column};
+        throw macro::MacroError::of(AlarmCode::InvalidArgument, *why, t.column);
     }
 }
 
@@ -383,7 +385,7 @@ void Controller::watchSpindleLoad(const machine::MachineEvent& event) {
     auto anomaly = breakage_.sample(event);
     if (anomaly && state_ == RunState::Running && executor_) {
         interruptMotion(anomaly->time, false); // the axes brake from where they were then
-        throw macro::MacroError{AlarmCode::SpindleLoad, anomaly->message, 0};
+        throw macro::MacroError::of(AlarmCode::SpindleLoad, anomaly->message);
     }
 }
 
@@ -472,8 +474,8 @@ bool Controller::start() {
     if (!mdi_ && !hook_ && config_.parameters.get(param::kHomeBeforeProcessing) != 0.0 &&
         !homing_.xyzHomed()) {
         // param 220: automatic runs need X, Y and Z homed (MDI does not)
-        raiseAlarm(Alarm{AlarmCode::NotHomed, "机械未归零不能自动加工! (home X, Y and Z first: parameter 220)",
-                         program_.files.empty() ? std::string() : program_.files.front().name, 0, 0});
+        raiseAlarm(Alarm::of(AlarmCode::NotHomed, message("not_homed_auto"),
+                             program_.files.empty() ? std::string() : program_.files.front().name));
         return false;
     }
     resetOperationControl();

@@ -81,7 +81,7 @@ ExternalDevices::modbus(const ModbusRequest& request) {
     const std::string name = gcode::ModbusStatement::name(request.write);
     const std::string slave = std::to_string(request.slave);
     if (context_.parameters.get(param::kModbusRtu) == 0.0) {
-        return macro::MacroError{AlarmCode::DeviceError, name + ": Modbus RTU is off (parameter 279 = 0)", 0};
+        return macro::MacroError::of(AlarmCode::DeviceError, message(request.write ? "modbus_off_write" : "modbus_off_read"));
     }
     if (context_.scan.scanning()) {
         context_.scan.refuse(name + " talks to Modbus slave " + slave);
@@ -106,16 +106,9 @@ ExternalDevices::modbus(const ModbusRequest& request) {
         }
         char seconds[16];
         std::snprintf(seconds, sizeof seconds, "%.0f", gcode::ModbusStatement::kTimeout);
-        macro::MacroError error{AlarmCode::DeviceError,
-                                name + ": Modbus slave " + slave + " did not answer within " + seconds + " s",
-                                0,
-                                request.write ? "modbus_write_no_answer" : "modbus_read_no_answer",
-                                {slave, seconds}};
-        if (!request.write) {
-            error.message += "; on the controller this hangs MGETDATA until a reboot";
-        }
-        error.message += " (modbus.toml declares no [slave." + slave + "])";
-        return error;
+        return macro::MacroError::of(AlarmCode::DeviceError,
+                                     message(request.write ? "modbus_write_no_answer" : "modbus_read_no_answer",
+                                             {slave, seconds}));
     }
     auto reply = devices::modbus::readReply(sent, request.bytes, *answer);
     transfer.answer = devices::modbus::hex(*answer);

@@ -77,10 +77,9 @@ std::optional<Alarm> Homing::homeAxis(int axis, double since) {
     const char name = machine::kAxisNames[static_cast<std::size_t>(axis)];
     if (!homeSwitchWired(axis)) {
         int first = param::kHomeSwitchX + 3 * axis;
-        return Alarm{AlarmCode::NotHomed,
-                     std::string(1, name) + " cannot home: no home switch is set (params " + std::to_string(first) +
-                         "-" + std::to_string(first + 2) + ": pin, enable, level)",
-                     parametersFile_, 0, 0};
+        return Alarm::of(AlarmCode::NotHomed,
+                         message("no_home_switch", {std::string(1, name), std::to_string(first), std::to_string(first + 2)}),
+                         parametersFile_);
     }
     const params::PortAssignment homeSwitch = *params::wiredInput(p, param::kHomeSwitchX + 3 * axis);
     const int pin = homeSwitch.pin;

@@ -50,11 +50,10 @@ void InputWatch::read(int pin, int level, bool unattended) {
         }
         return;
     case SensorWatch::Verdict::TimedOut: {
-        std::string what = context_.describeInput(pin) + " never became " + std::to_string(1 - level) +
-                           ": waited " + seconds(timeout) + " s at " + context_.program.fileName(*where) + ":" +
-                           std::to_string(where->line);
+        Message what = message("sensor_timeout", {context_.describeInput(pin), std::to_string(1 - level), seconds(timeout),
+                                                  context_.program.fileName(*where), std::to_string(where->line)});
         sensors_.clear();
-        throw macro::MacroError{AlarmCode::SensorTimeout, std::move(what), 0};
+        throw macro::MacroError::of(AlarmCode::SensorTimeout, what);
     }
     }
 }
@@ -87,7 +86,7 @@ std::optional<SensorWait> InputWatch::wait() const {
         return std::nullopt;
     }
     SensorWait out;
-    out.input = context_.describeInput(wait->pin);
+    out.input = argumentIn(context_.describeInput(wait->pin), MessageLanguage::English);
     out.awaitedLevel = 1 - wait->level;
     out.seconds = context_.machine.time() - wait->since;
     out.file = context_.program.fileName(wait->where);

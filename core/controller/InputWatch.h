@@ -36,7 +36,7 @@ public:
         const gcode::Program& program; // the program running (a hook's while it runs)
         const std::unique_ptr<TraceWriter>& trace;
         std::function<std::optional<gcode::SourceLocation>()> location; // the line executing now
-        std::function<std::string(int)> describeInput;                    // "IN11 (tool released)"
+        std::function<std::string(int)> describeInput; // "IN11 (tool released)" in both languages (bilingual())
         std::function<void(std::string)> post;                            // a line of the run's messages
     };
 

@@ -186,16 +186,17 @@ Eigen::Vector3d MagazineDriver::noseAt(const machine::Axes& position) const {
 }
 
 // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor.
-std::string MagazineDriver::describeInput(int pin) const {
+std::string MagazineDriver::describeInput(int pin, bool chinese) const {
     if (params::inputOnPin(context_.config.parameters, pin) || !context_.config.magazine.present()) {
-        return params::describeInput(context_.config.parameters, pin);
+        return params::describeInput(context_.config.parameters, pin, chinese);
     }
     const config::MagazineConfig& m = context_.config.magazine;
-    const char* what = pin == m.inPositionInput ? (disc_ ? "disc in position" : "carousel in position")
-                       : pin == m.atSpindleInput ? "carousel at the spindle"
-                       : pin == m.awayInput      ? "carousel away"
-                       : pin == m.releasedInput  ? "tool released"
-                       : pin == m.clampedInput   ? "tool clamped"
+    const char* what = pin == m.inPositionInput
+                           ? (disc_ ? (chinese ? "刀盘到位" : "disc in position") : (chinese ? "刀库到位" : "carousel in position"))
+                       : pin == m.atSpindleInput ? (chinese ? "刀库在主轴处" : "carousel at the spindle")
+                       : pin == m.awayInput      ? (chinese ? "刀库已退回" : "carousel away")
+                       : pin == m.releasedInput  ? (chinese ? "松刀到位" : "tool released")
+                       : pin == m.clampedInput   ? (chinese ? "夹刀到位" : "tool clamped")
                                                  : nullptr;
     return what && pin > 0 ? params::inputName(pin) + " (" + what + ")" : params::inputName(pin);
 }
@@ -228,7 +229,7 @@ bool MagazineDriver::ignores(const machine::Axes& from, const machine::Axes& to)
 
 void MagazineDriver::onMachineEvent(const machine::MachineEvent& event) {
     using Type = machine::MachineEvent::Type;
-    std::optional<std::string> crash;
+    std::optional<Message> crash;
     switch (event.type) {
     case Type::Rapid:
     case Type::Feed:
@@ -257,7 +258,7 @@ void MagazineDriver::onMachineEvent(const machine::MachineEvent& event) {
     default: break;
     }
     if (crash) {
-        throw macro::MacroError{AlarmCode::Crash, *crash, 0};
+        throw macro::MacroError::of(AlarmCode::Crash, *crash);
     }
 }
 
@@ -267,7 +268,7 @@ void MagazineDriver::moveStoppedAt(const machine::Axes& position) {
     }
 }
 
-std::optional<std::string> MagazineDriver::output(int port, int level, double now) {
+std::optional<Message> MagazineDriver::output(int port, int level, double now) {
     const Eigen::Vector3d nose = noseAt(context_.machine.position());
     if (port == drawbar_.output) {
         const bool released = level == drawbar_.releaseLevel;

@@ -76,7 +76,7 @@ public:
     }
     // Why the machine's PMC refuses T`tool` at the T word, before anything moves (an umbrella
     // carousel's ladder checks the T code against its pockets); nullopt when it takes it.
-    std::optional<std::string> refusedTool(int tool) const;
+    std::optional<Message> refusedTool(int tool) const;
     // Feeds one machine event to the device; throws a `crash` or `sensor_timeout` MacroError.
     void onMachineEvent(const machine::MachineEvent& event);
     // A straight move from `from` to `to` the device need not be told of: far from a linear rack
@@ -84,8 +84,9 @@ public:
     bool ignores(const machine::Axes& from, const machine::Axes& to) const;
     // The move under way stopped short at `position` (Magazine::stoppedAt).
     void moveStoppedAt(const machine::Axes& position);
-    // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor.
-    std::string describeInput(int pin) const;
+    // "IN11 (tool released)": the IO page's function on the pin, else the magazine's own sensor;
+    // its Chinese name with `chinese`.
+    std::string describeInput(int pin, bool chinese = false) const;
 
 private:
     struct Sensor {
@@ -110,7 +111,7 @@ private:
         device_ = std::move(device);
         return installed;
     }
-    std::optional<std::string> output(int port, int level, double now);
+    std::optional<Message> output(int port, int level, double now);
     void driveSensor(const Sensor& sensor, bool active, double at);
     void driveInPosition(double now, double seconds);
     Eigen::Vector3d noseAt(const machine::Axes& position) const;

@@ -156,10 +156,7 @@ bool ManualControl::moveManually(int axis, double distance, double speed, double
     try {
         machine_.manualMove(target, speed, acceleration);
     } catch (const macro::MacroError& error) {
-        Alarm hit{error.code, error.message, "", 0, 0}; // the magazine or the setter was hit
-        hit.messageId = error.messageId;
-        hit.messageArguments = error.messageArguments;
-        run_.raiseAlarm(hit);
+        run_.raiseAlarm(Alarm{error.code, error.message, "", 0, 0, {}, 0, error.messageId, error.messageArguments}); // the magazine or the setter was hit
         return false;
     }
     state_.movingUntil = machine_.time();
@@ -184,7 +181,8 @@ bool ManualControl::setOutputByOperator(int port, int level) {
     try {
         machine_.setOutput(port, level);
     } catch (const macro::MacroError& error) {
-        run_.raiseAlarm(Alarm{error.code, error.message, "", 0, 0}); // the output switched; the magazine suffered it
+        run_.raiseAlarm(Alarm{error.code, error.message, "", 0, 0, {}, 0, error.messageId,
+                              error.messageArguments}); // the output switched; the magazine suffered it
     }
     return true;
 }

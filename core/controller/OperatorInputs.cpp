@@ -53,7 +53,7 @@ std::optional<std::string> OperatorInputs::watch(const params::ParameterTable& p
         wiring_[i] = wiring;
         if (!input.kind) {
             if (active) {
-                eStop = "外部急停 extern E-stop (" + params::inputName(wired->pin) + ")";
+                eStop = params::inputName(wired->pin);
             }
             continue;
         }

@@ -33,7 +33,7 @@ class OperatorInputs {
 public:
     static constexpr std::size_t kQueue = 16;
 
-    // Reads the inputs as they stand; the E-stop's reason while its input is active.
+    // Reads the inputs as they stand; the extern E-stop's input ("IN21") while it is active.
     std::optional<std::string> watch(const params::ParameterTable& parameters, machine::SimulatedMachine& machine,
                                      bool running);
     std::vector<OperatorKey> take();

@@ -61,7 +61,7 @@ public:
     // A macro read input `pin` (InputWatch::read; throws the sensor-timeout alarm).
     void readInput(int pin, int level) { inputWatch_.read(pin, level, unattended_); }
     void clearSensorWait() { inputWatch_.clear(); }
-    // Reads the keys wired to inputs; the extern E-stop's reason while its input is active.
+    // Reads the keys wired to inputs; the extern E-stop's input while it is active.
     std::optional<std::string> watchInputs(const params::ParameterTable& parameters, machine::SimulatedMachine& machine,
                                            bool running) {
         return inputs_.watch(parameters, machine, running);

@@ -181,9 +181,7 @@ void Controller::emergencyStop(const std::string& why) {
         machine_.blockTime(displayTime_ - machine_.time());
     }
     remainder_ = {};
-    raiseAlarm(Alarm{AlarmCode::EmergencyStop,
-                     (why.empty() ? std::string("急停 emergency stop") : why) + ": motion stopped at once, outputs off",
-                     "", 0, 0});
+    raiseAlarm(Alarm::of(AlarmCode::EmergencyStop, why.empty() ? message("estop") : message("estop_extern", {why})));
     setState(RunState::EStop);
     if (status_.trace()) {
         status_.trace()->runState(displayTime_, "estop");

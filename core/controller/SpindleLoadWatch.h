@@ -23,7 +23,7 @@ class SpindleLoadWatch {
 public:
     struct Anomaly {
         double time = 0.0;
-        std::string message;
+        Message message;
     };
 
     void setModel(std::optional<machine::SpindleLoadModel> model) { model_ = std::move(model); }

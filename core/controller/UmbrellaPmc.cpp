@@ -30,22 +30,20 @@ void MagazineDriver::awaitSensor(int pin, int level, int mCode) {
         if (waited >= context_.settings.sensorTimeout) {
             char seconds[32];
             std::snprintf(seconds, sizeof seconds, "%.1f", context_.settings.sensorTimeout);
-            throw macro::MacroError{AlarmCode::SensorTimeout,
-                                    describeInput(pin) + " never became " + std::to_string(level) +
-                                        ": the PMC waited " + seconds + " s to finish M" + std::to_string(mCode),
-                                    0};
+            throw macro::MacroError::of(AlarmCode::SensorTimeout, message("pmc_sensor_timeout",
+                                                                          {bilingual(describeInput(pin), describeInput(pin, true)), std::to_string(level),
+                                                                           seconds, std::to_string(mCode)}));
         }
         context_.machine.blockTime(kPmcScan);
         waited += kPmcScan;
     }
 }
 
-std::optional<std::string> MagazineDriver::refusedTool(int tool) const {
+std::optional<Message> MagazineDriver::refusedTool(int tool) const {
     if (!carousel_ || (tool >= 0 && tool <= carousel_->pocketCount())) {
         return std::nullopt;
     }
-    return "T" + std::to_string(tool) + " is not in the carousel: its pockets are 1-" +
-           std::to_string(carousel_->pocketCount()) + " (the PMC refused the T code; nothing moved)";
+    return message("carousel_refused_tool", {std::to_string(tool), std::to_string(carousel_->pocketCount())});
 }
 
 void MagazineDriver::answerPmc(int code) {
@@ -53,11 +51,10 @@ void MagazineDriver::answerPmc(int code) {
     const int commanded = context_.interp.state().selectedTool;
     if (code >= 81 && code <= 85 && (commanded < 0 || commanded > carousel_->pocketCount())) {
         // the ladder checks the T code before it moves the magazine
-        throw macro::MacroError{AlarmCode::InvalidArgument,
-                                "T" + std::to_string(commanded) + " is not in the carousel: its pockets are 1-" +
-                                    std::to_string(carousel_->pocketCount()) + " (PMC refused M" +
-                                    std::to_string(code) + ")",
-                                0};
+        throw macro::MacroError::of(AlarmCode::InvalidArgument,
+                                    message("carousel_refused_m", {std::to_string(commanded),
+                                                                   std::to_string(carousel_->pocketCount()),
+                                                                   std::to_string(code)}));
     }
     switch (code) {
     case 10:
@@ -69,7 +66,7 @@ void MagazineDriver::answerPmc(int code) {
         devices::UmbrellaCarousel::Action turn =
             carousel_->turnTo(commanded, noseAt(context_.machine.position()), context_.machine.time());
         if (turn.crash) {
-            throw macro::MacroError{AlarmCode::Crash, *turn.crash, 0};
+            throw macro::MacroError::of(AlarmCode::Crash, *turn.crash);
         }
         driveInPosition(context_.machine.time(), turn.seconds);
         awaitSensor(m.inPositionInput, 1, code);

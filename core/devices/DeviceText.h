@@ -20,6 +20,11 @@ inline std::string millimetres(double v) {
     return buffer;
 }
 
+// A tool or pocket number as a message argument (the pattern says "T%1", "pocket %1").
+inline std::string number(int n) {
+    return std::to_string(n);
+}
+
 inline std::string tool(int t) {
     return "T" + std::to_string(t);
 }

@@ -19,8 +19,7 @@ std::string at(const Vector3d& p) {
     return text::position(p);
 }
 
-using text::pocket;
-using text::tool;
+using text::number;
 
 } // namespace
 
@@ -118,7 +117,7 @@ int LinearRack::pocketAt(const Vector3d& p) const {
     return 0;
 }
 
-std::optional<std::string> LinearRack::move(const Vector3d& from, const Vector3d& to, bool rapid,
+std::optional<Message> LinearRack::move(const Vector3d& from, const Vector3d& to, bool rapid,
                                             bool spindleTurning, double /*at: a fixed rack does not change*/) {
     if ((to - from).squaredNorm() < kStill * kStill) {
         return std::nullopt;
@@ -132,21 +131,19 @@ std::optional<std::string> LinearRack::move(const Vector3d& from, const Vector3d
     lastMove_ = MoveUnderWay{from, rapid, spindleTurning, engaged_};
     for (int k = 1; rapid && k <= pocketCount(); ++k) {
         if (crosses(zoneOf(k), from, to)) {
-            return "rapid move through the magazine zone at " + pocket(k) + ", from " + at(from) + " to " + at(to) +
-                   ": move near the rack at feed (G01 / G53 ... F)";
+            return message("rack_rapid_zone", {number(k), at(from), at(to)});
         }
     }
     return spindle_.tool() != 0 ? moveHolding(from, to) : moveEmpty(from, to, spindleTurning);
 }
 
-std::optional<std::string> LinearRack::moveHolding(const Vector3d& from, const Vector3d& to) {
+std::optional<Message> LinearRack::moveHolding(const Vector3d& from, const Vector3d& to) {
     const int held = spindle_.tool();
     if (engaged_ != 0) {
         const int k = engaged_;
         if (!alongEntry(from, to)) {
             const char* axis = std::abs(to.x() - from.x()) >= kStill ? "X" : std::abs(to.y() - from.y()) >= kStill ? "Y" : "Z";
-            return std::string("moved ") + axis + " while " + tool(held) + " was clamped in the fork of " + pocket(k) +
-                   ": the fork and the tool are wrecked at " + at(from);
+            return message("rack_moved_in_fork", {axis, number(held), number(k), at(from)});
         }
         if (!inside(regionOf(k), to)) {
             engaged_ = 0; // slid out of its fork with the tool
@@ -156,14 +153,12 @@ std::optional<std::string> LinearRack::moveHolding(const Vector3d& from, const V
     for (int k = 1; k <= pocketCount(); ++k) {
         const int standing = pockets_[static_cast<std::size_t>(k - 1)];
         if (standing != 0 && (crosses(regionOf(k), from, to) || crosses(columnOf(k), from, to))) {
-            return tool(held) + " in the spindle ran into " + tool(standing) + " in " + pocket(k) + " (moving from " +
-                   at(from) + " to " + at(to) + ")";
+            return message("rack_tool_hit_tool", {number(held), number(standing), number(k), at(from), at(to)});
         }
         if (standing == 0 && crosses(regionOf(k), from, to)) {
             if (!alongEntry(from, to)) {
-                return tool(held) + " in the spindle hit the fork of " + pocket(k) + ": a tool enters it along " +
-                       (geometry_.loading == Loading::Top ? "Z" : "Y") + " only (moving from " + at(from) + " to " +
-                       at(to) + ")";
+                return message("rack_tool_hit_fork", {number(held), number(k), geometry_.loading == Loading::Top ? "Z" : "Y",
+                                                      at(from), at(to)});
             }
             if (inside(regionOf(k), to)) {
                 engaged_ = k;
@@ -173,7 +168,7 @@ std::optional<std::string> LinearRack::moveHolding(const Vector3d& from, const V
     return std::nullopt;
 }
 
-std::optional<std::string> LinearRack::moveEmpty(const Vector3d& from, const Vector3d& to, bool spindleTurning) {
+std::optional<Message> LinearRack::moveEmpty(const Vector3d& from, const Vector3d& to, bool spindleTurning) {
     const bool vertical = std::abs(to.x() - from.x()) < kStill && std::abs(to.y() - from.y()) < kStill;
     if (engaged_ != 0 && vertical) {
         // the released nose rises off the tool it stood over (or goes back down onto it)
@@ -190,19 +185,16 @@ std::optional<std::string> LinearRack::moveEmpty(const Vector3d& from, const Vec
             continue;
         }
         if (!vertical) {
-            return "the spindle nose ran into " + tool(standing) + " in " + pocket(k) + " (moving from " + at(from) +
-                   " to " + at(to) + ")";
+            return message("rack_nose_hit_tool", {number(standing), number(k), at(from), at(to)});
         }
         if (to.z() > from.z()) {
             continue; // rising from beside its pull stud (an E-stop stopped it there): nothing comes down
         }
         if (spindleTurning) {
-            return "came down onto " + tool(standing) + " in " + pocket(k) +
-                   " with the spindle turning: stop it (M05) and wait for it (M300) first";
+            return message("rack_down_turning", {number(standing), number(k)});
         }
         if (!spindle_.released()) {
-            return "came down onto " + tool(standing) + " in " + pocket(k) +
-                   " with the drawbar clamped: release it (M154) before coming down";
+            return message("rack_down_clamped", {number(standing), number(k)});
         }
         if (to.z() <= p.z() + geometry_.tolerance) {
             engaged_ = k; // seated over the pull stud
@@ -219,12 +211,11 @@ void LinearRack::stoppedAt(const Vector3d& nose) {
     }
 }
 
-std::optional<std::string> LinearRack::drawbar(bool released, const Vector3d& nose) {
+std::optional<Message> LinearRack::drawbar(bool released, const Vector3d& nose) {
     lastMove_.reset(); // the nose stands still now
     int* pocket = engaged_ != 0 ? &pockets_[static_cast<std::size_t>(engaged_ - 1)] : nullptr;
     if (const int dropped = spindle_.change(released, pocket, nose)) {
-        return tool(dropped) + " dropped: the drawbar was released at " + at(nose) +
-               " with no pocket under the tool (it fell onto the table)";
+        return message("rack_dropped", {number(dropped), at(nose)});
     }
     return std::nullopt;
 }

@@ -33,9 +33,9 @@ public:
 
     LinearRack(Geometry geometry, std::vector<int> pocketTools, int spindleTool);
 
-    std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
+    std::optional<Message> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
                                     bool spindleTurning, double at) override;
-    std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) override;
+    std::optional<Message> drawbar(bool released, const Eigen::Vector3d& at) override;
     void stoppedAt(const Eigen::Vector3d& at) override;
 
     int spindleTool() const override { return spindle_.tool(); }
@@ -114,8 +114,8 @@ private:
     }
     bool alongEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
     int pocketAt(const Eigen::Vector3d& p) const; // 0 when none
-    std::optional<std::string> moveHolding(const Eigen::Vector3d& from, const Eigen::Vector3d& to);
-    std::optional<std::string> moveEmpty(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool spindleTurning);
+    std::optional<Message> moveHolding(const Eigen::Vector3d& from, const Eigen::Vector3d& to);
+    std::optional<Message> moveEmpty(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool spindleTurning);
 
     Geometry geometry_;
     // Each pocket's boxes, made once (the rack does not move), and the box around every zone: a

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <Eigen/Core>
 
 #include <optional>
@@ -25,10 +27,10 @@ public:
     virtual ~Magazine() = default;
 
     // The spindle nose moved from `from` to `to` in a straight line, starting at virtual time `at`.
-    virtual std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
+    virtual std::optional<Message> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
                                             bool spindleTurning, double at) = 0;
     // The drawbar was released (true) or clamped (false) with the nose at `at`.
-    virtual std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) = 0;
+    virtual std::optional<Message> drawbar(bool released, const Eigen::Vector3d& at) = 0;
     // The last move stopped at `at`, short of its end (a hold, RESET, E-stop, the time limit): what
     // the device took from where that move was going (the nose in a fork, over a tool) it takes
     // from where the nose really stands.

@@ -20,7 +20,7 @@ int MultiHead::spindleTool() const {
     return static_cast<int>(std::find(down_.begin(), down_.end(), true) - down_.begin()) + 1;
 }
 
-std::optional<std::string> MultiHead::move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool, bool,
+std::optional<Message> MultiHead::move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool, bool,
                                            double) {
     if (std::count(down_.begin(), down_.end(), true) < 2 || (to - from).norm() < 1e-6) {
         return std::nullopt;
@@ -28,15 +28,13 @@ std::optional<std::string> MultiHead::move(const Eigen::Vector3d& from, const Ei
     std::string heads;
     for (std::size_t k = 0; k < down_.size(); ++k) {
         if (down_[k]) {
-            heads += (heads.empty() ? "" : " and ") + std::to_string(k + 1);
+            heads += (heads.empty() ? "" : ", ") + std::to_string(k + 1); // numbers only: a message argument
         }
     }
-    return "heads " + heads + " were down together when the carriage moved from " + text::position(from) + " to " +
-           text::position(to) + ": the lower one ploughed through the work (close the others first, M169 M171 "
-           "M173 M175)";
+    return message("heads_down_together", {heads, text::position(from), text::position(to)});
 }
 
-std::optional<std::string> MultiHead::cylinder(int head, bool down, const Eigen::Vector3d& nose) {
+std::optional<Message> MultiHead::cylinder(int head, bool down, const Eigen::Vector3d& nose) {
     if (head < 1 || head > pocketCount()) {
         return std::nullopt;
     }
@@ -46,9 +44,7 @@ std::optional<std::string> MultiHead::cylinder(int head, bool down, const Eigen:
     }
     state = down;
     if (down && nose.z() < safeZ_ - tolerance_) {
-        return "head " + std::to_string(head) + " came down at " + text::position(nose) +
-               ", below the change height Z" + text::millimetres(safeZ_) +
-               " (param 806): it hit the work. Raise Z before switching heads";
+        return message("head_down_low", {std::to_string(head), text::position(nose), text::millimetres(safeZ_)});
     }
     return std::nullopt;
 }

@@ -18,9 +18,9 @@ public:
     // `safeZ`: the lowest nose Z at which a head may come down (param 806, the change height).
     MultiHead(int heads, double safeZ, double tolerance, int headDown);
 
-    std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
+    std::optional<Message> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
                                     bool spindleTurning, double at) override;
-    std::optional<std::string> drawbar(bool, const Eigen::Vector3d&) override { return std::nullopt; }
+    std::optional<Message> drawbar(bool, const Eigen::Vector3d&) override { return std::nullopt; }
 
     int spindleTool() const override; // the head down, 0 when none (or when several are)
     int pocketCount() const override { return static_cast<int>(down_.size()); }
@@ -29,7 +29,7 @@ public:
     const std::vector<FallenTool>& droppedTools() const override { return none_; }
 
     // Head k's cylinder moved it down (true) or up, with the nose at `nose`.
-    std::optional<std::string> cylinder(int head, bool down, const Eigen::Vector3d& nose);
+    std::optional<Message> cylinder(int head, bool down, const Eigen::Vector3d& nose);
 
 private:
     std::vector<bool> down_;

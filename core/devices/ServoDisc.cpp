@@ -41,24 +41,22 @@ int ServoDisc::pocketTool(int pocket) const {
     return pocket == atStation_ ? station_.pocketTool(1) : pockets_[static_cast<std::size_t>(pocket - 1)];
 }
 
-std::optional<std::string> ServoDisc::move(const Vector3d& from, const Vector3d& to, bool rapid, bool spindleTurning,
+std::optional<Message> ServoDisc::move(const Vector3d& from, const Vector3d& to, bool rapid, bool spindleTurning,
                                            double at) {
     if (turning(at) && !station_.reaches(1, from) && station_.reaches(1, to)) {
-        return "came down into the disc at " + where(to) + " while it was still turning to pocket " +
-               std::to_string(atStation_) + ": wait for its in-position signal first";
+        return message("disc_down_turning", {where(to), std::to_string(atStation_)});
     }
     return station_.move(from, to, rapid, spindleTurning, at);
 }
 
-std::optional<std::string> ServoDisc::drawbar(bool released, const Vector3d& nose) {
+std::optional<Message> ServoDisc::drawbar(bool released, const Vector3d& nose) {
     return station_.drawbar(released, nose);
 }
 
 ServoDisc::Turn ServoDisc::turnTo(int pocket, double now, const Vector3d& nose) {
     Turn turn;
     if (pocket < 1 || pocket > pocketCount()) {
-        turn.crash = "the disc was told to turn to pocket " + std::to_string(pocket) + ", but it has pockets 1-" +
-                     std::to_string(pocketCount()) + ": its drive stops with a position fault";
+        turn.crash = message("disc_bad_pocket", {std::to_string(pocket), std::to_string(pocketCount())});
         return turn;
     }
     if (pocket == atStation_) {
@@ -67,12 +65,11 @@ ServoDisc::Turn ServoDisc::turnTo(int pocket, double now, const Vector3d& nose) 
     if (station_.reaches(1, nose)) {
         const int held = station_.spindleTool();
         const int standing = station_.pocketTool(1);
-        std::string what = held != 0       ? "T" + std::to_string(held) + " in the spindle"
-                           : standing != 0 ? "the spindle nose over T" + std::to_string(standing)
-                                           : "the spindle nose";
-        turn.crash = "the disc turned from pocket " + std::to_string(atStation_) + " to pocket " +
-                     std::to_string(pocket) + " while " + what + " was inside it at " + where(nose) +
-                     ": raise Z to the change height (param 806) before turning the disc";
+        const std::string from = std::to_string(atStation_);
+        const std::string to = std::to_string(pocket);
+        turn.crash = held != 0       ? message("disc_turned_holding", {from, to, std::to_string(held), where(nose)})
+                     : standing != 0 ? message("disc_turned_over_tool", {from, to, std::to_string(standing), where(nose)})
+                                     : message("disc_turned_empty", {from, to, where(nose)});
         return turn;
     }
     const int n = pocketCount();

@@ -30,9 +30,9 @@ public:
     // pocketTools[k-1] is the tool in pocket k; `atStation` is the pocket standing at the station.
     ServoDisc(const Geometry& geometry, std::vector<int> pocketTools, int spindleTool, int atStation = 1);
 
-    std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
+    std::optional<Message> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
                                     bool spindleTurning, double at) override;
-    std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) override;
+    std::optional<Message> drawbar(bool released, const Eigen::Vector3d& at) override;
     void stoppedAt(const Eigen::Vector3d& at) override { station_.stoppedAt(at); }
 
     int spindleTool() const override { return station_.spindleTool(); }
@@ -44,7 +44,7 @@ public:
     // A crash message when the spindle is in the way; otherwise the turn's duration (0 when the
     // pocket already stands at the station), after which the drive is in position.
     struct Turn {
-        std::optional<std::string> crash;
+        std::optional<Message> crash;
         double seconds = 0.0;
     };
     Turn turnTo(int pocket, double now, const Eigen::Vector3d& nose);

@@ -19,8 +19,7 @@ std::string where(const Vector3d& p) {
     return text::position(p);
 }
 
-using text::pocket;
-using text::tool;
+using text::number;
 
 } // namespace
 
@@ -42,7 +41,7 @@ bool UmbrellaCarousel::near(double z, double level) const {
     return std::abs(z - level) <= geometry_.tolerance;
 }
 
-std::optional<std::string> UmbrellaCarousel::move(const Vector3d& from, const Vector3d& to, bool /*rapid*/,
+std::optional<Message> UmbrellaCarousel::move(const Vector3d& from, const Vector3d& to, bool /*rapid*/,
                                                    bool spindleTurning, double at) {
     if (!slideIn_ || (to - from).norm() < kStill) {
         return std::nullopt;
@@ -50,22 +49,19 @@ std::optional<std::string> UmbrellaCarousel::move(const Vector3d& from, const Ve
     lastMove_ = MoveUnderWay{from, spindleTurning, at, engaged_};
     if (std::abs(to.x() - from.x()) >= kStill || std::abs(to.y() - from.y()) >= kStill) {
         const char* axis = std::abs(to.x() - from.x()) >= kStill ? "X" : "Y";
-        return std::string("moved ") + axis + " while the carousel stood at the spindle (from " + where(from) +
-               " to " + where(to) + "): slide it back (M84) first";
+        return message("carousel_moved_xy", {axis, where(from), where(to)});
     }
     if (busy(at) && to.z() < geometry_.clearZ - geometry_.tolerance) {
-        return "came down into the carousel at " + where(to) + " while it was still turning or sliding";
+        return message("carousel_down_busy", {where(to)});
     }
     if (spindle_.tool() != 0) {
         // only at the change height, in its clip: any Z move tears the clamped tool out of it
-        return "Z moved from " + where(from) + " to " + where(to) + " while " + tool(spindle_.tool()) +
-               " was clamped in the spindle and held by the clip of " + pocket(atSpindle_) +
-               ": release it (M11) first, or slide the carousel back (M84)";
+        return message("carousel_z_clamped", {where(from), where(to), number(spindle_.tool()), number(atSpindle_)});
     }
     return moveEmpty(from, to, spindleTurning);
 }
 
-std::optional<std::string> UmbrellaCarousel::moveEmpty(const Vector3d& from, const Vector3d& to, bool spindleTurning) {
+std::optional<Message> UmbrellaCarousel::moveEmpty(const Vector3d& from, const Vector3d& to, bool spindleTurning) {
     const int standing = clip();
     const double tol = geometry_.tolerance;
     if (to.z() >= geometry_.clearZ - tol) {
@@ -74,28 +70,23 @@ std::optional<std::string> UmbrellaCarousel::moveEmpty(const Vector3d& from, con
     }
     if (standing == 0) {
         if (to.z() < geometry_.gripZ - tol) {
-            return "the spindle nose hit the empty clip of " + pocket(atSpindle_) + " at " + where(to) +
-                   ": the change height is Z" + text::millimetres(geometry_.gripZ) + " (G30 P3)";
+            return message("carousel_nose_hit_clip", {number(atSpindle_), where(to), text::millimetres(geometry_.gripZ)});
         }
         return std::nullopt;
     }
     if (to.z() < from.z() && !engaged_) {
         if (spindleTurning || turning_) {
-            return "came down onto " + tool(standing) + " in " + pocket(atSpindle_) +
-                   " with the spindle turning: stop and orient it (M19) first";
+            return message("carousel_down_turning", {number(standing), number(atSpindle_)});
         }
         if (!spindle_.released()) {
-            return "came down onto " + tool(standing) + " in " + pocket(atSpindle_) +
-                   " with the drawbar clamped: release it (M11) before coming down";
+            return message("carousel_down_clamped", {number(standing), number(atSpindle_)});
         }
         if (!oriented_) {
-            return "the spindle's drive keys came down onto " + tool(standing) + "'s holder in " +
-                   pocket(atSpindle_) + ": orient the spindle (M19) first";
+            return message("carousel_keys", {number(standing), number(atSpindle_)});
         }
     }
     if (to.z() < geometry_.gripZ - tol) {
-        return "pushed " + tool(standing) + " in " + pocket(atSpindle_) + " down out of its clip: the nose went to " +
-               where(to) + ", below the change height (G30 P3)";
+        return message("carousel_pushed_out", {number(standing), number(atSpindle_), where(to)});
     }
     engaged_ = near(to.z(), geometry_.gripZ);
     return std::nullopt;
@@ -109,48 +100,40 @@ void UmbrellaCarousel::stoppedAt(const Vector3d& nose) {
     }
 }
 
-std::optional<std::string> UmbrellaCarousel::drawbar(bool released, const Vector3d& nose) {
+std::optional<Message> UmbrellaCarousel::drawbar(bool released, const Vector3d& nose) {
     lastMove_.reset(); // the nose stands still now
     if (const int dropped = spindle_.change(released, engaged_ ? &clip() : nullptr, nose)) {
-        return tool(dropped) + " dropped: the spindle released it at " + where(nose) +
-               (slideIn_ ? " out of its clip's reach (the change height is G30 P3)"
-                         : " with the carousel away from the spindle (slide it in with M83 first)");
+        return message(slideIn_ ? "carousel_dropped_reach" : "carousel_dropped_away", {number(dropped), where(nose)});
     }
     return std::nullopt;
 }
 
-std::optional<std::string> UmbrellaCarousel::slideIn(const Vector3d& nose) {
+std::optional<Message> UmbrellaCarousel::slideIn(const Vector3d& nose) {
     const int standing = clip();
     const double tol = geometry_.tolerance;
     if (!atChangeXY(nose)) {
-        return "the carousel slid in while the spindle stood at " + where(nose) +
-               ", away from the change position X" + text::millimetres(geometry_.changeX) + " Y" +
-               text::millimetres(geometry_.changeY) + ": it hit the spindle head";
+        return message("carousel_slid_off_position", {where(nose), text::millimetres(geometry_.changeX),
+                                                      text::millimetres(geometry_.changeY)});
     }
     if (spindle_.tool() != 0) {
         if (!near(nose.z(), geometry_.gripZ)) {
-            return "the carousel hit " + tool(spindle_.tool()) + " in the spindle at " + where(nose) +
-                   ": with a tool in the spindle it comes in at the change height only (G30 P3)";
+            return message("carousel_hit_tool_height", {number(spindle_.tool()), where(nose)});
         }
         if (standing != 0) {
-            return tool(spindle_.tool()) + " in the spindle ran into " + tool(standing) + " in " + pocket(atSpindle_) +
-                   ": the pocket at the spindle must be the empty one of the tool being returned";
+            return message("carousel_pocket_full", {number(spindle_.tool()), number(standing), number(atSpindle_)});
         }
         if (turning_) {
-            return "the clip of " + pocket(atSpindle_) + " hit " + tool(spindle_.tool()) +
-                   " turning in the spindle: stop and orient it (M19) first";
+            return message("carousel_clip_turning", {number(atSpindle_), number(spindle_.tool())});
         }
         if (!oriented_) {
-            return "the clip of " + pocket(atSpindle_) + " hit " + tool(spindle_.tool()) +
-                   "'s holder out of line with its key: orient the spindle (M19) first";
+            return message("carousel_clip_key", {number(atSpindle_), number(spindle_.tool())});
         }
         engaged_ = true;
         return std::nullopt;
     }
     if (nose.z() < geometry_.clearZ - tol && (standing != 0 || nose.z() < geometry_.gripZ - tol)) {
-        return (standing != 0 ? tool(standing) + " in " + pocket(atSpindle_) : std::string("the carousel")) +
-               " ran into the spindle nose at " + where(nose) +
-               ": an empty spindle waits above the tools (G30 P2) for the carousel";
+        return standing != 0 ? message("carousel_tool_hit_nose", {number(standing), number(atSpindle_), where(nose)})
+                             : message("carousel_hit_nose", {where(nose)});
     }
     return std::nullopt;
 }
@@ -162,13 +145,11 @@ UmbrellaCarousel::Action UmbrellaCarousel::slide(bool toSpindle, const Vector3d&
         return action;
     }
     if (busy(now)) {
-        action.crash = std::string("the carousel slid ") + (toSpindle ? "in" : "back") +
-                       " while it was still turning: wait for its in-position signal";
+        action.crash = message(toSpindle ? "carousel_slid_in_turning" : "carousel_slid_back_turning");
     } else if (toSpindle) {
         action.crash = slideIn(nose);
     } else if (engaged_ && spindle_.tool() == 0 && clip() != 0) {
-        action.crash = "the carousel pulled " + tool(clip()) + " sideways out of the open spindle nose at " +
-                       where(nose) + ": raise Z (G30 P2) after releasing it, or clamp it (M10) first";
+        action.crash = message("carousel_pulled_tool", {number(clip()), where(nose)});
     }
     if (action.crash && toSpindle) {
         return action; // it stopped against what it hit, short of the spindle
@@ -185,17 +166,14 @@ UmbrellaCarousel::Action UmbrellaCarousel::slide(bool toSpindle, const Vector3d&
 UmbrellaCarousel::Action UmbrellaCarousel::turnTo(int target, const Vector3d& nose, double now) {
     Action action;
     if (target < 1 || target > pocketCount()) {
-        action.crash = "the carousel was told to turn to " + pocket(target) + ", but it has pockets 1-" +
-                       std::to_string(pocketCount());
+        action.crash = message("carousel_bad_pocket", {number(target), number(pocketCount())});
         return action;
     }
     if (target == atSpindle_) {
         return action;
     }
     if (slideIn_ && (engaged_ || nose.z() < geometry_.clearZ - geometry_.tolerance)) {
-        action.crash = "the carousel turned from " + pocket(atSpindle_) + " to " + pocket(target) +
-                       " while the spindle was inside it at " + where(nose) +
-                       ": raise Z above the tools (G30 P2) before turning it";
+        action.crash = message("carousel_turned_inside", {number(atSpindle_), number(target), where(nose)});
         return action;
     }
     const int n = pocketCount();

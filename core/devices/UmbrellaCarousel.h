@@ -35,9 +35,9 @@ public:
 
     UmbrellaCarousel(const Geometry& geometry, std::vector<int> pocketTools, int spindleTool, int atSpindle);
 
-    std::optional<std::string> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
+    std::optional<Message> move(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool rapid,
                                     bool spindleTurning, double at) override;
-    std::optional<std::string> drawbar(bool released, const Eigen::Vector3d& at) override;
+    std::optional<Message> drawbar(bool released, const Eigen::Vector3d& at) override;
     void stoppedAt(const Eigen::Vector3d& at) override;
 
     int spindleTool() const override { return spindle_.tool(); }
@@ -47,7 +47,7 @@ public:
 
     // What an actuator command costs: the hardware's complaint, or how long the motion takes.
     struct Action {
-        std::optional<std::string> crash;
+        std::optional<Message> crash;
         double seconds = 0.0;
     };
     // M83 (toward the spindle) / M84 (back), from virtual time `now` with the nose at `nose`.
@@ -64,8 +64,8 @@ public:
     int pocketAtSpindle() const { return atSpindle_; }
 
 private:
-    std::optional<std::string> moveEmpty(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool spindleTurning);
-    std::optional<std::string> slideIn(const Eigen::Vector3d& nose);
+    std::optional<Message> moveEmpty(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool spindleTurning);
+    std::optional<Message> slideIn(const Eigen::Vector3d& nose);
     bool atChangeXY(const Eigen::Vector3d& nose) const;
     bool near(double z, double level) const;
     int& clip() { return pockets_[static_cast<std::size_t>(atSpindle_ - 1)]; }

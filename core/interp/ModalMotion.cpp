@@ -100,11 +100,10 @@ void ModalInterpreter::checkAgainstSoftLimits(const machine::Axes& target, const
         if (target(axis) > high + 1e-9 || target(axis) < low - 1e-9) {
             bool positive = target(axis) > high;
             int number = (positive ? param::kSoftLimitPositiveX : param::kSoftLimitNegativeX) + axis;
-            throw MacroError{AlarmCode::SoftLimit,
-                             std::string(1, name) + (positive ? "+" : "-") + " soft limit: the move to " +
-                                 std::string(1, name) + millimetres(target(axis)) + " goes beyond " +
-                                 millimetres(positive ? high : low) + " (parameter " + std::to_string(number) + ")",
-                             motionColumn(words)};
+            throw MacroError::of(AlarmCode::SoftLimit,
+                                 message("soft_limit", {std::string(1, name), positive ? "+" : "-", millimetres(target(axis)),
+                                                        millimetres(positive ? high : low), std::to_string(number)}),
+                                 motionColumn(words));
         }
     }
 }
@@ -275,11 +274,10 @@ void ModalInterpreter::probeMove(const Words& words) {
                          millimetres(target(axis) - workOffset()(axis));
             }
         }
-        throw MacroError{AlarmCode::SkipNotTriggered,
-                         "G31: IN" + std::string(port < 10 ? "0" : "") + std::to_string(port) + " never became " +
-                             std::to_string(level) + " during the move to " + where +
-                             " (is the tool over the setter? params 135-136)",
-                         g31.column};
+        throw MacroError::of(AlarmCode::SkipNotTriggered,
+                             message("skip_not_triggered", {std::string(port < 10 ? "0" : "") + std::to_string(port),
+                                                            std::to_string(level), where}),
+                             g31.column);
     }
 }
 

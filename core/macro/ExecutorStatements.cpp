@@ -27,7 +27,7 @@ bool Executor::executeDeviceStatement(const gcode::Block& block) {
     const std::uint32_t column = block.controlColumn;
     Peripherals* devices = options_.peripherals;
     if (!devices) {
-        throw MacroError{AlarmCode::DeviceError, "this machine has no external device or Modbus port", column};
+        throw MacroError::of(AlarmCode::DeviceError, message("no_device_port"), column);
     }
     // POPEN and PCLOS have no items: their `statement` is 0, which names nothing when no DPRNT came before
     const std::span<const gcode::StatementItem> items =

@@ -17,6 +17,10 @@ struct MacroError {
     // The message's words by id, for the panel to say in its language (Alarm::messageId).
     std::string messageId{};
     std::vector<std::string> messageArguments{};
+
+    static MacroError of(AlarmCode code, const Message& words, std::uint32_t column = 0) {
+        return MacroError{code, words.english(), column, words.id, words.arguments};
+    }
 };
 
 } // namespace m350::macro

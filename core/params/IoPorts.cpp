@@ -148,9 +148,10 @@ std::string outputName(int pin) {
     return portName("OUT", pin);
 }
 
-std::string describeInput(const ParameterTable& parameters, int pin) {
+std::string describeInput(const ParameterTable& parameters, int pin, bool chinese) {
     auto a = inputOnPin(parameters, pin);
-    return inputName(pin) + (a ? std::string(" (") + a->function->nameEn + ")" : std::string());
+    return inputName(pin) +
+           (a ? std::string(" (") + (chinese ? a->function->nameZh : a->function->nameEn) + ")" : std::string());
 }
 
 } // namespace m350::params

@@ -42,7 +42,8 @@ std::optional<PortAssignment> outputOnPin(const ParameterTable& parameters, int 
 // "IN11", "OUT01".
 std::string inputName(int pin);
 std::string outputName(int pin);
-// "IN11 (tool released)" when a function is wired to the pin, else "IN11".
-std::string describeInput(const ParameterTable& parameters, int pin);
+// "IN11 (tool released)" when a function is wired to the pin, else "IN11"; the function's Chinese
+// name with `chinese`.
+std::string describeInput(const ParameterTable& parameters, int pin, bool chinese = false);
 
 } // namespace m350::params

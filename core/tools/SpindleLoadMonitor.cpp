@@ -14,7 +14,7 @@ std::string number(double v, int decimals) {
 
 } // namespace
 
-std::optional<std::string> SpindleLoadMonitor::add(const LoadSample& sample) {
+std::optional<Message> SpindleLoadMonitor::add(const LoadSample& sample) {
     history_.push_back(sample);
     if (history_.size() > kHistory) {
         history_.pop_front();
@@ -34,10 +34,15 @@ std::optional<std::string> SpindleLoadMonitor::add(const LoadSample& sample) {
         return std::nullopt;
     }
     outOfLimits_ = 0;
-    return "tool " + std::to_string(sample.tool) + " spindle load out of its limits (" + number(limits->lower, 2) +
-           " - " + (limits->upper > 0.0 ? number(limits->upper, 2) : std::string("none")) + " %) for " +
-           std::to_string(settings_.samples) + " samples since " + number(outSince_, 2) + " s, now " +
-           number(sample.percent, 2) + " % (" + (over ? "above" : "below") + "): tool broken?";
+    const std::string tool = std::to_string(sample.tool);
+    const std::string samples = std::to_string(settings_.samples);
+    if (limits->upper <= 0.0) { // no upper limit: only too low a load gets here
+        return message("spindle_load_below_no_upper", {tool, number(limits->lower, 2), samples, number(outSince_, 2),
+                                                       number(sample.percent, 2)});
+    }
+    return message(over ? "spindle_load_above" : "spindle_load_below",
+                   {tool, number(limits->lower, 2), number(limits->upper, 2), samples, number(outSince_, 2),
+                    number(sample.percent, 2)});
 }
 
 } // namespace m350::tools

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/tools/SpindleLoadLimits.h"
 
 #include <cstdint>
@@ -31,7 +32,7 @@ public:
     bool enabled() const { return !settings_.tools.empty(); }
 
     // Records the sample; the alarm text when it completes a run of out-of-limit samples.
-    std::optional<std::string> add(const LoadSample& sample);
+    std::optional<Message> add(const LoadSample& sample);
     // Forgets a run under way (the program stopped; the next one starts clean). The history stays.
     void restart() { outOfLimits_ = 0; }
 

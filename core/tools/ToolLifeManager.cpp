@@ -1,5 +1,7 @@
 #include "core/tools/ToolLifeManager.h"
 
+#include "core/common/Message.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -74,9 +76,9 @@ ToolLifeManager::Selection ToolLifeManager::selectGroup(int t) {
     for (const LifeTool& tool : group->tools) {
         list += (list.empty() ? "" : ", ") + usedText(*group, tool);
     }
-    notice_ = "tool life: every tool of group " + std::to_string(number) + " has reached its life (" + list +
-              (group->kind == LifeKind::Count ? " uses" : " x 4 s") + "): T" + std::to_string(last.tool) +
-              " goes on; tool change signal TLCH (#1003) = 1, replace the tools and reset the group";
+    notice_ = message(group->kind == LifeKind::Count ? "tool_life_expired_count" : "tool_life_expired_time",
+                      {std::to_string(number), list, std::to_string(last.tool)})
+                  .english();
     return {last.tool, std::nullopt};
 }
 

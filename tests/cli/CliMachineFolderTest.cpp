@@ -75,7 +75,7 @@ TEST_F(MachineFolderTest, AHugeMagazineCapacityIsRefusedWhereverItIsGiven) {
 TEST_F(MachineFolderTest, ALibraryMustBeAProgramFileInsideTheFolder) {
     fs::path machine = copyMachine();
     edit(machine / "machine.toml", "g = \"slib-g.nc\"", "g = \"/dev/zero\"");
-    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:7:5", "outside the machine folder");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "outside the machine folder");
     edit(machine / "machine.toml", "g = \"/dev/zero\"", "g = \"/etc/passwd\"");
     ProcessResult passwd = sim({"mdi", "G0 X1", "--config", "machine"});
     EXPECT_EQ(passwd.exitStatus, kExitError);
@@ -84,10 +84,10 @@ TEST_F(MachineFolderTest, ALibraryMustBeAProgramFileInsideTheFolder) {
 
     ASSERT_EQ(::mkfifo((machine / "pipe.nc").c_str(), 0600), 0);
     edit(machine / "machine.toml", "g = \"/etc/passwd\"", "g = \"pipe.nc\"");
-    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:7:5", "FIFO");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "FIFO");
     fs::create_symlink("/dev/zero", machine / "zero.nc");
     edit(machine / "machine.toml", "g = \"pipe.nc\"", "g = \"zero.nc\"");
-    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:7:5", "device");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "device");
 
     ProcessResult program = sim({"run", "machine/pipe.nc"});
     EXPECT_EQ(program.exitStatus, kExitError) << program.err;
@@ -101,7 +101,7 @@ TEST_F(MachineFolderTest, UnknownKeysAreWarnedAboutAndAWrongOffsetIsAnError) {
     std::ofstream(machine / "params.toml", std::ios::app) << "[parms]\n61 = 3000\n";
     ProcessResult r = sim({"mdi", "G0 X1", "--config", "machine"});
     EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
-    EXPECT_NE(r.err.find("machine/machine.toml:20:1: warning: unknown key 'magazine.fork_dept'"), std::string::npos)
+    EXPECT_NE(r.err.find("machine/machine.toml:21:1: warning: unknown key 'magazine.fork_dept'"), std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find("machine/params.toml:151:2: warning: unknown key 'parms'"), std::string::npos) << r.err;
 
@@ -150,7 +150,7 @@ TEST_F(MachineFolderTest, FanucParametersAreParamsOfFanucMachinesOnly) {
 
     fs::path fanuc = copyMachine("fanuc-ts27r");
     edit(fanuc / "machine.toml", "[spindle_load]\n", "[spindle_load]\nlambda = 150\n");
-    expectConfigError({"mdi", "G4 P1", "--config", "machine"}, "machine/machine.toml:47:10",
+    expectConfigError({"mdi", "G4 P1", "--config", "machine"}, "machine/machine.toml:48:10",
                       "[spindle_load] lambda is FANUC parameter 4127: set it in params.toml");
 }
 

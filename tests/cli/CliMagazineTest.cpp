@@ -73,3 +73,31 @@ TEST_F(CliTest, AToolReleasedAwayFromTheRackIsReportedOnTheTable) {
 }
 
 } // namespace m350::clitest
+
+namespace m350::clitest {
+
+// The alarm by message id: the JSON keeps its English message and code and gives the id and the
+// arguments; --lang zh_CN says the alarm line (and the tool left on the table) in Chinese.
+TEST_F(CliTest, ACrashAlarmHasItsMessageIdAndIsSaidInChineseWithLangZhCn) {
+    write("drop.nc", "G53 G00 X300 Y200 Z-10\nM154\nM30\n");
+    ProcessResult english = sim({"run", "drop.nc", "--tool", "1"});
+    ProcessResult chinese = sim({"run", "drop.nc", "--tool", "1", "--lang", "zh_CN"});
+    for (const ProcessResult* r : {&english, &chinese}) {
+        EXPECT_EQ(r->exitStatus, kExitAlarm) << r->err;
+        json j = output(*r);
+        EXPECT_EQ(j["alarm"].value("code", ""), "crash");
+        EXPECT_EQ(j["alarm"].value("message_id", ""), "rack_dropped");
+        EXPECT_EQ(j["alarm"]["message_arguments"], (json{"1", "X300.000 Y200.000 Z-10.000"}));
+        EXPECT_EQ(j["alarm"].value("message", ""), "T1 dropped: the drawbar was released at X300.000 Y200.000 "
+                                                   "Z-10.000 with no pocket under the tool (it fell onto the table)");
+    }
+    EXPECT_NE(english.err.find("alarm: T1 dropped: the drawbar was released"), std::string::npos) << english.err;
+    EXPECT_NE(chinese.err.find("alarm: T1掉落：在X300.000 Y200.000 Z-10.000松刀时刀具下方没有刀位"), std::string::npos)
+        << chinese.err;
+    EXPECT_NE(chinese.err.find("m350-sim: T1掉在工作台上"), std::string::npos) << chinese.err;
+    EXPECT_EQ(chinese.err.find("dropped"), std::string::npos) << chinese.err;
+    ProcessResult bad = sim({"run", "drop.nc", "--lang", "fr"});
+    EXPECT_EQ(bad.exitStatus, 64) << bad.err;
+}
+
+} // namespace m350::clitest

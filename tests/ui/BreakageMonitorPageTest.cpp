@@ -6,9 +6,12 @@
 #include "core/config/MachineConfig.h"
 #include "ui/pages/BreakageMonitorPage.h"
 
+#include <QChart>
+#include <QChartView>
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
+#include <QValueAxis>
 
 #include <cmath>
 #include <filesystem>
@@ -97,6 +100,27 @@ TEST(BreakageMonitorPage, AMachineWithoutALoadModelSaysSo) {
     EXPECT_EQ(page->plottedPoints(), 0);
     EXPECT_TRUE(page->fieldText("rule").contains(QStringLiteral("[spindle_load]"))) << page->fieldText("rule").toStdString();
     EXPECT_TRUE(std::isnan(page->limitLines().first));
+}
+
+// With nothing plotted the axes still read as an operator expects: 0-30 s every 5 s, 0-100 %
+// every 20 %, labels on round numbers.
+TEST(BreakageMonitorPage, AnEmptyChartHasRoundTicks) {
+    PanelHarness panel;
+    ui::BreakageMonitorPage* page = openMonitor(panel);
+    ASSERT_NE(page, nullptr);
+    auto* view = page->findChild<QChartView*>(QStringLiteral("breakageChart"));
+    ASSERT_NE(view, nullptr);
+    auto* time = qobject_cast<QValueAxis*>(view->chart()->axes(Qt::Horizontal).value(0));
+    auto* load = qobject_cast<QValueAxis*>(view->chart()->axes(Qt::Vertical).value(0));
+    ASSERT_TRUE(time && load);
+    EXPECT_EQ(time->min(), 0.0);
+    EXPECT_EQ(time->max(), 30.0);
+    EXPECT_EQ(time->tickType(), QValueAxis::TicksDynamic);
+    EXPECT_EQ(time->tickAnchor(), 0.0);
+    EXPECT_EQ(time->tickInterval(), 5.0);
+    EXPECT_EQ(load->min(), 0.0);
+    EXPECT_EQ(load->max(), 100.0);
+    EXPECT_EQ(load->tickInterval(), 20.0);
 }
 
 } // namespace m350::test

@@ -165,7 +165,9 @@ TEST(IoPage, AStuckSensorDuringAToolChangeIsNamedByTheWatchdog) {
     panel.advance(20.0);
     EXPECT_TRUE(io->watchText().contains("IN11")) << io->watchText().toStdString();
     EXPECT_TRUE(panel.window().alarmText().contains("IN11")) << panel.window().alarmText().toStdString();
-    EXPECT_TRUE(panel.window().alarmText().contains("never became 1")) << panel.window().alarmText().toStdString();
+    // said in the panel's language (the alarm's message id), the input by its Chinese function
+    EXPECT_TRUE(panel.window().alarmText().contains(QStringLiteral("未变为1"))) << panel.window().alarmText().toStdString();
+    EXPECT_FALSE(panel.window().alarmText().contains("never became")) << panel.window().alarmText().toStdString();
     EXPECT_EQ(panel.window().statusLine()->stateText(), QStringLiteral("故障"));
 }
 

@@ -6,6 +6,7 @@
 
 namespace {
 
+using m350::Message;
 using m350::devices::LinearRack;
 using Eigen::Vector3d;
 
@@ -17,8 +18,8 @@ LinearRack rack() {
 }
 
 // Runs moves through the rack; the first complaint ends it.
-std::optional<std::string> path(LinearRack& r, std::initializer_list<Vector3d> points, bool rapid = false,
-                                bool turning = false) {
+std::optional<Message> path(LinearRack& r, std::initializer_list<Vector3d> points, bool rapid = false,
+                            bool turning = false) {
     const Vector3d* previous = nullptr;
     for (const Vector3d& p : points) {
         if (previous) {

@@ -55,7 +55,7 @@ TEST(MultiHead, LeavingAHeadDownPloughsItThroughTheWorkOnTheNextMove) {
     std::string program = "T2\nG1 X100 F1000\nM30\n" +
                           withLine(shippedLibrary(kHeads), "M169                                //every head up", "");
     ProgramRun r = runProgram(bundledMachine(kHeads), program);
-    expectCrash(r, "heads 1 and 2 were down together when the carriage moved from X0.000 Y0.000 Z0.000 to X100.000 Y0.000 "
+    expectCrash(r, "heads 1, 2 were down together when the carriage moved from X0.000 Y0.000 Z0.000 to X100.000 Y0.000 "
               "Z0.000: the lower one ploughed through the work (close the others first, M169 M171 M173 M175)");
     ASSERT_TRUE(r.report.alarm);
     EXPECT_EQ(r.report.alarm->line, 2u);

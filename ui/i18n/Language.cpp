@@ -37,6 +37,19 @@ QString Language::fontProblem() const {
                           "e.g. `apt-get install fonts-wqy-microhei` (scripts/deps.sh does), or run with --lang en.");
 }
 
+namespace {
+
+QString& chosenLanguage() {
+    static QString language = QStringLiteral("zh_CN");
+    return language;
+}
+
+} // namespace
+
+QString Language::panelLanguage() {
+    return chosenLanguage();
+}
+
 bool Language::set(const QString& language, QString* error) {
     if (language != QLatin1String("zh_CN") && language != QLatin1String("en")) {
         if (error) {
@@ -57,6 +70,7 @@ bool Language::set(const QString& language, QString* error) {
     translator_ = std::move(translator);
     QApplication::installTranslator(translator_.get()); // sends LanguageChange to every widget
     current_ = language;
+    chosenLanguage() = language;
     return true;
 }
 

@@ -17,6 +17,9 @@ public:
     // Installs the translation; false (and a message) for an unknown language.
     bool set(const QString& language, QString* error = nullptr);
     const QString& current() const { return current_; }
+    // The language the panel says the core's messages in (AlarmText): the last one set, zh_CN
+    // before any.
+    static QString panelLanguage();
     // The CJK font family in use, or empty when the machine has none (see fontProblem()).
     const QString& cjkFamily() const { return cjkFamily_; }
     QString fontProblem() const;

@@ -11,6 +11,7 @@
 #include <QValueAxis>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -40,9 +41,17 @@ BreakageMonitorPage::BreakageMonitorPage(PanelContext& context, QWidget* parent)
     upper_->setPen(QPen(QColor(0xc0, 0x20, 0x20), 1.5, Qt::DashLine));
     time_ = new QValueAxis(chart_);
     percent_ = new QValueAxis(chart_);
+    // Ticks on round values whatever the range: every 5 s (the 30 s shown scroll by), every 20 %
+    // (more when a limit lifts the top); an empty chart shows 0-30 s and 0-100 %, not the
+    // 0-1 a series without points would give it.
     time_->setLabelFormat(QStringLiteral("%.0f"));
-    time_->setTickCount(7); // every 5 s over the 30 s shown
+    time_->setTickType(QValueAxis::TicksDynamic);
+    time_->setTickAnchor(0.0);
+    time_->setTickInterval(5.0);
     percent_->setLabelFormat(QStringLiteral("%.0f"));
+    percent_->setTickType(QValueAxis::TicksDynamic);
+    percent_->setTickAnchor(0.0);
+    percent_->setTickInterval(20.0);
     chart_->addAxis(time_, Qt::AlignBottom);
     chart_->addAxis(percent_, Qt::AlignLeft);
     for (QLineSeries* series : {load_, lower_, upper_}) {
@@ -50,6 +59,8 @@ BreakageMonitorPage::BreakageMonitorPage(PanelContext& context, QWidget* parent)
         series->attachAxis(time_);
         series->attachAxis(percent_);
     }
+    time_->setRange(0.0, controller::SpindleLoadView::kPlotSeconds);
+    percent_->setRange(0.0, 100.0);
     view_ = new QChartView(chart_, this);
     view_->setObjectName("breakageChart");
     view_->setRenderHint(QPainter::Antialiasing);
@@ -180,6 +191,7 @@ void BreakageMonitorPage::fill() {
     line(upper_, v.limits && v.limits->upper > 0.0, v.limits ? v.limits->upper : 0.0);
     time_->setRange(v.from, v.to);
     percent_->setRange(0.0, v.top);
+    percent_->setTickInterval(std::max(20.0, std::ceil(v.top / 5.0 / 10.0) * 10.0)); // at most ~6 labels
 }
 
 QString BreakageMonitorPage::fieldText(const QString& name) const {

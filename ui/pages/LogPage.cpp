@@ -86,6 +86,15 @@ QVector<Page::Softkey> LogPage::softkeys() const { return {{}, {}, {}, {}, {}, {
 void LogPage::softkey(int) {}
 
 bool LogPage::key(const QString& name) {
+    if (name == QLatin1String("ENTER")) {
+        // a long entry (an alarm with its place, a parameter change) ends cut off in its cell:
+        // Enter shows the selected one whole in the question box
+        const int row = table_->currentRow();
+        if (row >= 0 && table_->item(row, 1)) {
+            context().ask(table_->item(row, 0)->text() + QStringLiteral("\n") + eventText(row), [](bool) {});
+        }
+        return true;
+    }
     if (name != QLatin1String("UP") && name != QLatin1String("DOWN")) {
         return false;
     }

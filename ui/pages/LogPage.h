@@ -10,7 +10,7 @@ class QTableWidget;
 namespace m350::ui {
 
 // 系统日志 System Log: 时刻 / 事件明细 rows for every operation and alarm, newest first, in the
-// firmware's event words. The log lives in the machine folder (system-log.tsv) and stays bounded.
+// firmware's event words; UP/DOWN select a row, ENTER shows it whole. The log lives in the machine folder (system-log.tsv) and stays bounded.
 class LogPage : public Page {
     Q_OBJECT
 public:

@@ -2,6 +2,7 @@
 
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/CompactDro.h"
+#include "ui/widgets/DroLabel.h"
 #include "ui/pages/PanelContext.h"
 #include "ui/pages/ProgramWindow.h"
 #include "ui/session/HookSteps.h"
@@ -56,9 +57,9 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
     for (int axis = 0; axis < 5; ++axis) {
         axisName_[axis] = new QLabel(this);
         axisName_[axis]->setObjectName(QStringLiteral("droAxis%1").arg(axis));
-        machine_[axis] = new QLabel(this);
+        machine_[axis] = new DroLabel(this);
         machine_[axis]->setObjectName(QStringLiteral("droMachine%1").arg(axis));
-        work_[axis] = new QLabel(this);
+        work_[axis] = new DroLabel(this);
         work_[axis]->setObjectName(QStringLiteral("droWork%1").arg(axis));
         for (QLabel* value : {machine_[axis], work_[axis]}) {
             value->setProperty("dro", true);
@@ -74,6 +75,8 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
         dro->addWidget(unit_[axis], axis + 1, 3);
     }
     dro->setRowStretch(6, 1);
+    dro->setColumnStretch(1, 1); // the coordinates take the room the row gives the DRO
+    dro->setColumnStretch(2, 1);
     auto* info = new QGridLayout;
     info->setVerticalSpacing(3);
     int line = 0;

@@ -1,5 +1,7 @@
 #include "ui/pages/SystemPage.h"
 
+#include "ui/i18n/Language.h"
+
 #include "core/params/ParameterPages.h"
 #include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
@@ -113,7 +115,9 @@ void SystemPage::retranslate() {
 }
 
 void SystemPage::render(const PanelSnapshot& snapshot) {
-    fields_["machine"]->setText(snapshot.machineName);
+    const bool chinese = Language::panelLanguage() == QLatin1String("zh_CN");
+    fields_["machine"]->setText(chinese && !snapshot.machineNameZh.isEmpty() ? snapshot.machineNameZh
+                                                                             : snapshot.machineName);
     fields_["level"]->setText(UserAccess::levelName(context().session().userLevel()));
 }
 

@@ -1,28 +1,44 @@
 #include "ui/panel/PromptBox.h"
 
+#include <QFrame>
+#include <QGridLayout>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace m350::ui {
 
-PromptBox::PromptBox(QWidget* parent) : QDialog(parent) {
+PromptBox::PromptBox(QWidget* parent) : QWidget(parent) {
     setObjectName("promptBox");
-    setModal(true);
-    setWindowTitle(QStringLiteral("M350"));
-    auto* layout = new QVBoxLayout(this);
-    question_ = new QLabel(this);
+    setAttribute(Qt::WA_StyledBackground); // the dimmed backdrop of panel.qss
+    auto* centre = new QGridLayout(this);
+    frame_ = new QFrame(this);
+    frame_->setObjectName("promptFrame");
+    centre->addWidget(frame_, 0, 0, Qt::AlignCenter);
+    auto* layout = new QVBoxLayout(frame_);
+    question_ = new QLabel(frame_);
     question_->setObjectName("promptQuestion");
     question_->setWordWrap(true);
-    edit_ = new QLineEdit(this);
+    edit_ = new QLineEdit(frame_);
     edit_->setObjectName("promptText");
-    hint_ = new QLabel(this);
+    hint_ = new QLabel(frame_);
     hint_->setObjectName("promptHint");
     layout->addWidget(question_);
     layout->addWidget(edit_);
     layout->addWidget(hint_);
-    setMinimumWidth(420);
+    frame_->setMinimumWidth(420);
+    hide();
+    parent->installEventFilter(this); // follows the window's size
+}
+
+bool PromptBox::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == parentWidget() && event->type() == QEvent::Resize) {
+        setGeometry(parentWidget()->rect());
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void PromptBox::ask(const QString& question, bool withText, const QString& initial, Answer answer, bool secret) {
@@ -35,7 +51,11 @@ void PromptBox::ask(const QString& question, bool withText, const QString& initi
     edit_->setText(initial);
     hint_->setText(tr("[Enter] OK    [Esc] Cancel"));
     answer_ = std::move(answer);
-    open();
+    frame_->setMaximumWidth(std::max(420, parentWidget()->width() * 3 / 4));
+    setGeometry(parentWidget()->rect());
+    raise();
+    show();
+    edit_->setFocus();
 }
 
 QString PromptBox::question() const { return question_->text(); }
@@ -43,14 +63,14 @@ QString PromptBox::textValue() const { return edit_->text(); }
 bool PromptBox::secret() const { return edit_->echoMode() == QLineEdit::Password; }
 
 void PromptBox::type(const QString& text) {
-    if (edit_->isVisible()) {
+    if (!edit_->isHidden()) {
         edit_->insert(text);
     }
 }
 
 void PromptBox::backspace() { edit_->backspace(); }
 
-void PromptBox::confirm() { finishWith(edit_->isVisible() ? edit_->text() : QString()); }
+void PromptBox::confirm() { finishWith(!edit_->isHidden() ? edit_->text() : QString()); }
 void PromptBox::cancel() { finishWith(std::nullopt); }
 
 void PromptBox::finishWith(std::optional<QString> value) {

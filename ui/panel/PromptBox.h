@@ -2,24 +2,27 @@
 
 #include "ui/pages/PanelPrompt.h"
 
-#include <QDialog>
+#include <QWidget>
 
+class QFrame;
 class QLabel;
 class QLineEdit;
 
 namespace m350::ui {
 
 // The panel's own question box (是否进行开机寻零操作?, 请输入固定对刀的刀具号:) and the macro's
-// #1505 dialog: modal over the panel, answered with Enter or Esc, with a line of typed text when
-// it asks for a value. It never blocks the event loop (open(), not exec()).
-class PromptBox : public QDialog, public PanelPrompt {
+// #1505 dialog, answered with Enter or Esc, with a line of typed text when it asks for a value.
+// It is drawn inside the panel's window, as the controller's screen shows it: an overlay over the
+// whole window (it takes the mouse from what lies under it) with the box in its middle, so a grab
+// of the window (m350-hmi --screenshot) shows it. It never blocks the event loop.
+class PromptBox : public QWidget, public PanelPrompt {
     Q_OBJECT
 public:
     explicit PromptBox(QWidget* parent);
 
     void ask(const QString& question, bool withText, const QString& initial, Answer answer,
              bool secret = false) override;
-    bool active() const override { return isVisible(); }
+    bool active() const override { return !isHidden(); } // shown, also in a window not on screen
     QString question() const;
     QString textValue() const;
     bool secret() const; // the text shows as dots
@@ -30,9 +33,11 @@ public:
 
 protected:
     void keyPressEvent(QKeyEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void finishWith(std::optional<QString> value);
+    QFrame* frame_;
     QLabel* question_;
     QLineEdit* edit_;
     QLabel* hint_;

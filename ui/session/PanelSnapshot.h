@@ -55,6 +55,7 @@ struct PanelSnapshot {
     std::shared_ptr<const QStringList> mdiLines;
     QString lastError;    // why the last command was refused (syntax error with file:line:col, ...)
     QString machineName;
+    QString machineNameZh; // machine.toml's name_zh, empty when it has none
     int magazineCapacity = 0;
     bool homingPrompt = false; // param 127 = 0 and X, Y, Z not homed: 是否进行开机寻零操作?
     SimulationView simulation; // the Program page's 仿真, beside the machine (Off when none)

@@ -58,6 +58,7 @@ QString axisNames(const std::vector<int>& axes) {
 
 SessionWorker::SessionWorker(config::MachineConfig config, MachineSession::Options options) : options_(options) {
     machineName_ = QString::fromStdString(config.name);
+    machineNameZh_ = QString::fromStdString(config.nameZh);
     folder_ = config::MachineFolder(config.folder);
     kept_ = config.parameters;
     log_ = std::make_unique<SessionLog>(config.folder);
@@ -168,6 +169,7 @@ void SessionWorker::publish() {
     snapshot->mdiLines = mdiLines_;
     snapshot->lastError = lastError_;
     snapshot->machineName = machineName_;
+    snapshot->machineNameZh = machineNameZh_;
     snapshot->homingPrompt = controller_->homing().needsBootHomingPrompt() && !busy(); // after sysstart.nc
     snapshot->log = log_->entries();
     snapshot->workRecord = workRecord_;

@@ -146,6 +146,7 @@ private:
     std::unique_ptr<SimulationRun> simulation_;
     MachineSession::Options options_;
     QString machineName_;
+    QString machineNameZh_;
     QTimer* timer_ = nullptr;
     QElapsedTimer wall_;
     qint64 lastTickNs_ = 0;
