@@ -51,7 +51,7 @@ class MachineFolderTest : public CliTest {
 TEST_F(MachineFolderTest, AHugeMagazineCapacityIsRefusedWhereverItIsGiven) {
     fs::path machine = copyMachine();
     edit(machine / "params.toml", "801 = 16", "801 = 1000000000");
-    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:69:7", "magazine capacity");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:71:7", "magazine capacity");
 
     ProcessResult option = sim({"mdi", "G0 X1", "--param", "801=1e9"});
     EXPECT_EQ(option.exitStatus, kExitUsage) << option.err;
@@ -103,7 +103,7 @@ TEST_F(MachineFolderTest, UnknownKeysAreWarnedAboutAndAWrongOffsetIsAnError) {
     EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
     EXPECT_NE(r.err.find("machine/machine.toml:21:1: warning: unknown key 'magazine.fork_dept'"), std::string::npos)
         << r.err;
-    EXPECT_NE(r.err.find("machine/params.toml:151:2: warning: unknown key 'parms'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("machine/params.toml:153:2: warning: unknown key 'parms'"), std::string::npos) << r.err;
 
     std::ofstream(machine / "offsets.toml", std::ios::binary) << "# offsets\nG54 = \"abc\"\n";
     expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/offsets.toml:2:7", "G54 must be [X, Y, Z, A, B]");
@@ -135,9 +135,9 @@ TEST_F(MachineFolderTest, ShortOffsetsAndAnEmptyMachineFileAreWarnedAbout) {
 TEST_F(MachineFolderTest, TomlErrorsAndBadValuesArePlacedByLineAndColumn) {
     fs::path machine = copyMachine();
     edit(machine / "params.toml", "811 = 6000", "811 = nan");
-    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:77:7", "must be a finite number");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:79:7", "must be a finite number");
     edit(machine / "params.toml", "811 = nan", "811 = = 6000");
-    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:77:7", "");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:79:7", "");
 }
 
 // FANUC parameters above 999 live in params.toml on FANUC machines only; lambda is one of them,
@@ -145,7 +145,7 @@ TEST_F(MachineFolderTest, TomlErrorsAndBadValuesArePlacedByLineAndColumn) {
 TEST_F(MachineFolderTest, FanucParametersAreParamsOfFanucMachinesOnly) {
     fs::path m350 = copyMachine();
     edit(m350 / "params.toml", "801 = 16", "801 = 16\n4127 = 143");
-    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:70:1", "from 0 to 999");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/params.toml:72:1", "from 0 to 999");
     fs::remove_all(m350);
 
     fs::path fanuc = copyMachine("fanuc-ts27r");

@@ -41,12 +41,12 @@ QString machinesCopy(const QTemporaryDir& dir, const QString& name, const QByteA
 
 // An owner's router (the DDCS-Expert skill's Ultimate Bee): drive 4 is the gantry's second Y motor,
 // drive 5 a rotary axis named B; the 4th axis A is linear.
-// 125/126: the 4th and 5th axes stand at 0 after homing (the factory values are 5 and 40).
+// (m350-linear16's params.toml already has 125/126 = 0: the 4th and 5th stand at 0 after homing.)
 const QByteArray kOwnersGantry = "488 = 0\n489 = 1\n490 = 2\n491 = 1\n492 = 4\n"
-                                 "443 = 3\n444 = 4\n449 = 0\n450 = 1\n125 = 0\n126 = 0\n";
+                                 "443 = 3\n444 = 4\n449 = 0\n450 = 1\n";
 
 // A rotary 4th axis on drive 4, named C.
-const QByteArray kRotaryC = "491 = 3\n443 = 5\n449 = 1\n125 = 0\n126 = 0\n";
+const QByteArray kRotaryC = "491 = 3\n443 = 5\n449 = 1\n";
 
 QPushButton* keyButton(PanelHarness& panel, const QString& name) { return panel.window().keyPad()->button(name); }
 
@@ -130,7 +130,8 @@ TEST(Axes, TheFourthAndFifthJogKeysMoveAAndB) {
 
 TEST(Axes, TheWheelTurnsBWhenItsAxisSwitchSaysB) {
     QTemporaryDir dir;
-    PanelHarness panel(machinesCopy(dir, "m350-linear16", kOwnersGantry));
+    // 171 = 0: every pulse of the turn runs out (its factory 1 stops the axis with the wheel)
+    PanelHarness panel(machinesCopy(dir, "m350-linear16", kOwnersGantry + "171 = 0\n"));
     ASSERT_TRUE(wheelAxis(panel, 4)->isEnabled());
     EXPECT_EQ(wheelAxis(panel, 3)->text(), QStringLiteral("A"));
     EXPECT_EQ(wheelAxis(panel, 4)->text(), QStringLiteral("B"));

@@ -59,6 +59,9 @@ TEST(PanelInput, ClickingTheOnScreenStartKeyRunsTheLoadedProgram) {
 
 TEST(PanelInput, TheMouseWheelTurnsTheHandwheelInMpgMode) {
     PanelHarness panel;
+    // param 171 = 0: every pulse runs out (its factory 1 stops the axis with the wheel: ManualJogTest)
+    panel.session().setParameter(171, 0.0);
+    ui::settle(panel.session());
     panel.key("CONT_STEP_MPG");
     panel.key("CONT_STEP_MPG");
     ASSERT_EQ(panel.window().statusLine()->modeText(), QStringLiteral("手轮"));

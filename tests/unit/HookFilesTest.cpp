@@ -268,6 +268,8 @@ TEST_F(HookMachine, SlibuserNcHandlesG100ToG199) {
 TEST_F(HookMachine, UserKeysRunTheirHookSwitchAnOutputOrNameAPanelKey) {
     write("key-1.nc", lines({"#100=11"}));
     auto cfg = machine();
+    cfg.parameters.set(210, 0);    // K1 runs key-1.nc (the factory value 1 switches OUT01)
+    cfg.parameters.set(213, 0);    // K4 runs key-4.nc, which the folder has not
     cfg.parameters.set(211, 9);    // K2 switches OUT09
     cfg.parameters.set(212, 1323); // K3 is the Probe key
     cfg.parameters.set(214, 500);  // K5: nothing

@@ -122,7 +122,7 @@ TEST(MagazineCrash, TopLoadingWithTheChangeHeightTooLowHitsAFork) {
     ASSERT_TRUE(r.report.alarm.has_value());
     EXPECT_EQ(r.report.alarm->code, AlarmCode::Crash);
     EXPECT_EQ(r.report.alarm->message,
-              "T1 in the spindle hit the fork of pocket 1: a tool enters it along Z only (moving from X0.000 Y0.000 "
+              "T1 in the spindle hit the fork of pocket 1: a tool enters it along Z only (moving from X5.000 Y5.000 "
               "Z-70.000 to X100.000 Y400.000 Z-70.000)");
     EXPECT_EQ(r.report.alarm->file, "slib-g.nc");
     EXPECT_EQ(r.report.alarm->line, 25u); // G53 X#[1330+#1300-1] Y#[1350+#1300-1] F#1311

@@ -43,7 +43,7 @@ TEST(MultiHead, SwitchingHeadsWithZDownLowersTheNewHeadIntoTheWork) {
     std::string program = "G53 Z-30\nT2\nM30\n" +
                           withLine(shippedLibrary(kHeads), "G53 Z#1306 F#1312                   //up", "//Z stays");
     ProgramRun r = runProgram(bundledMachine(kHeads), program);
-    expectCrash(r, "head 2 came down at X0.000 Y0.000 Z-30.000, below the change height Z0.000 (param 806): it hit "
+    expectCrash(r, "head 2 came down at X5.000 Y5.000 Z-30.000, below the change height Z0.000 (param 806): it hit "
                    "the work. Raise Z before switching heads");
     ASSERT_TRUE(r.report.alarm);
     EXPECT_EQ(r.report.alarm->file, "slib-m.nc"); // M170's output line
@@ -55,7 +55,7 @@ TEST(MultiHead, LeavingAHeadDownPloughsItThroughTheWorkOnTheNextMove) {
     std::string program = "T2\nG1 X100 F1000\nM30\n" +
                           withLine(shippedLibrary(kHeads), "M169                                //every head up", "");
     ProgramRun r = runProgram(bundledMachine(kHeads), program);
-    expectCrash(r, "heads 1, 2 were down together when the carriage moved from X0.000 Y0.000 Z0.000 to X100.000 Y0.000 "
+    expectCrash(r, "heads 1, 2 were down together when the carriage moved from X5.000 Y5.000 Z0.000 to X100.000 Y5.000 "
               "Z0.000: the lower one ploughed through the work (close the others first, M169 M171 M173 M175)");
     ASSERT_TRUE(r.report.alarm);
     EXPECT_EQ(r.report.alarm->line, 2u);
