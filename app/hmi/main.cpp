@@ -7,6 +7,7 @@
 #include "ui/pages/ProgramPage.h"
 #include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/MainWindow.h"
+#include "ui/panel/PanelStyle.h"
 #include "ui/panel/PanelMeter.h"
 #include "ui/session/MachineFolderCopy.h"
 #include "ui/replay/Replay.h"
@@ -126,10 +127,8 @@ int main(int argc, char** argv) {
         return fail(QString::fromStdString(e.what()), 64);
     }
     ui::MachineSession session(std::move(std::get<config::MachineConfig>(loaded)), sessionOptions);
+    app.setStyleSheet(ui::panelStyleSheet());
     ui::MainWindow window(session, folder, &language);
-    if (QFile style(QStringLiteral(":/panel/panel.qss")); style.open(QIODevice::ReadOnly)) {
-        app.setStyleSheet(QString::fromUtf8(style.readAll()));
-    }
     if (auto* programs = dynamic_cast<ui::ProgramPage*>(window.page(ui::PageId::program));
         programs && !o.programs.empty()) {
         programs->setUserFolder(QString::fromStdString(o.programs));

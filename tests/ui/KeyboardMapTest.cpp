@@ -4,6 +4,7 @@
 
 #include "ui/actions/KeyboardMap.h"
 #include "ui/actions/PanelKey.h"
+#include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
 #include "ui/panel/SoftkeyBar.h"
 
@@ -88,6 +89,29 @@ TEST(KeyboardMap, TheReadmeDocumentsEveryChordOnce) {
         }
     }
     EXPECT_FALSE(readme().contains(QStringLiteral("(F12 steps"))) << "the Program page's 排序 is Shift+F6, F12 is E-STOP";
+}
+
+// With no key panel beside the screen (800x480) the handwheel's switches are keys too: Alt+Y and
+// Alt+7 make the next detent move Y by ten wheel steps (param 172).
+TEST(KeyboardMap, AltKeysSwitchTheHandwheelsAxisAndStep) {
+    PanelHarness panel;
+    panel.session().setParameter(171, 0.0); // every pulse runs out
+    ui::settle(panel.session());
+    panel.key("CONT_STEP_MPG");
+    panel.key("CONT_STEP_MPG"); // CONT -> STEP -> MPG
+    ASSERT_EQ(panel.session().latest()->status.jogMode, controller::JogMode::Mpg);
+    QTest::keyClick(&panel.window(), Qt::Key_Y, Qt::AltModifier);
+    QTest::keyClick(&panel.window(), Qt::Key_7, Qt::AltModifier);
+    ui::HandwheelWidget* wheel = panel.window().keyPad()->handwheel();
+    EXPECT_EQ(wheel->axis(), 1);
+    EXPECT_EQ(wheel->step(), 10);
+    const double y = panel.session().latest()->status.machine.y();
+    QTest::keyClick(&panel.window(), Qt::Key_Left, Qt::AltModifier); // Y+ is at its limit after homing
+    QTest::qWait(120); // the wheel sends what it gathered every 50 ms
+    panel.advance(1.0);
+    const double pulse = panel.session().latest()->status.parameters.get(172);
+    EXPECT_NEAR(y - panel.session().latest()->status.machine.y(), 10 * pulse, 1e-9);
+    EXPECT_TRUE(panel.window().findChild<QPushButton*>(QStringLiteral("wheelStep10"))->isChecked());
 }
 
 TEST(KeyboardMap, F12OnTheProgramPageIsEStopAndShiftF6Sorts) {

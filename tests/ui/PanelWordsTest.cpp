@@ -5,6 +5,8 @@
 #include "PanelHarness.h"
 
 #include "ui/pages/LogPage.h"
+#include "ui/pages/PageTable.h"
+#include "ui/panel/KeyPad.h"
 #include "ui/pages/MonitorPage.h"
 #include "ui/pages/SystemPage.h"
 #include "ui/panel/PromptBox.h"
@@ -142,8 +144,41 @@ TEST(PanelWords, TheDroFitsTheControllersScreenSizes) {
     resizeWindow(panel, 1280, 800);
     const int large = droPoint();
     EXPECT_GT(small, 0);
-    EXPECT_LE(small, middle);
+    EXPECT_GT(middle, 0);
     EXPECT_GT(large, middle);
+    EXPECT_GT(large, small);
+}
+
+// The controller's own screen is 800x480: the window takes that size (the key panel gives way, the
+// keyboard is the panel's keys then) and no page in either language needs more room than it gets;
+// from 1024x600 the key panel stands beside the screen.
+TEST(PanelWords, EveryPageFitsTheControllersSmallestScreen) {
+    PanelHarness panel;
+    for (const char* lang : {"en", "zh_CN"}) {
+        language(panel, lang);
+        resizeWindow(panel, 800, 480);
+        EXPECT_EQ(panel.window().size(), QSize(800, 480)) << lang;
+        EXPECT_TRUE(panel.window().keyPad()->isHidden());
+        for (const QString& id : ui::PageTable::ids()) {
+            panel.page(id);
+            QWidget* page = panel.window().currentPage();
+            for (int i = 0; i < 3; ++i) {
+                QCoreApplication::processEvents();
+            }
+            EXPECT_EQ(panel.window().size(), QSize(800, 480)) << lang << " " << id.toStdString();
+            EXPECT_LE(page->minimumSizeHint().height(), page->height()) << lang << " " << id.toStdString();
+            EXPECT_LE(page->minimumSizeHint().width(), page->width()) << lang << " " << id.toStdString();
+        }
+        panel.key("PROBE");
+        panel.softkey(4); // 多刀固定对刀: the tool grid takes the help text's place
+        QWidget* probe = panel.window().currentPage();
+        EXPECT_EQ(panel.window().size(), QSize(800, 480)) << lang << " tool grid";
+        EXPECT_LE(probe->minimumSizeHint().height(), probe->height()) << lang << " tool grid";
+        panel.key("ESC");
+        resizeWindow(panel, 1024, 600);
+        EXPECT_EQ(panel.window().size(), QSize(1024, 600));
+        EXPECT_TRUE(panel.window().keyPad()->isVisible());
+    }
 }
 
 } // namespace m350::test

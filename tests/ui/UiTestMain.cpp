@@ -1,9 +1,9 @@
 // GoogleTest main for the panel tests: one QApplication on the offscreen platform, in Chinese
 // (the panel's default), with the panel's style sheet.
 #include "tests/ui/PanelHarness.h"
+#include "ui/panel/PanelStyle.h"
 
 #include <QApplication>
-#include <QFile>
 
 #include <gtest/gtest.h>
 
@@ -13,9 +13,7 @@ int main(int argc, char** argv) {
     m350::ui::Language language(app);
     m350::test::PanelHarness::setLanguage(&language);
     language.set(QStringLiteral("zh_CN"));
-    if (QFile style(QStringLiteral(":/panel/panel.qss")); style.open(QIODevice::ReadOnly)) {
-        app.setStyleSheet(QString::fromUtf8(style.readAll()));
-    }
+    app.setStyleSheet(m350::ui::panelStyleSheet());
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }

@@ -57,6 +57,12 @@ bool ActionDispatcher::machineKey(const PanelKey* key) {
         screen_.askJogStep();
         return true;
     }
+    if (key && key->role == PanelKey::Role::Wheel) {
+        if (axisPresent(key->axis)) {
+            screen_.switchWheel(key->axis, key->axis < 0 ? static_cast<int>(key->argument) : -1);
+        }
+        return true;
+    }
     return false;
 }
 

@@ -79,6 +79,18 @@ PanelKey stepKey(const char* millimetres, int column) {
             .keyboard = {Qt::ALT | Qt::Key(Qt::Key_1 + column)}};
 }
 
+// The handwheel's switches, for a window without the key panel (800x480): Alt+X Y Z A B choose the
+// axis (A and B: the 4th and 5th whatever they are named), Alt+6 7 8 the x1 x10 x100 step.
+PanelKey wheelAxisKey(int axis, Qt::Key key) {
+    return {.name = QStringLiteral("WHEEL_") + QChar("XYZ45"[axis]), .role = Role::Wheel, .axis = axis,
+            .keyboard = {Qt::ALT | key}};
+}
+
+PanelKey wheelStepKey(int step, Qt::Key key) {
+    return {.name = QStringLiteral("WHEEL_X%1").arg(step), .role = Role::Wheel, .argument = double(step),
+            .keyboard = {Qt::ALT | key}};
+}
+
 PanelKey softkeyKey(int number) {
     return {.name = QStringLiteral("F%1").arg(number),
             .role = Role::Softkey,
@@ -161,6 +173,9 @@ QList<PanelKey> makeKeys() {
         {.name = "LEFT", .keyboard = {Qt::Key_Left}},
         {.name = "RIGHT", .keyboard = {Qt::Key_Right}},
     };
+    keys << wheelAxisKey(0, Qt::Key_X) << wheelAxisKey(1, Qt::Key_Y) << wheelAxisKey(2, Qt::Key_Z)
+         << wheelAxisKey(3, Qt::Key_A) << wheelAxisKey(4, Qt::Key_B) << wheelStepKey(1, Qt::Key_6)
+         << wheelStepKey(10, Qt::Key_7) << wheelStepKey(100, Qt::Key_8);
     for (int number = 1; number <= 6; ++number) {
         keys << userKeyOf(number, {7, number - 1}) << softkeyKey(number);
     }

@@ -22,6 +22,7 @@ struct PanelKey {
         Page,         // opens `page`
         Softkey,      // softkey `softkey` of the current page (F1-F6)
         Screen,       // for the open prompt (`onPrompt`), else the current page (ENTER, ESC, arrows)
+        Wheel,        // the handwheel's axis switch (`axis`) or its x1/x10/x100 switch (`argument`)
     };
     enum class Lamp { None, Always, Running, Hold, Spindle, Guide, JogHighSpeed, JogStep };
     using Command = void (*)(MachineSession& session, double argument);
@@ -43,7 +44,7 @@ struct PanelKey {
     Command command = nullptr;
     double argument = 0.0; // the command's: M code, K number, override step (%), jog step (mm)
     QLatin1StringView page{};
-    int axis = -1;     // Jog: 0..4 = X Y Z A B
+    int axis = -1;     // Jog, Wheel: 0..4 = X Y Z A B
     int direction = 0; // Jog: +1 or -1
     int softkey = 0;   // Softkey: 1-6
     PromptCommand onPrompt = nullptr;

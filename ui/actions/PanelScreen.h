@@ -18,6 +18,8 @@ public:
     virtual PanelPrompt* prompt() const = 0;
     virtual void setLanguage(const QString& language) = 0;
     virtual void askJogStep() = 0;
+    // The handwheel's switches: axis 0..4, or step 1 10 100; -1 leaves that switch as it is.
+    virtual void switchWheel(int axis, int step) = 0;
 
 protected:
     ~PanelScreen() = default;

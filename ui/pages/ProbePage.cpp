@@ -36,10 +36,14 @@ ProbePage::ProbePage(PanelContext& context, QWidget* parent) : Page(context, par
     setObjectName("probePage");
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(4, 4, 4, 4);
+    column->setSpacing(2);
     auto* top = new QHBoxLayout;
     auto* fieldBox = new QGroupBox(this);
     auto* fields = new QGridLayout(fieldBox);
     fields->setColumnMinimumWidth(1, 90);
+    // rows as close as the controller's: the page fits its 800x480 screen with the selection grid
+    fields->setVerticalSpacing(0);
+    fields->setContentsMargins(6, 2, 6, 2);
     int row = 0;
     for (const char* name : {"coord", "tool", "thickness", "x", "y", "z"}) {
         auto* caption = new QLabel(this);
@@ -57,6 +61,8 @@ ProbePage::ProbePage(PanelContext& context, QWidget* parent) : Page(context, par
     offsetsBox_ = new QGroupBox(this);
     auto* offsets = new QGridLayout(offsetsBox_);
     offsets->setHorizontalSpacing(18);
+    offsets->setVerticalSpacing(0);
+    offsets->setContentsMargins(6, 2, 6, 2);
     for (int tool = 1; tool <= kSelectable; ++tool) {
         auto* label = new QLabel(this);
         label->setObjectName(QStringLiteral("probeOffsetT%1").arg(tool));
@@ -72,6 +78,8 @@ ProbePage::ProbePage(PanelContext& context, QWidget* parent) : Page(context, par
     gridBox_ = new QWidget(this);
     gridBox_->setObjectName("probeSelection");
     auto* gridLayout = new QGridLayout(gridBox_);
+    gridLayout->setContentsMargins(0, 2, 0, 2);
+    gridLayout->setVerticalSpacing(2);
     gridTitle_ = new QLabel(gridBox_);
     gridLayout->addWidget(gridTitle_, 0, 0, 1, 8);
     for (int tool = 1; tool <= kSelectable; ++tool) {
@@ -236,6 +244,7 @@ void ProbePage::teach(bool xy) {
 void ProbePage::showGrid(bool on) {
     selecting_ = on;
     gridBox_->setVisible(on);
+    help_->setVisible(!on); // the grid's title says what to do: the page keeps the screen's height
     refreshGrid();
 }
 

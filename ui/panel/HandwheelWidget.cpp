@@ -48,14 +48,8 @@ HandwheelWidget::HandwheelWidget(Sink sink, QWidget* parent) : QWidget(parent), 
         steps_->addButton(b, step);
         stepRow->addWidget(b);
     }
-    connect(axes_, &QButtonGroup::idClicked, this, [this](int id) {
-        flush();
-        axis_ = id;
-    });
-    connect(steps_, &QButtonGroup::idClicked, this, [this](int id) {
-        flush();
-        step_ = id;
-    });
+    connect(axes_, &QButtonGroup::idClicked, this, [this](int id) { select(id, -1); });
+    connect(steps_, &QButtonGroup::idClicked, this, [this](int id) { select(-1, id); });
     column->addLayout(axisRow);
     column->addLayout(stepRow);
     column->addStretch(1);
@@ -158,6 +152,18 @@ void HandwheelWidget::mouseMoveEvent(QMouseEvent* event) {
         turn(detents);
     }
     event->accept();
+}
+
+void HandwheelWidget::select(int axis, int step) {
+    flush(); // detents turned so far belong to the old setting
+    if (QAbstractButton* b = axis >= 0 ? axes_->button(axis) : nullptr) {
+        b->setChecked(true);
+        axis_ = axis;
+    }
+    if (QAbstractButton* b = step > 0 ? steps_->button(step) : nullptr) {
+        b->setChecked(true);
+        step_ = step;
+    }
 }
 
 } // namespace m350::ui

@@ -24,6 +24,7 @@ public:
     explicit HandwheelWidget(Sink sink, QWidget* parent = nullptr);
     void render(const PanelSnapshot& snapshot);
     void turn(int detents); // from the keyboard
+    void select(int axis, int step); // the switches from the keyboard; -1 leaves one as it is
     int axis() const { return axis_; }
     int step() const { return step_; }
 

@@ -10,6 +10,8 @@
 #include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
+#include "ui/panel/PageStack.h"
+#include "ui/panel/PanelBody.h"
 #include "ui/panel/PanelMode.h"
 #include "ui/panel/PanelStateJson.h"
 #include "ui/panel/PromptBox.h"
@@ -19,7 +21,6 @@
 #include <QApplication>
 #include <QEvent>
 #include <QFileDialog>
-#include <QHBoxLayout>
 #include <QJsonArray>
 #include <QKeyEvent>
 #include <QLabel>
@@ -32,22 +33,19 @@ namespace m350::ui {
 MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language* language, QWidget* parent)
     : QMainWindow(parent), session_(session), context_(session, std::move(machineFolder)), language_(language) {
     setObjectName("panel");
-    auto* central = new QWidget(this);
-    auto* row = new QHBoxLayout(central);
-    row->setContentsMargins(2, 2, 2, 2);
-    row->setSpacing(4);
-    auto* screen = new QWidget(central);
+    auto* screen = new QWidget(this);
     screen->setObjectName("screen");
     auto* column = new QVBoxLayout(screen);
     column->setContentsMargins(0, 0, 0, 0);
     column->setSpacing(2);
     status_ = new StatusLine(screen);
-    stack_ = new QStackedWidget(screen);
+    stack_ = new PageStack(screen);
     message_ = new QLabel(screen);
     message_->setObjectName("messageLine");
     alarm_ = new QLabel(screen);
     alarm_->setObjectName("alarmLine");
     alarm_->setWordWrap(true);
+    alarm_->hide();
     softkeys_ = new SoftkeyBar(screen);
     column->addWidget(status_);
     column->addWidget(stack_, 1);
@@ -55,11 +53,9 @@ MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language*
     column->addWidget(alarm_);
     column->addWidget(softkeys_);
     dispatcher_ = new ActionDispatcher(*this, session_, this);
-    keys_ = new KeyPad([this](const OperatorAction& a) { dispatcher_->dispatch(a); }, central);
+    keys_ = new KeyPad([this](const OperatorAction& a) { dispatcher_->dispatch(a); }, this);
     keys_->setFixedWidth(348);
-    row->addWidget(screen, 1);
-    row->addWidget(keys_);
-    setCentralWidget(central);
+    setCentralWidget(new PanelBody(screen, keys_, this));
     prompt_ = new PromptBox(this);
     context_.attach(prompt_, [this](const QString& text) { notify(text); });
     recorder_ = new ActionRecorder([this] { return snapshot_ ? snapshot_->sessionTime : 0.0; }, this);
@@ -81,6 +77,7 @@ void MainWindow::addPages() {
     for (const PageTable::Entry& entry : PageTable::entries()) {
         addPage(entry.make(context_, stack_));
     }
+
 }
 
 void MainWindow::addPage(Page* page) {
@@ -146,6 +143,8 @@ void MainWindow::askJogStep() {
         }
     });
 }
+
+void MainWindow::switchWheel(int axis, int step) { keys_->handwheel()->select(axis, step); }
 
 void MainWindow::notify(const QString& text) {
     notice_ = text;

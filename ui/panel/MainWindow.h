@@ -23,7 +23,7 @@ class SoftkeyBar;
 class StatusLine;
 
 // The panel: status line on top, the page in the middle, the message line and the softkeys under
-// it, the panel's keys and the handwheel on the right. It shows snapshots and hands every
+// it, the panel's keys and the handwheel on the right where the window has room (PanelBody). It shows snapshots and hands every
 // operator action to its dispatcher; it owns no machine state.
 class MainWindow : public QMainWindow, public PanelScreen {
     Q_OBJECT
@@ -39,6 +39,7 @@ public:
     void pressSoftkey(int number) override;
     void setLanguage(const QString& language) override;
     void askJogStep() override;
+    void switchWheel(int axis, int step) override;
     void notify(const QString& text);
     bool startRecording(const QString& path, QString* error); // --record
     BackupImportFlow& backupImport() { return *backupImport_; } // the Panel menu's 导入控制器备份
