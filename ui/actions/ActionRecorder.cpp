@@ -29,7 +29,10 @@ void ActionRecorder::record(const OperatorAction& action) {
         return;
     }
     OperatorAction stamped = action;
-    stamped.t = std::round(clock_() * 1000.0) / 1000.0;
+    // the clock as it is, not rounded to the millisecond: a handwheel turn lasts its `seconds` up to
+    // the next one, and a gap made longer by rounding would let the 试切 override ramp down between
+    // turns in the replay (it ramps down five times faster than up: the run would crawl)
+    stamped.t = clock_();
     file_.write(QJsonDocument(stamped.toJson()).toJson(QJsonDocument::Compact));
     file_.write("\n");
     file_.flush(); // a session can end at any moment; what was done so far stays in the file
