@@ -9,7 +9,7 @@ set -euo pipefail
 root="${1:-$(dirname "${BASH_SOURCE[0]}")/..}"
 
 # Bottom first. core never includes ui or app; ui never includes app.
-core_layers=(common files params gcode machine macro tools interp check devices config backup controller)
+core_layers=(common files params gcode machine macro tools interp check devices config backup controller preview)
 ui_layers=(i18n session widgets program pages actions panel replay)
 app_layers=(sim hmi)
 

@@ -38,6 +38,10 @@ StatusBoard::StatusBoard(Context context, const RunSettings& settings) : context
     }
 }
 
+std::optional<gcode::SourceLocation> StatusBoard::location() const {
+    return context_.executor ? context_.executor->location() : std::nullopt;
+}
+
 TraceSource StatusBoard::source() const {
     if (context_.executor) {
         if (auto loc = context_.executor->location()) {

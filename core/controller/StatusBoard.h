@@ -8,6 +8,7 @@
 #include "core/controller/RunState.h"
 #include "core/controller/ToolDoubt.h"
 #include "core/controller/TraceWriter.h"
+#include "core/gcode/Diagnostic.h"
 #include "core/machine/MachineTypes.h"
 
 #include <memory>
@@ -59,6 +60,9 @@ public:
 
     // The block executing now (file, line); empty before a program has run.
     TraceSource source() const;
+    // The same as the parsed program's file index, line and column: no string made (a preview asks
+    // it for every move).
+    std::optional<gcode::SourceLocation> location() const;
     // A message for the log (clipped like an echo), in the trace too.
     void postMessage(std::string text);
     const MessageLog& messages() const { return messages_; }

@@ -1,0 +1,133 @@
+// The machine view's path (core/preview): the moves a program's run makes, with their lines, in
+// machine coordinates; arcs kept as arcs; coarser levels for small views; a budget that keeps a
+// huge program's preview in bounded memory.
+#include "tests/unit/RunProgram.h"
+
+#include "core/preview/ArcPoints.h"
+#include "core/preview/PreviewBuilder.h"
+
+#include <cmath>
+
+namespace m350::test {
+
+namespace {
+
+struct Flat {
+    preview::Point3 from;
+    preview::PathSegment segment;
+    std::optional<preview::ArcCentre> centre;
+};
+
+std::vector<Flat> flatten(const preview::PathStore& store) {
+    std::vector<Flat> out;
+    for (const auto& chunk : store.chunks()) {
+        preview::Point3 at = chunk.start;
+        std::size_t arc = 0;
+        for (const auto& s : chunk.segments) {
+            out.push_back({at, s, s.arc() ? std::optional(chunk.arcs[arc++]) : std::nullopt});
+            at = s.end;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+TEST(PathPreview, EveryMoveWithItsLineInMachineCoordinates) {
+    config::MachineConfig machine = m350Machine();
+    machine.offsets[1][0] = -300.0; // G54 X-300: work X0 is machine X-300
+    const std::string program = writeTempFile(lines({
+        "G54 G90 G17",
+        "G0 X10 Y20",       // 2
+        "G1 Z-5 F600",      // 3
+        "G2 X30 Y20 I10 J0", // 4: a half circle about X20 Y20, clockwise
+        "G0 Z0",            // 5
+        "M30",
+    }));
+    preview::Preview p = preview::buildPreview(machine, program);
+    ASSERT_TRUE(p.loaded);
+    ASSERT_FALSE(p.alarm) << p.alarm->message;
+    std::vector<Flat> moves = flatten(p.path);
+    ASSERT_EQ(moves.size(), 4u);
+    EXPECT_EQ(moves[0].segment.kind, preview::SegmentKind::Rapid);
+    EXPECT_EQ(moves[0].segment.line, 2u);
+    EXPECT_FLOAT_EQ(moves[0].segment.end.x, -290.0F);
+    EXPECT_FLOAT_EQ(moves[0].segment.end.y, 20.0F);
+    EXPECT_EQ(moves[1].segment.kind, preview::SegmentKind::Feed);
+    EXPECT_EQ(moves[1].segment.line, 3u);
+    EXPECT_FLOAT_EQ(moves[1].segment.end.z, -5.0F);
+    const Flat& arc = moves[2];
+    EXPECT_EQ(arc.segment.kind, preview::SegmentKind::ArcCw);
+    EXPECT_EQ(arc.segment.line, 4u);
+    ASSERT_TRUE(arc.centre);
+    EXPECT_FLOAT_EQ(arc.centre->u, -280.0F);
+    EXPECT_FLOAT_EQ(arc.centre->v, 20.0F);
+    // clockwise from about X-280 goes over the top: its middle is at Y30
+    const preview::PlanarArc planar(arc.from, arc.segment, *arc.centre);
+    EXPECT_NEAR(planar.at(0.5).x, -280.0, 1e-4);
+    EXPECT_NEAR(planar.at(0.5).y, 30.0, 1e-4);
+    EXPECT_EQ(p.path.files().at(moves[2].segment.file), std::filesystem::path(program).filename().string());
+    // the box holds the arc's top, not only its ends
+    EXPECT_GE(p.path.bounds().max.y, 30.0F - 1e-4F);
+    EXPECT_LE(p.path.bounds().min.x, -290.0F);
+}
+
+TEST(PathPreview, AProgramOverTheBudgetIsMergedNotDropped) {
+    std::string text = "G90 G1 F1000\n";
+    for (int i = 0; i < 20000; ++i) {
+        // a fine zigzag along X: 0.01 mm steps, 200 mm long
+        text += "X" + std::to_string(i * 0.01) + " Y" + std::to_string(i % 2 == 0 ? 0.0 : 0.005) + "\n";
+    }
+    text += "G0 X0 Y50\nM30\n";
+    preview::PreviewSettings settings;
+    settings.segmentBudget = 1000;
+    preview::Preview p = preview::buildPreview(m350Machine(), writeTempFile(text), settings);
+    ASSERT_TRUE(p.loaded);
+    EXPECT_EQ(p.moves, 20001u);
+    EXPECT_GT(p.coarsenedTo, 0.0);
+    EXPECT_LE(p.path.size(), 1000u);
+    // the whole program is still there: it ends where the program does, the last rapid a rapid
+    const preview::Point3 end = p.path.position();
+    EXPECT_FLOAT_EQ(end.x, 0.0F);
+    EXPECT_FLOAT_EQ(end.y, 50.0F);
+    EXPECT_NEAR(p.path.bounds().max.x, 199.99, p.coarsenedTo);
+    std::vector<Flat> moves = flatten(p.path);
+    EXPECT_EQ(moves.back().segment.kind, preview::SegmentKind::Rapid);
+    EXPECT_LT(p.path.bytes(), 1000u * 40u + 4 * sizeof(preview::PathStore::Chunk) + 200000u);
+}
+
+TEST(PathPreview, CoarserLevelsForSmallViewsEachAQuarterOfTheOneBelow) {
+    std::string text = "G90 G1 F1000\n";
+    for (int i = 0; i < 60000; ++i) {
+        const double a = i * 0.001;
+        text += "X" + std::to_string(100.0 * std::cos(a)) + " Y" + std::to_string(100.0 * std::sin(a)) + "\n";
+    }
+    text += "M30\n";
+    preview::Preview p = preview::buildPreview(m350Machine(), writeTempFile(text));
+    ASSERT_TRUE(p.loaded);
+    ASSERT_FALSE(p.levels.levels().empty());
+    std::size_t below = p.path.size();
+    double tolerance = 0.0;
+    for (const auto& level : p.levels.levels()) {
+        EXPECT_LE(level.size * 4, below);
+        EXPECT_GT(level.tolerance, tolerance);
+        below = level.size;
+        tolerance = level.tolerance;
+    }
+    EXPECT_LT(p.levels.levels().back().size, 20000u);
+    // close up every move is drawn; from far a level whose tolerance is under half a pixel
+    EXPECT_EQ(p.levels.forScale(p.levels.levels().front().tolerance), nullptr);
+    const auto* far = p.levels.forScale(2.0); // the 200 mm circle on 100 pixels
+    ASSERT_NE(far, nullptr);
+    EXPECT_LE(far->tolerance, 1.0);
+    EXPECT_LT(far->size, p.path.size() / 4);
+    // every kept point lies on the circle the program draws
+    for (const auto& chunk : far->chunks) {
+        for (const auto& point : chunk.points) {
+            EXPECT_NEAR(std::hypot(point.at.x, point.at.y), 100.0, 1e-3);
+        }
+    }
+    EXPECT_LT(p.levels.bytes(), p.path.bytes() / 2);
+}
+
+} // namespace m350::test
