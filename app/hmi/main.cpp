@@ -3,6 +3,8 @@
 #include "app/hmi/HmiOptions.h"
 #include "app/sim/BreakageOptions.h"
 #include "core/config/MachineConfig.h"
+#include "core/files/OutputFile.h"
+#include "core/files/OutputGuard.h"
 #include "ui/i18n/Language.h"
 #include "ui/pages/ProgramPage.h"
 #include "ui/panel/BackupImportFlow.h"
@@ -17,11 +19,15 @@
 #include <QFile>
 #include <QJsonDocument>
 #include <QProcess>
-#include <QSaveFile>
+#include <QBuffer>
+#include <QImageWriter>
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include <csignal>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 #include <string_view>
 #include <variant>
 
@@ -34,14 +40,79 @@ int fail(const QString& message, int status = 2) {
     return status;
 }
 
-bool writeState(const ui::MainWindow& window, const QString& path, QString* error) {
-    QSaveFile file(path);
-    QByteArray json = QJsonDocument(window.state()).toJson(QJsonDocument::Indented);
-    if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit()) {
-        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
-        return false;
+QString imageSuffixes() {
+    QStringList suffixes;
+    for (const QByteArray& format : QImageWriter::supportedImageFormats()) {
+        suffixes << QString::fromLatin1(format);
     }
-    return true;
+    return suffixes.join(QStringLiteral(", "));
+}
+
+// The image format --screenshot writes: its suffix's (.png, .jpg ...), PNG for a name without one
+// or a device; nullopt for a suffix that is no image format (`--screenshot notes.txt`).
+std::optional<QByteArray> screenshotFormat(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::path file(path);
+    if (!file.has_extension() || (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))) {
+        return QByteArray("png");
+    }
+    const QByteArray suffix = QByteArray::fromStdString(file.extension().string().substr(1)).toLower();
+    if (QImageWriter::supportedImageFormats().contains(suffix)) {
+        return suffix;
+    }
+    return std::nullopt;
+}
+
+// The file written whole (a temp file renamed over it) or a device written as one; why not, else
+// nullopt.
+std::optional<QString> writeOutput(const std::string& path, const QByteArray& bytes) {
+    if (auto problem = files::writeOutputFile(path, std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())))) {
+        return QString::fromStdString(*problem);
+    }
+    return std::nullopt;
+}
+
+// The panel's own outputs never land on what it reads or owns (issue 26, "Nothing lost"): the
+// loaded program, the replay being played, the machine folder; nor on a folder, a socket or a
+// disk. Two outputs on one file would leave only the last. Said before the panel starts.
+std::optional<QString> refusedOutput(const hmi::HmiOptions& o, const QString& folder) {
+    std::vector<files::GuardedPath> guarded{{"the machine folder", folder.toStdString(), true}};
+    if (!o.program.empty()) {
+        guarded.push_back({"the loaded program", o.program, false});
+    }
+    if (!o.replay.empty()) {
+        guarded.push_back({"the replay being played", o.replay, false});
+    }
+    std::vector<std::pair<std::string, std::string>> outputs; // option, path
+    for (const auto& [option, path] : {std::pair{"--state", &o.state}, {"--screenshot", &o.screenshot}, {"--record", &o.record}}) {
+        if (!path->empty()) {
+            outputs.emplace_back(option, *path);
+        }
+    }
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const auto& [option, path] = outputs[i];
+        if (auto refused = files::refusedOutput(option, path, guarded)) {
+            return QString::fromStdString(*refused);
+        }
+        if (auto why = files::unwritableOutput(path)) {
+            return QString::fromStdString(files::describeUnwritable(option, path, *why));
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (files::outputOverGuarded(path, {{"", outputs[j].second, false}}) ||
+                std::filesystem::weakly_canonical(std::filesystem::absolute(path)) ==
+                    std::filesystem::weakly_canonical(std::filesystem::absolute(outputs[j].second))) {
+                return QString::fromStdString(option + " " + path + " is also the " + outputs[j].first +
+                                              " file: refused, nothing was written");
+            }
+        }
+    }
+    if (!o.screenshot.empty() && !screenshotFormat(o.screenshot)) {
+        return QString::fromStdString("--screenshot " + o.screenshot + ": ." +
+                                      std::filesystem::path(o.screenshot).extension().string().substr(1) +
+                                      " is not an image format (" + imageSuffixes().toStdString() +
+                                      "): refused, nothing was written");
+    }
+    return std::nullopt;
 }
 
 // --help and --version are answered before any Qt platform is opened: on a machine without a
@@ -81,6 +152,7 @@ int main(int argc, char** argv) {
         return hmi::parseHmiCommandLine(argc, argv).exitStatus;
     }
     const qint64 startNs = ui::steadyNowNs();
+    std::signal(SIGPIPE, SIG_IGN); // a FIFO whose reader went away is a write error, said, not a silent death
     QApplication app(argc, argv); // takes Qt's own options (-platform ...) out of argv first
     QApplication::setApplicationName(QStringLiteral("m350-studio"));
     ui::Language language(app);
@@ -107,6 +179,9 @@ int main(int argc, char** argv) {
             return fail(error);
         }
         folder = *copy;
+    }
+    if (auto refused = refusedOutput(o, folder)) {
+        return fail(*refused);
     }
     auto loaded = config::loadMachineFolder(folder.toStdString());
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
@@ -159,6 +234,9 @@ int main(int argc, char** argv) {
         window.resize(o.width, o.height);
         window.show();
         const int status = app.exec();
+        if (QString error = window.stopRecording(); !error.isEmpty()) {
+            return fail(QStringLiteral("--record: %1").arg(error));
+        }
         if (switchTo.isEmpty()) {
             return status;
         }
@@ -179,13 +257,25 @@ int main(int argc, char** argv) {
         ui::playReplay(window, session, *actions);
     }
     ui::settle(session);
-    if (!o.screenshot.empty() && !window.grab().save(QString::fromStdString(o.screenshot))) {
-        return fail(QStringLiteral("%1: cannot write the screenshot").arg(QString::fromStdString(o.screenshot)));
+    if (!o.record.empty()) {
+        if (QString error = window.stopRecording(); !error.isEmpty()) {
+            return fail(QStringLiteral("--record: %1").arg(error));
+        }
+    }
+    if (!o.screenshot.empty()) {
+        QByteArray png;
+        QBuffer buffer(&png);
+        buffer.open(QIODevice::WriteOnly);
+        if (!window.grab().save(&buffer, screenshotFormat(o.screenshot)->constData())) {
+            return fail(QStringLiteral("--screenshot %1: the image could not be made").arg(QString::fromStdString(o.screenshot)));
+        }
+        if (auto error = writeOutput(o.screenshot, png)) {
+            return fail(QStringLiteral("--screenshot: %1").arg(*error));
+        }
     }
     if (!o.state.empty()) {
-        QString error;
-        if (!writeState(window, QString::fromStdString(o.state), &error)) {
-            return fail(error);
+        if (auto error = writeOutput(o.state, QJsonDocument(window.state()).toJson(QJsonDocument::Indented))) {
+            return fail(QStringLiteral("--state: %1").arg(*error));
         }
     }
     return 0;
