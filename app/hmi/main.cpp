@@ -250,11 +250,15 @@ int main(int argc, char** argv) {
     ui::settle(session);
     if (!o.replay.empty()) {
         QString error;
-        auto actions = ui::readReplay(QString::fromStdString(o.replay), &error);
+        std::vector<ui::ReplayPlace> places;
+        const QString replay = QString::fromStdString(o.replay);
+        auto actions = ui::readReplay(replay, &error, &places);
         if (!actions) {
             return fail(error);
         }
-        ui::playReplay(window, session, *actions);
+        if (error = ui::playReplay(window, session, *actions, replay, places); !error.isEmpty()) {
+            return fail(error);
+        }
     }
     ui::settle(session);
     if (!o.record.empty()) {

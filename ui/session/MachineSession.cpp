@@ -131,6 +131,13 @@ void MachineSession::advance(double seconds) {
     }
 }
 
+double MachineSession::advanceWhileQuiet(double seconds) {
+    double passed = 0.0;
+    QMetaObject::invokeMethod(worker_, [w = worker_, seconds, &passed] { passed = w->advanceWhileQuiet(seconds); },
+                              Qt::BlockingQueuedConnection);
+    return passed;
+}
+
 void MachineSession::sync() {
     QMetaObject::invokeMethod(worker_, [w = worker_] { w->publish(); }, Qt::BlockingQueuedConnection);
 }
