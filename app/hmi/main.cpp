@@ -218,7 +218,7 @@ int main(int argc, char** argv) {
     if (!o.record.empty()) {
         QString error;
         if (!window.startRecording(QString::fromStdString(o.record), &error)) {
-            return fail(error);
+            return fail(QStringLiteral("--record: %1").arg(error));
         }
     }
     if (o.measure > 0.0) {

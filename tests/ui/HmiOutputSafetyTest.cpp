@@ -152,7 +152,7 @@ TEST_F(HmiOutputs, AWriteThatFailsIsAnErrorNotASuccess) {
     EXPECT_TRUE(shot.errors.contains("--screenshot: ")) << shot.errors.toStdString();
     HmiResult record = run({"--replay", "replay.jsonl", "--record", name});
     EXPECT_EQ(record.exitCode, 2) << record.errors.toStdString();
-    EXPECT_TRUE(record.errors.contains(name + ": cannot write")) << record.errors.toStdString();
+    EXPECT_TRUE(record.errors.contains("--record: " + name + ": cannot")) << record.errors.toStdString();
 }
 
 TEST_F(HmiOutputs, AReplayLoadsOnlyWhatTheProgramPageShows) {

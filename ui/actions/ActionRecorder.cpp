@@ -44,7 +44,7 @@ bool ActionRecorder::start(const QString& path, QString* error) {
     }
     auto created = files::createTempBeside(target_, exists ? existing.st_mode & 07777 : 0644);
     if (auto* why = std::get_if<std::string>(&created)) {
-        *error = tr("%1: cannot write: %2").arg(path, QString::fromStdString(*why));
+        *error = QString::fromStdString(*why); // it names the file
         return false;
     }
     fd_ = std::get<files::TempFile>(created).descriptor;

@@ -330,6 +330,8 @@ bool MainWindow::startRecording(const QString& path, QString* error) {
 
 QString MainWindow::stopRecording() { return recorder_->stop(); }
 
+bool MainWindow::recording() const { return recorder_->recording(); }
+
 QString MainWindow::unwritableText(const QString& path, files::Unwritable why) {
     switch (why) {
     case files::Unwritable::Folder: return tr("%1 is a folder, not a file: refused, nothing was written").arg(path);

@@ -46,6 +46,7 @@ public:
     // onto a folder; a device is written as one.
     bool startRecording(const QString& path, QString* error);
     QString stopRecording(); // empty when every action reached the file, else why not
+    bool recording() const;
     BackupImportFlow& backupImport() { return *backupImport_; } // the Panel menu's 导入控制器备份
 
     StatusLine* statusLine() const { return status_; }

@@ -183,9 +183,16 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
     settle(session);
     for (std::size_t i = 0; i < actions.size(); ++i) {
         const OperatorAction& action = actions[i];
+        // a time mark with a later action after it: the panel need not see its moment (nothing is
+        // recorded with it), the next action's frames end in a snapshot
+        const bool mark = action.kind == OperatorAction::Kind::Wait && i + 1 < actions.size() &&
+                          actions[i + 1].t > action.t + 1e-9 && !window.recording();
         while (now + 1e-9 < action.t) {
-            if (const double passed = session.advanceWhileQuiet(action.t - now); passed > 0.0) {
+            if (const double passed = session.advanceWhileQuiet(action.t - now, !mark); passed > 0.0) {
                 now += passed;
+                if (mark && now + 1e-9 >= action.t) {
+                    break; // no snapshot came: nothing to show
+                }
             } else {
                 const double step = std::min(kFrame, action.t - now);
                 session.advance(step);

@@ -131,9 +131,9 @@ void MachineSession::advance(double seconds) {
     }
 }
 
-double MachineSession::advanceWhileQuiet(double seconds) {
+double MachineSession::advanceWhileQuiet(double seconds, bool publishAtEnd) {
     double passed = 0.0;
-    QMetaObject::invokeMethod(worker_, [w = worker_, seconds, &passed] { passed = w->advanceWhileQuiet(seconds); },
+    QMetaObject::invokeMethod(worker_, [w = worker_, seconds, publishAtEnd, &passed] { passed = w->advanceWhileQuiet(seconds, publishAtEnd); },
                               Qt::BlockingQueuedConnection);
     return passed;
 }

@@ -137,8 +137,9 @@ public:
     void advance(double seconds);
     // Manual clock: the same frames, but while the machine is quiet (nothing runs, holds, jogs or
     // simulates) they pass without a snapshot each, so idle virtual time costs next to nothing; one
-    // snapshot at the end. Returns the time that passed (0: not quiet, use advance()).
-    double advanceWhileQuiet(double seconds);
+    // snapshot at the end (none with `publishAtEnd` false while still quiet: more time passes next).
+    // Returns the time that passed (0: not quiet, use advance()).
+    double advanceWhileQuiet(double seconds, bool publishAtEnd = true);
     // Waits until every call queued so far has run (replays and tests).
     void sync();
 

@@ -115,7 +115,7 @@ bool SessionWorker::quiet() const {
            !controller_->manual().jogging();
 }
 
-double SessionWorker::advanceWhileQuiet(double seconds) {
+double SessionWorker::advanceWhileQuiet(double seconds, bool publishAtEnd) {
     constexpr double kFrame = 1.0 / 60.0;
     double passed = 0.0;
     while (seconds - passed > 1e-9 && quiet()) {
@@ -123,7 +123,7 @@ double SessionWorker::advanceWhileQuiet(double seconds) {
         advance(step);
         passed += step;
     }
-    if (passed > 0.0) {
+    if (passed > 0.0 && (publishAtEnd || !quiet())) {
         publish();
     }
     return passed;

@@ -54,9 +54,10 @@ public:
     void setParameter(int number, double value);
     void advanceManual(double seconds);
     // Manual clock: lets up to `seconds` pass in the same 1/60 s frames while the machine is quiet
-    // (quiet()), publishing once at the end instead of every frame; stops after the frame in which
-    // something starts. Returns the time that passed (0 when not quiet).
-    double advanceWhileQuiet(double seconds);
+    // (quiet()), publishing once at the end (or not: the caller lets more time pass at once) instead
+    // of every frame; stops after the frame in which something starts, and publishes it. Returns
+    // the time that passed (0 when not quiet).
+    double advanceWhileQuiet(double seconds, bool publishAtEnd);
     void publish();
     // 仿真 (a SimulationRun beside the machine): speed 0 = as fast as the core goes.
     void startSimulation(const QString& path, double speed);
