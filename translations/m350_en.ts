@@ -2669,6 +2669,10 @@
         <translation>Export the tool table to (path; relative to the machine folder):</translation>
     </message>
     <message>
+        <source>%1 is the loaded program: refused, nothing was written</source>
+        <translation>%1 is the loaded program: refused, nothing was written</translation>
+    </message>
+    <message>
         <source>File save failed!</source>
         <comment>msg 907</comment>
         <translation>File save failed!</translation>

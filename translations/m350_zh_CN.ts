@@ -2669,6 +2669,10 @@
         <translation>导出刀具表到(路径,相对于机床文件夹):</translation>
     </message>
     <message>
+        <source>%1 is the loaded program: refused, nothing was written</source>
+        <translation>%1 是已加载的程序: 已拒绝, 未写入任何内容</translation>
+    </message>
+    <message>
         <source>File save failed!</source>
         <comment>msg 907</comment>
         <translation>文件生成失败!</translation>

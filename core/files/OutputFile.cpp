@@ -106,7 +106,11 @@ std::optional<std::string> writeOutputFile(const fs::path& target, std::string_v
         return *error;
     }
     OutputFile& file = *std::get<std::unique_ptr<OutputFile>>(opened);
+    errno = 0;
     file.stream().write(content.data(), static_cast<std::streamsize>(content.size()));
+    if (!file.stream()) { // a large content fails here, not at the flush: say this errno
+        return failure(target, "cannot write", errno != 0 ? errno : EIO);
+    }
     return file.commit();
 }
 
