@@ -1,10 +1,9 @@
 // m350-hmi: the desktop panel. Builds the session and the window, then either runs the event loop
 // or (with --screenshot / --replay / --state) renders in virtual time and exits.
 #include "app/hmi/HmiOptions.h"
+#include "app/hmi/HmiOutputs.h"
 #include "app/sim/BreakageOptions.h"
 #include "core/config/MachineConfig.h"
-#include "core/files/OutputFile.h"
-#include "core/files/OutputGuard.h"
 #include "ui/i18n/Language.h"
 #include "ui/pages/ProgramPage.h"
 #include "ui/panel/BackupImportFlow.h"
@@ -20,14 +19,11 @@
 #include <QJsonDocument>
 #include <QProcess>
 #include <QBuffer>
-#include <QImageWriter>
 #include <QTemporaryDir>
 #include <QTimer>
 
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
-#include <optional>
 #include <string_view>
 #include <variant>
 
@@ -38,81 +34,6 @@ namespace {
 int fail(const QString& message, int status = 2) {
     std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
     return status;
-}
-
-QString imageSuffixes() {
-    QStringList suffixes;
-    for (const QByteArray& format : QImageWriter::supportedImageFormats()) {
-        suffixes << QString::fromLatin1(format);
-    }
-    return suffixes.join(QStringLiteral(", "));
-}
-
-// The image format --screenshot writes: its suffix's (.png, .jpg ...), PNG for a name without one
-// or a device; nullopt for a suffix that is no image format (`--screenshot notes.txt`).
-std::optional<QByteArray> screenshotFormat(const std::string& path) {
-    std::error_code ec;
-    const std::filesystem::path file(path);
-    if (!file.has_extension() || (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))) {
-        return QByteArray("png");
-    }
-    const QByteArray suffix = QByteArray::fromStdString(file.extension().string().substr(1)).toLower();
-    if (QImageWriter::supportedImageFormats().contains(suffix)) {
-        return suffix;
-    }
-    return std::nullopt;
-}
-
-// The file written whole (a temp file renamed over it) or a device written as one; why not, else
-// nullopt.
-std::optional<QString> writeOutput(const std::string& path, const QByteArray& bytes) {
-    if (auto problem = files::writeOutputFile(path, std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())))) {
-        return QString::fromStdString(*problem);
-    }
-    return std::nullopt;
-}
-
-// The panel's own outputs never land on what it reads or owns (issue 26, "Nothing lost"): the
-// loaded program, the replay being played, the machine folder; nor on a folder, a socket or a
-// disk. Two outputs on one file would leave only the last. Said before the panel starts.
-std::optional<QString> refusedOutput(const hmi::HmiOptions& o, const QString& folder) {
-    std::vector<files::GuardedPath> guarded{{"the machine folder", folder.toStdString(), true}};
-    if (!o.program.empty()) {
-        guarded.push_back({"the loaded program", o.program, false});
-    }
-    if (!o.replay.empty()) {
-        guarded.push_back({"the replay being played", o.replay, false});
-    }
-    std::vector<std::pair<std::string, std::string>> outputs; // option, path
-    for (const auto& [option, path] : {std::pair{"--state", &o.state}, {"--screenshot", &o.screenshot}, {"--record", &o.record}}) {
-        if (!path->empty()) {
-            outputs.emplace_back(option, *path);
-        }
-    }
-    for (std::size_t i = 0; i < outputs.size(); ++i) {
-        const auto& [option, path] = outputs[i];
-        if (auto refused = files::refusedOutput(option, path, guarded)) {
-            return QString::fromStdString(*refused);
-        }
-        if (auto why = files::unwritableOutput(path)) {
-            return QString::fromStdString(files::describeUnwritable(option, path, *why));
-        }
-        for (std::size_t j = 0; j < i; ++j) {
-            if (files::outputOverGuarded(path, {{"", outputs[j].second, false}}) ||
-                std::filesystem::weakly_canonical(std::filesystem::absolute(path)) ==
-                    std::filesystem::weakly_canonical(std::filesystem::absolute(outputs[j].second))) {
-                return QString::fromStdString(option + " " + path + " is also the " + outputs[j].first +
-                                              " file: refused, nothing was written");
-            }
-        }
-    }
-    if (!o.screenshot.empty() && !screenshotFormat(o.screenshot)) {
-        return QString::fromStdString("--screenshot " + o.screenshot + ": ." +
-                                      std::filesystem::path(o.screenshot).extension().string().substr(1) +
-                                      " is not an image format (" + imageSuffixes().toStdString() +
-                                      "): refused, nothing was written");
-    }
-    return std::nullopt;
 }
 
 // --help and --version are answered before any Qt platform is opened: on a machine without a
@@ -180,7 +101,7 @@ int main(int argc, char** argv) {
         }
         folder = *copy;
     }
-    if (auto refused = refusedOutput(o, folder)) {
+    if (auto refused = hmi::refusedOutput(o, folder)) {
         return fail(*refused);
     }
     auto loaded = config::loadMachineFolder(folder.toStdString());
@@ -270,15 +191,15 @@ int main(int argc, char** argv) {
         QByteArray png;
         QBuffer buffer(&png);
         buffer.open(QIODevice::WriteOnly);
-        if (!window.grab().save(&buffer, screenshotFormat(o.screenshot)->constData())) {
+        if (!window.grab().save(&buffer, hmi::screenshotFormat(o.screenshot)->constData())) {
             return fail(QStringLiteral("--screenshot %1: the image could not be made").arg(QString::fromStdString(o.screenshot)));
         }
-        if (auto error = writeOutput(o.screenshot, png)) {
+        if (auto error = hmi::writeOutput(o.screenshot, png)) {
             return fail(QStringLiteral("--screenshot: %1").arg(*error));
         }
     }
     if (!o.state.empty()) {
-        if (auto error = writeOutput(o.state, QJsonDocument(window.state()).toJson(QJsonDocument::Indented))) {
+        if (auto error = hmi::writeOutput(o.state, QJsonDocument(window.state()).toJson(QJsonDocument::Indented))) {
             return fail(QStringLiteral("--state: %1").arg(*error));
         }
     }
