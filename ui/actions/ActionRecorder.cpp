@@ -21,7 +21,10 @@ QString systemError(int error) { return QString::fromLocal8Bit(std::strerror(err
 
 } // namespace
 
-ActionRecorder::~ActionRecorder() { stop(); }
+ActionRecorder::~ActionRecorder() {
+    blockSignals(true); // whoever listened may be gone already
+    stop();
+}
 
 bool ActionRecorder::start(const QString& path, QString* error) {
     stop();
