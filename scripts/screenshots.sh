@@ -15,7 +15,8 @@ for replay in docs/replays/*.jsonl; do
             cp -r "resources/machines/${words[0]}" "$scratch/machine"
             extra=(--config "$scratch/machine" "${words[@]:1}")
         fi
-        xvfb-run -a "$BUILD/app/m350-hmi" --lang "$lang" --replay "$replay" "${extra[@]}" \
+        # their programs sit beside them: the U disk, the one a replay may load from besides the machine's
+        xvfb-run -a "$BUILD/app/m350-hmi" --lang "$lang" --replay "$replay" --programs docs/replays "${extra[@]}" \
             --screenshot "docs/screenshots/$page-$lang.png" 2>/dev/null
         [[ -z "${scratch:-}" ]] || rm -rf "$scratch"
         scratch=

@@ -1,6 +1,17 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="en_US">
 <context>
+    <name>m350::ui::ActionRecorder</name>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: cannot write: %2</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>it is a folder</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::BackupImportFlow</name>
     <message>
         <source>Controller backup: the folder that holds setting, slib-g.nc ...</source>
@@ -724,6 +735,10 @@
 <context>
     <name>m350::ui::MainWindow</name>
     <message>
+        <source>Recording stopped: %1</source>
+        <translation>Recording stopped: %1</translation>
+    </message>
+    <message>
         <source>Input the step distance (mm):</source>
         <translation>Input the step distance (mm):</translation>
     </message>
@@ -757,6 +772,30 @@
     <message>
         <source>Record operator actions</source>
         <translation>Record operator actions</translation>
+    </message>
+    <message>
+        <source>%1 is inside the machine folder %2: refused, nothing was written</source>
+        <translation>%1 is inside the machine folder %2: refused, nothing was written</translation>
+    </message>
+    <message>
+        <source>%1 is the loaded program: refused, nothing was written</source>
+        <translation>%1 is the loaded program: refused, nothing was written</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a file: refused, nothing was written</source>
+        <translation>%1 is a folder, not a file: refused, nothing was written</translation>
+    </message>
+    <message>
+        <source>%1 is a socket, not a file: refused, nothing was written</source>
+        <translation>%1 is a socket, not a file: refused, nothing was written</translation>
+    </message>
+    <message>
+        <source>%1 is a disk (block device), not a file: refused, nothing was written</source>
+        <translation>%1 is a disk (block device), not a file: refused, nothing was written</translation>
+    </message>
+    <message>
+        <source>%1: its folder does not exist or is not a folder: refused, nothing was written</source>
+        <translation>%1: its folder does not exist or is not a folder: refused, nothing was written</translation>
     </message>
     <message>
         <source>M350 Studio</source>
@@ -2628,6 +2667,10 @@
     <message>
         <source>Export the tool table to (path; relative to the machine folder):</source>
         <translation>Export the tool table to (path; relative to the machine folder):</translation>
+    </message>
+    <message>
+        <source>%1 is the loaded program: refused, nothing was written</source>
+        <translation>%1 is the loaded program: refused, nothing was written</translation>
     </message>
     <message>
         <source>File save failed!</source>

@@ -1,6 +1,17 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>m350::ui::ActionRecorder</name>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: 无法写入: %2</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>它是文件夹</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::BackupImportFlow</name>
     <message>
         <source>Controller backup: the folder that holds setting, slib-g.nc ...</source>
@@ -724,6 +735,10 @@
 <context>
     <name>m350::ui::MainWindow</name>
     <message>
+        <source>Recording stopped: %1</source>
+        <translation>录制已停止: %1</translation>
+    </message>
+    <message>
         <source>Input the step distance (mm):</source>
         <translation>输入寸动距离(mm):</translation>
     </message>
@@ -757,6 +772,30 @@
     <message>
         <source>Record operator actions</source>
         <translation>录制操作</translation>
+    </message>
+    <message>
+        <source>%1 is inside the machine folder %2: refused, nothing was written</source>
+        <translation>%1 在机床文件夹 %2 内: 已拒绝, 未写入任何内容</translation>
+    </message>
+    <message>
+        <source>%1 is the loaded program: refused, nothing was written</source>
+        <translation>%1 是已加载的程序: 已拒绝, 未写入任何内容</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a file: refused, nothing was written</source>
+        <translation>%1 是文件夹, 不是文件: 已拒绝, 未写入任何内容</translation>
+    </message>
+    <message>
+        <source>%1 is a socket, not a file: refused, nothing was written</source>
+        <translation>%1 是套接字, 不是文件: 已拒绝, 未写入任何内容</translation>
+    </message>
+    <message>
+        <source>%1 is a disk (block device), not a file: refused, nothing was written</source>
+        <translation>%1 是磁盘(块设备), 不是文件: 已拒绝, 未写入任何内容</translation>
+    </message>
+    <message>
+        <source>%1: its folder does not exist or is not a folder: refused, nothing was written</source>
+        <translation>%1: 所在文件夹不存在或不是文件夹: 已拒绝, 未写入任何内容</translation>
     </message>
     <message>
         <source>M350 Studio</source>
@@ -2628,6 +2667,10 @@
     <message>
         <source>Export the tool table to (path; relative to the machine folder):</source>
         <translation>导出刀具表到(路径,相对于机床文件夹):</translation>
+    </message>
+    <message>
+        <source>%1 is the loaded program: refused, nothing was written</source>
+        <translation>%1 是已加载的程序: 已拒绝, 未写入任何内容</translation>
     </message>
     <message>
         <source>File save failed!</source>

@@ -1,6 +1,7 @@
 // m350-hmi: the desktop panel. Builds the session and the window, then either runs the event loop
 // or (with --screenshot / --replay / --state) renders in virtual time and exits.
 #include "app/hmi/HmiOptions.h"
+#include "app/hmi/HmiOutputs.h"
 #include "app/sim/BreakageOptions.h"
 #include "core/config/MachineConfig.h"
 #include "ui/i18n/Language.h"
@@ -18,10 +19,11 @@
 #include <QFile>
 #include <QJsonDocument>
 #include <QProcess>
-#include <QSaveFile>
+#include <QBuffer>
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include <csignal>
 #include <cstdio>
 #include <string_view>
 #include <variant>
@@ -33,16 +35,6 @@ namespace {
 int fail(const QString& message, int status = 2) {
     std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
     return status;
-}
-
-bool writeState(const ui::MainWindow& window, const QString& path, QString* error) {
-    QSaveFile file(path);
-    QByteArray json = QJsonDocument(window.state()).toJson(QJsonDocument::Indented);
-    if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit()) {
-        *error = QStringLiteral("%1: cannot write: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
 }
 
 // --help and --version are answered before any Qt platform is opened: on a machine without a
@@ -82,6 +74,7 @@ int main(int argc, char** argv) {
         return hmi::parseHmiCommandLine(argc, argv).exitStatus;
     }
     const qint64 startNs = ui::steadyNowNs();
+    std::signal(SIGPIPE, SIG_IGN); // a FIFO whose reader went away is a write error, said, not a silent death
     QApplication app(argc, argv); // takes Qt's own options (-platform ...) out of argv first
     QApplication::setApplicationName(QStringLiteral("m350-studio"));
     ui::Language language(app);
@@ -108,6 +101,9 @@ int main(int argc, char** argv) {
             return fail(error);
         }
         folder = *copy;
+    }
+    if (auto refused = hmi::refusedOutput(o, folder)) {
+        return fail(*refused);
     }
     auto loaded = config::loadMachineFolder(folder.toStdString());
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
@@ -142,7 +138,7 @@ int main(int argc, char** argv) {
     if (!o.record.empty()) {
         QString error;
         if (!window.startRecording(QString::fromStdString(o.record), &error)) {
-            return fail(error);
+            return fail(QStringLiteral("--record: %1").arg(error));
         }
     }
     if (o.measure > 0.0) {
@@ -158,6 +154,9 @@ int main(int argc, char** argv) {
         window.resize(o.width, o.height);
         window.show();
         const int status = app.exec();
+        if (QString error = window.stopRecording(); !error.isEmpty()) {
+            return fail(QStringLiteral("--record: %1").arg(error));
+        }
         if (switchTo.isEmpty()) {
             return status;
         }
@@ -171,20 +170,36 @@ int main(int argc, char** argv) {
     ui::settle(session);
     if (!o.replay.empty()) {
         QString error;
-        auto actions = ui::readReplay(QString::fromStdString(o.replay), &error);
+        std::vector<ui::ReplayPlace> places;
+        const QString replay = QString::fromStdString(o.replay);
+        auto actions = ui::readReplay(replay, &error, &places);
         if (!actions) {
             return fail(error);
         }
-        ui::playReplay(window, session, *actions);
+        if (error = ui::playReplay(window, session, *actions, replay, places); !error.isEmpty()) {
+            return fail(error);
+        }
     }
     ui::settle(session);
-    if (!o.screenshot.empty() && !window.grab().save(QString::fromStdString(o.screenshot))) {
-        return fail(QStringLiteral("%1: cannot write the screenshot").arg(QString::fromStdString(o.screenshot)));
+    if (!o.record.empty()) {
+        if (QString error = window.stopRecording(); !error.isEmpty()) {
+            return fail(QStringLiteral("--record: %1").arg(error));
+        }
+    }
+    if (!o.screenshot.empty()) {
+        QByteArray png;
+        QBuffer buffer(&png);
+        buffer.open(QIODevice::WriteOnly);
+        if (!window.grab().save(&buffer, hmi::screenshotFormat(o.screenshot)->constData())) {
+            return fail(QStringLiteral("--screenshot %1: the image could not be made").arg(QString::fromStdString(o.screenshot)));
+        }
+        if (auto error = hmi::writeOutput(o.screenshot, png)) {
+            return fail(QStringLiteral("--screenshot: %1").arg(*error));
+        }
     }
     if (!o.state.empty()) {
-        QString error;
-        if (!writeState(window, QString::fromStdString(o.state), &error)) {
-            return fail(error);
+        if (auto error = hmi::writeOutput(o.state, QJsonDocument(window.state()).toJson(QJsonDocument::Indented))) {
+            return fail(QStringLiteral("--state: %1").arg(*error));
         }
     }
     return 0;

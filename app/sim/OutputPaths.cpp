@@ -1,6 +1,7 @@
 #include "app/sim/OutputPaths.h"
 
 #include "core/config/MachineFolder.h"
+#include "core/files/OutputGuard.h"
 
 #include <filesystem>
 #include <utility>
@@ -27,32 +28,26 @@ std::optional<std::string> outputNamingAnInput(const SimOptions& o, const config
     if (o.toolsOut) {
         outputs.emplace_back("--tools-out", *o.toolsOut);
     }
-    std::vector<std::pair<std::string, fs::path>> inputs; // what, path
+    std::vector<files::GuardedPath> inputs; // what, path
     if (!o.program.empty()) {
-        inputs.emplace_back("the program", o.program);
+        inputs.push_back({"the program of this run", o.program});
     }
     for (const config::LibraryFile& library : machine.libraries) {
-        inputs.emplace_back("a library", library.path);
+        inputs.push_back({"a library of this run", library.path});
     }
     if (o.toolTableFile) {
-        inputs.emplace_back("the --tool-table file", *o.toolTableFile);
+        inputs.push_back({"the --tool-table file of this run", *o.toolTableFile});
     }
     std::error_code ec;
     for (const fs::directory_entry& entry : fs::directory_iterator(machine.folder, ec)) {
         if (entry.is_regular_file(ec) && entry.path().filename() != config::MachineFolder::fileName(config::FolderFile::ExternalOutput)) {
             // dprnt.txt: an output
-            inputs.emplace_back("a file of the machine folder", entry.path());
+            inputs.push_back({"a file of the machine folder of this run", entry.path()});
         }
     }
     for (const auto& [option, output] : outputs) {
-        if (!fs::is_regular_file(output, ec)) {
-            continue; // a new file, or /dev/null: no input of the run
-        }
-        for (const auto& [what, input] : inputs) {
-            if (fs::equivalent(output, input, ec)) {
-                return option + " " + output + " is " + what + " of this run (" + input.string() +
-                       "): refused, nothing was written";
-            }
+        if (auto refused = files::refusedOutput(option, output, inputs)) {
+            return refused;
         }
     }
     return std::nullopt;

@@ -3,6 +3,7 @@
 #include "core/config/HookFiles.h"
 #include "core/files/LastGoodCopy.h"
 #include "core/files/OutputFile.h"
+#include "core/files/OutputGuard.h"
 #include "core/params/ParameterBackup.h"
 #include "core/params/ParameterCatalogue.h"
 #include "core/params/ParamsFileWriter.h"
@@ -160,7 +161,11 @@ std::optional<std::string> MachineFolder::exportToolTable(const fs::path& target
     if (auto refused = refuseFolderFile(target)) {
         return refused;
     }
-    return files::writeFileAtomically(target, tools::formatToolTable(table));
+    if (auto why = files::unwritableOutput(target)) {
+        return files::describeUnwritable("the tool table export", target, *why);
+    }
+    // a device or FIFO the operator names is written as one, a file replaced whole
+    return files::writeOutputFile(target, tools::formatToolTable(table));
 }
 
 bool MachineFolder::isFolderFile(const fs::path& path) const {

@@ -23,17 +23,28 @@ std::string failure(const fs::path& file, const char* what, int error) {
 
 OutputFile::OutputFile(fs::path target, fs::path temp) : target_(std::move(target)), temp_(std::move(temp)) {}
 
-std::variant<std::unique_ptr<OutputFile>, std::string> OutputFile::open(const fs::path& target) {
+// A link is written through: the file it leads to is replaced, the link stays a link.
+fs::path OutputFile::writtenPath(const fs::path& target) {
+    std::error_code ec;
+    if (!fs::is_symlink(target, ec)) {
+        return target;
+    }
+    const fs::path real = fs::weakly_canonical(fs::absolute(target, ec), ec);
+    return ec ? target : real;
+}
+
+std::variant<std::unique_ptr<OutputFile>, std::string> OutputFile::open(const fs::path& named) {
+    const fs::path target = writtenPath(named);
     struct stat existing {};
     const bool exists = ::stat(target.c_str(), &existing) == 0;
     if (exists && S_ISDIR(existing.st_mode)) {
-        return target.string() + ": cannot write: it is a folder";
+        return named.string() + ": cannot write: it is a folder";
     }
     if (exists && !S_ISREG(existing.st_mode)) {
         std::unique_ptr<OutputFile> direct(new OutputFile(target, {}));
         direct->stream_.open(target, std::ios::binary);
         if (!direct->stream_) {
-            return failure(target, "cannot open", errno);
+            return failure(named, "cannot open", errno);
         }
         return direct;
     }
@@ -95,7 +106,11 @@ std::optional<std::string> writeOutputFile(const fs::path& target, std::string_v
         return *error;
     }
     OutputFile& file = *std::get<std::unique_ptr<OutputFile>>(opened);
+    errno = 0;
     file.stream().write(content.data(), static_cast<std::streamsize>(content.size()));
+    if (!file.stream()) { // a large content fails here, not at the flush: say this errno
+        return failure(target, "cannot write", errno != 0 ? errno : EIO);
+    }
     return file.commit();
 }
 

@@ -14,7 +14,8 @@ namespace m350::files {
 // written to a temp file of its own beside the target and renamed over the target once complete,
 // so runs writing one file at once leave one whole file (the last), never interleaved lines, and a
 // run that fails to write leaves the old file. A target that exists and is not a regular file
-// (/dev/null, /dev/stdout, a FIFO) is written directly. Every write error is reported.
+// (/dev/null, /dev/stdout, a FIFO) is written directly. A link is written through: the file it
+// leads to is replaced and the link stays. Every write error is reported.
 class OutputFile {
 public:
     // The file opened for writing, or why not (naming the file).
@@ -26,6 +27,9 @@ public:
     std::ostream& stream() { return stream_; }
     // Flushes, syncs and renames the temp file over the target; nullopt on success, else why.
     std::optional<std::string> commit();
+
+    // Where writing `target` goes: the file a link leads to (the link stays), else the target.
+    static std::filesystem::path writtenPath(const std::filesystem::path& target);
 
 private:
     OutputFile(std::filesystem::path target, std::filesystem::path temp);

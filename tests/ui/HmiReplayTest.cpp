@@ -124,7 +124,7 @@ TEST(HmiReplay, ABadReplayFileIsRefusedWithItsLine) {
     file.close();
     HmiRun run = runHmi({"--replay", bad});
     EXPECT_EQ(run.exitCode, 2);
-    EXPECT_TRUE(run.errors.contains("bad.jsonl:2:1: wheel step must be 1, 10 or 100")) << run.errors.toStdString();
+    EXPECT_TRUE(run.errors.contains("bad.jsonl:2:8: wheel step must be 1, 10 or 100")) << run.errors.toStdString();
 }
 
 TEST(HmiReplay, EveryPageRendersInBothLanguages) {
@@ -234,7 +234,8 @@ TEST(HmiReplay, ToolLifeViewShowsTheSisterAProgramBroughtIn) {
                          .arg(program.fileName())
                          .toUtf8());
     replayFile.close();
-    HmiRun run = runHmi({"--replay", replayFile.fileName(), "--lang", "en"});
+    // the program's folder is the U disk: a replay loads only what the Program page shows
+    HmiRun run = runHmi({"--replay", replayFile.fileName(), "--lang", "en", "--programs", dir.path()});
     ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
     EXPECT_EQ(run.state["page"].toString(), "toollife");
     const QJsonArray rows = run.state["tool_life"].toArray();

@@ -10,6 +10,10 @@
 #include <QFile>
 #include <QTemporaryDir>
 
+#include <sys/stat.h>
+
+#include <future>
+
 namespace m350::test {
 
 namespace {
@@ -141,6 +145,37 @@ TEST(ToolTablePage, ALinuxCncFileImportsAsItIsTheTableExportsAndBothSurviveARest
     EXPECT_EQ(page->rowCount(), 1);
     EXPECT_EQ(page->cellText(0, Column::Rpm), QStringLiteral("24000"));
     EXPECT_EQ(parameter(again, 930), 60.0);
+}
+
+// Issue 26: the export never lands on the loaded program, and a FIFO the operator names is
+// written as a FIFO, not renamed over.
+TEST(ToolTablePage, TheExportRefusesTheLoadedProgramAndWritesAFifoAsAFifo) {
+    PanelHarness panel;
+    QTemporaryDir dir;
+    panel.loadProgram("prog.nc", "G0 X1\nM30\n");
+    const QString program = panel.session().latest()->programFile;
+    ui::ToolTablePage* page = openTable(panel);
+    ASSERT_NE(page, nullptr);
+    panel.softkey(6);
+    answer(panel, program);
+    EXPECT_TRUE(panel.window().messageText().contains(program)) << panel.window().messageText().toStdString();
+    QFile file(program);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_EQ(file.readAll(), "G0 X1\nM30\n");
+
+    const QString fifo = dir.filePath("tools.fifo");
+    ASSERT_EQ(::mkfifo(fifo.toLocal8Bit().constData(), 0600), 0);
+    auto reader = std::async(std::launch::async, [fifo] {
+        QFile in(fifo);
+        return in.open(QIODevice::ReadOnly) ? in.readAll() : QByteArray();
+    });
+    panel.softkey(6);
+    answer(panel, fifo);
+    ASSERT_EQ(reader.wait_for(std::chrono::seconds(30)), std::future_status::ready);
+    EXPECT_TRUE(reader.get().contains("T1 P1")) << panel.window().messageText().toStdString();
+    struct stat s {};
+    ASSERT_EQ(::stat(fifo.toLocal8Bit().constData(), &s), 0);
+    EXPECT_TRUE(S_ISFIFO(s.st_mode));
 }
 
 } // namespace m350::test

@@ -175,7 +175,11 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
     if (kinds == 0) {
         return a; // {"t": 8}: time passes
     }
-    return fail(QStringLiteral("unknown action \"%1\"").arg(object.keys().join(", ")));
+    QStringList names = object.keys();
+    names.removeAll(QStringLiteral("t"));
+    return fail(QStringLiteral("unknown action \"%1\" (one of: key, key_down, key_up, softkey, text, wheel, page, "
+                               "force, lang, load)")
+                    .arg(names.join(", ")));
 }
 
 } // namespace m350::ui

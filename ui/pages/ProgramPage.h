@@ -39,6 +39,9 @@ public:
     SimulationPanel* simulation() const { return simulation_; }
     // The U disk's folder (--programs DIR; the home folder by default).
     void setUserFolder(const QString& folder);
+    // The folder a disk lists: 本地 the machine folder's programs/, U盘 the user's, 系统 the
+    // machine folder's *.nc (a replay's `load` may open only these).
+    QString folderOf(ProgramFiles::Disk disk) const;
     static constexpr double kSpeeds[] = {1.0, 10.0, 100.0, 0.0}; // 0: as fast as the core goes
 
 private:
@@ -48,7 +51,6 @@ private:
     void simulationSoftkey(int number);
     void setMode(Mode mode);
     void showDisk(ProgramFiles::Disk disk);
-    QString folderOf(ProgramFiles::Disk disk) const;
     ProgramFiles::Sort sortOrder() const;
     void openEditor(const QString& path);
     void closeEditor(bool save);

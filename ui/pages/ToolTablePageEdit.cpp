@@ -2,6 +2,7 @@
 // tool, a deleted one, touch off, and tool.tbl files read and written.
 #include "ui/pages/ToolTablePage.h"
 
+#include "core/files/OutputGuard.h"
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
 #include "ui/pages/PanelContext.h"
@@ -206,6 +207,12 @@ void ToolTablePage::exportTable() {
             return;
         }
         const QString path = resolvePath(*text);
+        const auto snapshot = context().snapshot();
+        if (snapshot && !snapshot->programFile.isEmpty() &&
+            files::outputOverGuarded(path.toStdString(), {{"", snapshot->programFile.toStdString(), false}})) {
+            context().notify(tr("%1 is the loaded program: refused, nothing was written").arg(path));
+            return;
+        }
         if (auto error = context().folderFiles().exportToolTable(path.toStdString(), *shown_)) {
             context().notify(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
             return;

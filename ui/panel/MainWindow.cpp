@@ -1,5 +1,6 @@
 #include "ui/panel/MainWindow.h"
 
+#include "core/files/OutputGuard.h"
 #include "ui/actions/ActionRecorder.h"
 #include "ui/actions/KeyboardMap.h"
 #include "ui/i18n/AlarmText.h"
@@ -60,6 +61,8 @@ MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language*
     context_.attach(prompt_, [this](const QString& text) { notify(text); });
     recorder_ = new ActionRecorder([this] { return snapshot_ ? snapshot_->sessionTime : 0.0; }, this);
     connect(dispatcher_, &ActionDispatcher::dispatched, recorder_, &ActionRecorder::record);
+    connect(recorder_, &ActionRecorder::failed, this,
+            [this](const QString& why) { notify(tr("Recording stopped: %1").arg(why)); });
     connect(softkeys_, &SoftkeyBar::pressed, this,
             [this](int number) { dispatcher_->dispatch(OperatorAction::softkeyPress(number)); });
     addPages();
@@ -284,8 +287,8 @@ void MainWindow::buildMenu() {
     panelMenu_->addSeparator();
     QAction* record = panelMenu_->addAction(QString(), this, [this] {
         if (recorder_->recording()) {
-            recorder_->stop();
-            notify(tr("Recording stopped"));
+            const QString error = recorder_->stop();
+            notify(error.isEmpty() ? tr("Recording stopped") : error);
             return;
         }
         QString path = QFileDialog::getSaveFileName(this, tr("Record operator actions"), {}, "JSON Lines (*.jsonl)");
@@ -305,7 +308,41 @@ void MainWindow::buildMenu() {
     panelMenu_->addAction(QString(), backupImport_, &BackupImportFlow::start)->setObjectName("importBackupAction");
 }
 
-bool MainWindow::startRecording(const QString& path, QString* error) { return recorder_->start(path, error); }
+bool MainWindow::startRecording(const QString& path, QString* error) {
+    // the recording never lands on what the panel reads or owns (Nothing lost, issue 26)
+    std::vector<files::GuardedPath> guarded{{"the machine folder", context_.machineFolder().toStdString(), true}};
+    if (snapshot_ && !snapshot_->programFile.isEmpty()) {
+        guarded.push_back({"the loaded program", snapshot_->programFile.toStdString(), false});
+    }
+    if (auto hit = files::outputOverGuarded(path.toStdString(), guarded)) {
+        *error = hit->inside ? tr("%1 is inside the machine folder %2: refused, nothing was written")
+                                   .arg(path, context_.machineFolder())
+                             : tr("%1 is the loaded program: refused, nothing was written").arg(path);
+        return false;
+    }
+    if (auto why = files::unwritableOutput(path.toStdString())) {
+        *error = unwritableText(path, *why);
+        return false;
+    }
+    return recorder_->start(path, error);
+}
+
+QString MainWindow::stopRecording() { return recorder_->stop(); }
+
+bool MainWindow::recording() const { return recorder_->recording(); }
+
+QString MainWindow::unwritableText(const QString& path, files::Unwritable why) {
+    switch (why) {
+    case files::Unwritable::Folder: return tr("%1 is a folder, not a file: refused, nothing was written").arg(path);
+    case files::Unwritable::Socket: return tr("%1 is a socket, not a file: refused, nothing was written").arg(path);
+    case files::Unwritable::BlockDevice:
+        return tr("%1 is a disk (block device), not a file: refused, nothing was written").arg(path);
+    case files::Unwritable::NoFolder:
+    case files::Unwritable::ParentNotFolder:
+        return tr("%1: its folder does not exist or is not a folder: refused, nothing was written").arg(path);
+    }
+    return path;
+}
 
 void MainWindow::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/files/OutputGuard.h"
+
 #include "ui/actions/ActionDispatcher.h"
 #include "ui/actions/PanelScreen.h"
 #include "ui/pages/PanelContext.h"
@@ -41,7 +43,11 @@ public:
     void askJogStep() override;
     void switchWheel(int axis, int step) override;
     void notify(const QString& text);
-    bool startRecording(const QString& path, QString* error); // --record
+    // --record and the Panel menu: refused over the loaded program, inside the machine folder, or
+    // onto a folder; a device is written as one.
+    bool startRecording(const QString& path, QString* error);
+    QString stopRecording(); // empty when every action reached the file, else why not
+    bool recording() const;
     BackupImportFlow& backupImport() { return *backupImport_; } // the Panel menu's 导入控制器备份
 
     StatusLine* statusLine() const { return status_; }
@@ -66,6 +72,7 @@ private:
     void askToolNumber(const PanelSnapshot& snapshot);
     void buildMenu();
     void retranslate();
+    static QString unwritableText(const QString& path, files::Unwritable why);
 
     MachineSession& session_;
     PanelContext context_;

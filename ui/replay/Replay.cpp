@@ -1,16 +1,108 @@
 #include "ui/replay/Replay.h"
 
+#include "ui/pages/PageId.h"
+#include "ui/pages/ProgramPage.h"
 #include "ui/panel/MainWindow.h"
 #include "ui/session/MachineSession.h"
 
 #include <QCoreApplication>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonParseError>
 
 namespace m350::ui {
 
-std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QString* error) {
+namespace {
+
+// What is wrong with a line QJsonDocument would not read, said as the writer sees it: Qt calls a
+// missing } at the end "unterminated string". Column 1-based; nullopt: ask Qt.
+std::optional<std::pair<int, QString>> shapeProblem(const QByteArray& line) {
+    if (!line.startsWith('{')) {
+        return std::pair{1, QStringLiteral("a line holds one action, a JSON object {...}")};
+    }
+    std::vector<std::pair<char, int>> open; // bracket, column
+    int stringAt = 0;
+    for (int i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (stringAt > 0) {
+            if (c == '\\') {
+                ++i;
+            } else if (c == '"') {
+                stringAt = 0;
+            }
+            continue;
+        }
+        if (c == '"') {
+            stringAt = i + 1;
+        } else if (c == '{' || c == '[') {
+            open.emplace_back(c, i + 1);
+        } else if (c == '}' || c == ']') {
+            const char expected = c == '}' ? '{' : '[';
+            if (open.empty() || open.back().first != expected) {
+                return std::pair{i + 1, QStringLiteral("'%1' closes nothing that is open").arg(QLatin1Char(c))};
+            }
+            open.pop_back();
+            if (open.empty() && i + 1 < line.size()) {
+                return std::pair{i + 2, QStringLiteral("text after the action's closing }: one action a line")};
+            }
+        }
+    }
+    if (stringAt > 0) {
+        return std::pair{stringAt, QStringLiteral("unterminated string: the \" opened here is not closed on this line")};
+    }
+    if (!open.empty()) {
+        return std::pair{static_cast<int>(line.size()) + 1,
+                         QStringLiteral("missing '%1' at the end of the line (the '%2' at column %3 is not closed)")
+                             .arg(QLatin1Char(open.back().first == '{' ? '}' : ']'))
+                             .arg(QLatin1Char(open.back().first))
+                             .arg(open.back().second)};
+    }
+    return std::nullopt;
+}
+
+// The column of "name" as a key of the line (1 when it is not found as written).
+int keyColumn(const QByteArray& line, const QString& name) {
+    const qsizetype at = line.indexOf('"' + name.toUtf8() + '"');
+    return at < 0 ? 1 : static_cast<int>(at) + 1;
+}
+
+// The action's own key on its line: what its messages point at.
+QString actionKey(const QJsonObject& object) {
+    for (const QString& key : object.keys()) {
+        if (key != QLatin1String("t")) {
+            return key;
+        }
+    }
+    return QStringLiteral("t");
+}
+
+// Whether the Program page lists `file` on one of its disks (a link counts where it leads), and
+// the disks' folders for the message.
+bool onProgramDisk(MainWindow& window, const QString& file, QStringList* disks) {
+    auto* programs = dynamic_cast<ProgramPage*>(window.page(PageId::program));
+    if (!programs) {
+        return false;
+    }
+    const QFileInfo target(QFileInfo(file).canonicalFilePath());
+    bool shown = false;
+    for (ProgramFiles::Disk disk : {ProgramFiles::Disk::Local, ProgramFiles::Disk::User, ProgramFiles::Disk::System}) {
+        const QString folder = programs->folderOf(disk);
+        disks->append(folder);
+        if (target.filePath().isEmpty() || target.absolutePath() != QFileInfo(folder).canonicalFilePath()) {
+            continue;
+        }
+        for (const ProgramFiles::Entry& entry : ProgramFiles::list(folder, disk, ProgramFiles::Sort::Name)) {
+            shown = shown || entry.name == target.fileName();
+        }
+    }
+    return shown;
+}
+
+} // namespace
+
+std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QString* error,
+                                                      std::vector<ReplayPlace>* places) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
         *error = QStringLiteral("%1: cannot read: %2").arg(path, file.errorString());
@@ -19,38 +111,52 @@ std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QStri
     std::vector<OperatorAction> actions;
     int lineNumber = 0;
     double previous = 0.0;
+    auto failAt = [&](int column, const QString& why) {
+        *error = QStringLiteral("%1:%2:%3: %4").arg(path).arg(lineNumber).arg(column).arg(why);
+        return std::nullopt;
+    };
     while (!file.atEnd()) {
         ++lineNumber;
-        QByteArray line = file.readLine().trimmed();
+        const QByteArray raw = file.readLine();
+        const QByteArray line = raw.trimmed();
         if (line.isEmpty() || line.startsWith("//")) {
             continue;
         }
+        const int indent = static_cast<int>(raw.indexOf(line.at(0))); // columns count from the raw line
         QJsonParseError parse{};
         QJsonDocument doc = QJsonDocument::fromJson(line, &parse);
         if (parse.error != QJsonParseError::NoError || !doc.isObject()) {
-            *error = QStringLiteral("%1:%2:%3: not a JSON object: %4")
-                         .arg(path)
-                         .arg(lineNumber)
-                         .arg(parse.offset + 1)
-                         .arg(parse.error != QJsonParseError::NoError ? parse.errorString() : QStringLiteral("expected {...}"));
-            return std::nullopt;
+            if (auto problem = shapeProblem(line)) {
+                return failAt(indent + problem->first, problem->second);
+            }
+            return failAt(indent + parse.offset + 1, parse.error != QJsonParseError::NoError ? parse.errorString()
+                                                                                        : QStringLiteral("expected {...}"));
         }
+        const QJsonObject object = doc.object();
         QString why;
-        auto action = OperatorAction::fromJson(doc.object(), &why);
+        auto action = OperatorAction::fromJson(object, &why);
+        const QString key = why.startsWith(QLatin1String("\"t\"")) ? QStringLiteral("t") : actionKey(object);
+        const int column = indent + keyColumn(line, key);
         if (!action) {
-            *error = QStringLiteral("%1:%2:1: %3").arg(path).arg(lineNumber).arg(why);
-            return std::nullopt;
+            return failAt(column, why);
+        }
+        const int timeColumn = indent + keyColumn(line, QStringLiteral("t"));
+        if (!(action->t <= kMostReplaySeconds)) {
+            return failAt(timeColumn, QStringLiteral("t = %1 s is beyond the longest replay, %2 s (24 h) of virtual time")
+                                          .arg(action->t)
+                                          .arg(kMostReplaySeconds));
         }
         if (action->t < previous) {
-            *error = QStringLiteral("%1:%2:1: t = %3 comes before the previous action's %4 (actions must be in time order)")
-                         .arg(path)
-                         .arg(lineNumber)
-                         .arg(action->t)
-                         .arg(previous);
-            return std::nullopt;
+            return failAt(timeColumn, QStringLiteral("t = %1 comes before the previous action's %2 (actions must be in "
+                                                     "time order)")
+                                          .arg(action->t)
+                                          .arg(previous));
         }
         previous = action->t;
         actions.push_back(*action);
+        if (places) {
+            places->push_back({lineNumber, column});
+        }
     }
     return actions;
 }
@@ -61,20 +167,56 @@ void settle(MachineSession& session) {
     QCoreApplication::processEvents();
 }
 
-void playReplay(MainWindow& window, MachineSession& session, const std::vector<OperatorAction>& actions) {
+QString playReplay(MainWindow& window, MachineSession& session, const std::vector<OperatorAction>& actions,
+                   const QString& path, const std::vector<ReplayPlace>& places) {
     constexpr double kFrame = 1.0 / 60.0;
     double now = 0.0;
+    // nobody watches a replay's frames: the pages render each snapshot as always, but no widget
+    // paints until the replay ends (a page switch cost 3.5 ms of painting)
+    const bool painting = window.updatesEnabled();
+    window.setUpdatesEnabled(false);
+    struct Restore {
+        MainWindow& window;
+        bool painting;
+        ~Restore() { window.setUpdatesEnabled(painting); }
+    } restore{window, painting};
     settle(session);
-    for (const OperatorAction& action : actions) {
+    for (std::size_t i = 0; i < actions.size(); ++i) {
+        const OperatorAction& action = actions[i];
+        // a time mark with a later action after it: the panel need not see its moment (nothing is
+        // recorded with it), the next action's frames end in a snapshot
+        const bool mark = action.kind == OperatorAction::Kind::Wait && i + 1 < actions.size() &&
+                          actions[i + 1].t > action.t + 1e-9 && !window.recording();
         while (now + 1e-9 < action.t) {
-            double step = std::min(kFrame, action.t - now);
-            session.advance(step);
-            now += step;
+            if (const double passed = session.advanceWhileQuiet(action.t - now, !mark); passed > 0.0) {
+                now += passed;
+                if (mark && now + 1e-9 >= action.t) {
+                    break; // no snapshot came: nothing to show
+                }
+            } else {
+                const double step = std::min(kFrame, action.t - now);
+                session.advance(step);
+                now += step;
+            }
             QCoreApplication::processEvents();
         }
+        QStringList disks;
+        if (action.kind == OperatorAction::Kind::Load && !onProgramDisk(window, action.name, &disks)) {
+            const ReplayPlace place = i < places.size() ? places[i] : ReplayPlace{};
+            return QStringLiteral("%1:%2:%3: load \"%4\": a replay loads only a program the Program page shows on "
+                                  "its disks (%5), links followed: refused")
+                .arg(path)
+                .arg(place.line)
+                .arg(place.column)
+                .arg(action.name, disks.join(QStringLiteral(", ")));
+        }
         window.dispatcher().dispatch(action);
-        settle(session);
+        if (action.kind != OperatorAction::Kind::Wait) { // time passing asks nothing of the machine
+            settle(session);
+        }
     }
+    settle(session);
+    return {};
 }
 
 } // namespace m350::ui

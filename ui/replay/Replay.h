@@ -12,13 +12,31 @@ namespace m350::ui {
 class MainWindow;
 class MachineSession;
 
+// The longest virtual time a replay may reach: a day (three shifts). A later `t` is refused as it
+// is read, naming its line: `{"t":1e9}` would otherwise keep the panel busy for weeks.
+constexpr double kMostReplaySeconds = 24.0 * 3600.0;
+
+// Where each action of a replay file stands: its line, and the column of its action's name (of
+// "t" for a time passing), for the messages of playReplay.
+struct ReplayPlace {
+    int line = 0;
+    int column = 1;
+};
+
 // A replay file: JSON Lines, one operator action a line, in order of their virtual time `t`.
-// Blank lines and lines starting with // are skipped. An error names the file and line.
-std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QString* error);
+// Blank lines and lines starting with // are skipped. An error names file:line:column and what is
+// wrong (a missing }, an unterminated string, an unknown action, a time out of order or too late).
+std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QString* error,
+                                                      std::vector<ReplayPlace>* places = nullptr);
 
 // Plays the actions against the panel in virtual time: time passes in display frames up to each
-// action's `t`, then the action goes through the dispatcher. Ends at the last action's time.
-void playReplay(MainWindow& window, MachineSession& session, const std::vector<OperatorAction>& actions);
+// action's `t`, then the action goes through the dispatcher. Ends at the last action's time. Time
+// in which nothing happens passes at once (MachineSession::advanceWhileQuiet): the machine sees
+// the same frames, the panel only the last. A `load` may open only a file the Program page shows
+// on one of its disks (links followed): else the replay stops there. Empty when it played to its
+// end, else why not, at `path`:line:column from `places` (readReplay's).
+QString playReplay(MainWindow& window, MachineSession& session, const std::vector<OperatorAction>& actions,
+                   const QString& path = {}, const std::vector<ReplayPlace>& places = {});
 
 // Lets the session catch up and the window show the latest snapshot (for screenshots and tests).
 void settle(MachineSession& session);

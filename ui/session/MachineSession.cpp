@@ -131,6 +131,13 @@ void MachineSession::advance(double seconds) {
     }
 }
 
+double MachineSession::advanceWhileQuiet(double seconds, bool publishAtEnd) {
+    double passed = 0.0;
+    QMetaObject::invokeMethod(worker_, [w = worker_, seconds, publishAtEnd, &passed] { passed = w->advanceWhileQuiet(seconds, publishAtEnd); },
+                              Qt::BlockingQueuedConnection);
+    return passed;
+}
+
 void MachineSession::sync() {
     QMetaObject::invokeMethod(worker_, [w = worker_] { w->publish(); }, Qt::BlockingQueuedConnection);
 }

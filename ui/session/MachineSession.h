@@ -135,6 +135,11 @@ public:
     // Manual clock: lets `seconds` of virtual time pass in frames of at most 1/60 s and waits until
     // the worker has done so; the snapshot of the last frame is then queued to this thread.
     void advance(double seconds);
+    // Manual clock: the same frames, but while the machine is quiet (nothing runs, holds, jogs or
+    // simulates) they pass without a snapshot each, so idle virtual time costs next to nothing; one
+    // snapshot at the end (none with `publishAtEnd` false while still quiet: more time passes next).
+    // Returns the time that passed (0: not quiet, use advance()).
+    double advanceWhileQuiet(double seconds, bool publishAtEnd = true);
     // Waits until every call queued so far has run (replays and tests).
     void sync();
 

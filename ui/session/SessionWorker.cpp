@@ -11,6 +11,7 @@
 
 #include <QDateTime>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -107,6 +108,25 @@ void SessionWorker::scheduleTick() {
 void SessionWorker::advanceManual(double seconds) {
     advance(seconds);
     publish();
+}
+
+bool SessionWorker::quiet() const {
+    return !busy() && activity_ == Activity::None && pendingSteps_.isEmpty() && !(simulation_ && simulation_->running()) &&
+           !controller_->manual().jogging();
+}
+
+double SessionWorker::advanceWhileQuiet(double seconds, bool publishAtEnd) {
+    constexpr double kFrame = 1.0 / 60.0;
+    double passed = 0.0;
+    while (seconds - passed > 1e-9 && quiet()) {
+        const double step = std::min(kFrame, seconds - passed);
+        advance(step);
+        passed += step;
+    }
+    if (passed > 0.0 && (publishAtEnd || !quiet())) {
+        publish();
+    }
+    return passed;
 }
 
 void SessionWorker::advance(double seconds) {

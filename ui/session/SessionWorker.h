@@ -53,6 +53,11 @@ public:
     void clearWorkRecord();
     void setParameter(int number, double value);
     void advanceManual(double seconds);
+    // Manual clock: lets up to `seconds` pass in the same 1/60 s frames while the machine is quiet
+    // (quiet()), publishing once at the end (or not: the caller lets more time pass at once) instead
+    // of every frame; stops after the frame in which something starts, and publishes it. Returns
+    // the time that passed (0 when not quiet).
+    double advanceWhileQuiet(double seconds, bool publishAtEnd);
     void publish();
     // 仿真 (a SimulationRun beside the machine): speed 0 = as fast as the core goes.
     void startSimulation(const QString& path, double speed);
@@ -100,6 +105,9 @@ signals:
 
 private:
     void tick();
+    // Nothing runs, holds, jogs, simulates or waits to start: a frame changes nothing the panel
+    // needs to see at once (devices the IO page switched still move: they show at the next publish).
+    bool quiet() const;
     void scheduleTick();
     void advance(double seconds);
     void advanceSimulation(double seconds);

@@ -1,0 +1,88 @@
+#include "app/hmi/HmiOutputs.h"
+
+#include "core/files/OutputFile.h"
+#include "core/files/OutputGuard.h"
+
+#include <QImageWriter>
+#include <QStringList>
+
+#include <filesystem>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace m350::hmi {
+
+namespace {
+
+QString imageSuffixes() {
+    QStringList suffixes;
+    for (const QByteArray& format : QImageWriter::supportedImageFormats()) {
+        suffixes << QString::fromLatin1(format);
+    }
+    return suffixes.join(QStringLiteral(", "));
+}
+
+} // namespace
+
+std::optional<QByteArray> screenshotFormat(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::path file(path);
+    if (!file.has_extension() || (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))) {
+        return QByteArray("png");
+    }
+    const QByteArray suffix = QByteArray::fromStdString(file.extension().string().substr(1)).toLower();
+    if (QImageWriter::supportedImageFormats().contains(suffix)) {
+        return suffix;
+    }
+    return std::nullopt;
+}
+
+std::optional<QString> writeOutput(const std::string& path, const QByteArray& bytes) {
+    if (auto problem = files::writeOutputFile(path, std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())))) {
+        return QString::fromStdString(*problem);
+    }
+    return std::nullopt;
+}
+
+std::optional<QString> refusedOutput(const HmiOptions& o, const QString& machineFolder) {
+    std::vector<files::GuardedPath> guarded{{"the machine folder", machineFolder.toStdString(), true}};
+    if (!o.program.empty()) {
+        guarded.push_back({"the loaded program", o.program, false});
+    }
+    if (!o.replay.empty()) {
+        guarded.push_back({"the replay being played", o.replay, false});
+    }
+    std::vector<std::pair<std::string, std::string>> outputs; // option, path
+    for (const auto& [option, path] : {std::pair{"--state", &o.state}, {"--screenshot", &o.screenshot}, {"--record", &o.record}}) {
+        if (!path->empty()) {
+            outputs.emplace_back(option, *path);
+        }
+    }
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const auto& [option, path] = outputs[i];
+        if (auto refused = files::refusedOutput(option, path, guarded)) {
+            return QString::fromStdString(*refused);
+        }
+        if (auto why = files::unwritableOutput(path)) {
+            return QString::fromStdString(files::describeUnwritable(option, path, *why));
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (files::outputOverGuarded(path, {{"", outputs[j].second, false}}) ||
+                std::filesystem::weakly_canonical(std::filesystem::absolute(path)) ==
+                    std::filesystem::weakly_canonical(std::filesystem::absolute(outputs[j].second))) {
+                return QString::fromStdString(option + " " + path + " is also the " + outputs[j].first +
+                                              " file: refused, nothing was written");
+            }
+        }
+    }
+    if (!o.screenshot.empty() && !screenshotFormat(o.screenshot)) {
+        return QString::fromStdString("--screenshot " + o.screenshot + ": ." +
+                                      std::filesystem::path(o.screenshot).extension().string().substr(1) +
+                                      " is not an image format (" + imageSuffixes().toStdString() +
+                                      "): refused, nothing was written");
+    }
+    return std::nullopt;
+}
+
+} // namespace m350::hmi
