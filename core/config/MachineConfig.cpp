@@ -20,6 +20,8 @@
 
 #include "core/files/Toml.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 
 namespace m350::config {
@@ -52,8 +54,26 @@ void addUserLibrary(const fs::path& folder, MachineConfig& config) {
 }
 
 bool isInside(const fs::path& path, const fs::path& folder) {
-    const fs::path relative = fs::weakly_canonical(path).lexically_relative(fs::weakly_canonical(folder));
+    std::error_code ec;
+    const fs::path real = fs::weakly_canonical(path, ec);
+    const fs::path within = ec ? fs::path() : fs::weakly_canonical(folder, ec);
+    if (ec || real.empty() || within.empty()) {
+        return false;
+    }
+    const fs::path relative = real.lexically_relative(within);
     return !relative.empty() && *relative.begin() != "..";
+}
+
+// Where a library may lie once `..` and every symlink are resolved: the machine folder, the
+// bundled machine folders (the program's own, which share slib-g.nc and slib-probe.nc), and the
+// folder the user names in M350_LIBRARIES. A copied folder must not make the simulator read (and
+// echo in its messages) any other file of this computer.
+std::vector<fs::path> libraryFolders(const fs::path& folder) {
+    std::vector<fs::path> folders{folder, bundledMachinesDirectory()};
+    if (const char* named = std::getenv(kLibrariesVariable); named && *named) {
+        folders.emplace_back(named);
+    }
+    return folders;
 }
 
 // [tools.97] length = ..., diameter = ...: one tool beyond the lists (a reference tool).
@@ -148,11 +168,12 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
             fail(file, "library entries must be file names", node.source());
         }
         fs::path path = folder / *name;
-        if (fs::path(*name).is_absolute() && !isInside(path, folder)) {
-            // a machine folder copied from elsewhere must not make the simulator read (and echo in
-            // its messages) any file of this computer
+        const std::vector<fs::path> allowed = libraryFolders(folder);
+        if (std::none_of(allowed.begin(), allowed.end(), [&](const fs::path& f) { return isInside(path, f); })) {
             fail(file,
-                 "library '" + *name + "' lies outside the machine folder: name it relative to " + folder.string(),
+                 "library '" + *name + "' lies outside the machine folder " + folder.string() +
+                     " (after resolving '..' and symlinks): refused, nothing was read. Keep it in the folder, or "
+                     "name its folder in " + kLibrariesVariable,
                  node.source());
         }
         std::error_code ec;

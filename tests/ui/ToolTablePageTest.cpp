@@ -6,6 +6,8 @@
 #include "ui/pages/ToolTablePage.h"
 #include "ui/panel/PromptBox.h"
 
+#include "ui/session/UserAccess.h"
+
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
@@ -81,6 +83,7 @@ TEST(ToolTablePage, TouchOffMakesTheDisplayReadTheMeasuredZ) {
     ui::ToolTablePage* page = openTable(panel);
     ASSERT_NE(page, nullptr);
     panel.softkey(4);
+    answer(panel, ui::UserAccess::defaultPassword(params::UserLevel::Operator)); // T3's Z is param 932 (issue 26)
     answer(panel, "5");
     auto s = panel.session().latest();
     EXPECT_NEAR(s->status.work(2), 5.0, 1e-6) << "the work Z shown (the offset is kept to 1e-6 mm)";
