@@ -100,16 +100,11 @@ TEST(UserRights, AGuestsProgramLineCannotSetTheSetterThicknessEither) {
 TEST(UserRights, TheMachinesMacrosStillWriteAndEveryChangeIsLoggedWithTheLevel) {
     PanelHarness panel;
     panel.session().setParameter(930, 0.0); // the setup, through the session: T1 not yet set
-    panel.key("MDI");
-    panel.type("#1502=1"); // O502's fixed setter mode
-    panel.key("ENTER");
-    panel.key("DOWN");
-    panel.type("M98 P502");
-    panel.key("ENTER");
-    panel.softkey(1);
+    panel.session().setVariable(1502, 1.0); // O502's fixed setter mode
+    runMdi(panel, "M98 P502");
     panel.advance(60.0);
     EXPECT_FALSE(panel.session().latest()->status.alarm) << panel.window().alarmText().toStdString();
-    EXPECT_NEAR(parameter(panel, 930), -53.677, 1e-3);
+    EXPECT_NEAR(parameter(panel, 930), -53.677, 1e-3) << panel.page<ui::MdiPage>()->resultText().toStdString();
     const QString log = systemLog(panel);
     EXPECT_TRUE(log.contains(QStringLiteral("param_guest\t[930] 0 -> -53.677 (slib-probe.nc:99)"))) << log.toStdString();
 }
