@@ -21,6 +21,7 @@
 #include "core/files/Toml.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 
@@ -74,6 +75,24 @@ std::vector<fs::path> libraryFolders(const fs::path& folder) {
         folders.emplace_back(named);
     }
     return folders;
+}
+
+// A program file (.nc) of a machine folder beside this one (`../m350-linear16/slib-m.nc` in a copy
+// of the bundled machines): its folder holds a machine.toml and shares this folder's parent.
+bool inSiblingMachineFolder(const fs::path& path, const fs::path& folder) {
+    std::error_code ec;
+    const fs::path real = fs::weakly_canonical(path, ec);
+    const fs::path self = ec ? fs::path() : fs::weakly_canonical(folder, ec);
+    if (ec || real.empty() || self.empty()) {
+        return false;
+    }
+    std::string extension = real.extension().string();
+    for (char& c : extension) {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    const fs::path sibling = real.parent_path();
+    return extension == ".nc" && sibling.parent_path() == self.parent_path() &&
+           fs::is_regular_file(sibling / "machine.toml", ec);
 }
 
 // [tools.97] length = ..., diameter = ...: one tool beyond the lists (a reference tool).
@@ -169,7 +188,8 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         }
         fs::path path = folder / *name;
         const std::vector<fs::path> allowed = libraryFolders(folder);
-        if (std::none_of(allowed.begin(), allowed.end(), [&](const fs::path& f) { return isInside(path, f); })) {
+        if (std::none_of(allowed.begin(), allowed.end(), [&](const fs::path& f) { return isInside(path, f); }) &&
+            !inSiblingMachineFolder(path, folder)) {
             fail(file,
                  "library '" + *name + "' lies outside the machine folder " + folder.string() +
                      " (after resolving '..' and symlinks): refused, nothing was read. Keep it in the folder, or "

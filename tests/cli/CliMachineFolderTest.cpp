@@ -121,6 +121,16 @@ TEST_F(MachineFolderTest, ALibraryStaysInsideTheFolderAfterDotsAndSymlinks) {
     ProcessResult named = sim({"mdi", "G0 X1", "--config", "machine"});
     ::unsetenv("M350_LIBRARIES");
     EXPECT_EQ(named.exitStatus, kExitOk) << named.err;
+
+    // a machine folder beside it (a copy of the bundled machines) lends its .nc libraries only
+    fs::create_directories(dir_ / "other");
+    std::ofstream(dir_ / "other" / "machine.toml") << "name = \"other\"\n";
+    std::ofstream(dir_ / "other" / "passwords.toml") << "operator = \"SECRET-LINE\"\n";
+    fs::copy_file(machine / "slib-g.nc", dir_ / "other" / "lib.nc");
+    edit(machine / "machine.toml", "g = \"evil.nc\"", "g = \"../other/passwords.toml\"");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "outside the machine folder");
+    edit(machine / "machine.toml", "g = \"../other/passwords.toml\"", "g = \"../other/lib.nc\"");
+    EXPECT_EQ(sim({"mdi", "G0 X1", "--config", "machine"}).exitStatus, kExitOk);
 }
 
 // Typos in the machine folder were silently ignored; `G54 = "abc"` too.
