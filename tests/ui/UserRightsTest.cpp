@@ -222,4 +222,25 @@ TEST(UserRights, ACorruptPasswordsFileLocksEveryLevelAboveGuest) {
     EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(file)));
 }
 
+// The highest level, still signed in when the file went bad, repairs it by setting its password:
+// every level keeps the password it had (the operator's changed one, not opr350).
+TEST(UserRights, TheHighestLevelRepairsABadFileWithoutBringingADefaultBack) {
+    PanelHarness panel;
+    const fs::path file = fs::path(panel.folder().toStdString()) / "passwords.toml";
+    ASSERT_TRUE(panel.session().login(UserLevel::Operator, password(UserLevel::Operator)));
+    ASSERT_FALSE(panel.session().changePassword("lathe-42"));
+    ASSERT_TRUE(panel.session().login(UserLevel::Super, password(UserLevel::Super)));
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << "operator = \"zz:zz\"\n";
+    EXPECT_FALSE(panel.session().login(UserLevel::Admin, password(UserLevel::Admin)));
+    EXPECT_FALSE(panel.session().passwordsProblem().isEmpty());
+    EXPECT_EQ(panel.session().userLevel(), UserLevel::Super) << "the level signed in stays";
+    EXPECT_FALSE(panel.session().changePassword("super-new-1"));
+    EXPECT_TRUE(panel.session().passwordsProblem().isEmpty());
+    PanelHarness restarted(panel.folder());
+    EXPECT_TRUE(restarted.session().passwordsProblem().isEmpty());
+    EXPECT_FALSE(restarted.session().login(UserLevel::Operator, password(UserLevel::Operator)));
+    EXPECT_TRUE(restarted.session().login(UserLevel::Operator, "lathe-42"));
+    EXPECT_TRUE(restarted.session().login(UserLevel::Super, "super-new-1"));
+}
+
 } // namespace m350::test

@@ -85,6 +85,9 @@ std::optional<QString> UserAccess::changePassword(const QString& password) {
     if (level_ == Level::Guest) {
         return tr("Rights is limited,pls shift user's rights:", "msg 934");
     }
+    if (!problem_.isEmpty() && level_ != Level::Super) {
+        return tr("Rights is limited,pls shift user's rights:", "msg 934"); // only the highest level repairs the file
+    }
     if (password.size() < kMinimumLength) {
         return tr("The No. of characters < 6,pls input again!", "msg 918");
     }
@@ -96,18 +99,20 @@ std::optional<QString> UserAccess::changePassword(const QString& password) {
         stored_.levels[index(level_)] = previous;
         return tr("File save failed!", "msg 907") + QStringLiteral(" ") + *error;
     }
+    problem_.clear(); // written whole: the file is sound again
     return std::nullopt;
 }
 
+// A file that cannot be trusted keeps what the last sound read knew: the highest level, still
+// signed in, then repairs it with every level's password as it was (save() writes them all).
 void UserAccess::load() {
-    stored_ = {};
-    problem_.clear();
     auto read = config::readPasswords(folder_);
     if (auto* problem = std::get_if<config::PasswordsProblem>(&read)) {
         problem_ = QString::fromStdString(problem->message);
         return;
     }
     stored_ = std::get<config::Passwords>(read);
+    problem_.clear();
 }
 
 std::optional<QString> UserAccess::save() const {
