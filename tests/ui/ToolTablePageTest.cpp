@@ -56,6 +56,8 @@ TEST(ToolTablePage, AFieldEditedInThePromptIsTheToolsParameterAndIsSavedInToolTb
     ASSERT_EQ(page->selectedTool(), 2);
     ASSERT_EQ(page->selectedColumn(), Column::Z);
     panel.key("ENTER");
+    EXPECT_TRUE(panel.window().messageText().contains(QStringLiteral("权限不足"))) << "a guest changes no Z (issue 26)";
+    answer(panel, ui::UserAccess::defaultPassword(params::UserLevel::Operator));
     EXPECT_EQ(panel.window().prompt()->textValue(), QStringLiteral("-48.120")) << "the value to change";
     answer(panel, "-50.5");
     EXPECT_EQ(parameter(panel, 931), -50.5) << "T2's Z is param 931";

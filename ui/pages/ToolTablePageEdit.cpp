@@ -44,6 +44,15 @@ void ToolTablePage::editField(const tools::ToolEntry& entry, Column column) {
         context().notify(tr("A tool keeps its number: add the new number with New and delete this one"));
         return;
     }
+    // on the M350 a tool's Z is its parameter (930+): the level the Param page asks for it
+    auto s = context().snapshot();
+    const std::optional<int> z = column == Column::Z && s && s->tWordChangesTool
+                                     ? tools::m350ZParameter(entry.tool, s->status.parameters)
+                                     : std::nullopt;
+    if (z && !LevelPrompt::require(context(), controller::ParameterWrites::required(*z),
+                                   [this, entry, column] { editField(entry, column); })) {
+        return;
+    }
     QString question = QStringLiteral("T%1 %2").arg(entry.tool).arg(columnTitle(column));
     if (column == Column::Type) {
         QStringList choices;
