@@ -682,6 +682,30 @@
         <translation>Parameter changed</translation>
     </message>
     <message>
+        <source>Parameter changed (Guest)</source>
+        <translation>Parameter changed (Guest)</translation>
+    </message>
+    <message>
+        <source>Parameter changed (Operator)</source>
+        <translation>Parameter changed (Operator)</translation>
+    </message>
+    <message>
+        <source>Parameter changed (Admin)</source>
+        <translation>Parameter changed (Admin)</translation>
+    </message>
+    <message>
+        <source>Parameter changed (Super)</source>
+        <translation>Parameter changed (Super)</translation>
+    </message>
+    <message>
+        <source>passwords.toml cannot be trusted: only Guest opens until it is repaired</source>
+        <translation>passwords.toml cannot be trusted: only Guest opens until it is repaired</translation>
+    </message>
+    <message>
+        <source>Passwords reset to their defaults (m350-sim reset-passwords)</source>
+        <translation>Passwords reset to their defaults (m350-sim reset-passwords)</translation>
+    </message>
+    <message>
         <source>Variable changed</source>
         <translation>Variable changed</translation>
     </message>
@@ -2323,6 +2347,10 @@
         <translation>User level:</translation>
     </message>
     <message>
+        <source>Passwords:</source>
+        <translation>Passwords:</translation>
+    </message>
+    <message>
         <source>M350 Studio (a DDCS M350 panel simulator)</source>
         <translation>M350 Studio (a DDCS M350 panel simulator)</translation>
     </message>
@@ -2333,6 +2361,14 @@
     <message>
         <source>%1 .nc files in the machine folder</source>
         <translation>%1 .nc files in the machine folder</translation>
+    </message>
+    <message>
+        <source>passwords.toml in order</source>
+        <translation>passwords.toml in order</translation>
+    </message>
+    <message>
+        <source>Locked: passwords.toml cannot be trusted (%1), so only %2 opens and no default password comes back. Repair: set new passwords at the highest level, or run m350-sim reset-passwords --config FOLDER</source>
+        <translation>Locked: passwords.toml cannot be trusted (%1), so only %2 opens and no default password comes back. Repair: set new passwords at the highest level, or run m350-sim reset-passwords --config FOLDER</translation>
     </message>
 </context>
 <context>

@@ -682,6 +682,30 @@
         <translation>参数修改</translation>
     </message>
     <message>
+        <source>Parameter changed (Guest)</source>
+        <translation>参数修改(访客)</translation>
+    </message>
+    <message>
+        <source>Parameter changed (Operator)</source>
+        <translation>参数修改(操作员)</translation>
+    </message>
+    <message>
+        <source>Parameter changed (Admin)</source>
+        <translation>参数修改(管理员)</translation>
+    </message>
+    <message>
+        <source>Parameter changed (Super)</source>
+        <translation>参数修改(超级管理)</translation>
+    </message>
+    <message>
+        <source>passwords.toml cannot be trusted: only Guest opens until it is repaired</source>
+        <translation>passwords.toml 不可信: 修复前只能以访客登录</translation>
+    </message>
+    <message>
+        <source>Passwords reset to their defaults (m350-sim reset-passwords)</source>
+        <translation>密码已恢复为默认值(m350-sim reset-passwords)</translation>
+    </message>
+    <message>
         <source>Variable changed</source>
         <translation>变量修改</translation>
     </message>
@@ -2323,6 +2347,10 @@
         <translation>用户权限:</translation>
     </message>
     <message>
+        <source>Passwords:</source>
+        <translation>密码:</translation>
+    </message>
+    <message>
         <source>M350 Studio (a DDCS M350 panel simulator)</source>
         <translation>M350 Studio (DDCS M350 面板模拟器)</translation>
     </message>
@@ -2333,6 +2361,14 @@
     <message>
         <source>%1 .nc files in the machine folder</source>
         <translation>机床文件夹中 %1 个 .nc 文件</translation>
+    </message>
+    <message>
+        <source>passwords.toml in order</source>
+        <translation>passwords.toml 正常</translation>
+    </message>
+    <message>
+        <source>Locked: passwords.toml cannot be trusted (%1), so only %2 opens and no default password comes back. Repair: set new passwords at the highest level, or run m350-sim reset-passwords --config FOLDER</source>
+        <translation>已锁定: passwords.toml 不可信(%1), 只能以%2登录, 不会恢复默认密码。修复: 在最高权限下设置新密码, 或运行 m350-sim reset-passwords --config 机床文件夹</translation>
     </message>
 </context>
 <context>

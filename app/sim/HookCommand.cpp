@@ -18,7 +18,8 @@ bool loadForCommand(controller::Controller& controller, const SimOptions& o) {
     case SimOptions::Command::Run:
     case SimOptions::Command::Check:
     case SimOptions::Command::Import:
-    case SimOptions::Command::Tools: break;
+    case SimOptions::Command::Tools:
+    case SimOptions::Command::ResetPasswords: break;
     }
     return controller.loadFile(o.program);
 }

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include <charconv>
+#include <map>
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
@@ -171,6 +172,18 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                         "after the run, press RESET and enter N as the tool the spindle holds (the panel's "
                         "设置目标刀具号), as the operator does after a stop in a change")
             ->check(CLI::NonNegativeNumber);
+        cmd->add_option_function<std::string>(
+               "--level",
+               [&o](const std::string& name) {
+                   const std::map<std::string, params::UserLevel> levels{{"guest", params::UserLevel::Guest},
+                                                                         {"operator", params::UserLevel::Operator},
+                                                                         {"admin", params::UserLevel::Admin},
+                                                                         {"super", params::UserLevel::Super}};
+                   o.settings.userLevel = levels.at(name);
+               },
+               "the panel's user level the MDI lines and the program run at: guest, operator, admin or super "
+               "(default super); a parameter (#N+500) above it stops the run with rights_limited, as on the panel")
+            ->check(CLI::IsMember({"guest", "operator", "admin", "super"}));
         cmd->add_option("--sensor-timeout", o.settings.sensorTimeout,
                         "simulated seconds a macro may wait for a sensor input before an alarm (default 10)")
             ->check(positiveFinite);
@@ -208,6 +221,15 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         ->check(nonEmptyPath);
     toolsCmd->add_flag("--tbl", o.toolsAsTable, "print the table in tool.tbl form instead of JSON");
 
+    CLI::App* resetPasswords = app.add_subcommand(
+        "reset-passwords", "write the machine folder's passwords.toml anew: every level opens with its default password "
+                           "again (the repair of a passwords.toml the panel cannot trust)");
+    resetPasswords->add_option("--config", o.configDir, "the machine folder")->required()->check(nonEmptyPath);
+    resetPasswords->add_option_function<std::string>(
+                      "--lang", [&o](const std::string& name) { parseMessageLanguage(name, o.language); },
+                      "language of the line it prints: en (default) or zh_CN")
+        ->check(CLI::IsMember({"en", "zh_CN"}));
+
     try {
         app.parse(argc, argv);
         o.command = run->parsed()      ? SimOptions::Command::Run
@@ -215,6 +237,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                     : import->parsed() ? SimOptions::Command::Import
                     : hook->parsed()   ? SimOptions::Command::Hook
                     : toolsCmd->parsed() ? SimOptions::Command::Tools
+                    : resetPasswords->parsed() ? SimOptions::Command::ResetPasswords
                                        : SimOptions::Command::Check;
         for (const std::string& p : params) {
             auto [n, v] = splitAssignment(p, "--param");

@@ -11,7 +11,7 @@ namespace m350::sim {
 
 // The command line of `m350-sim`, parsed and checked.
 struct SimOptions {
-    enum class Command { Run, Mdi, Check, Import, Hook, Tools } command = Command::Run;
+    enum class Command { Run, Mdi, Check, Import, Hook, Tools, ResetPasswords } command = Command::Run;
     std::string program;                 // run / check
     std::vector<std::string> mdiLines;   // mdi
     std::string hookName;                // hook: a name of config/HookFiles.h ("fndzero", "key-3")

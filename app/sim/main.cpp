@@ -4,6 +4,7 @@
 #include "app/sim/ImportCommand.h"
 #include "app/sim/OutputPaths.h"
 #include "app/sim/ReportJson.h"
+#include "app/sim/ResetPasswordsCommand.h"
 #include "app/sim/SimOptions.h"
 #include "app/sim/ToolsCommand.h"
 #include "app/sim/ToolLifeJson.h"
@@ -173,6 +174,9 @@ int runCommand(int argc, char** argv) {
     sim::SimOptions& o = *parsed.options;
     if (o.command == sim::SimOptions::Command::Import) {
         return sim::runImport(o.backupDir, o.intoDir);
+    }
+    if (o.command == sim::SimOptions::Command::ResetPasswords) {
+        return sim::runResetPasswords(o.configDir, o.language);
     }
     std::string folder = machineFolder(o);
     auto loaded = config::loadMachineFolder(folder);

@@ -28,6 +28,7 @@ std::string_view alarmKey(AlarmCode code) {
     case AlarmCode::SpindleLoad: return "spindle_load";
     case AlarmCode::OperatorReset: return "reset";
     case AlarmCode::EmergencyStop: return "emergency_stop";
+    case AlarmCode::RightsLimited: return "rights_limited";
     }
     return "unknown";
 }

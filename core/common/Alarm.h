@@ -36,6 +36,7 @@ enum class AlarmCode : std::uint8_t {
     SpindleLoad,          // the breakage monitor: the spindle load stayed out of the tool's limits
     OperatorReset,
     EmergencyStop,
+    RightsLimited,        // a program typed at the panel wrote a parameter above the user level (issue 26)
 };
 
 std::string_view alarmKey(AlarmCode code);

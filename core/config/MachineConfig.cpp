@@ -20,6 +20,9 @@
 
 #include "core/files/Toml.h"
 
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <filesystem>
 
 namespace m350::config {
@@ -52,8 +55,44 @@ void addUserLibrary(const fs::path& folder, MachineConfig& config) {
 }
 
 bool isInside(const fs::path& path, const fs::path& folder) {
-    const fs::path relative = fs::weakly_canonical(path).lexically_relative(fs::weakly_canonical(folder));
+    std::error_code ec;
+    const fs::path real = fs::weakly_canonical(path, ec);
+    const fs::path within = ec ? fs::path() : fs::weakly_canonical(folder, ec);
+    if (ec || real.empty() || within.empty()) {
+        return false;
+    }
+    const fs::path relative = real.lexically_relative(within);
     return !relative.empty() && *relative.begin() != "..";
+}
+
+// Where a library may lie once `..` and every symlink are resolved: the machine folder, the
+// bundled machine folders (the program's own, which share slib-g.nc and slib-probe.nc), and the
+// folder the user names in M350_LIBRARIES. A copied folder must not make the simulator read (and
+// echo in its messages) any other file of this computer.
+std::vector<fs::path> libraryFolders(const fs::path& folder) {
+    std::vector<fs::path> folders{folder, bundledMachinesDirectory()};
+    if (const char* named = std::getenv(kLibrariesVariable); named && *named) {
+        folders.emplace_back(named);
+    }
+    return folders;
+}
+
+// A program file (.nc) of a machine folder beside this one (`../m350-linear16/slib-m.nc` in a copy
+// of the bundled machines): its folder holds a machine.toml and shares this folder's parent.
+bool inSiblingMachineFolder(const fs::path& path, const fs::path& folder) {
+    std::error_code ec;
+    const fs::path real = fs::weakly_canonical(path, ec);
+    const fs::path self = ec ? fs::path() : fs::weakly_canonical(folder, ec);
+    if (ec || real.empty() || self.empty()) {
+        return false;
+    }
+    std::string extension = real.extension().string();
+    for (char& c : extension) {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    const fs::path sibling = real.parent_path();
+    return extension == ".nc" && sibling.parent_path() == self.parent_path() &&
+           fs::is_regular_file(sibling / "machine.toml", ec);
 }
 
 // [tools.97] length = ..., diameter = ...: one tool beyond the lists (a reference tool).
@@ -148,11 +187,13 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
             fail(file, "library entries must be file names", node.source());
         }
         fs::path path = folder / *name;
-        if (fs::path(*name).is_absolute() && !isInside(path, folder)) {
-            // a machine folder copied from elsewhere must not make the simulator read (and echo in
-            // its messages) any file of this computer
+        const std::vector<fs::path> allowed = libraryFolders(folder);
+        if (std::none_of(allowed.begin(), allowed.end(), [&](const fs::path& f) { return isInside(path, f); }) &&
+            !inSiblingMachineFolder(path, folder)) {
             fail(file,
-                 "library '" + *name + "' lies outside the machine folder: name it relative to " + folder.string(),
+                 "library '" + *name + "' lies outside the machine folder " + folder.string() +
+                     " (after resolving '..' and symlinks): refused, nothing was read. Keep it in the folder, or "
+                     "name its folder in " + kLibrariesVariable,
                  node.source());
         }
         std::error_code ec;

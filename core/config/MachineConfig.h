@@ -116,5 +116,7 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
 // The bundled machine folders: beside the executable when installed, else in the source tree.
 std::string bundledMachinesDirectory();
 inline constexpr const char* kDefaultMachine = "m350-linear16";
+// The environment variable naming one more folder machine.toml's libraries may lie in.
+inline constexpr const char* kLibrariesVariable = "M350_LIBRARIES";
 
 } // namespace m350::config

@@ -83,6 +83,7 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
     applySettings();
     breakage_.startAt(machine_.time());
     toolEdits_.markSaved(tools_.mark());
+    writes_.take(config_.parameters); // what the folder and --param set is where the log starts
 }
 
 Controller::~Controller() = default;
@@ -200,6 +201,7 @@ void Controller::applyParameterOverrides() {
 }
 
 void Controller::applySettings() {
+    writes_.setLevel(settings_.userLevel);
     for (auto [port, level] : settings_.heldInputs) {
         machine_.forceInput(port, level);
     }

@@ -11,6 +11,7 @@
 #include "core/controller/MessageLog.h"
 #include "core/controller/OperationControl.h"
 #include "core/controller/OperatorPanel.h"
+#include "core/controller/ParameterWrites.h"
 #include "core/controller/PanelStatus.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
@@ -117,6 +118,15 @@ public:
     // not finite or one that params::refusedParameterValue refuses.
     double parameter(int n) const;
     bool setParameter(int n, double value);
+    // The user level at the panel (ParameterWrites.h): what the operator's MDI lines and programs
+    // may write (#(N+500)) follows it; the machine's libraries and hook files write regardless.
+    // Super until a panel says otherwise (m350-sim --level).
+    void setUserLevel(params::UserLevel level) { writes_.setLevel(level); }
+    params::UserLevel userLevel() const { return writes_.level(); }
+    // Every parameter change since the last call, whoever made it, for the System Log.
+    std::vector<ParameterWrites::Change> takeParameterChanges() { return writes_.take(config_.parameters); }
+    // The panel's touch off or teach is about to write parameter `n` (so the log says who).
+    void notePanelWrite(int n) { writes_.note(n, ParameterWrites::Writer::Panel); }
     // 断点加工 Break Run: start at a line, or again where a hold stopped (BreakRun.h).
     BreakRun& breakRun() { return breakRun_; }
     const BreakRun& breakRun() const { return breakRun_; }
@@ -200,6 +210,7 @@ public:
     std::optional<std::string> writeSystem(const macro::VariableInfo& info, int number, double value,
                                            std::string_view text) override;
     std::optional<HomingFailure> builtInHoming(int axis) override;
+    std::optional<Message> parameterWrite(int parameter, double value) override;
     void homingStarts(int axis) override;
     // machine::MachineObserver
     void onMachineEvent(const machine::MachineEvent& event) override;
@@ -317,6 +328,7 @@ private:
     ManualControl manual_{machine_, config_.parameters, *this};
     Homing homing_{machine_, config_.parameters, config_.folder, *this};
     BreakRun breakRun_{program_, machine_, scan_, interp_, config_.parameters, manual_, homing_, *this};
+    ParameterWrites writes_{config_.parameters};
 };
 
 } // namespace m350::controller

@@ -3,6 +3,7 @@
 #include "core/gcode/SourceText.h"
 #include "core/machine/InputFault.h"
 #include "core/machine/ToolWorld.h"
+#include "core/params/ParameterPages.h"
 #include "core/tools/SpindleLoadLimits.h"
 
 #include <cstdint>
@@ -27,6 +28,9 @@ struct RunSettings {
     bool homed = true;
     bool optionalStop = false;  // the M01 switch (on the M350 #1500 = 1 turns it on too)
     bool singleBlock = false;   // the single block switch (Controller::setSingleBlock)
+    // The user level the run's MDI lines and program write parameters with (m350-sim --level):
+    // Super, as nobody stands at a panel, unless told (Controller::setUserLevel).
+    params::UserLevel userLevel = params::UserLevel::Super;
     // run() presses PAUSE when the run has gone this many seconds of virtual time, and START once
     // the machine stands (m350-sim --pause-at).
     std::optional<double> pauseAt;

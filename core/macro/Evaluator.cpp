@@ -104,6 +104,11 @@ void Evaluator::writeVariable(int number, Value value, std::string_view text, st
         throw MacroError{AlarmCode::ReadOnlyVariable,
                          "cannot write " + store_.map().describeText(number) + ": it is read-only", column};
     }
+    if (info.kind == VariableKind::Parameter) {
+        if (auto refused = machine_.parameterWrite(info.index, value.asNumber())) {
+            throw MacroError::of(AlarmCode::RightsLimited, *refused, column);
+        }
+    }
     if (VariableStore::ownsKind(info.kind)) {
         store_.write(info, number, value);
         return;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/common/Alarm.h"
+#include "core/common/Message.h"
 #include "core/macro/BlockSink.h"
 #include "core/macro/Value.h"
 #include "core/macro/VariableMap.h"
@@ -38,6 +39,14 @@ public:
     // A library's homing program (the M350's O501) is called for `axis`: the axis searches for its
     // switch from here on, with no trusted machine position until the program marks it homed.
     virtual void homingStarts(int axis) { (void)axis; }
+
+    // A program writes parameter `parameter` (#(N+500) on the M350): the machine may refuse it (the
+    // user level at the panel does not reach it); the executor raises the words as an alarm.
+    virtual std::optional<Message> parameterWrite(int parameter, double value) {
+        (void)parameter;
+        (void)value;
+        return std::nullopt;
+    }
 
     // The machine's tool management sees each block's words before the executor takes its calls
     // out (tool life management: a group's T becomes its tool, H99/D99, the tool change, G10 L3 ..

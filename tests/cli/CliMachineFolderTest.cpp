@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace m350::clitest {
 
@@ -87,11 +88,49 @@ TEST_F(MachineFolderTest, ALibraryMustBeAProgramFileInsideTheFolder) {
     expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "FIFO");
     fs::create_symlink("/dev/zero", machine / "zero.nc");
     edit(machine / "machine.toml", "g = \"pipe.nc\"", "g = \"zero.nc\"");
-    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "device");
+    // a link out of the folder is refused before anything follows it (issue 26)
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "outside the machine folder");
 
     ProcessResult program = sim({"run", "machine/pipe.nc"});
     EXPECT_EQ(program.exitStatus, kExitError) << program.err;
     EXPECT_NE(program.err.find("not a program file"), std::string::npos) << program.err;
+}
+
+// Issue 26: `g = "../../../../etc/passwd"` left the folder by a relative path, and a symlink in
+// the folder led anywhere; either was read and its lines echoed in the syntax errors.
+TEST_F(MachineFolderTest, ALibraryStaysInsideTheFolderAfterDotsAndSymlinks) {
+    fs::create_directories(dir_ / "elsewhere");
+    std::ofstream(dir_ / "elsewhere" / "secret.nc", std::ios::binary) << "SECRET-LINE ~~~ not g-code\n";
+    fs::path machine = copyMachine();
+    edit(machine / "machine.toml", "g = \"slib-g.nc\"", "g = \"../../../../../../../../etc/passwd\"");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "outside the machine folder");
+    edit(machine / "machine.toml", "g = \"../../../../../../../../etc/passwd\"", "g = \"../elsewhere/secret.nc\"");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "outside the machine folder");
+    fs::create_symlink(dir_ / "elsewhere" / "secret.nc", machine / "evil.nc");
+    edit(machine / "machine.toml", "g = \"../elsewhere/secret.nc\"", "g = \"evil.nc\"");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "outside the machine folder");
+    ProcessResult echoed = sim({"mdi", "G0 X1", "--config", "machine"});
+    EXPECT_EQ(echoed.err.find("SECRET-LINE"), std::string::npos) << echoed.err;
+    EXPECT_EQ(echoed.out.find("SECRET-LINE"), std::string::npos) << echoed.out;
+
+    // a folder the user names in M350_LIBRARIES is one more place a library may lie
+    fs::remove(machine / "evil.nc");
+    fs::copy_file(machine / "slib-g.nc", dir_ / "elsewhere" / "shared-g.nc");
+    fs::create_symlink(dir_ / "elsewhere" / "shared-g.nc", machine / "evil.nc");
+    ::setenv("M350_LIBRARIES", (dir_ / "elsewhere").c_str(), 1);
+    ProcessResult named = sim({"mdi", "G0 X1", "--config", "machine"});
+    ::unsetenv("M350_LIBRARIES");
+    EXPECT_EQ(named.exitStatus, kExitOk) << named.err;
+
+    // a machine folder beside it (a copy of the bundled machines) lends its .nc libraries only
+    fs::create_directories(dir_ / "other");
+    std::ofstream(dir_ / "other" / "machine.toml") << "name = \"other\"\n";
+    std::ofstream(dir_ / "other" / "passwords.toml") << "operator = \"SECRET-LINE\"\n";
+    fs::copy_file(machine / "slib-g.nc", dir_ / "other" / "lib.nc");
+    edit(machine / "machine.toml", "g = \"evil.nc\"", "g = \"../other/passwords.toml\"");
+    expectConfigError({"mdi", "G0 X1", "--config", "machine"}, "machine/machine.toml:8:5", "outside the machine folder");
+    edit(machine / "machine.toml", "g = \"../other/passwords.toml\"", "g = \"../other/lib.nc\"");
+    EXPECT_EQ(sim({"mdi", "G0 X1", "--config", "machine"}).exitStatus, kExitOk);
 }
 
 // Typos in the machine folder were silently ignored; `G54 = "abc"` too.

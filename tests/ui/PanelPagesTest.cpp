@@ -2,6 +2,7 @@
 #include "tests/ui/PanelHarness.h"
 
 #include "ui/pages/IoPage.h"
+#include "core/controller/ParameterWrites.h"
 #include "ui/pages/MdiPage.h"
 #include "ui/pages/MonitorPage.h"
 #include "ui/pages/ProbePage.h"
@@ -147,8 +148,16 @@ TEST(IoPage, ChangePolarityFlipsTheActiveLevelParameter) {
     auto* io = panel.page<ui::IoPage>();
     ASSERT_TRUE(io->selectFunction(575)); // 固定对刀
     double before = panel.session().latest()->status.parameters.get(577);
-    panel.softkey(4);
-    EXPECT_EQ(panel.session().latest()->status.parameters.get(577), 1.0 - before);
+    panel.softkey(4); // a factory parameter: a guest is asked the password the Param page asks (issue 26)
+    EXPECT_EQ(panel.session().latest()->status.parameters.get(577), before);
+    EXPECT_TRUE(panel.window().messageText().contains(QStringLiteral("权限不足")));
+    ASSERT_TRUE(panel.window().prompt()->active());
+    const params::UserLevel needed = controller::ParameterWrites::required(577);
+    EXPECT_GE(needed, params::UserLevel::Admin);
+    panel.type(ui::UserAccess::defaultPassword(needed));
+    panel.key("ENTER");
+    EXPECT_EQ(panel.session().userLevel(), needed);
+    EXPECT_EQ(panel.session().latest()->status.parameters.get(577), 1.0 - before) << panel.window().messageText().toStdString();
 }
 
 TEST(IoPage, AStuckSensorDuringAToolChangeIsNamedByTheWatchdog) {

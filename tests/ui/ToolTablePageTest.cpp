@@ -6,6 +6,8 @@
 #include "ui/pages/ToolTablePage.h"
 #include "ui/panel/PromptBox.h"
 
+#include "ui/session/UserAccess.h"
+
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
@@ -58,6 +60,8 @@ TEST(ToolTablePage, AFieldEditedInThePromptIsTheToolsParameterAndIsSavedInToolTb
     ASSERT_EQ(page->selectedTool(), 2);
     ASSERT_EQ(page->selectedColumn(), Column::Z);
     panel.key("ENTER");
+    EXPECT_TRUE(panel.window().messageText().contains(QStringLiteral("权限不足"))) << "a guest changes no Z (issue 26)";
+    answer(panel, ui::UserAccess::defaultPassword(params::UserLevel::Operator));
     EXPECT_EQ(panel.window().prompt()->textValue(), QStringLiteral("-48.120")) << "the value to change";
     answer(panel, "-50.5");
     EXPECT_EQ(parameter(panel, 931), -50.5) << "T2's Z is param 931";
@@ -85,6 +89,7 @@ TEST(ToolTablePage, TouchOffMakesTheDisplayReadTheMeasuredZ) {
     ui::ToolTablePage* page = openTable(panel);
     ASSERT_NE(page, nullptr);
     panel.softkey(4);
+    answer(panel, ui::UserAccess::defaultPassword(params::UserLevel::Operator)); // T3's Z is param 932 (issue 26)
     answer(panel, "5");
     auto s = panel.session().latest();
     EXPECT_NEAR(s->status.work(2), 5.0, 1e-6) << "the work Z shown (the offset is kept to 1e-6 mm)";

@@ -1,9 +1,11 @@
 #include "ui/pages/IoPage.h"
 #include "ui/widgets/PanelTable.h"
 
+#include "core/controller/ParameterWrites.h"
 #include "core/params/IoPorts.h"
 #include "core/params/ParameterNumbers.h"
 #include "ui/i18n/PanelText.h"
+#include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
 
 #include <QGridLayout>
@@ -111,6 +113,11 @@ void IoPage::softkey(int number) {
         int parameter = selectedFunction();
         if (parameter == 0) {
             context().notify(tr("Select a port first (UP/DOWN)"));
+            return;
+        }
+        // the port tables are factory parameters: the level the Param page asks for them (issue 26)
+        if (!LevelPrompt::require(context(), controller::ParameterWrites::required(parameter + 2),
+                                  [this] { softkey(4); })) {
             return;
         }
         auto s = context().snapshot();

@@ -61,6 +61,12 @@ QHash<QString, QString> LogPage::eventTable() {
     w["estop"] = tr("ESP", "msg 749");
     w["alarm"] = tr("ERROR", "msg 23");
     w["param"] = tr("Parameter changed");
+    w["param_guest"] = tr("Parameter changed (Guest)");
+    w["param_operator"] = tr("Parameter changed (Operator)");
+    w["param_admin"] = tr("Parameter changed (Admin)");
+    w["param_super"] = tr("Parameter changed (Super)");
+    w["passwords_locked"] = tr("passwords.toml cannot be trusted: only Guest opens until it is repaired");
+    w["passwords_reset"] = tr("Passwords reset to their defaults (m350-sim reset-passwords)");
     w["variable"] = tr("Variable changed");
     w["output"] = tr("Output switched");
     w["fault"] = tr("Simulator: input fault");

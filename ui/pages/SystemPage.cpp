@@ -19,7 +19,7 @@ namespace m350::ui {
 
 namespace {
 
-const char* const kFields[] = {"name", "version", "machine", "folder", "params", "programs", "level"};
+const char* const kFields[] = {"name", "version", "machine", "folder", "params", "programs", "level", "passwords"};
 
 } // namespace
 
@@ -104,6 +104,7 @@ void SystemPage::retranslate() {
     captions_["params"]->setText(tr("Parameters:"));
     captions_["programs"]->setText(tr("Programs:"));
     captions_["level"]->setText(tr("User level:"));
+    captions_["passwords"]->setText(tr("Passwords:"));
     fields_["name"]->setText(tr("M350 Studio (a DDCS M350 panel simulator)"));
     fields_["version"]->setText(QStringLiteral(M350_VERSION));
     fields_["folder"]->setText(context().machineFolder());
@@ -119,6 +120,14 @@ void SystemPage::render(const PanelSnapshot& snapshot) {
     fields_["machine"]->setText(chinese && !snapshot.machineNameZh.isEmpty() ? snapshot.machineNameZh
                                                                              : snapshot.machineName);
     fields_["level"]->setText(UserAccess::levelName(context().session().userLevel()));
+    const QString& problem = context().session().passwordsProblem();
+    fields_["passwords"]->setText(
+        problem.isEmpty()
+            ? tr("passwords.toml in order")
+            : tr("Locked: passwords.toml cannot be trusted (%1), so only %2 opens and no default password "
+                 "comes back. Repair: set new passwords at the highest level, or run "
+                 "m350-sim reset-passwords --config FOLDER")
+                  .arg(problem, UserAccess::levelName(params::UserLevel::Guest)));
 }
 
 QString SystemPage::fieldText(const QString& name) const {
@@ -129,7 +138,8 @@ QString SystemPage::fieldText(const QString& name) const {
 QJsonObject SystemPage::state() const {
     return {{"system_version", fieldText(QStringLiteral("version"))},
             {"system_programs", programs_},
-            {"system_level", fieldText(QStringLiteral("level"))}};
+            {"system_level", fieldText(QStringLiteral("level"))},
+            {"system_passwords", fieldText(QStringLiteral("passwords"))}};
 }
 
 } // namespace m350::ui

@@ -2,9 +2,12 @@
 // tool, a deleted one, touch off, and tool.tbl files read and written.
 #include "ui/pages/ToolTablePage.h"
 
+#include "core/controller/ParameterWrites.h"
 #include "core/files/OutputGuard.h"
+#include "core/tools/ToolData.h"
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
+#include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
 
 #include <QDir>
@@ -40,6 +43,15 @@ void ToolTablePage::edit() {
 void ToolTablePage::editField(const tools::ToolEntry& entry, Column column) {
     if (column == Column::Tool) {
         context().notify(tr("A tool keeps its number: add the new number with New and delete this one"));
+        return;
+    }
+    // on the M350 a tool's Z is its parameter (930+): the level the Param page asks for it
+    auto s = context().snapshot();
+    const std::optional<int> z = column == Column::Z && s && s->tWordChangesTool
+                                     ? tools::m350ZParameter(entry.tool, s->status.parameters)
+                                     : std::nullopt;
+    if (z && !LevelPrompt::require(context(), controller::ParameterWrites::required(*z),
+                                   [this, entry, column] { editField(entry, column); })) {
         return;
     }
     QString question = QStringLiteral("T%1 %2").arg(entry.tool).arg(columnTitle(column));
@@ -145,6 +157,11 @@ void ToolTablePage::touchOff() {
     const int tool = s ? s->status.tool : 0;
     if (tool == 0) {
         context().notify(tr("The current tool No. is 0, this operation is invalid!", "msg 858"));
+        return;
+    }
+    // the M350 keeps the tool's Z in a parameter (930+): the level the Param page asks for it
+    const std::optional<int> z = s->tWordChangesTool ? tools::m350ZParameter(tool, s->status.parameters) : std::nullopt;
+    if (z && !LevelPrompt::require(context(), controller::ParameterWrites::required(*z), [this] { touchOff(); })) {
         return;
     }
     context().askText(tr("Touch off T%1: the work Z of its tip (gauge or cut surface):").arg(tool), QStringLiteral("0"),

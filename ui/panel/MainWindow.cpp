@@ -1,10 +1,12 @@
 #include "ui/panel/MainWindow.h"
 
+#include "core/controller/ParameterWrites.h"
 #include "core/files/OutputGuard.h"
 #include "ui/actions/ActionRecorder.h"
 #include "ui/actions/KeyboardMap.h"
 #include "ui/i18n/AlarmText.h"
 #include "ui/i18n/Language.h"
+#include "ui/pages/LevelPrompt.h"
 #include "ui/pages/Page.h"
 #include "ui/pages/PageId.h"
 #include "ui/pages/PageTable.h"
@@ -188,6 +190,7 @@ void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
     alarm_->setVisible(!alarm.isEmpty());
     showMacroDialog(s);
     askToolNumber(s);
+    askRights(s);
     if (s.homingPrompt && !bootPromptAsked_) {
         bootPromptAsked_ = true;
         context_.ask(tr("Go to home?", "msg 140"), [this](bool yes) {
@@ -219,6 +222,22 @@ void MainWindow::askToolNumber(const PanelSnapshot& s) {
             session_.setSpindleToolNumber(tool);
         }
     });
+}
+
+// The operator's MDI line or program wrote a parameter above the user level: the run stopped with
+// the refusal, and the password of the level it needs is asked as the Param page asks it.
+void MainWindow::askRights(const PanelSnapshot& s) {
+    if (!s.status.alarm || s.status.alarm->code != AlarmCode::RightsLimited || s.status.alarm->messageArguments.empty()) {
+        rightsPromptAlarm_.clear();
+        return;
+    }
+    const std::string at = s.status.alarm->message + ":" + std::to_string(s.status.alarm->line);
+    if (at == rightsPromptAlarm_ || prompt_->active()) {
+        return;
+    }
+    rightsPromptAlarm_ = at;
+    const int parameter = QString::fromStdString(s.status.alarm->messageArguments.front()).toInt();
+    LevelPrompt::require(context_, controller::ParameterWrites::required(parameter), {});
 }
 
 // A macro's #1505 dialog: the run waits until the operator answers it.

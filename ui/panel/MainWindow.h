@@ -70,6 +70,7 @@ private:
     void refreshSoftkeys();
     void showMacroDialog(const PanelSnapshot& snapshot);
     void askToolNumber(const PanelSnapshot& snapshot);
+    void askRights(const PanelSnapshot& snapshot);
     void buildMenu();
     void retranslate();
     static QString unwritableText(const QString& path, files::Unwritable why);
@@ -91,6 +92,7 @@ private:
     std::string dialogShown_;
     bool bootPromptAsked_ = false;
     std::string toolPromptAlarm_; // the alarm the tool number prompt was last asked at
+    std::string rightsPromptAlarm_; // the parameter write refused that the password was last asked at
     QMenu* panelMenu_ = nullptr;
     class ActionRecorder* recorder_ = nullptr;
     BackupImportFlow* backupImport_ = nullptr;

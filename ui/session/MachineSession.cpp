@@ -23,6 +23,19 @@ MachineSession::MachineSession(config::MachineConfig config, Options options, QO
     thread_.setObjectName("machine");
     thread_.start();
     post([](SessionWorker& w) { w.begin(); });
+    logPasswordsProblem();
+}
+
+// The System Log hears when passwords.toml locks the levels (at start, or found at a login), once
+// each time the fault changes.
+void MachineSession::logPasswordsProblem() {
+    if (access_.problem() == loggedPasswordsProblem_) {
+        return;
+    }
+    loggedPasswordsProblem_ = access_.problem();
+    if (!loggedPasswordsProblem_.isEmpty()) {
+        post([problem = loggedPasswordsProblem_](SessionWorker& w) { w.recordLog("passwords_locked", problem); });
+    }
 }
 
 MachineSession::~MachineSession() {
@@ -108,11 +121,19 @@ void MachineSession::touchOffTool(double workZ) { post([workZ](SessionWorker& w)
 void MachineSession::resetToolLife(int group) { post([group](SessionWorker& w) { w.resetToolLife(group); }); }
 void MachineSession::watchVariables(bool on) { post([on](SessionWorker& w) { w.watchVariables(on); }); }
 bool MachineSession::login(params::UserLevel level, const QString& password) {
-    if (!access_.login(level, password)) {
+    const bool opened = access_.login(level, password);
+    logPasswordsProblem();
+    if (!opened) {
         return false;
     }
     post([level = access_.level()](SessionWorker& w) { w.setUserLevel(level); });
     return true;
+}
+
+std::optional<QString> MachineSession::changePassword(const QString& password) {
+    auto error = access_.changePassword(password);
+    logPasswordsProblem();
+    return error;
 }
 
 void MachineSession::startSimulation(const QString& path, double speed) {

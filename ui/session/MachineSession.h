@@ -124,7 +124,9 @@ public:
     // the status line from the next frame on.
     params::UserLevel userLevel() const { return access_.level(); }
     bool login(params::UserLevel level, const QString& password);
-    std::optional<QString> changePassword(const QString& password) { return access_.changePassword(password); }
+    std::optional<QString> changePassword(const QString& password);
+    // Why passwords.toml locks every level above Guest (UserAccess::problem), empty when sound.
+    const QString& passwordsProblem() const { return access_.problem(); }
 
     // 仿真: runs the file on a second controller beside the machine (which never moves); speed in
     // virtual seconds per wall second, 0 = as fast as the core goes. snapshot.simulation shows it.
@@ -154,6 +156,8 @@ private:
     SessionWorker* worker_ = nullptr;
     SnapshotPtr latest_;
     UserAccess access_;
+    QString loggedPasswordsProblem_; // what the System Log last heard of passwords.toml
+    void logPasswordsProblem();
 };
 
 } // namespace m350::ui

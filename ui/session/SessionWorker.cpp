@@ -12,6 +12,7 @@
 #include <QDateTime>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -64,6 +65,7 @@ SessionWorker::SessionWorker(config::MachineConfig config, MachineSession::Optio
     kept_ = config.parameters;
     log_ = std::make_unique<SessionLog>(config.folder);
     controller_ = std::make_unique<Controller>(std::move(config), settingsFor(options));
+    controller_->setUserLevel(userLevel_); // the panel starts as a guest
 }
 
 SessionWorker::~SessionWorker() = default;
@@ -177,7 +179,23 @@ void SessionWorker::refuse(const QString& why) {
     publish();
 }
 
+// Every parameter change since the last frame, whoever made it, with the level at the panel: the
+// event names the level, the detail the number, the values and the program line that wrote it.
+void SessionWorker::logParameterChanges() {
+    static constexpr std::array<const char*, 4> kEvents{"param_guest", "param_operator", "param_admin", "param_super"};
+    for (const controller::ParameterWrites::Change& change : controller_->takeParameterChanges()) {
+        QString detail = QStringLiteral("[%1] %2 -> %3")
+                             .arg(change.number)
+                             .arg(QString::number(change.before, 'g', 10), QString::number(change.after, 'g', 10));
+        if (!change.place.empty()) {
+            detail += QStringLiteral(" (%1)").arg(QString::fromStdString(change.place));
+        }
+        log_->record(kEvents[static_cast<std::size_t>(change.level)], detail);
+    }
+}
+
 void SessionWorker::publish() {
+    logParameterChanges();
     keepToolTable();
     keepToolLife();
     keepExternalOutput();
@@ -415,7 +433,6 @@ void SessionWorker::clearWorkRecord() {
 
 void SessionWorker::setParameter(int number, double value) {
     lastError_.clear();
-    const double before = controller_->parameter(number);
     if (!controller_->setParameter(number, value)) {
         refuse(tr("Parameter %1: invalid value").arg(number));
         return;
@@ -423,8 +440,7 @@ void SessionWorker::setParameter(int number, double value) {
     if (!saveParameters({{number, value}})) {
         return;
     }
-    log_->record("param", QStringLiteral("[%1] %2 -> %3").arg(number).arg(before).arg(value));
-    publish();
+    publish(); // which logs the change (logParameterChanges)
 }
 
 // A simulation at speed 0 runs as fast as the core goes: with the wall clock for most of a

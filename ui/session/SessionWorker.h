@@ -59,6 +59,7 @@ public:
     // the time that passed (0 when not quiet).
     double advanceWhileQuiet(double seconds, bool publishAtEnd);
     void publish();
+    void logParameterChanges();
     // 仿真 (a SimulationRun beside the machine): speed 0 = as fast as the core goes.
     void startSimulation(const QString& path, double speed);
     void setSimulationSpeed(double speed);
@@ -90,6 +91,7 @@ public:
     void setParameters(const std::map<int, double>& values);
     void watchVariables(bool on);
     void setUserLevel(params::UserLevel level);
+    void recordLog(const char* event, const QString& detail) { log_->record(event, detail); }
     // SessionWorkerTools.cpp: the tool table page's edits, import and touch off. Every change of
     // the tool data (these, G10 L1, a macro's #1430, the Param page's 930) is saved to the machine
     // folder's tool.tbl before the next snapshot.

@@ -77,6 +77,7 @@ QVector<double> SessionWorker::userVariables() {
 
 void SessionWorker::setUserLevel(params::UserLevel level) {
     userLevel_ = level;
+    controller_->setUserLevel(level);
     publish();
 }
 

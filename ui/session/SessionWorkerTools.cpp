@@ -5,6 +5,8 @@
 
 #include "core/controller/Controller.h"
 #include "core/controller/ToolTableSave.h"
+#include "core/tools/ToolData.h"
+#include "ui/i18n/AlarmText.h"
 
 namespace m350::ui {
 
@@ -43,6 +45,18 @@ void SessionWorker::replaceToolTable(const tools::ToolTable& table, const QStrin
 
 void SessionWorker::touchOffTool(double workZ) {
     lastError_.clear();
+    // on the M350 the tool's Z is a parameter (930+): the level the Param page asks for it
+    const int tool = controller_->panelStatus().tool;
+    const params::ParameterTable& parameters = controller_->config().parameters;
+    if (const std::optional<int> z = controller_->dialect().id == gcode::DialectId::M350
+                                         ? tools::m350ZParameter(tool, parameters)
+                                         : std::nullopt) {
+        if (auto refused = controller::ParameterWrites::refusal(*z, userLevel_)) {
+            refuse(AlarmText::message(Alarm::of(AlarmCode::RightsLimited, *refused)));
+            return;
+        }
+        controller_->notePanelWrite(*z);
+    }
     std::string why;
     if (!controller_->toolTableEdits().touchOffTool(workZ, &why)) {
         refuse(QString::fromStdString(why));

@@ -2,10 +2,8 @@
 
 
 #include <QCryptographicHash>
-#include <QFile>
 #include <QMessageAuthenticationCode>
 #include <QRandomGenerator>
-#include <QRegularExpression>
 
 namespace m350::ui {
 
@@ -13,7 +11,6 @@ namespace {
 
 constexpr int kRounds = 10000;
 constexpr int kSaltBytes = 16;
-constexpr std::array<const char*, 4> kKeys = {"guest", "operator", "admin", "super"};
 
 // PBKDF2-HMAC-SHA256 (RFC 8018) with one output block, the hash's own length.
 QByteArray digest(const QString& password, const QByteArray& salt) {
@@ -59,11 +56,14 @@ QString UserAccess::levelName(Level level) {
 }
 
 bool UserAccess::opens(Level level, const QString& password) const {
-    const auto& stored = stored_[index(level)];
+    if (!problem_.isEmpty()) {
+        return false; // a passwords.toml that cannot be trusted brings no default back
+    }
+    const auto& stored = stored_.levels[index(level)];
     if (!stored) {
         return password == defaultPassword(level);
     }
-    return digest(password, stored->salt) == stored->hash;
+    return digest(password, QByteArray::fromStdString(stored->salt)) == QByteArray::fromStdString(stored->hash);
 }
 
 bool UserAccess::login(Level wanted, const QString& password) {
@@ -71,6 +71,7 @@ bool UserAccess::login(Level wanted, const QString& password) {
         level_ = Level::Guest;
         return true;
     }
+    load(); // a reset or a repair since the panel started counts at once
     for (int level = static_cast<int>(Level::Super); level >= static_cast<int>(wanted); --level) {
         if (opens(static_cast<Level>(level), password)) {
             level_ = static_cast<Level>(level);
@@ -84,52 +85,38 @@ std::optional<QString> UserAccess::changePassword(const QString& password) {
     if (level_ == Level::Guest) {
         return tr("Rights is limited,pls shift user's rights:", "msg 934");
     }
+    if (!problem_.isEmpty() && level_ != Level::Super) {
+        return tr("Rights is limited,pls shift user's rights:", "msg 934"); // only the highest level repairs the file
+    }
     if (password.size() < kMinimumLength) {
         return tr("The No. of characters < 6,pls input again!", "msg 918");
     }
     QByteArray salt(kSaltBytes, '\0');
     QRandomGenerator::system()->generate(salt.begin(), salt.end());
-    auto previous = stored_[index(level_)];
-    stored_[index(level_)] = Stored{salt, digest(password, salt)};
+    auto previous = stored_.levels[index(level_)];
+    stored_.levels[index(level_)] = config::StoredPassword{salt.toStdString(), digest(password, salt).toStdString()};
     if (auto error = save()) {
-        stored_[index(level_)] = previous;
+        stored_.levels[index(level_)] = previous;
         return tr("File save failed!", "msg 907") + QStringLiteral(" ") + *error;
     }
+    problem_.clear(); // written whole: the file is sound again
     return std::nullopt;
 }
 
-// One line per changed level: `operator = "SALT:HASH"` (hex). Lines it does not know are skipped, so
-// a hand-edited file never locks anyone out of a level whose default still applies.
+// A file that cannot be trusted keeps what the last sound read knew: the highest level, still
+// signed in, then repairs it with every level's password as it was (save() writes them all).
 void UserAccess::load() {
-    QFile file(QString::fromStdString(folder_.pathOf(config::FolderFile::Passwords).string()));
-    if (!file.open(QIODevice::ReadOnly)) {
+    auto read = config::readPasswords(folder_);
+    if (auto* problem = std::get_if<config::PasswordsProblem>(&read)) {
+        problem_ = QString::fromStdString(problem->message);
         return;
     }
-    static const QRegularExpression line(QStringLiteral(R"(^\s*(\w+)\s*=\s*"([0-9a-f]+):([0-9a-f]+)\"\s*$)"));
-    for (const QByteArray& text : file.readAll().split('\n')) {
-        auto match = line.match(QString::fromUtf8(text));
-        if (!match.hasMatch()) {
-            continue;
-        }
-        for (std::size_t level = 1; level < kKeys.size(); ++level) {
-            if (match.captured(1) == QLatin1String(kKeys[level])) {
-                stored_[level] = Stored{QByteArray::fromHex(match.captured(2).toLatin1()),
-                                        QByteArray::fromHex(match.captured(3).toLatin1())};
-            }
-        }
-    }
+    stored_ = std::get<config::Passwords>(read);
+    problem_.clear();
 }
 
 std::optional<QString> UserAccess::save() const {
-    std::string text = "# M350 Studio panel passwords (密码设置): PBKDF2-HMAC-SHA256, " + std::to_string(kRounds) +
-                       " rounds, \"salt:hash\" in hex. Delete a line to go back to that level's default.\n";
-    for (std::size_t level = 1; level < kKeys.size(); ++level) {
-        if (stored_[level]) {
-            text += std::string(kKeys[level]) + " = \"" + stored_[level]->salt.toHex().toStdString() + ":" +
-                    stored_[level]->hash.toHex().toStdString() + "\"\n";
-        }
-    }
-    if (auto error = folder_.write(config::FolderFile::Passwords, text)) {
+    if (auto error = folder_.write(config::FolderFile::Passwords, config::formatPasswords(stored_))) {
         return QString::fromStdString(*error);
     }
     return std::nullopt;
