@@ -2,6 +2,7 @@
 
 #include "core/config/HookFiles.h"
 #include "core/files/LastGoodCopy.h"
+#include "core/files/MachineFileRead.h"
 #include "core/files/OutputFile.h"
 #include "core/params/ParameterBackup.h"
 #include "core/params/ParameterCatalogue.h"
@@ -43,13 +44,9 @@ constexpr std::array kFiles{
 };
 
 std::optional<std::string> readText(const fs::path& file, std::string& text) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        return file.string() + ": cannot read";
+    if (auto why = files::readMachineFile(file, text)) {
+        return file.string() + ": cannot read: " + *why;
     }
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    text = buffer.str();
     return std::nullopt;
 }
 

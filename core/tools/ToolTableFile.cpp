@@ -2,6 +2,8 @@
 
 #include "core/tools/ToolTableText.h"
 
+#include "core/files/MachineFileRead.h"
+
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -238,13 +240,11 @@ std::string formatToolTable(const ToolTable& table) {
 }
 
 std::variant<ParsedToolTable, std::string> readToolTableFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        return path.string() + ": cannot read the tool table";
+    std::string bytes;
+    if (auto why = files::readMachineFile(path, bytes)) {
+        return path.string() + ": cannot read the tool table: " + *why;
     }
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return parseToolTable(bytes.str(), path.string());
+    return parseToolTable(bytes, path.string());
 }
 
 } // namespace m350::tools
