@@ -427,6 +427,10 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         if (!fs::is_directory(dir)) {
             fail(dir, "not a machine folder (no such directory)");
         }
+        // a save a crash interrupted is finished (or dropped) before any file is read
+        if (auto broken = MachineFolder(dir).finishInterruptedChange()) {
+            fail(dir / MachineFolder::kChangeJournal, *broken);
+        }
         loadMachineToml(dir, config);
         loadParams(dir, config);
         loadOffsets(dir, config);
