@@ -43,12 +43,20 @@ void Parser::addSource(Program& program, const SourceText& source, FileRole role
             return;
         }
         addFile(program, source.path, source.text, role, encoding);
-        return;
+    } else {
+        const std::uint32_t fileIndex = addFileEntry(program, source.path, role, encoding);
+        parseFile(program, source.text, fileIndex,
+                  std::make_shared<ChunkSource>(dialect_, program.files.back().name, fileIndex, source.text,
+                                                source.storage, source.mapping));
     }
-    const std::uint32_t fileIndex = addFileEntry(program, source.path, role, encoding);
-    parseFile(program, source.text, fileIndex,
-              std::make_shared<ChunkSource>(dialect_, program.files.back().name, fileIndex, source.text,
-                                            source.storage, source.mapping));
+    if (source.mapping && source.mapping->truncated()) {
+        // the lost pages read as NUL bytes: what the parser said of them is noise (it was
+        // "unexpected character '\0'"), the file is what is wrong
+        const std::string& name = program.files.back().name;
+        std::erase_if(diagnostics_, [&name](const Diagnostic& d) { return d.file == name; });
+        diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, source.path, 0, 0, kCutShortWhileRead});
+        diagnostics_.back().unreadable = true;
+    }
 }
 
 void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fileIndex,

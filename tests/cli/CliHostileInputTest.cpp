@@ -62,4 +62,47 @@ TEST_F(HostileInputTest, AToolTableAboveTheMachineFileSizeIsRefused) {
                   "bytes is more than a machine file can be (16 MiB)");
 }
 
+// One 100 MB program line took 4.3 GB in `run` and 6.3 GB in `check`: a line longer than 64 KiB is
+// refused at its line, unread. A line just over the limit shows it; one at the limit is read.
+TEST_F(HostileInputTest, AProgramLineLongerThanTheLimitIsRefusedAtItsLine) {
+    const std::string atLimit = "G0 X1 (" + std::string(64 * 1024 - 8, 'a') + ")";
+    ASSERT_EQ(atLimit.size(), 64u * 1024u);
+    write("fits.nc", "G0 X0\n" + atLimit + "\nM30\n");
+    ProcessResult fits = sim({"check", "fits.nc"});
+    EXPECT_EQ(fits.exitStatus, kExitOk) << fits.err;
+
+    write("long.nc", "G0 X0\n" + atLimit + "X\nM30\n");
+    for (const char* command : {"check", "run"}) {
+        ProcessResult r = sim({command, "long.nc"});
+        EXPECT_EQ(r.exitStatus, kExitError) << r.err;
+        EXPECT_NE(r.err.find("long.nc:2:1: the line is 65537 bytes long, more than the 65536 a program line may have"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_LT(r.err.size(), 2000u) << "the line is not echoed";
+    }
+}
+
+// `m350-sim tools` listed every skipped line of a 100,000-line table and echoed whole comments:
+// the same bounds as `check` (the first and last 500 findings, 512-byte echoes).
+TEST_F(HostileInputTest, TheToolsListingIsBoundedAsCheckIs) {
+    std::string table = "T1 P1 Z-50 ;" + std::string(5000, 'c') + "\n";
+    for (int i = 0; i < 3000; ++i) {
+        table += "T1x P" + std::string(2000, 'z') + "\n";
+    }
+    write("big.tbl", table);
+    ProcessResult r = sim({"tools", "--tool-table", "big.tbl"});
+    EXPECT_EQ(r.exitStatus, kExitError) << r.err.substr(0, 2000);
+    const json j = output(r);
+    ASSERT_EQ(j["issues"].size(), 1001u);
+    EXPECT_EQ(j["issues"][500].value("omitted", 0), 2000) << j["issues"][500];
+    EXPECT_EQ(j["issues"][500].value("line", 0), 502);
+    EXPECT_EQ(j["issues"][1000].value("line", 0), 3001);
+    for (const json& issue : j["issues"]) {
+        EXPECT_LE(issue.value("message", "").size(), 600u) << issue;
+    }
+    EXPECT_LE(j["tools"][0].value("comment", "").size(), 600u);
+    EXPECT_LT(r.out.size(), 400'000u);
+    EXPECT_LT(lines(r.err).size(), 1100u) << "stderr lists the same bounded issues";
+}
+
 } // namespace m350::clitest
