@@ -105,4 +105,26 @@ TEST_F(HostileInputTest, TheToolsListingIsBoundedAsCheckIs) {
     EXPECT_LT(lines(r.err).size(), 1100u) << "stderr lists the same bounded issues";
 }
 
+// `N1 M00` / `GOTO1` held and was started without end (a hold costs no virtual time): a run without
+// an operator ends at once with a clear alarm; a loop whose stops have moves between them does not.
+TEST_F(HostileInputTest, ARunThatOnlyAnOperatorCouldEndStopsAtOnce) {
+    write("hold.nc", "N1 M00\nGOTO1\n");
+    ProcessResult r = sim({"run", "hold.nc"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    const json j = output(r);
+    EXPECT_EQ(j["alarm"].value("code", ""), "simulated_time_limit");
+    EXPECT_EQ(j["alarm"].value("message_id", ""), "operator_loop");
+    EXPECT_EQ(j["alarm"].value("line", 0), 1);
+    EXPECT_LT(j.value("sim_time_s", 1e9), 1.0) << "at once, not after --max-sim-time";
+    EXPECT_NE(r.err.find("hold.nc:1:1: alarm: the program stopped for the operator at hold.nc:1 1000 times in a row "
+                         "with no move between"),
+              std::string::npos)
+        << r.err;
+
+    write("inspect.nc", "#1=0\nWHILE[#1LT200]DO1\nM00\n#1=#1+1\nEND1\nM30\n"); // 200 stops: an operator's checks
+    ProcessResult checks = sim({"run", "inspect.nc", "--print", "1"});
+    EXPECT_EQ(checks.exitStatus, kExitOk) << checks.err;
+    EXPECT_EQ(output(checks)["vars"]["1"], 200);
+}
+
 } // namespace m350::clitest
