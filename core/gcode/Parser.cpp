@@ -304,8 +304,60 @@ void Parser::checkGotos(const Program& program, const ProgramUnit& unit) {
             std::string where = unit.number >= 0 ? "O" + std::to_string(unit.number) : std::string("this program");
             report(program, block, target.column, DiagnosticKind::Flow,
                    "GOTO" + std::to_string(label) + ": there is no N" + std::to_string(label) + " in " + where);
+            continue;
+        }
+        if (block.control == Control::Goto && !block.blockDelete) {
+            checkEndlessLoop(program, unit, b, label);
         }
     }
+}
+
+namespace {
+
+// Whether running `block` may end or leave a loop: a control statement (IF, WHILE, another GOTO),
+// an assignment (#3000 raises an alarm), an M code (M30, M99, a code a macro handles) or a T (a
+// tool change macro), a call. Only blocks of plain G words, axes and feeds cannot.
+bool mayLeave(const Block& block) {
+    if (block.control != Control::None || !block.assignments.empty() || block.programEnd) {
+        return true;
+    }
+    for (const Word& w : block.words) {
+        if (w.letter == 'M' || w.letter == 'T' || !w.isNumber()) {
+            return true;
+        }
+        if (w.letter == 'G' && (w.number == 65 || w.number == 66 || w.number == 66.1)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// The most blocks looked at between a GOTO and the label it jumps back to: a loop body longer than
+// this is not judged (check stays linear in the program's size).
+constexpr std::uint32_t kMostLoopBlocksJudged = 1000;
+
+} // namespace
+
+// `N1 GOTO1` passes `check` and runs until --max-sim-time: a jump back over blocks none of which
+// can leave is a loop without an exit, a lint (the program is valid, but never meant).
+void Parser::checkEndlessLoop(const Program& program, const ProgramUnit& unit, std::uint32_t gotoBlock,
+                              std::int32_t label) {
+    const std::optional<std::uint32_t> target = unit.labels.find(label, gotoBlock);
+    if (!target || *target > gotoBlock || gotoBlock - *target > kMostLoopBlocksJudged) {
+        return;
+    }
+    for (std::uint32_t b = *target; b < gotoBlock; ++b) {
+        if (mayLeave(program.blocks[b])) {
+            return;
+        }
+    }
+    const Block& jump = program.blocks[gotoBlock];
+    const Block& labelled = program.blocks[*target];
+    report(program, jump, jump.controlColumn, DiagnosticKind::Lint,
+           "GOTO" + std::to_string(label) + " jumps back to N" + std::to_string(label) + " (line " +
+               std::to_string(labelled.location.line) +
+               ") and nothing in between can leave the loop (no IF, WHILE, M30, M99, call or alarm): the program "
+               "never ends");
 }
 
 void Parser::finish(const Program& program) {

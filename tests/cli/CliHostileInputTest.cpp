@@ -127,4 +127,46 @@ TEST_F(HostileInputTest, ARunThatOnlyAnOperatorCouldEndStopsAtOnce) {
     EXPECT_EQ(output(checks)["vars"]["1"], 200);
 }
 
+// `G1 X10 E5 F100` moved X and dropped E in silence on the M350: an address it has no use for is an
+// alarm at the word (FANUC's PS0009 improper NC-address), with its message id for the panel.
+TEST_F(HostileInputTest, AnAddressTheM350DoesNotHaveIsAnAlarmAtTheWord) {
+    ProcessResult r = sim({"mdi", "G1 X10 E5 F100"});
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
+    const json j = output(r);
+    EXPECT_EQ(j["alarm"].value("code", ""), "invalid_word");
+    EXPECT_EQ(j["alarm"].value("message_id", ""), "improper_address");
+    EXPECT_EQ(j["alarm"].value("column", 0), 8);
+    EXPECT_EQ(j["machine"]["X"], 0.0) << "the block is not run";
+    EXPECT_NE(r.err.find("E5: the M350 has no address E"), std::string::npos) << r.err;
+    ProcessResult zh = sim({"mdi", "G1 X10 E5 F100", "--lang", "zh_CN"});
+    EXPECT_NE(zh.err.find("M350没有地址E"), std::string::npos) << zh.err;
+    EXPECT_EQ(sim({"mdi", "G1 X10 F100"}).exitStatus, kExitOk);
+}
+
+// `check` said ok to `N1 GOTO1`: a jump back over blocks none of which can leave is a lint; a loop
+// with an exit (an IF before the GOTO, an M30 or M99, a WHILE, an assignment) is not.
+TEST_F(HostileInputTest, CheckFlagsALoopWithoutAnExitAndNotOneWithAnExit) {
+    write("endless.nc", "G0 X0\nN1 G1 X10 F100\nG1 X0\nGOTO1\nM30\n");
+    ProcessResult r = sim({"check", "endless.nc"});
+    EXPECT_EQ(r.exitStatus, kExitError) << r.err;
+    const json j = output(r);
+    ASSERT_EQ(j["diagnostics"].size(), 1u) << j;
+    EXPECT_EQ(j["diagnostics"][0].value("kind", ""), "lint");
+    EXPECT_EQ(j["diagnostics"][0].value("line", 0), 4);
+    EXPECT_NE(r.err.find("endless.nc:4:1: GOTO1 jumps back to N1 (line 2) and nothing in between can leave the loop"),
+              std::string::npos)
+        << r.err;
+    write("self.nc", "N1 GOTO1\n");
+    EXPECT_EQ(sim({"check", "self.nc"}).exitStatus, kExitError);
+
+    for (const char* withExit : {"N1 G0 X1\nIF[#1GT3]GOTO2\n#1=#1+1\nGOTO1\nN2 M30\n",
+                                 "#1=0\nN1 #1=#1+1\nIF[#1LT5]GOTO1\nM30\n", "N1 G0 X1\nM99\nGOTO1\n",
+                                 "N1 M98 P100\nGOTO1\nO100\n#3000=1(STOP)\nM99\n", "GOTO2\nN1 G0 X1\nN2 M30\n",
+                                 "WHILE[#1LT3]DO1\n#1=#1+1\nEND1\nM30\n"}) {
+        write("exit.nc", withExit);
+        ProcessResult ok = sim({"check", "exit.nc"});
+        EXPECT_EQ(ok.exitStatus, kExitOk) << withExit << "\n" << ok.err;
+    }
+}
+
 } // namespace m350::clitest
