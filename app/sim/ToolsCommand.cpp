@@ -2,6 +2,7 @@
 
 #include "app/sim/ReportJson.h"
 
+#include "core/common/EchoText.h"
 #include "core/files/OutputFile.h"
 #include "core/tools/ToolTableFile.h"
 
@@ -37,7 +38,7 @@ nlohmann::json entryJson(const tools::ToolEntry& entry) {
             {"max_rpm", optional(entry.maxRpm)},
             {"teeth", entry.teeth ? nlohmann::json(*entry.teeth) : nlohmann::json(nullptr)},
             {"type", entry.type ? nlohmann::json(std::string(tools::toolTypeKey(*entry.type))) : nlohmann::json(nullptr)},
-            {"comment", entry.comment}};
+            {"comment", clipEcho(entry.comment)}}; // a comment of a megabyte is not repeated whole
 }
 
 // The file the table came from, and its issues read again with their kinds.
@@ -82,6 +83,9 @@ int listTools(controller::Controller& controller, const SimOptions& o) {
                                   {"line", issue.line},
                                   {"column", issue.column},
                                   {"message", issue.message}});
+                if (issue.omitted > 0) {
+                    issues.back()["omitted"] = issue.omitted; // as `check` marks the findings it left out
+                }
             }
         }
     }

@@ -17,19 +17,22 @@ gcode::FileRole libraryRole(const std::string& name) {
                                               : gcode::FileRole::GLibrary; // slib-g.nc, slibuser.nc
 }
 
-// Parses `files` into one program and keeps the syntax errors (the findings that stop a run).
-void parseTogether(const std::vector<const BackupFile*>& files, std::vector<gcode::Diagnostic>& out) {
+// Parses `files` into one program and keeps the syntax errors (the findings that stop a run). Each
+// is read where it lies (mapped) as `check` reads it: a program of hundreds of MB (one parsed alone,
+// as the program to run) stays out of memory but for what jumps and calls need.
+void parseTogether(const std::vector<const BackupFile*>& files, std::vector<gcode::Diagnostic>& out, bool alone) {
     gcode::Program program;
     gcode::Parser parser(gcode::Dialect::m350());
     for (const BackupFile* file : files) {
-        auto source = gcode::decodeSource(file->name, file->bytes);
+        auto source = gcode::readSourceFile(file->source.string());
         if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
-            out.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, file->name, 0, 0, error->message});
+            out.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, file->name, error->line,
+                           error->column, error->message});
             continue;
         }
-        const auto& text = std::get<gcode::SourceText>(source);
-        parser.addFile(program, file->name, text.text, libraryRole(file->name),
-                       std::string(gcode::encodingName(text.encoding)));
+        auto& text = std::get<gcode::SourceText>(source);
+        text.path = file->name; // its findings name it as the backup does
+        parser.addSource(program, text, alone ? gcode::FileRole::Main : libraryRole(file->name));
     }
     for (const gcode::Diagnostic& d : parser.diagnostics()) {
         if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
@@ -75,10 +78,10 @@ std::vector<gcode::Diagnostic> checkPrograms(const ControllerBackup& backup, con
             libraryFiles.push_back(&file);
         }
     }
-    parseTogether(libraryFiles, found);
+    parseTogether(libraryFiles, found, false);
     for (const BackupFile& file : backup.programs) {
         if (std::find(libraries.begin(), libraries.end(), file.name) == libraries.end()) {
-            parseTogether({&file}, found);
+            parseTogether({&file}, found, true);
         }
     }
     return found;

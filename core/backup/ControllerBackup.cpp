@@ -1,5 +1,7 @@
 #include "core/backup/ControllerBackup.h"
 
+#include "core/files/MachineFileRead.h"
+
 #include <algorithm>
 #include <bit>
 #include <cctype>
@@ -28,17 +30,14 @@ struct Failure {
     throw Failure{{file.string(), std::move(message)}};
 }
 
+// A data file's bytes: a folder, FIFO or device (a link to one) is said as what it is, an
+// unreadable file with the system's reason, never read as "not found" or as empty.
 std::string readBytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        fail(file, "cannot read");
+    std::string bytes;
+    if (auto why = files::readMachineFile(file, bytes)) {
+        fail(file, "cannot read: " + *why + "; nothing imported");
     }
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    if (in.bad()) {
-        fail(file, "cannot read");
-    }
-    return bytes.str();
+    return bytes;
 }
 
 double littleEndianDouble(const char* bytes) {
@@ -145,17 +144,19 @@ std::string skipReason(const fs::path& file) {
 
 constexpr const char* kDataFiles[] = {"setting", "default_setting", "coordinate", "mdiblock"};
 
-// `folder`/`name`, or the top-level file with that name in another case.
-fs::path dataFile(const fs::path& folder, const char* name) {
-    if (fs::is_regular_file(folder / name)) {
+// `folder`/`name`, or the top-level entry with that name in another case, whatever it is (a
+// folder or a link is read by readBytes, which says what it is); nullopt when there is none.
+std::optional<fs::path> dataFile(const fs::path& folder, const char* name) {
+    std::error_code ec;
+    if (fs::exists(fs::symlink_status(folder / name, ec))) {
         return folder / name;
     }
     for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
-        if (entry.is_regular_file() && sameNameAnyCase(entry.path().filename().string(), name)) {
+        if (sameNameAnyCase(entry.path().filename().string(), name)) {
             return entry.path();
         }
     }
-    return folder / name;
+    return std::nullopt;
 }
 
 // Every .nc file (its bytes) and every other file (why it is skipped), in name order.
@@ -179,7 +180,7 @@ void listFiles(const fs::path& folder, ControllerBackup& backup) {
             continue; // read as data
         }
         if (lowercase(entry.path().extension().string()) == ".nc") {
-            backup.programs.push_back({name, readBytes(entry.path())});
+            backup.programs.push_back({name, entry.path()}); // copied streaming: a .nc may be hundreds of MB
         } else {
             backup.skipped.push_back({name, skipReason(entry.path())});
         }
@@ -230,24 +231,25 @@ std::variant<ControllerBackup, BackupError> readControllerBackup(const fs::path&
         if (!fs::is_directory(folder)) {
             fail(folder, "not a folder: a controller backup is the folder that holds `setting`, slib-g.nc ...");
         }
-        const fs::path setting = dataFile(folder, "setting");
-        if (!fs::is_regular_file(setting)) {
-            fail(setting, "not found: a controller backup (the M350's system disk) holds its parameters in `setting`");
+        const std::optional<fs::path> setting = dataFile(folder, "setting");
+        if (!setting) {
+            fail(folder / "setting",
+                 "not found: a controller backup (the M350's system disk) holds its parameters in `setting`");
         }
         backup.setting =
-            parameterTable(readTable(setting, params::ParameterTable::kCount, "a setting file", parameterName, catalogue));
-        if (const fs::path defaults = dataFile(folder, "default_setting"); fs::is_regular_file(defaults)) {
+            parameterTable(readTable(*setting, params::ParameterTable::kCount, "a setting file", parameterName, catalogue));
+        if (const auto defaults = dataFile(folder, "default_setting")) {
             backup.defaultSetting = parameterTable(
-                readTable(defaults, params::ParameterTable::kCount, "a setting file", parameterName, catalogue));
+                readTable(*defaults, params::ParameterTable::kCount, "a setting file", parameterName, catalogue));
         }
-        if (const fs::path coordinate = dataFile(folder, "coordinate"); fs::is_regular_file(coordinate)) {
+        if (const auto coordinate = dataFile(folder, "coordinate")) {
             std::vector<double> offsets =
-                readTable(coordinate, kCoordinateCount, "a coordinate file", offsetName, catalogue);
+                readTable(*coordinate, kCoordinateCount, "a coordinate file", offsetName, catalogue);
             backup.coordinate.emplace();
             std::copy(offsets.begin(), offsets.end(), backup.coordinate->begin());
         }
-        if (const fs::path mdi = dataFile(folder, "mdiblock"); fs::is_regular_file(mdi)) {
-            backup.mdiblock = readBytes(mdi);
+        if (const auto mdi = dataFile(folder, "mdiblock")) {
+            backup.mdiblock = readBytes(*mdi);
         }
         listFiles(folder, backup);
     } catch (const Failure& f) {

@@ -26,8 +26,8 @@ inline constexpr int kCoordinateCount = 45;
 inline constexpr std::size_t kMdiBlockBytes = 6 * 120;
 
 struct BackupFile {
-    std::string name;  // relative to the backup folder, '/' between folders
-    std::string bytes; // exactly as on the disk
+    std::string name;             // relative to the backup folder, '/' between folders
+    std::filesystem::path source; // where it lies in the backup: read (mapped) and copied streaming
 };
 
 struct SkippedFile {

@@ -8,6 +8,7 @@
 #include "core/config/HookFiles.h"
 #include "core/config/MachineFolder.h"
 #include "core/files/LastGoodCopy.h"
+#include "core/files/MachineFileRead.h"
 #include "core/config/MagazineToml.h"
 #include "core/params/ParameterCatalogue.h"
 #include "core/params/ParameterLimits.h"
@@ -424,11 +425,11 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
     if (!fs::exists(file)) {
         return;
     }
-    auto read = tools::readToolTableFile(file);
-    if (std::holds_alternative<std::string>(read)) {
-        fail(file, "cannot read the tool table");
+    std::string text;
+    if (auto why = files::readMachineFile(file, text)) {
+        fail(file, "cannot read the tool table: " + *why);
     }
-    tools::ParsedToolTable& parsed = std::get<tools::ParsedToolTable>(read);
+    tools::ParsedToolTable parsed = tools::parseToolTable(text, file.string());
     for (const tools::ToolTableIssue& issue : parsed.issues) {
         config.warnings.push_back(tools::formatIssue(issue));
     }
@@ -466,6 +467,10 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
     try {
         if (!fs::is_directory(dir)) {
             fail(dir, "not a machine folder (no such directory)");
+        }
+        // a save a crash interrupted is finished (or dropped) before any file is read
+        if (auto broken = MachineFolder(dir).finishInterruptedChange()) {
+            fail(dir / MachineFolder::kChangeJournal, *broken);
         }
         loadMachineToml(dir, config);
         loadParams(dir, config);

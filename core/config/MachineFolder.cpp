@@ -1,7 +1,9 @@
 #include "core/config/MachineFolder.h"
 
 #include "core/config/HookFiles.h"
+#include "core/files/ChangeJournal.h"
 #include "core/files/LastGoodCopy.h"
+#include "core/files/MachineFileRead.h"
 #include "core/files/OutputFile.h"
 #include "core/files/OutputGuard.h"
 #include "core/params/ParameterBackup.h"
@@ -44,13 +46,9 @@ constexpr std::array kFiles{
 };
 
 std::optional<std::string> readText(const fs::path& file, std::string& text) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        return file.string() + ": cannot read";
+    if (auto why = files::readMachineFile(file, text)) {
+        return file.string() + ": cannot read: " + *why;
     }
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    text = buffer.str();
     return std::nullopt;
 }
 
@@ -86,6 +84,16 @@ bool isHookFile(std::string_view name) {
     return extension == ".nc" && findHook(name) != nullptr;
 }
 
+// params.toml's text with `values` set, each at its parameter's resolution.
+std::string withParameters(const std::string& text, std::map<int, double> values, bool addMissing) {
+    if (const auto* catalogue = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled())) {
+        for (auto& [number, value] : values) {
+            value = catalogue->atResolution(number, value);
+        }
+    }
+    return params::setTomlNumbers(text, "params", values, addMissing);
+}
+
 } // namespace
 
 std::span<const FolderFileInfo> MachineFolder::files() { return kFiles; }
@@ -97,6 +105,9 @@ std::optional<std::string> MachineFolder::write(FolderFile file, std::string_vie
     const FolderFileInfo& info = kFiles[static_cast<std::size_t>(file)];
     if (folder_.empty()) {
         return "this machine has no folder to keep " + std::string(info.name) + " in";
+    }
+    if (auto error = finishInterruptedChange()) {
+        return error;
     }
     const fs::path target = pathOf(file);
     switch (info.how) {
@@ -124,13 +135,7 @@ std::optional<std::string> MachineFolder::saveParameters(const std::map<int, dou
             return error;
         }
     }
-    std::map<int, double> rounded = values;
-    if (const auto* catalogue = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled())) {
-        for (auto& [number, value] : rounded) {
-            value = catalogue->atResolution(number, value);
-        }
-    }
-    std::string updated = params::setTomlNumbers(text, "params", rounded, addMissing);
+    std::string updated = withParameters(text, values, addMissing);
     if (!addMissing && updated == text) {
         return std::nullopt;
     }
@@ -139,17 +144,47 @@ std::optional<std::string> MachineFolder::saveParameters(const std::map<int, dou
 
 std::optional<std::string> MachineFolder::saveToolTable(const tools::ToolTable& table,
                                                         const std::map<int, double>& zParameters,
-                                                        const files::AtomicWriteHooks& hooks) const {
+                                                        const files::AtomicWriteHooks& hooks,
+                                                        const std::map<int, double>& parameters) const {
     if (folder_.empty()) {
         return "this machine has no folder to keep its tool table in";
     }
-    if (auto error = write(F::ToolTable, tools::formatToolTable(table), hooks)) {
+    if (auto error = finishInterruptedChange()) {
         return error;
     }
-    if (zParameters.empty()) {
+    const std::string tableText = tools::formatToolTable(table);
+    const fs::path paramsFile = pathOf(F::Params);
+    std::string text;
+    if (fs::exists(paramsFile)) {
+        if (auto error = readText(paramsFile, text)) {
+            return error;
+        }
+    }
+    std::string updated = withParameters(text, zParameters, false);
+    if (!parameters.empty()) {
+        updated = withParameters(updated, parameters, true);
+    }
+    if (updated == text) {
+        return write(F::ToolTable, tableText, hooks);
+    }
+    // one change: a crash between the two files left T1's Z new in one and old in the other, and
+    // the older value won at the next start
+    const std::array change{files::ChangedFile{pathOf(F::ToolTable), tableText, true},
+                            files::ChangedFile{paramsFile, updated, true}};
+    return files::writeTogether(folder_ / kChangeJournal, change, hooks);
+}
+
+std::optional<std::string> MachineFolder::finishInterruptedChange() const {
+    if (folder_.empty()) {
         return std::nullopt;
     }
-    return saveParameters(zParameters, false);
+    std::vector<fs::path> candidates;
+    for (const FolderFileInfo& info : kFiles) {
+        if (info.how == W::KeepingLastGood) {
+            candidates.push_back(pathOf(info.file));
+        }
+    }
+    return files::finishInterruptedChange(folder_ / kChangeJournal, candidates);
 }
 
 std::optional<std::string> MachineFolder::saveToolLife(const tools::LifeData& data,
@@ -180,6 +215,13 @@ bool MachineFolder::isFolderFile(const fs::path& path) const {
     const std::string lastGood = files::lastGoodPath("").string();
     if (endsWith(name, lastGood) && name.size() > lastGood.size()) {
         name.resize(name.size() - lastGood.size());
+    }
+    const std::string pending = files::pendingPath("").string();
+    if (endsWith(name, pending) && name.size() > pending.size()) {
+        name.resize(name.size() - pending.size());
+    }
+    if (name == kChangeJournal) {
+        return true;
     }
     for (const FolderFileInfo& info : kFiles) {
         if (name == info.name) {

@@ -418,6 +418,15 @@ void Controller::enterSafeState() {
     }
 }
 
+namespace {
+
+// Holds in a row, with the machine standing still between them, that an unattended run answers
+// with START before it takes them for a loop only an operator can end (`N1 M00` / `GOTO1`). Far
+// above any program's inspection stops in a loop, and reached in a fraction of a second.
+constexpr int kMostIdleHolds = 1000;
+
+} // namespace
+
 RunReport Controller::run() {
     panel_.setUnattended(true);
     start();
@@ -425,6 +434,8 @@ RunReport Controller::run() {
     const bool running = state_ == RunState::Running;
     double pauseAt = settings_.pauseAt && running ? runStartedAt_ + *settings_.pauseAt : kNever;
     double estopAt = settings_.estopAt && running ? runStartedAt_ + *settings_.estopAt : kNever;
+    std::optional<machine::Axes> heldAt; // where the machine stood at the last hold
+    int idleHolds = 0;                   // holds in a row with no move between them
     while (state_ == RunState::Running) {
         const auto where = [this] {
             return " (" + status_.source().file + ":" + std::to_string(status_.source().line) + ")";
@@ -447,8 +458,21 @@ RunReport Controller::run() {
             advance(std::numeric_limits<double>::infinity());
         }
         if (state_ == RunState::Hold) {
-            status_.postMessage((programStop_.empty() ? std::string("PAUSE") : programStop_) +
-                                ": START pressed (run without an operator)");
+            const std::string stop = programStop_.empty() ? std::string("PAUSE") : programStop_;
+            // `N1 M00` / `GOTO1` holds forever and costs no virtual time: holds over and over with
+            // the machine standing still wait on an operator this run has not got
+            const machine::Axes at = machine_.position();
+            idleHolds = heldAt && (*heldAt - at).cwiseAbs().maxCoeff() == 0.0 ? idleHolds + 1 : 1;
+            heldAt = at;
+            if (idleHolds > kMostIdleHolds) {
+                const TraceSource source = status_.source();
+                raiseAlarm(Alarm::of(AlarmCode::SimulatedTimeLimit,
+                                     message("operator_loop", {source.file, std::to_string(source.line),
+                                                               std::to_string(kMostIdleHolds)}),
+                                     source.file, source.line, 1));
+                break;
+            }
+            status_.postMessage(stop + ": START pressed (run without an operator)");
             displayTime_ = machine_.time(); // START comes the moment the machine stands still
             resume();
         }

@@ -38,4 +38,18 @@ std::optional<std::string> saveToolTable(Controller& controller, const config::M
     return std::nullopt;
 }
 
+std::optional<std::string> saveParameters(Controller& controller, const config::MachineFolder& folder,
+                                          const std::map<int, double>& values, const files::AtomicWriteHooks& hooks) {
+    ToolTableEdits& edits = controller.toolTableEdits();
+    if (!edits.changed()) {
+        return folder.saveParameters(values);
+    }
+    const tools::ToolData::Mark mark = edits.mark();
+    if (auto error = folder.saveToolTable(edits.table(), toolZParameters(controller), hooks, values)) {
+        return error;
+    }
+    edits.markSaved(mark);
+    return std::nullopt;
+}
+
 } // namespace m350::controller

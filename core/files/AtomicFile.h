@@ -14,6 +14,8 @@ namespace m350::files {
 struct AtomicWriteHooks {
     std::function<void(std::size_t written)> afterChunk; // after each chunk of the temp file
     std::function<void()> beforeRename;                  // the temp file is complete and synced
+    // files::writeTogether only: after one of its files is in place and before the next is
+    std::function<void()> betweenFiles;
 };
 
 // Replaces `path` with `content` so that a reader (or the next start after a crash) sees either

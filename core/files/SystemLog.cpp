@@ -1,6 +1,7 @@
 #include "core/files/SystemLog.h"
 
 #include "core/files/AtomicFile.h"
+#include "core/files/MachineFileRead.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -32,15 +33,16 @@ bool SystemLog::load(std::string* error, std::size_t* skipped) {
     entries_.clear();
     tornTail_ = false;
     std::size_t bad = 0;
-    std::ifstream in(path_, std::ios::binary);
-    if (!in) {
-        std::error_code ec;
-        if (!std::filesystem::exists(path_, ec)) {
-            return true; // no log yet
-        }
-        *error = path_ + ": cannot read the system log";
+    std::error_code ec;
+    if (!std::filesystem::exists(path_, ec) && !std::filesystem::is_symlink(path_, ec)) {
+        return true; // no log yet
+    }
+    std::string whole;
+    if (auto why = readMachineFile(path_, whole)) {
+        *error = path_ + ": cannot read the system log: " + *why;
         return false;
     }
+    std::istringstream in(std::move(whole));
     std::string text;
     while (std::getline(in, text)) {
         if (in.eof()) {

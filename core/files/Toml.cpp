@@ -1,21 +1,9 @@
 #include "core/files/Toml.h"
 
+#include "core/files/MachineFileRead.h"
 #include "core/files/TomlScreen.h"
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
 namespace m350::files {
-
-namespace fs = std::filesystem;
-
-namespace {
-
-// Far above any real machine file; /dev/zero or a huge file named as one is refused, not read.
-constexpr std::uintmax_t kMostTomlBytes = 16 * 1024 * 1024;
-
-} // namespace
 
 toml::table parseTomlText(std::string_view text, std::string_view path) {
     if (auto refused = findCharacterTomlCannotRead(text)) {
@@ -31,22 +19,11 @@ toml::table parseTomlFile(const std::string& path) {
         return toml::parse_error(("cannot read: " + why).c_str(), toml::source_position{1, 1},
                                  std::make_shared<const std::string>(path));
     };
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) {
-        throw unreadable(ec ? ec.message() : "not a regular file (a folder, FIFO or device)");
+    std::string text;
+    if (auto why = readMachineFile(path, text)) {
+        throw unreadable(*why);
     }
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (ec || size > kMostTomlBytes) {
-        throw unreadable(ec ? ec.message()
-                            : std::to_string(size) + " bytes is more than a machine file can be (16 MiB)");
-    }
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) {
-        throw unreadable("the file could not be read");
-    }
-    return parseTomlText(text.str(), path);
+    return parseTomlText(text, path);
 }
 
 } // namespace m350::files

@@ -39,6 +39,12 @@ std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lin
 }
 
 std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint32_t lineNumber) {
+    if (line.size() > kMostLineBytes) {
+        diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, fileName_, lineNumber, 1,
+                                "the line is " + std::to_string(line.size()) + " bytes long, more than the " +
+                                    std::to_string(kMostLineBytes) + " a program line may have: not read"});
+        return std::nullopt;
+    }
     line_ = line;
     columnCacheOffset_ = 0;
     columnCacheColumn_ = 1;

@@ -43,12 +43,20 @@ void Parser::addSource(Program& program, const SourceText& source, FileRole role
             return;
         }
         addFile(program, source.path, source.text, role, encoding);
-        return;
+    } else {
+        const std::uint32_t fileIndex = addFileEntry(program, source.path, role, encoding);
+        parseFile(program, source.text, fileIndex,
+                  std::make_shared<ChunkSource>(dialect_, program.files.back().name, fileIndex, source.text,
+                                                source.storage, source.mapping));
     }
-    const std::uint32_t fileIndex = addFileEntry(program, source.path, role, encoding);
-    parseFile(program, source.text, fileIndex,
-              std::make_shared<ChunkSource>(dialect_, program.files.back().name, fileIndex, source.text,
-                                            source.storage, source.mapping));
+    if (source.mapping && source.mapping->truncated()) {
+        // the lost pages read as NUL bytes: what the parser said of them is noise (it was
+        // "unexpected character '\0'"), the file is what is wrong
+        const std::string& name = program.files.back().name;
+        std::erase_if(diagnostics_, [&name](const Diagnostic& d) { return d.file == name; });
+        diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, source.path, 0, 0, kCutShortWhileRead});
+        diagnostics_.back().unreadable = true;
+    }
 }
 
 void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fileIndex,
@@ -296,8 +304,60 @@ void Parser::checkGotos(const Program& program, const ProgramUnit& unit) {
             std::string where = unit.number >= 0 ? "O" + std::to_string(unit.number) : std::string("this program");
             report(program, block, target.column, DiagnosticKind::Flow,
                    "GOTO" + std::to_string(label) + ": there is no N" + std::to_string(label) + " in " + where);
+            continue;
+        }
+        if (block.control == Control::Goto && !block.blockDelete) {
+            checkEndlessLoop(program, unit, b, label);
         }
     }
+}
+
+namespace {
+
+// Whether running `block` may end or leave a loop: a control statement (IF, WHILE, another GOTO),
+// an assignment (#3000 raises an alarm), an M code (M30, M99, a code a macro handles) or a T (a
+// tool change macro), a call. Only blocks of plain G words, axes and feeds cannot.
+bool mayLeave(const Block& block) {
+    if (block.control != Control::None || !block.assignments.empty() || block.programEnd) {
+        return true;
+    }
+    for (const Word& w : block.words) {
+        if (w.letter == 'M' || w.letter == 'T' || !w.isNumber()) {
+            return true;
+        }
+        if (w.letter == 'G' && (w.number == 65 || w.number == 66 || w.number == 66.1)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// The most blocks looked at between a GOTO and the label it jumps back to: a loop body longer than
+// this is not judged (check stays linear in the program's size).
+constexpr std::uint32_t kMostLoopBlocksJudged = 1000;
+
+} // namespace
+
+// `N1 GOTO1` passes `check` and runs until --max-sim-time: a jump back over blocks none of which
+// can leave is a loop without an exit, a lint (the program is valid, but never meant).
+void Parser::checkEndlessLoop(const Program& program, const ProgramUnit& unit, std::uint32_t gotoBlock,
+                              std::int32_t label) {
+    const std::optional<std::uint32_t> target = unit.labels.find(label, gotoBlock);
+    if (!target || *target > gotoBlock || gotoBlock - *target > kMostLoopBlocksJudged) {
+        return;
+    }
+    for (std::uint32_t b = *target; b < gotoBlock; ++b) {
+        if (mayLeave(program.blocks[b])) {
+            return;
+        }
+    }
+    const Block& jump = program.blocks[gotoBlock];
+    const Block& labelled = program.blocks[*target];
+    report(program, jump, jump.controlColumn, DiagnosticKind::Lint,
+           "GOTO" + std::to_string(label) + " jumps back to N" + std::to_string(label) + " (line " +
+               std::to_string(labelled.location.line) +
+               ") and nothing in between can leave the loop (no IF, WHILE, M30, M99, call or alarm): the program "
+               "never ends");
 }
 
 void Parser::finish(const Program& program) {

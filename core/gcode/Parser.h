@@ -67,6 +67,7 @@ private:
     void closeUnit(Program& program, std::uint32_t unitIndex);
     void pairLoops(Program& program);
     void checkGotos(const Program& program, const ProgramUnit& unit);
+    void checkEndlessLoop(const Program& program, const ProgramUnit& unit, std::uint32_t gotoBlock, std::int32_t label);
     void checkCalls(const Program& program);
     void report(const Program& program, const Block& block, std::uint32_t column, DiagnosticKind kind,
                 std::string message);

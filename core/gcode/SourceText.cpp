@@ -269,8 +269,7 @@ std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path
         std::string_view bytes = mapped->bytes();
         auto decoded = decodeOwned(path, bytes, mapped, mapped);
         if (mapped->truncated()) {
-            return SourceReadError{path, "cannot read file: it was cut short while it was read (another program "
-                                         "truncated or rewrote it); run again when it is complete"};
+            return SourceReadError{path, kCutShortWhileRead};
         }
         return decoded;
     }

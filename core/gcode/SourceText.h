@@ -36,6 +36,10 @@ struct SourceReadError {
     std::uint32_t column = 0;
 };
 
+// Said of a program file another program truncated while it was read (its lost pages read as NULs).
+inline constexpr const char* kCutShortWhileRead = "cannot read file: it was cut short while it was read (another "
+                                                  "program truncated or rewrote it); run again when it is complete";
+
 // The error as a diagnostic: placed at the bad byte (or 0:0), marked unreadable.
 Diagnostic diagnosticOf(const SourceReadError& error);
 

@@ -1,4 +1,5 @@
 #include "core/interp/ModalInterpreter.h"
+#include "core/common/Message.h"
 #include "core/common/Numeric.h"
 
 #include "core/params/IoPorts.h"
@@ -164,6 +165,21 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                                   std::string(1, w.letter) + " appears twice in one block", w.column}};
     }
     try {
+        // An address the M350 has no use for (no axis, no argument of its call specification) was
+        // ignored in silence: `G1 X10 E5` moved X and dropped E. A FANUC refuses a word its control
+        // does not know with alarm PS0009 (improper NC-address); so does the M350 here.
+        constexpr std::uint32_t kNoM350Address =
+            Words::bit('E') | Words::bit('U') | Words::bit('V') | Words::bit('W');
+        if (dialect_.id == gcode::DialectId::M350 && (words.present & kNoM350Address) != 0) [[unlikely]] {
+            for (char letter : {'E', 'U', 'V', 'W'}) {
+                if (const WordValue* w = words.find(letter)) {
+                    throw MacroError::of(AlarmCode::InvalidWord,
+                                         message("improper_address", {codeText(w->letter, w->value),
+                                                                      std::string(1, letter)}),
+                                         w->column);
+                }
+            }
+        }
         // 1. F S T H D; F in the unit this block sets (`G20 G1 X1 F10`: 10 inch/min)
         constexpr std::uint32_t kModalLetters =
             Words::bit('F') | Words::bit('S') | Words::bit('T') | Words::bit('H') | Words::bit('D');

@@ -1,5 +1,7 @@
 #include "core/tools/ToolLifeFile.h"
 
+#include "core/files/MachineFileRead.h"
+
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -240,12 +242,11 @@ std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder
     if (!std::filesystem::exists(path, ec)) {
         return parseToolLife("", path.string(), settings);
     }
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    if (!in || !(text << in.rdbuf())) {
-        return std::string("cannot read the file");
+    std::string text;
+    if (auto why = files::readMachineFile(path, text)) {
+        return "cannot read the file: " + *why;
     }
-    return parseToolLife(text.str(), path.string(), settings);
+    return parseToolLife(text, path.string(), settings);
 }
 
 std::string formatToolLife(const LifeData& data) {

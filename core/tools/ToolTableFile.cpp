@@ -2,6 +2,10 @@
 
 #include "core/tools/ToolTableText.h"
 
+#include "core/common/EchoText.h"
+#include "core/files/MachineFileRead.h"
+#include "core/gcode/DiagnosticCap.h"
+
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -11,6 +15,30 @@ namespace m350::tools {
 namespace {
 
 bool blank(char c) { return c == ' ' || c == '\t'; }
+
+// The issues as `check` bounds its findings: each message's echo of the line cut to kEchoLimit, and
+// the first and last DiagnosticCap::kKeepFirst/kKeepLast kept with one issue between them saying
+// how many were left out (a binary file named as tool.tbl made 17 MB of JSON).
+void capIssues(std::vector<ToolTableIssue>& issues) {
+    using gcode::Diagnostic;
+    std::vector<Diagnostic> findings;
+    findings.reserve(issues.size());
+    for (ToolTableIssue& issue : issues) {
+        const bool error = issue.severity == ToolTableIssue::Severity::Error;
+        findings.push_back({error ? gcode::Severity::Error : gcode::Severity::Warning, gcode::DiagnosticKind::Syntax,
+                            std::move(issue.file), static_cast<std::uint32_t>(issue.line),
+                            static_cast<std::uint32_t>(issue.column), clipEcho(std::move(issue.message))});
+    }
+    gcode::DiagnosticCap cap;
+    cap.finish(findings, gcode::Program{}, gcode::DiagnosticCap::Order::AsFiled);
+    issues.clear();
+    for (Diagnostic& d : findings) {
+        issues.push_back({d.severity == gcode::Severity::Error ? ToolTableIssue::Severity::Error
+                                                               : ToolTableIssue::Severity::Warning,
+                          std::move(d.file), static_cast<int>(d.line), static_cast<int>(d.column),
+                          std::move(d.message), d.omitted});
+    }
+}
 
 // The words of one line, checked as they are read. Throws nothing: the first problem ends the line.
 class RowReader {
@@ -142,7 +170,7 @@ bool commentOrBlank(std::string_view line) {
 std::string formatIssue(const ToolTableIssue& issue) {
     const bool error = issue.severity == ToolTableIssue::Severity::Error;
     return issue.file + ":" + std::to_string(issue.line) + ":" + std::to_string(issue.column) +
-           (error ? ": error: " : ": warning: ") + issue.message + (error ? " (line skipped)" : "");
+           (error ? ": error: " : ": warning: ") + issue.message + (error && issue.omitted == 0 ? " (line skipped)" : "");
 }
 
 bool ParsedToolTable::skippedLines() const {
@@ -196,6 +224,7 @@ ParsedToolTable parseToolTable(std::string_view text, const std::string& fileNam
         pocketLine[entry->pocket] = number;
         out.table.appendRow(std::move(*entry), std::string(line));
     }
+    capIssues(out.issues);
     return out;
 }
 
@@ -238,13 +267,11 @@ std::string formatToolTable(const ToolTable& table) {
 }
 
 std::variant<ParsedToolTable, std::string> readToolTableFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        return path.string() + ": cannot read the tool table";
+    std::string bytes;
+    if (auto why = files::readMachineFile(path, bytes)) {
+        return path.string() + ": cannot read the tool table: " + *why;
     }
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return parseToolTable(bytes.str(), path.string());
+    return parseToolTable(bytes, path.string());
 }
 
 } // namespace m350::tools

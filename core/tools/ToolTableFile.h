@@ -28,6 +28,9 @@ struct ToolTableIssue {
     int line = 0;   // 1-based
     int column = 0; // 1-based
     std::string message;
+    // > 0: this issue stands for that many left out (gcode::DiagnosticCap: a table of 100,000 bad
+    // lines lists its first and last 500, as `check` does)
+    std::uint64_t omitted = 0;
 };
 // "tool.tbl:3:7: error: ... (line skipped)" / "tool.tbl:4:30: warning: ..."
 std::string formatIssue(const ToolTableIssue& issue);

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 namespace m350::clitest {
 
 using m350::testing::ControllerBackupWriter;
@@ -177,6 +179,57 @@ TEST_F(CliImportTest, ANanInSettingIsRefusedNamingItsOffsetAndParameter) {
     EXPECT_NE(r.err.find("SYSDISK/setting: offset 1032, parameter 129 (浮动对刀仪厚度"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("nan"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "machine"));
+}
+
+// Issue 26: a `coordinate` or `setting` that is a folder or a link to a device was "not found" or
+// gave "every work offset is 0"; each is said as what it is (a device refused unread).
+TEST_F(CliImportTest, ADataFileThatIsAFolderFifoOrDeviceIsSaidAsWhatItIs) {
+    for (const char* name : {"coordinate", "setting"}) {
+        const fs::path file = dir_ / "SYSDISK" / name;
+        const std::string bytes = m350::testing::readFile(file);
+        struct Case {
+            const char* says;
+            void (*make)(const fs::path&);
+        };
+        const Case cases[] = {
+            {"it is a folder, not a regular file", [](const fs::path& f) { fs::create_directory(f); }},
+            {"it is a device, not a regular file", [](const fs::path& f) { fs::create_symlink("/dev/zero", f); }},
+            {"it is a FIFO (named pipe), not a regular file", [](const fs::path& f) { ::mkfifo(f.c_str(), 0600); }},
+        };
+        for (const Case& c : cases) {
+            fs::remove_all(file);
+            c.make(file);
+            ProcessResult r = import("machine");
+            EXPECT_EQ(r.exitStatus, kExitError) << name << ": " << r.err;
+            EXPECT_EQ(output(r)["alarm"].value("code", ""), "backup_error") << r.out;
+            EXPECT_NE(r.err.find(std::string("SYSDISK/") + name + ": cannot read: " + c.says), std::string::npos)
+                << r.err;
+            EXPECT_EQ(r.err.find("every work offset is 0"), std::string::npos) << r.err;
+            EXPECT_FALSE(fs::exists(dir_ / "machine"));
+        }
+        fs::remove_all(file);
+        write(std::string("SYSDISK/") + name, bytes);
+    }
+}
+
+// The .nc files are copied streaming, not read whole (a 270 MB program took 5 GB); the copy is the
+// same bytes, and a second import into the folder compares them a chunk at a time.
+TEST_F(CliImportTest, ProgramsAreCopiedAsTheyAreAndComparedOnASecondImport) {
+    std::string big;
+    for (int i = 0; i < 100000; ++i) {
+        big += "G1 X" + std::to_string(i % 500) + " Y1 F900\n";
+    }
+    big += "M30\n";
+    write("SYSDISK/big.nc", big);
+    ProcessResult r = import("machine");
+    ASSERT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_EQ(m350::testing::readFile(dir_ / "machine/big.nc"), big);
+    ProcessResult again = import("machine");
+    EXPECT_EQ(again.exitStatus, kExitOk) << again.err;
+    write("machine/big.nc", big + "M30\n");
+    ProcessResult changed = import("machine");
+    EXPECT_EQ(changed.exitStatus, kExitError);
+    EXPECT_NE(changed.err.find("big.nc differs"), std::string::npos) << changed.err;
 }
 
 TEST_F(CliImportTest, MissingArgumentsAreUsageErrors) {

@@ -1,5 +1,6 @@
 // Issue 13: a program file truncated while it is mapped is read as zeros and said, not a SIGBUS.
 #include "core/gcode/MappedFile.h"
+#include "core/gcode/Parser.h"
 #include "core/gcode/SourceText.h"
 
 #include <gtest/gtest.h>
@@ -53,3 +54,24 @@ TEST(MappedFile, AnIntactFileReadsAsItIs) {
 }
 
 } // namespace
+
+// Issue 26: a program truncated while `check` parsed it used 8.4 GB and reported "unexpected
+// character '\0'" for the zeros of its lost pages. The parser says the documented error instead,
+// and the zeros (one line without a line end) are refused by the line limit, unread.
+TEST(MappedFile, AProgramCutShortWhileItIsParsedIsSaidSoAndNothingElse) {
+    fs::path path = writeProgram("m350-cut-while-parsed", 20000); // about 330 KB
+    auto read = m350::gcode::readSourceFile(path.string());
+    ASSERT_TRUE(std::holds_alternative<m350::gcode::SourceText>(read));
+    fs::resize_file(path, 4096); // after the read, before the parse: another program rewrites it
+
+    m350::gcode::Program program;
+    m350::gcode::Parser parser(m350::gcode::Dialect::m350());
+    parser.addSource(program, std::get<m350::gcode::SourceText>(read), m350::gcode::FileRole::Main);
+    parser.finish(program);
+    ASSERT_EQ(parser.diagnostics().size(), 1u) << parser.diagnostics().back().message;
+    const m350::gcode::Diagnostic& said = parser.diagnostics().front();
+    EXPECT_TRUE(said.unreadable);
+    EXPECT_EQ(said.file, path.string());
+    EXPECT_NE(said.message.find("it was cut short while it was read"), std::string::npos) << said.message;
+    fs::remove(path);
+}

@@ -149,7 +149,7 @@ TEST(ToolLifeFile, AFileThatCannotBeReadStopsTheMachineFromLoading) {
     auto loaded = config::loadMachineFolder(folder.string());
     ASSERT_TRUE(std::holds_alternative<config::ConfigError>(loaded));
     EXPECT_EQ(std::get<config::ConfigError>(loaded).file, (folder / tools::kToolLifeFile).string());
-    EXPECT_EQ(std::get<config::ConfigError>(loaded).message, "cannot read the file");
+    EXPECT_EQ(std::get<config::ConfigError>(loaded).message, "cannot read the file: it is a folder, not a regular file");
     fs::remove_all(folder);
 }
 

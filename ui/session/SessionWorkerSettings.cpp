@@ -3,6 +3,7 @@
 #include "ui/session/SessionWorker.h"
 
 #include "core/controller/Controller.h"
+#include "core/controller/ToolTableSave.h"
 
 #include <cmath>
 #include <limits>
@@ -20,7 +21,7 @@ bool SessionWorker::saveParameters(const std::map<int, double>& values) {
     if (folder_.path().empty()) {
         return true; // a machine built in memory (tests of the core) has no folder to keep
     }
-    if (auto error = folder_.saveParameters(values)) {
+    if (auto error = controller::saveParameters(*controller_, folder_, values)) { // with tool.tbl when due
         refuse(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
         return false;
     }

@@ -1,0 +1,104 @@
+#include "core/files/MachineFileRead.h"
+
+#include <cerrno>
+#include <cstring>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace m350::files {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string notRegular(mode_t mode) {
+    const char* what = S_ISDIR(mode)                     ? "a folder"
+                       : S_ISFIFO(mode)                  ? "a FIFO (named pipe)"
+                       : S_ISCHR(mode) || S_ISBLK(mode)  ? "a device"
+                       : S_ISSOCK(mode)                  ? "a socket"
+                                                         : "something";
+    return std::string("it is ") + what + ", not a regular file";
+}
+
+std::string tooBig(std::uintmax_t bytes, std::uintmax_t most) {
+    return std::to_string(bytes) + " bytes is more than a machine file can be (" + std::to_string(most / (1024 * 1024)) +
+           " MiB)";
+}
+
+class Descriptor {
+public:
+    explicit Descriptor(int fd) : fd_(fd) {}
+    Descriptor(const Descriptor&) = delete;
+    Descriptor& operator=(const Descriptor&) = delete;
+    ~Descriptor() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    int get() const { return fd_; }
+
+private:
+    int fd_;
+};
+
+} // namespace
+
+std::optional<std::string> readMachineFile(const fs::path& file, std::string& text, std::uintmax_t mostBytes) {
+    text.clear();
+    // stat before open: a device is refused without being opened at all
+    struct stat info {};
+    if (::stat(file.c_str(), &info) != 0) {
+        return std::strerror(errno);
+    }
+    if (!S_ISREG(info.st_mode)) {
+        return notRegular(info.st_mode);
+    }
+    // O_NONBLOCK: should the file be swapped for a FIFO after the stat, opening it does not wait
+    const Descriptor fd(::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
+    if (fd.get() < 0) {
+        return std::strerror(errno);
+    }
+    if (::fstat(fd.get(), &info) != 0) {
+        return std::strerror(errno);
+    }
+    if (!S_ISREG(info.st_mode)) {
+        return notRegular(info.st_mode);
+    }
+    const auto size = static_cast<std::uintmax_t>(info.st_size);
+    if (size > mostBytes) {
+        return tooBig(size, mostBytes);
+    }
+    text.resize(static_cast<std::size_t>(size));
+    std::size_t done = 0;
+    for (;;) {
+        if (done == text.size()) {
+            if (done > mostBytes) {
+                text.clear();
+                return tooBig(done, mostBytes);
+            }
+            // it may have grown since the fstat: read on, in steps, up to the bound
+            text.resize(text.size() + 64 * 1024);
+        }
+        const ssize_t n = ::read(fd.get(), text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) {
+            continue;
+        }
+        if (n < 0) {
+            const std::string why = std::strerror(errno);
+            text.clear();
+            return why;
+        }
+        if (n == 0) {
+            break;
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    text.resize(done);
+    if (done > mostBytes) {
+        text.clear();
+        return tooBig(done, mostBytes);
+    }
+    return std::nullopt;
+}
+
+} // namespace m350::files
