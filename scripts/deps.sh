@@ -10,6 +10,7 @@ REQUIRED_PACKAGES=(
     qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     qt6-charts-dev libqt6opengl6-dev  # Qt Charts (the breakage monitor); its CMake config needs Qt6OpenGL
     xvfb xauth
+    dpkg-dev  # dpkg-shlibdeps: the Debian package's Depends (cpack -G DEB, tests/install)
     clang libclang-rt-dev  # clang++ and libclang_rt.fuzzer-x86_64.a: the fuzz step of scripts/test.sh
     fonts-wqy-microhei fonts-dejavu-core
 )

@@ -8,8 +8,9 @@ set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
+# each stage says when it starts (seconds since this script began): where CI's time goes
 header() {
-    printf '\n==== %s ====\n' "$*"
+    printf '\n==== %s ==== (%d s)\n' "$*" "$SECONDS"
 }
 
 header "Dependencies"

@@ -1,6 +1,7 @@
 #include "core/config/MachineConfig.h"
 #include "core/tools/ToolLifeFile.h"
 #include "core/common/Numeric.h"
+#include "core/common/ResourceDirectory.h"
 
 #include "core/params/FanucParameters.h"
 #include "core/config/CallCodeParameters.h"
@@ -524,16 +525,7 @@ std::string ConfigError::where() const {
 }
 
 std::string bundledMachinesDirectory() {
-    fs::path installed = fs::path("/proc/self/exe");
-    std::error_code ec;
-    fs::path exe = fs::read_symlink(installed, ec);
-    if (!ec) {
-        fs::path share = exe.parent_path().parent_path() / "share" / "m350" / "machines";
-        if (fs::is_directory(share)) {
-            return share.string();
-        }
-    }
-    return std::string(M350_RESOURCE_DIR) + "/machines";
+    return resourceDirectory() + "/machines";
 }
 
 } // namespace m350::config

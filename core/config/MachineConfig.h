@@ -113,7 +113,7 @@ struct ConfigError {
 
 std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& folder);
 
-// The bundled machine folders: beside the executable when installed, else in the source tree.
+// The bundled machine folders: resourceDirectory()/machines (installed share folder or source tree).
 std::string bundledMachinesDirectory();
 inline constexpr const char* kDefaultMachine = "m350-linear16";
 // The environment variable naming one more folder machine.toml's libraries may lie in.

@@ -1,4 +1,5 @@
 #include "core/params/ParameterCatalogue.h"
+#include "core/common/ResourceDirectory.h"
 
 #include <algorithm>
 #include <array>
@@ -193,7 +194,7 @@ std::variant<ParameterCatalogue, std::string> ParameterCatalogue::load(const std
 }
 
 std::string ParameterCatalogue::bundledPath() {
-    return std::string(M350_RESOURCE_DIR) + "/parameters/m350-parameters.tsv";
+    return resourceDirectory() + "/parameters/m350-parameters.tsv";
 }
 
 const std::variant<ParameterCatalogue, std::string>& ParameterCatalogue::bundled() {
