@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 namespace {
 
@@ -17,7 +18,7 @@ using namespace m350;
 namespace fs = std::filesystem;
 
 fs::path tableFile(const std::string& name, const std::string& text) {
-    fs::path path = fs::path(::testing::TempDir()) / ("m350_reload_" + name + ".tbl");
+    fs::path path = fs::path(::testing::TempDir()) / ("m350_reload_" + name + "_" + std::to_string(::getpid()) + ".tbl");
     std::ofstream(path, std::ios::binary) << text;
     return path;
 }

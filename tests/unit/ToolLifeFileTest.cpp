@@ -39,7 +39,8 @@ std::string readText(const fs::path& file) {
 }
 
 fs::path freshMachine(const std::string& name) {
-    fs::path folder = fs::path(::testing::TempDir()) / ("m350_toollife_" + name);
+    // the process id in the name: test runs of other checkouts share /tmp
+    fs::path folder = fs::path(::testing::TempDir()) / ("m350_toollife_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(folder);
     fs::copy(config::bundledMachinesDirectory() + "/fanuc-0i", folder);
     return folder;
