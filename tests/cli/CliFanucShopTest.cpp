@@ -40,7 +40,7 @@ TEST_F(CliTest, AVariableFollowedByEIsTwoWordsOnTheM350Too) {
     EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
     json j = output(r);
     EXPECT_EQ(j["alarm"].value("message_id", ""), "improper_address") << r.out;
-    EXPECT_EQ(j["alarm"].value("column", 0), 17) << r.out;
+    EXPECT_EQ(j["alarm"].value("column", 0), 14) << r.out; // the E of `Y#32E2.`
     EXPECT_NE(r.err.find("E2: the M350 has no address E"), std::string::npos) << r.err;
 }
 
