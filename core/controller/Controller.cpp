@@ -422,8 +422,8 @@ namespace {
 
 // Holds in a row, with the machine standing still between them, that an unattended run answers
 // with START before it takes them for a loop only an operator can end (`N1 M00` / `GOTO1`). Far
-// above any program's inspection stops in a loop, and reached in a fraction of a second.
-constexpr int kMostIdleHolds = 1000;
+// above any program's inspection stops in a loop, and reached in about a second (4 s of virtual time).
+constexpr int kMostIdleHolds = 20000;
 
 } // namespace
 

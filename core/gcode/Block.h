@@ -3,7 +3,6 @@
 #include "core/gcode/Diagnostic.h"
 #include "core/gcode/Expression.h"
 
-#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -25,10 +24,6 @@ static_assert(sizeof(Word) == 16, "a G1 line has four or five words: keep them s
 
 // Columns past this are stored as this (no line of a real program comes near it).
 inline constexpr std::uint32_t kMaxWordColumn = (1u << 24) - 1;
-// The longest program line read: a longer one is refused at its line, unread, so a line's tokens,
-// words and echoes stay bounded (a 100 MB line took 4-6 GB). 256 times LinuxCNC's LINELEN (255)
-// and far beyond any CAM output, which keeps to a few hundred bytes; see README "Program files".
-inline constexpr std::size_t kMostLineBytes = std::size_t{64} * 1024;
 inline std::uint32_t wordColumn(std::uint32_t column) {
     return column < kMaxWordColumn ? column : kMaxWordColumn;
 }

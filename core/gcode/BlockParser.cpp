@@ -38,6 +38,16 @@ std::optional<Block> BlockParser::parse(std::string_view line, std::uint32_t lin
     return std::nullopt;
 }
 
+namespace {
+
+// The longest program line read: a longer one is refused at its line, unread, so a line's tokens,
+// words and echoes stay bounded (a 100 MB line took 4-6 GB). 4096 times LinuxCNC's LINELEN (255)
+// and far beyond any CAM output, which keeps to a few hundred bytes (README, m350-sim). The plain
+// path never sees such a line: it declines lines above kLongestPlainLine.
+constexpr std::size_t kMostLineBytes = std::size_t{1024} * 1024;
+
+} // namespace
+
 std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint32_t lineNumber) {
     if (line.size() > kMostLineBytes) {
         diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, fileName_, lineNumber, 1,

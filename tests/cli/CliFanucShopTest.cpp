@@ -34,11 +34,14 @@ TEST_F(CliTest, AVariableFollowedByEIsTwoWordsOnTheM350Too) {
     write("move.nc", "#31=1.#32=2.\nG90G1X#31Y#32E2.F100\nM30\n");
     ProcessResult check = sim({"check", "move.nc"});
     EXPECT_EQ(check.exitStatus, kExitOk) << check.err;
+    // issue 26: the M350 has no address E, so the word E2. (at its own column) is an alarm, not
+    // dropped in silence
     ProcessResult r = sim({"run", "move.nc"});
-    EXPECT_EQ(r.exitStatus, kExitOk) << r.err;
+    EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
     json j = output(r);
-    EXPECT_DOUBLE_EQ(j["work"].value("X", 0.0), 1.0) << r.out;
-    EXPECT_DOUBLE_EQ(j["work"].value("Y", 0.0), 2.0) << r.out;
+    EXPECT_EQ(j["alarm"].value("message_id", ""), "improper_address") << r.out;
+    EXPECT_EQ(j["alarm"].value("column", 0), 14) << r.out; // the E of `Y#32E2.`
+    EXPECT_NE(r.err.find("E2: the M350 has no address E"), std::string::npos) << r.err;
 }
 
 TEST_F(CliTest, ExponentNotationStaysRefusedAtItsLineAndColumn) {

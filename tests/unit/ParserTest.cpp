@@ -351,7 +351,7 @@ TEST(Parser, OProgramsSplitIntoUnitsWithTheirOwnLabels) {
                           "N1 G1 X1\n"     // 4
                           "M99\n"          // 5
                           "O200\n"         // 6
-                          "N1 G1 X2\n"     // 7
+                          "N1 G1 X2 M9\n"  // 7 (M9: not a loop without an exit)
                           "N2 GOTO1\n"     // 8
                           "M99");          // 9
     const Program& g = p.program;
