@@ -1,5 +1,7 @@
 #include "core/files/AtomicFile.h"
 
+#include "core/files/FileDescriptor.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -20,26 +22,6 @@ constexpr std::size_t kChunk = 64 * 1024;
 std::string failure(const fs::path& file, const char* what) {
     return file.string() + ": " + what + ": " + std::strerror(errno);
 }
-
-// Closes the descriptor on every path out of writeFileAtomically.
-class Descriptor {
-public:
-    explicit Descriptor(int fd) : fd_(fd) {}
-    Descriptor(const Descriptor&) = delete;
-    Descriptor& operator=(const Descriptor&) = delete;
-    ~Descriptor() {
-        if (fd_ >= 0) ::close(fd_);
-    }
-    int get() const { return fd_; }
-    bool close() {
-        int fd = fd_;
-        fd_ = -1;
-        return ::close(fd) == 0;
-    }
-
-private:
-    int fd_;
-};
 
 std::optional<std::string> writeAll(int fd, const fs::path& temp, std::string_view content,
                                     const AtomicWriteHooks& hooks) {
@@ -106,7 +88,7 @@ std::optional<std::string> writeFileAtomically(const fs::path& path, std::string
     auto created = createTempBeside(path, mode);
     if (auto* error = std::get_if<std::string>(&created)) return *error;
     const fs::path temp = std::get<TempFile>(created).path;
-    Descriptor file(std::get<TempFile>(created).descriptor);
+    FileDescriptor file(std::get<TempFile>(created).descriptor);
     if (auto error = writeAll(file.get(), temp, content, hooks)) {
         ::unlink(temp.c_str());
         return error;
@@ -129,7 +111,7 @@ std::optional<std::string> writeFileAtomically(const fs::path& path, std::string
 }
 
 std::optional<std::string> syncFolder(const fs::path& folder) {
-    Descriptor directory(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+    FileDescriptor directory(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
     if (directory.get() < 0 || ::fsync(directory.get()) != 0) return failure(folder, "cannot sync the folder");
     return std::nullopt;
 }

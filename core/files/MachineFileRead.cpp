@@ -1,5 +1,7 @@
 #include "core/files/MachineFileRead.h"
 
+#include "core/files/FileDescriptor.h"
+
 #include <cerrno>
 #include <cstring>
 
@@ -27,20 +29,6 @@ std::string tooBig(std::uintmax_t bytes, std::uintmax_t most) {
            " MiB)";
 }
 
-class Descriptor {
-public:
-    explicit Descriptor(int fd) : fd_(fd) {}
-    Descriptor(const Descriptor&) = delete;
-    Descriptor& operator=(const Descriptor&) = delete;
-    ~Descriptor() {
-        if (fd_ >= 0) ::close(fd_);
-    }
-    int get() const { return fd_; }
-
-private:
-    int fd_;
-};
-
 } // namespace
 
 std::optional<std::string> readMachineFile(const fs::path& file, std::string& text, std::uintmax_t mostBytes) {
@@ -54,7 +42,7 @@ std::optional<std::string> readMachineFile(const fs::path& file, std::string& te
         return notRegular(info.st_mode);
     }
     // O_NONBLOCK: should the file be swapped for a FIFO after the stat, opening it does not wait
-    const Descriptor fd(::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
+    const FileDescriptor fd(::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
     if (fd.get() < 0) {
         return std::strerror(errno);
     }
