@@ -69,7 +69,7 @@ private:
     void checkGotos(const Program& program, const ProgramUnit& unit);
     void checkCalls(const Program& program);
     void report(const Program& program, const Block& block, std::uint32_t column, DiagnosticKind kind,
-                std::string message);
+                const Message& words);
 
     const Dialect& dialect_;
     std::size_t dropAbove_ = kProgramKeptWholeUpTo;
