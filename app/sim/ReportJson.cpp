@@ -4,15 +4,33 @@
 
 #include "core/common/Alarm.h"
 
+#include <algorithm>
+
 namespace m350::sim {
 
 namespace {
 
+// The message's id and arguments (said in English, as `message` is), only for a message of the
+// table: the other objects keep the contract's keys as they were.
+void addMessageId(nlohmann::json& object, const std::string& id, const std::vector<std::string>& arguments) {
+    if (id.empty()) {
+        return;
+    }
+    object["message_id"] = id;
+    nlohmann::json said = nlohmann::json::array();
+    for (const std::string& argument : arguments) {
+        said.push_back(argumentIn(argument, MessageLanguage::English));
+    }
+    object["message_arguments"] = std::move(said);
+}
+
 nlohmann::json firstError(const std::vector<gcode::Diagnostic>& diagnostics) {
     for (const gcode::Diagnostic& d : diagnostics) {
         if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
-            return {{"code", d.unreadable ? "file_error" : "syntax_error"}, {"message", d.message}, {"file", d.file}, {"line", d.line},
-                    {"column", d.column}};
+            nlohmann::json error{{"code", d.unreadable ? "file_error" : "syntax_error"}, {"message", d.message}, {"file", d.file}, {"line", d.line},
+                                 {"column", d.column}};
+            addMessageId(error, d.messageId, d.messageArguments);
+            return error;
         }
     }
     return nullptr;
@@ -35,6 +53,7 @@ nlohmann::json diagnosticsJson(const std::vector<gcode::Diagnostic>& diagnostics
         if (d.omitted > 0) {
             list.back()["omitted"] = d.omitted;
         }
+        addMessageId(list.back(), d.messageId, d.messageArguments);
     }
     return list;
 }
@@ -51,14 +70,7 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
         const Alarm& a = *report.alarm;
         j["alarm"] = {{"code", std::string(alarmKey(a.code))}, {"message", a.message}, {"file", a.file},
                       {"line", a.line}, {"column", a.column}};
-        if (!a.messageId.empty()) { // only then: the other alarms keep the contract's keys as they were
-            j["alarm"]["message_id"] = a.messageId;
-            nlohmann::json arguments = nlohmann::json::array();
-            for (const std::string& argument : a.messageArguments) {
-                arguments.push_back(argumentIn(argument, MessageLanguage::English)); // as `message` says it
-            }
-            j["alarm"]["message_arguments"] = std::move(arguments);
-        }
+        addMessageId(j["alarm"], a.messageId, a.messageArguments);
     } else if (report.status == controller::RunStatus::Error) {
         j["alarm"] = firstError(report.diagnostics);
     } else {
@@ -100,6 +112,20 @@ nlohmann::json reportJson(const controller::RunReport& report, controller::Contr
     }
     j["outputs"] = report.outputs;
     j["messages"] = report.messages;
+    if (std::any_of(report.messageWords.begin(), report.messageWords.end(), [](const Message& m) { return !m.id.empty(); })) {
+        // only then: the contract's keys stay as they were; null for a line of the program's own words
+        nlohmann::json ids = nlohmann::json::array();
+        for (const Message& m : report.messageWords) {
+            if (m.id.empty()) {
+                ids.push_back(nullptr);
+                continue;
+            }
+            nlohmann::json said = nlohmann::json::object();
+            addMessageId(said, m.id, m.arguments);
+            ids.push_back(std::move(said));
+        }
+        j["message_ids"] = std::move(ids);
+    }
     if (report.messagesOmitted > 0) { // only then: the contract's keys stay as they were
         j["messages_omitted"] = report.messagesOmitted;
     }

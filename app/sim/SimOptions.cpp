@@ -117,13 +117,19 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
             ->check(nonEmptyPath);
         cmd->add_option("--dialect", o.dialect, "m350 or fanuc")->check(CLI::IsMember({"m350", "fanuc"}));
     };
-    auto addRunOptions = [&](CLI::App* cmd) {
+    auto addLanguageOption = [&](CLI::App* cmd) {
         cmd->add_option_function<std::string>(
                "--lang",
-               [&o](const std::string& name) { parseMessageLanguage(name, o.language); },
-               "language of the alarm lines on stderr: en (default) or zh_CN, as the panel says them; the JSON "
-               "keeps its English message and gives the message_id")
+               [&o](const std::string& name) {
+                   parseMessageLanguage(name, o.language);
+                   o.languageGiven = true;
+               },
+               "language of the alarm and finding lines on stderr: en (default) or zh_CN, as the panel says "
+               "them; the JSON keeps its English message and gives the message_id")
             ->check(CLI::IsMember({"en", "zh_CN"}));
+    };
+    auto addRunOptions = [&](CLI::App* cmd) {
+        addLanguageOption(cmd);
         addMachineOptions(cmd);
         cmd->add_option("--param", params, "set parameter N to V (N=V), repeatable");
         cmd->add_option("--var", vars, "set variable #N to V before the run (N=V), repeatable");
@@ -197,6 +203,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     CLI::App* check = app.add_subcommand("check", "parse only and list every error");
     check->add_option("PROGRAM", o.program, "program file (.nc)")->required();
     addMachineOptions(check);
+    addLanguageOption(check);
     CLI::App* import = app.add_subcommand("import", "make a machine folder from a copy of an M350's system disk");
     import->add_option("BACKUP_DIR", o.backupDir, "the backup: the folder that holds setting, slib-g.nc ...")
         ->required()

@@ -27,6 +27,7 @@ struct SimOptions {
     bool toolsAsTable = false;                // tools --tbl: tool.tbl text instead of JSON
     std::optional<int> confirmTool;           // --confirm-tool: after the run, RESET and enter the spindle's tool
     MessageLanguage language = MessageLanguage::English; // --lang: the alarm lines on stderr
+    bool languageGiven = false; // --lang was given: the run's notices are said on stderr too
     controller::RunSettings settings;
 };
 

@@ -44,9 +44,9 @@ std::string machineFolder(const sim::SimOptions& o) {
     return config::bundledMachinesDirectory() + "/" + name;
 }
 
-void printDiagnostics(const std::vector<gcode::Diagnostic>& diagnostics) {
+void printDiagnostics(const std::vector<gcode::Diagnostic>& diagnostics, MessageLanguage language) {
     for (const gcode::Diagnostic& d : diagnostics) {
-        std::cerr << gcode::formatDiagnostic(d) << '\n';
+        std::cerr << gcode::formatDiagnostic(d, language) << '\n';
     }
 }
 
@@ -66,8 +66,8 @@ int fail(const std::string& code, const std::string& message, const std::string&
 }
 
 // check's layout: every finding on stderr, {"status", "diagnostics"} on stdout.
-int checkResult(const std::vector<gcode::Diagnostic>& diagnostics) {
-    printDiagnostics(diagnostics);
+int checkResult(const std::vector<gcode::Diagnostic>& diagnostics, MessageLanguage language) {
+    printDiagnostics(diagnostics, language);
     bool errors = false;
     for (const gcode::Diagnostic& d : diagnostics) {
         errors |= d.severity == gcode::Severity::Error;
@@ -88,7 +88,7 @@ int check(controller::Controller& controller, const sim::SimOptions& o) {
                 .findings();
         diagnostics.insert(diagnostics.end(), findings.begin(), findings.end());
     }
-    return checkResult(diagnostics);
+    return checkResult(diagnostics, o.language);
 }
 
 // What the command line asks of this machine: a tool it can hold, variables a run may set. Said
@@ -230,7 +230,8 @@ int runCommand(int argc, char** argv) {
             unreadable = "cannot open program: it is a folder, FIFO or device, not a program file";
         }
         if (unreadable && o.command == sim::SimOptions::Command::Check) {
-            return checkResult({{gcode::Severity::Error, gcode::DiagnosticKind::Syntax, o.program, 0, 0, *unreadable}});
+            return checkResult({{gcode::Severity::Error, gcode::DiagnosticKind::Syntax, o.program, 0, 0, *unreadable}},
+                               o.language);
         }
         if (unreadable) {
             return fail("file_error", *unreadable, o.program);
@@ -281,7 +282,7 @@ int runCommand(int argc, char** argv) {
     if (auto lifeProblem = saveToolLife(controller, config::MachineFolder(folder))) {
         outputProblem = lifeProblem;
     }
-    printDiagnostics(report.diagnostics);
+    printDiagnostics(report.diagnostics, o.language);
     if (report.alarm) {
         const Alarm& a = *report.alarm;
         // an alarm with no line (a native homing alarm names params.toml) is not placed at :0:0
@@ -294,6 +295,13 @@ int runCommand(int argc, char** argv) {
         }
     }
     printFallenTools(report.fallenTools, o.language);
+    if (o.languageGiven) { // the run's notices, said in the language asked for (the JSON keeps the English)
+        for (std::size_t i = 0; i < report.messages.size(); ++i) {
+            const bool said = i < report.messageWords.size() && !report.messageWords[i].id.empty();
+            std::cerr << "m350-sim: " << (o.language == MessageLanguage::Chinese ? "信息: " : "message: ")
+                      << (said ? report.messageWords[i].in(o.language) : report.messages[i]) << '\n';
+        }
+    }
     if (auto error = sim::exportTools(controller, o)) {
         std::cerr << "m350-sim: --tools-out: " << *error << '\n';
         report.status = controller::RunStatus::Error;

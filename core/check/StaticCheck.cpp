@@ -172,19 +172,15 @@ private:
         return std::nullopt;
     }
 
-    static std::string cycleText(const std::vector<std::int32_t>& chain) {
+    static Message cycleText(const std::vector<std::int32_t>& chain) {
         if (chain.size() == 1) {
-            return "O" + std::to_string(chain.front()) +
-                   " calls itself on every pass: the calls nest until the nesting limit (no IF, WHILE or GOTO "
-                   "could stop them)";
+            return message("lint_calls_itself", {std::to_string(chain.front())});
         }
         std::string path;
         for (std::int32_t n : chain) {
             path += "O" + std::to_string(n) + " -> ";
         }
-        return "O" + std::to_string(chain.front()) + " calls itself through " + path + "O" +
-               std::to_string(chain.front()) +
-               " on every pass: the calls nest until the nesting limit (no IF, WHILE or GOTO could stop them)";
+        return message("lint_calls_itself_through", {std::to_string(chain.front()), path});
     }
 
     // A finding repeats the program's own text (a code, a chain of program numbers, an evaluator's
@@ -194,12 +190,21 @@ private:
                         location_.line, column, clipEcho(std::move(message))});
     }
 
+    void report(std::uint32_t column, const Message& words) {
+        out_.push_back(gcode::diagnostic(gcode::Severity::Error, gcode::DiagnosticKind::Syntax,
+                                         program_.fileName(location_), location_.line, column, words));
+    }
+
     // Runs `what`; a MacroError it throws is a finding.
     template <typename F> void tryEvaluate(F what) {
         try {
             what();
         } catch (const macro::MacroError& e) {
-            report(e.column, e.message);
+            if (e.messageId.empty()) {
+                report(e.column, e.message);
+            } else {
+                report(e.column, Message{e.messageId, e.messageArguments});
+            }
         }
     }
 
@@ -236,8 +241,8 @@ private:
     int variableNumber(ExprId variable) {
         int number = evaluator_.variableNumber(variable);
         if (variables_.describe(number).kind == macro::VariableKind::Undefined) {
-            throw macro::MacroError{AlarmCode::UndefinedVariable, variables_.undefinedText(number),
-                                    program_.expressions[variable].column};
+            throw macro::MacroError::of(AlarmCode::UndefinedVariable, variables_.undefinedWords(number),
+                                        program_.expressions[variable].column);
         }
         return number;
     }
@@ -252,10 +257,8 @@ private:
         tryEvaluate([&] {
             int number = variableNumber(a.index);
             if (variables_.describe(number).readOnly) {
-                throw macro::MacroError{AlarmCode::ReadOnlyVariable,
-                                        "cannot write " + variables_.describeText(number) +
-                                            ": it is read-only",
-                                        a.column};
+                throw macro::MacroError::of(AlarmCode::ReadOnlyVariable,
+                                            message("variable_read_only", {variables_.describeWords(number)}), a.column);
             }
         });
     }
@@ -285,21 +288,21 @@ private:
         std::array<bool, 26> seen{};
         for (const Word& w : b.words) {
             if (w.letter == 'G' && !interp::ModalInterpreter::knowsGCode(dialect_, coordinates_, w.number)) {
-                report(w.column, "G" + formatCode(w.number) + ": not a G code this machine knows");
+                report(w.column, message("unknown_g_code", {formatCode(w.number)}));
             } else if (w.letter == 'G' && std::abs(w.number - 54.1) < 1e-6) {
                 additionalSystem(b);
             }
             if (w.letter == 'M' && w.isNumber() && std::abs(w.number - std::round(w.number)) < 1e-9 &&
                 std::abs(w.number) < 1e9 && !interp::ModalInterpreter::knowsMCode(dialect_, roundToInt(w.number))) {
-                report(w.column, "M" + formatCode(w.number) + ": " +
-                                     interp::ModalInterpreter::unknownMCodeText(dialect_, roundToInt(w.number)));
+                report(w.column, interp::ModalInterpreter::unknownMCodeWords(dialect_, roundToInt(w.number),
+                                                                             "M" + formatCode(w.number)));
             }
             if (w.letter == 'G' || w.letter == 'M' || w.letter < 'A' || w.letter > 'Z') {
                 continue;
             }
             bool& twice = seen[static_cast<std::size_t>(w.letter - 'A')];
             if (twice) {
-                report(w.column, std::string(1, w.letter) + " appears twice in one block");
+                report(w.column, message("word_twice", {std::string(1, w.letter)}));
             }
             twice = true;
         }
@@ -310,9 +313,7 @@ private:
         for (const Word& p : b.words) {
             if (p.letter == 'P' && p.isNumber() &&
                 (p.number != std::round(p.number) || p.number < 1 || p.number > coordinates_.additionalSystems)) {
-                report(p.column, "P" + formatCode(p.number) + ": G54.1 selects the additional work systems P1-P" +
-                                     std::to_string(coordinates_.additionalSystems) +
-                                     " of this machine (machine.toml [coordinates] additional_systems)");
+                report(p.column, message("g54_1_range", {formatCode(p.number), std::to_string(coordinates_.additionalSystems)}));
             }
         }
     }

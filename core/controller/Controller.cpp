@@ -27,6 +27,14 @@ std::string shortSeconds(double seconds) {
     return text;
 }
 
+// What stopped the program (ModalInterpreter::stopForOperator), in both languages.
+std::string stopWords(const std::string& what) {
+    if (what == "M00 program stop") return bilingual(what, "M00 程序停止");
+    if (what == "M01 optional stop") return bilingual(what, "M01 选择停止");
+    if (what == "G04 P-1 waits for START") return bilingual(what, "G04 P-1 等待循环启动");
+    return what;
+}
+
 } // namespace
 
 Controller::Controller(config::MachineConfig config, RunSettings settings)
@@ -89,7 +97,7 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
 Controller::~Controller() = default;
 
 OperatorPanel Controller::newOperatorPanel() {
-    auto post = [this](std::string text) { status_.postMessage(std::move(text)); };
+    auto post = [this](const Message& words) { status_.postMessage(words); };
     OperatorDialog::Context dialog{
         post,
         [this](std::string text) {
@@ -292,7 +300,7 @@ void Controller::checkSetterRapid(const machine::MachineEvent& event) {
                                 "the setter, only G31 may touch it",
                             0, "setter_crash", {tool, mm}};
     if (state_ == RunState::Alarm || state_ == RunState::EStop) {
-        status_.postMessage(crash.message); // the first alarm stays the one shown
+        status_.postMessage(Message{crash.messageId, crash.messageArguments}); // the first alarm stays the one shown
         return;
     }
     throw crash;
@@ -325,10 +333,7 @@ void Controller::checkToolWord(const macro::EvaluatedBlock& block) const {
     if (block.mCodes.has(61)) {
         const auto m61 = std::find_if(block.words.begin(), block.words.end(),
                                       [](const macro::WordValue& w) { return w.letter == 'M' && w.value == 61.0; });
-        throw macro::MacroError{AlarmCode::InvalidWord,
-                                "M61 sets the tool number without a change: this machine's magazine knows what the "
-                                "spindle holds, change tools with M06",
-                                m61->column};
+        throw macro::MacroError::of(AlarmCode::InvalidWord, message("m61_with_magazine"), m61->column);
     }
     if (block.gCodes.has(65) || block.gCodes.has(66) || block.otherCodes) {
         return;
@@ -366,7 +371,7 @@ void Controller::noteStopInChange() {
     const macro::Value target = m350 ? variable(1504) : macro::Value::of(lastToolWord_);
     const int recorded = m350 ? saturatingInt(config_.parameters.get(param::kCurrentTool)) : fanucSpindleTool_;
     if (toolDoubt_.stoppedInChange(target.vacant ? 0 : roundToInt(target.number), recorded)) {
-        status_.postMessage(toolDoubt_.notice().message);
+        status_.postMessage(toolDoubt_.notice());
     }
 }
 
@@ -402,7 +407,11 @@ void Controller::feedMagazine(const machine::MachineEvent& event) {
     try {
         magazine_.onMachineEvent(event);
     } catch (const macro::MacroError& error) {
-        status_.postMessage(error.message);
+        if (error.messageId.empty()) {
+            status_.postMessage(error.message);
+        } else {
+            status_.postMessage(Message{error.messageId, error.messageArguments});
+        }
     }
 }
 
@@ -437,20 +446,21 @@ RunReport Controller::run() {
     std::optional<machine::Axes> heldAt; // where the machine stood at the last hold
     int idleHolds = 0;                   // holds in a row with no move between them
     while (state_ == RunState::Running) {
-        const auto where = [this] {
-            return " (" + status_.source().file + ":" + std::to_string(status_.source().line) + ")";
-        };
         if (estopAt != kNever && estopAt < pauseAt) {
             advance(std::max(0.0, estopAt - displayTime_));
             if (state_ == RunState::Running || state_ == RunState::Hold) {
-                status_.postMessage("E-STOP pressed at " + shortSeconds(estopAt - runStartedAt_) + " s" + where());
+                status_.postMessage(message("notice_estop_pressed", {shortSeconds(estopAt - runStartedAt_),
+                                                                      status_.source().file,
+                                                                      std::to_string(status_.source().line)}));
                 emergencyStop();
             }
             estopAt = kNever;
         } else if (pauseAt != kNever) {
             advance(std::max(0.0, pauseAt - displayTime_));
             if (state_ == RunState::Running) {
-                status_.postMessage("PAUSE pressed at " + shortSeconds(pauseAt - runStartedAt_) + " s" + where());
+                status_.postMessage(message("notice_pause_pressed", {shortSeconds(pauseAt - runStartedAt_),
+                                                                      status_.source().file,
+                                                                      std::to_string(status_.source().line)}));
                 hold();
             }
             pauseAt = kNever;
@@ -458,7 +468,6 @@ RunReport Controller::run() {
             advance(std::numeric_limits<double>::infinity());
         }
         if (state_ == RunState::Hold) {
-            const std::string stop = programStop_.empty() ? std::string("PAUSE") : programStop_;
             // `N1 M00` / `GOTO1` holds forever and costs no virtual time: holds over and over with
             // the machine standing still wait on an operator this run has not got
             const machine::Axes at = machine_.position();
@@ -472,7 +481,9 @@ RunReport Controller::run() {
                                      source.file, source.line, 1));
                 break;
             }
-            status_.postMessage(stop + ": START pressed (run without an operator)");
+            status_.postMessage(programStop_.empty()
+                                    ? message("notice_start_after_pause")
+                                    : programStopWords_);
             displayTime_ = machine_.time(); // START comes the moment the machine stands still
             resume();
         }
@@ -537,9 +548,9 @@ Controller::RunState Controller::advance(double seconds) {
     while (state_ == RunState::Running && executor_->state() == macro::Executor::State::Running &&
            machine_.time() <= displayTime_ && !panel_.dialogPending()) {
         if (passedTimeLimit(timeLimitFrom_)) {
+            const std::vector<std::string> numbers = timeLimitNumbers(timeLimitFrom_);
             executor_->raise(AlarmCode::SimulatedTimeLimit,
-                             timeLimitText("the program", timeLimitFrom_) +
-                                 " without ending (a loop waiting for an input that never comes?)");
+                             message(numbers.size() > 1 ? "time_limit_program_since" : "time_limit_program", numbers));
             break;
         }
         tool = stepOnce(tool);
@@ -573,7 +584,7 @@ int Controller::stepOnce(int toolBefore) {
     }
     if (auto stop = interp_.takeStop()) {
         if (inEventHook_) {
-            status_.postMessage(stop->what + ": START pressed (a hook file runs to its end)");
+            status_.postMessage(message("notice_start_in_hook", {stopWords(stop->what)}));
         } else {
             stopForOperator(*stop);
         }
@@ -647,6 +658,9 @@ void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& s
     }
     TraceSource where{program_.fileName(stop.location), stop.location.line};
     programStop_ = stop.what + " (" + where.file + ":" + std::to_string(where.line) + ")";
+    const std::string place = " (" + where.file + ":" + std::to_string(where.line) + ")";
+    programStopWords_ = message("notice_start_after_stop",
+                                {bilingual(programStop_, argumentIn(stopWords(stop.what), MessageLanguage::Chinese) + place)});
     setState(RunState::Hold);
     if (status_.trace()) {
         status_.trace()->programStop(machine_.time(), stop.what, where);

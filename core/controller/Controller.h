@@ -244,7 +244,7 @@ private:
     machine::SimulatedMachine::Remainder interruptMotion(double t, bool immediate);
     // "the program ran 3600 s of simulated time without ending (stopped at 7250.5 s)": what ran
     // over the limit, and the machine time it stopped at.
-    std::string timeLimitText(const std::string& what, double since) const final;
+    std::vector<std::string> timeLimitNumbers(double since) const final;
     double runStartedAt() const final { return runStartedAt_; }
     void raiseAlarm(const Alarm& alarm) final;
     bool axisHomed(int axis) const final { return homing_.homed(axis); }
@@ -301,6 +301,7 @@ private:
     machine::SimulatedMachine::Remainder remainder_; // what a hold cut short
     double liftedBy_ = 0.0;                          // Z lift of the hold (param 91, 70)
     std::string programStop_;                        // see programStop()
+    Message programStopWords_;                       // the same by message id, set with it
     std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     StatusBoard status_;      // before devices_, which writes to its trace

@@ -3,6 +3,7 @@
 #include "core/controller/Controller.h"
 
 #include "core/common/Numeric.h"
+#include "core/macro/Evaluator.h"
 
 #include "core/params/AxisSetup.h"
 #include "core/params/ParameterNumbers.h"
@@ -119,11 +120,10 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
         return std::nullopt;
     case VariableKind::Dialog: panel_.showDialog(value, text); return std::nullopt;
     case VariableKind::Alarm: {
-        auto n = static_cast<long long>(roundToInt(value));
-        return "macro alarm " + std::to_string(3000 + n) + (text.empty() ? "" : ": " + std::string(text));
+        return macro::macroAlarmWords(value, text).english();
     }
     case VariableKind::StopMessage:
-        status_.postMessage(std::string(text) + " (#3006 stop: continued in a headless run)");
+        status_.postMessage(message("notice_3006_continued", {std::string(text)}));
         return std::nullopt;
     default: return "cannot write " + store_.map().describeText(number);
     }

@@ -104,11 +104,12 @@ std::optional<Alarm> Homing::homeAxis(int axis, double since) {
     for (int cycle = 1; cycle < cycles; ++cycle) {
         if (run_.passedTimeLimit(since)) {
             // param 106 = 1e9 asked for hours of approaches: the runaway guard holds here too
-            return Alarm{AlarmCode::SimulatedTimeLimit,
-                         run_.timeLimitText(std::string(1, name) + " homing", since) + " (the limit) after " +
-                             std::to_string(cycle) + " of " + std::to_string(cycles) +
-                             " approaches: parameter 106 (homing cycle count) is 1 to 5 on the panel",
-                         parametersFile_, 0, 0};
+            std::vector<std::string> numbers = run_.timeLimitNumbers(since);
+            const char* id = numbers.size() > 1 ? "time_limit_homing_since" : "time_limit_homing";
+            numbers.insert(numbers.begin(), std::string(1, name));
+            numbers.push_back(std::to_string(cycle));
+            numbers.push_back(std::to_string(cycles));
+            return Alarm::of(AlarmCode::SimulatedTimeLimit, message(id, numbers), parametersFile_);
         }
         moveBy(-direction * kBackOff, slow);
         machine_.setInput(pin, 1 - active);

@@ -142,7 +142,10 @@ std::optional<Alarm> Controller::runHookProgramToEnd(const std::string& name) {
     const double startedAt = machine_.time();
     while (executor_->state() == macro::Executor::State::Running) {
         if (passedTimeLimit(startedAt)) {
-            executor_->raise(AlarmCode::SimulatedTimeLimit, timeLimitText(name, startedAt) + " (the limit)");
+            std::vector<std::string> numbers = timeLimitNumbers(startedAt);
+            const char* id = numbers.size() > 1 ? "time_limit_hook_since" : "time_limit_hook";
+            numbers.insert(numbers.begin(), name);
+            executor_->raise(AlarmCode::SimulatedTimeLimit, message(id, numbers));
             break;
         }
         stepOnce();
@@ -200,10 +203,10 @@ void Controller::homingStarts(int axis) {
 
 std::optional<macro::MachineAccess::HomingFailure> Controller::builtInHoming(int axis) {
     if (scan_.scanning()) {
-        return HomingFailure{AlarmCode::NotHomed, "homing (M98 P501) cannot be scanned: start after it"};
+        return HomingFailure{AlarmCode::NotHomed, message("homing_not_scanned")};
     }
     if (auto alarm = homing_.homeAxis(axis, timeLimitFrom_)) {
-        return HomingFailure{alarm->code, alarm->message};
+        return HomingFailure{alarm->code, Message{alarm->messageId, alarm->messageArguments}};
     }
     return std::nullopt;
 }

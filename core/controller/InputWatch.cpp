@@ -70,8 +70,8 @@ void InputWatch::pressStartIfAwaited(const params::PortAssignment& key, int pin,
         return;
     }
     machine.pulseInput(pin, key.activeLevel, kKeyPress);
-    context_.post("外部启动 extern START (" + params::inputName(pin) + ") pressed at " +
-                  context_.program.fileName(where) + ":" + std::to_string(where.line) + " (run without an operator)");
+    context_.post(message("notice_extern_start", {params::inputName(pin), context_.program.fileName(where),
+                                                  std::to_string(where.line)}));
 }
 
 void InputWatch::pressExternStart() {

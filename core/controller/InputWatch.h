@@ -37,7 +37,7 @@ public:
         const std::unique_ptr<TraceWriter>& trace;
         std::function<std::optional<gcode::SourceLocation>()> location; // the line executing now
         std::function<std::string(int)> describeInput; // "IN11 (tool released)" in both languages (bilingual())
-        std::function<void(std::string)> post;                            // a line of the run's messages
+        std::function<void(const Message&)> post;                         // a line of the run's messages
     };
 
     explicit InputWatch(Context context) : context_(std::move(context)) {}

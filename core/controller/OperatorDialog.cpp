@@ -12,7 +12,7 @@ constexpr double kMessageOnly = -5000; // `#1505 = -5000(text)`: a text to show,
 
 void OperatorDialog::show(double kind, std::string_view text, bool operatorAnswers) {
     if (!operatorAnswers) {
-        context_.post(std::string(text) + " [dialog answered: Enter]");
+        context_.post(message("notice_dialog_enter", {std::string(text)}));
         answer_ = 1;
         return;
     }
@@ -29,7 +29,7 @@ void OperatorDialog::answer(bool enter) {
         return;
     }
     answer_ = enter ? 1 : 0;
-    context_.post(pending_->text + (enter ? " [dialog answered: Enter]" : " [dialog answered: Esc]"));
+    context_.post(message(enter ? "notice_dialog_enter" : "notice_dialog_esc", {pending_->text}));
     pending_.reset();
     context_.catchUpClock(); // the clock ran while the operator read it
 }

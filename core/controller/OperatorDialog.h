@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <functional>
 #include <optional>
 #include <string>
@@ -19,7 +21,7 @@ public:
     };
     // What the dialog tells the controller that owns it; all of it outlives the dialog.
     struct Context {
-        std::function<void(std::string)> post;       // a line of the run's messages
+        std::function<void(const Message&)> post;    // a line of the run's messages
         std::function<void(std::string)> showStatus; // the status line (as #1503 sets it) and a message
         std::function<void(std::string)> trace;      // a trace message at the line executing now
         std::function<void()> catchUpClock;          // the machine's clock to the display's

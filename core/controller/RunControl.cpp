@@ -22,9 +22,9 @@ void Controller::hold() {
         // allows feed hold again
         if (!holdPending_) {
             holdPending_ = true;
-            status_.postMessage("PAUSE held back: #3004 = " + std::to_string(static_cast<int>(operation_.value(4))) +
-                                " keeps feed hold off (" + status_.source().file + ":" +
-                                std::to_string(status_.source().line) + "); the run holds where it allows it again");
+            status_.postMessage(message("notice_pause_held_back", {std::to_string(static_cast<int>(operation_.value(4))),
+                                                                   status_.source().file,
+                                                                   std::to_string(status_.source().line)}));
         }
         return;
     }
@@ -159,13 +159,14 @@ void Controller::stopAfterStep(std::uint64_t machineBlocksBefore) {
     const std::string place = where.file + ":" + std::to_string(where.line);
     if (holdPending_ && !operation_.feedHoldSuppressed()) {
         holdPending_ = false;
-        status_.postMessage("PAUSE takes effect: #3004 allows feed hold again (" + place + ")");
+        status_.postMessage(message("notice_pause_takes_effect", {where.file, std::to_string(where.line)}));
         hold();
         return;
     }
     if (singleBlock_ && executor_->machineBlocksExecuted() != machineBlocksBefore &&
         !operation_.singleBlockSuppressed()) {
         programStop_ = "single block stop (" + place + ")";
+        programStopWords_ = message("notice_start_after_stop", {bilingual(programStop_, "单段停止 (" + place + ")")});
         setState(RunState::Hold);
         if (status_.trace()) {
             status_.trace()->programStop(machine_.time(), "single block stop", where);
@@ -207,13 +208,16 @@ bool Controller::passedTimeLimit(double since) {
     return true;
 }
 
-std::string Controller::timeLimitText(const std::string& what, double since) const {
-    std::ostringstream text;
-    text << what << " ran " << settings_.maxSimTime << " s of simulated time";
-    if (since != 0.0) {
-        text << " (from " << since << " s to " << machine_.time() << " s of the machine's clock)";
+std::vector<std::string> Controller::timeLimitNumbers(double since) const {
+    auto said = [](double seconds) {
+        std::ostringstream text;
+        text << seconds;
+        return text.str();
+    };
+    if (since == 0.0) {
+        return {said(settings_.maxSimTime)};
     }
-    return text.str();
+    return {said(settings_.maxSimTime), said(since), said(machine_.time())};
 }
 
 } // namespace m350::controller

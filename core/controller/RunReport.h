@@ -36,6 +36,7 @@ struct RunReport {
     std::array<int, machine::kOutputCount> outputs{};
     std::vector<std::string> messages; // bounded (MessageLog): the first and the last
     std::uint64_t messagesOmitted = 0;  // left out between them
+    std::vector<Message> messageWords;  // the same by message id (an empty id: the program's own words)
     double simTime = 0.0;
     std::uint64_t blocks = 0;
 };

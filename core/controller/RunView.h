@@ -4,6 +4,7 @@
 #include "core/controller/RunState.h"
 
 #include <string>
+#include <vector>
 
 namespace m350::controller {
 
@@ -23,8 +24,9 @@ public:
     // True once what started at machine time `since` ran longer than --max-sim-time; the motion
     // under way is then stopped where the limit found it.
     virtual bool passedTimeLimit(double since) = 0;
-    // "the program ran 3600 s of simulated time (from ...)": what ran over the limit.
-    virtual std::string timeLimitText(const std::string& what, double since) const = 0;
+    // The runaway guard's numbers, as its messages say them: the limit in simulated seconds, and
+    // when `since` is not 0 the machine's clock from `since` to now.
+    virtual std::vector<std::string> timeLimitNumbers(double since) const = 0;
 
 protected:
     ~RunView() = default;

@@ -59,8 +59,28 @@ void StatusBoard::postMessage(std::string text) {
     messages_.add(std::move(text));
 }
 
+void StatusBoard::postMessage(const Message& words) {
+    std::string text = words.english();
+    if (trace_) {
+        trace_->message(context_.machine.time(), text, source());
+    }
+    messages_.add(std::move(text), words);
+}
+
+void StatusBoard::postMessage(const Alarm& notice) {
+    if (notice.messageId.empty()) {
+        postMessage(notice.message);
+        return;
+    }
+    std::string text = clipEcho(notice.message); // as the alarm says it
+    if (trace_) {
+        trace_->message(context_.machine.time(), text, source());
+    }
+    messages_.add(std::move(text), Message{notice.messageId, notice.messageArguments});
+}
+
 void StatusBoard::warn(const Alarm& warning) {
-    postMessage(warning.message);
+    postMessage(warning);
     statusLine_ = warning.message;
     notice_ = warning;
     warnings_.push_back(warning);
@@ -102,6 +122,7 @@ RunReport StatusBoard::report() const {
         out.outputs[static_cast<std::size_t>(port - 1)] = context_.machine.output(port);
     }
     out.messages = messages_.list();
+    out.messageWords = messages_.words();
     out.messagesOmitted = messages_.omitted();
     out.simTime = context_.machine.time();
     out.blocks = context_.executor ? context_.executor->blocksExecuted() : 0;

@@ -65,6 +65,9 @@ public:
     std::optional<gcode::SourceLocation> location() const;
     // A message for the log (clipped like an echo), in the trace too.
     void postMessage(std::string text);
+    void postMessage(const Message& words);
+    // An alarm's words as a line of the messages (by its id when it has one).
+    void postMessage(const Alarm& notice);
     const MessageLog& messages() const { return messages_; }
     // #1503: the status line's text, until #1503 = 1000 clears it.
     void showStatus(std::string text) {

@@ -67,7 +67,7 @@ std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint3
     tokens_.insert(tokens_.end(), kLookahead, end);
     pos_ = 0;
     depth_ = 0;
-    lastLint_.clear();
+    lastLint_ = {};
     assignments_.clear();
     Block block;
     block.location = {fileIndex_, lineNumber, tokens_.front().column};
@@ -76,7 +76,7 @@ std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint3
     } catch (const Failure&) {
         return brokenLoopBlock(block);
     }
-    block.suspect = !lastLint_.empty();
+    block.suspect = !lastLint_.message.empty();
     bool empty = block.label < 0 && block.programNumber < 0 && block.control == Control::None &&
                  assignments_.empty() && block.words.empty();
     if (empty) {
@@ -113,14 +113,33 @@ void BlockParser::fail(std::uint32_t column, std::string message) {
 }
 
 void BlockParser::lint(std::uint32_t column, std::string message) {
-    lastLint_ = clipEcho(std::move(message));
-    diagnostics_.push_back({Severity::Error, DiagnosticKind::Lint, fileName_, lineNumber_, column, lastLint_});
+    diagnostics_.push_back(
+        {Severity::Error, DiagnosticKind::Lint, fileName_, lineNumber_, column, clipEcho(std::move(message))});
+    lastLint_ = diagnostics_.back();
 }
 
 // A finding that changes nothing: the line runs as written.
 void BlockParser::note(std::uint32_t column, std::string message) {
     diagnostics_.push_back(
         {Severity::Warning, DiagnosticKind::Lint, fileName_, lineNumber_, column, clipEcho(std::move(message))});
+}
+
+void BlockParser::fail(const Token& at, const Message& words) {
+    fail(at.column, words);
+}
+
+void BlockParser::fail(std::uint32_t column, const Message& words) {
+    diagnostics_.push_back(diagnostic(Severity::Error, DiagnosticKind::Syntax, fileName_, lineNumber_, column, words));
+    throw Failure{};
+}
+
+void BlockParser::lint(std::uint32_t column, const Message& words) {
+    diagnostics_.push_back(diagnostic(Severity::Error, DiagnosticKind::Lint, fileName_, lineNumber_, column, words));
+    lastLint_ = diagnostics_.back();
+}
+
+void BlockParser::note(std::uint32_t column, const Message& words) {
+    diagnostics_.push_back(diagnostic(Severity::Warning, DiagnosticKind::Lint, fileName_, lineNumber_, column, words));
 }
 
 bool BlockParser::lastLineLabelled() const {
@@ -139,6 +158,14 @@ std::string BlockParser::source(const Token& token) const {
     return std::string(line_.substr(token.offset, token.length));
 }
 
+std::string BlockParser::describeWords(const Token& token) const {
+    switch (token.kind) {
+    case TokenKind::End: return bilingual("the end of the line", "行尾");
+    case TokenKind::Comment: return bilingual("a comment", "注释");
+    default: return "'" + source(token) + "'";
+    }
+}
+
 std::string BlockParser::describe(const Token& token) const {
     switch (token.kind) {
     case TokenKind::End: return "the end of the line";
@@ -153,9 +180,9 @@ void BlockParser::parseStatement(Block& block) {
             break; // its text is read from the line itself (parsePrintItems), not as tokens
         }
         if (isNote(t.issue)) {
-            note(t.column, Lexer(dialect_).issueMessage(t, line_));
+            note(t.column, Lexer(dialect_).issueWords(t, line_));
         } else if (t.issue != TokenIssue::None) {
-            fail(t, Lexer(dialect_).issueMessage(t, line_));
+            fail(t, Lexer(dialect_).issueWords(t, line_));
         }
         if (t.kind == TokenKind::Comment && t.issue == TokenIssue::None && block.comment.empty()) {
             block.comment = storage_.text.store(commentText(t, line_));
@@ -172,7 +199,7 @@ void BlockParser::parseStatement(Block& block) {
         next();
         skipComments();
         if (peek().kind != TokenKind::End) {
-            fail(peek(), "nothing may follow '%' on its line");
+            fail(peek(), message("parse_after_percent"));
         }
         return;
     }
@@ -183,17 +210,15 @@ void BlockParser::parseStatement(Block& block) {
     if (peek().kind == TokenKind::Letter && peek().letter == 'O') {
         const Token& o = next();
         if (peek().kind != TokenKind::Number || peek().number != std::floor(peek().number)) {
-            fail(o, "O must be followed by a whole program number, e.g. O20000");
+            fail(o, message("parse_o_number"));
         }
         if (peek().number > kMaxLabel) { // would be rounded into another program's number
-            fail(peek(), "O" + source(peek()) + ": program numbers run from 0 to " + std::to_string(kMaxLabel) +
-                             " (8 digits)");
+            fail(peek(), message("parse_o_range", {source(peek()), std::to_string(kMaxLabel)}));
         }
         block.programNumber = static_cast<std::int32_t>(next().number);
         skipComments();
         if (peek().kind != TokenKind::End) {
-            fail(peek(), "unexpected " + describe(peek()) + " after the program number O" +
-                             std::to_string(block.programNumber));
+            fail(peek(), message("parse_after_o", {describeWords(peek()), std::to_string(block.programNumber)}));
         }
         return;
     }
@@ -238,7 +263,7 @@ void BlockParser::parseStatement(Block& block) {
         if (block.control != Control::None) {
             skipComments();
             if (peek().kind != TokenKind::End) {
-                fail(peek(), "unexpected " + describe(peek()) + " after " + std::string(keywordSpelling(k.keyword)));
+                fail(peek(), message("parse_unexpected_after", {describeWords(peek()), std::string(keywordSpelling(k.keyword))}));
             }
             return;
         }
@@ -248,7 +273,7 @@ void BlockParser::parseStatement(Block& block) {
 
 ExprId BlockParser::parseCondition(const char* statement) {
     if (!dialect_.unbracketedConditions && peek().kind != TokenKind::LBracket) {
-        fail(peek(), std::string("the ") + statement + " condition must be in brackets: " + statement + " [...]");
+        fail(peek(), message("parse_condition_brackets", {statement}));
     }
     return parseExpression();
 }
@@ -266,17 +291,17 @@ void BlockParser::parseIf(Block& block) {
         next();
         block.control = Control::IfThen;
         if (peek().kind != TokenKind::Hash) {
-            fail(peek(), "THEN must be followed by an assignment such as #1 = 0, found " + describe(peek()));
+            fail(peek(), message("parse_then_assignment", {describeWords(peek())}));
         }
         assignments_.push_back(parseAssignment());
     } else {
-        fail(peek(), "IF condition must be followed by GOTOn or THEN, found " + describe(peek()));
+        fail(peek(), message("parse_if_goto_then", {describeWords(peek())}));
     }
     while (peek().kind == TokenKind::Comment) {
         next();
     }
     if (peek().kind != TokenKind::End) {
-        fail(peek(), "unexpected " + describe(peek()) + " after the IF statement");
+        fail(peek(), message("parse_after_if", {describeWords(peek())}));
     }
 }
 
@@ -287,7 +312,7 @@ void BlockParser::parseWhile(Block& block) {
         failStrayBracket(peek(), "WHILE condition");
     }
     if (!atKeyword(Keyword::Do)) {
-        fail(peek(), "WHILE condition must be followed by DOm, found " + describe(peek()));
+        fail(peek(), message("parse_while_do", {describeWords(peek())}));
     }
     next();
     block.loopId = parseLoopId("DO");
@@ -295,7 +320,7 @@ void BlockParser::parseWhile(Block& block) {
         next();
     }
     if (peek().kind != TokenKind::End) {
-        fail(peek(), "unexpected " + describe(peek()) + " after WHILE ... DO" + std::to_string(block.loopId));
+        fail(peek(), message("parse_after_while", {describeWords(peek()), std::to_string(block.loopId)}));
     }
 }
 
@@ -303,11 +328,10 @@ void BlockParser::parseWhile(Block& block) {
 // another label.
 std::int32_t BlockParser::labelNumber(const Token& number, const char* what) {
     if (number.number != std::floor(number.number)) {
-        fail(number, "a sequence number must be a whole number");
+        fail(number, message("parse_n_whole"));
     }
     if (number.number > kMaxLabel) {
-        fail(number, what + source(number) + ": sequence numbers run from 0 to " + std::to_string(kMaxLabel) +
-                         " (8 digits)");
+        fail(number, message("parse_n_range", {what + source(number), std::to_string(kMaxLabel)}));
     }
     return static_cast<std::int32_t>(number.number);
 }
@@ -318,8 +342,8 @@ ExprId BlockParser::parseGotoTarget() {
     const ExprNode& value = pool_[target];
     if (value.kind == ExprKind::Number && (value.number < 0 || value.number > kMaxLabel)) {
         const Token& last = tokens_[pos_ - 1];
-        fail(first, "GOTO" + std::string(line_.substr(first.offset, last.offset + last.length - first.offset)) +
-                        ": sequence numbers run from 0 to " + std::to_string(kMaxLabel) + " (8 digits)");
+        fail(first, message("parse_n_range", {"GOTO" + std::string(line_.substr(first.offset, last.offset + last.length - first.offset)),
+                                             std::to_string(kMaxLabel)}));
     }
     return target;
 }
@@ -327,14 +351,13 @@ ExprId BlockParser::parseGotoTarget() {
 int BlockParser::parseLoopId(const char* keyword) {
     const Token& t = peek();
     if (t.kind != TokenKind::Number || t.number != std::floor(t.number)) {
-        fail(t, std::string(keyword) + " must be followed by a loop number 1-" + std::to_string(dialect_.maxLoopId) +
-                    ", found " + describe(t));
+        fail(t, message("parse_loop_number", {keyword, std::to_string(dialect_.maxLoopId), describeWords(t)}));
     }
     next();
     int id = saturatingInt(t.number);
     if (id < 1 || id > dialect_.maxLoopId) {
-        fail(t, std::string(keyword) + std::to_string(id) + ": loop numbers run from 1 to " +
-                    std::to_string(dialect_.maxLoopId) + " in the " + std::string(dialect_.name) + " dialect");
+        fail(t, message("parse_loop_range", {std::string(keyword) + std::to_string(id), std::to_string(dialect_.maxLoopId),
+                                      std::string(dialect_.name)}));
     }
     return id;
 }
@@ -364,8 +387,8 @@ void BlockParser::parseItems(Block& block) {
         }
         case TokenKind::RBracket: failStrayBracket(t, "this block");
         case TokenKind::Keyword:
-            fail(t, std::string(keywordSpelling(t.keyword)) + " must start the block (after the N number)");
-        default: fail(t, "unexpected " + describe(t) + ": expected an address word such as G1 or X10");
+            fail(t, message("parse_keyword_first", {std::string(keywordSpelling(t.keyword))}));
+        default: fail(t, message("parse_expected_word", {describeWords(t)}));
         }
     }
 }
@@ -380,15 +403,15 @@ Assignment BlockParser::parseAssignment() {
             if (tokens_[i].kind == TokenKind::RBracket) {
                 pos_ = i;
                 std::string hint = hashBracketHint(hashToken, i);
-                fail(tokens_[i], "unbalanced ']' in the variable being assigned" +
-                                     (hint.empty() ? std::string() : " (did you mean " + hint + "?)"));
+                fail(tokens_[i], hint.empty() ? message("parse_bracket_assigned")
+                                             : message("parse_bracket_assigned_hint", {hint}));
             }
         }
-        fail(peek(), "expected '=' after the variable, found " + describe(peek()));
+        fail(peek(), message("parse_expected_assign", {describeWords(peek())}));
     }
     next();
     if (peek().kind == TokenKind::End || peek().kind == TokenKind::Comment) {
-        fail(peek(), "expected a value after '=', found " + describe(peek()));
+        fail(peek(), message("parse_expected_assigned_value", {describeWords(peek())}));
     }
     a.value = parseExpression();
     if (peek().kind == TokenKind::Comment) {
@@ -409,7 +432,7 @@ Word BlockParser::parseWord() {
     TokenKind k = peek().kind;
     if (k != TokenKind::Number && k != TokenKind::Hash && k != TokenKind::LBracket && k != TokenKind::Minus &&
         k != TokenKind::Plus) {
-        fail(letter, std::string("address ") + letter.letter + " needs a value, found " + describe(peek()));
+        fail(letter, message("parse_address_value", {std::string(1, letter.letter), describeWords(peek())}));
     }
     auto arithmeticAhead = [this] {
         TokenKind k = peek().kind;
@@ -423,7 +446,7 @@ Word BlockParser::parseWord() {
         w.value = parseAdditive();
     }
     if (arithmeticAhead()) {
-        fail(peek(), "arithmetic in an address value needs brackets: " + std::string(1, letter.letter) + "[...]");
+        fail(peek(), message("parse_address_arithmetic", {std::string(1, letter.letter)}));
     }
     return w;
 }

@@ -54,7 +54,7 @@ public:
     bool plainPath() const { return plainPath_; }
 
     // The lint finding of the block just parsed (empty when none).
-    const std::string& lastLint() const { return lastLint_; }
+    const Diagnostic& lastLint() const { return lastLint_; }
 
     // Whether the line just parsed, when it had an error, begins with an N or O number (a line a
     // jump or a call may reach).
@@ -77,6 +77,12 @@ private:
     [[noreturn]] void fail(std::uint32_t column, std::string message);
     void lint(std::uint32_t column, std::string message);
     void note(std::uint32_t column, std::string message);
+    // describe() as a message's argument: the words in both languages.
+    std::string describeWords(const Token& token) const;
+    [[noreturn]] void fail(const Token& at, const Message& words);
+    [[noreturn]] void fail(std::uint32_t column, const Message& words);
+    void lint(std::uint32_t column, const Message& words);
+    void note(std::uint32_t column, const Message& words);
 
     void parseStatement(Block& block);
     void parseIf(Block& block);
@@ -143,7 +149,7 @@ private:
     BlockCommentState comment_;
     SourceLocation commentStart_;
     int depth_ = 0; // nesting of brackets, signs and indirections in the current expression
-    std::string lastLint_;
+    Diagnostic lastLint_; // its message empty when the line has no lint finding
     bool plainPath_ = true;
 };
 

@@ -5,6 +5,8 @@
 #include "core/common/Numeric.h"
 
 #include <cmath>
+#include <string_view>
+#include <utility>
 
 namespace m350::gcode {
 
@@ -94,10 +96,27 @@ void BlockParser::checkExponents() {
         }
         const Token& end = tokens_[exponent];
         std::string written(line_.substr(tokens_[i].offset, end.offset + end.length - tokens_[i].offset));
-        fail(tokens_[i], "'" + written + "' is not a G-code number: there is no exponent (E) notation; " +
-                             "write the number in digits");
+        fail(tokens_[i], message("parse_exponent", {written}));
     }
 }
+
+namespace {
+
+// Where a stray ']' stands, in both languages (failStrayBracket's context).
+std::string bracketContext(std::string_view context) {
+    static const std::pair<std::string_view, std::string_view> words[] = {
+        {"IF condition", "IF条件"},        {"WHILE condition", "WHILE条件"}, {"this block", "本程序段"},
+        {"this assignment", "本赋值语句"}, {"this expression", "本表达式"},
+    };
+    for (const auto& [english, chinese] : words) {
+        if (english == context) {
+            return bilingual(english, chinese);
+        }
+    }
+    return std::string(context);
+}
+
+} // namespace
 
 void BlockParser::failStrayBracket(const Token& at, const char* context) {
     std::size_t stray = pos_;
@@ -113,7 +132,8 @@ void BlockParser::failStrayBracket(const Token& at, const char* context) {
         }
     }
     std::string hint = hashBracketHint(open, stray);
-    fail(at, std::string("unbalanced ']' in ") + context + (hint.empty() ? "" : " (did you mean " + hint + "?)"));
+    const std::string where = bracketContext(context);
+    fail(at, hint.empty() ? message("parse_bracket", {where}) : message("parse_bracket_hint", {where, hint}));
 }
 
 // For `#1552+#20-1]` or `[#1520+#13-1] NE 0]`: the indirect reference the author most likely meant,
@@ -161,8 +181,7 @@ void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, 
                 meant = meant.substr(0, 2) + "[" + meant.substr(2) + "]";
             }
             std::string b = std::to_string(table.base);
-            lint(word.column, written + " adds the value of #" + b + " instead of indexing " +
-                                  std::string(table.what) + " (did you mean " + meant + "?)");
+            lint(word.column, message("lint_table_added", {written, b, bilingual(table.what, table.chinese), meant}));
             return;
         }
     }

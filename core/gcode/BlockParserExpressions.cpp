@@ -37,9 +37,9 @@ std::optional<BinaryOp> BlockParser::comparisonAhead() {
     if (t.kind == TokenKind::Compare) {
         if (!dialect_.cStyleComparisons) {
             const char* word[] = {"EQ", "NE", "LT", "GT", "LE", "GE"};
-            fail(t, "'" + source(t) + "' is not " + std::string(dialect_.name) +
-                                                        " syntax: write " +
-                                                        word[static_cast<int>(t.compare) - static_cast<int>(BinaryOp::Eq)]);
+            fail(t, message("parse_comparison_spelling",
+                            {source(t), std::string(dialect_.name),
+                             word[static_cast<int>(t.compare) - static_cast<int>(BinaryOp::Eq)]}));
         }
         return t.compare;
     }
@@ -60,10 +60,8 @@ std::optional<BinaryOp> BlockParser::additiveAhead() {
     }
     if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::Or || t.keyword == Keyword::Xor)) {
         if (!dialect_.bitwiseKeywords) {
-            fail(t, std::string(keywordSpelling(t.keyword)) + " is not an " + std::string(dialect_.name) +
-                        " operator" +
-                        (t.keyword == Keyword::Or ? ": write OR as [a]+[b]"
-                                                  : ": write XOR of two conditions as [[a]+[b]]==1"));
+            fail(t, message(t.keyword == Keyword::Or ? "parse_no_or" : "parse_no_xor",
+                            {std::string(keywordSpelling(t.keyword)), std::string(dialect_.name)}));
         }
         return t.keyword == Keyword::Or ? BinaryOp::Or : BinaryOp::Xor;
     }
@@ -80,10 +78,8 @@ std::optional<BinaryOp> BlockParser::termAhead() {
     }
     if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::And || t.keyword == Keyword::Mod)) {
         if (!dialect_.bitwiseKeywords) {
-            fail(t, std::string(keywordSpelling(t.keyword)) + " is not an " + std::string(dialect_.name) +
-                        " operator" +
-                        (t.keyword == Keyword::And ? ": write AND as [a]*[b]"
-                                                   : ": write a MOD b as [a-FIX[a/b]*b]"));
+            fail(t, message(t.keyword == Keyword::And ? "parse_no_and" : "parse_no_mod",
+                            {std::string(keywordSpelling(t.keyword)), std::string(dialect_.name)}));
         }
         return t.keyword == Keyword::And ? BinaryOp::And : BinaryOp::Mod;
     }
@@ -121,7 +117,7 @@ ExprId BlockParser::parseTerm() {
 BlockParser::Nesting BlockParser::enterNesting(const Token& at) {
     constexpr int kMaxNesting = 64;
     if (++depth_ > kMaxNesting) {
-        fail(at, "expression nested more than " + std::to_string(kMaxNesting) + " levels deep");
+        fail(at, message("parse_nesting", {std::to_string(kMaxNesting)}));
     }
     return Nesting{depth_};
 }
@@ -171,15 +167,14 @@ ExprId BlockParser::parsePrimary() {
     case TokenKind::RBracket: failStrayBracket(t, "this expression");
     default: break;
     }
-    fail(t, "expected a value (a number, #variable or [expression]), found " + describe(t));
+    fail(t, message("parse_expected_value", {describeWords(t)}));
 }
 
 ExprId BlockParser::parseBracketed() {
     const Token& open = next();
     ExprId inner = parseExpression();
     if (peek().kind != TokenKind::RBracket) {
-        fail(peek(), "missing ']' to close the '[' at column " + std::to_string(open.column) + ", found " +
-                         describe(peek()));
+        fail(peek(), message("parse_missing_bracket", {std::to_string(open.column), describeWords(peek())}));
     }
     next();
     return inner;
@@ -195,7 +190,7 @@ ExprId BlockParser::parseVariable() {
     if (t.kind == TokenKind::Number) {
         next();
         if (t.number != std::floor(t.number)) {
-            fail(t, "variable numbers are whole numbers: #" + source(t) + " (did you mean #[...]?)");
+            fail(t, message("parse_variable_whole", {source(t)}));
         }
         n.number = t.number;
     } else if (t.kind == TokenKind::LBracket) {
@@ -203,7 +198,7 @@ ExprId BlockParser::parseVariable() {
     } else if (t.kind == TokenKind::Hash) {
         n.lhs = parseVariable();
     } else {
-        fail(t, "'#' must be followed by a variable number or [expression], found " + describe(t));
+        fail(t, message("parse_hash_value", {describeWords(t)}));
     }
     return pool_.add(n);
 }
@@ -214,11 +209,10 @@ ExprId BlockParser::parseFunction() {
     bool extended = f == Function::Asin || f == Function::Acos || f == Function::Ln || f == Function::Exp ||
                     f == Function::Bin || f == Function::Bcd;
     if (extended && !dialect_.extendedFunctions) {
-        fail(name, std::string(keywordSpelling(name.keyword)) + " is not a function of the " +
-                       std::string(dialect_.name) + " dialect");
+        fail(name, message("parse_no_function", {std::string(keywordSpelling(name.keyword)), std::string(dialect_.name)}));
     }
     if (peek().kind != TokenKind::LBracket) {
-        fail(peek(), std::string(keywordSpelling(name.keyword)) + " must be followed by [argument]");
+        fail(peek(), message("parse_function_argument", {std::string(keywordSpelling(name.keyword))}));
     }
     ExprNode n;
     n.kind = ExprKind::Function;
@@ -231,8 +225,8 @@ ExprId BlockParser::parseFunction() {
         n.rhs = parseExpression();
     }
     if (peek().kind != TokenKind::RBracket) {
-        fail(peek(), "missing ']' to close " + std::string(keywordSpelling(name.keyword)) + "[ at column " +
-                         std::to_string(open.column) + ", found " + describe(peek()));
+        fail(peek(), message("parse_missing_bracket_of", {std::string(keywordSpelling(name.keyword)),
+                                                          std::to_string(open.column), describeWords(peek())}));
     }
     next();
     // ATAN[a]/[b] where the dialect has it; otherwise ATAN[x] has one argument (the evaluator
@@ -240,7 +234,7 @@ ExprId BlockParser::parseFunction() {
     if (f == Function::Atan && n.rhs == kNoExpr && peek().kind == TokenKind::Slash &&
         peek(1).kind == TokenKind::LBracket) {
         if (!dialect_.atanSlash) {
-            fail(peek(), "ATAN[a]/[b] is not " + std::string(dialect_.name) + " syntax: write ATAN[a,b]");
+            fail(peek(), message("parse_atan_slash", {std::string(dialect_.name)}));
         }
         next();
         n.rhs = parseBracketed();

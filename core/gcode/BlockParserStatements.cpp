@@ -52,11 +52,10 @@ void BlockParser::parseDeviceStatement(Block& block, const Token& keyword) {
     const std::string name = keywordSpelling(keyword.keyword);
     const bool output = keyword.keyword >= Keyword::Popen && keyword.keyword <= Keyword::Bprnt;
     if (output && !dialect_.externalOutput) {
-        fail(keyword, name + " is FANUC's external output: the " + std::string(dialect_.name) +
-                          " dialect has no POPEN, DPRNT, BPRNT or PCLOS");
+        fail(keyword, message("parse_no_external_output", {name, std::string(dialect_.name)}));
     }
     if (!output && !dialect_.modbusStatements) {
-        fail(keyword, name + " is an M350 Modbus statement: the " + std::string(dialect_.name) + " dialect has none");
+        fail(keyword, message("parse_no_modbus", {name, std::string(dialect_.name)}));
     }
     switch (keyword.keyword) {
     case Keyword::Popen:
@@ -66,7 +65,7 @@ void BlockParser::parseDeviceStatement(Block& block, const Token& keyword) {
             next();
         }
         if (peek().kind != TokenKind::End) {
-            fail(peek(), "unexpected " + describe(peek()) + " after " + name + " (it stands alone in its block)");
+            fail(peek(), message("parse_after_alone", {describeWords(peek()), name}));
         }
         return;
     case Keyword::Dprnt:
@@ -80,10 +79,11 @@ void BlockParser::parseDeviceStatement(Block& block, const Token& keyword) {
 void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
     const bool binary = keyword.keyword == Keyword::Bprnt;
     const std::string name = binary ? "BPRNT" : "DPRNT";
-    const std::string formatHint = binary ? "#100[3] (3 decimals)" : "#100[53] (5 integer digits, 3 decimals)";
+    const std::string formatHint = binary ? bilingual("#100[3] (3 decimals)", "#100[3]（3位小数）")
+                                          : bilingual("#100[53] (5 integer digits, 3 decimals)", "#100[53]（5位整数，3位小数）");
     const std::size_t size = line_.size();
     std::size_t i = keyword.offset + keyword.length;
-    auto failAt = [&](std::size_t offset, const std::string& message) { fail(columnAt(offset), message); };
+    auto failAt = [&](std::size_t offset, const Message& words) { fail(columnAt(offset), words); };
     auto skipBlanks = [&] {
         while (i < size && isBlank(line_[i])) {
             ++i;
@@ -91,7 +91,7 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
     };
     skipBlanks();
     if (i >= size || line_[i] != '[') {
-        failAt(i, name + " must be followed by [...], e.g. " + name + "[X" + formatHint.substr(0, formatHint.find(' ')) + "]");
+        failAt(i, message("print_needs_brackets", {name, binary ? "#100[3]" : "#100[53]"}));
     }
     const std::size_t open = i++;
     std::vector<StatementItem> items;
@@ -106,7 +106,7 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
     while (true) {
         skipBlanks();
         if (i >= size) {
-            failAt(i, "missing ']' to close " + name + "[ at column " + std::to_string(columnAt(open)));
+            failAt(i, message("print_missing_bracket", {name, std::to_string(columnAt(open))}));
         }
         const char c = line_[i];
         if (c == ']') {
@@ -123,16 +123,16 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
                 if (isDigit(line_[i])) {
                     number = number * 10 + (line_[i] - '0');
                     if (++digits > 5) {
-                        failAt(hash, name + ": variable numbers have at most 5 digits");
+                        failAt(hash, message("print_variable_digits", {name}));
                     }
                 }
                 ++i;
             }
             if (digits == 0) {
-                failAt(i, name + " prints a variable by its number: '#' must be followed by digits, e.g. " + formatHint);
+                failAt(i, message("print_hash_digits", {name, formatHint}));
             }
             if (i >= size || line_[i] != '[') {
-                failAt(i, "#" + std::to_string(number) + " needs its digit format in brackets: " + formatHint);
+                failAt(i, message("print_format_brackets", {std::to_string(number), formatHint}));
             }
             const std::size_t formatOpen = i++;
             int format[2] = {0, 0};
@@ -140,23 +140,21 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
             for (int k = 0; k < wanted; ++k) {
                 skipBlanks();
                 if (i >= size || !isDigit(line_[i])) {
-                    failAt(i, "the digit format of #" + std::to_string(number) + " is " +
-                                  (binary ? "one digit, [c]: c decimals" : "two digits, [cd]: c integer digits, d decimals"));
+                    failAt(i, message(binary ? "print_format_bprnt" : "print_format_dprnt", {std::to_string(number)}));
                 }
                 format[k] = line_[i++] - '0';
             }
             skipBlanks();
             if (i >= size || line_[i] != ']') {
-                failAt(i, "missing ']' to close the digit format of #" + std::to_string(number) + " at column " +
-                              std::to_string(columnAt(formatOpen)));
+                failAt(i, message("print_format_missing_bracket", {std::to_string(number), std::to_string(columnAt(formatOpen))}));
             }
             ++i;
             const int integerDigits = binary ? 0 : format[0];
             const int fractionDigits = binary ? format[0] : format[1];
             if (integerDigits + fractionDigits > kMaxPrintDigits || (!binary && integerDigits + fractionDigits == 0)) {
-                failAt(formatOpen, "#" + std::to_string(number) + "[" + std::to_string(format[0]) +
-                                       (binary ? "" : std::to_string(format[1])) + "]: " +
-                                       (binary ? "at most 8 decimals" : "c + d must be 1 to 8 digits"));
+                failAt(formatOpen, message(binary ? "print_digits_bprnt" : "print_digits_dprnt",
+                                           {std::to_string(number),
+                                            std::to_string(format[0]) + (binary ? "" : std::to_string(format[1]))}));
             }
             ExprNode variable;
             variable.kind = ExprKind::Variable;
@@ -171,8 +169,7 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
             while (end < size && (static_cast<unsigned char>(line_[end]) & 0xC0) == 0x80) {
                 ++end;
             }
-            failAt(i, name + " text may hold capital letters, digits, * (a space) and + - / . , : = ? ! $ & @ < > ' \"; found '" +
-                          std::string(line_.substr(i, end - i)) + "'");
+            failAt(i, message("print_text_character", {name, std::string(line_.substr(i, end - i))}));
         }
         if (text.empty()) {
             textStart = i;
@@ -185,7 +182,7 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
     if (i < size && line_[i] == '(') {
         const std::size_t close = line_.find(')', i);
         if (close == std::string_view::npos) {
-            failAt(i, "comment '(' is not closed with ')'");
+            failAt(i, message("lex_unclosed_comment"));
         }
         if (block.comment.empty()) {
             block.comment = storage_.text.store(line_.substr(i + 1, close - i - 1));
@@ -194,7 +191,7 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
         skipBlanks();
     }
     if (i < size && line_[i] != ';') {
-        failAt(i, "unexpected '" + std::string(1, line_[i]) + "' after " + name + "[...] (it stands alone in its block)");
+        failAt(i, message("print_after", {std::string(1, line_[i]), name}));
     }
     block.control = binary ? Control::Bprnt : Control::Dprnt;
     block.statement = storeStatement(items);
@@ -208,10 +205,9 @@ void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
     const std::string name = keywordSpelling(keyword.keyword);
     const bool transfer = keyword.keyword == Keyword::MSetData || keyword.keyword == Keyword::MGetData;
     const bool write = keyword.keyword == Keyword::MSetData;
-    const std::string usage = transfer ? ModbusStatement::usage(write) : std::string();
     if (peek().kind != TokenKind::LBracket) {
-        fail(peek(), name + " must be followed by [...]" + (transfer ? ": " + usage : std::string()) + ", found " +
-                         describe(peek()));
+        fail(peek(), !transfer ? message("modbus_needs_brackets", {name, describeWords(peek())})
+                     : message(write ? "msetdata_needs_brackets" : "mgetdata_needs_brackets", {describeWords(peek())}));
     }
     const Token& open = next();
     std::vector<StatementItem> arguments;
@@ -226,23 +222,21 @@ void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
         next();
     }
     if (peek().kind != TokenKind::RBracket) {
-        fail(peek(), "missing ']' to close " + name + "[ at column " + std::to_string(open.column) + ", found " +
-                         describe(peek()));
+        fail(peek(), message("parse_missing_bracket_of", {name, std::to_string(open.column), describeWords(peek())}));
     }
     next();
     while (peek().kind == TokenKind::Comment) {
         next();
     }
     if (peek().kind != TokenKind::End) {
-        fail(peek(), "unexpected " + describe(peek()) + " after " + name + "[...]");
+        fail(peek(), message("parse_after_statement", {describeWords(peek()), name}));
     }
     if (transfer) {
         checkModbusTransfer(keyword, write, arguments);
         block.control = write ? Control::MSetData : Control::MGetData;
     } else {
         block.control = Control::ModbusConversion;
-        lint(keyword.column, name + " is not simulated: no public document gives the meaning of its arguments, so "
-                                    "a run alarms when it reaches this line");
+        lint(keyword.column, message("lint_modbus_conversion", {name}));
     }
     block.statement = storeStatement(arguments);
 }
@@ -250,16 +244,12 @@ void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
 // The six arguments of MSETDATA or MGETDATA: their count, and the values written as numbers.
 void BlockParser::checkModbusTransfer(const Token& keyword, bool write, const std::vector<StatementItem>& arguments) {
     const std::string name = ModbusStatement::name(write);
-    const std::string example = write ? "MSETDATA[200,1,0,4,16,300] writes #200-#203 into registers 0-1 of slave 1"
-                                      : "MGETDATA[200,1,10,4,3,300] reads registers 10-11 of slave 1 into #200-#203";
     if (arguments.size() == 3) {
-        fail(keyword, name + "[slave, register, " + (write ? "value" : "#variable") +
-                          "] was this simulator's own form, not the firmware's: the M350 takes six arguments, " +
-                          ModbusStatement::usage(write) + ", e.g. " + example);
+        fail(keyword, message(write ? "msetdata_old_form" : "mgetdata_old_form"));
     }
     if (arguments.size() != ModbusStatement::kCount) {
-        fail(keyword, name + " takes 6 arguments, not " + std::to_string(arguments.size()) + ": " +
-                          ModbusStatement::usage(write) + ", e.g. " + example);
+        fail(keyword, message(write ? "msetdata_argument_count" : "mgetdata_argument_count",
+                              {std::to_string(arguments.size())}));
     }
     // A number as written (-5 included); nothing for an expression, checked when the line runs.
     auto literal = [&](const StatementItem& item) -> std::optional<double> {
@@ -277,15 +267,15 @@ void BlockParser::checkModbusTransfer(const Token& keyword, bool write, const st
         const StatementItem& item = arguments[static_cast<std::size_t>(k)];
         if (auto v = literal(item)) {
             if (auto problem = ModbusStatement::argumentProblem(write, k, *v)) {
-                fail(item.column, name + ": " + *problem);
+                fail(item.column, *problem);
             }
         }
     }
     const auto first = literal(arguments[ModbusStatement::FirstVariable]);
     const auto bytes = literal(arguments[ModbusStatement::Bytes]);
     if (first && bytes) {
-        if (auto problem = ModbusStatement::spanProblem(static_cast<int>(*first), static_cast<int>(*bytes))) {
-            fail(arguments[ModbusStatement::Bytes].column, name + ": " + *problem);
+        if (auto problem = ModbusStatement::spanProblem(write, static_cast<int>(*first), static_cast<int>(*bytes))) {
+            fail(arguments[ModbusStatement::Bytes].column, *problem);
         }
     }
     for (int k : {ModbusStatement::FirstVariable, ModbusStatement::ExceptionVariable}) {
@@ -293,8 +283,7 @@ void BlockParser::checkModbusTransfer(const Token& keyword, bool write, const st
         const ExprNode& node = pool_[item.value];
         if (node.kind == ExprKind::Variable && node.lhs == kNoExpr) {
             const std::string n = std::to_string(static_cast<long long>(node.number));
-            note(item.column, name + ": X" + std::to_string(k + 1) + " is a variable's number: #" + n +
-                                  " stands for the number #" + n + " holds; write " + n + " to mean #" + n);
+            note(item.column, message("note_modbus_variable_number", {name, std::to_string(k + 1), n}));
         }
     }
 }

@@ -80,8 +80,11 @@ void DiagnosticCap::finish(std::vector<Diagnostic>& diagnostics, const Program& 
     Diagnostic note = *firstOmitted_;
     note.omitted = omitted_;
     note.unreadable = false;
-    note.message = std::to_string(omitted_) + " more findings omitted from here on (the first " +
-                   std::to_string(kKeepFirst) + " and the last " + std::to_string(kKeepLast) + " are listed)";
+    const Message words = message("findings_omitted", {std::to_string(omitted_), std::to_string(kKeepFirst),
+                                                        std::to_string(kKeepLast)});
+    note.message = words.english();
+    note.messageId = words.id;
+    note.messageArguments = words.arguments;
     diagnostics.insert(diagnostics.begin() + static_cast<std::ptrdiff_t>(kKeepFirst), std::move(note));
 }
 

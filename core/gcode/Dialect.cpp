@@ -48,15 +48,15 @@ Dialect makeM350() {
     d.gHandlerBase = 9000;
     d.mHandlerBase = 10000;
     d.indexedTables = {
-        {1330, "the tool pocket X table (params 830-845)"},
-        {1350, "the tool pocket Y table (params 850-865)"},
-        {1370, "the tool pocket Z table (params 870-885)"},
-        {1390, "the tool X offset table (params 890-905)"},
-        {1410, "the tool Y offset table (params 910-925)"},
-        {1430, "the tool Z offset table (params 930-945)"},
-        {1473, "the virtual tool Z offset table (params 973-992)"},
-        {1520, "the inputs IN01-IN24"},
-        {1552, "the outputs OUT01-OUT21"},
+        {1330, "the tool pocket X table (params 830-845)", "刀位X坐标表(参数830-845)"},
+        {1350, "the tool pocket Y table (params 850-865)", "刀位Y坐标表(参数850-865)"},
+        {1370, "the tool pocket Z table (params 870-885)", "刀位Z坐标表(参数870-885)"},
+        {1390, "the tool X offset table (params 890-905)", "刀具X偏置表(参数890-905)"},
+        {1410, "the tool Y offset table (params 910-925)", "刀具Y偏置表(参数910-925)"},
+        {1430, "the tool Z offset table (params 930-945)", "刀具Z偏置表(参数930-945)"},
+        {1473, "the virtual tool Z offset table (params 973-992)", "虚拟刀具Z偏置表(参数973-992)"},
+        {1520, "the inputs IN01-IN24", "输入IN01-IN24"},
+        {1552, "the outputs OUT01-OUT21", "输出OUT01-OUT21"},
     };
     return d;
 }

@@ -16,6 +16,7 @@ enum class DialectId : std::uint8_t { M350, Fanuc };
 struct IndexedTable {
     int base = 0;
     std::string_view what; // "pocket X (params 830-845)"
+    std::string_view chinese; // the same for the panel in zh_CN
 };
 
 // Everything that differs between the M350 firmware's macro language and FANUC Custom Macro B.

@@ -276,16 +276,20 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& tokens, BlockCom
 }
 
 std::string Lexer::issueMessage(const Token& token, std::string_view line) const {
+    const Message words = issueWords(token, line);
+    return words.id.empty() ? std::string() : words.english();
+}
+
+Message Lexer::issueWords(const Token& token, std::string_view line) const {
     std::string text(tokenSource(token, line));
     switch (token.issue) {
     case TokenIssue::None: return {};
-    case TokenIssue::UnknownWord: return "unknown word '" + text + "'";
-    case TokenIssue::MalformedNumber: return "malformed number '" + text + "'";
-    case TokenIssue::UnclosedComment: return "comment '(' is not closed with ')'";
-    case TokenIssue::StrayCommentEnd: return "'*/' closes no '/*' comment";
-    case TokenIssue::FullWidth:
-        return "full-width '" + text + "' is not G-code (did you mean '" + fullWidthAscii(text) + "'?)";
-    case TokenIssue::UnexpectedCharacter: return "unexpected character '" + text + "'";
+    case TokenIssue::UnknownWord: return message("lex_unknown_word", {text});
+    case TokenIssue::MalformedNumber: return message("lex_malformed_number", {text});
+    case TokenIssue::UnclosedComment: return message("lex_unclosed_comment");
+    case TokenIssue::StrayCommentEnd: return message("lex_stray_comment_end");
+    case TokenIssue::FullWidth: return message("lex_full_width", {text, fullWidthAscii(text)});
+    case TokenIssue::UnexpectedCharacter: return message("lex_unexpected_character", {text});
     case TokenIssue::LowerCaseKeyword: {
         std::string upperText;
         for (char ch : text) {
@@ -293,10 +297,9 @@ std::string Lexer::issueMessage(const Token& token, std::string_view line) const
                 upperText.push_back(upperCase(ch));
             }
         }
-        return "keywords are upper case in the " + std::string(dialect_.name) + " dialect: write " + upperText +
-               ", not " + text;
+        return message("lex_lower_case_keyword", {std::string(dialect_.name), upperText, text});
     }
-    case TokenIssue::StrayDot: return "the '.' after the comment is not G-code: it is ignored";
+    case TokenIssue::StrayDot: return message("lex_stray_dot");
     }
     return {};
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Token.h"
 
@@ -32,6 +33,8 @@ public:
 
     // What is wrong with a token whose issue is not None, in the operator's terms.
     std::string issueMessage(const Token& token, std::string_view line) const;
+    // The same by message id (core/common/Message.h); an empty id for a token with no issue.
+    Message issueWords(const Token& token, std::string_view line) const;
 
 private:
     const Dialect& dialect_;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -31,10 +33,11 @@ struct ModbusStatement {
     static const char* name(bool write) { return write ? "MSETDATA" : "MGETDATA"; }
     // "MSETDATA[first variable, slave, register, bytes, function, exception variable]"
     static std::string usage(bool write);
-    // What is wrong with `value` as argument `which` (0-5) of the statement, if anything.
-    static std::optional<std::string> argumentProblem(bool write, int which, double value);
+    // What is wrong with `value` as argument `which` (0-5) of the statement, if anything
+    // ("MSETDATA: the slave (X2) must be ...").
+    static std::optional<Message> argumentProblem(bool write, int which, double value);
     // What is wrong with X4 bytes from #X1, if anything: they must end by #499.
-    static std::optional<std::string> spanProblem(int firstVariable, int bytes);
+    static std::optional<Message> spanProblem(bool write, int firstVariable, int bytes);
     // The Modbus functions each statement takes (what the firmware's documents show).
     static bool functionAllowed(bool write, int function);
     // "16 (write registers) or 15 (write coils)"

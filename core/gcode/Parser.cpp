@@ -35,10 +35,9 @@ void Parser::addSource(Program& program, const SourceText& source, FileRole role
                             program.blocks.empty() && source.text.size() > dropAbove_;
     if (!keptInPart) {
         if (source.text.size() > kMostSourceBytes) {
-            diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, source.path, 0, 0,
-                                    "cannot read file: it is " + std::to_string(source.text.size() >> 20) +
-                                        " MiB; only the program to run may be above " +
-                                        std::to_string(kMostSourceBytes >> 20) + " MiB"});
+            diagnostics_.push_back(diagnostic(Severity::Error, DiagnosticKind::Syntax, source.path, 0, 0,
+                                              message("file_too_big", {std::to_string(source.text.size() >> 20),
+                                                                       std::to_string(kMostSourceBytes >> 20)})));
             diagnostics_.back().unreadable = true;
             return;
         }
@@ -54,7 +53,7 @@ void Parser::addSource(Program& program, const SourceText& source, FileRole role
         // "unexpected character '\0'"), the file is what is wrong
         const std::string& name = program.files.back().name;
         std::erase_if(diagnostics_, [&name](const Diagnostic& d) { return d.file == name; });
-        diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, source.path, 0, 0, kCutShortWhileRead});
+        diagnostics_.push_back(diagnostic(Severity::Error, DiagnosticKind::Syntax, source.path, 0, 0, message("file_cut_short")));
         diagnostics_.back().unreadable = true;
     }
 }
@@ -158,8 +157,8 @@ void Parser::parseFile(Program& program, std::string_view text, std::uint32_t fi
     }
     if (blockParser.commentOpen()) {
         SourceLocation at = blockParser.commentStart();
-        diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, program.files[fileIndex].name, at.line,
-                                at.column, "the comment '/*' is not closed with '*/' before the end of the file"});
+        diagnostics_.push_back(diagnostic(Severity::Error, DiagnosticKind::Syntax, program.files[fileIndex].name, at.line,
+                                          at.column, message("parse_block_comment_open")));
     }
 }
 
@@ -220,8 +219,8 @@ void Parser::closeUnit(Program& program, std::uint32_t unitIndex) {
         if (auto existing = program.findUnit(unit.number);
             existing && program.units[*existing].file == unit.file) {
             report(program, program.blocks[unit.begin], 1, DiagnosticKind::Flow,
-                   "O" + std::to_string(unit.number) + " is defined twice in this file (first at line " +
-                       std::to_string(program.blocks[program.units[*existing].begin].location.line) + ")");
+                   message("flow_o_twice", {std::to_string(unit.number),
+                                            std::to_string(program.blocks[program.units[*existing].begin].location.line)}));
         }
     }
     unit.labels.build(std::exchange(labelBlocks_, {}));
@@ -232,9 +231,9 @@ void Parser::closeUnit(Program& program, std::uint32_t unitIndex) {
 }
 
 void Parser::report(const Program& program, const Block& block, std::uint32_t column, DiagnosticKind kind,
-                    std::string message) {
-    diagnostics_.push_back({Severity::Error, kind, program.files[block.location.file].name, block.location.line,
-                            column, clipEcho(std::move(message))});
+                    const Message& words) {
+    diagnostics_.push_back(
+        diagnostic(Severity::Error, kind, program.files[block.location.file].name, block.location.line, column, words));
 }
 
 // WHILE ... DOm and ENDm pair by nesting, as on FANUC: the innermost open DO must carry the same m.
@@ -255,25 +254,22 @@ void Parser::pairLoops(Program& program) {
             std::vector<std::uint32_t>& sameNumber = openById[block.loopId];
             if (!sameNumber.empty()) {
                 report(program, block, block.controlColumn, DiagnosticKind::Flow,
-                       "DO" + std::to_string(block.loopId) + " is already open (line " +
-                           std::to_string(program.blocks[sameNumber.back()].location.line) +
-                           "): nested loops need different numbers");
+                       message("flow_do_open", {std::to_string(block.loopId),
+                                                std::to_string(program.blocks[sameNumber.back()].location.line)}));
             }
             sameNumber.push_back(b);
             open.push_back(b);
         } else if (block.control == Control::End) {
             if (open.empty()) {
                 report(program, block, block.controlColumn, DiagnosticKind::Flow,
-                       "END" + std::to_string(block.loopId) + " without WHILE ... DO" + std::to_string(block.loopId));
+                       message("flow_end_without_do", {std::to_string(block.loopId)}));
                 continue;
             }
             Block& opener = program.blocks.mutableAt(open.back());
             if (opener.loopId != block.loopId) {
                 report(program, block, block.controlColumn, DiagnosticKind::Flow,
-                       "END" + std::to_string(block.loopId) + " closes the loop " + loopOpening(opener) +
-                           " opened at line " +
-                           std::to_string(opener.location.line) + " (expected END" +
-                           std::to_string(opener.loopId) + ")");
+                       message("flow_end_mismatch", {std::to_string(block.loopId), loopOpening(opener),
+                                                     std::to_string(opener.location.line), std::to_string(opener.loopId)}));
                 continue;
             }
             opener.partner = static_cast<std::int32_t>(b);
@@ -285,7 +281,7 @@ void Parser::pairLoops(Program& program) {
     for (std::uint32_t b : open) {
         const Block& block = program.blocks[b];
         report(program, block, block.controlColumn, DiagnosticKind::Flow,
-               loopOpening(block) + " has no END" + std::to_string(block.loopId));
+               message("flow_do_without_end", {loopOpening(block), std::to_string(block.loopId)}));
     }
 }
 
@@ -301,9 +297,9 @@ void Parser::checkGotos(const Program& program, const ProgramUnit& unit) {
         }
         auto label = roundToInt(target.number);
         if (!unit.labels.contains(label)) {
-            std::string where = unit.number >= 0 ? "O" + std::to_string(unit.number) : std::string("this program");
+            std::string where = unit.number >= 0 ? "O" + std::to_string(unit.number) : bilingual("this program", "本程序");
             report(program, block, target.column, DiagnosticKind::Flow,
-                   "GOTO" + std::to_string(label) + ": there is no N" + std::to_string(label) + " in " + where);
+                   message("flow_goto_no_label", {std::to_string(label), where}));
             continue;
         }
         if (block.control == Control::Goto && !block.blockDelete) {
@@ -354,10 +350,7 @@ void Parser::checkEndlessLoop(const Program& program, const ProgramUnit& unit, s
     const Block& jump = program.blocks[gotoBlock];
     const Block& labelled = program.blocks[*target];
     report(program, jump, jump.controlColumn, DiagnosticKind::Lint,
-           "GOTO" + std::to_string(label) + " jumps back to N" + std::to_string(label) + " (line " +
-               std::to_string(labelled.location.line) +
-               ") and nothing in between can leave the loop (no IF, WHILE, M30, M99, call or alarm): the program "
-               "never ends");
+           message("lint_endless_goto", {std::to_string(label), std::to_string(labelled.location.line)}));
 }
 
 void Parser::finish(const Program& program) {
@@ -372,7 +365,7 @@ void Parser::checkCalls(const Program& program) {
             if (w.letter == 'P' && w.isNumber() && !program.findUnit(roundToInt(w.number)) &&
                 roundToInt(w.number) != dialect_.homingProgram) {
                 report(program, block, w.column, DiagnosticKind::Flow,
-                       "no O" + std::to_string(roundToInt(w.number)) + " in this file or the machine's macro libraries");
+                       message("flow_no_program", {std::to_string(roundToInt(w.number))}));
             }
         }
     }

@@ -70,7 +70,7 @@ private:
     void checkEndlessLoop(const Program& program, const ProgramUnit& unit, std::uint32_t gotoBlock, std::int32_t label);
     void checkCalls(const Program& program);
     void report(const Program& program, const Block& block, std::uint32_t column, DiagnosticKind kind,
-                std::string message);
+                const Message& words);
 
     const Dialect& dialect_;
     std::size_t dropAbove_ = kProgramKeptWholeUpTo;

@@ -61,14 +61,16 @@ std::optional<std::uint32_t> Program::findLabel(std::uint32_t unit, std::int32_t
     return units[unit].labels.find(label, from);
 }
 
-std::string Program::suspectMessage(std::uint32_t block) const {
+Diagnostic Program::suspectMessage(std::uint32_t block) const {
+    const SourceLocation& at = blocks[block].location;
     if (blocks.changedOnDisk(block)) {
-        return files[blocks[block].location.file].name + " changed on disk while its program ran (line " +
-               std::to_string(blocks[block].location.line) +
-               " no longer reads as it did when it was loaded): run it again from the start";
+        return diagnostic(Severity::Error, DiagnosticKind::Lint, files[at.file].name, at.line, 0,
+                          message("program_changed_on_disk", {files[at.file].name, std::to_string(at.line)}));
     }
     auto found = suspects.find(block);
-    return found != suspects.end() ? found->second : "suspect line";
+    return found != suspects.end()
+               ? found->second
+               : diagnostic(Severity::Error, DiagnosticKind::Lint, files[at.file].name, at.line, 0, message("suspect_line"));
 }
 
 std::uint32_t Program::unitOfBlock(std::uint32_t block) const {

@@ -1,6 +1,8 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/gcode/Block.h"
+#include "core/gcode/Diagnostic.h"
 #include "core/gcode/BlockList.h"
 #include "core/gcode/BlockStorage.h"
 #include "core/gcode/LabelIndex.h"
@@ -60,11 +62,11 @@ public:
 
     // Lint findings by block: valid lines that are never what the author meant. Running such a
     // line raises an alarm instead of moving the machine somewhere wrong.
-    std::unordered_map<std::uint32_t, std::string> suspects;
+    std::unordered_map<std::uint32_t, Diagnostic> suspects;
     // What blocks read on a second thread refer to (PlainLinePrefetch).
     std::vector<std::unique_ptr<BlockStorage>> adoptedStorage;
     // Why a block with `suspect` set stops the program.
-    std::string suspectMessage(std::uint32_t block) const;
+    Diagnostic suspectMessage(std::uint32_t block) const;
 
     const std::string& fileName(const SourceLocation& location) const { return files[location.file].name; }
 

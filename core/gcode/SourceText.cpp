@@ -142,6 +142,21 @@ bool looksUtf16(std::string_view bytes) {
 
 std::string errnoMessage(int err) { return std::error_code(err, std::generic_category()).message(); }
 
+// The system's words for errno in both languages (the common ones in Chinese; the others as the
+// system says them).
+std::string errnoWords(int err) {
+    const char* chinese = err == ENOENT    ? "没有该文件或目录"
+                          : err == EACCES  ? "权限不足"
+                          : err == EISDIR  ? "是一个目录"
+                          : err == ENOTDIR ? "路径中有一项不是目录"
+                          : err == ELOOP   ? "符号链接层数过多"
+                          : err == EMFILE  ? "打开的文件过多"
+                          : err == EIO     ? "输入/输出错误"
+                          : err == ENOMEM  ? "内存不足"
+                                           : nullptr;
+    return chinese ? bilingual(errnoMessage(err), chinese) : errnoMessage(err);
+}
+
 struct FileCloser {
     void operator()(std::FILE* f) const { std::fclose(f); }
 };
@@ -187,7 +202,7 @@ std::variant<SourceText, SourceReadError> decodeOwned(std::string path, std::str
                                                       std::shared_ptr<const void> owner,
                                                       std::shared_ptr<const MappedFile> mapping = nullptr) {
     if (looksUtf16(bytes)) { // its NUL bytes would pass as UTF-8
-        return SourceReadError{std::move(path), "file is UTF-16: save it as UTF-8 or GBK", 1, 1};
+        return SourceReadError::of(std::move(path), message("file_utf16"), 1, 1);
     }
     const std::size_t bomSize = bytes.starts_with(kUtf8Bom) ? kUtf8Bom.size() : 0;
     const std::string_view body = bytes.substr(bomSize);
@@ -197,19 +212,16 @@ std::variant<SourceText, SourceReadError> decodeOwned(std::string path, std::str
     }
     if (bytes.size() > kMostSourceBytes) {
         const auto [line, column] = lineAndColumn(bytes, bomSize + *utf8Bad);
-        return SourceReadError{std::move(path),
-                               "cannot read file: it is " + std::to_string(bytes.size() / (1024 * 1024)) +
-                                   " MiB and not UTF-8 (first non-UTF-8 byte at line " + std::to_string(line) +
-                                   ", column " + std::to_string(column) + "); a program above " +
-                                   std::to_string(kMostSourceBytes / (1024 * 1024)) +
-                                   " MiB must be UTF-8 (GBK files are decoded into memory whole)",
-                               line, column};
+        return SourceReadError::of(std::move(path),
+                                   message("file_big_not_utf8", {std::to_string(bytes.size() / (1024 * 1024)),
+                                                                 std::to_string(line), std::to_string(column),
+                                                                 std::to_string(kMostSourceBytes / (1024 * 1024))}),
+                                   line, column);
     }
 
     const Iconv cd("UTF-8", "GB18030");
     if (!cd.ok()) {
-        return SourceReadError{std::move(path),
-                               "file is not valid UTF-8 and GBK decoding is unavailable: " + errnoMessage(errno)};
+        return SourceReadError::of(std::move(path), message("file_no_gbk", {errnoWords(errno)}));
     }
     auto gbk = decodeGbk(cd, body);
     if (auto* text = std::get_if<std::string>(&gbk)) {
@@ -222,10 +234,8 @@ std::variant<SourceText, SourceReadError> decodeOwned(std::string path, std::str
     // failure point is the byte worth showing to the user.
     const std::size_t bad = bomSize + std::max(*utf8Bad, std::get<std::size_t>(gbk));
     const auto [line, column] = lineAndColumn(bytes, bad);
-    return SourceReadError{std::move(path),
-                           "file is neither valid UTF-8 nor GBK (first bad byte at line " + std::to_string(line) +
-                               ", column " + std::to_string(column) + ")",
-                           line, column};
+    return SourceReadError::of(std::move(path), message("file_bad_encoding", {std::to_string(line), std::to_string(column)}),
+                               line, column);
 }
 
 }  // namespace
@@ -238,6 +248,8 @@ std::variant<SourceText, SourceReadError> decodeSource(std::string path, std::st
 
 Diagnostic diagnosticOf(const SourceReadError& error) {
     Diagnostic d{Severity::Error, DiagnosticKind::Syntax, error.path, error.line, error.column, error.message};
+    d.messageId = error.messageId;
+    d.messageArguments = error.messageArguments;
     d.unreadable = true;
     return d;
 }
@@ -246,47 +258,43 @@ std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path
 #if M350_HAVE_MMAP
     // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below anyway.
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0) return SourceReadError{path, "cannot open file: " + errnoMessage(errno)};
+    if (fd < 0) return SourceReadError::of(path, message("file_cannot_open", {errnoWords(errno)}));
     struct stat info {};
     const bool statted = ::fstat(fd, &info) == 0;
     ::close(fd);
-    if (!statted) return SourceReadError{path, "cannot read file: " + errnoMessage(errno)};
+    if (!statted) return SourceReadError::of(path, message("file_cannot_read", {errnoWords(errno)}));
     if (!S_ISREG(info.st_mode)) {
         // /dev/zero or a FIFO never ends: reading one allocated until memory ran out
-        return SourceReadError{path, std::string("cannot read file: it is ") +
-                                         (S_ISDIR(info.st_mode)    ? "a folder"
-                                          : S_ISFIFO(info.st_mode) ? "a FIFO (named pipe)"
-                                          : S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode) ? "a device"
-                                                                                             : "not a regular file") +
-                                         ", not a program file"};
+        return SourceReadError::of(path, message(S_ISDIR(info.st_mode)    ? "file_is_folder"
+                                                 : S_ISFIFO(info.st_mode) ? "file_is_fifo"
+                                                 : S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode) ? "file_is_device"
+                                                                                                    : "file_not_regular"));
     }
     if (static_cast<std::uintmax_t>(info.st_size) > kMostProgramBytes) {
-        return SourceReadError{path, "cannot read file: it is " + std::to_string(info.st_size / (1024 * 1024)) +
-                                         " MiB; program files above " +
-                                         std::to_string(kMostProgramBytes / (1024 * 1024)) + " MiB are refused"};
+        return SourceReadError::of(path, message("file_too_big_program", {std::to_string(info.st_size / (1024 * 1024)),
+                                                                          std::to_string(kMostProgramBytes / (1024 * 1024))}));
     }
     if (auto mapped = MappedFile::map(path)) {
         std::string_view bytes = mapped->bytes();
         auto decoded = decodeOwned(path, bytes, mapped, mapped);
         if (mapped->truncated()) {
-            return SourceReadError{path, kCutShortWhileRead};
+            return SourceReadError::of(path, message("file_cut_short"));
         }
         return decoded;
     }
 #endif
     const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-    if (!file) return SourceReadError{path, "cannot open file: " + errnoMessage(errno)};
+    if (!file) return SourceReadError::of(path, message("file_cannot_open", {errnoWords(errno)}));
     auto bytes = std::make_shared<std::string>();
     char buffer[16384];
     std::size_t n = 0;
     while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) {
         if (bytes->size() + n > kMostSourceBytes) {
-            return SourceReadError{path, "cannot read file: it is longer than " +
-                                             std::to_string(kMostSourceBytes / (1024 * 1024)) + " MiB, the most a program file may be"};
+            return SourceReadError::of(path, message("file_longer_than", {std::to_string(kMostSourceBytes / (1024 * 1024))}));
         }
         bytes->append(buffer, n);
     }
-    if (std::ferror(file.get())) return SourceReadError{path, "cannot read file: " + errnoMessage(errno)};
+    if (std::ferror(file.get())) return SourceReadError::of(path, message("file_cannot_read", {errnoWords(errno)}));
     std::string_view view = *bytes;
     return decodeOwned(path, view, std::move(bytes));
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace m350::gcode {
 
@@ -34,11 +35,15 @@ struct SourceReadError {
     std::string message;
     std::uint32_t line = 0; // of the first byte that is neither UTF-8 nor GBK; 0 when the file could not be read
     std::uint32_t column = 0;
+    // The message by id (core/common/Message.h), for the panel and `m350-sim --lang`.
+    std::string messageId{};
+    std::vector<std::string> messageArguments{};
+
+    static SourceReadError of(std::string path, const Message& words, std::uint32_t line = 0, std::uint32_t column = 0) {
+        return SourceReadError{std::move(path), words.english(), line, column, words.id, words.arguments};
+    }
 };
 
-// Said of a program file another program truncated while it was read (its lost pages read as NULs).
-inline constexpr const char* kCutShortWhileRead = "cannot read file: it was cut short while it was read (another "
-                                                  "program truncated or rewrote it); run again when it is complete";
 
 // The error as a diagnostic: placed at the bad byte (or 0:0), marked unreadable.
 Diagnostic diagnosticOf(const SourceReadError& error);

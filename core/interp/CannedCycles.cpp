@@ -70,7 +70,7 @@ void ModalInterpreter::rememberCycleWords(const Words& words, char drillLetter) 
     }
     if (const WordValue* w = words.find('P')) {
         if (w->value < 0) {
-            invalid(*w, "the dwell at the hole bottom cannot be negative");
+            invalid(*w, message("word_negative_cycle_dwell", {wordText(*w)}));
         }
         cycle_.p = w->value;
     }
@@ -80,7 +80,7 @@ int ModalInterpreter::cycleRepeats(const Words& words) const {
     const WordValue* k = words.find('K');
     const WordValue* l = words.find('L');
     if (k && l) {
-        invalid(*l, "give the cycle's repeat count as K or as L, not both");
+        invalid(*l, message("word_cycle_k_and_l", {wordText(*l)}));
     }
     const WordValue* count = k ? k : l;
     if (!count) {
@@ -99,35 +99,27 @@ void ModalInterpreter::checkCycle(const Words& words, int code, char drillLetter
     const std::string name = "G" + std::to_string(code);
     const std::uint32_t column = cycleColumn(words);
     if (!cycle_.bottom) {
-        throw MacroError{AlarmCode::MissingAddress,
-                         name + " needs " + std::string(1, drillLetter) +
-                             " (the hole bottom) in the first block of the cycle",
-                         column};
+        throw MacroError::of(AlarmCode::MissingAddress,
+                             message("cycle_needs_bottom", {name, std::string(1, drillLetter)}), column);
     }
     if (!cycle_.r) {
-        throw MacroError{AlarmCode::MissingAddress,
-                         name + " needs R (the level drilling starts from) in the first block of the cycle",
-                         column};
+        throw MacroError::of(AlarmCode::MissingAddress, message("cycle_needs_r", {name}), column);
     }
     if ((code == 73 || code == 83) && cycle_.q <= 0) {
         const WordValue* q = words.find('Q');
-        throw MacroError{q ? AlarmCode::InvalidWord : AlarmCode::MissingAddress,
-                         name + " needs Q (peck depth) > 0", q ? q->column : column};
+        throw MacroError::of(q ? AlarmCode::InvalidWord : AlarmCode::MissingAddress, message("cycle_needs_q", {name}),
+                             q ? q->column : column);
     }
     if (state_.feed <= 0) {
         const WordValue* f = words.find('F');
-        throw MacroError{AlarmCode::InvalidWord, name + " needs a feed: give F", f ? f->column : column};
+        throw MacroError::of(AlarmCode::InvalidWord, message("cycle_needs_f", {name}), f ? f->column : column);
     }
     machine::SpindleState spindle = machine_.spindleState();
     if (code == 84 && spindle != machine::SpindleState::Forward) {
-        throw MacroError{AlarmCode::InvalidWord,
-                         "G84 (right-hand tapping) needs the spindle turning forward: M3 before the cycle",
-                         column};
+        throw MacroError::of(AlarmCode::InvalidWord, message("g84_spindle"), column);
     }
     if (code == 74 && spindle != machine::SpindleState::Reverse) {
-        throw MacroError{AlarmCode::InvalidWord,
-                         "G74 (left-hand tapping) needs the spindle turning in reverse: M4 before the cycle",
-                         column};
+        throw MacroError::of(AlarmCode::InvalidWord, message("g74_spindle"), column);
     }
 }
 
@@ -136,15 +128,12 @@ void ModalInterpreter::cannedCycle(const Words& words) {
     const CycleAxes axes = cycleAxes(state_.group(2));
     const char drillLetter = axisLetter(axes.drill);
     if (compensating() || state_.group(7) != 40) {
-        throw MacroError{AlarmCode::InvalidWord,
-                         "G" + std::to_string(code) +
-                             ": cutter compensation is on (G41/G42, or G40 not yet followed by a move); "
-                             "a canned cycle needs it cancelled",
-                         cycleColumn(words)};
+        throw MacroError::of(AlarmCode::InvalidWord, message("cycle_compensation", {std::to_string(code)}),
+                             cycleColumn(words));
     }
     for (char rotary : {'A', 'B'}) {
         if (const WordValue* w = words.find(rotary)) {
-            invalid(*w, "a rotary axis cannot move in a canned cycle (G" + std::to_string(code) + ")");
+            invalid(*w, message("word_cycle_rotary", {wordText(*w), std::to_string(code)}));
         }
     }
     rememberCycleWords(words, drillLetter);
@@ -179,19 +168,16 @@ DrillingCycle ModalInterpreter::resolveCycle(const Words& words, int code, int d
     if (cycle.bottom > cycle.r + 1e-9) {
         const WordValue* r = words.find('R');
         std::string letter(1, axisLetter(drillAxis));
-        throw MacroError{AlarmCode::InvalidWord,
-                         name + ": the hole bottom " + letter +
-                             " lies above R; the cycle drills from R toward " + letter + "-",
-                         r ? r->column : cycleColumn(words)};
+        throw MacroError::of(AlarmCode::InvalidWord, message("cycle_bottom_above_r", {name, letter}),
+                             r ? r->column : cycleColumn(words));
     }
     cycle.returnToR = state_.group(10) == 99;
     cycle.peck = cycle_.q * unit;
     if ((code == 73 || code == 83) && (cycle.r - cycle.bottom) / cycle.peck > kMaxPecksPerHole) {
         const WordValue* q = words.find('Q');
-        throw MacroError{AlarmCode::InvalidWord,
-                         name + ": Q is so small that one hole would take more than " +
-                             std::to_string(static_cast<int>(kMaxPecksPerHole)) + " pecks",
-                         q ? q->column : cycleColumn(words)};
+        throw MacroError::of(AlarmCode::InvalidWord,
+                             message("cycle_too_many_pecks", {name, std::to_string(static_cast<int>(kMaxPecksPerHole))}),
+                             q ? q->column : cycleColumn(words));
     }
     double clearance = parameters_.get(param::kDrillingRetraction);
     cycle.peckClearance = clearance > 0 ? clearance : kDefaultPeckClearance;

@@ -33,21 +33,18 @@ std::string planeName(int u, int v) { return std::string(1, letterOf(u)) + " " +
 void ModalInterpreter::startRotation(const Words& words, const WordValue& g68) {
     for (char c : {'I', 'J', 'K'}) {
         if (const WordValue* w = words.find(c)) {
-            invalid(*w, "G68 with I, J, K is FANUC's three-dimensional coordinate conversion, which is not "
-                        "simulated; G68 here turns the plane of G17 / G18 / G19 (G68 X_ Y_ R_)");
+            invalid(*w, message("word_g68_ijk", {wordText(*w)}));
         }
     }
     const PlaneAxes plane = planeAxes(state_.group(2));
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         const WordValue* w = words.find(letterOf(axis));
         if (w && axis != plane.u && axis != plane.v) {
-            invalid(*w, "G68 takes the centre of rotation on the plane's axes (" + planeName(plane.u, plane.v) +
-                            ") and R, the angle; this is no move");
+            invalid(*w, message("word_g68_centre", {wordText(*w), planeName(plane.u, plane.v)}));
         }
     }
     if (compensating() && compensationPlane_.plane != plane.plane) {
-        invalid(g68, "the rotation's plane must be the cutter compensation's (FANUC alarm 144, illegal plane "
-                     "selected)");
+        invalid(g68, message("word_g68_plane", {wordText(g68)}));
     }
     const machine::Axes work = basePosition() - workOffset();
     ModalState::Rotation r;
@@ -77,20 +74,18 @@ void ModalInterpreter::refuseUnderRotation(const Words& words) const {
     for (const WordValue& g : words.g) {
         const int code = roundToInt(g.value);
         const bool whole = std::abs(g.value - code) < 1e-6;
-        std::string why;
+        const char* why = nullptr;
         if (!whole && std::abs(g.value - 54.1) < 1e-6) {
-            why = "changes the coordinate system";
+            why = "word_g68_changes_system";
         } else if (whole && ((code >= 54 && code <= 59) || code == 52 || code == 92)) {
-            why = "changes the coordinate system";
+            why = "word_g68_changes_system";
         } else if (whole && code >= 27 && code <= 30) {
-            why = "returns to a reference position";
+            why = "word_g68_reference_return";
         } else if (rotatingBefore && whole && code >= 17 && code <= 19 && code != state_.group(2)) {
-            invalid(g, "the plane of a rotation stays until G69 (FANUC: G17, G18, G19 must not be given in G68 "
-                       "mode)");
+            invalid(g, message("word_g68_plane_stays", {wordText(g)}));
         }
-        if (!why.empty()) {
-            invalid(g, why + " while G68 turns the program: FANUC forbids it in rotation mode; cancel the rotation "
-                             "with G69 first");
+        if (why != nullptr) {
+            invalid(g, message(why, {wordText(g)}));
         }
     }
 }

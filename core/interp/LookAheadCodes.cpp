@@ -25,12 +25,13 @@ struct ModeCode {
     char letter;
     int on;
     const char* what;
+    const char* chinese; // `what` in the panel's zh_CN
 };
 
 constexpr ModeCode kModes[] = {
-    {5.1, "G05.1", 'Q', 1, "AI contour control"},
-    {8, "G08", 'P', 1, "look-ahead control"},
-    {5, "G05", 'P', 10000, "high-precision contour control"},
+    {5.1, "G05.1", 'Q', 1, "AI contour control", "AI轮廓控制"},
+    {8, "G08", 'P', 1, "look-ahead control", "先行控制"},
+    {5, "G05", 'P', 10000, "high-precision contour control", "高精度轮廓控制"},
 };
 
 const ModeCode* modeOf(double value) {
@@ -64,15 +65,16 @@ bool ModalInterpreter::lookAheadCode(const WordValue& g, const Words& words) {
         return false;
     }
     const std::string on = std::string(1, mode->letter) + std::to_string(mode->on);
-    const std::string usage = std::string(mode->name) + " " + on + " (" + mode->what + " on) or " + mode->name + " " +
-                              mode->letter + "0 (off)";
     const WordValue* value = words.find(mode->letter);
     if (!value || (value->value != 0 && value->value != mode->on)) {
-        invalid(value ? *value : g, "write " + usage);
+        invalid(value ? *value : g, message("word_look_ahead_usage", {wordText(value ? *value : g), mode->name, on,
+                                                                      bilingual(mode->what, mode->chinese),
+                                                                      std::string(1, mode->letter)}));
     }
     const std::uint32_t allowed = Words::bit(mode->letter) | Words::bit('N') | (isCode(mode->code, 5.1) ? Words::bit('R') : 0);
     if ((words.present & ~allowed) != 0 || words.g.size() > 1 || !words.m.empty()) {
-        invalid(g, std::string(mode->name) + " stands in a block of its own: " + usage);
+        invalid(g, message("word_look_ahead_alone", {wordText(g), mode->name, on, bilingual(mode->what, mode->chinese),
+                                                     std::string(1, mode->letter)}));
     }
     std::string text = std::string(mode->name) + " " + mode->letter + std::to_string(roundToInt(value->value));
     if (const WordValue* r = words.find('R'); r && isCode(mode->code, 5.1)) {

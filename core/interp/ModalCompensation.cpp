@@ -33,8 +33,7 @@ void ModalInterpreter::compensatedMove(const machine::Axes& target, const Words&
         programmed_ = machine_.position(); // entering: the program and the machine agree
         compensationPlane_ = planeAxes(state_.group(2));
     } else if (planeAxes(state_.group(2)).plane != compensationPlane_.plane) {
-        throw MacroError{AlarmCode::InvalidWord, "the plane changed under cutter compensation: cancel it with G40 first",
-                         motionColumn(words)};
+        throw MacroError::of(AlarmCode::InvalidWord, message("compensation_plane_changed"), motionColumn(words));
     }
     const int u = compensationPlane_.u;
     const int v = compensationPlane_.v;
@@ -56,11 +55,10 @@ void ModalInterpreter::compensatedMove(const machine::Axes& target, const Words&
         }
         const Eigen::Vector2d center = from + Eigen::Vector2d(toCenter(u), toCenter(v));
         if (words.find('R')) {
-            throw MacroError{AlarmCode::InvalidWord,
-                             std::string("write arcs under cutter compensation with ") +
-                                 kCenterLetter[static_cast<std::size_t>(u)] + " and " +
-                                 kCenterLetter[static_cast<std::size_t>(v)] + ", not R",
-                             motionColumn(words)};
+            throw MacroError::of(AlarmCode::InvalidWord,
+                                 message("compensation_arc_r", {std::string(1, kCenterLetter[static_cast<std::size_t>(u)]),
+                                                                std::string(1, kCenterLetter[static_cast<std::size_t>(v)])}),
+                                 motionColumn(words));
         }
         segment = PathSegment::arc(from, to, center, state_.group(1) == 2);
     }

@@ -30,6 +30,14 @@ std::string codeText(char letter, double value) {
 
 } // namespace
 
+std::string ModalInterpreter::wordText(const WordValue& w) {
+    return codeText(w.letter, w.value);
+}
+
+[[noreturn]] void ModalInterpreter::invalid(const WordValue& w, const Message& words) {
+    throw MacroError::of(AlarmCode::InvalidWord, words, w.column);
+}
+
 [[noreturn]] void ModalInterpreter::invalid(const WordValue& w, std::string why) {
     throw MacroError{AlarmCode::InvalidWord, codeText(w.letter, w.value) + ": " + why, w.column};
 }
@@ -161,8 +169,8 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
     dynamicLength_ = false;
     if (block.repeated >= 0) {
         const WordValue& w = block.words[static_cast<std::size_t>(block.repeated)];
-        return {false, MacroError{AlarmCode::InvalidWord,
-                                  std::string(1, w.letter) + " appears twice in one block", w.column}};
+        return {false, MacroError::of(AlarmCode::InvalidWord, message("word_twice", {std::string(1, w.letter)}),
+                                      w.column)};
     }
     try {
         // An address the M350 has no use for (no axis, no argument of its call specification) was
@@ -186,7 +194,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         if ((words.present & kModalLetters) != 0) {
             if (words.find('F')) {
                 if (words.find('F')->value < 0) {
-                    invalid(*words.find('F'), "the feed cannot be negative");
+                    invalid(*words.find('F'), message("word_negative_feed", {wordText(*words.find('F'))}));
                 }
                 const bool inches = words.hasG(20) || (state_.inches() && !words.hasG(21));
                 state_.feed = words.find('F')->value * (inches ? 25.4 : 1.0);
@@ -236,7 +244,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 [[fallthrough]];
             default:
                 if (!knowsMCode(dialect_, code)) {
-                    invalid(m, unknownMCodeText(dialect_, code));
+                    invalid(m, unknownMCodeWords(dialect_, code, wordText(m)));
                 }
                 machine_.auxiliary(code); // FANUC: an M code the PMC answers (magazine, clamp ...)
                 break;
@@ -333,10 +341,10 @@ bool ModalInterpreter::knowsMCode(const gcode::Dialect& dialect, int code) {
     }
 }
 
-std::string ModalInterpreter::unknownMCodeText(const gcode::Dialect& dialect, int code) {
+Message ModalInterpreter::unknownMCodeWords(const gcode::Dialect& dialect, int code, const std::string& word) {
     const std::optional<std::int32_t> handler = dialect.handlerProgram('M', code);
-    return handler ? "no such M code (and no O" + std::to_string(*handler) + " handler in slib-m.nc)"
-                   : std::string("no such M code");
+    return handler ? message("word_unknown_m_handler", {word, std::to_string(*handler)})
+                   : message("word_unknown_m", {word});
 }
 
 bool ModalInterpreter::knowsGCode(const gcode::Dialect& dialect, const CoordinateFeatures& features, double value) {
@@ -377,7 +385,7 @@ void ModalInterpreter::applyGCodes(const Words& words) {
         }
         if (isAdditionalSystemCode(value)) [[unlikely]] {
             if (seen[14]) {
-                invalid(g, "two G codes of the same group in one block");
+                invalid(g, message("word_same_group", {wordText(g)}));
             }
             seen[14] = true;
             selectAdditionalSystem(words, g);
@@ -389,18 +397,18 @@ void ModalInterpreter::applyGCodes(const Words& words) {
         } else {
             code = roundToInt(value);
             if (std::abs(value - code) > 1e-6) {
-                invalid(g, "not a G code this machine knows");
+                invalid(g, message("word_unknown_g", {codeText(g.letter, g.value)}));
             }
         }
         int group = groupOf(code);
         if (group > 0) {
             if (seen[static_cast<std::size_t>(group)]) {
-                invalid(g, "two G codes of the same group in one block");
+                invalid(g, message("word_same_group", {wordText(g)}));
             }
             seen[static_cast<std::size_t>(group)] = true;
             if (group == 16) {
                 if (!features_.rotation) {
-                    invalid(g, "not a G code this machine knows");
+                    invalid(g, message("word_unknown_g", {codeText(g.letter, g.value)}));
                 }
                 if (code == 68) {
                     g68 = &g; // after the block's plane, units and distance mode
@@ -415,8 +423,7 @@ void ModalInterpreter::applyGCodes(const Words& words) {
                 parameters_.set(param::kCurrentWorkSystem, code - 53);
             }
             if ((code == 43 || code == 44) && dialect_.id == gcode::DialectId::M350) {
-                invalid(g, "not used on the M350: each tool's Z offset (params 930-945) applies by itself "
-                           "after a tool change");
+                invalid(g, message("word_m350_no_h_offset", {wordText(g)}));
             }
             continue;
         }
@@ -429,29 +436,27 @@ void ModalInterpreter::applyGCodes(const Words& words) {
                     break;
                 }
                 if (words.find('P')->value < 0) {
-                    invalid(*words.find('P'), "a dwell cannot be negative" +
-                                                  std::string(dialect_.id == gcode::DialectId::M350
-                                                                  ? " (G04 P-1 waits for START)"
-                                                                  : ""));
+                    invalid(*words.find('P'), message(dialect_.id == gcode::DialectId::M350 ? "word_negative_dwell_m350"
+                                                                                            : "word_negative_dwell",
+                                                      {wordText(*words.find('P'))}));
                 }
                 seconds = words.find('P')->value * dialect_.dwellPScale;
             } else if (words.find('X') && dialect_.dwellXSeconds) {
                 seconds = words.find('X')->value;
             } else {
-                invalid(g, "G04 needs P<milliseconds>" + std::string(dialect_.dwellXSeconds ? " or X<seconds>" : ""));
+                invalid(g, message(dialect_.dwellXSeconds ? "word_g04_needs_p_or_x" : "word_g04_needs_p", {wordText(g)}));
             }
             machine_.dwell(seconds);
             break;
         }
         case 10: case 28: case 30: case 31: case 52: case 53: case 92: break; // with the axis words, in moveAxes
-        default: invalid(g, "not a G code this machine knows");
+        default: invalid(g, message("word_unknown_g", {codeText(g.letter, g.value)}));
         }
     }
     if (seen[1] && seen[9] && state_.group(9) != 80) {
         auto cycle = std::find_if(words.g.begin(), words.g.end(),
                                   [](const WordValue& w) { return groupOf(roundToInt(w.value)) == 9; });
-        invalid(*cycle, "a motion code (G0-G3) in the same block would cancel the canned cycle: give them in "
-                        "separate blocks");
+        invalid(*cycle, message("word_motion_cancels_cycle", {wordText(*cycle)}));
     }
     if (seen[1] || (seen[9] && state_.group(9) == 80)) {
         cancelCycle(); // a cycle begun again starts from new drilling data and a new initial level
@@ -465,14 +470,13 @@ void ModalInterpreter::applyGCodes(const Words& words) {
 // documents it).
 void ModalInterpreter::selectAdditionalSystem(const Words& words, const WordValue& g) {
     if (features_.additionalSystems <= 0) {
-        invalid(g, "not a G code this machine knows");
+        invalid(g, message("word_unknown_g", {codeText(g.letter, g.value)}));
     }
     const WordValue* p = words.find('P');
     const double number = p ? p->value : 1.0;
     const int systems = features_.additionalSystems;
     if (number != std::round(number) || number < 1 || number > systems) {
-        invalid(p ? *p : g, "G54.1 selects the additional work systems P1-P" + std::to_string(systems) +
-                                " of this machine (machine.toml [coordinates] additional_systems)");
+        invalid(p ? *p : g, message("word_g54_1_range", {wordText(p ? *p : g), std::to_string(systems)}));
     }
     state_.groups[14] = 54.1;
     state_.additionalSystem = static_cast<int>(number);

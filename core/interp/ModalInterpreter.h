@@ -2,6 +2,7 @@
 
 #include "core/params/ParameterNumbers.h"
 #include "core/params/ParameterTable.h"
+#include "core/common/Message.h"
 #include "core/gcode/Dialect.h"
 #include "core/interp/CutterCompensation.h"
 #include "core/interp/DrillingCycle.h"
@@ -63,7 +64,8 @@ public:
     // Whether execute() takes M`code` (a FANUC's PMC takes every M code; an M350's firmware its own
     // few, the rest must have a handler in slib-m.nc), and what the alarm says when it does not.
     static bool knowsMCode(const gcode::Dialect& dialect, int code);
-    static std::string unknownMCodeText(const gcode::Dialect& dialect, int code);
+    // "M77: no such M code": `word` is the M word as written (M77).
+    static Message unknownMCodeWords(const gcode::Dialect& dialect, int code, const std::string& word);
 
     const ModalState& state() const { return state_; }
     ModalState& state() { return state_; }
@@ -265,6 +267,9 @@ private:
                                                                                : feedRate(motionColumn(words));
     }
     [[noreturn]] static void invalid(const macro::WordValue& w, std::string why);
+    [[noreturn]] static void invalid(const macro::WordValue& w, const Message& words);
+    // "G5.1", "X-1.5": a word as invalid()'s messages name it (their %1).
+    static std::string wordText(const macro::WordValue& w);
     void stopForOperator(OperatorStop::Kind kind, std::string what);
     std::optional<OperatorStop> takeMadeStop();
     bool compensating() const { // asked for every move

@@ -67,8 +67,7 @@ double ModalInterpreter::feedRate(std::uint32_t column) const {
     }
     double rpm = machine_.spindleRpm();
     if (rpm <= 0.0) {
-        throw MacroError{AlarmCode::InvalidWord,
-                         "G95 feed per revolution with the spindle stopped: start it with M03/M04 S..", column};
+        throw MacroError::of(AlarmCode::InvalidWord, message("g95_spindle_stopped"), column);
     }
     return state_.feed * rpm;
 }
@@ -134,14 +133,14 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
     case 0: machine_.rapid(target); return;
     case 1:
         if (state_.feed <= 0) {
-            throw MacroError{AlarmCode::InvalidWord, "G01 with no feed: give F", motionColumn(words)};
+            throw MacroError::of(AlarmCode::InvalidWord, message("g01_no_feed"), motionColumn(words));
         }
         machine_.feed(target, motionFeedRate(words));
         return;
     default: break;
     }
     if (state_.feed <= 0) {
-        throw MacroError{AlarmCode::InvalidWord, "G02/G03 with no feed: give F", motionColumn(words)};
+        throw MacroError::of(AlarmCode::InvalidWord, message("arc_no_feed"), motionColumn(words));
     }
     machine::ArcSpec spec;
     spec.start = machine_.position();
@@ -247,7 +246,7 @@ void ModalInterpreter::probeMove(const Words& words) {
                          : "no skip signal: the fixed setter input (params 575-577) is not set");
     }
     if (state_.feed <= 0) {
-        invalid(g31, "G31 needs a feed: give F");
+        invalid(g31, message("word_g31_no_feed", {wordText(g31)}));
     }
     machine::Axes target = targetFor(words, false);
     checkSoftLimits(target, words);
@@ -295,10 +294,8 @@ void ModalInterpreter::goToReference(const Words& words, int point) {
     } else if (auto it = referencePoints_.find(point); it != referencePoints_.end()) {
         reference = it->second;
     } else if (point != 1) {
-        throw MacroError{AlarmCode::InvalidWord,
-                         "G30 P" + std::to_string(point) + ": reference point " + std::to_string(point) +
-                             " is not set in this machine's machine.toml [reference_points]",
-                         motionColumn(words)};
+        throw MacroError::of(AlarmCode::InvalidWord, message("g30_point_unset", {std::to_string(point)}),
+                             motionColumn(words));
     }
     machine::Axes target = machine_.position();
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
@@ -335,7 +332,7 @@ void ModalInterpreter::setOffsets(const Words& words) {
         return std::abs(w.value - 10) < 1e-9;
     });
     if (dialect_.id == gcode::DialectId::M350) {
-        invalid(g10, "not available on the M350: write the work offsets #805-#844 directly");
+        invalid(g10, message("word_m350_no_g10", {wordText(g10)}));
     }
     const WordValue* l = words.find('L');
     const WordValue* p = words.find('P');
@@ -344,8 +341,7 @@ void ModalInterpreter::setOffsets(const Words& words) {
         return;
     }
     if (!l || !p) {
-        invalid(g10, "G10 needs L and P (L2 P1 X.. for G54, L20 P1 X.. for G54.1 P1, L10-L13 P.. R.. for tool offsets, "
-                     "L1/L10 P<tool> Z..)");
+        invalid(g10, message("word_g10_needs_l_p", {wordText(g10)}));
     }
     int kind = roundToInt(l->value);
     int number = roundToInt(p->value);
@@ -359,14 +355,11 @@ void ModalInterpreter::setOffsets(const Words& words) {
     }
     const int systems = features_.additionalSystems;
     if (kind == 20 && (number < 1 || number > systems)) {
-        invalid(g10, systems > 0 ? "G10 L20 writes the additional work systems P1-P" + std::to_string(systems) +
-                                       " (G54.1) of this machine"
-                                 : std::string("G10 L20 writes the additional work systems (G54.1), which this machine "
-                                               "does not have (machine.toml [coordinates] additional_systems)"));
+        invalid(g10, systems > 0 ? message("word_g10_l20_range", {wordText(g10), std::to_string(systems)})
+                                 : message("word_g10_l20_none", {wordText(g10)}));
     }
     if (kind != 20 && (kind != 2 || number < 0 || number > 6)) {
-        invalid(g10, "supported: L2 with P0-P6 (P0 external, P1-P6 G54-G59), L20 P1-Pn for G54.1 Pn, L1 / L10-L13 P R "
-                     "for tool offsets, L1 / L10 / L11 P<tool> with axis words for the tool table");
+        invalid(g10, message("word_g10_supported", {wordText(g10)}));
     }
     const int slot = kind == 20 ? WorkOffsets::additionalSlot(number) : number == 0 ? WorkOffsets::kCommon : number;
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {

@@ -27,17 +27,15 @@ using macro::WordValue;
 // belong to a machine that keeps a LinuxCNC tool.tbl; elsewhere they would be guesses.
 void ModalInterpreter::needLinuxCncTable(const WordValue& w, const std::string& what) const {
     if (!tools_.keepsToolTable()) {
-        invalid(w, what + " is LinuxCNC's and works on a machine that keeps a tool table (tool.tbl in the machine "
-                          "folder, or --tool-table): this one keeps none");
+        invalid(w, message("word_linuxcnc_table", {wordText(w), what}));
     }
 }
 
 // G10 L0: read tool.tbl again (LinuxCNC refuses it while a tool is loaded: M61 Q0 first).
 void ModalInterpreter::reloadToolTable(const WordValue& g10) {
-    needLinuxCncTable(g10, "G10 L0 (reload the tool table)");
+    needLinuxCncTable(g10, bilingual("G10 L0 (reload the tool table)", "G10 L0（重新读入刀具表）"));
     if (const int loaded = spindleTool_ ? spindleTool_() : 0; loaded != 0) {
-        invalid(g10, "G10 L0 is not allowed with a tool loaded (T" + std::to_string(loaded) +
-                         "), as in LinuxCNC: unload it first (M61 Q0)");
+        invalid(g10, message("word_g10_l0_loaded", {wordText(g10), std::to_string(loaded)}));
     }
     std::vector<std::string> skipped;
     if (auto why = tools_.reload(skipped)) {
@@ -49,15 +47,14 @@ void ModalInterpreter::reloadToolTable(const WordValue& g10) {
 // G43.1 Z..: LinuxCNC's dynamic tool length offset, the value itself instead of a table's entry;
 // the block moves nothing (its Z is the offset), the next move applies it. G49 cancels it.
 void ModalInterpreter::setDynamicLength(const WordValue& g, const Words& words) {
-    needLinuxCncTable(g, "G43.1 (dynamic tool length)");
+    needLinuxCncTable(g, bilingual("G43.1 (dynamic tool length)", "G43.1（动态刀具长度）"));
     for (char letter : {'X', 'Y', 'A', 'B', 'H'}) {
         if (words.has(letter)) {
-            invalid(words[letter], std::string("G43.1 here takes Z, the tool length, only: ") + letter +
-                                       " has no tool offset on this machine");
+            invalid(words[letter], message("word_g43_1_z_only", {wordText(words[letter]), std::string(1, letter)}));
         }
     }
     if (!words.has('Z')) {
-        invalid(g, "G43.1 needs Z<tool length>");
+        invalid(g, message("word_g43_1_needs_z", {wordText(g)}));
     }
     state_.groups[8] = 43.1;
     state_.lengthOffset = 0;
@@ -67,11 +64,11 @@ void ModalInterpreter::setDynamicLength(const WordValue& g, const Words& words) 
 
 // M61 Qn: the spindle holds tool n now, without a change (LinuxCNC's "set current tool").
 void ModalInterpreter::setToolNumber(const WordValue& m, const Words& words) {
-    needLinuxCncTable(m, "M61 (set the tool number)");
+    needLinuxCncTable(m, bilingual("M61 (set the tool number)", "M61（设定刀号）"));
     const WordValue* q = words.find('Q');
     const int tool = q ? roundToInt(q->value) : -1;
     if (!q || std::abs(q->value - tool) > 1e-9 || tool < 0) {
-        invalid(q ? *q : m, "M61 needs Q<tool number>, a whole number from 0");
+        invalid(q ? *q : m, message("word_m61_needs_q", {wordText(q ? *q : m)}));
     }
     state_.selectedTool = tool;
     toolChange_ = ToolChange{tool, true};
@@ -83,15 +80,13 @@ void ModalInterpreter::setToolOffsets(const Words& words, const WordValue& g10, 
     const WordValue& l = words['L'];
     if (linuxCnc) {
         if (kind == 12 || kind == 13) {
-            invalid(l, "G10 L" + std::to_string(kind) + " P.. R.. writes a D offset (FANUC); axis words belong to "
-                       "LinuxCNC's G10 L1 / L10 / L11 P<tool>");
+            invalid(l, message("word_g10_d_offset_axes", {wordText(l), std::to_string(kind)}));
         }
         setToolTable(words, g10, kind);
         return;
     }
     if (!words.has('R')) {
-        invalid(g10, "G10 L" + std::to_string(kind) + " needs R<value> (FANUC: G10 L" + std::to_string(kind) +
-                         " P<offset> R..) or axis words (LinuxCNC: G10 L1 / L10 / L11 P<tool> Z..)");
+        invalid(g10, message("word_g10_needs_r", {wordText(g10), std::to_string(kind)}));
     }
     setOffsetRegister(words, kind);
 }
@@ -103,14 +98,11 @@ void ModalInterpreter::setOffsetRegister(const Words& words, int kind) {
     tools::OffsetRegister which = tools::OffsetRegister::LengthGeometry;
     if (tools_.offsetMemory() == tools::OffsetMemory::A) {
         if (kind != 1 && kind != 11) {
-            invalid(l, "this machine has FANUC offset memory A, one value per offset: G10 L11 P.. R.. (or L1) "
-                       "writes it; L10, L12 and L13 are offset memory C's (H/D geometry and wear)");
+            invalid(l, message("word_g10_memory_a", {wordText(l)}));
         }
     } else {
         if (kind == 1) {
-            invalid(l, "G10 L1 P.. R.. is offset memory A's form (FANUC) and sets the radius in LinuxCNC: this "
-                       "machine has offset memory C, write G10 L10 (H geometry), L11 (H wear), L12 (D geometry) "
-                       "or L13 (D wear)");
+            invalid(l, message("word_g10_memory_c", {wordText(l)}));
         }
         which = kind == 10   ? tools::OffsetRegister::LengthGeometry
                 : kind == 11 ? tools::OffsetRegister::LengthWear
@@ -119,8 +111,7 @@ void ModalInterpreter::setOffsetRegister(const Words& words, int kind) {
     }
     const int number = roundToInt(p.value);
     if (std::abs(p.value - number) > 1e-9 || !tools_.validOffsetNumber(number)) {
-        invalid(p, "G10 L" + std::to_string(kind) + ": P is the offset number, 1-" +
-                       std::to_string(tools_.offsetCount()) + " on this machine");
+        invalid(p, message("word_g10_offset_number", {wordText(p), std::to_string(kind), std::to_string(tools_.offsetCount())}));
     }
     const double value = (state_.incremental() ? tools_.registerValue(which, number) : 0.0) + r.value;
     if (auto why = tools_.setRegister(which, number, value)) {
@@ -132,16 +123,15 @@ void ModalInterpreter::setToolTable(const Words& words, const WordValue& g10, in
     const WordValue& p = *words.find('P');
     const int tool = roundToInt(p.value);
     if (std::abs(p.value - tool) > 1e-9 || tool < 1) {
-        invalid(p, "G10 L" + std::to_string(kind) + ": P is the tool number (1 and up)");
+        invalid(p, message("word_g10_tool_number", {wordText(p), std::to_string(kind)}));
     }
     std::optional<tools::ToolEntry> row = tools_.find(tool);
     if (!row) {
-        invalid(p, "tool " + std::to_string(tool) + " is not in the tool table (tool.tbl): add its row first");
+        invalid(p, message("word_tool_not_in_table", {wordText(p), std::to_string(tool)}));
     }
     for (char letter : {'C', 'U', 'V', 'W'}) {
         if (words.has(letter)) {
-            invalid(words[letter], "this machine has no " + std::string(1, letter) +
-                                       " axis: the table keeps that column, G10 cannot set it");
+            invalid(words[letter], message("word_g10_no_axis", {wordText(words[letter]), std::string(1, letter)}));
         }
     }
     tools::ToolEntry entry = *row;
@@ -178,13 +168,13 @@ void ModalInterpreter::setToolTable(const Words& words, const WordValue& g10, in
     if (const WordValue* q = words.find('Q')) {
         const int orientation = roundToInt(q->value);
         if (std::abs(q->value - orientation) > 1e-9 || orientation < 0 || orientation > 9) {
-            invalid(*q, "the orientation Q runs from 0 to 9");
+            invalid(*q, message("word_orientation_range", {wordText(*q)}));
         }
         entry.orientation = orientation;
         any = true;
     }
     if (!any) {
-        invalid(g10, "G10 L" + std::to_string(kind) + " without offsets has no effect (give X Y Z A B, R, I, J or Q)");
+        invalid(g10, message("word_g10_no_effect", {wordText(g10), std::to_string(kind)}));
     }
     if (auto why = tools_.put(entry)) {
         invalid(g10, *why);

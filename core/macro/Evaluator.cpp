@@ -1,5 +1,6 @@
 #include "core/macro/Evaluator.h"
 
+#include "core/common/Numeric.h"
 #include "core/macro/MacroError.h"
 #include "core/macro/MessageText.h"
 
@@ -74,15 +75,19 @@ std::string readableNumber(double n) {
 
 } // namespace
 
+Message macroAlarmWords(double value, std::string_view text) {
+    const std::string number = std::to_string(3000 + static_cast<long long>(roundToInt(value)));
+    return text.empty() ? message("macro_alarm", {number}) : message("macro_alarm_text", {number, std::string(text)});
+}
+
 int Evaluator::variableNumber(gcode::ExprId variableNode) {
     const ExprNode& node = pool_[variableNode];
     double n = node.lhs == gcode::kNoExpr ? node.number : number(node.lhs);
     double rounded = std::round(n);
     if (std::abs(n - rounded) > 1e-6 || rounded < 0 || rounded > store_.map().lastNumber()) {
-        throw MacroError{AlarmCode::UndefinedVariable,
-                         "#[" + readableNumber(n) + "]: variable numbers are whole numbers from 0 to " +
-                             std::to_string(store_.map().lastNumber()),
-                         node.column};
+        throw MacroError::of(AlarmCode::UndefinedVariable,
+                             message("variable_number_range", {readableNumber(n), std::to_string(store_.map().lastNumber())}),
+                             node.column);
     }
     return static_cast<int>(rounded);
 }
@@ -90,7 +95,7 @@ int Evaluator::variableNumber(gcode::ExprId variableNode) {
 Value Evaluator::readVariable(int number, std::uint32_t column) {
     VariableInfo info = store_.map().describe(number);
     if (info.kind == VariableKind::Undefined) {
-        throw MacroError{AlarmCode::UndefinedVariable, store_.map().undefinedText(number), column};
+        throw MacroError::of(AlarmCode::UndefinedVariable, store_.map().undefinedWords(number), column);
     }
     return VariableStore::ownsKind(info.kind) ? store_.read(info, number) : machine_.readSystem(info, number);
 }
@@ -98,11 +103,11 @@ Value Evaluator::readVariable(int number, std::uint32_t column) {
 void Evaluator::writeVariable(int number, Value value, std::string_view text, std::uint32_t column) {
     VariableInfo info = store_.map().describe(number);
     if (info.kind == VariableKind::Undefined) {
-        throw MacroError{AlarmCode::UndefinedVariable, store_.map().undefinedText(number), column};
+        throw MacroError::of(AlarmCode::UndefinedVariable, store_.map().undefinedWords(number), column);
     }
     if (info.readOnly) {
-        throw MacroError{AlarmCode::ReadOnlyVariable,
-                         "cannot write " + store_.map().describeText(number) + ": it is read-only", column};
+        throw MacroError::of(AlarmCode::ReadOnlyVariable,
+                             message("variable_read_only", {store_.map().describeWords(number)}), column);
     }
     if (info.kind == VariableKind::Parameter) {
         if (auto refused = machine_.parameterWrite(info.index, value.asNumber())) {
@@ -129,6 +134,9 @@ void Evaluator::writeVariable(int number, Value value, std::string_view text, st
         formatted = std::string(text);
     }
     if (auto refused = machine_.writeSystem(info, number, value.asNumber(), formatted)) {
+        if (info.kind == VariableKind::Alarm && *refused == macroAlarmWords(value.asNumber(), formatted).english()) {
+            throw MacroError::of(AlarmCode::MacroAlarm, macroAlarmWords(value.asNumber(), formatted), column);
+        }
         throw MacroError{info.kind == VariableKind::Alarm ? AlarmCode::MacroAlarm : AlarmCode::InvalidArgument,
                          *refused, column};
     }
@@ -138,9 +146,8 @@ void Evaluator::writeVariable(int number, Value value, std::string_view text, st
 // alarms here too.
 Value Evaluator::finite(Value value, std::uint32_t column) {
     if (!value.vacant && !std::isfinite(value.number)) {
-        throw MacroError{AlarmCode::InvalidArgument,
-                         std::isnan(value.number) ? "the result is not a number (nan)" : "arithmetic overflow: the result is infinite",
-                         column};
+        throw MacroError::of(AlarmCode::InvalidArgument,
+                             std::isnan(value.number) ? message("result_nan") : message("result_infinite"), column);
     }
     return value;
 }
@@ -184,13 +191,13 @@ Value Evaluator::binary(const ExprNode& node, Value lhs, Value rhs) {
     case BinaryOp::Mul: return Value::of(a * b);
     case BinaryOp::Div:
         if (b == 0.0) {
-            throw MacroError{AlarmCode::DivisionByZero, "division by zero", node.column};
+            throw MacroError::of(AlarmCode::DivisionByZero, message("division_by_zero"), node.column);
         }
         return Value::of(a / b);
     case BinaryOp::Mod: {
         std::int64_t divisor = toInteger(b);
         if (divisor == 0) {
-            throw MacroError{AlarmCode::DivisionByZero, "MOD by zero", node.column};
+            throw MacroError::of(AlarmCode::DivisionByZero, message("mod_by_zero"), node.column);
         }
         return Value::of(divisor == -1 ? 0.0 : static_cast<double>(toInteger(a) % divisor));
     }
@@ -210,9 +217,8 @@ double Evaluator::function(const ExprNode& node) {
     double x = number(node.lhs);
     auto domain = [&](bool ok, const char* what) {
         if (!ok) {
-            throw MacroError{AlarmCode::InvalidArgument, std::string(what) + " of " + std::to_string(x) +
-                                                             " is not defined",
-                             node.column};
+            throw MacroError::of(AlarmCode::InvalidArgument, message("function_domain", {what, std::to_string(x)}),
+                                 node.column);
         }
     };
     switch (f) {

@@ -1,11 +1,13 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Expression.h"
 #include "core/macro/MachineAccess.h"
 #include "core/macro/Value.h"
 #include "core/macro/VariableStore.h"
 
+#include <string_view>
 #include <vector>
 
 namespace m350::macro {
@@ -41,5 +43,9 @@ private:
     MachineAccess& machine_;
     std::vector<gcode::ExprId> spine_; // binaryChain's scratch, kept for its capacity
 };
+
+// What #3000 = n (text) raises: "macro alarm 3000+n: text", the same words for the controller that
+// refuses the write and the evaluator that turns it into the alarm.
+Message macroAlarmWords(double value, std::string_view text);
 
 } // namespace m350::macro

@@ -108,6 +108,12 @@ void Executor::raise(AlarmCode code, std::string message) {
     state_ = State::Alarmed;
 }
 
+void Executor::raise(AlarmCode code, const Message& words) {
+    raise(code, words.english());
+    alarm_->messageId = words.id;
+    alarm_->messageArguments = words.arguments;
+}
+
 Executor::State Executor::step() {
     if (state_ != State::Running) {
         return state_;
@@ -156,7 +162,8 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
         return;
     }
     if (block.suspect) {
-        throw MacroError{AlarmCode::SuspectLine, program_.suspectMessage(current_), 0};
+        const gcode::Diagnostic suspect = program_.suspectMessage(current_);
+        throw MacroError{AlarmCode::SuspectLine, suspect.message, 0, suspect.messageId, suspect.messageArguments};
     }
     switch (block.control) {
     case Control::None: executeOrdinary(block, frameIndex); return;
@@ -180,9 +187,9 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
         return;
     case Control::While:
         if (block.partner < 0) {
-            throw MacroError{AlarmCode::WhileWithoutEnd,
-                             gcode::loopOpening(block) + " has no matching END" + std::to_string(block.loopId),
-                             block.controlColumn};
+            throw MacroError::of(AlarmCode::WhileWithoutEnd,
+                                 message("loop_no_end", {gcode::loopOpening(block), std::to_string(block.loopId)}),
+                                 block.controlColumn);
         }
         if (block.condition == gcode::kNoExpr || evaluator_.condition(block.condition)) {
             ++frame.pc;
@@ -192,10 +199,8 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
         return;
     case Control::End:
         if (block.partner < 0) {
-            throw MacroError{AlarmCode::EndWithoutDo,
-                             "END" + std::to_string(block.loopId) + " without a matching WHILE ... DO" +
-                                 std::to_string(block.loopId),
-                             block.controlColumn};
+            throw MacroError::of(AlarmCode::EndWithoutDo, message("loop_end_no_do", {std::to_string(block.loopId)}),
+                                 block.controlColumn);
         }
         frame.pc = static_cast<std::uint32_t>(block.partner);
         return;
@@ -217,19 +222,16 @@ void Executor::jumpToLabel(std::size_t frameIndex, double label, std::uint32_t c
     Frame& frame = frames_[frameIndex];
     const gcode::ProgramUnit& unit = program_.units[frame.unit];
     if (!(std::round(label) >= 0 && std::round(label) <= gcode::kMaxLabel)) { // NaN too
-        throw MacroError{AlarmCode::GotoMissingLabel,
-                         "GOTO" + shortest(label) + ": sequence numbers run from 0 to " +
-                             std::to_string(gcode::kMaxLabel),
-                         column};
+        throw MacroError::of(AlarmCode::GotoMissingLabel,
+                             message("goto_range", {shortest(label), std::to_string(gcode::kMaxLabel)}), column);
     }
     auto n = roundToInt(label);
     if (auto target = program_.findLabel(frame.unit, n, frame.pc)) {
         frame.pc = *target;
         return;
     }
-    std::string where = unit.number >= 0 ? "O" + std::to_string(unit.number) : std::string("this program");
-    throw MacroError{AlarmCode::GotoMissingLabel,
-                     "GOTO" + std::to_string(n) + ": there is no N" + std::to_string(n) + " in " + where, column};
+    std::string where = unit.number >= 0 ? "O" + std::to_string(unit.number) : bilingual("this program", "本程序");
+    throw MacroError::of(AlarmCode::GotoMissingLabel, message("flow_goto_no_label", {std::to_string(n), where}), column);
 }
 
 void Executor::returnFromFrame(std::optional<double> label, std::uint32_t column, bool explicitM99) {
@@ -270,23 +272,31 @@ bool Executor::handlingCode(std::int32_t code) const {
     return false;
 }
 
+namespace {
+
+// How a program was called, in both languages (programUnit's `how`).
+std::string callWords(std::string_view how) {
+    if (how == "address call") return bilingual(how, "地址调用");
+    if (how == "M code program") return bilingual(how, "M代码程序");
+    if (how == "G code program") return bilingual(how, "G代码程序");
+    return std::string(how); // G65, M98
+}
+
+} // namespace
+
 std::uint32_t Executor::programUnit(double number, const char* how, std::uint32_t column) const {
     auto n = roundToInt(number);
     if (auto unit = program_.findUnit(n)) {
         return *unit;
     }
-    throw MacroError{AlarmCode::UnknownProgram,
-                     std::string(how) + ": there is no O" + std::to_string(n) +
-                         " in this file or the machine's macro libraries",
-                     column};
+    throw MacroError::of(AlarmCode::UnknownProgram, message("unknown_program", {callWords(how), std::to_string(n)}),
+                         column);
 }
 
 void Executor::pushCall(const Call& call, std::uint32_t column) {
     if (frames_.size() > static_cast<std::size_t>(dialect_.maxCallDepth)) {
-        throw MacroError{AlarmCode::CallNestingTooDeep,
-                         "call nesting too deep: more than " + std::to_string(dialect_.maxCallDepth) +
-                             " levels (does a program call itself?)",
-                         column};
+        throw MacroError::of(AlarmCode::CallNestingTooDeep,
+                             message("call_nesting", {std::to_string(dialect_.maxCallDepth)}), column);
     }
     if (call.repeats <= 0) {
         return;

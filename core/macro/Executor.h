@@ -64,6 +64,7 @@ public:
 
     // Stops at once with an alarm raised from outside (sim-time limit, E-stop, a device).
     void raise(AlarmCode code, std::string message);
+    void raise(AlarmCode code, const Message& words);
 
 private:
     struct Frame {

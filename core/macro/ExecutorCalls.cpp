@@ -26,8 +26,7 @@ bool wholeNumber(double v) {
 int builtInHomingAxis(std::vector<WordValue>& words, std::uint32_t column) {
     auto x = std::find_if(words.begin(), words.end(), [](const WordValue& w) { return w.letter == 'X'; });
     if (x == words.end() || !wholeNumber(x->value) || x->value > 4) {
-        throw MacroError{AlarmCode::InvalidArgument,
-                         "M98 P501 (home one axis) needs X<axis>: 0 X, 1 Y, 2 Z, 3 the 4th, 4 the 5th", column};
+        throw MacroError::of(AlarmCode::InvalidArgument, message("homing_call_axis"), column);
     }
     int axis = roundToInt(x->value);
     words.erase(x);
@@ -235,7 +234,7 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
     auto needP = [&](const WordValue& code, const char* name) {
         auto p = takeLetter('P');
         if (!p) {
-            throw MacroError{AlarmCode::MissingAddress, std::string(name) + " needs P<program number>", code.column};
+            throw MacroError::of(AlarmCode::MissingAddress, message("call_needs_p", {name}), code.column);
         }
         return *p;
     };
@@ -354,7 +353,7 @@ void Executor::executeOrdinary(const gcode::Block& block, std::size_t frameIndex
     }
     if (homeAxis) {
         if (auto failure = machine_.builtInHoming(*homeAxis)) {
-            throw MacroError{failure->code, failure->message, callColumn};
+            throw MacroError::of(failure->code, failure->words, callColumn);
         }
     }
     if (libraryHomeAxis) {

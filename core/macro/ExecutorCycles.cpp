@@ -50,9 +50,7 @@ void Executor::prepareCycleCall(Call& call, int code, const std::vector<WordValu
     const std::string name = codeName(code);
     const std::string handler = "O" + std::to_string(dialect_.gHandlerBase + code);
     if (incremental) {
-        throw MacroError{AlarmCode::InvalidWord,
-                         name + " runs " + handler + ", which takes absolute X Y Z R: program the cycle under G90",
-                         column};
+        throw MacroError::of(AlarmCode::InvalidWord, message("cycle_handler_absolute", {name, handler}), column);
     }
     auto local = [this](char letter) { return dialect_.handlerArgument(letter); };
     std::map<int, double> args;
@@ -74,7 +72,7 @@ void Executor::prepareCycleCall(Call& call, int code, const std::vector<WordValu
     auto z = local('Z');
     auto r = local('R');
     if (!z || !r || !args.count(*z) || !args.count(*r)) {
-        throw MacroError{AlarmCode::MissingAddress, name + " needs Z (the hole bottom) and R (the R level)", column};
+        throw MacroError::of(AlarmCode::MissingAddress, message("cycle_needs_z_r", {name}), column);
     }
     if (auto k = local('K'); k && !std::any_of(call.arguments.begin(), call.arguments.end(),
                                                [&](const auto& a) { return a.first == *k; })) {

@@ -52,11 +52,11 @@ bool Executor::executeDeviceStatement(const gcode::Block& block) {
             } else if (auto bytes = formatBprnt(value, item.fractionDigits)) {
                 record += *bytes;
             } else {
-                throw MacroError{AlarmCode::InvalidArgument,
-                                 "BPRNT: #" + std::to_string(evaluator_.variableNumber(item.value)) + " = " +
-                                     std::to_string(value.number) + " with " + std::to_string(item.fractionDigits) +
-                                     " decimals does not fit in 32 bits",
-                                 item.column};
+                throw MacroError::of(AlarmCode::InvalidArgument,
+                                     message("bprnt_too_big", {std::to_string(evaluator_.variableNumber(item.value)),
+                                                               std::to_string(value.number),
+                                                               std::to_string(item.fractionDigits)}),
+                                     item.column);
             }
         }
         record += kEndOfBlock;
@@ -66,7 +66,7 @@ bool Executor::executeDeviceStatement(const gcode::Block& block) {
     case Control::MSetData:
     case Control::MGetData: return modbusTransfer(block.control == Control::MSetData, items, column);
     default:
-        throw MacroError{AlarmCode::DeviceError, "this statement is not simulated", column};
+        throw MacroError::of(AlarmCode::DeviceError, message("statement_not_simulated"), column);
     }
 }
 
@@ -74,21 +74,19 @@ bool Executor::executeDeviceStatement(const gcode::Block& block) {
 // slave's exception code goes into #X6, 0 when it did what was asked (MGETDATA then fills #X1..).
 bool Executor::modbusTransfer(bool write, std::span<const gcode::StatementItem> items, std::uint32_t column) {
     using gcode::ModbusStatement;
-    const char* name = ModbusStatement::name(write);
     int value[ModbusStatement::kCount] = {};
     for (int k = 0; k < ModbusStatement::kCount; ++k) {
         const gcode::StatementItem& item = items[static_cast<std::size_t>(k)];
         const double v = evaluator_.number(item.value);
         if (auto problem = ModbusStatement::argumentProblem(write, k, v)) {
-            throw MacroError{AlarmCode::InvalidArgument, std::string(name) + ": " + *problem, item.column};
+            throw MacroError::of(AlarmCode::InvalidArgument, *problem, item.column);
         }
         value[k] = static_cast<int>(std::lround(v));
     }
     const int first = value[ModbusStatement::FirstVariable];
     const int bytes = value[ModbusStatement::Bytes];
-    if (auto problem = ModbusStatement::spanProblem(first, bytes)) {
-        throw MacroError{AlarmCode::InvalidArgument, std::string(name) + ": " + *problem,
-                         items[ModbusStatement::Bytes].column};
+    if (auto problem = ModbusStatement::spanProblem(write, first, bytes)) {
+        throw MacroError::of(AlarmCode::InvalidArgument, *problem, items[ModbusStatement::Bytes].column);
     }
     Peripherals::ModbusRequest request{write, value[ModbusStatement::Slave], value[ModbusStatement::Function],
                                        value[ModbusStatement::Address], bytes, {}};
@@ -98,12 +96,10 @@ bool Executor::modbusTransfer(bool write, std::span<const gcode::StatementItem> 
         for (int n = first; n < first + bytes; ++n) {
             const double v = evaluator_.readVariable(n, firstColumn).asNumber();
             if (std::abs(v - std::round(v)) > 1e-9 || v < 0 || v > 255) {
-                char text[160];
-                std::snprintf(text, sizeof text,
-                              "MSETDATA sends #%d = %.10g: each variable carries one byte, a whole number from 0 to "
-                              "255 (split a larger value over two variables)",
-                              n, v);
-                throw MacroError{AlarmCode::InvalidArgument, text, firstColumn};
+                char text[32];
+                std::snprintf(text, sizeof text, "%.10g", v);
+                throw MacroError::of(AlarmCode::InvalidArgument, message("msetdata_byte", {std::to_string(n), text}),
+                                     firstColumn);
             }
             request.data.push_back(static_cast<std::uint8_t>(std::lround(v)));
         }

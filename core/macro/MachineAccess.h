@@ -31,10 +31,10 @@ public:
     // homes `axis` (0 X .. 4 B) at once in virtual time. Returns the alarm when it cannot.
     struct HomingFailure {
         AlarmCode code;
-        std::string message;
+        Message words;
     };
     virtual std::optional<HomingFailure> builtInHoming(int axis) {
-        return HomingFailure{AlarmCode::NotHomed, "axis " + std::to_string(axis) + ": this machine cannot home"};
+        return HomingFailure{AlarmCode::NotHomed, message("homing_unavailable", {std::to_string(axis)})};
     }
     // A library's homing program (the M350's O501) is called for `axis`: the axis searches for its
     // switch from here on, with no trusted machine position until the program marks it homed.

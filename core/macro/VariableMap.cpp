@@ -188,6 +188,62 @@ std::string_view kindName(VariableKind kind) {
     return "undefined";
 }
 
+std::string_view kindChinese(VariableKind kind) {
+    switch (kind) {
+    case VariableKind::Undefined: return "未定义";
+    case VariableKind::Null: return "空变量(#0，始终为空)";
+    case VariableKind::Local: return "局部变量";
+    case VariableKind::Common: return "公共变量";
+    case VariableKind::Retained: return "保持型公共变量";
+    case VariableKind::Parameter: return "参数";
+    case VariableKind::WorkOffset: return "工件坐标偏置";
+    case VariableKind::MachinePosition: return "机床坐标";
+    case VariableKind::WorkPosition: return "工件坐标";
+    case VariableKind::BlockEnd: return "程序段终点坐标";
+    case VariableKind::SkipPosition: return "跳转位置";
+    case VariableKind::ProbeResult: return "G31结果";
+    case VariableKind::ActiveWorkSystem: return "当前工件坐标系";
+    case VariableKind::Message: return "状态栏信息";
+    case VariableKind::Dialog: return "操作员对话框";
+    case VariableKind::Input: return "输入";
+    case VariableKind::Output: return "输出";
+    case VariableKind::Homed: return "回零标志";
+    case VariableKind::AxisCount: return "轴数";
+    case VariableKind::InterfaceInput: return "接口输入";
+    case VariableKind::InterfaceInputs: return "接口输入(16位)";
+    case VariableKind::InterfaceOutput: return "接口输出";
+    case VariableKind::InterfaceOutputs: return "接口输出";
+    case VariableKind::OperationControl: return "自动运行控制";
+    case VariableKind::Alarm: return "报警";
+    case VariableKind::StopMessage: return "停止并显示信息";
+    case VariableKind::ModalGroup: return "模态组";
+    case VariableKind::ModalWord: return "模态字";
+    case VariableKind::ToolOffset: return "刀具偏置";
+    case VariableKind::SpindleLoad: return "主轴负载% x 100";
+    case VariableKind::System: return "系统变量";
+    }
+    return "未定义";
+}
+
+Message VariableMap::undefinedWords(int number) const {
+    if (!commonText_.empty() && ((number >= 100 && number <= 999) || number >= 20000)) {
+        return message("variable_undefined_common", {std::to_string(number), std::string(dialectName_), commonText_});
+    }
+    return message("variable_undefined", {std::to_string(number), std::string(dialectName_)});
+}
+
+std::string VariableMap::describeWords(int number) const {
+    const std::string english = describeText(number);
+    const VariableKind kind = describe(number).kind;
+    // the same text with the kind's name in Chinese: "#1001 (input IN01)" -> "#1001 (输入 IN01)"
+    std::string chinese = english;
+    const std::string_view name = kindName(kind);
+    if (const std::size_t at = chinese.find(name); at != std::string::npos) {
+        chinese.replace(at, name.size(), kindChinese(kind));
+    }
+    return bilingual(english, chinese);
+}
+
 std::string VariableMap::undefinedText(int number) const {
     std::string text = "#" + std::to_string(number) + " does not exist in the " + std::string(dialectName_) + " dialect";
     if (!commonText_.empty() && ((number >= 100 && number <= 999) || number >= 20000)) {

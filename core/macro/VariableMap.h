@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/gcode/Dialect.h"
 #include "core/macro/VariableLayout.h"
 
@@ -65,6 +66,9 @@ public:
     std::string describeText(int number) const;
     // What the alarm and `check` say of a number that is no variable here.
     std::string undefinedText(int number) const;
+    // The same by message id; describeText() in both languages, as a message's argument.
+    Message undefinedWords(int number) const;
+    std::string describeWords(int number) const;
     // What a #[expression] may reach before it is no variable number at all: M350 #9999, FANUC
     // #999999 (the 30i's six digits), whether or not this machine has a variable there.
     int lastNumber() const { return lastNumber_; }

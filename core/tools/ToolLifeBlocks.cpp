@@ -25,8 +25,7 @@ const WordValue* find(const std::vector<WordValue>& words, char letter) {
 
 int wholeValue(const WordValue& w) {
     if (std::abs(w.value - std::round(w.value)) > 1e-9) {
-        throw MacroError{AlarmCode::InvalidWord,
-                         std::string(1, w.letter) + ": tool life data are whole numbers", w.column};
+        throw MacroError::of(AlarmCode::InvalidWord, message("tool_life_whole", {std::string(1, w.letter)}), w.column);
     }
     return roundToInt(w.value);
 }
@@ -44,7 +43,7 @@ void check(const std::optional<std::string>& problem, std::uint32_t column) {
         auto g11OrN = [](const WordValue& w) { return w.letter == 'N' || isCode(w, 'G', 11); };
         if (!std::all_of(words.begin(), words.end(), g11OrN) ||
             std::count_if(words.begin(), words.end(), [](const WordValue& w) { return w.letter == 'G'; }) != 1) {
-            throw MacroError{AlarmCode::InvalidWord, "G11 ends the tool life data: give it alone", column};
+            throw MacroError::of(AlarmCode::InvalidWord, message("tool_life_g11_alone"), column);
         }
         check(manager.endEntry(), column);
         return;
@@ -61,10 +60,8 @@ void check(const std::optional<std::string>& problem, std::uint32_t column) {
         case 'D': slot = &line.d; break;
         case 'N': continue;
         default:
-            throw MacroError{AlarmCode::InvalidWord,
-                             std::string(1, w.letter) + ": inside G10 L3 tool life data only P L Q (a group) or "
-                                                        "T H D (a tool) are read; end the data with G11",
-                             w.column};
+            throw MacroError::of(AlarmCode::InvalidWord, message("tool_life_entry_word", {std::string(1, w.letter)}),
+                                 w.column);
         }
         *slot = wholeValue(w);
     }
@@ -79,15 +76,14 @@ void check(const std::optional<std::string>& problem, std::uint32_t column) {
         if (isCode(w, 'G', 10)) {
             g10 = &w;
         } else if (isCode(w, 'G', 11)) {
-            throw MacroError{AlarmCode::InvalidWord, "G11 without G10 L3 (tool life data entry)", w.column};
+            throw MacroError::of(AlarmCode::InvalidWord, message("tool_life_g11_without_g10"), w.column);
         }
     }
     if (const WordValue* l = find(words, 'L'); g10 && l && isCode(*l, 'L', 3)) {
         const WordValue* p = find(words, 'P');
         auto counted = std::count_if(words.begin(), words.end(), [](const WordValue& w) { return w.letter != 'N'; });
         if (counted != (p ? 3 : 2)) {
-            throw MacroError{AlarmCode::InvalidWord, "G10 L3 [P1|P2] opens tool life data entry: give it alone",
-                             g10->column};
+            throw MacroError::of(AlarmCode::InvalidWord, message("tool_life_g10_alone"), g10->column);
         }
         check(manager.beginEntry(p ? wholeValue(*p) : 0), g10->column);
         return true;

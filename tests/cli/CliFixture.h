@@ -68,6 +68,13 @@ inline void expectRunContract(const json& j) {
             }
         }
     }
+    if (keys.erase("message_ids") == 1) { // the messages by id, one for each, when one has an id
+        ASSERT_TRUE(j["message_ids"].is_array());
+        EXPECT_EQ(j["message_ids"].size(), j["messages"].size());
+        for (const json& one : j["message_ids"]) {
+            EXPECT_TRUE(one.is_null() || keysOf(one) == (std::set<std::string>{"message_id", "message_arguments"})) << one;
+        }
+    }
     EXPECT_EQ(keys, contract);
 
     ASSERT_TRUE(j.contains("status") && j["status"].is_string());
@@ -137,9 +144,12 @@ inline void expectRunContract(const json& j) {
     if (j.contains("diagnostics")) {
         ASSERT_TRUE(j["diagnostics"].is_array());
         for (const json& d : j["diagnostics"]) {
-            EXPECT_EQ(keysOf(d),
-                      (std::set<std::string>{"file", "line", "column", "severity", "kind", "message"}))
-                << d;
+            std::set<std::string> keys = keysOf(d);
+            if (keys.count("message_id") == 1) { // a finding of the message table: its id and arguments
+                EXPECT_EQ(keys.erase("message_arguments"), 1u) << d;
+                keys.erase("message_id");
+            }
+            EXPECT_EQ(keys, (std::set<std::string>{"file", "line", "column", "severity", "kind", "message"})) << d;
         }
     }
 }

@@ -62,6 +62,31 @@ TEST(PanelWords, ACrashAlarmIsSaidInThePanelsLanguage) {
     language(panel, "zh_CN");
 }
 
+// The parser's findings and the macro alarms are said by message id too: a program that does not
+// load says why in Chinese on the message line, a division by zero on the alarm line.
+TEST(PanelWords, ASyntaxErrorAndAMacroAlarmAreSaidInThePanelsLanguage) {
+    PanelHarness panel;
+    language(panel, "zh_CN");
+    panel.loadProgram("bad.nc", "#1=1\nIF [#1 GT 0] X10\nM30\n");
+    panel.advance(0.2);
+    EXPECT_TRUE(panel.window().messageText().contains(QStringLiteral("bad.nc:2:14: IF 条件后须跟 GOTOn 或 THEN，实际为 'X'")))
+        << panel.window().messageText().toStdString();
+    language(panel, "en");
+    panel.loadProgram("bad.nc", "#1=1\nIF [#1 GT 0] X10\nM30\n");
+    panel.advance(0.2);
+    EXPECT_TRUE(panel.window().messageText().contains(
+        QStringLiteral("bad.nc:2:14: IF condition must be followed by GOTOn or THEN, found 'X'")))
+        << panel.window().messageText().toStdString();
+    language(panel, "zh_CN");
+    panel.loadProgram("div.nc", "#1=0\n#2=5/#1\nM30\n");
+    panel.key("START");
+    panel.advance(1.0);
+    const auto alarm = panel.session().latest()->status.alarm;
+    ASSERT_TRUE(alarm);
+    EXPECT_EQ(alarm->messageId, "division_by_zero");
+    EXPECT_TRUE(panel.window().alarmText().endsWith(QStringLiteral("除数为零"))) << panel.window().alarmText().toStdString();
+}
+
 TEST(PanelWords, TheEmergencyStopIsSaidInThePanelsLanguage) {
     PanelHarness panel;
     language(panel, "zh_CN");

@@ -35,10 +35,15 @@ bool hasChinese(const std::string& text) {
     return false;
 }
 
-// The Latin words a Chinese text may keep: G/M codes, parameter and signal names.
+// The Latin words a Chinese text may keep: G/M codes, macro statements, parameter and signal names,
+// the machine folder's files and keys (machine.toml [variables] common), written as the operator
+// types them.
 bool hasEnglishWords(const std::string& text) {
     static const std::regex word("[A-Za-z]{4,}");
-    static const std::set<std::string> kept{"MGETDATA", "MSETDATA", "Modbus", "modbus", "toml", "slave", "TLCH"};
+    static const std::set<std::string> kept{
+        "MGETDATA", "MSETDATA", "Modbus", "modbus", "toml", "slave", "TLCH", "GOTO", "GOTOn", "THEN", "WHILE",
+        "BPRNT", "DPRNT", "POPEN", "PCLOS", "FANUC", "ATAN", "FIFO", "LinuxCNC", "slib", "tool", "table", "machine", "variables", "common", "coordinates", "additional",
+        "systems", "reference", "points"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;

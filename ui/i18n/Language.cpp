@@ -5,6 +5,8 @@
 #include <QFontDatabase>
 #include <QStringList>
 
+#include <atomic>
+
 namespace m350::ui {
 
 QString findCjkFamily() {
@@ -44,10 +46,19 @@ QString& chosenLanguage() {
     return language;
 }
 
+std::atomic<MessageLanguage>& chosenMessageLanguage() {
+    static std::atomic<MessageLanguage> language{MessageLanguage::Chinese};
+    return language;
+}
+
 } // namespace
 
 QString Language::panelLanguage() {
     return chosenLanguage();
+}
+
+MessageLanguage Language::messageLanguage() {
+    return chosenMessageLanguage().load();
 }
 
 bool Language::set(const QString& language, QString* error) {
@@ -71,6 +82,7 @@ bool Language::set(const QString& language, QString* error) {
     QApplication::installTranslator(translator_.get()); // sends LanguageChange to every widget
     current_ = language;
     chosenLanguage() = language;
+    chosenMessageLanguage() = language == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
     return true;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <QString>
 #include <QTranslator>
 
@@ -20,6 +22,9 @@ public:
     // The language the panel says the core's messages in (AlarmText): the last one set, zh_CN
     // before any.
     static QString panelLanguage();
+    // The same for the message table; safe to read from the session's worker thread (its load
+    // errors, DiagnosticText).
+    static MessageLanguage messageLanguage();
     // The CJK font family in use, or empty when the machine has none (see fontProblem()).
     const QString& cjkFamily() const { return cjkFamily_; }
     QString fontProblem() const;

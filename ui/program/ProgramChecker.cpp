@@ -1,4 +1,5 @@
 #include "ui/program/ProgramChecker.h"
+#include "ui/i18n/DiagnosticText.h"
 
 #include "core/gcode/Parser.h"
 #include "core/gcode/SourceText.h"
@@ -70,7 +71,7 @@ QVector<CodeView::Mark> ProgramChecker::diagnose(const gcode::Dialect& dialect,
     QVector<CodeView::Mark> marks;
     for (const gcode::Diagnostic& d : parser.diagnostics()) {
         if (d.file == file || d.file == name) {
-            marks.append({static_cast<int>(d.line), static_cast<int>(d.column), QString::fromStdString(d.message)});
+            marks.append({static_cast<int>(d.line), static_cast<int>(d.column), DiagnosticText::message(d)});
         }
     }
     return marks;

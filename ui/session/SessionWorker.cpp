@@ -1,6 +1,7 @@
 #include "ui/session/SessionWorker.h"
 
 #include "ui/i18n/AlarmText.h"
+#include "ui/i18n/DiagnosticText.h"
 #include "ui/session/SimulationRun.h"
 
 #include "core/config/HookFiles.h"
@@ -41,7 +42,7 @@ QString diagnosticsText(const std::vector<gcode::Diagnostic>& diagnostics) {
     QStringList lines;
     for (const gcode::Diagnostic& d : diagnostics) {
         if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
-            lines << QString::fromStdString(gcode::formatDiagnostic(d));
+            lines << DiagnosticText::located(d);
         }
     }
     return lines.join('\n');

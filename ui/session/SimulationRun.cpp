@@ -1,6 +1,7 @@
 #include "ui/session/SimulationRun.h"
 
 #include "ui/i18n/AlarmText.h"
+#include "ui/i18n/DiagnosticText.h"
 
 #include "core/config/MachineConfig.h"
 #include "core/controller/Controller.h"
@@ -36,7 +37,7 @@ std::unique_ptr<SimulationRun> SimulationRun::start(const config::MachineConfig&
         QStringList lines;
         for (const gcode::Diagnostic& d : run->controller_->diagnostics()) {
             if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
-                lines << QString::fromStdString(gcode::formatDiagnostic(d));
+                lines << DiagnosticText::located(d);
             }
         }
         *error = lines.join('\n');
