@@ -194,12 +194,22 @@ TEST(PanelWords, EveryPageFitsTheControllersSmallestScreen) {
             EXPECT_LE(page->minimumSizeHint().height(), page->height()) << lang << " " << id.toStdString();
             EXPECT_LE(page->minimumSizeHint().width(), page->width()) << lang << " " << id.toStdString();
         }
+        // the Monitor with a program running: its window shows every row
+        panel.loadProgram(QStringLiteral("fits.nc"), "G91 G1 X1 F10\nG1 X1\nG1 X1\nG1 X1\nG1 X1\nG1 X1\nM30\n");
+        panel.key("MONITOR");
+        panel.key("START");
+        panel.advance(1.0);
+        QWidget* monitor = panel.window().currentPage();
+        EXPECT_EQ(panel.window().size(), QSize(800, 480)) << lang << " running";
+        EXPECT_LE(monitor->minimumSizeHint().height(), monitor->height()) << lang << " running";
+        panel.key("RESET");
         panel.key("PROBE");
         panel.softkey(4); // 多刀固定对刀: the tool grid takes the help text's place
         QWidget* probe = panel.window().currentPage();
         EXPECT_EQ(panel.window().size(), QSize(800, 480)) << lang << " tool grid";
         EXPECT_LE(probe->minimumSizeHint().height(), probe->height()) << lang << " tool grid";
         panel.key("ESC");
+        EXPECT_EQ(panel.window().size(), QSize(800, 480)) << lang << " tool grid left";
         resizeWindow(panel, 1024, 600);
         EXPECT_EQ(panel.window().size(), QSize(1024, 600));
         EXPECT_TRUE(panel.window().keyPad()->isVisible());

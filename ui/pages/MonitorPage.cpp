@@ -44,6 +44,7 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
     auto* row = new QHBoxLayout;
     auto* dro = new QGridLayout;
     dro->setHorizontalSpacing(10);
+    dro->setVerticalSpacing(2); // the rows' room goes to the digits (DroLabel), 800x480 included
     axisHeader_ = new QLabel(this);
     machineHeader_ = new QLabel(this);
     workHeader_ = new QLabel(this);
@@ -78,7 +79,7 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
     dro->setColumnStretch(1, 1); // the coordinates take the room the row gives the DRO
     dro->setColumnStretch(2, 1);
     auto* info = new QGridLayout;
-    info->setVerticalSpacing(3);
+    info->setVerticalSpacing(1);
     int line = 0;
     for (const QString& name : infoNames()) {
         auto* caption = new QLabel(this);

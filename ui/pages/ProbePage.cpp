@@ -243,8 +243,18 @@ void ProbePage::teach(bool xy) {
 
 void ProbePage::showGrid(bool on) {
     selecting_ = on;
-    gridBox_->setVisible(on);
-    help_->setVisible(!on); // the grid's title says what to do: the page keeps the screen's height
+    // the grid takes the place of the help (its title says what to do) and of the small DRO, so
+    // the page keeps the height of the controller's 800x480 screen. What goes, goes first: with all
+    // three shown for a moment the window would grow and stay grown
+    if (on) {
+        help_->hide();
+        dro_->hide();
+        gridBox_->show();
+    } else {
+        gridBox_->hide();
+        help_->show();
+        dro_->show();
+    }
     refreshGrid();
 }
 
