@@ -368,6 +368,38 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::GraphicsPage</name>
+    <message>
+        <source>Simulation</source>
+        <comment>msg 312</comment>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>Top View</source>
+        <translation>Top View</translation>
+    </message>
+    <message>
+        <source>Front View</source>
+        <translation>Front View</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Fit</translation>
+    </message>
+    <message>
+        <source>Zoom In</source>
+        <translation>Zoom In</translation>
+    </message>
+    <message>
+        <source>Zoom Out</source>
+        <translation>Zoom Out</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Back</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::IoPage</name>
     <message>
         <source>IO</source>
@@ -754,6 +786,37 @@
     <message>
         <source>DPRNT records not logged (sent faster than the log takes them)</source>
         <translation>DPRNT records not logged (sent faster than the log takes them)</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::MachineView</name>
+    <message>
+        <source>X-Y  Top view</source>
+        <translation>X-Y  Top view</translation>
+    </message>
+    <message>
+        <source>X-Z  Front view</source>
+        <translation>X-Z  Front view</translation>
+    </message>
+    <message>
+        <source>Building the preview...</source>
+        <translation>Building the preview...</translation>
+    </message>
+    <message>
+        <source>%1 moves</source>
+        <translation>%1 moves</translation>
+    </message>
+    <message>
+        <source>Simplified to %1 mm (memory budget)</source>
+        <translation>Simplified to %1 mm (memory budget)</translation>
+    </message>
+    <message>
+        <source>The program has errors: no path</source>
+        <translation>The program has errors: no path</translation>
+    </message>
+    <message>
+        <source>No program path</source>
+        <translation>No program path</translation>
     </message>
 </context>
 <context>

@@ -368,6 +368,38 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::GraphicsPage</name>
+    <message>
+        <source>Simulation</source>
+        <comment>msg 312</comment>
+        <translation>图形显示</translation>
+    </message>
+    <message>
+        <source>Top View</source>
+        <translation>俯视</translation>
+    </message>
+    <message>
+        <source>Front View</source>
+        <translation>正视</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>全图</translation>
+    </message>
+    <message>
+        <source>Zoom In</source>
+        <translation>放大</translation>
+    </message>
+    <message>
+        <source>Zoom Out</source>
+        <translation>缩小</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>返回</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::IoPage</name>
     <message>
         <source>IO</source>
@@ -754,6 +786,37 @@
     <message>
         <source>DPRNT records not logged (sent faster than the log takes them)</source>
         <translation>未记入日志的DPRNT记录（发送快于日志记录）</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::MachineView</name>
+    <message>
+        <source>X-Y  Top view</source>
+        <translation>X-Y  俯视图</translation>
+    </message>
+    <message>
+        <source>X-Z  Front view</source>
+        <translation>X-Z  正视图</translation>
+    </message>
+    <message>
+        <source>Building the preview...</source>
+        <translation>正在生成图形...</translation>
+    </message>
+    <message>
+        <source>%1 moves</source>
+        <translation>%1 段轨迹</translation>
+    </message>
+    <message>
+        <source>Simplified to %1 mm (memory budget)</source>
+        <translation>已简化至 %1 mm（内存上限）</translation>
+    </message>
+    <message>
+        <source>The program has errors: no path</source>
+        <translation>程序有错误：无轨迹</translation>
+    </message>
+    <message>
+        <source>No program path</source>
+        <translation>无程序轨迹</translation>
     </message>
 </context>
 <context>

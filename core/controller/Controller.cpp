@@ -520,6 +520,7 @@ bool Controller::start() {
     toolLife_.manager().startRun();
     displayTime_ = machine_.time();
     runStartedAt_ = displayTime_;
+    runMovesFrom_ = machine_.movesMade();
     timeLimitFrom_ = runStartedAt_;
     breakRun_.runStartsFrom(machine_.position());
     if (!unit || !executor_->start(*unit)) {

@@ -288,6 +288,7 @@ private:
     ToolDoubt toolDoubt_;
     double feedOverride_ = 100.0;
     double runStartedAt_ = 0.0;
+    std::uint64_t runMovesFrom_ = 0; // the machine's movesMade() when the run started
     double timeLimitFrom_ = 0.0; // the run's start, moved on by its holds: --max-sim-time counts from here
     bool mdi_ = false;
     std::optional<config::Hook> hook_;  // the loaded program is this hook file

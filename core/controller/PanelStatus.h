@@ -61,6 +61,7 @@ struct PanelStatus {
     std::uint32_t line = 0;
     bool mdi = false;               // the loaded program is MDI lines
     std::uint64_t blocks = 0;
+    std::uint64_t runMoves = 0;     // moves the run has made (the last one may be under way or coming)
 
     struct SensorWait {
         std::string input; // "IN11 (tool released)"

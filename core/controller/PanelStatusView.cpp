@@ -88,6 +88,7 @@ PanelStatus Controller::panelStatus() {
         }
         out.blocks = executor_->blocksExecuted();
     }
+    out.runMoves = machine_.movesMade() - runMovesFrom_;
     out.mdi = mdi_;
     if (auto wait = panel_.sensorWait()) {
         out.sensorWait = PanelStatus::SensorWait{wait->input, wait->awaitedLevel, wait->seconds, wait->file, wait->line};

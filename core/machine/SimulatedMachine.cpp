@@ -16,6 +16,7 @@ double SimulatedMachine::moveDuration(double length, double speed, double accele
 void SimulatedMachine::move(MachineEvent::Type type, const Axes& target, double speed, double acceleration,
                             double feed, const Arc* arc) {
     double length = arc ? arc->length : (target - position_).norm();
+    ++movesMade_;
     if (!lastMove_) {
         // not emplace(): clang decides LastMove is not default-constructible while the class is incomplete
         lastMove_ = LastMove{};

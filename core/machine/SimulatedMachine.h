@@ -115,6 +115,9 @@ public:
     void brake(double t, double deceleration);
     // When the last move started (the clock when no move was made).
     double moveStart() const { return lastMove_ ? lastMove_->start : time_; }
+    // Moves made since power-on (rapid, feed, arc, manual): the machine view tells what of a
+    // preview a run has done by them.
+    std::uint64_t movesMade() const { return movesMade_; }
 
     // The handwheel guide retraces the path: while on, every move is kept (the last kHistoryMoves)
     // so positionAt() can go back along them. Off by default: a long program keeps nothing.
@@ -194,6 +197,7 @@ private:
     Axes position_ = Axes::Zero();
     double time_ = 0.0;
     std::optional<LastMove> lastMove_;
+    std::uint64_t movesMade_ = 0;
     bool keepHistory_ = false;
     std::deque<LastMove> history_; // oldest first; the last is a copy of lastMove_
     double historyFrom_ = 0.0;

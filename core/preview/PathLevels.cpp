@@ -15,23 +15,23 @@ class LevelWriter {
 public:
     LevelWriter(PathLevels::Level& level, Point3 start) : level_(level), kept_(start) {}
 
-    void offer(const Point3& p, bool rapid) {
-        if (hasPending_ && pendingRapid_ != rapid) {
-            keep(pending_, pendingRapid_);
+    void offer(const Point3& p, std::uint32_t tag) {
+        if (hasPending_ && (pendingTag_ & PathLevels::Point::kRapid) != (tag & PathLevels::Point::kRapid)) {
+            keep(pending_, pendingTag_);
         }
         const double d = std::hypot(p.x - kept_.x, p.y - kept_.y, p.z - kept_.z);
         if (d >= level_.tolerance) {
-            keep(p, rapid);
+            keep(p, tag);
         } else {
             pending_ = p;
-            pendingRapid_ = rapid;
+            pendingTag_ = tag;
             hasPending_ = true;
         }
     }
 
     void finish() {
         if (hasPending_) {
-            keep(pending_, pendingRapid_);
+            keep(pending_, pendingTag_);
         }
         for (PathLevels::Chunk& chunk : level_.chunks) {
             chunk.points.shrink_to_fit();
@@ -39,14 +39,14 @@ public:
     }
 
 private:
-    void keep(const Point3& p, bool rapid) {
+    void keep(const Point3& p, std::uint32_t tag) {
         if (level_.chunks.empty() || level_.chunks.back().points.size() == kChunkPoints) {
             PathLevels::Chunk& chunk = level_.chunks.emplace_back();
             chunk.start = kept_;
             chunk.box.add(kept_);
         }
         PathLevels::Chunk& chunk = level_.chunks.back();
-        chunk.points.push_back({p, rapid ? 1U : 0U});
+        chunk.points.push_back({p, tag});
         chunk.box.add(p);
         ++level_.size;
         kept_ = p;
@@ -56,7 +56,7 @@ private:
     PathLevels::Level& level_;
     Point3 kept_;
     Point3 pending_{};
-    bool pendingRapid_ = false;
+    std::uint32_t pendingTag_ = 0;
     bool hasPending_ = false;
 };
 
@@ -67,6 +67,7 @@ PathLevels::Level fromStore(const PathStore& store, double tolerance) {
         return level;
     }
     LevelWriter writer(level, store.chunks().front().start);
+    std::uint32_t index = 0;
     for (const PathStore::Chunk& chunk : store.chunks()) {
         Point3 at = chunk.start;
         std::size_t arc = 0;
@@ -75,11 +76,12 @@ PathLevels::Level fromStore(const PathStore& store, double tolerance) {
                 const PlanarArc planar(at, s, chunk.arcs[arc++]);
                 const int n = planar.chords(tolerance / 2.0);
                 for (int i = 1; i < n; ++i) {
-                    writer.offer(planar.at(double(i) / n), false);
+                    writer.offer(planar.at(double(i) / n), index);
                 }
             }
-            writer.offer(s.end, s.kind == SegmentKind::Rapid);
+            writer.offer(s.end, index | (s.kind == SegmentKind::Rapid ? PathLevels::Point::kRapid : 0U));
             at = s.end;
+            ++index;
         }
     }
     writer.finish();
@@ -95,7 +97,7 @@ PathLevels::Level fromLevel(const PathLevels::Level& below, double tolerance) {
     LevelWriter writer(level, below.chunks.front().start);
     for (const PathLevels::Chunk& chunk : below.chunks) {
         for (const PathLevels::Point& p : chunk.points) {
-            writer.offer(p.at, p.rapid != 0);
+            writer.offer(p.at, p.tag);
         }
     }
     writer.finish();

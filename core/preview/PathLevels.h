@@ -17,7 +17,13 @@ class PathLevels {
 public:
     struct Point {
         Point3 at;
-        std::uint32_t rapid = 0; // the move ending here is a rapid
+        // The store's index of the move this point ends or lies on (a view colours what a run has
+        // done by it), and whether that move is a rapid in the top bit.
+        std::uint32_t tag = 0;
+
+        static constexpr std::uint32_t kRapid = 0x8000'0000U;
+        bool rapid() const { return (tag & kRapid) != 0; }
+        std::size_t segment() const { return tag & ~kRapid; }
     };
     struct Chunk {
         Point3 start;

@@ -10,6 +10,10 @@ namespace m350::preview {
 
 namespace {
 
+// Thrown from the machine's observer to leave a run nobody waits for: the controller is the
+// preview's own and is thrown away with it.
+struct PreviewCancelled {};
+
 template <class Vector> Point3 point(const Vector& a) { return {float(a(0)), float(a(1)), float(a(2))}; }
 
 // Takes the controller's moves into the store, each with the line running when it was made.
@@ -28,7 +32,9 @@ public:
             path = PathStore(point(event.from));
             started_ = true;
         }
-        ++preview_.moves;
+        if ((++preview_.moves & 4095U) == 0 && settings_.cancel && settings_.cancel->load(std::memory_order_relaxed)) {
+            throw PreviewCancelled{};
+        }
         PathSegment segment;
         segment.end = point(event.to);
         locate(segment);
@@ -93,13 +99,19 @@ Preview buildPreview(config::MachineConfig config, const std::string& program, c
     controller::RunSettings run;
     run.maxSimTime = settings.maxSimTime;
     run.observer = &recorder;
+    run.tool = settings.tool;
     controller::Controller controller(std::move(config), run);
     recorder.attach(&controller);
     preview.loaded = controller.loadFile(program);
     preview.diagnostics = controller.diagnostics();
     if (preview.loaded) {
-        controller::RunReport report = controller.run();
-        preview.alarm = report.alarm;
+        try {
+            controller::RunReport report = controller.run();
+            preview.alarm = report.alarm;
+        } catch (const PreviewCancelled&) {
+            preview.cancelled = true;
+            return preview;
+        }
     }
     preview.levels = PathLevels::build(preview.path);
     return preview;

@@ -6,6 +6,7 @@
 #include "core/preview/PathLevels.h"
 #include "core/preview/PathStore.h"
 
+#include <atomic>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -18,6 +19,10 @@ struct PreviewSettings {
     // to a coarser tolerance, again and again, so a program of any size previews in bounded memory.
     std::size_t segmentBudget = 12'000'000;
     double maxSimTime = 1e7; // virtual seconds: a preview of an endless loop ends
+    // Set (from another thread) when nobody wants the preview any more: the build stops at its
+    // next few thousand moves and returns what it has, marked cancelled.
+    const std::atomic<bool>* cancel = nullptr;
+    std::optional<int> tool; // in the spindle at start (a change to it makes no moves)
 };
 
 // What the machine view draws of a program: every move its run makes (the machine's libraries
@@ -30,6 +35,7 @@ struct Preview {
     std::optional<Alarm> alarm;               // the run stopped there: the path is up to it
     double coarsenedTo = 0.0;                 // > 0: the budget was reached, the path is within this many mm
     std::size_t moves = 0;                    // moves the run made (more than path.size() once coarsened)
+    bool cancelled = false;                   // PreviewSettings::cancel stopped it: the path is a part
 
     std::size_t bytes() const { return path.bytes() + levels.bytes(); }
 };

@@ -8,7 +8,6 @@
 #include "ui/panel/SoftkeyBar.h"
 #include "ui/panel/StatusLine.h"
 #include "ui/program/CodeView.h"
-#include "ui/program/PathView.h"
 #include "ui/program/ProgramChecker.h"
 #include "ui/program/ProgramEditor.h"
 #include "ui/program/ProgramList.h"
@@ -285,15 +284,15 @@ TEST(ProgramPage, SimulationDrawsThePathWhileTheMachineStaysWhereItIs) {
     panel.advance(0.5);
     EXPECT_EQ(panel.window().statusLine()->modeText(), QStringLiteral("仿真"));
     const int line = page->simulation()->code()->runningLine();
-    const std::size_t points = page->simulation()->path()->drawnPoints();
+    const std::size_t points = page->simulation()->points();
     EXPECT_GE(line, 1);
     panel.advance(2.5);
     EXPECT_GT(page->simulation()->code()->runningLine(), line);
-    EXPECT_GT(page->simulation()->path()->drawnPoints(), points);
+    EXPECT_GT(page->simulation()->points(), points);
     panel.softkey(4); // as fast as the core goes: to the end at once
     panel.advance(0.1);
     EXPECT_EQ(panel.session().latest()->simulation.run, ui::SimulationView::Run::Finished);
-    EXPECT_GT(page->simulation()->path()->drawnPoints(), 20U); // the arc in chords
+    EXPECT_GT(page->simulation()->points(), 20U); // the arc in chords
     EXPECT_TRUE((panel.session().latest()->status.machine - before).isZero(1e-9));
     panel.key("ESC");
     EXPECT_EQ(page->mode(), ui::ProgramPage::Mode::List);

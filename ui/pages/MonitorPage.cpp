@@ -157,8 +157,7 @@ QVector<Page::Softkey> MonitorPage::softkeys() const {
                         tr("Clear 4th", "msg 447"), tr("Clear 5th", "msg 448"), tr("Clear All", "msg 449")});
     case Menu::Main: break;
     }
-    // 图形显示 stays greyed out, pressing it does nothing, until the panel has its machine view
-    return {{tr("Simulation", "msg 312"), false, {}},
+    return {{tr("Simulation", "msg 312"), true, {}},
             {tr("Probe", "msg 313"), true, {}},
             {tr("Go Work Zero", "msg 314"), true, {}},
             {tr("Go Home", "msg 315"), true, {}},
@@ -183,6 +182,7 @@ void MonitorPage::softkey(int number) {
         return;
     }
     switch (number) {
+    case 1: emit navigate(PageId::graphics); break;
     case 2: emit navigate(PageId::probe); break;
     case 3: openMenu(Menu::GoWorkZero); break;
     case 4: openMenu(Menu::GoHome); break;

@@ -46,6 +46,7 @@ public:
 signals:
     void softkeysChanged();
     void navigate(const QString& pageId); // a softkey that opens another page (对刀, MDI)
+    void editSource(const QString& file, int line); // opens a file in the Program page's editor at a line
 
 protected:
     PanelContext& context() const { return context_; }

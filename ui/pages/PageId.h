@@ -23,6 +23,7 @@ struct PageId {
     static constexpr QLatin1StringView toolLife{"toollife"};
     static constexpr QLatin1StringView breakage{"breakage"};
     static constexpr QLatin1StringView custom{"custom"};
+    static constexpr QLatin1StringView graphics{"graphics"};
 };
 
 } // namespace m350::ui

@@ -4,6 +4,7 @@
 #include "ui/pages/BreakageMonitorPage.h"
 #include "ui/pages/CoordPage.h"
 #include "ui/pages/CustomKeysPage.h"
+#include "ui/pages/GraphicsPage.h"
 #include "ui/pages/IoPage.h"
 #include "ui/pages/LogPage.h"
 #include "ui/pages/MdiPage.h"
@@ -38,6 +39,7 @@ const QList<PageTable::Entry>& PageTable::entries() {
         {PageId::record, make<RecordPage>},     {PageId::breakRun, make<BreakRunPage>},
         {PageId::tools, make<ToolTablePage>},   {PageId::toolLife, make<ToolLifePage>},
         {PageId::breakage, make<BreakageMonitorPage>}, {PageId::custom, make<CustomKeysPage>},
+        {PageId::graphics, make<GraphicsPage>},
     };
     return pages;
 }

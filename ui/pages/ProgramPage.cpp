@@ -4,7 +4,6 @@
 #include "core/config/CallCodeParameters.h"
 #include "core/params/ParameterNumbers.h"
 #include "ui/program/CodeView.h"
-#include "ui/program/PathView.h"
 #include "ui/program/ProgramEditor.h"
 #include "ui/program/ProgramList.h"
 #include "ui/program/SimulationPanel.h"
@@ -184,6 +183,13 @@ void ProgramPage::openEditor(const QString& path) {
     }
 }
 
+void ProgramPage::editAt(const QString& path, int line) {
+    openEditor(path);
+    if (mode_ == Mode::Editor && editor_->path() == path) {
+        editor_->view()->goToLine(line);
+    }
+}
+
 // Leaves the editor; a saved file the machine has loaded is loaded again, so START runs the new text.
 void ProgramPage::closeEditor(bool save) {
     if (save) {
@@ -311,7 +317,7 @@ void ProgramPage::render(const PanelSnapshot& snapshot) {
         editor_->showRunning(running ? static_cast<int>(snapshot.status.line) : 0);
     }
     if (mode_ == Mode::Simulation) {
-        simulation_->render(snapshot.simulation);
+        simulation_->render(snapshot);
     }
 }
 
@@ -338,7 +344,7 @@ QJsonObject ProgramPage::state() const {
     }
     if (mode_ == Mode::Simulation) {
         out["simulation_line"] = simulation_->code()->runningLine();
-        out["simulation_points"] = static_cast<double>(simulation_->path()->drawnPoints());
+        out["simulation_points"] = static_cast<double>(simulation_->points());
         out["simulation_info"] = simulation_->infoText();
     }
     return out;

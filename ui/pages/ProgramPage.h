@@ -42,6 +42,8 @@ public:
     // The folder a disk lists: 本地 the machine folder's programs/, U盘 the user's, 系统 the
     // machine folder's *.nc (a replay's `load` may open only these).
     QString folderOf(ProgramFiles::Disk disk) const;
+    // Opens `path` in the editor with `line` current (the machine view's click on a move).
+    void editAt(const QString& path, int line);
     static constexpr double kSpeeds[] = {1.0, 10.0, 100.0, 0.0}; // 0: as fast as the core goes
 
 private:

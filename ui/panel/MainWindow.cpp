@@ -10,6 +10,7 @@
 #include "ui/pages/Page.h"
 #include "ui/pages/PageId.h"
 #include "ui/pages/PageTable.h"
+#include "ui/pages/ProgramPage.h"
 #include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
@@ -89,6 +90,12 @@ void MainWindow::addPage(Page* page) {
     pages_.insert(page->id(), page);
     stack_->addWidget(page);
     connect(page, &Page::navigate, this, [this](const QString& id) { showPage(id); });
+    connect(page, &Page::editSource, this, [this](const QString& file, int line) {
+        if (auto* program = qobject_cast<ProgramPage*>(pages_.value(PageId::program)); program && showPage(PageId::program)) {
+            program->editAt(file, line);
+            refreshSoftkeys();
+        }
+    });
     connect(page, &Page::softkeysChanged, this, [this, page] {
         if (page == currentPage()) {
             refreshSoftkeys();

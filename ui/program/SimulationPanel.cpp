@@ -1,7 +1,8 @@
 #include "ui/program/SimulationPanel.h"
 
 #include "ui/program/CodeView.h"
-#include "ui/program/PathView.h"
+#include "ui/i18n/AlarmText.h"
+#include "ui/view/MachineView.h"
 
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -17,9 +18,10 @@ SimulationPanel::SimulationPanel(const gcode::Dialect& dialect, QWidget* parent)
     code_ = new CodeView(dialect, this);
     code_->setObjectName("simulationCode");
     code_->setReadOnly(true);
-    path_ = new PathView(this);
+    view_ = new MachineView(this);
+    view_->setObjectName("simulationView");
     row->addWidget(code_, 2);
-    row->addWidget(path_, 3);
+    row->addWidget(view_, 3);
     info_ = new QLabel(this);
     info_->setObjectName("simulationInfo");
     info_->setWordWrap(true);
@@ -30,7 +32,8 @@ SimulationPanel::SimulationPanel(const gcode::Dialect& dialect, QWidget* parent)
 void SimulationPanel::open(const QString& path, const QString& text) {
     file_ = path;
     code_->setProgram(text);
-    path_->clear();
+    view_->setContent({});
+    points_ = 0;
     info_->clear();
 }
 
@@ -38,10 +41,29 @@ QString SimulationPanel::speedName(double speed) {
     return speed > 0.0 ? QStringLiteral("x%1").arg(speed) : tr("Max");
 }
 
-void SimulationPanel::render(const SimulationView& view) {
+void SimulationPanel::render(const PanelSnapshot& snapshot) {
+    const SimulationView& view = snapshot.simulation;
     const bool here = QFileInfo(view.runningFile).fileName() == QFileInfo(file_).fileName();
     code_->setRunningLine(view.run == SimulationView::Run::Running && here ? static_cast<int>(view.line) : 0);
-    path_->setPath(view.path);
+    MachineViewContent content;
+    content.preview = snapshot.simulationPreview;
+    content.scene = snapshot.scene; // the machine as it stands: the simulation starts from it
+    if (view.path.size > 0) {
+        const auto& last = view.path.chunks.back()->back();
+        content.nose = preview::ScenePoint{last.x, last.y, last.z};
+    }
+    if (view.moves > 0) {
+        const bool under = view.run == SimulationView::Run::Running;
+        content.done = static_cast<std::size_t>(under ? view.moves - 1 : view.moves);
+        if (under) {
+            content.current = content.done;
+        }
+    }
+    if (view.run == SimulationView::Run::Alarm) {
+        content.alarm = view.alarm;
+    }
+    view_->setContent(std::move(content));
+    points_ = view.path.size;
     QString state = view.run == SimulationView::Run::Finished ? tr("SL over", "msg 125")
                     : view.run == SimulationView::Run::Alarm  ? view.alarm
                                                               : tr("Start Simulating", "msg 111");

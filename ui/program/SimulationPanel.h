@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ui/session/SimulationView.h"
+#include "ui/session/PanelSnapshot.h"
 
 #include <QWidget>
 
@@ -13,24 +13,27 @@ struct Dialect;
 namespace m350::ui {
 
 class CodeView;
-class PathView;
+class MachineView;
 
-// 仿真 on the Program page: the file with its running line, the path drawn as it grows, and a
-// line of figures (speed, line, simulated time, blocks, points) or the alarm that ended it.
+// 仿真 on the Program page: the file with its running line, the machine view (the compact one of
+// 图形显示: the file's whole path, what the simulated run has done of it, the machine), and a line of
+// figures (speed, line, simulated time, blocks, points) or the alarm that ended it.
 class SimulationPanel : public QWidget {
     Q_OBJECT
 public:
     SimulationPanel(const gcode::Dialect& dialect, QWidget* parent = nullptr);
     void open(const QString& path, const QString& text);
-    void render(const SimulationView& view);
+    void render(const PanelSnapshot& snapshot);
     CodeView* code() const { return code_; }
-    PathView* path() const { return path_; }
+    MachineView* view() const { return view_; }
+    std::size_t points() const { return points_; } // of the simulated run's path so far
     QString infoText() const;
     static QString speedName(double speed);
 
 private:
     CodeView* code_;
-    PathView* path_;
+    MachineView* view_;
+    std::size_t points_ = 0;
     QLabel* info_;
     QString file_;
 };

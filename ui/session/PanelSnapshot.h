@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ui/session/PreviewShown.h"
 #include "ui/session/SimulationView.h"
 
 #include "core/params/ParameterPages.h"
@@ -10,6 +11,10 @@
 #include "core/tools/ToolTable.h"
 
 #include <QMetaType>
+
+namespace m350::preview {
+struct MachineScene;
+}
 #include <QString>
 #include <QStringList>
 #include <QVector>
@@ -59,6 +64,11 @@ struct PanelSnapshot {
     int magazineCapacity = 0;
     bool homingPrompt = false; // param 127 = 0 and X, Y, Z not homed: 是否进行开机寻零操作?
     SimulationView simulation; // the Program page's 仿真, beside the machine (Off when none)
+    // The machine view's previews (ui/session/ProgramPreviews.h): the loaded program's, the 仿真 file's.
+    PreviewShown programPreview;
+    PreviewShown simulationPreview;
+    // The machine the view draws (core/preview/MachineScene.h): a new object only when it changed.
+    std::shared_ptr<const preview::MachineScene> scene;
     params::UserLevel userLevel = params::UserLevel::Guest; // 访客 / 操作员 / 管理员 / 超级管理
     QVector<double> userVariables; // #50-#499 while the Param page watches them (NaN: vacant), else empty
     std::shared_ptr<const std::vector<files::LogEntry>> log; // 系统日志, oldest first (shared, never changed)

@@ -2,6 +2,7 @@
 
 #include "ui/i18n/AlarmText.h"
 #include "ui/i18n/DiagnosticText.h"
+#include "ui/session/ProgramPreviews.h"
 #include "ui/session/SimulationRun.h"
 
 #include "core/config/HookFiles.h"
@@ -85,6 +86,7 @@ void SessionWorker::begin() {
 }
 
 void SessionWorker::finish() {
+    previews_.reset(); // cancels a build under way
     delete timer_;
     timer_ = nullptr;
     keepExternalOutput();
@@ -227,6 +229,10 @@ void SessionWorker::publish() {
     if (simulation_) {
         snapshot->simulation = simulation_->view();
     }
+    if (previews_) {
+        snapshot->programPreview = previews_->shown(ProgramPreviews::Slot::Program);
+        snapshot->simulationPreview = previews_->shown(ProgramPreviews::Slot::Simulation);
+    }
     snapshot->publishedNs = std::chrono::duration_cast<std::chrono::nanoseconds>(
                                 std::chrono::steady_clock::now().time_since_epoch())
                                 .count();
@@ -304,7 +310,11 @@ void SessionWorker::loadProgram(const QString& path) {
     programFile_ = path;
     fileLoaded_ = false;
     lastError_.clear();
-    loadCurrentFile();
+    if (loadCurrentFile()) {
+        previews().request(ProgramPreviews::Slot::Program, controller_->config(), path, controller_->panelStatus().tool);
+    } else {
+        previews().clear(ProgramPreviews::Slot::Program);
+    }
     publish();
 }
 
@@ -466,9 +476,11 @@ void SessionWorker::startSimulation(const QString& path, double speed) {
     QString error;
     simulation_ = SimulationRun::start(controller_->config(), path, controller_->panelStatus().tool, speed, &error);
     if (!simulation_) {
+        previews().clear(ProgramPreviews::Slot::Simulation);
         refuse(error);
         return;
     }
+    previews().request(ProgramPreviews::Slot::Simulation, controller_->config(), path, controller_->panelStatus().tool);
     publish();
 }
 

@@ -23,6 +23,7 @@ class Controller;
 namespace m350::ui {
 
 class SimulationRun;
+class ProgramPreviews;
 
 // Lives in the session's worker thread and is, with the SimulationRun it owns, the only code of
 // the panel that touches the Controller. Each method runs one operator command, then publishes a
@@ -151,6 +152,10 @@ private:
     void keepBreakPoint();
     BreakPoints breakPoints() const;
     mutable std::optional<std::pair<QString, int>> keptBreak_; // the machine folder's `breakpoint`, read once
+
+    // SessionWorkerPreview.cpp: the machine view's previews of the loaded and the simulated program
+    ProgramPreviews& previews();
+    std::unique_ptr<ProgramPreviews> previews_; // made in the worker thread, on first use
 
     std::unique_ptr<controller::Controller> controller_;
     std::unique_ptr<SimulationRun> simulation_;

@@ -47,6 +47,7 @@ struct SimulationView {
     double time = 0.0;  // virtual seconds into the simulated run
     double speed = 1.0; // virtual seconds per wall second; 0 = as fast as the core goes
     std::uint64_t blocks = 0;
+    std::uint64_t moves = 0; // moves the simulated run has made
     QString alarm;      // file:line:col: message of the alarm that ended it
     SimulationPath path;
     bool active() const { return run != Run::Off; }

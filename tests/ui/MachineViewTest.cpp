@@ -1,0 +1,219 @@
+// The machine view (图形显示): opened by the Monitor's F1, it draws the loaded program's path where
+// the program's moves are, colours what a run has done, names a clicked move's line, and marks an
+// alarm where the spindle stood until RESET. The pixels are read from the widget as painted.
+#include "PanelHarness.h"
+
+#include "ui/pages/GraphicsPage.h"
+#include "ui/pages/ProgramPage.h"
+#include "ui/program/CodeView.h"
+#include "ui/program/ProgramEditor.h"
+#include "ui/view/MachineView.h"
+#include "ui/view/PathPainter.h"
+
+#include "core/preview/PreviewBuilder.h"
+
+#include <QImage>
+#include <QTest>
+
+#include <cmath>
+
+namespace m350 {
+namespace {
+
+using test::PanelHarness;
+using ui::ViewPlane;
+
+// Whether a pixel within `radius` of `at` has about `colour`.
+bool colourNear(const QImage& image, QPointF at, const QColor& colour, int radius = 2) {
+    for (int dy = -radius; dy <= radius; ++dy) {
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const QPoint p(int(std::lround(at.x())) + dx, int(std::lround(at.y())) + dy);
+            if (!image.rect().contains(p)) {
+                continue;
+            }
+            const QColor c = image.pixelColor(p);
+            if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) + std::abs(c.blue() - colour.blue()) < 60) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+// The widget pixel of machine X Y Z in the pane of `plane`.
+QPointF pixelOf(const ui::MachineView& view, ViewPlane plane, double x, double y, double z) {
+    return view.transform(plane).toPixel(ui::project(plane, x, y, z)) + QPointF(view.paneRect(plane).topLeft());
+}
+
+ui::MachineView* openGraphics(PanelHarness& panel) {
+    panel.page(QStringLiteral("monitor"));
+    panel.softkey(1); // 图形显示
+    auto* page = panel.page<ui::GraphicsPage>();
+    EXPECT_NE(page, nullptr) << "F1 opens the machine view";
+    return page ? page->view() : nullptr;
+}
+
+// A rectangle 100 x 50 from work zero, then up.
+const QByteArray kSquare = "G90 G0 X0 Y0 Z5\nG1 Z-1 F3000\nG1 X100\nG1 Y50\nG1 X0\nG1 Y0\nG0 Z5\nM30\n";
+
+TEST(ViewTransform, ZoomKeepsThePointUnderTheCursorAndFitShowsTheWhole) {
+    ui::ViewTransform view;
+    view.setSize({400, 300});
+    view.fit(QRectF(0, 0, 200, 100), 0.0);
+    EXPECT_DOUBLE_EQ(view.mmPerPixel(), 0.5);
+    EXPECT_NEAR(view.toPixel({0, 0}).x(), 0.0, 1e-9);
+    EXPECT_NEAR(view.toPixel({0, 0}).y(), 250.0, 1e-9) << "Y points up on the screen";
+    EXPECT_NEAR(view.toPixel({200, 100}).y(), 50.0, 1e-9);
+    const QPointF cursor(120, 80);
+    const QPointF under = view.toMm(cursor);
+    view.zoomAt(cursor, 3.0);
+    EXPECT_NEAR(view.mmPerPixel(), 0.5 / 3.0, 1e-12);
+    EXPECT_NEAR(view.toPixel(under).x(), cursor.x(), 1e-9);
+    EXPECT_NEAR(view.toPixel(under).y(), cursor.y(), 1e-9);
+    const QPointF before = view.toPixel({10, 10});
+    view.pan({30, -20});
+    EXPECT_NEAR(view.toPixel({10, 10}).x(), before.x() + 30, 1e-9);
+    EXPECT_NEAR(view.toPixel({10, 10}).y(), before.y() - 20, 1e-9);
+}
+
+TEST(MachineView, F1DrawsTheLoadedProgramsPathWhereItsMovesAre) {
+    PanelHarness panel;
+    panel.loadProgram("square.nc", kSquare);
+    ui::MachineView* view = openGraphics(panel);
+    ASSERT_NE(view, nullptr);
+    const auto snapshot = panel.session().latest();
+    ASSERT_TRUE(snapshot->programPreview.preview) << "the preview is built when the program loads";
+    const preview::Preview& built = *snapshot->programPreview.preview;
+    EXPECT_EQ(built.moves, 7u);
+    // the path is in machine coordinates, the program's plus the work offset, from where the
+    // machine stands (machine zero here)
+    const machine::Axes offset = snapshot->status.machine - snapshot->status.work;
+    ASSERT_GT(offset(0), 100.0);
+    const preview::Box box = built.path.bounds();
+    EXPECT_NEAR(box.min.x, snapshot->status.machine(0), 1e-3);
+    EXPECT_NEAR(box.max.x, offset(0) + 100.0, 1e-3);
+    EXPECT_NEAR(box.max.y, offset(1) + 50.0, 1e-3);
+
+    const QImage image = view->grab().toImage();
+    const ViewPlane top = ViewPlane::Top;
+    const ui::PathColours colours;
+    // each side's middle is drawn in the feed colour, the middle of the rectangle is not
+    for (auto [x, y] : {std::pair{50.0, 0.0}, std::pair{100.0, 25.0}, std::pair{50.0, 50.0}, std::pair{0.0, 25.0}}) {
+        EXPECT_TRUE(colourNear(image, pixelOf(*view, top, offset(0) + x, offset(1) + y, 0.0), colours.feed))
+            << "no feed drawn at work X" << x << " Y" << y;
+    }
+    EXPECT_FALSE(colourNear(image, pixelOf(*view, top, offset(0) + 50.0, offset(1) + 25.0, 0.0), colours.feed, 3));
+    // the fit shows all of it: the path's box spans most of the pane, inside it
+    const QPointF low = pixelOf(*view, top, box.min.x, box.min.y, 0.0);
+    const QPointF high = pixelOf(*view, top, box.max.x, box.max.y, 0.0);
+    const QRect pane = view->paneRect(top);
+    EXPECT_TRUE(pane.contains(low.toPoint()) && pane.contains(high.toPoint()));
+    EXPECT_GT(std::max(high.x() - low.x(), low.y() - high.y()), 0.6 * std::min(pane.width(), pane.height()));
+    // the front view shows the plunge to Z-1
+    panel.softkey(2);
+    EXPECT_EQ(view->plane(), ViewPlane::Front);
+    const QImage front = view->grab().toImage();
+    EXPECT_TRUE(colourNear(front, pixelOf(*view, ViewPlane::Front, offset(0) + 50.0, 0.0, offset(2) - 1.0), colours.feed));
+}
+
+TEST(MachineView, WhatTheRunHasDoneTakesTheRunsColour) {
+    PanelHarness panel;
+    panel.loadProgram("square.nc", kSquare);
+    ui::MachineView* view = openGraphics(panel);
+    ASSERT_NE(view, nullptr);
+    const auto before = panel.session().latest();
+    const machine::Axes offset = before->status.machine - before->status.work;
+    panel.key("START");
+    panel.advance(60.0);
+    ASSERT_EQ(panel.session().latest()->status.run, controller::PanelStatus::Run::Finished);
+    EXPECT_EQ(view->content().done, 7u) << "every move of the run is done";
+    const QImage image = view->grab().toImage();
+    const ui::PathColours colours;
+    EXPECT_TRUE(colourNear(image, pixelOf(*view, ViewPlane::Top, offset(0) + 100.0, offset(1) + 25.0, 0.0), colours.doneFeed));
+    EXPECT_FALSE(colourNear(image, pixelOf(*view, ViewPlane::Top, offset(0) + 100.0, offset(1) + 25.0, 0.0), colours.feed, 1));
+}
+
+TEST(MachineView, AClickOnAMoveOpensItsLineInTheEditor) {
+    PanelHarness panel;
+    panel.loadProgram("square.nc", kSquare);
+    ui::MachineView* view = openGraphics(panel);
+    ASSERT_NE(view, nullptr);
+    const auto snapshot = panel.session().latest();
+    const machine::Axes offset = snapshot->status.machine - snapshot->status.work;
+    // the right side, X100 from Y0 to Y50: line 4
+    const QPoint at = pixelOf(*view, ViewPlane::Top, offset(0) + 100.0, offset(1) + 20.0, 0.0).toPoint();
+    QTest::mouseClick(view, Qt::LeftButton, {}, at);
+    QCoreApplication::processEvents();
+    auto* program = panel.page<ui::ProgramPage>();
+    ASSERT_NE(program, nullptr) << "the click opens the Program page";
+    EXPECT_EQ(program->mode(), ui::ProgramPage::Mode::Editor);
+    EXPECT_TRUE(program->editor()->path().endsWith("square.nc"));
+    EXPECT_EQ(program->editor()->view()->textCursor().blockNumber() + 1, 4);
+    ASSERT_TRUE(view->highlight());
+    EXPECT_EQ(view->highlight()->line, 4);
+}
+
+TEST(MachineView, AnAlarmIsMarkedWhereTheSpindleStoodUntilReset) {
+    PanelHarness panel;
+    panel.loadProgram("alarm.nc", "G90 G0 X30 Y20\n#3000=1(BAD)\nM30\n");
+    ui::MachineView* view = openGraphics(panel);
+    ASSERT_NE(view, nullptr);
+    panel.key("START");
+    panel.advance(10.0);
+    const auto snapshot = panel.session().latest();
+    ASSERT_TRUE(snapshot->status.alarm);
+    ASSERT_TRUE(view->fault());
+    EXPECT_NEAR(view->fault()->at.x, snapshot->status.machine(0), 1e-6);
+    EXPECT_NEAR(view->fault()->at.y, snapshot->status.machine(1), 1e-6);
+    EXPECT_TRUE(view->fault()->text.contains("BAD"));
+    const QImage image = view->grab().toImage();
+    const QPointF at = pixelOf(*view, ViewPlane::Top, snapshot->status.machine(0), snapshot->status.machine(1), 0.0);
+    EXPECT_TRUE(colourNear(image, at + QPointF(16, 0), QColor(0xff, 0x30, 0x30), 2) ||
+                colourNear(image, at + QPointF(16, 0), QColor(0xff, 0x30, 0x30).darker(220), 2))
+        << "the marker's ring around the place";
+    EXPECT_EQ(view->state()["fault"].toObject()["text"].toString(), view->fault()->text);
+    panel.key("RESET");
+    panel.advance(0.1);
+    EXPECT_FALSE(view->fault()) << "RESET clears the mark";
+}
+
+TEST(MachineView, KeysZoomPanAndFit) {
+    PanelHarness panel;
+    panel.loadProgram("square.nc", kSquare);
+    ui::MachineView* view = openGraphics(panel);
+    ASSERT_NE(view, nullptr);
+    const double fitted = view->transform(ViewPlane::Top).mmPerPixel();
+    panel.softkey(4); // zoom in
+    EXPECT_NEAR(view->transform(ViewPlane::Top).mmPerPixel(), fitted / 1.5, 1e-9);
+    const QPointF centre = view->transform(ViewPlane::Top).centre();
+    panel.key("RIGHT");
+    EXPECT_GT(view->transform(ViewPlane::Top).centre().x(), centre.x());
+    panel.softkey(3); // fit
+    EXPECT_NEAR(view->transform(ViewPlane::Top).mmPerPixel(), fitted, 1e-9);
+    panel.key("ESC");
+    EXPECT_EQ(panel.window().currentPage()->id(), QStringLiteral("monitor"));
+}
+
+TEST(PreviewJob, ACancelledBuildStopsSoon) {
+    auto loaded = config::loadMachineFolder(
+        (std::filesystem::path(config::bundledMachinesDirectory()) / "m350-linear16").string());
+    ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(loaded));
+    QTemporaryDir dir;
+    const QString path = dir.filePath("endless.nc");
+    test::putFile(path, "#1=0\nWHILE[#1 LT 1]DO1\nG1 X10 F60000\nG1 X0\nEND1\nM30\n");
+    std::atomic<bool> cancel{false};
+    preview::PreviewSettings settings;
+    settings.cancel = &cancel;
+    std::thread stopper([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        cancel = true;
+    });
+    const preview::Preview built = preview::buildPreview(std::get<config::MachineConfig>(std::move(loaded)),
+                                                         path.toStdString(), settings);
+    stopper.join();
+    EXPECT_TRUE(built.cancelled);
+    EXPECT_GT(built.moves, 0u);
+}
+
+} // namespace
+} // namespace m350
