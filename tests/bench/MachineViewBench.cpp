@@ -1,7 +1,8 @@
 // The machine view (图形显示) painting a 1,000,000-move preview (issue 27): a frame at 1024x600 of
 // the whole path (the coarse levels), zoomed in ten times (the chunks in view, finer levels), and
 // while a run goes on (the run's colour moving, the spindle moving: what 60 repaints a second
-// cost). Painted into an image with the raster engine, as the window's backing store is.
+// cost; the machine and the path are kept from the frame before, the run's new moves added).
+// Painted into an image with the raster engine, as the window's backing store is.
 // Benchmarks, not tests: they report, never judge. Counters: lines (drawn a frame), moves.
 #include "tests/bench/MouldProgram.h"
 
@@ -53,10 +54,14 @@ void frames(benchmark::State& state, double zoom, bool running) {
     QImage image(view.size(), QImage::Format_ARGB32_Premultiplied);
     const std::size_t moves = millionMoves()->path.size();
     std::size_t done = 0;
+    double step = 1.0;
     for (auto _ : state) {
         if (running) {
             done = (done + 997) % moves; // a run a few hundred moves a frame further on
             view.setContent(contentAt(done));
+        } else {
+            view.panBy(step, 0.0); // a drag: every frame is drawn anew
+            step = -step;
         }
         view.render(&image);
         benchmark::DoNotOptimize(image.constBits());

@@ -236,12 +236,8 @@ void MachineView::paintPane(QPainter& painter, ViewPlane plane, const QRect& pan
     painter.save();
     painter.setClipRect(pane);
     painter.translate(pane.topLeft());
-    const MessageLanguage language = Language::messageLanguage();
-    if (content_.scene) {
-        ScenePainter::paintMachine(painter, *content_.scene, plane, view, language);
-    }
+    paintCached(painter, plane, pane);
     if (const auto& built = content_.preview.preview) {
-        drawnLines_ += PathPainter::paint(painter, *built, plane, view, content_.done);
         painter.setRenderHint(QPainter::Antialiasing, true);
         if (content_.current) {
             QPen pen(kCurrent, 3.0);
@@ -279,6 +275,37 @@ void MachineView::paintPane(QPainter& painter, ViewPlane plane, const QRect& pan
         painter.setPen(QPen(plane == plane_ ? kText : kFrame, 1.0));
         painter.drawRect(pane.adjusted(0, 0, -1, -1));
     }
+}
+
+void MachineView::paintCached(QPainter& painter, ViewPlane plane, const QRect& pane) {
+    // a run's part drawn over the cache a frame at a time; a jump of more moves paints all anew
+    constexpr std::size_t kMostAdded = 20000;
+    const ViewTransform& view = views_[index(plane)];
+    const MessageLanguage language = Language::messageLanguage();
+    PaneCache& cache = caches_[index(plane)];
+    const auto* built = content_.preview.preview.get();
+    const bool same = cache.size == pane.size() && cache.centre == view.centre() && cache.mmPerPixel == view.mmPerPixel() &&
+                      cache.preview == built && cache.scene == content_.scene.get() && cache.language == language &&
+                      !cache.image.isNull();
+    if (same && content_.done >= cache.done && content_.done - cache.done <= kMostAdded) {
+        if (built && content_.done > cache.done) {
+            QPainter onCache(&cache.image);
+            drawnLines_ += PathPainter::paintDone(onCache, built->path, plane, view, cache.done, content_.done);
+        }
+    } else {
+        cache = PaneCache{QImage(pane.size(), QImage::Format_ARGB32_Premultiplied), pane.size(), view.centre(),
+                          view.mmPerPixel(), built, content_.scene.get(), language, 0};
+        cache.image.fill(kBackground);
+        QPainter onCache(&cache.image);
+        if (content_.scene) {
+            ScenePainter::paintMachine(onCache, *content_.scene, plane, view, language);
+        }
+        if (built) {
+            drawnLines_ += PathPainter::paint(onCache, *built, plane, view, content_.done);
+        }
+    }
+    cache.done = content_.done;
+    painter.drawImage(QPoint(0, 0), cache.image);
 }
 
 void MachineView::paintOverlay(QPainter& painter, ViewPlane plane, const QRect& pane) {

@@ -5,6 +5,7 @@
 
 #include "core/preview/MachineScene.h"
 
+#include <QImage>
 #include <QJsonObject>
 #include <QString>
 #include <QTimer>
@@ -102,6 +103,21 @@ private:
     std::optional<QPoint> dragFrom_;
     bool dragged_ = false;
     std::size_t drawnLines_ = 0;
+
+    // Each pane's machine and path as last painted: a frame in which only the run went on adds
+    // the moves it made since; anything else (the view, the path, the machine) paints it anew.
+    struct PaneCache {
+        QImage image;
+        QSize size;
+        QPointF centre;
+        double mmPerPixel = 0.0;
+        const void* preview = nullptr;
+        const void* scene = nullptr;
+        MessageLanguage language = MessageLanguage::Chinese;
+        std::size_t done = 0;
+    };
+    std::array<PaneCache, 2> caches_;
+    void paintCached(QPainter& painter, ViewPlane plane, const QRect& pane);
 };
 
 } // namespace m350::ui

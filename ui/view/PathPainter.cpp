@@ -45,20 +45,30 @@ void pieces(const preview::PathSegment& s, const Point3& start, const preview::A
     }
 }
 
-struct Buckets {
+
+} // namespace
+
+// The lines of a frame by pen; a line wholly to one side of the pixels shown is left out (a chunk
+// partly in view brings all its moves).
+struct LineBuckets {
+    explicit LineBuckets(QSizeF size) : right(size.width() + 2.0), bottom(size.height() + 2.0) {}
     QVector<QLineF> feed, rapid, doneFeed, doneRapid;
+    double left = -2.0, top = -2.0, right, bottom;
     void add(bool rapidMove, bool done, QPointF a, QPointF b) {
+        if ((a.x() < left && b.x() < left) || (a.x() > right && b.x() > right) || (a.y() < top && b.y() < top) ||
+            (a.y() > bottom && b.y() > bottom)) {
+            return;
+        }
         (done ? (rapidMove ? doneRapid : doneFeed) : (rapidMove ? rapid : feed)).append(QLineF(a, b));
     }
     std::size_t size() const { return std::size_t(feed.size() + rapid.size() + doneFeed.size() + doneRapid.size()); }
 };
 
-} // namespace
 
 std::size_t PathPainter::paint(QPainter& painter, const preview::Preview& preview, ViewPlane plane, const ViewTransform& view,
                                std::size_t done, const Colours& colours) {
     const QRectF visible = view.visibleMm().adjusted(-view.mmPerPixel(), -view.mmPerPixel(), view.mmPerPixel(), view.mmPerPixel());
-    Buckets lines;
+    LineBuckets lines(view.size());
     if (const preview::PathLevels::Level* level = preview.levels.forScale(view.mmPerPixel())) {
         for (const preview::PathLevels::Chunk& chunk : level->chunks) {
             if (!shows(visible, planeBox(plane, chunk.box))) {
@@ -90,12 +100,41 @@ std::size_t PathPainter::paint(QPainter& painter, const preview::Preview& previe
             }
         }
     }
-    // few lines: smooth; many: plain, to keep a frame within its 16 ms
+    drawBuckets(painter, lines, colours);
+    return lines.size();
+}
+
+std::size_t PathPainter::paintDone(QPainter& painter, const preview::PathStore& path, ViewPlane plane, const ViewTransform& view,
+                                   std::size_t from, std::size_t to, const Colours& colours) {
+    LineBuckets lines(view.size());
+    const std::size_t per = preview::PathStore::kChunkSegments;
+    for (std::size_t c = from / per; c < path.chunks().size() && c * per < to; ++c) {
+        const preview::PathStore::Chunk& chunk = path.chunks()[c];
+        Point3 at = chunk.start;
+        std::size_t arc = 0;
+        for (std::size_t i = 0; i < chunk.segments.size() && c * per + i < to; ++i) {
+            const preview::PathSegment& s = chunk.segments[i];
+            const preview::ArcCentre* centre = s.arc() ? &chunk.arcs[arc++] : nullptr;
+            if (c * per + i >= from) {
+                const bool rapid = s.kind == preview::SegmentKind::Rapid;
+                pieces(s, at, centre, plane, view, [&](QPointF a, QPointF b) { lines.add(rapid, true, a, b); });
+            }
+            at = s.end;
+        }
+    }
+    drawBuckets(painter, lines, colours);
+    return lines.size();
+}
+
+void PathPainter::drawBuckets(QPainter& painter, const LineBuckets& lines, const Colours& colours) {
+    // few lines: smooth and a little wide; many: plain one-pixel lines (the raster engine's fast
+    // path), to keep a frame within its 16 ms
+    const bool many = lines.size() >= 20000;
     painter.save();
-    painter.setRenderHint(QPainter::Antialiasing, lines.size() < 20000);
+    painter.setRenderHint(QPainter::Antialiasing, !many);
     const auto draw = [&](const QVector<QLineF>& bucket, const QColor& colour, Qt::PenStyle style, double width) {
         if (!bucket.isEmpty()) {
-            QPen pen(colour, width, style);
+            QPen pen(colour, many ? 0.0 : width, style);
             pen.setCosmetic(true);
             painter.setPen(pen);
             painter.drawLines(bucket);
@@ -106,7 +145,6 @@ std::size_t PathPainter::paint(QPainter& painter, const preview::Preview& previe
     draw(lines.feed, colours.feed, Qt::SolidLine, 1.4);
     draw(lines.doneFeed, colours.doneFeed, Qt::SolidLine, 1.6);
     painter.restore();
-    return lines.size();
 }
 
 void PathPainter::paintMove(QPainter& painter, const preview::PathStore& path, std::size_t index, ViewPlane plane,

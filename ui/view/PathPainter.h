@@ -24,6 +24,8 @@ struct PathColours {
     QColor doneRapid{0x5a, 0x70, 0x98};
 };
 
+struct LineBuckets;
+
 class PathPainter {
 public:
     using Colours = PathColours;
@@ -31,6 +33,10 @@ public:
     // Moves before `done` are the run's; returns how many lines were drawn.
     static std::size_t paint(QPainter& painter, const preview::Preview& preview, ViewPlane plane, const ViewTransform& view,
                              std::size_t done, const Colours& colours = {});
+    // Draws moves [from, to) in the colours of the run's part, over what is drawn: a frame while a
+    // run goes on adds only what it did since the last one.
+    static std::size_t paintDone(QPainter& painter, const preview::PathStore& path, ViewPlane plane, const ViewTransform& view,
+                                 std::size_t from, std::size_t to, const Colours& colours = {});
     // Draws move `index` (all of its chords) with the painter's pen: a highlighted block.
     static void paintMove(QPainter& painter, const preview::PathStore& path, std::size_t index, ViewPlane plane,
                           const ViewTransform& view);
@@ -38,6 +44,10 @@ public:
     // The move drawn nearest to pixel `at`, within `radius` pixels.
     static std::optional<std::size_t> hit(const preview::PathStore& path, ViewPlane plane, const ViewTransform& view,
                                           QPointF at, double radius);
+private:
+    static void drawBuckets(QPainter& painter, const LineBuckets& lines, const Colours& colours);
+
+public:
     static const preview::PathSegment& segment(const preview::PathStore& path, std::size_t index) {
         return path.chunks()[index / preview::PathStore::kChunkSegments].segments[index % preview::PathStore::kChunkSegments];
     }
