@@ -11,7 +11,9 @@
 #include "ui/view/PathPainter.h"
 
 #include "core/preview/PreviewBuilder.h"
+#include "tests/bench/MouldProgram.h"
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QTest>
 
@@ -213,6 +215,34 @@ TEST(PreviewJob, ACancelledBuildStopsSoon) {
     stopper.join();
     EXPECT_TRUE(built.cancelled);
     EXPECT_GT(built.moves, 0u);
+}
+
+// The preview is built beside the worker: a command given right after loading a program of a
+// million lines is answered before the path is ready (the panel keeps answering keys).
+TEST(PreviewJob, TheSessionAnswersWhileABigPreviewIsBuilt) {
+    auto loaded = config::loadMachineFolder(
+        (std::filesystem::path(config::bundledMachinesDirectory()) / "m350-linear16").string());
+    ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(loaded));
+    const std::string big = bench::program(1'000'000).path();
+    ui::MachineSession session(std::get<config::MachineConfig>(std::move(loaded)), {}); // the real-time clock
+    session.sync();
+    QElapsedTimer clock;
+    clock.start();
+    session.loadProgram(QString::fromStdString(big));
+    session.setJogStep(0.01);
+    session.sync();
+    const qint64 answered = clock.elapsed();
+    QCoreApplication::processEvents();
+    EXPECT_TRUE(session.latest()->programPreview.building) << "the path is not ready yet when the command is answered";
+    while (!session.latest()->programPreview.preview && clock.elapsed() < 120'000) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+    }
+    const qint64 ready = clock.elapsed();
+    ASSERT_TRUE(session.latest()->programPreview.preview) << "the preview never came";
+    EXPECT_LT(answered, ready);
+    EXPECT_GT(session.latest()->programPreview.preview->moves, 1'000'000u);
+    EXPECT_FALSE(session.latest()->programPreview.building);
+    EXPECT_DOUBLE_EQ(session.latest()->status.jogStep, 0.01);
 }
 
 } // namespace
