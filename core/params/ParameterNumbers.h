@@ -26,6 +26,7 @@ inline constexpr int kFixedSetterInput = 575;      // input triple of the fixed 
 inline constexpr int kFixedSetterX = 135;          // 135-137: the fixed setter's machine X, Y and start Z
 inline constexpr int kFixedSetterValid = 130;      // 固定对刀仪是否有效: tools are set on the fixed setter
 inline constexpr int kSetterSafeZ = 141;           // 对刀前Z安全高度(机械坐标): O502 rises here first
+inline constexpr int kFloatingSetterValid = 128;   // 浮动对刀仪是否有效
 inline constexpr int kFloatingSetterInput = 578;   // input triple of the floating setter (浮动对刀信号)
 inline constexpr int kUserKeyFunction = 210;       // 210-216: K1-K7: 0 key-N.nc, 1-21 an output, >1000 a panel key code
 inline constexpr int kExternKeyFunction = 272;     // 272-277: external keys 1-6, the same choices (extnc<N-1>-1.nc)

@@ -36,7 +36,7 @@ constexpr double kPocketPitch = 100.0;
 constexpr double kMinimumRadius = 100.0;
 constexpr double kUmbrellaStroke = 150.0;
 
-ScenePoint point(const Eigen::Vector3d& v) {
+ScenePoint toScenePoint(const Eigen::Vector3d& v) {
     return {v.x(), v.y(), v.z()};
 }
 
@@ -143,7 +143,7 @@ private:
                 ++limited;
             }
         }
-        scene_.travel = {point(low), point(high)};
+        scene_.travel = {toScenePoint(low), toScenePoint(high)};
         scene_.travelFromSoftLimits = limited == 3;
         scene_.table = {{low.x(), low.y(), low.z() - kTableGap - 40.0}, {high.x(), high.y(), low.z() - kTableGap}};
     }
@@ -166,7 +166,7 @@ private:
             int k = 0;
             for (const Eigen::Vector3d& at : rack->geometry().pockets) {
                 ++k;
-                ScenePocket pocket{k, point(at), rack->pocketTool(k), false};
+                ScenePocket pocket{k, toScenePoint(at), rack->pocketTool(k), false};
                 if (out.onGantry) {
                     pocket.at.y = forksY;
                 }
@@ -219,12 +219,12 @@ private:
         const int n = controller_.magazine().device()->pocketCount();
         out.radius = std::max(kMinimumRadius, n * kPocketPitch / (2.0 * std::numbers::pi));
         const Eigen::Vector3d centre = station + direction * out.radius;
-        out.centre = point(centre);
+        out.centre = toScenePoint(centre);
         const double facing = std::atan2(-direction.y(), -direction.x());
         for (int k = 1; k <= n; ++k) {
             const double angle = facing + (k - turn) * 2.0 * std::numbers::pi / n;
             const Eigen::Vector3d at = centre + out.radius * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
-            out.pockets.push_back({k, point(at), toolIn(k), k == atStation});
+            out.pockets.push_back({k, toScenePoint(at), toolIn(k), k == atStation});
         }
     }
 
@@ -313,7 +313,8 @@ private:
         const SceneTool* tool = scene_.tool(scene_.spindleTool);
         scene_.workZero = {offset(0), offset(1), offset(2) - (tool ? tool->length : 0.0)};
         scene_.workSystem = controller::workSystemName(interp.activeSlot());
-        if (config_.floatingSetterTop && params::wiredInput(p_, param::kFloatingSetterInput)) {
+        if (config_.floatingSetterTop && params::wiredInput(p_, param::kFloatingSetterInput) &&
+            (!m350_ || p_.get(param::kFloatingSetterValid) != 0.0)) {
             scene_.setters.push_back({SceneSetter::Kind::Floating, scene_.workZero.x, scene_.workZero.y,
                                       *config_.floatingSetterTop, 0.0});
         }
@@ -330,6 +331,15 @@ private:
 
 MachineScene buildScene(const controller::Controller& controller) {
     return SceneBuilder(controller).build();
+}
+
+std::shared_ptr<const MachineScene> sceneSince(std::shared_ptr<const MachineScene> last,
+                                               const controller::Controller& controller) {
+    MachineScene now = buildScene(controller);
+    if (last && *last == now) {
+        return last;
+    }
+    return std::make_shared<const MachineScene>(std::move(now));
 }
 
 } // namespace m350::preview

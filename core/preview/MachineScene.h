@@ -3,6 +3,7 @@
 #include "core/common/Message.h"
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -125,5 +126,9 @@ struct MachineScene {
 // The scene of the machine `controller` drives, as it stands at its display time (a carousel's
 // turn and slide; a gantry rack's Y at the spindle's display position).
 MachineScene buildScene(const controller::Controller& controller);
+// The scene now, shared: `last` itself when nothing in it changed, else a new object (what a
+// panel publishes every frame, so a view redraws the machine only when it changed).
+std::shared_ptr<const MachineScene> sceneSince(std::shared_ptr<const MachineScene> last,
+                                               const controller::Controller& controller);
 
 } // namespace m350::preview

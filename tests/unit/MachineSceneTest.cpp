@@ -86,6 +86,25 @@ TEST(MachineScene, ToolLengthsComeFromTheZOffsetsElseTheWorld) {
     EXPECT_FALSE(s.tool(17)); // in no pocket and not in the spindle: nothing draws it
 }
 
+TEST(MachineScene, AFanucsToolsComeFromTheOffsetMemory) {
+    controller::RunSettings settings;
+    settings.tool = 2;
+    controller::Controller c(bundledMachine("fanuc-ts27r"), settings);
+    ASSERT_RAN(mdi(c, {"G10 L10 P2 R100.0", "G10 L12 P2 R9.0"})); // memory C: H and D geometry of 2
+    MachineScene s = preview::buildScene(c);
+    EXPECT_EQ(s.spindleTool, 2);
+    ASSERT_TRUE(s.tool(2));
+    EXPECT_NEAR(s.tool(2)->length, 100.0, 1e-9); // not tool.tbl's 95.5 as loaded, nor [tools]'
+    EXPECT_NEAR(s.tool(2)->diameter, 18.0, 1e-9);
+    // the fixed setter of a FANUC: its input wired (575), params 135/136 and [tool_setter]
+    ASSERT_EQ(s.setters.size(), 1u);
+    EXPECT_EQ(s.setters[0].x, 400.0);
+    EXPECT_EQ(s.setters[0].y, -50.0);
+    EXPECT_EQ(s.setters[0].top, -450.0);
+    EXPECT_EQ(s.setters[0].radius, 6.35);
+    EXPECT_EQ(s.magazine.kind, SceneMagazine::Kind::None);
+}
+
 TEST(MachineScene, FixedAndFloatingSettersStandAtTheirParameters) {
     controller::Controller c(bundledMachine("m350-linear16"), {});
     MachineScene s = preview::buildScene(c);
@@ -107,6 +126,8 @@ TEST(MachineScene, FixedAndFloatingSettersStandAtTheirParameters) {
     EXPECT_EQ(moved.setters[0].kind, SceneSetter::Kind::Floating);
     ASSERT_TRUE(c.setParameter(130, 1.0));
     EXPECT_EQ(preview::buildScene(c).setters[0].x, 400.0);
+    ASSERT_TRUE(c.setParameter(128, 0.0)); // the floating setter switched off
+    EXPECT_EQ(preview::buildScene(c).setters.size(), 1u);
 }
 
 TEST(MachineScene, TravelIsTheSoftLimitBoxWhenTheyAreOn) {
@@ -274,6 +295,41 @@ TEST(MachineScene, ATopLoadingRackAndAMachineWithoutMagazine) {
     EXPECT_EQ(s.spindleTool, 1);
     EXPECT_NEAR(s.tool(1)->length, 68.5, 1e-9);
     ASSERT_TRUE(levelOf(s, "scene_level_manual_change")); // param 818
+}
+
+// What the panel publishes: the same object while nothing changed, a new one when a tool moved.
+TEST(MachineScene, ASharedSceneIsReplacedOnlyWhenItChanged) {
+    controller::Controller c(bundledMachine("m350-linear16"), {});
+    std::shared_ptr<const MachineScene> first = preview::sceneSince(nullptr, c);
+    ASSERT_TRUE(first);
+    EXPECT_EQ(preview::sceneSince(first, c), first);
+    ASSERT_RAN(mdi(c, {"G53 X100"})); // the spindle moved: no part of the scene
+    EXPECT_EQ(preview::sceneSince(first, c), first);
+    ASSERT_RAN(mdi(c, {"T2"}));
+    std::shared_ptr<const MachineScene> second = preview::sceneSince(first, c);
+    EXPECT_NE(second, first);
+    EXPECT_EQ(second->spindleTool, 2);
+}
+
+// A disc turning in display time: the pockets go round between the two stations.
+TEST(MachineScene, ADiscTurningStandsBetweenItsPockets) {
+    controller::Controller c(bundledMachine("m350-servo-disc"), {});
+    ASSERT_TRUE(c.loadMdi({"T3"}));
+    ASSERT_TRUE(c.start());
+    const preview::ScenePoint station{650.0, 20.0, -85.0};
+    bool between = false;
+    for (int frame = 0; frame < 4000 && c.runState() == controller::RunState::Running; ++frame) {
+        c.advance(0.02);
+        MachineScene s = preview::buildScene(c);
+        double nearest = 1e9;
+        for (const preview::ScenePocket& pocket : s.magazine.pockets) {
+            nearest = std::min(nearest, distanceXY(pocket.at, station));
+        }
+        between = between || nearest > 1.0; // mid-turn: no pocket faces the station
+    }
+    EXPECT_TRUE(between) << "no frame showed the disc between two pockets";
+    MachineScene end = preview::buildScene(c);
+    EXPECT_NEAR(distanceXY(end.magazine.pockets[2].at, station), 0.0, 1e-9);
 }
 
 // The panel builds a scene every frame and compares it with the last: that must cost microseconds.

@@ -7,6 +7,7 @@
 #include "core/controller/PanelStatus.h"
 #include "core/tools/ToolLifeView.h"
 #include "core/controller/SpindleLoadView.h"
+#include "core/preview/MachineScene.h"
 #include "core/tools/ToolTable.h"
 
 #include <QMetaType>
@@ -77,6 +78,9 @@ struct PanelSnapshot {
     // The breakage monitor's spindle load (a new object only when a sample came or the tool
     // changed); null on a machine without a spindle load model.
     std::shared_ptr<const controller::SpindleLoadView> spindleLoad;
+    // What the machine view (图形显示) draws besides the path and the spindle's position
+    // (core/preview/MachineScene.h): a new object only when it changed.
+    std::shared_ptr<const preview::MachineScene> scene;
     qint64 publishedNs = 0;    // steady clock when the worker published it (the panel's latency meter)
 };
 
