@@ -197,6 +197,14 @@ public:
     // The machine's configuration as it stands: parameters, offsets of the folder, the tool table now.
     config::MachineConfig config() const;
 
+    // What the machine view's scene reads (core/preview/MachineScene.cpp), without copies: the
+    // folder's configuration as it stands (its parameters; the tool table as it stands is
+    // toolData()'s), the tools' offsets, the magazine device and the offsets in force.
+    const config::MachineConfig& machineConfig() const { return config_; }
+    const tools::ToolData& toolData() const { return tools_; }
+    const MagazineDriver& magazine() const { return magazine_; }
+    const interp::ModalInterpreter& interpreter() const { return interp_; }
+
     // FANUC tool life management (ToolLifeCounter.h): the groups, the tool in use, the operator's reset.
     ToolLifeCounter& toolLife() { return toolLife_; }
     const ToolLifeCounter& toolLife() const { return toolLife_; }

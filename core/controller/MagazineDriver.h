@@ -60,6 +60,14 @@ public:
     void build();
     // The device, nullptr when the machine has none.
     const devices::Magazine* device() const { return device_.get(); }
+    // The device as its kind, nullptr when it is another (what the machine view draws).
+    const devices::LinearRack* rack() const { return rack_; }
+    const devices::ServoDisc* disc() const { return disc_; }
+    const devices::UmbrellaCarousel* carousel() const { return carousel_; }
+    const devices::MultiHead* multiHead() const { return multiHead_; }
+    // A rack on the gantry: how far the spindle nose stands from its forks in Y (0 with the slide
+    // out, [magazine] slide_travel with it in); the forks stand at the spindle's Y less this.
+    double gantryNoseY() const { return slideOut_ ? 0.0 : context_.config.magazine.slideTravel; }
     // The tool in the spindle: what the magazine's spindle holds, else what the controller believes
     // (#1300 on the M350, the tool M85 stored on a FANUC). Asked before every block: inline.
     int spindleTool() const {

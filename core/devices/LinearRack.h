@@ -43,6 +43,7 @@ public:
     int pocketCount() const override { return static_cast<int>(pockets_.size()); }
     const std::vector<FallenTool>& droppedTools() const override { return spindle_.dropped(); }
     bool released() const { return spindle_.released(); }
+    const Geometry& geometry() const { return geometry_; }
 
     // A device that carries its pockets (a disc) puts another tool in a pocket, or takes it out.
     void setPocketTool(int pocket, int tool) { pockets_[static_cast<std::size_t>(pocket - 1)] = tool; }

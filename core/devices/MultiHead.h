@@ -28,6 +28,8 @@ public:
     int pocketTool(int pocket) const override { return pocket == spindleTool() ? 0 : pocket; }
     const std::vector<FallenTool>& droppedTools() const override { return none_; }
 
+    // Whether head k's cylinder holds it down.
+    bool down(int head) const { return down_[static_cast<std::size_t>(head - 1)]; }
     // Head k's cylinder moved it down (true) or up, with the nose at `nose`.
     std::optional<Message> cylinder(int head, bool down, const Eigen::Vector3d& nose);
 

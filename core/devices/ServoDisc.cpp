@@ -1,6 +1,7 @@
 #include "core/devices/ServoDisc.h"
 
 #include "core/devices/DeviceText.h"
+#include "core/devices/TurnPosition.h"
 
 #include <cmath>
 #include <cstdio>
@@ -72,15 +73,20 @@ ServoDisc::Turn ServoDisc::turnTo(int pocket, double now, const Vector3d& nose) 
                                      : message("disc_turned_empty", {from, to, where(nose)});
         return turn;
     }
-    const int n = pocketCount();
-    const int forward = ((pocket - atStation_) % n + n) % n;
-    const int steps = std::min(forward, n - forward);
+    const int steps = std::abs(shortestTurn(atStation_, pocket, pocketCount()));
+    turnedFrom_ = atStation_;
+    turnSteps_ = shortestTurn(atStation_, pocket, pocketCount());
+    turnStarted_ = now;
     pockets_[static_cast<std::size_t>(atStation_ - 1)] = station_.pocketTool(1);
     atStation_ = pocket;
     station_.setPocketTool(1, pockets_[static_cast<std::size_t>(pocket - 1)]);
     turn.seconds = steps * geometry_.secondsPerPocket + geometry_.settleSeconds;
     turningUntil_ = now + turn.seconds;
     return turn;
+}
+
+double ServoDisc::turnPosition(double now) const {
+    return devices::turnPosition(turnedFrom_, turnSteps_, pocketCount(), turnStarted_, geometry_.secondsPerPocket, now);
 }
 
 } // namespace m350::devices

@@ -50,6 +50,11 @@ public:
     Turn turnTo(int pocket, double now, const Eigen::Vector3d& nose);
     int pocketAtStation() const { return atStation_; }
     bool turning(double now) const { return now < turningUntil_; }
+    const Geometry& geometry() const { return geometry_; }
+    // Which pocket faces the station at virtual time `now`, counted on past the last one while the
+    // disc turns (2.5: halfway from pocket 2 to 3; 10.5 on a 10-pocket disc: halfway from 10 to 1).
+    // pocketAtStation() once the turn's travel is done (the drive settles still).
+    double turnPosition(double now) const;
 
 private:
     Geometry geometry_;
@@ -57,6 +62,9 @@ private:
     LinearRack station_;       // the pocket at the station, as a one-pocket top-loading rack
     int atStation_ = 1;
     double turningUntil_ = -1.0;
+    int turnedFrom_ = 1;      // the pocket at the station when the last turn began
+    int turnSteps_ = 0;       // that turn's pockets, + toward higher numbers
+    double turnStarted_ = -1.0;
 };
 
 } // namespace m350::devices

@@ -1,6 +1,7 @@
 #include "core/devices/UmbrellaCarousel.h"
 
 #include "core/devices/DeviceText.h"
+#include "core/devices/TurnPosition.h"
 
 #include <algorithm>
 #include <cmath>
@@ -176,12 +177,23 @@ UmbrellaCarousel::Action UmbrellaCarousel::turnTo(int target, const Vector3d& no
         action.crash = message("carousel_turned_inside", {number(atSpindle_), number(target), where(nose)});
         return action;
     }
-    const int n = pocketCount();
-    const int forward = ((target - atSpindle_) % n + n) % n;
-    action.seconds = std::min(forward, n - forward) * geometry_.secondsPerPocket;
+    turnSteps_ = shortestTurn(atSpindle_, target, pocketCount());
+    turnedFrom_ = atSpindle_;
+    action.seconds = std::abs(turnSteps_) * geometry_.secondsPerPocket;
     atSpindle_ = target;
     turningUntil_ = now + action.seconds; // a new target replaces the old one, as its in-position signal does
     return action;
+}
+
+double UmbrellaCarousel::turnPosition(double now) const {
+    const double started = turningUntil_ - std::abs(turnSteps_) * geometry_.secondsPerPocket;
+    return devices::turnPosition(turnedFrom_, turnSteps_, pocketCount(), started, geometry_.secondsPerPocket, now);
+}
+
+double UmbrellaCarousel::slidePosition(double now) const {
+    const double left = geometry_.slideSeconds > 0.0 ? std::clamp((slidingUntil_ - now) / geometry_.slideSeconds, 0.0, 1.0)
+                                                     : 0.0;
+    return slideIn_ ? 1.0 - left : left;
 }
 
 } // namespace m350::devices

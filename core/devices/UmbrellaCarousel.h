@@ -62,6 +62,11 @@ public:
 
     bool atSpindle() const { return slideIn_; }
     int pocketAtSpindle() const { return atSpindle_; }
+    const Geometry& geometry() const { return geometry_; }
+    // Which pocket faces the spindle at virtual time `now`, fractional while the carousel turns
+    // (as ServoDisc::turnPosition), and where the slide stands: 0 away, 1 at the spindle.
+    double turnPosition(double now) const;
+    double slidePosition(double now) const;
 
 private:
     std::optional<Message> moveEmpty(const Eigen::Vector3d& from, const Eigen::Vector3d& to, bool spindleTurning);
@@ -81,6 +86,8 @@ private:
     bool busy(double now) const { return now < turningUntil_ || now < slidingUntil_; }
     double turningUntil_ = -1.0;
     double slidingUntil_ = -1.0;
+    int turnedFrom_ = 1;  // the pocket at the spindle when the last turn began
+    int turnSteps_ = 0;   // that turn's pockets, + toward higher numbers
     struct MoveUnderWay {
         Eigen::Vector3d from;
         bool spindleTurning = false;

@@ -3,6 +3,7 @@
 #include "core/common/Message.h"
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,7 +54,11 @@ struct SceneMagazine {
     Kind kind = Kind::None;
     bool topLoading = false; // a rack loaded from above (no side opening)
     double openingY = 1.0;   // a side-loading rack's forks open toward +Y (1) or -Y (-1)
-    bool onGantry = false;   // the rack travels in Y with the spindle (龙门架直排)
+    bool onGantry = false;   // the rack travels in Y with the spindle (龙门架直排): its pockets' Y is where they are now
+    // The pockets ride on the spindle's carriage (multi-process heads): each pocket's `at` is its
+    // head's X Y offset from the spindle nose (params 890+/910+, Z 0), not a machine position; each
+    // head holds its own tool (tool = head) and atStation marks a head its cylinder holds down.
+    bool followsSpindle = false;
     std::vector<ScenePocket> pockets;
     // A disc or carousel: its centre and the radius its pockets stand on (radius 0: none).
     ScenePoint centre;
@@ -101,7 +106,8 @@ struct MachineScene {
     SceneBox travel;              // the soft-limit box (params 161-170), else the world's travel
     bool travelFromSoftLimits = false;
     SceneBox table;               // the machine table (top face at table.high.z)
-    ScenePoint workZero;          // machine coordinates of the active work system's zero
+    ScenePoint workZero;          // machine coordinates of the active work system's zero: where the
+                                  // spindle tool's tip stands at work 0 (the nose at work 0 less its length)
     std::string workSystem;       // "G54", "G92", "G54.1 P3"
     int spindleTool = 0;          // 0: the spindle is empty
     std::map<int, SceneTool> tools; // every tool the view may draw, by number (spindle, pockets, fallen)
@@ -117,7 +123,12 @@ struct MachineScene {
     friend bool operator==(const MachineScene&, const MachineScene&) = default;
 };
 
-// The scene of the machine `controller` drives, as it stands now.
+// The scene of the machine `controller` drives, as it stands at its display time (a carousel's
+// turn and slide; a gantry rack's Y at the spindle's display position).
 MachineScene buildScene(const controller::Controller& controller);
+// The scene now, shared: `last` itself when nothing in it changed, else a new object (what a
+// panel publishes every frame, so a view redraws the machine only when it changed).
+std::shared_ptr<const MachineScene> sceneSince(std::shared_ptr<const MachineScene> last,
+                                               const controller::Controller& controller);
 
 } // namespace m350::preview

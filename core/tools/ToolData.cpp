@@ -147,6 +147,11 @@ double ToolData::z(int tool) const {
     return row ? row->offset(kZ) : 0.0;
 }
 
+std::optional<double> ToolData::diameter(int tool) const {
+    const ToolEntry* row = rows_.find(tool);
+    return row ? row->diameter : std::nullopt;
+}
+
 std::optional<std::string> ToolData::setZ(int tool, double value) {
     ToolEntry entry;
     if (const ToolEntry* row = rows_.find(tool)) {

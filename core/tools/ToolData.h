@@ -64,6 +64,8 @@ public:
     // A tool's Z (0 when it has none); setZ makes the row (pocket = tool when free) when missing.
     double z(int tool) const;
     std::optional<std::string> setZ(int tool, double z);
+    // A tool's diameter (the row's D), when its row has one.
+    std::optional<double> diameter(int tool) const;
 
     // FANUC offset memory over the table.
     void setOffsetMemory(OffsetMemory memory) { memory_ = memory; }

@@ -47,7 +47,7 @@ void SimulationPanel::render(const PanelSnapshot& snapshot) {
     code_->setRunningLine(view.run == SimulationView::Run::Running && here ? static_cast<int>(view.line) : 0);
     MachineViewContent content;
     content.preview = snapshot.simulationPreview;
-    content.scene = snapshot.scene; // the machine as it stands: the simulation starts from it
+    content.scene = view.scene ? view.scene : snapshot.scene; // the simulated machine, as its run leaves it
     if (view.path.size > 0) {
         const auto& last = view.path.chunks.back()->back();
         content.nose = preview::ScenePoint{last.x, last.y, last.z};

@@ -8,6 +8,7 @@
 #include "core/controller/PanelStatus.h"
 #include "core/tools/ToolLifeView.h"
 #include "core/controller/SpindleLoadView.h"
+#include "core/preview/MachineScene.h"
 #include "core/tools/ToolTable.h"
 
 #include <QMetaType>
@@ -67,8 +68,6 @@ struct PanelSnapshot {
     // The machine view's previews (ui/session/ProgramPreviews.h): the loaded program's, the 仿真 file's.
     PreviewShown programPreview;
     PreviewShown simulationPreview;
-    // The machine the view draws (core/preview/MachineScene.h): a new object only when it changed.
-    std::shared_ptr<const preview::MachineScene> scene;
     params::UserLevel userLevel = params::UserLevel::Guest; // 访客 / 操作员 / 管理员 / 超级管理
     QVector<double> userVariables; // #50-#499 while the Param page watches them (NaN: vacant), else empty
     std::shared_ptr<const std::vector<files::LogEntry>> log; // 系统日志, oldest first (shared, never changed)
@@ -87,6 +86,9 @@ struct PanelSnapshot {
     // The breakage monitor's spindle load (a new object only when a sample came or the tool
     // changed); null on a machine without a spindle load model.
     std::shared_ptr<const controller::SpindleLoadView> spindleLoad;
+    // What the machine view (图形显示) draws besides the path and the spindle's position
+    // (core/preview/MachineScene.h): a new object only when it changed.
+    std::shared_ptr<const preview::MachineScene> scene;
     qint64 publishedNs = 0;    // steady clock when the worker published it (the panel's latency meter)
 };
 

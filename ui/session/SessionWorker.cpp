@@ -222,6 +222,8 @@ void SessionWorker::publish() {
     snapshot->tWordChangesTool = controller_->dialect().tCodeProgram >= 0;
     keepSpindleLoad(snapshot->status.tool);
     snapshot->spindleLoad = spindleLoad_;
+    scene_ = preview::sceneSince(std::move(scene_), *controller_);
+    snapshot->scene = scene_;
     snapshot->userLevel = userLevel_;
     if (watchVariables_) {
         snapshot->userVariables = userVariables();

@@ -6,6 +6,7 @@
 #include "core/config/MachineFolder.h"
 #include "core/params/ParameterTable.h"
 #include "core/controller/KeyPress.h"
+#include "core/preview/MachineScene.h"
 #include "core/tools/ToolData.h"
 
 #include <QElapsedTimer>
@@ -149,6 +150,7 @@ private:
     QElapsedTimer externalOutputSaved_;
     void keepSpindleLoad(int tool); // SessionWorkerLoad.cpp: a new view when a sample came or the tool changed
     std::shared_ptr<const controller::SpindleLoadView> spindleLoad_;
+    std::shared_ptr<const preview::MachineScene> scene_; // the last published (sceneSince)
     void keepBreakPoint();
     BreakPoints breakPoints() const;
     mutable std::optional<std::pair<QString, int>> keptBreak_; // the machine folder's `breakpoint`, read once

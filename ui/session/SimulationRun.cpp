@@ -127,6 +127,7 @@ SimulationView SimulationRun::view() {
     view_.time = status.runSeconds;
     view_.blocks = status.blocks;
     view_.moves = status.runMoves;
+    view_.scene = preview::sceneSince(std::move(view_.scene), *controller_);
     SimulationView out = view_;
     if (!tail_.empty()) {
         out.path.chunks.push_back(std::make_shared<const std::vector<PathPoint>>(tail_));

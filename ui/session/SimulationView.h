@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/preview/MachineScene.h"
+
 #include <QString>
 
 #include <cstdint>
@@ -50,6 +52,9 @@ struct SimulationView {
     std::uint64_t moves = 0; // moves the simulated run has made
     QString alarm;      // file:line:col: message of the alarm that ended it
     SimulationPath path;
+    // The simulated machine's scene (tools, magazine, offsets as the simulated run leaves them):
+    // a new object only when it changed; null while Off.
+    std::shared_ptr<const preview::MachineScene> scene;
     bool active() const { return run != Run::Off; }
 };
 
