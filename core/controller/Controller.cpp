@@ -263,11 +263,20 @@ void Controller::onMachineEvent(const machine::MachineEvent& event) {
     if (settings_.observer) {
         settings_.observer->onMachineEvent(event);
     }
-    if (event.type == machine::MachineEvent::Type::Rapid) {
-        checkSetterRapid(event);
-    }
-    if (magazine_.device()) {
-        feedMagazine(event);
+    try {
+        if (event.type == machine::MachineEvent::Type::Rapid) {
+            checkSetterRapid(event);
+        }
+        if (magazine_.device()) {
+            feedMagazine(event);
+        }
+    } catch (const macro::MacroError& error) {
+        // a move that runs into the hardware: where it was going is where it hits (the machine view
+        // marks it there; the axes stop where they are when the alarm comes)
+        const bool move = event.type == machine::MachineEvent::Type::Rapid ||
+                          event.type == machine::MachineEvent::Type::Feed || event.type == machine::MachineEvent::Type::Arc;
+        crashPlace_ = error.code == AlarmCode::Crash && move ? std::optional<machine::Axes>(event.to) : std::nullopt;
+        throw;
     }
     toolLife_.countCuttingTime(event);
     // nothing to sample, nothing that breaks: the common case, every move of a program
@@ -521,6 +530,7 @@ bool Controller::start() {
     displayTime_ = machine_.time();
     runStartedAt_ = displayTime_;
     runMovesFrom_ = machine_.movesMade();
+    crashPlace_.reset();
     timeLimitFrom_ = runStartedAt_;
     breakRun_.runStartsFrom(machine_.position());
     if (!unit || !executor_->start(*unit)) {

@@ -297,6 +297,7 @@ private:
     double feedOverride_ = 100.0;
     double runStartedAt_ = 0.0;
     std::uint64_t runMovesFrom_ = 0; // the machine's movesMade() when the run started
+    std::optional<machine::Axes> crashPlace_; // where the move that ran into the hardware was going
     double timeLimitFrom_ = 0.0; // the run's start, moved on by its holds: --max-sim-time counts from here
     bool mdi_ = false;
     std::optional<config::Hook> hook_;  // the loaded program is this hook file

@@ -57,6 +57,9 @@ struct PanelStatus {
     std::string programStop;        // why a run holds by itself (M00, G04 P-1), else empty
     std::optional<std::string> dialog; // the #1505 dialog the run waits on (Enter / Esc), if any
     std::optional<Alarm> alarm;
+    // Where a crash alarm's move ran into the hardware (the end of that move: a pocket, the setter);
+    // other alarms happen where the axes stand.
+    std::optional<machine::Axes> alarmPlace;
     std::string file;               // file and line of the block being executed
     std::uint32_t line = 0;
     bool mdi = false;               // the loaded program is MDI lines

@@ -81,6 +81,9 @@ PanelStatus Controller::panelStatus() {
         out.dialog = dialog->text;
     }
     out.alarm = alarm_;
+    if (alarm_ && alarm_->code == AlarmCode::Crash && crashPlace_) {
+        out.alarmPlace = *crashPlace_;
+    }
     if (executor_) {
         if (auto loc = executor_->location()) {
             out.file = program_.fileName(*loc);

@@ -54,6 +54,7 @@ public:
         levels();
         fallen();
         workZero(); // after the tools: the spindle tool's length places it
+        reachWorkZero();
         return std::move(scene_);
     }
 
@@ -317,6 +318,20 @@ private:
             (!m350_ || p_.get(param::kFloatingSetterValid) != 0.0)) {
             scene_.setters.push_back({SceneSetter::Kind::Floating, scene_.workZero.x, scene_.workZero.y,
                                       *config_.floatingSetterTop, 0.0});
+        }
+    }
+
+    // A travel no soft limit gives reaches the work zero too: the work lies on the table there.
+    void reachWorkZero() {
+        if (scene_.travelFromSoftLimits) {
+            return;
+        }
+        const ScenePoint& zero = scene_.workZero;
+        for (SceneBox* box : {&scene_.travel, &scene_.table}) {
+            box->low.x = std::min(box->low.x, zero.x - kTravelMargin);
+            box->low.y = std::min(box->low.y, zero.y - kTravelMargin);
+            box->high.x = std::max(box->high.x, zero.x + kTravelMargin);
+            box->high.y = std::max(box->high.y, zero.y + kTravelMargin);
         }
     }
 

@@ -9,6 +9,7 @@
 #include "ui/program/ProgramEditor.h"
 #include "ui/view/MachineView.h"
 #include "ui/view/PathPainter.h"
+#include "ui/view/ScenePainter.h"
 
 #include "core/preview/PreviewBuilder.h"
 #include "tests/bench/MouldProgram.h"
@@ -179,6 +180,61 @@ TEST(MachineView, AnAlarmIsMarkedWhereTheSpindleStoodUntilReset) {
     EXPECT_FALSE(view->fault()) << "RESET clears the mark";
 }
 
+// The rack as the parameters place it: T3 hangs in pocket 3 (params 832 / 852 / 872: X170 Y5
+// Z-80); after T3 the spindle holds it and pocket 3 is empty, T1 back in pocket 1 (X50).
+TEST(MachineView, TheRacksToolsAndTheSpindlesAreDrawnWhereTheParametersPutThem) {
+    PanelHarness panel;
+    ui::MachineView* view = openGraphics(panel);
+    ASSERT_NE(view, nullptr);
+    panel.softkey(2); // the front view: tools hang below their forks
+    panel.softkey(3); // the path (none: the travel), then
+    panel.softkey(3); // the machine
+    ASSERT_TRUE(view->content().scene);
+    const ViewPlane front = ViewPlane::Front;
+    const QColor inPocket = ui::ScenePainter::toolInPocketColour();
+    const QColor inSpindle = ui::ScenePainter::toolInSpindleColour();
+    const auto toolLength = [&](int tool) { return view->content().scene->tool(tool)->length; };
+    ASSERT_GT(toolLength(3), 20.0);
+    const auto hangsIn = [&](double x, double z, int tool) { return pixelOf(*view, front, x, 0.0, z - toolLength(tool) / 2.0); };
+
+    QImage image = view->grab().toImage();
+    EXPECT_TRUE(colourNear(image, hangsIn(170.0, -80.0, 3), inPocket)) << "T3 in pocket 3";
+    EXPECT_FALSE(colourNear(image, hangsIn(50.0, -80.0, 1), inPocket)) << "pocket 1 is empty: T1 is in the spindle";
+
+    panel.session().runMdi({"T3"});
+    panel.advance(40.0);
+    const auto snapshot = panel.session().latest();
+    ASSERT_EQ(snapshot->status.tool, 3);
+    ASSERT_EQ(view->content().scene->spindleTool, 3);
+    image = view->grab().toImage();
+    EXPECT_FALSE(colourNear(image, hangsIn(170.0, -80.0, 3), inPocket)) << "pocket 3 is empty after T3";
+    EXPECT_TRUE(colourNear(image, hangsIn(50.0, -80.0, 1), inPocket)) << "T1 back in pocket 1";
+    const machine::Axes& nose = snapshot->status.machine;
+    EXPECT_TRUE(colourNear(image, pixelOf(*view, front, nose(0), 0.0, nose(2) - toolLength(3) / 2.0), inSpindle))
+        << "the spindle's tool is T3, as long as T3";
+}
+
+// T1 driven sideways into pocket 4 (X230 Y5 Z-80, holding T4): the crash alarm is marked there.
+TEST(MachineView, ACrashIntoAPocketIsMarkedAtThePocket) {
+    PanelHarness panel;
+    panel.loadProgram("crash.nc", "G53 G0 Z0\nG53 G0 X230 Y60\nG53 G0 Z-80\nG53 G1 Y5 F2000\nM30\n");
+    ui::MachineView* view = openGraphics(panel);
+    ASSERT_NE(view, nullptr);
+    panel.key("START");
+    panel.advance(10.0);
+    const auto snapshot = panel.session().latest();
+    ASSERT_TRUE(snapshot->status.alarm);
+    EXPECT_EQ(snapshot->status.alarm->code, AlarmCode::Crash);
+    ASSERT_TRUE(view->fault());
+    EXPECT_NEAR(view->fault()->at.x, 230.0, 1e-6);
+    EXPECT_NEAR(view->fault()->at.y, 5.0, 1.0);
+    EXPECT_NEAR(view->fault()->at.z, -80.0, 1e-6);
+    const QImage image = view->grab().toImage();
+    const QPointF at = pixelOf(*view, ViewPlane::Top, 230.0, view->fault()->at.y, -80.0);
+    EXPECT_TRUE(colourNear(image, at + QPointF(0, -16), QColor(0xff, 0x30, 0x30), 2) ||
+                colourNear(image, at + QPointF(0, -16), QColor(0xff, 0x30, 0x30).darker(220), 2));
+}
+
 TEST(MachineView, KeysZoomPanAndFit) {
     PanelHarness panel;
     panel.loadProgram("square.nc", kSquare);
@@ -190,8 +246,16 @@ TEST(MachineView, KeysZoomPanAndFit) {
     const QPointF centre = view->transform(ViewPlane::Top).centre();
     panel.key("RIGHT");
     EXPECT_GT(view->transform(ViewPlane::Top).centre().x(), centre.x());
-    panel.softkey(3); // fit
+    panel.softkey(3); // fit: the path
     EXPECT_NEAR(view->transform(ViewPlane::Top).mmPerPixel(), fitted, 1e-9);
+    EXPECT_EQ(view->state()["fit"].toString(), "path");
+    const QRect pane = view->paneRect(ViewPlane::Top);
+    // pocket 16 of the rack: params 845 / 865
+    EXPECT_FALSE(pane.contains(pixelOf(*view, ViewPlane::Top, 950.0, 5.0, 0.0).toPoint()));
+    panel.softkey(3); // again: the machine, the rack's 16 pockets over a metre of X with it
+    EXPECT_EQ(view->state()["fit"].toString(), "machine");
+    EXPECT_TRUE(pane.contains(pixelOf(*view, ViewPlane::Top, 950.0, 5.0, 0.0).toPoint()));
+    EXPECT_GT(view->transform(ViewPlane::Top).mmPerPixel(), fitted);
     panel.key("ESC");
     EXPECT_EQ(panel.window().currentPage()->id(), QStringLiteral("monitor"));
 }

@@ -51,7 +51,7 @@ void GraphicsPage::softkey(int number) {
     switch (number) {
     case 1: view_->setPlane(ViewPlane::Top); break;
     case 2: view_->setPlane(ViewPlane::Front); break;
-    case 3: view_->fit(); break;
+    case 3: view_->fitNext(); break;
     case 4: view_->zoomBy(kZoomStep); break;
     case 5: view_->zoomBy(1.0 / kZoomStep); break;
     case 6: emit navigate(PageId::monitor); break;
@@ -95,6 +95,9 @@ MachineViewContent GraphicsPage::contentOf(const PanelSnapshot& snapshot) {
     }
     if (s.alarm) {
         content.alarm = AlarmText::message(*s.alarm);
+        if (s.alarmPlace) {
+            content.alarmAt = preview::ScenePoint{(*s.alarmPlace)(0), (*s.alarmPlace)(1), (*s.alarmPlace)(2)};
+        }
     }
     return content;
 }

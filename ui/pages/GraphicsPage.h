@@ -9,7 +9,8 @@ class MachineView;
 struct MachineViewContent;
 
 // 图形显示 (the Monitor's F1): the machine view of the loaded program and the machine, live.
-// F1 top view, F2 front view (both side by side on a wide window), F3 fit, F4 / F5 zoom in / out;
+// F1 top view, F2 front view (both side by side on a wide window), F3 fit the path (again: the
+// whole machine), F4 / F5 zoom in / out;
 // the arrow keys pan; a click on the path opens its line in the editor. Esc goes back.
 class GraphicsPage : public Page {
     Q_OBJECT

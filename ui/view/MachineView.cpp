@@ -65,18 +65,18 @@ void MachineView::setContent(MachineViewContent content) {
     content_ = std::move(content);
     if (newPath) {
         highlight_.reset();
-        fitted_ = false;
+        fittedPath_ = false;
     }
-    if (!fitted_ && (content_.preview.preview || content_.scene)) {
+    if (!fittedPath_ && (content_.preview.preview || content_.scene)) {
         fit();
         // a machine drawn before its path came is fitted again when the path comes
-        fitted_ = content_.preview.preview != nullptr;
+        fittedPath_ = content_.preview.preview != nullptr;
     }
     if (content_.alarm.isEmpty()) {
         fault_.reset();
         flash_.stop();
     } else if (!fault_ || fault_->text != content_.alarm) {
-        fault_ = Fault{content_.nose.value_or(preview::ScenePoint{}), content_.alarm};
+        fault_ = Fault{content_.alarmAt.value_or(content_.nose.value_or(preview::ScenePoint{})), content_.alarm};
         flashOn_ = true;
         flash_.start();
     }
@@ -113,6 +113,32 @@ void MachineView::layoutPanes() {
     }
 }
 
+QRectF MachineView::machineBox(ViewPlane plane) const {
+    QRectF box = contentBox(plane);
+    if (!content_.scene) {
+        return box;
+    }
+    const preview::MachineScene& scene = *content_.scene;
+    const auto add = [&](const preview::ScenePoint& p, double margin) {
+        const QPointF at = project(plane, p.x, p.y, p.z);
+        box = box.united(QRectF(at.x() - margin, at.y() - margin, 2 * margin, 2 * margin));
+    };
+    if (scene.travel.high != scene.travel.low) {
+        box = box.united(planeRect(plane, scene.travel));
+    }
+    if (!scene.magazine.followsSpindle) {
+        for (const preview::ScenePocket& pocket : scene.magazine.pockets) {
+            add(pocket.at, 30.0);
+        }
+    }
+    for (const preview::SceneSetter& setter : scene.setters) {
+        if (setter.kind == preview::SceneSetter::Kind::Fixed) {
+            add({setter.x, setter.y, setter.top}, std::max(setter.radius, 10.0));
+        }
+    }
+    return box;
+}
+
 QRectF MachineView::contentBox(ViewPlane plane) const {
     if (content_.preview.preview && !content_.preview.preview->path.bounds().empty()) {
         QRectF box = planeRect(plane, content_.preview.preview->path.bounds());
@@ -129,16 +155,36 @@ void MachineView::fit() {
     for (ViewPlane plane : {ViewPlane::Top, ViewPlane::Front}) {
         views_[index(plane)].fit(contentBox(plane), 24.0);
     }
+    fitted_ = Fitted::Path;
     update();
 }
 
+void MachineView::fitMachine() {
+    layoutPanes();
+    for (ViewPlane plane : {ViewPlane::Top, ViewPlane::Front}) {
+        views_[index(plane)].fit(machineBox(plane), 24.0);
+    }
+    fitted_ = Fitted::Machine;
+    update();
+}
+
+void MachineView::fitNext() {
+    if (fitted_ == Fitted::Path) {
+        fitMachine();
+    } else {
+        fit();
+    }
+}
+
 void MachineView::zoomBy(double factor) {
+    fitted_ = Fitted::Free;
     ViewTransform& view = views_[index(plane_)];
     view.zoomAt(QPointF(view.size().width() / 2.0, view.size().height() / 2.0), factor);
     update();
 }
 
 void MachineView::panBy(double dx, double dy) {
+    fitted_ = Fitted::Free;
     views_[index(plane_)].pan(QPointF(-dx, -dy));
     update();
 }
@@ -147,7 +193,7 @@ void MachineView::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
     // keep what is in the middle in the middle, at the same scale
     layoutPanes();
-    if (!fitted_) {
+    if (!fittedPath_) {
         fit();
     }
 }
@@ -158,6 +204,7 @@ void MachineView::wheelEvent(QWheelEvent* event) {
         plane_ = sideBySide() ? *plane : plane_;
         const QPoint local = at - paneRect(*plane).topLeft();
         views_[index(*plane)].zoomAt(local, std::pow(1.0015, event->angleDelta().y()));
+        fitted_ = Fitted::Free;
         update();
     }
     event->accept();
@@ -183,6 +230,7 @@ void MachineView::mouseMoveEvent(QMouseEvent* event) {
         return;
     }
     dragged_ = true;
+    fitted_ = Fitted::Free;
     views_[index(plane_)].pan(delta);
     dragFrom_ = now;
     update();
@@ -265,9 +313,13 @@ void MachineView::paintPane(QPainter& painter, ViewPlane plane, const QRect& pan
         painter.drawEllipse(at, 16.0, 16.0);
         painter.drawLine(at + QPointF(-22, 0), at + QPointF(22, 0));
         painter.drawLine(at + QPointF(0, -22), at + QPointF(0, 22));
-        const QRectF box(at + QPointF(22, 4), QSizeF(std::max(160, pane.width() / 2), 60));
+        // the text beside the mark, on a dark plate so that the machine under it does not garble it
+        const double width = std::max(160.0, std::min(pane.width() - at.x() - 30.0, pane.width() / 2.0));
+        QRectF box = painter.boundingRect(QRectF(0, 0, width, 400), Qt::AlignLeft | Qt::TextWordWrap, fault_->text);
+        box.moveTopLeft(at + QPointF(at.x() + 22 + box.width() > pane.width() ? -22 - box.width() : 22, 6));
+        painter.fillRect(box.adjusted(-4, -2, 4, 2), QColor(0x10, 0x04, 0x04, 220));
         painter.setPen(kFault);
-        painter.drawText(box, Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, fault_->text);
+        painter.drawText(box, Qt::AlignLeft | Qt::TextWordWrap, fault_->text);
     }
     paintOverlay(painter, plane, pane);
     painter.restore();
@@ -354,6 +406,7 @@ QJsonObject MachineView::state() const {
     QJsonObject out;
     out["plane"] = plane_ == ViewPlane::Top ? "top" : "front";
     out["sideBySide"] = sideBySide();
+    out["fit"] = fitted_ == Fitted::Path ? "path" : fitted_ == Fitted::Machine ? "machine" : "free";
     for (ViewPlane plane : {ViewPlane::Top, ViewPlane::Front}) {
         const ViewTransform& view = views_[index(plane)];
         out[plane == ViewPlane::Top ? "top" : "front"] =

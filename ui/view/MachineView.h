@@ -25,6 +25,7 @@ struct MachineViewContent {
     std::size_t done = 0;                                 // moves of the path the run has made
     std::optional<std::size_t> current;                   // the move under way
     QString alarm;                                        // the alarm in force (empty: none), in the panel's language
+    std::optional<preview::ScenePoint> alarmAt;           // where it happened, when not where the nose is
 };
 
 // 图形显示: the machine and the program's path to scale, from above (X-Y) and from the front
@@ -47,7 +48,9 @@ public:
     bool sideBySide() const { return width() >= kSideBySideWidth; }
     static constexpr int kSideBySideWidth = 880;
 
-    void fit();
+    void fit();        // the whole path (the machine's travel when there is none)
+    void fitMachine(); // the path and the machine: travel, pockets, setters
+    void fitNext();    // F3: the path, then the machine, then the path again
     void zoomBy(double factor);        // about the middle of the chosen plane's pane
     void panBy(double dx, double dy);  // pixels of the chosen pane: +dx shows what lies to the right
     const ViewTransform& transform(ViewPlane plane) const { return views_[index(plane)]; }
@@ -87,6 +90,7 @@ private:
     void layoutPanes();
     std::optional<ViewPlane> paneAt(QPoint at) const;
     QRectF contentBox(ViewPlane plane) const;
+    QRectF machineBox(ViewPlane plane) const;
     void paintPane(QPainter& painter, ViewPlane plane, const QRect& pane);
     void paintOverlay(QPainter& painter, ViewPlane plane, const QRect& pane);
     void paintScaleBar(QPainter& painter, const ViewTransform& view, const QRect& pane);
@@ -94,8 +98,9 @@ private:
     MachineViewContent content_;
     std::array<ViewTransform, 2> views_;
     ViewPlane plane_ = ViewPlane::Top;
-    bool fitted_ = false;        // the current path has been fitted once
-    const void* fittedFor_ = nullptr;
+    bool fittedPath_ = false; // the current path has been fitted once
+    enum class Fitted { Free, Path, Machine };
+    Fitted fitted_ = Fitted::Free;
     std::optional<Highlight> highlight_;
     std::optional<Fault> fault_;
     bool flashOn_ = true;

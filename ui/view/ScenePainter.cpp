@@ -2,10 +2,13 @@
 
 #include <QPainter>
 #include <QPainterPath>
+#include <QStringList>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 namespace m350::ui {
 
@@ -52,9 +55,27 @@ void paintWorkZero(QPainter& painter, const preview::MachineScene& scene, ViewPl
     label(painter, at + QPointF(2, 14), QString::fromStdString(scene.workSystem), Qt::white);
 }
 
+// The multi-process heads (多工序) ride with the spindle: each at its X Y offset from the nose,
+// the one that is down at the nose's height, the others 40 mm up.
+void paintHeads(QPainter& painter, const preview::MachineScene& scene, const ScenePoint& nose, ViewPlane plane,
+                const ViewTransform& view) {
+    for (const preview::ScenePocket& head : scene.magazine.pockets) {
+        const ScenePoint at{nose.x + head.at.x, nose.y + head.at.y, nose.z + (head.atStation ? 0.0 : 40.0)};
+        preview::SceneTool tool{head.tool, 0.0, 0.0};
+        if (const preview::SceneTool* known = scene.tool(head.tool)) {
+            tool = *known;
+        }
+        if (head.tool != 0) {
+            ScenePainter::paintTool(painter, tool, at, plane, view, head.atStation ? kToolInSpindle : kToolInPocket);
+        }
+        painter.setPen(head.atStation ? Qt::white : kPocket);
+        painter.drawText(view.toPixel(on(plane, at)) + QPointF(6, -6), QStringLiteral("H%1").arg(head.number));
+    }
+}
+
 void paintPockets(QPainter& painter, const preview::MachineScene& scene, ViewPlane plane, const ViewTransform& view) {
     const preview::SceneMagazine& m = scene.magazine;
-    if (m.kind == preview::SceneMagazine::Kind::None) {
+    if (m.kind == preview::SceneMagazine::Kind::None || m.followsSpindle) {
         return;
     }
     if (m.radius > 0.0 && plane == ViewPlane::Top) {
@@ -63,6 +84,12 @@ void paintPockets(QPainter& painter, const preview::MachineScene& scene, ViewPla
         const QPointF c = view.toPixel(on(plane, m.centre));
         const double r = m.radius / view.mmPerPixel();
         painter.drawEllipse(c, r, r);
+    }
+    // the closest two pockets on the screen: how much room a label has
+    double pitch = 1e9;
+    for (std::size_t i = 1; i < m.pockets.size(); ++i) {
+        const QPointF d = view.toPixel(on(plane, m.pockets[i].at)) - view.toPixel(on(plane, m.pockets[i - 1].at));
+        pitch = std::min(pitch, std::hypot(d.x(), d.y()));
     }
     for (const preview::ScenePocket& pocket : m.pockets) {
         const QPointF at = view.toPixel(on(plane, pocket.at));
@@ -92,10 +119,15 @@ void paintPockets(QPainter& painter, const preview::MachineScene& scene, ViewPla
             }
             ScenePainter::paintTool(painter, tool, pocket.at, plane, view, kToolInPocket);
         }
-        painter.setPen(pocket.tool != 0 ? kToolInPocket : kPocket);
-        const QString text = pocket.tool != 0 ? QStringLiteral("%1:T%2").arg(pocket.number).arg(pocket.tool)
-                                              : QString::number(pocket.number);
-        painter.drawText(at + QPointF(-half, plane == ViewPlane::Top ? half + 14 : -6), text);
+        // "4:T4" where there is room, "T4" where less, nothing where the pockets crowd together
+        if (pitch >= 24.0) {
+            painter.setPen(pocket.tool != 0 ? kToolInPocket : kPocket);
+            const QString tool = pocket.tool != 0 ? QStringLiteral("T%1").arg(pocket.tool) : QString();
+            const QString text = pitch >= 48.0 ? (tool.isEmpty() ? QString::number(pocket.number)
+                                                                  : QStringLiteral("%1:%2").arg(pocket.number).arg(tool))
+                                               : tool;
+            painter.drawText(at + QPointF(-half, plane == ViewPlane::Top ? half + 14 : -6), text);
+        }
     }
 }
 
@@ -108,11 +140,10 @@ void paintSetters(QPainter& painter, const preview::MachineScene& scene, ViewPla
         painter.setBrush(QColor(kSetter.red(), kSetter.green(), kSetter.blue(), 60));
         if (!fixed) {
             if (plane == ViewPlane::Front) {
-                const QRectF visible = view.visibleMm();
                 const double y = view.toPixel({0.0, setter.top}).y();
                 painter.setPen(QPen(kSetter, 1.0, Qt::DotLine));
                 painter.drawLine(QPointF(0, y), QPointF(view.size().width(), y));
-                label(painter, QPointF(view.toPixel({visible.left(), setter.top}).x() + 4, y), name, kSetter);
+                label(painter, QPointF(0.0, y + 16.0), name, kSetter); // under its line, at the left
             }
             continue;
         }
@@ -132,18 +163,34 @@ void paintSetters(QPainter& painter, const preview::MachineScene& scene, ViewPla
     painter.setBrush(Qt::NoBrush);
 }
 
+// One line a height: levels within a pixel of each other share it, their names joined.
 void paintLevels(QPainter& painter, const preview::MachineScene& scene, const ViewTransform& view, MessageLanguage language) {
-    const QRectF visible = view.visibleMm();
+    std::vector<std::pair<double, QStringList>> lines; // Z, names
     for (const preview::SceneLevel& level : scene.levels) {
-        const double y = view.toPixel({0.0, level.z}).y();
+        const QString name = QString::fromStdString(level.label.in(language));
+        auto same = std::find_if(lines.begin(), lines.end(),
+                                 [&](const auto& line) { return std::abs(line.first - level.z) < view.mmPerPixel(); });
+        if (same == lines.end()) {
+            lines.push_back({level.z, {name}});
+        } else if (!same->second.contains(name)) {
+            same->second << name;
+        }
+    }
+    for (const auto& [z, names] : lines) {
+        const double y = view.toPixel({0.0, z}).y();
         painter.setPen(QPen(kLevel, 1.0, Qt::DashDotLine));
         painter.drawLine(QPointF(0, y), QPointF(view.size().width(), y));
-        const QString text = QStringLiteral("%1  Z%2").arg(QString::fromStdString(level.label.in(language))).arg(level.z, 0, 'f', 1);
-        label(painter, QPointF(view.toPixel({visible.left(), level.z}).x() + 4, y), text, kLevel);
+        // at the right edge: the pockets' labels sit at the left, where a rack usually starts
+        const QString text = QStringLiteral("%1  Z%2").arg(names.join(QStringLiteral(" / "))).arg(z, 0, 'f', 1);
+        const double width = painter.fontMetrics().horizontalAdvance(text);
+        label(painter, QPointF(std::max(0.0, view.size().width() - width - 12.0), y), text, kLevel);
     }
 }
 
 } // namespace
+
+QColor ScenePainter::toolInPocketColour() { return kToolInPocket; }
+QColor ScenePainter::toolInSpindleColour() { return kToolInSpindle; }
 
 void ScenePainter::paintTool(QPainter& painter, const preview::SceneTool& tool, const ScenePoint& nose, ViewPlane plane,
                              const ViewTransform& view, const QColor& colour) {
@@ -180,7 +227,9 @@ void ScenePainter::paintMachine(QPainter& painter, const preview::MachineScene& 
         painter.setPen(QPen(kTravel, 1.0, Qt::DashLine));
         painter.setBrush(Qt::NoBrush);
         painter.drawRect(travel);
-        label(painter, travel.topLeft() + QPointF(0, 14),
+        // at the box's corner, or the pane's when the corner is out of view
+        const QPointF corner(std::max(travel.left(), 0.0), std::max(travel.top(), 16.0));
+        label(painter, corner + QPointF(0, 14),
               scene.travelFromSoftLimits ? say("soft limits", "软限位", language) : say("travel", "行程", language), kTravel);
     }
     if (plane == ViewPlane::Front) {
@@ -212,7 +261,9 @@ void ScenePainter::paintSpindle(QPainter& painter, const preview::MachineScene& 
     } else {
         painter.drawRect(QRectF(QPointF(at.x() - r, at.y() - std::max(12.0, 120.0 / view.mmPerPixel())), QPointF(at.x() + r, at.y())));
     }
-    if (scene.spindleTool != 0) {
+    if (scene.magazine.followsSpindle) {
+        paintHeads(painter, scene, nose, plane, view);
+    } else if (scene.spindleTool != 0) {
         preview::SceneTool tool{scene.spindleTool, 0.0, 0.0};
         if (const preview::SceneTool* known = scene.tool(scene.spindleTool)) {
             tool = *known;

@@ -5,6 +5,8 @@
 #include "core/common/Message.h"
 #include "core/preview/MachineScene.h"
 
+#include <QColor>
+
 class QPainter;
 
 namespace m350::ui {
@@ -24,6 +26,9 @@ public:
     // bar from the front; drawn at least a few pixels wide so that it shows far out.
     static void paintTool(QPainter& painter, const preview::SceneTool& tool, const preview::ScenePoint& nose, ViewPlane plane,
                           const ViewTransform& view, const QColor& colour);
+    // The colours of a tool in a pocket and of the spindle's.
+    static QColor toolInPocketColour();
+    static QColor toolInSpindleColour();
     // The diameter a tool is drawn with when nobody knows it, mm.
     static constexpr double kUnknownDiameter = 8.0;
     static constexpr double kSpindleRadius = 40.0; // the nose's housing, drawn only as an outline
