@@ -207,8 +207,8 @@ public:
     // macro::MachineAccess
     bool manageTools(macro::EvaluatedBlock& block) override;
     macro::Value readSystem(const macro::VariableInfo& info, int number) override;
-    std::optional<std::string> writeSystem(const macro::VariableInfo& info, int number, double value,
-                                           std::string_view text) override;
+    std::optional<Message> writeSystem(const macro::VariableInfo& info, int number, double value,
+                                       std::string_view text) override;
     std::optional<HomingFailure> builtInHoming(int axis) override;
     std::optional<Message> parameterWrite(int parameter, double value) override;
     void homingStarts(int axis) override;
@@ -264,7 +264,7 @@ private:
     void checkToolLength(int tool);
     // After a step: the single block stop, and the PAUSE #3004 held back (RunControl.cpp).
     void stopAfterStep(std::uint64_t machineBlocksBefore);
-    std::optional<std::string> setOperationControl(int variable, double value);
+    std::optional<Message> setOperationControl(int variable, double value);
     void resetOperationControl();
     void applyFeedOverride();
     bool optionalStopOn();

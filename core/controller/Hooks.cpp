@@ -102,7 +102,8 @@ std::optional<Alarm> Controller::runEventHook(config::Hook hook) {
     const std::string name(config::hookFile(hook).fileName);
     auto source = gcode::readSourceFile(*path);
     if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
-        status_.postMessage(name + ": not run: " + error->message);
+        const Message why{error->messageId, error->messageArguments};
+        status_.postMessage(message("hook_not_run", {name, error->messageId.empty() ? error->message : bilingual(why)}));
         return std::nullopt;
     }
     const auto& text = std::get<gcode::SourceText>(source);
@@ -112,7 +113,9 @@ std::optional<Alarm> Controller::runEventHook(config::Hook hook) {
     if (gcode::hasBlockingError(diagnostics)) {
         for (const gcode::Diagnostic& d : diagnostics) {
             if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
-                status_.postMessage(gcode::formatDiagnostic(d) + " (" + name + " not run)");
+                const std::string where = bilingual(gcode::formatDiagnostic(d, MessageLanguage::English),
+                                                    gcode::formatDiagnostic(d, MessageLanguage::Chinese));
+                status_.postMessage(message("hook_not_run_syntax", {where, name}));
                 break;
             }
         }

@@ -50,7 +50,7 @@ bool Controller::setVariable(int number, double value, std::string* why) {
         return true;
     }
     if (auto error = writeSystem(info, number, value, {})) {
-        return refuse(*error);
+        return refuse(error->english());
     }
     return true;
 }

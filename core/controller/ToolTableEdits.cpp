@@ -30,7 +30,7 @@ bool ToolTableEdits::putTool(const tools::ToolEntry& entry, std::string* why) {
         return refuse(why, kRunning);
     }
     if (auto problem = context_.tools.put(entry)) {
-        return refuse(why, *problem);
+        return refuse(why, problem->english());
     }
     return true;
 }
@@ -51,7 +51,7 @@ bool ToolTableEdits::replaceTable(const tools::ToolTable& table, std::string* wh
     }
     for (const tools::ToolEntry& entry : table.entries()) {
         if (auto problem = tools::invalidEntry(entry)) {
-            return refuse(why, *problem);
+            return refuse(why, problem->english());
         }
     }
     context_.tools.replace(table);
@@ -83,7 +83,7 @@ bool ToolTableEdits::touchOffTool(double workZ, std::string* why) {
         }
         const double others = context_.interp.workOffset()(2) - context_.interp.toolZOffset();
         if (auto problem = context_.tools.setZ(tool, tools::roundedOffset(machineZ - others - workZ))) {
-            return refuse(why, *problem);
+            return refuse(why, problem->english());
         }
         return true;
     }
@@ -91,7 +91,7 @@ bool ToolTableEdits::touchOffTool(double workZ, std::string* why) {
     const double others = context_.interp.workOffset()(2) - context_.interp.toolLengthOffset();
     const double z = tools::roundedOffset((machineZ - others - workZ * unit) / unit);
     if (auto problem = context_.tools.setZ(tool, z)) {
-        return refuse(why, *problem);
+        return refuse(why, problem->english());
     }
     context_.interp.applyLengthOffset(tool);
     return true;

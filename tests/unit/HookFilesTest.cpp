@@ -290,10 +290,10 @@ TEST_F(HookMachine, UserKeysRunTheirHookSwitchAnOutputOrNameAPanelKey) {
     EXPECT_EQ(k3.value, 1323);
     controller::KeyPress k4 = c.operatorPanel().pressUserKey(4);
     EXPECT_EQ(k4.kind, controller::KeyPress::Kind::Refused);
-    EXPECT_NE(k4.why.find("key-4.nc"), std::string::npos) << k4.why;
+    EXPECT_NE(k4.why.english().find("key-4.nc"), std::string::npos) << k4.why;
     controller::KeyPress k5 = c.operatorPanel().pressUserKey(5);
     EXPECT_EQ(k5.kind, controller::KeyPress::Kind::Refused);
-    EXPECT_NE(k5.why.find("parameter 214 = 500"), std::string::npos) << k5.why;
+    EXPECT_NE(k5.why.english().find("parameter 214 = 500"), std::string::npos) << k5.why;
 }
 
 TEST_F(HookMachine, ExternalKeysAndFunctionKeysRunTheirHooks) {

@@ -55,7 +55,7 @@ TEST(ToolLifeView, TheOperatorResetsAGroupWhenNoProgramRuns) {
     controller::Controller& c = *run.controller;
     ASSERT_TRUE(c.start());
     c.advance(1.0);
-    std::string why;
+    Message why;
     EXPECT_FALSE(c.toolLife().resetGroup(1, &why));
     EXPECT_EQ(why, "a program runs: reset the tool life of group 1 when it has stopped");
     while (c.advance(1.0) == controller::Controller::RunState::Running) {

@@ -7,6 +7,7 @@
 #include "core/tools/ToolData.h"
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
+#include "ui/i18n/Language.h"
 #include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
 
@@ -190,8 +191,8 @@ void ToolTablePage::importTable() {
         }
         const QString path = resolvePath(*text);
         auto read = tools::readToolTableFile(path.toStdString());
-        if (auto* error = std::get_if<std::string>(&read)) {
-            context().notify(QString::fromStdString(*error));
+        if (auto* error = std::get_if<Message>(&read)) {
+            context().notify(QString::fromStdString(error->in(Language::messageLanguage())));
             return;
         }
         auto parsed = std::make_shared<tools::ParsedToolTable>(std::get<tools::ParsedToolTable>(std::move(read)));

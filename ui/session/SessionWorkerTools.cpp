@@ -7,6 +7,7 @@
 #include "core/controller/ToolTableSave.h"
 #include "core/tools/ToolData.h"
 #include "ui/i18n/AlarmText.h"
+#include "ui/i18n/Language.h"
 
 namespace m350::ui {
 
@@ -86,9 +87,9 @@ void SessionWorker::keepToolTable() {
 
 void SessionWorker::resetToolLife(int group) {
     lastError_.clear();
-    std::string why;
+    Message why;
     if (!controller_->toolLife().resetGroup(group, &why)) {
-        refuse(QString::fromStdString(why));
+        refuse(QString::fromStdString(why.in(Language::messageLanguage())));
         return;
     }
     log_->record("tool_life_reset", QStringLiteral("P%1").arg(group)); // the group as G10 L3 names it
