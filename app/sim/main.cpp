@@ -199,7 +199,11 @@ int runCommand(int argc, char** argv) {
         for (const auto& [number, value] : o.settings.parameters) {
             if (params::isFanucParameterNumber(number)) {
                 std::cerr << "m350-sim: "
-                          << messageText("usage_param_m350", {"--param " + std::to_string(number), machineConfig.name}, o.language)
+                          << messageText("usage_param_m350",
+                                       {"--param " + std::to_string(number),
+                                        bilingual(machineConfig.name,
+                                                  machineConfig.nameZh.empty() ? machineConfig.name : machineConfig.nameZh)},
+                                       o.language)
                           << '\n';
                 return 64;
             }

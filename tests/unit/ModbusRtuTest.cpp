@@ -156,6 +156,12 @@ TEST(ModbusRtu, TheMasterRefusesAnAnswerThatIsNotOneToItsRequest) {
         ASSERT_TRUE(std::holds_alternative<m350::Message>(reply)) << modbus::hex(c.answer);
         EXPECT_NE(std::get<m350::Message>(reply).english().find(c.why), std::string::npos) << std::get<m350::Message>(reply);
     }
+    // the controller's alarm nests the reason and says it in the panel's language (no simulated
+    // slave answers wrongly, so no run reaches it)
+    auto reply = modbus::readReply(sent, 2, modbus::withCrc(bytesOf("02 03 02 00 07")));
+    const m350::Message alarm = m350::message("modbus_bad_answer", {"MGETDATA", "1", m350::bilingual(std::get<m350::Message>(reply))});
+    EXPECT_EQ(alarm.english(), "MGETDATA: slave 1's answer: the answer comes from slave 2, not 1");
+    EXPECT_EQ(alarm.in(m350::MessageLanguage::Chinese), "MGETDATA：从站1的应答：应答来自从站2，而不是1");
 }
 
 } // namespace

@@ -102,9 +102,10 @@ void ToolTablePage::editField(const tools::ToolEntry& entry, Column column) {
             break;
         case Column::Tool: break;
         }
-        auto why = ok ? tools::invalidEntry(changed) : std::optional<std::string>(tr("not a valid value").toStdString());
-        if (why) {
-            context().notify(tr("T%1: %2").arg(entry.tool).arg(QString::fromStdString(*why)));
+        const std::optional<Message> invalid = ok ? tools::invalidEntry(changed) : std::nullopt;
+        if (!ok || invalid) {
+            const QString why = invalid ? QString::fromStdString(invalid->in(Language::messageLanguage())) : tr("not a valid value");
+            context().notify(tr("T%1: %2").arg(entry.tool).arg(why));
             return;
         }
         context().session().putTool(changed);
