@@ -147,7 +147,7 @@ public:
     void setWorkPosition(int axis, double value);
     // The panel's edits of a variable (#50-#499, offsets #800-#844 ...), as a macro would write it.
     // False with a reason for a read-only or unknown variable, or a value that is not finite.
-    bool setVariable(int number, double value, std::string* why = nullptr);
+    bool setVariable(int number, double value, Message* why = nullptr);
     // The operator says which tool the spindle holds (after an E-stop in a change the macro may
     // have stopped before it recorded the tool): param 800 (#1300) on the M350, the PMC's spindle
     // tool (what M85 stores) on a FANUC. False while a program runs or holds, or below 0. It ends

@@ -45,9 +45,13 @@ bool Controller::loadHook(config::Hook hook, const std::map<int, double>& variab
     hook_ = hook;
     mdi_ = hook == config::Hook::Mdi; // mdi.nc is the MDI page's line: the panel is in MDI
     for (auto [number, value] : variables) {
-        std::string why;
+        Message why;
         if (!setVariable(number, value, &why)) {
-            return refuse(why);
+            executor_.reset();
+            hook_.reset();
+            diagnostics_.assign(1, gcode::diagnostic(gcode::Severity::Error, gcode::DiagnosticKind::Syntax,
+                                                     std::string(file.fileName), 0, 0, why));
+            return false;
         }
     }
     return true;
@@ -62,10 +66,10 @@ bool Controller::loadHookOrMdi(config::Hook hook, const std::map<int, double>& v
         return false;
     }
     for (auto [number, value] : variables) {
-        std::string why;
+        Message why;
         if (!setVariable(number, value, &why)) {
             executor_.reset();
-            diagnostics_.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, "MDI", 0, 0, why});
+            diagnostics_.push_back(gcode::diagnostic(gcode::Severity::Error, gcode::DiagnosticKind::Syntax, "MDI", 0, 0, why));
             return false;
         }
     }

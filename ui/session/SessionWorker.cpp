@@ -2,6 +2,7 @@
 
 #include "ui/i18n/AlarmText.h"
 #include "ui/i18n/DiagnosticText.h"
+#include "ui/i18n/Language.h"
 #include "ui/session/SimulationRun.h"
 
 #include "core/config/HookFiles.h"
@@ -414,9 +415,9 @@ void SessionWorker::setWorkPosition(int axis, double value) {
 
 void SessionWorker::setVariable(int number, double value) {
     lastError_.clear();
-    std::string why;
+    Message why;
     if (!controller_->setVariable(number, value, &why)) {
-        refuse(QString::fromStdString(why));
+        refuse(QString::fromStdString(why.in(Language::messageLanguage())));
         return;
     }
     publish();
