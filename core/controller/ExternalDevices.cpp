@@ -83,7 +83,7 @@ ExternalDevices::modbus(const ModbusRequest& request) {
         return macro::MacroError::of(AlarmCode::DeviceError, message(request.write ? "modbus_off_write" : "modbus_off_read"));
     }
     if (context_.scan.scanning()) {
-        context_.scan.refuse(name + " talks to Modbus slave " + slave);
+        context_.scan.refuse(message("scan_modbus", {name, slave}));
         return ModbusAnswer{};
     }
     const devices::modbus::Frame sent =
