@@ -1,6 +1,7 @@
 #include "app/sim/SimOptions.h"
 #include "app/sim/BreakageOptions.h"
 #include "app/sim/ByteLimitOption.h"
+#include "app/sim/UsageError.h"
 
 #include "core/params/FanucParameters.h"
 #include "core/config/HookFiles.h"
@@ -23,10 +24,10 @@ double parseNumber(const std::string& text, const std::string& what) {
     double v = 0;
     auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || ptr != text.data() + text.size()) {
-        throw CLI::ValidationError(what, "'" + text + "' is not a number");
+        throw UsageError(what, message("usage_not_number", {text}));
     }
     if (!std::isfinite(v)) {
-        throw CLI::ValidationError(what, "'" + text + "' is not a finite number");
+        throw UsageError(what, message("usage_not_finite", {text}));
     }
     return v;
 }
@@ -51,7 +52,7 @@ const CLI::Validator nonEmptyPath(
 int parseWhole(const std::string& text, const std::string& what) {
     double v = parseNumber(text, what);
     if (!(v >= -1e9 && v <= 1e9) || v != std::trunc(v)) {
-        throw CLI::ValidationError(what, "'" + text + "' is not a whole number");
+        throw UsageError(what, message("usage_not_whole", {text}));
     }
     return static_cast<int>(v);
 }
@@ -59,7 +60,7 @@ int parseWhole(const std::string& text, const std::string& what) {
 std::pair<std::string, std::string> splitAssignment(const std::string& text, const std::string& what) {
     auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
-        throw CLI::ValidationError(what, "'" + text + "' must look like N=V");
+        throw UsageError(what, message("usage_looks_like", {text, "N=V"}));
     }
     return {text.substr(0, eq), text.substr(eq + 1)};
 }
@@ -67,11 +68,11 @@ std::pair<std::string, std::string> splitAssignment(const std::string& text, con
 // "IN11" (or "in11") -> 11, for the options that name an input.
 int parseInputName(const std::string& name, const std::string& item, const std::string& what, const char* example) {
     if (name.size() < 3 || (name.rfind("IN", 0) != 0 && name.rfind("in", 0) != 0)) {
-        throw CLI::ValidationError(what, "'" + item + "' must look like " + example);
+        throw UsageError(what, message("usage_looks_like", {item, example}));
     }
     int port = parseWhole(name.substr(2), what);
     if (port < 1 || port > 24) {
-        throw CLI::ValidationError(what, "inputs are IN01-IN24");
+        throw UsageError(what, message("usage_inputs"));
     }
     return port;
 }
@@ -82,22 +83,39 @@ machine::InputFault parseFault(const std::string& item) {
     auto colon = fault.find(':');
     std::string kind = fault.substr(0, colon);
     if (colon == std::string::npos || colon + 1 == fault.size()) {
-        throw CLI::ValidationError("--fault", "'" + item + "' must look like IN12=delayed:0.05 (delayed, bouncing or stuck)");
+        throw UsageError("--fault", message("usage_looks_like", {item, bilingual("IN12=delayed:0.05 (delayed, bouncing or stuck)",
+                                                                                    "IN12=delayed:0.05（delayed、bouncing或stuck）")}));
     }
     double value = parseNumber(fault.substr(colon + 1), "--fault");
     if (kind == "stuck") {
         if (value != 0.0 && value != 1.0) {
-            throw CLI::ValidationError("--fault", "'" + item + "': a stuck input reads 0 or 1");
+            throw UsageError("--fault", message("usage_stuck_level", {item}));
         }
         return machine::InputFault::stuck(static_cast<int>(value));
     }
     if (kind != "delayed" && kind != "bouncing") {
-        throw CLI::ValidationError("--fault", "'" + kind + "' is no fault: delayed, bouncing or stuck");
+        throw UsageError("--fault", message("usage_no_fault", {kind, bilingual("delayed, bouncing or stuck",
+                                                                              "delayed（延迟）、bouncing（抖动）或stuck（卡死）")}));
     }
     if (value <= 0.0) {
-        throw CLI::ValidationError("--fault", "'" + item + "': the seconds must be above 0");
+        throw UsageError("--fault", message("usage_fault_seconds", {item}));
     }
     return kind == "delayed" ? machine::InputFault::delayed(value) : machine::InputFault::bouncing(value);
+}
+
+// The --lang a command line asks for, read before CLI11 parses it: a usage error is said in it
+// even when the option it refuses comes first (English when none or no valid one is given).
+MessageLanguage languageAsked(int argc, char** argv) {
+    MessageLanguage language = MessageLanguage::English;
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view arg(argv[i]);
+        if (arg == "--lang" && i + 1 < argc) {
+            parseMessageLanguage(argv[i + 1], language);
+        } else if (arg.rfind("--lang=", 0) == 0) {
+            parseMessageLanguage(arg.substr(7), language);
+        }
+    }
+    return language;
 }
 
 } // namespace
@@ -250,17 +268,17 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
             auto [n, v] = splitAssignment(p, "--param");
             int number = parseWhole(n, "--param");
             if (number < 0 || number > params::kLastFanucParameter) {
-                throw CLI::ValidationError("--param", "parameter numbers run from 0 to 999 (FANUC machines: to 99999)");
+                throw UsageError("--param", message("usage_param_range"));
             }
             double value = parseNumber(v, "--param");
             auto refused = params::isFanucParameterNumber(number) ? params::refusedFanucParameter(number, value)
                                                                  : params::refusedParameterValue(number, value);
             if (refused) {
-                throw CLI::ValidationError("--param", *refused);
+                throw UsageError("--param", *refused);
             }
             if (auto unread = params::isFanucParameterNumber(number) ? params::unreadFanucParameter(number)
                                                                      : std::nullopt) {
-                std::cerr << "m350-sim: warning: --param " << p << ": " << *unread << '\n';
+                std::cerr << "m350-sim: warning: --param " << p << ": " << unread->in(languageAsked(argc, argv)) << '\n';
             }
             const auto* catalogue = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled());
             if (catalogue && catalogue->find(number)) {
@@ -279,7 +297,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
             int k = parseInputName(port, p, "--input", "IN11=0");
             int l = parseWhole(level, "--input");
             if (l != 0 && l != 1) {
-                throw CLI::ValidationError("--input", "inputs are IN01-IN24 and levels 0 or 1");
+                throw UsageError("--input", message("usage_input_level"));
             }
             o.settings.heldInputs[k] = l;
         }
@@ -317,8 +335,12 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     } catch (const CLI::CallForAllHelp&) {
         std::cout << app.help("", CLI::AppFormatMode::All);
         return {std::nullopt, 0};
+    } catch (const UsageError& e) {
+        const MessageLanguage language = languageAsked(argc, argv);
+        std::cerr << "m350-sim: " << e.text(language) << "\n" << messageText("usage_help", {}, language) << "\n";
+        return {std::nullopt, 64};
     } catch (const CLI::ParseError& e) {
-        std::cerr << "m350-sim: " << e.what() << "\n" << "Run 'm350-sim --help' for usage.\n";
+        std::cerr << "m350-sim: " << e.what() << "\n" << messageText("usage_help", {}, languageAsked(argc, argv)) << "\n";
         return {std::nullopt, 64};
     }
     return {o, 0};

@@ -54,8 +54,8 @@ std::optional<std::string> useToolTableFile(const SimOptions& o, config::Machine
         return std::nullopt;
     }
     auto read = tools::readToolTableFile(*o.toolTableFile);
-    if (auto* error = std::get_if<std::string>(&read)) {
-        return *error;
+    if (auto* error = std::get_if<Message>(&read)) {
+        return error->english();
     }
     auto& parsed = std::get<tools::ParsedToolTable>(read);
     for (const tools::ToolTableIssue& issue : parsed.issues) {

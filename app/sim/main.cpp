@@ -93,7 +93,7 @@ int check(controller::Controller& controller, const sim::SimOptions& o) {
 
 // What the command line asks of this machine: a tool it can hold, variables a run may set. Said
 // before the run, as a usage error, instead of being dropped or used as garbage.
-std::optional<std::string> checkAgainstMachine(const sim::SimOptions& o, const config::MachineConfig& machine) {
+std::optional<Message> checkAgainstMachine(const sim::SimOptions& o, const config::MachineConfig& machine) {
     if (o.settings.tool) {
         const int tool = *o.settings.tool;
         const bool m350 = machine.dialect->id == gcode::DialectId::M350;
@@ -102,23 +102,25 @@ std::optional<std::string> checkAgainstMachine(const sim::SimOptions& o, const c
         const int virtualTools = m350 && machine.parameters.get(param::kVirtualTools) != 0.0 ? 20 : 0;
         const int most = capacity > 0 ? capacity + virtualTools : 9999;
         if (tool < 0 || tool > most) {
-            return "--tool " + std::to_string(tool) + ": tools run from 0 (empty spindle) to " + std::to_string(most) +
-                   (capacity > 0 ? " on this machine (magazine capacity " + std::to_string(capacity) +
-                                       (virtualTools ? ", plus 20 virtual tools)" : ")")
-                                 : std::string());
+            const std::string option = "--tool " + std::to_string(tool);
+            if (capacity <= 0) {
+                return message("usage_tool_range", {option, std::to_string(most)});
+            }
+            return message(virtualTools ? "usage_tool_range_virtual" : "usage_tool_range_capacity",
+                           {option, std::to_string(most), std::to_string(capacity)});
         }
     }
     macro::VariableMap variables(*machine.dialect, machine.variableLayout);
     for (const auto& [number, value] : o.settings.variables) {
         macro::VariableInfo info = variables.describe(number);
         if (info.kind == macro::VariableKind::Undefined || info.readOnly) {
-            return "--var " + std::to_string(number) + "=...: " + variables.describeText(number) +
-                   (info.readOnly ? " is read-only" : " is not a variable of this dialect");
+            return message(info.readOnly ? "usage_var_read_only" : "usage_var_undefined",
+                           {"--var " + std::to_string(number), variables.describeWords(number)});
         }
     }
     for (int number : o.printVariables) {
         if (variables.describe(number).kind == macro::VariableKind::Undefined) {
-            return "--print " + std::to_string(number) + ": " + variables.undefinedText(number);
+            return message("usage_option", {"--print " + std::to_string(number), bilingual(variables.undefinedWords(number))});
         }
     }
     return std::nullopt;
@@ -196,8 +198,13 @@ int runCommand(int argc, char** argv) {
     if (machineConfig.dialect->id == gcode::DialectId::M350) {
         for (const auto& [number, value] : o.settings.parameters) {
             if (params::isFanucParameterNumber(number)) {
-                std::cerr << "m350-sim: --param " << number << ": parameters run from 0 to 999 on an M350 machine ("
-                          << machineConfig.name << "); 1000-99999 are FANUC parameters\n";
+                std::cerr << "m350-sim: "
+                          << messageText("usage_param_m350",
+                                       {"--param " + std::to_string(number),
+                                        bilingual(machineConfig.name,
+                                                  machineConfig.nameZh.empty() ? machineConfig.name : machineConfig.nameZh)},
+                                       o.language)
+                          << '\n';
                 return 64;
             }
         }
@@ -213,7 +220,7 @@ int runCommand(int argc, char** argv) {
             }
         }
         if (auto refused = fanucParameters ? config::rebuildCallCodes(machineConfig) : std::nullopt) {
-            std::cerr << "m350-sim: --param " << refused->parameter << ": " << refused->message << '\n';
+            std::cerr << "m350-sim: --param " << refused->parameter << ": " << refused->message.in(o.language) << '\n';
             return 64;
         }
     }
@@ -251,7 +258,11 @@ int runCommand(int argc, char** argv) {
         o.settings.trace = &trace->stream();
     }
     if (o.command != sim::SimOptions::Command::Check) {
-        if (auto problem = checkAgainstMachine(o, machineConfig); problem || (problem = sim::missingHook(o, machineConfig))) {
+        if (auto problem = checkAgainstMachine(o, machineConfig)) {
+            std::cerr << "m350-sim: " << problem->in(o.language) << "\n";
+            return 64;
+        }
+        if (auto problem = sim::missingHook(o, machineConfig)) {
             std::cerr << "m350-sim: " << *problem << "\n";
             return 64;
         }
@@ -273,7 +284,9 @@ int runCommand(int argc, char** argv) {
     if (o.confirmTool && ready) {
         controller.reset();
         if (!controller.setSpindleToolNumber(*o.confirmTool)) {
-            std::cerr << "m350-sim: --confirm-tool " << *o.confirmTool << ": the controller refused it\n";
+            std::cerr << "m350-sim: "
+                      << messageText("usage_confirm_refused", {"--confirm-tool " + std::to_string(*o.confirmTool)}, o.language)
+                      << '\n';
             return 64;
         }
         report = controller.status().report();

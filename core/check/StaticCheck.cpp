@@ -75,8 +75,8 @@ bool isWord(const Word& w, char letter, int code) {
 class NoMachine final : public macro::MachineAccess {
 public:
     macro::Value readSystem(const macro::VariableInfo&, int) override { return macro::Value::empty(); }
-    std::optional<std::string> writeSystem(const macro::VariableInfo&, int, double, std::string_view) override {
-        return "the check writes no variable";
+    std::optional<Message> writeSystem(const macro::VariableInfo&, int, double, std::string_view) override {
+        return message("check_writes_no_variable");
     }
 };
 

@@ -55,6 +55,10 @@ std::string bilingual(std::string_view english, std::string_view chinese) {
     return std::string(english) + kBilingual + std::string(chinese);
 }
 
+std::string bilingual(const Message& words) {
+    return bilingual(words.english(), words.in(MessageLanguage::Chinese));
+}
+
 std::string argumentIn(const std::string& argument, MessageLanguage language) {
     const std::size_t split = argument.find(kBilingual);
     if (split == std::string::npos) {

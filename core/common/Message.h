@@ -35,6 +35,9 @@ Message message(std::string_view id, std::vector<std::string> arguments = {});
 // An argument that is words after all (an input's function: "tool released", 松刀到位), in both
 // languages; english() and in() take the one they say.
 std::string bilingual(std::string_view english, std::string_view chinese);
+// A whole message as an argument of another (the reason a deeper layer gave: "compensated arc: %1"),
+// said in the language the outer one is.
+std::string bilingual(const Message& words);
 std::string argumentIn(const std::string& argument, MessageLanguage language);
 
 // One row of the table.

@@ -59,46 +59,39 @@ std::optional<CallParameterError> addCallParameters(macro::CallCodes& table,
                 continue;
             }
             auto place = origins.find(number);
-            const std::string setting =
-                "parameter " + std::to_string(number) + " = " + shortNumber(value->second);
+            const std::string setting = bilingual("parameter " + std::to_string(number) + " = " + shortNumber(value->second),
+                                                  "参数" + std::to_string(number) + " = " + shortNumber(value->second));
+            const std::string settingText = argumentIn(setting, MessageLanguage::English);
             const std::string origin =
-                setting + (place != origins.end() ? " (" + place->second + ")" : std::string());
+                settingText + (place != origins.end() ? " (" + place->second + ")" : std::string());
             const double v = value->second;
             if (v != std::floor(v)) {
-                return CallParameterError{setting + ": a code number is a whole number", number};
+                return CallParameterError{message("call_param_whole", {setting}), number};
             }
             const int code = static_cast<int>(v);
             CodeCall call{range.program + k, range.kind, 0, origin};
             if (range.letter == 0) {
                 const char letter = static_cast<char>(code);
                 if (code < 'A' || code > 'Z' || kCallingAddresses.find(letter) == std::string_view::npos) {
-                    return CallParameterError{
-                        setting + ": an address that calls O" + std::to_string(call.program) +
-                            " is the ASCII code of one of A B D F H I J K Q R S T (65 A, 66 B, ...)",
-                        number};
+                    return CallParameterError{message("call_param_address", {setting, std::to_string(call.program)}),
+                                              number};
                 }
                 call.valueVariable = kFirstAddressVariable + k;
                 if (auto clash = table.addAddress(letter, call)) {
-                    return CallParameterError{setting + " makes the address " + std::string(1, letter) +
-                                                  " call O" + std::to_string(call.program) + ", but " +
-                                                  clash->origin + " already makes it call O" +
-                                                  std::to_string(clash->program) + ": keep one of them",
+                    return CallParameterError{message("call_param_address_clash",
+                                                      {setting, std::string(1, letter), std::to_string(call.program),
+                                                       clash->origin, std::to_string(clash->program)}),
                                               number};
                 }
                 continue;
             }
             const std::string name = std::string(1, range.letter) + std::to_string(code);
             if (reservedCode(range.letter, code)) {
-                return CallParameterError{setting + ": " + name +
-                                              " cannot call a program (the controller itself "
-                                              "needs it)",
-                                          number};
+                return CallParameterError{message("call_param_reserved", {setting, name}), number};
             }
             if (auto clash = table.add(range.letter, code, call)) {
-                return CallParameterError{setting + " makes " + name + " call O" +
-                                              std::to_string(call.program) + ", but " + clash->origin +
-                                              " already makes it call O" + std::to_string(clash->program) +
-                                              ": keep one of them",
+                return CallParameterError{message("call_param_clash", {setting, name, std::to_string(call.program),
+                                                                       clash->origin, std::to_string(clash->program)}),
                                           number};
             }
         }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/gcode/Dialect.h"
 #include "core/macro/CallCodes.h"
 
@@ -21,7 +22,7 @@ namespace m350::config {
 // which holds machine.toml's [codes] already. Refused: a value that is no code (a fraction, G65,
 // M98, M99, M30, a letter that cannot call), and two settings for one code (both named).
 struct CallParameterError {
-    std::string message;
+    Message message;
     int parameter = 0; // the setting refused
 };
 std::optional<CallParameterError> addCallParameters(macro::CallCodes& table,

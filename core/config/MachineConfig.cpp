@@ -336,17 +336,17 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
             double v = numberValue(file, value, key.str());
             if (params::isFanucParameterNumber(n)) {
                 if (auto refused = params::refusedFanucParameter(n, v)) {
-                    fail(file, *refused, value.source());
+                    fail(file, refused->english(), value.source());
                 }
                 if (auto unread = params::unreadFanucParameter(n)) {
-                    config.warnings.push_back(warningAt(file, value.source(), *unread));
+                    config.warnings.push_back(warningAt(file, value.source(), unread->english()));
                 }
                 config.fanucParameters[n] = v;
                 config.fanucParameterOrigins[n] = placeOf(file, value.source());
                 continue;
             }
             if (auto refused = params::refusedParameterValue(n, v)) {
-                fail(file, *refused, value.source());
+                fail(file, refused->english(), value.source());
             }
             // A value the panel would refuse is kept (a simulator may be asked for it) but said; the
             // other members of the IO triples (enable, level) are not catalogued and pass as written.
@@ -360,7 +360,7 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
     }
     if (auto refused = rebuildCallCodes(config)) {
         const toml::node* setting = t["params"].as_table()->get(std::to_string(refused->parameter));
-        fail(file, refused->message, setting ? setting->source() : toml::source_region{});
+        fail(file, refused->message.english(), setting ? setting->source() : toml::source_region{});
     }
 }
 

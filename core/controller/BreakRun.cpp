@@ -20,7 +20,7 @@ namespace {
 // A scan takes no time, so a macro waiting for an input would loop for ever: it stops here.
 constexpr std::uint64_t kScanBlockLimit = 5'000'000;
 
-bool refuse(std::string* why, std::string text) {
+bool refuse(Message* why, Message text) {
     if (why) {
         *why = std::move(text);
     }
@@ -58,10 +58,10 @@ std::string BreakRun::lineText(std::uint32_t block) const {
     return program_.fileName(where) + ":" + std::to_string(where.line);
 }
 
-bool BreakRun::startAtLine(std::uint32_t line, std::string* why) {
+bool BreakRun::startAtLine(std::uint32_t line, Message* why) {
     auto unit = starter_.programExecutor() ? program_.mainUnit() : std::nullopt;
     if (!unit) {
-        return refuse(why, "no program file is loaded");
+        return refuse(why, message("start_no_program"));
     }
     // The file's blocks are consecutive and in line order (it is parsed in one go): a binary search
     // finds the line without reading every block (a 1 GB program keeps most of them on disk).
@@ -91,19 +91,18 @@ bool BreakRun::startAtLine(std::uint32_t line, std::string* why) {
     }
     const std::string name = program_.files[file].name;
     if (line == 0 || !found) {
-        return refuse(why, "line " + std::to_string(line) + " is not in " + name + " (its blocks are on lines 1-" +
-                               std::to_string(last) + ")");
+        return refuse(why, message("start_line_not_in", {std::to_string(line), name, std::to_string(last)}));
     }
     if (std::uint32_t in = program_.unitOfBlock(*found); in != *unit) {
-        return refuse(why, "line " + std::to_string(line) + " is in O" + std::to_string(program_.units[in].number) +
-                               ", a subprogram: start at the line of the main program that calls it");
+        return refuse(why, message("start_line_in_subprogram",
+                                   {std::to_string(line), std::to_string(program_.units[in].number)}));
     }
     return startAt(*found, 0, false, why);
 }
 
-bool BreakRun::resumeAtPause(std::string* why) {
+bool BreakRun::resumeAtPause(Message* why) {
     if (!paused_) {
-        return refuse(why, "no paused run to resume (PAUSE, then RESET)");
+        return refuse(why, message("start_no_pause"));
     }
     const PausePoint pause = *paused_;
     const bool fromStop = parameters_.get(param::kPauseResumeMode) != 0.0 && pause.mainMove;
@@ -137,15 +136,15 @@ void BreakRun::rememberPause(const machine::SimulatedMachine::Remainder& rest) {
 
 // Starts at `block` of the main program (on its `pass`-th start; 0: the first time it comes).
 // With `fromStopPoint` the block is scanned too and the machine finishes the move the hold cut.
-bool BreakRun::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopPoint, std::string* why) {
+bool BreakRun::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopPoint, Message* why) {
     if (const RunState state = starter_.runState(); state == RunState::Running || state == RunState::Hold) {
-        return refuse(why, "the program is running: RESET first");
+        return refuse(why, message("start_running"));
     }
     if (manual_.jogging()) {
-        return refuse(why, "a manual move is under way");
+        return refuse(why, message("start_jogging"));
     }
     if (parameters_.get(param::kHomeBeforeProcessing) != 0.0 && !homing_.xyzHomed()) {
-        return refuse(why, "机械未归零不能自动加工! (home X, Y and Z first: parameter 220)");
+        return refuse(why, message("start_not_homed"));
     }
     // what a refusal puts back (variables stay as the scanned blocks set them)
     const interp::ModalState modal = interp_.state();
@@ -156,9 +155,9 @@ bool BreakRun::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopPoi
     executor.start(*program_.mainUnit());
     // a new start counts from where the machine stands; a resume from where the paused run began
     const machine::Axes from = pass == 0 || !paused_ ? machine_.position() : paused_->runFrom;
-    std::optional<std::string> problem = scanTo(executor, block, pass, fromStopPoint, from);
+    std::optional<Message> problem = scanTo(executor, block, pass, fromStopPoint, from);
     if (!problem && interp_.state().group(7) != 40) {
-        problem = "cutter compensation (G41/G42) is on at " + lineText(block) + ": start before the G41 or after the G40";
+        problem = message("start_compensation_on", {lineText(block)});
     }
     if (problem) {
         scan_.endScan();
@@ -190,18 +189,21 @@ bool BreakRun::startAt(std::uint32_t block, std::uint64_t pass, bool fromStopPoi
 
 // Runs the main program's blocks as a scan until `block` is next (with `through`: until the main
 // program is next after it). The scan stays on, so the caller can read what it rebuilt.
-std::optional<std::string> BreakRun::scanTo(macro::Executor& executor, std::uint32_t block, std::uint64_t pass,
+std::optional<Message> BreakRun::scanTo(macro::Executor& executor, std::uint32_t block, std::uint64_t pass,
                                             bool through, const machine::Axes& from) {
     scan_.beginScan(from);
     bool reached = false;
     for (std::uint64_t budget = kScanBlockLimit;; --budget) {
         if (executor.state() == macro::Executor::State::Alarmed) {
             const Alarm& alarm = *executor.alarm();
-            return "the blocks before " + lineText(block) + " raise an alarm at " + alarm.file + ":" +
-                   std::to_string(alarm.line) + ": " + alarm.message;
+            const std::string said = alarm.messageId.empty()
+                                         ? alarm.message
+                                         : bilingual(alarm.message, messageText(alarm.messageId, alarm.messageArguments,
+                                                                                MessageLanguage::Chinese));
+            return message("scan_alarm", {lineText(block), alarm.file, std::to_string(alarm.line), said});
         }
         if (executor.state() != macro::Executor::State::Running) {
-            return "the program never reaches " + lineText(block) + " (it ends, or jumps over it, first)";
+            return message("scan_never_reaches", {lineText(block)});
         }
         auto next = executor.nextMainBlock();
         bool at = next && *next == block && (pass == 0 || executor.mainBlocksStarted() + 1 == pass);
@@ -213,21 +215,19 @@ std::optional<std::string> BreakRun::scanTo(macro::Executor& executor, std::uint
         }
         if (budget == 0) {
             auto where = executor.location();
-            return "the blocks before " + lineText(block) + " do not end in a scan (a wait for an input at " +
-                   (where ? program_.fileName(*where) + ":" + std::to_string(where->line) : std::string("?")) + "?)";
+            return message("scan_no_end", {lineText(block), where ? program_.fileName(*where) + ":" + std::to_string(where->line)
+                                                                  : std::string("?")});
         }
         executor.step();
         (void)interp_.takeStop(); // M00 and M01 before the line do not stop a scan
         if (scan_.refusal()) {
-            return *scan_.refusal() + " at " + lineText(*executor.mainBlock()) + ", before the start line: a scan cannot";
+            return message("scan_refused", {bilingual(*scan_.refusal()), lineText(*executor.mainBlock())});
         }
         if (starter_.dialogPending()) {
-            return lineText(*executor.mainBlock()) + " asks the operator (#1505) before the start line";
+            return message("scan_dialog", {lineText(*executor.mainBlock())});
         }
         if (starter_.inToolChange()) {
-            return lineText(*executor.mainBlock()) +
-                   " changes the tool: the magazine's tool accounting cannot be scanned (change the tool, then start "
-                   "after that line)";
+            return message("scan_tool_change", {lineText(*executor.mainBlock())});
         }
     }
 }

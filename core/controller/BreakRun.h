@@ -70,12 +70,12 @@ public:
     // for what a scan cannot follow before it: a tool change with a magazine device, G31, a PMC M
     // code, a sensor wait, an operator dialog, an alarm. A refusal moves nothing; the modal state
     // and offsets are as before, variables as scanned.
-    bool startAtLine(std::uint32_t line, std::string* why);
+    bool startAtLine(std::uint32_t line, Message* why);
     // After 暂停 and RESET (or RESET alone mid-run): starts again at the main file's block that ran
     // when paused (the same pass of a loop), rebuilt as above. Param 93 = 0 runs that block from its
     // start point; 1 from the point where the hold stopped it (a move of the main file; otherwise
     // from its start).
-    bool resumeAtPause(std::string* why);
+    bool resumeAtPause(Message* why);
     // Where the last 暂停 (or a RESET mid-run) stopped the main file, kept until the next start;
     // `file` is the main file's path.
     struct BreakPoint {
@@ -102,8 +102,8 @@ private:
         machine::Axes runFrom = machine::Axes::Zero(); // where the run began (G91 programs count from it)
     };
 
-    bool startAt(std::uint32_t block, std::uint64_t pass, bool fromStopPoint, std::string* why);
-    std::optional<std::string> scanTo(macro::Executor& executor, std::uint32_t block, std::uint64_t pass, bool through,
+    bool startAt(std::uint32_t block, std::uint64_t pass, bool fromStopPoint, Message* why);
+    std::optional<Message> scanTo(macro::Executor& executor, std::uint32_t block, std::uint64_t pass, bool through,
                                       const machine::Axes& from);
     std::string lineText(std::uint32_t block) const;
     void approach(const machine::Axes& target, machine::SpindleState spindle, double rpm);

@@ -203,7 +203,7 @@ void Controller::applyParameterOverrides() {
     if (fanuc) {
         // m350-sim refuses such a clash before it builds a controller; here the folder's table stays
         if (auto refused = config::rebuildCallCodes(config_)) {
-            status_.postMessage(refused->message + " (the machine's call codes are kept)");
+            status_.postMessage(message("call_codes_kept", {bilingual(refused->message)}));
         }
     }
 }
@@ -303,11 +303,7 @@ void Controller::checkSetterRapid(const machine::MachineEvent& event) {
     char mm[32];
     std::snprintf(mm, sizeof mm, "%.3f", depth);
     const std::string tool = std::to_string(spindleTool());
-    macro::MacroError crash{AlarmCode::Crash,
-                            "G00 drove T" + tool + " " + mm +
-                                " mm into the tool setter, below its trip point: a rapid must stop above "
-                                "the setter, only G31 may touch it",
-                            0, "setter_crash", {tool, mm}};
+    macro::MacroError crash = macro::MacroError::of(AlarmCode::Crash, message("setter_crash", {tool, mm}));
     if (state_ == RunState::Alarm || state_ == RunState::EStop) {
         status_.postMessage(Message{crash.messageId, crash.messageArguments}); // the first alarm stays the one shown
         return;
@@ -365,9 +361,7 @@ void Controller::refuseChangeInDoubt(const macro::EvaluatedBlock& block) const {
         return m350 ? w.letter == 'T' : w.letter == 'M' && w.value == 6.0;
     });
     if (word != block.words.end()) {
-        const int target = toolDoubt_.doubt()->target;
-        throw macro::MacroError{AlarmCode::InvalidArgument, toolDoubt_.refusal(), word->column,
-                                "tool_unsure_refused", {std::to_string(target)}};
+        throw macro::MacroError::of(AlarmCode::InvalidArgument, toolDoubt_.refusal(), word->column);
     }
 }
 
@@ -560,8 +554,8 @@ Controller::RunState Controller::advance(double seconds) {
            machine_.time() <= displayTime_ && !panel_.dialogPending()) {
         if (passedTimeLimit(timeLimitFrom_)) {
             const std::vector<std::string> numbers = timeLimitNumbers(timeLimitFrom_);
-            executor_->raise(AlarmCode::SimulatedTimeLimit,
-                             message(numbers.size() > 1 ? "time_limit_program_since" : "time_limit_program", numbers));
+            const bool since = numbers.size() > 1;
+            executor_->raise(AlarmCode::SimulatedTimeLimit, message(since ? "time_limit_program_since" : "time_limit_program", numbers));
             break;
         }
         tool = stepOnce(tool);

@@ -147,7 +147,7 @@ public:
     void setWorkPosition(int axis, double value);
     // The panel's edits of a variable (#50-#499, offsets #800-#844 ...), as a macro would write it.
     // False with a reason for a read-only or unknown variable, or a value that is not finite.
-    bool setVariable(int number, double value, std::string* why = nullptr);
+    bool setVariable(int number, double value, Message* why = nullptr);
     // The operator says which tool the spindle holds (after an E-stop in a change the macro may
     // have stopped before it recorded the tool): param 800 (#1300) on the M350, the PMC's spindle
     // tool (what M85 stores) on a FANUC. False while a program runs or holds, or below 0. It ends
@@ -215,8 +215,8 @@ public:
     // macro::MachineAccess
     bool manageTools(macro::EvaluatedBlock& block) override;
     macro::Value readSystem(const macro::VariableInfo& info, int number) override;
-    std::optional<std::string> writeSystem(const macro::VariableInfo& info, int number, double value,
-                                           std::string_view text) override;
+    std::optional<Message> writeSystem(const macro::VariableInfo& info, int number, double value,
+                                       std::string_view text) override;
     std::optional<HomingFailure> builtInHoming(int axis) override;
     std::optional<Message> parameterWrite(int parameter, double value) override;
     void homingStarts(int axis) override;
@@ -272,7 +272,7 @@ private:
     void checkToolLength(int tool);
     // After a step: the single block stop, and the PAUSE #3004 held back (RunControl.cpp).
     void stopAfterStep(std::uint64_t machineBlocksBefore);
-    std::optional<std::string> setOperationControl(int variable, double value);
+    std::optional<Message> setOperationControl(int variable, double value);
     void resetOperationControl();
     void applyFeedOverride();
     bool optionalStopOn();

@@ -90,8 +90,8 @@ Value Controller::readSystem(const VariableInfo& info, int number) {
     (void)number;
 }
 
-std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int number, double value,
-                                                   std::string_view text) {
+std::optional<Message> Controller::writeSystem(const VariableInfo& info, int number, double value,
+                                               std::string_view text) {
     switch (info.kind) {
     case VariableKind::WorkOffset: offsets_.set(info.index >> 3, info.index & 7, value); return std::nullopt;
     case VariableKind::Output: scan_.setOutput(info.index, value != 0.0 ? 1 : 0); return std::nullopt;
@@ -120,12 +120,12 @@ std::optional<std::string> Controller::writeSystem(const VariableInfo& info, int
         return std::nullopt;
     case VariableKind::Dialog: panel_.showDialog(value, text); return std::nullopt;
     case VariableKind::Alarm: {
-        return macro::macroAlarmWords(value, text).english();
+        return macro::macroAlarmWords(value, text);
     }
     case VariableKind::StopMessage:
         status_.postMessage(message("notice_3006_continued", {std::string(text)}));
         return std::nullopt;
-    default: return "cannot write " + store_.map().describeText(number);
+    default: return message("variable_not_writable", {store_.map().describeWords(number)});
     }
 }
 

@@ -39,7 +39,7 @@ ExternalDevices::NewRecords ExternalDevices::takeNewRecords() {
     return out;
 }
 
-std::optional<std::string> ExternalDevices::openOutput() {
+std::optional<Message> ExternalDevices::openOutput() {
     open_ = true;
     opened_ = true;
     if (context_.trace && !context_.scan.scanning()) {
@@ -48,7 +48,7 @@ std::optional<std::string> ExternalDevices::openOutput() {
     return std::nullopt;
 }
 
-std::optional<std::string> ExternalDevices::closeOutput() {
+std::optional<Message> ExternalDevices::closeOutput() {
     open_ = false;
     if (context_.trace && !context_.scan.scanning()) {
         context_.trace->externalOutput(context_.time(), "PCLOS", {}, context_.source());
@@ -56,10 +56,9 @@ std::optional<std::string> ExternalDevices::closeOutput() {
     return std::nullopt;
 }
 
-std::optional<std::string> ExternalDevices::output(std::string_view statement, std::string_view record) {
+std::optional<Message> ExternalDevices::output(std::string_view statement, std::string_view record) {
     if (!open_) {
-        return std::string(statement) + " without POPEN: the external output device is closed (open it with POPEN "
-                                        "before " + std::string(statement) + ", close it with PCLOS)";
+        return message("output_without_popen", {std::string(statement)});
     }
     if (context_.scan.scanning()) {
         return std::nullopt; // sent when the program ran up to here, not again
@@ -84,7 +83,7 @@ ExternalDevices::modbus(const ModbusRequest& request) {
         return macro::MacroError::of(AlarmCode::DeviceError, message(request.write ? "modbus_off_write" : "modbus_off_read"));
     }
     if (context_.scan.scanning()) {
-        context_.scan.refuse(name + " talks to Modbus slave " + slave);
+        context_.scan.refuse(message("scan_modbus", {name, slave}));
         return ModbusAnswer{};
     }
     const devices::modbus::Frame sent =
@@ -118,8 +117,8 @@ ExternalDevices::modbus(const ModbusRequest& request) {
     if (context_.trace) {
         context_.trace->modbus(context_.time(), transfer, context_.source());
     }
-    if (auto* why = std::get_if<std::string>(&reply)) {
-        return macro::MacroError{AlarmCode::DeviceError, name + ": slave " + slave + "'s answer: " + *why, 0};
+    if (auto* why = std::get_if<Message>(&reply)) {
+        return macro::MacroError::of(AlarmCode::DeviceError, message("modbus_bad_answer", {name, slave, bilingual(*why)}));
     }
     auto& read = std::get<devices::modbus::Reply>(reply);
     return ModbusAnswer{read.exception, std::move(read.data)};

@@ -68,9 +68,9 @@ public:
         silentSlave_.reset();
     }
 
-    std::optional<std::string> openOutput() override;
-    std::optional<std::string> closeOutput() override;
-    std::optional<std::string> output(std::string_view statement, std::string_view record) override;
+    std::optional<Message> openOutput() override;
+    std::optional<Message> closeOutput() override;
+    std::optional<Message> output(std::string_view statement, std::string_view record) override;
     std::variant<ModbusAnswer, ModbusPending, macro::MacroError> modbus(const ModbusRequest& request) override;
 
 private:

@@ -45,9 +45,13 @@ bool Controller::loadHook(config::Hook hook, const std::map<int, double>& variab
     hook_ = hook;
     mdi_ = hook == config::Hook::Mdi; // mdi.nc is the MDI page's line: the panel is in MDI
     for (auto [number, value] : variables) {
-        std::string why;
+        Message why;
         if (!setVariable(number, value, &why)) {
-            return refuse(why);
+            executor_.reset();
+            hook_.reset();
+            diagnostics_.assign(1, gcode::diagnostic(gcode::Severity::Error, gcode::DiagnosticKind::Syntax,
+                                                     std::string(file.fileName), 0, 0, why));
+            return false;
         }
     }
     return true;
@@ -62,10 +66,10 @@ bool Controller::loadHookOrMdi(config::Hook hook, const std::map<int, double>& v
         return false;
     }
     for (auto [number, value] : variables) {
-        std::string why;
+        Message why;
         if (!setVariable(number, value, &why)) {
             executor_.reset();
-            diagnostics_.push_back({gcode::Severity::Error, gcode::DiagnosticKind::Syntax, "MDI", 0, 0, why});
+            diagnostics_.push_back(gcode::diagnostic(gcode::Severity::Error, gcode::DiagnosticKind::Syntax, "MDI", 0, 0, why));
             return false;
         }
     }
@@ -102,7 +106,8 @@ std::optional<Alarm> Controller::runEventHook(config::Hook hook) {
     const std::string name(config::hookFile(hook).fileName);
     auto source = gcode::readSourceFile(*path);
     if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
-        status_.postMessage(name + ": not run: " + error->message);
+        const Message why{error->messageId, error->messageArguments};
+        status_.postMessage(message("hook_not_run", {name, error->messageId.empty() ? error->message : bilingual(why)}));
         return std::nullopt;
     }
     const auto& text = std::get<gcode::SourceText>(source);
@@ -112,7 +117,9 @@ std::optional<Alarm> Controller::runEventHook(config::Hook hook) {
     if (gcode::hasBlockingError(diagnostics)) {
         for (const gcode::Diagnostic& d : diagnostics) {
             if (d.severity == gcode::Severity::Error && d.kind == gcode::DiagnosticKind::Syntax) {
-                status_.postMessage(gcode::formatDiagnostic(d) + " (" + name + " not run)");
+                const std::string where = bilingual(gcode::formatDiagnostic(d, MessageLanguage::English),
+                                                    gcode::formatDiagnostic(d, MessageLanguage::Chinese));
+                status_.postMessage(message("hook_not_run_syntax", {where, name}));
                 break;
             }
         }

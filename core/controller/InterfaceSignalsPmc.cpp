@@ -68,11 +68,11 @@ void InterfaceSignalsPmc::drive(int pin, int level) {
     }
 }
 
-std::optional<std::string> InterfaceSignalsPmc::setOutput(int bit, double value) {
+std::optional<Message> InterfaceSignalsPmc::setOutput(int bit, double value) {
     if (value != 0.0 && value != 1.0) {
-        char text[96];
-        std::snprintf(text, sizeof text, "#%d = %.10g: an interface output is 0 or 1", 1100 + bit, value);
-        return std::string(text);
+        char text[32];
+        std::snprintf(text, sizeof text, "%.10g", value);
+        return message("interface_output_bit", {std::to_string(1100 + bit), text});
     }
     const int level = value != 0.0 ? 1 : 0;
     outputs_ = static_cast<std::uint16_t>((outputs_ & ~(1u << bit)) | (static_cast<unsigned>(level) << bit));
@@ -80,14 +80,15 @@ std::optional<std::string> InterfaceSignalsPmc::setOutput(int bit, double value)
     return std::nullopt;
 }
 
-std::optional<std::string> InterfaceSignalsPmc::setOutputs(int word, double value) {
+std::optional<Message> InterfaceSignalsPmc::setOutputs(int word, double value) {
     const double most = word == 0 ? 65535.0 : kMostWide;
     const double least = word == 0 ? 0.0 : -kMostWide;
     if (value != std::floor(value) || value < least || value > most) {
-        char text[128];
-        std::snprintf(text, sizeof text, "#%d = %.10g: it takes a whole number from %.10g to %.10g",
-                      1132 + word, value, least, most);
-        return std::string(text);
+        char text[3][32];
+        std::snprintf(text[0], sizeof text[0], "%.10g", value);
+        std::snprintf(text[1], sizeof text[1], "%.10g", least);
+        std::snprintf(text[2], sizeof text[2], "%.10g", most);
+        return message("interface_outputs_range", {std::to_string(1132 + word), text[0], text[1], text[2]});
     }
     if (word == 0) {
         outputs_ = static_cast<std::uint16_t>(value);

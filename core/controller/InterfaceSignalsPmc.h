@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/config/InterfaceSignals.h"
 #include "core/macro/Value.h"
 
@@ -40,8 +41,8 @@ class InterfaceSignalsPmc {
     macro::Value output(int bit) const;   // #1100 + bit
     macro::Value outputs(int word) const; // #1132 (word 0), #1133 (word 1)
     // A macro's write; what is wrong with the value, if anything.
-    std::optional<std::string> setOutput(int bit, double value);
-    std::optional<std::string> setOutputs(int word, double value);
+    std::optional<Message> setOutput(int bit, double value);
+    std::optional<Message> setOutputs(int word, double value);
 
   private:
     int inputBit(int bit) const;

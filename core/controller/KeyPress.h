@@ -1,6 +1,6 @@
 #pragma once
 
-#include <string>
+#include "core/common/Message.h"
 
 namespace m350::controller {
 
@@ -8,7 +8,7 @@ namespace m350::controller {
 struct KeyPress {
     enum class Kind { Hook, Output, PanelKey, Refused } kind = Kind::Refused;
     int value = 0;   // the output or the panel key code
-    std::string why; // Refused: the reason
+    Message why{}; // Refused: the reason
 };
 
 } // namespace m350::controller

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <optional>
 #include <string>
 
@@ -14,7 +16,7 @@ class OperationControl {
   public:
     double value(int variable) const { return variable == 3 ? singleBlock_ : feedHold_; }
     // #3003 (variable 3) or #3004 (4) = value; what is wrong with the value, if anything.
-    std::optional<std::string> set(int variable, double value);
+    std::optional<Message> set(int variable, double value);
     void reset() { singleBlock_ = feedHold_ = 0; }
 
     bool singleBlockSuppressed() const { return (singleBlock_ & 1) != 0; }

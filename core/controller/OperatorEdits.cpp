@@ -28,22 +28,22 @@ bool Controller::setSpindleToolNumber(int tool) {
     return true;
 }
 
-bool Controller::setVariable(int number, double value, std::string* why) {
-    auto refuse = [why](std::string reason) {
+bool Controller::setVariable(int number, double value, Message* why) {
+    auto refuse = [why](Message reason) {
         if (why) {
             *why = std::move(reason);
         }
         return false;
     };
     if (!std::isfinite(value)) {
-        return refuse("#" + std::to_string(number) + ": not a finite number");
+        return refuse(message("variable_not_finite", {std::to_string(number)}));
     }
     macro::VariableInfo info = store_.map().describe(number);
     if (info.kind == macro::VariableKind::Undefined) {
-        return refuse("#" + std::to_string(number) + ": no such variable");
+        return refuse(message("variable_no_such", {std::to_string(number)}));
     }
     if (info.readOnly) {
-        return refuse(store_.map().describeText(number) + " is read-only");
+        return refuse(message("variable_edit_read_only", {store_.map().describeWords(number)}));
     }
     if (macro::VariableStore::ownsKind(info.kind)) {
         store_.write(info, number, macro::Value::of(value));

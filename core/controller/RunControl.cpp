@@ -134,7 +134,7 @@ void Controller::applyFeedOverride() {
     machine_.setFeedOverride(factor, config_.parameters.get(param::kOverrideActsOnRapids) != 0.0);
 }
 
-std::optional<std::string> Controller::setOperationControl(int variable, double value) {
+std::optional<Message> Controller::setOperationControl(int variable, double value) {
     if (auto refused = operation_.set(variable, value)) {
         return refused;
     }

@@ -26,9 +26,8 @@ Alarm ToolDoubt::notice() const {
     return out;
 }
 
-std::string ToolDoubt::refusal() const {
-    return "no tool change before the operator enters the tool the spindle holds: a change to T" +
-           std::to_string(doubt_ ? doubt_->target : 0) + " was stopped";
+Message ToolDoubt::refusal() const {
+    return message("tool_unsure_refused", {std::to_string(doubt_ ? doubt_->target : 0)});
 }
 
 } // namespace m350::controller

@@ -28,7 +28,7 @@ class ToolDoubt {
     // What the controller says while in doubt, with its message id "tool_unsure" (T target, T recorded).
     Alarm notice() const;
     // Why a change is refused while in doubt ("tool_unsure_refused"), for the alarm at the T or M06.
-    std::string refusal() const;
+    Message refusal() const;
 
   private:
     std::optional<Doubt> doubt_;

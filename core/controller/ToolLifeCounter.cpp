@@ -31,10 +31,10 @@ void ToolLifeCounter::countCuttingTime(const machine::MachineEvent& event) {
     }
 }
 
-bool ToolLifeCounter::resetGroup(int group, std::string* why) {
-    std::optional<std::string> refusal;
+bool ToolLifeCounter::resetGroup(int group, Message* why) {
+    std::optional<Message> refusal;
     if (programActive(state_)) {
-        refusal = "a program runs: reset the tool life of group " + std::to_string(group) + " when it has stopped";
+        refusal = message("tool_life_reset_running", {std::to_string(group)});
     } else {
         refusal = life_.resetGroup(group);
     }

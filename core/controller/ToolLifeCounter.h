@@ -44,7 +44,7 @@ public:
     void countCuttingTime(const machine::MachineEvent& event);
     // The operator's tool life reset of a group (its tools' used life to 0). Refused (false, with
     // the reason) while a program runs or holds, or for a group that is not entered.
-    bool resetGroup(int group, std::string* why = nullptr);
+    bool resetGroup(int group, Message* why = nullptr);
 
 private:
     bool applyWords(macro::EvaluatedBlock& block);

@@ -12,22 +12,20 @@ namespace m350::controller {
 
 namespace {
 
-bool refuse(std::string* why, std::string reason) {
+bool refuse(Message* why, Message reason) {
     if (why) {
         *why = std::move(reason);
     }
     return false;
 }
 
-constexpr const char* kRunning = "a program is running: the tool table changes once it has stopped (RESET)";
-
 } // namespace
 
 ToolTableEdits::ToolTableEdits(Context context) : context_(std::move(context)), savedMark_(context_.tools.mark()) {}
 
-bool ToolTableEdits::putTool(const tools::ToolEntry& entry, std::string* why) {
+bool ToolTableEdits::putTool(const tools::ToolEntry& entry, Message* why) {
     if (programActive(context_.state)) {
-        return refuse(why, kRunning);
+        return refuse(why, message("tool_edit_running"));
     }
     if (auto problem = context_.tools.put(entry)) {
         return refuse(why, *problem);
@@ -35,19 +33,19 @@ bool ToolTableEdits::putTool(const tools::ToolEntry& entry, std::string* why) {
     return true;
 }
 
-bool ToolTableEdits::removeTool(int tool, std::string* why) {
+bool ToolTableEdits::removeTool(int tool, Message* why) {
     if (programActive(context_.state)) {
-        return refuse(why, kRunning);
+        return refuse(why, message("tool_edit_running"));
     }
     if (!context_.tools.remove(tool)) {
-        return refuse(why, "tool " + std::to_string(tool) + " is not in the tool table");
+        return refuse(why, message("tool_edit_not_in_table", {std::to_string(tool)}));
     }
     return true;
 }
 
-bool ToolTableEdits::replaceTable(const tools::ToolTable& table, std::string* why) {
+bool ToolTableEdits::replaceTable(const tools::ToolTable& table, Message* why) {
     if (programActive(context_.state)) {
-        return refuse(why, kRunning);
+        return refuse(why, message("tool_edit_running"));
     }
     for (const tools::ToolEntry& entry : table.entries()) {
         if (auto problem = tools::invalidEntry(entry)) {
@@ -58,28 +56,26 @@ bool ToolTableEdits::replaceTable(const tools::ToolTable& table, std::string* wh
     return true;
 }
 
-bool ToolTableEdits::touchOffTool(double workZ, std::string* why) {
+bool ToolTableEdits::touchOffTool(double workZ, Message* why) {
     if (!std::isfinite(workZ)) {
-        return refuse(why, "touch off: the measured Z is not a finite number");
+        return refuse(why, message("touch_off_not_finite"));
     }
     if (programActive(context_.state)) {
-        return refuse(why, kRunning);
+        return refuse(why, message("tool_edit_running"));
     }
     if (context_.jogging()) {
-        return refuse(why, "touch off: a manual move is under way; wait for the axes to stop");
+        return refuse(why, message("touch_off_moving"));
     }
     // the tool whose offset the display applies: #1300 on the M350, the spindle's on a FANUC
     const bool m350 = context_.config.dialect->id == gcode::DialectId::M350;
     const int tool = m350 ? context_.interp.currentTool() : context_.magazine.spindleTool();
     if (tool == 0) {
-        return refuse(why, "touch off sets the length of the tool in the spindle, and it is empty: load a tool first");
+        return refuse(why, message("touch_off_empty"));
     }
     const double machineZ = context_.machine.position()(2);
     if (m350) {
         if (!tools::m350ZParameter(tool, context_.config.parameters)) {
-            return refuse(why, "tool " + std::to_string(tool) +
-                                   " has no Z offset parameter on this M350 (params 930-945 for the magazine's tools, "
-                                   "973-992 for 20 virtual tools above its capacity)");
+            return refuse(why, message("touch_off_no_parameter", {std::to_string(tool)}));
         }
         const double others = context_.interp.workOffset()(2) - context_.interp.toolZOffset();
         if (auto problem = context_.tools.setZ(tool, tools::roundedOffset(machineZ - others - workZ))) {

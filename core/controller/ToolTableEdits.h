@@ -38,15 +38,15 @@ public:
     explicit ToolTableEdits(Context context);
 
     tools::ToolTable table() const { return context_.tools.table(); }
-    bool putTool(const tools::ToolEntry& entry, std::string* why = nullptr);
-    bool removeTool(int tool, std::string* why = nullptr);
-    bool replaceTable(const tools::ToolTable& table, std::string* why = nullptr);
+    bool putTool(const tools::ToolEntry& entry, Message* why = nullptr);
+    bool removeTool(int tool, Message* why = nullptr);
+    bool replaceTable(const tools::ToolTable& table, Message* why = nullptr);
     // Touch off (LinuxCNC's "Touch Off" to the tool table): with tool n in the spindle and its tip on
     // a gauge or a cut surface whose work Z is `workZ` (in the program's unit), the tool's Z changes
     // so that the display reads `workZ` there: on the M350 its parameter 930+ (applied at once), on
     // a FANUC its row (G10 L10 P n Z`workZ`) followed by G43 H n. Refused with no tool, a tool the
     // M350 has no Z parameter for, while a program runs or holds or a manual move is under way.
-    bool touchOffTool(double workZ, std::string* why = nullptr);
+    bool touchOffTool(double workZ, Message* why = nullptr);
     // Whether the tool data changed since the start or the last save (by an edit, G10, a macro
     // writing #1430 ...): what a panel saves after.
     bool changed() const { return !(context_.tools.mark() == savedMark_); }

@@ -29,13 +29,15 @@ KeyPress UserKeys::pressKey(int function, config::Hook hook, const std::string& 
     if (value == 0.0) {
         if (!context_.loadHook(hook)) {
             const std::vector<gcode::Diagnostic>& why = context_.diagnostics();
-            press.why = key + ": " + (why.empty() ? std::string("not run") : why.front().message);
+            press.why = why.empty() ? message("key_not_run", {key})
+                                    : message("key_refused", {key, bilingual(gcode::diagnosticText(why.front(), MessageLanguage::English),
+                                                                             gcode::diagnosticText(why.front(), MessageLanguage::Chinese))});
             return press;
         }
         press.kind = KeyPress::Kind::Hook;
     } else if (value == code && code >= 1 && code <= machine::kOutputCount) {
         if (!context_.switchOutput(code, 1 - context_.output(code))) {
-            press.why = key + ": OUT" + std::to_string(code) + " cannot be switched while a program runs";
+            press.why = message("key_output_running", {key, std::to_string(code)});
             return press;
         }
         press.kind = KeyPress::Kind::Output;
@@ -44,9 +46,9 @@ KeyPress UserKeys::pressKey(int function, config::Hook hook, const std::string& 
         press.kind = KeyPress::Kind::PanelKey;
         press.value = code;
     } else {
-        press.why = key + ": parameter " + std::to_string(function) + " = " + numberText(value) +
-                    " is no key function (0 runs " + std::string(config::hookFile(hook).fileName) + ", 1-" +
-                    std::to_string(machine::kOutputCount) + " switches that output, above 1000 is a panel key)";
+        press.why = message("key_no_function", {key, std::to_string(function), numberText(value),
+                                                std::string(config::hookFile(hook).fileName),
+                                                std::to_string(machine::kOutputCount)});
     }
     return press;
 }
@@ -54,7 +56,7 @@ KeyPress UserKeys::pressKey(int function, config::Hook hook, const std::string& 
 KeyPress UserKeys::pressUserKey(int key) {
     auto hook = config::userKeyHook(key);
     if (!hook) {
-        return {KeyPress::Kind::Refused, 0, "K" + std::to_string(key) + ": the panel has K1-K7"};
+        return {KeyPress::Kind::Refused, 0, message("key_user_range", {std::to_string(key)})};
     }
     return pressKey(param::kUserKeyFunction + key - 1, *hook, "K" + std::to_string(key));
 }
@@ -62,9 +64,10 @@ KeyPress UserKeys::pressUserKey(int key) {
 KeyPress UserKeys::pressExternKey(int key) {
     auto hook = config::externKeyHook(key);
     if (!hook) {
-        return {KeyPress::Kind::Refused, 0, "external key " + std::to_string(key) + ": there are keys 1-6"};
+        return {KeyPress::Kind::Refused, 0, message("key_extern_range", {std::to_string(key)})};
     }
-    return pressKey(param::kExternKeyFunction + key - 1, *hook, "external key " + std::to_string(key));
+    return pressKey(param::kExternKeyFunction + key - 1, *hook,
+                    bilingual("external key " + std::to_string(key), "外部按键" + std::to_string(key)));
 }
 
 bool UserKeys::loadFunctionKey(int key) {

@@ -72,38 +72,37 @@ Frame request(int slave, int function, int address, int bytes, std::span<const s
     return withCrc(std::move(frame));
 }
 
-std::variant<Reply, std::string> readReply(std::span<const std::uint8_t> sent, int bytes,
+std::variant<Reply, Message> readReply(std::span<const std::uint8_t> sent, int bytes,
                                            std::span<const std::uint8_t> answer) {
     if (answer.size() < 5) {
-        return "the answer has " + std::to_string(answer.size()) + " bytes, fewer than any Modbus frame";
+        return message("modbus_answer_short", {std::to_string(answer.size())});
     }
     if (!crcMatches(answer)) {
-        return std::string("the answer's CRC does not match its bytes");
+        return message("modbus_answer_crc");
     }
     if (answer[0] != sent[0]) {
-        return "the answer comes from slave " + std::to_string(answer[0]) + ", not " + std::to_string(sent[0]);
+        return message("modbus_answer_other_slave", {std::to_string(answer[0]), std::to_string(sent[0])});
     }
     const int function = sent[1];
     if (answer[1] == (function | 0x80)) {
         if (answer.size() != 5) {
-            return std::string("an exception answer is 5 bytes");
+            return message("modbus_answer_exception_size");
         }
         return Reply{answer[2], {}};
     }
     if (answer[1] != function) {
-        return "the answer is for function " + std::to_string(answer[1]) + ", not " + std::to_string(function);
+        return message("modbus_answer_other_function", {std::to_string(answer[1]), std::to_string(function)});
     }
     if (isWrite(function)) {
         if (answer.size() != 8 || get16(answer, 2) != get16(sent, 2) || get16(answer, 4) != get16(sent, 4)) {
-            return std::string("the answer to a write does not repeat its address and quantity");
+            return message("modbus_answer_write_echo");
         }
         return Reply{};
     }
     const std::size_t count = isCoilFunction(function) ? static_cast<std::size_t>(bytes)
                                                        : 2 * static_cast<std::size_t>(quantity(function, bytes));
     if (answer[2] != count || answer.size() != 3 + count + 2) {
-        return "the answer carries " + std::to_string(answer[2]) + " bytes, not the " + std::to_string(count) +
-               " asked for";
+        return message("modbus_answer_byte_count", {std::to_string(answer[2]), std::to_string(count)});
     }
     Reply reply;
     reply.data.reserve(static_cast<std::size_t>(bytes));

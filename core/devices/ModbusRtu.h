@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <cstdint>
 #include <span>
 #include <string>
@@ -34,12 +36,12 @@ int quantity(int function, int bytes);
 Frame request(int slave, int function, int address, int bytes, std::span<const std::uint8_t> data);
 
 // What the slave answered to `sent`: its exception code (0 = OK) and, for a read that succeeded,
-// the `bytes` bytes for the variables; or why the answer is not one to `sent`.
+// the `bytes` bytes for the variables; or why the answer is not one to `sent` (by message id).
 struct Reply {
     int exception = 0;
     std::vector<std::uint8_t> data;
 };
-std::variant<Reply, std::string> readReply(std::span<const std::uint8_t> sent, int bytes,
+std::variant<Reply, Message> readReply(std::span<const std::uint8_t> sent, int bytes,
                                            std::span<const std::uint8_t> answer);
 
 // "01 10 00 00 00 02 04 16 0B 2C 21 .. .."

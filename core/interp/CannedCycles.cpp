@@ -87,8 +87,7 @@ int ModalInterpreter::cycleRepeats(const Words& words) const {
         return 1;
     }
     if (count->value < 0 || count->value > kMaxRepeats || count->value != std::floor(count->value)) {
-        invalid(*count,
-                "the repeat count of a canned cycle is a whole number 0-" + std::to_string(kMaxRepeats));
+        invalid(*count, message("word_repeat_count", {wordText(*count), std::to_string(kMaxRepeats)}));
     }
     return static_cast<int>(count->value);
 }

@@ -31,8 +31,8 @@ std::string at(const Vector2d& p) {
     return "X" + mm(p.x()) + " Y" + mm(p.y());
 }
 
-CompensationError error(std::string message) {
-    return CompensationError{std::move(message)};
+CompensationError error(Message words) {
+    return CompensationError{std::move(words)};
 }
 
 // The intersection of an inside corner's offsets, if the tool reaches it without backing up on
@@ -100,7 +100,7 @@ CutterCompensation::Result CutterCompensation::feed(const PathSegment& programme
         return leave(programmed);
     }
     if (side != side_) {
-        return error("cannot switch between G41 and G42 while compensating: program G40 first");
+        return error(message("compensation_switch_side"));
     }
     if (programmed.kind == PathSegment::Kind::Line && (programmed.end - programmed.start).norm() <= kEps) {
         return std::vector<PathSegment>{};
@@ -108,10 +108,10 @@ CutterCompensation::Result CutterCompensation::feed(const PathSegment& programme
     if (programmed.kind == PathSegment::Kind::Arc) {
         const double r = arcRadius(programmed);
         if (r <= kEps) {
-            return error("arc at " + at(programmed.start) + " has no radius");
+            return error(message("compensation_arc_no_radius", {at(programmed.start)}));
         }
         if (offsetArcRadius(programmed, signedRadius(radius)) <= kEps) {
-            return error("cutter radius too large for the arc of radius " + mm(r) + " (gouge)");
+            return error(message("compensation_gouge_arc", {mm(r)}));
         }
     }
     return pending_ ? join(programmed, radius) : resume(programmed, radius);
@@ -120,12 +120,11 @@ CutterCompensation::Result CutterCompensation::feed(const PathSegment& programme
 CutterCompensation::Result CutterCompensation::enter(const PathSegment& programmed, CompensationSide side,
                                                      double radius) {
     if (programmed.kind != PathSegment::Kind::Line) {
-        return error("cutter compensation must start on a straight move (G0/G1), not an arc");
+        return error(message("compensation_start_arc"));
     }
     const double length = (programmed.end - programmed.start).norm();
     if (length <= radius) {
-        return error("cutter compensation entry move of length " + mm(length) +
-                     " is not longer than the cutter radius " + mm(radius));
+        return error(message("compensation_entry_short", {mm(length), mm(radius)}));
     }
     side_ = side;
     pending_ = Pending{programmed, programmed.start, radius, true};
@@ -135,7 +134,7 @@ CutterCompensation::Result CutterCompensation::enter(const PathSegment& programm
 
 CutterCompensation::Result CutterCompensation::leave(const PathSegment& programmed) {
     if (programmed.kind != PathSegment::Kind::Line) {
-        return error("cutter compensation must end (G40) on a straight move, not an arc");
+        return error(message("compensation_end_arc"));
     }
     std::vector<PathSegment> out = flush();
     appendLine(out, tool_, programmed.end);
@@ -163,8 +162,7 @@ CutterCompensation::Result CutterCompensation::join(const PathSegment& programme
     const Pending& prev = *pending_;
     const Vector2d corner = prev.programmed.end;
     if ((programmed.start - corner).norm() > kContinuity) {
-        return error("programmed path is not continuous: the move from " + at(programmed.start) +
-                     " follows one that ended at " + at(corner));
+        return error(message("compensation_not_continuous", {at(programmed.start), at(corner)}));
     }
     const Vector2d nextStart = offsetPoint(programmed, programmed.start, signedRadius(radius));
     std::vector<PathSegment> out;
@@ -191,8 +189,7 @@ CutterCompensation::Result CutterCompensation::join(const PathSegment& programme
             appendPiece(out, in, in.seg.end);
             appendLine(out, in.seg.end, nextStart);
         } else {
-            return error("cutter radius " + mm(radius) + " too large for the inside corner at " + at(corner) +
-                         " (gouge)");
+            return error(message("compensation_gouge_corner", {mm(radius), at(corner)}));
         }
     }
     pending_ = Pending{programmed, toolStart, radius, false};

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <Eigen/Core>
 
 #include <optional>
@@ -50,7 +52,7 @@ struct PathSegment {
 enum class CompensationSide { Off, Left /* G41 */, Right /* G42 */ };
 
 struct CompensationError {
-    std::string message;
+    Message message;
 };
 
 class CutterCompensation {

@@ -67,7 +67,7 @@ void ModalInterpreter::compensatedMove(const machine::Axes& target, const Words&
                                                     : CompensationSide::Off;
     auto result = compensation_.feed(segment, side, compensationRadius());
     if (auto* error = std::get_if<CompensationError>(&result)) {
-        throw MacroError{AlarmCode::InvalidWord, error->message, motionColumn(words)};
+        throw MacroError::of(AlarmCode::InvalidWord, error->message, motionColumn(words));
     }
     emitToolPath(std::get<std::vector<PathSegment>>(result));
     pendingMode_ = state_.group(1);
@@ -114,7 +114,7 @@ void ModalInterpreter::emitToolPath(const std::vector<PathSegment>& segments) {
         spec.centerOffset = center;
         auto arc = machine::makeArc(spec);
         if (auto* error = std::get_if<machine::ArcError>(&arc)) {
-            throw MacroError{AlarmCode::InvalidWord, "compensated arc: " + error->message, 0};
+            throw MacroError::of(AlarmCode::InvalidWord, message("compensated_arc", {bilingual(error->message)}));
         }
         machine_.arc(std::get<machine::Arc>(arc), feedRate(0));
     }

@@ -38,10 +38,6 @@ std::string ModalInterpreter::wordText(const WordValue& w) {
     throw MacroError::of(AlarmCode::InvalidWord, words, w.column);
 }
 
-[[noreturn]] void ModalInterpreter::invalid(const WordValue& w, std::string why) {
-    throw MacroError{AlarmCode::InvalidWord, codeText(w.letter, w.value) + ": " + why, w.column};
-}
-
 namespace {
 
 // Which modal group a G code sets, -1 for non-modal codes handled elsewhere.

@@ -266,7 +266,6 @@ private:
         return state_.group(5) != 95 || dialect_.id == gcode::DialectId::M350 ? state_.feed
                                                                                : feedRate(motionColumn(words));
     }
-    [[noreturn]] static void invalid(const macro::WordValue& w, std::string why);
     [[noreturn]] static void invalid(const macro::WordValue& w, const Message& words);
     // "G5.1", "X-1.5": a word as invalid()'s messages name it (their %1).
     static std::string wordText(const macro::WordValue& w);

@@ -165,7 +165,7 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
     }
     auto arc = machine::makeArc(spec);
     if (auto* error = std::get_if<machine::ArcError>(&arc)) {
-        throw MacroError{AlarmCode::InvalidWord, error->message, motionColumn(words)};
+        throw MacroError::of(AlarmCode::InvalidWord, error->message, motionColumn(words));
     }
     machine_.arc(std::get<machine::Arc>(arc), motionFeedRate(words));
 }
@@ -241,9 +241,8 @@ void ModalInterpreter::probeMove(const Words& words) {
         level = setter->activeLevel;
     }
     if (port < 1 || port > machine::kInputCount) {
-        invalid(g31, dialect_.id == gcode::DialectId::M350
-                         ? "G31 needs P<input 1-24> and L<level>"
-                         : "no skip signal: the fixed setter input (params 575-577) is not set");
+        invalid(g31, message(dialect_.id == gcode::DialectId::M350 ? "word_g31_needs_port" : "word_g31_no_skip",
+                             {wordText(g31)}));
     }
     if (state_.feed <= 0) {
         invalid(g31, message("word_g31_no_feed", {wordText(g31)}));

@@ -39,7 +39,7 @@ void ModalInterpreter::reloadToolTable(const WordValue& g10) {
     }
     std::vector<std::string> skipped;
     if (auto why = tools_.reload(skipped)) {
-        invalid(g10, "G10 L0: " + *why);
+        invalid(g10, message("word_g10_l0_failed", {wordText(g10), bilingual(*why)}));
     }
     reloadIssues_ = std::move(skipped);
 }
@@ -115,7 +115,7 @@ void ModalInterpreter::setOffsetRegister(const Words& words, int kind) {
     }
     const double value = (state_.incremental() ? tools_.registerValue(which, number) : 0.0) + r.value;
     if (auto why = tools_.setRegister(which, number, value)) {
-        invalid(l, *why);
+        invalid(l, message("word_refused", {wordText(l), bilingual(*why)}));
     }
 }
 
@@ -177,7 +177,7 @@ void ModalInterpreter::setToolTable(const Words& words, const WordValue& g10, in
         invalid(g10, message("word_g10_no_effect", {wordText(g10), std::to_string(kind)}));
     }
     if (auto why = tools_.put(entry)) {
-        invalid(g10, *why);
+        invalid(g10, message("word_refused", {wordText(g10), bilingual(*why)}));
     }
 }
 

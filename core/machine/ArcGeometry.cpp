@@ -44,13 +44,13 @@ double sweepBetween(double from, double to, bool clockwise) {
     return clockwise ? -d : d;
 }
 
-ArcError fail(std::string message) { return ArcError{std::move(message)}; }
+ArcError fail(Message words) { return ArcError{std::move(words)}; }
 
 } // namespace
 
 std::variant<Arc, ArcError> makeArc(const ArcSpec& spec) {
-    if (!spec.start.allFinite() || !spec.end.allFinite()) return fail("arc coordinates are not finite");
-    if (spec.turns < 0) return fail("arc turn count must not be negative");
+    if (!spec.start.allFinite() || !spec.end.allFinite()) return fail(message("arc_not_finite"));
+    if (spec.turns < 0) return fail(message("arc_turns_negative"));
 
     const auto [u, v, w] = axesOf(spec.plane);
     const Eigen::Vector2d s(spec.start[u], spec.start[v]);
@@ -61,12 +61,11 @@ std::variant<Arc, ArcError> makeArc(const ArcSpec& spec) {
     Eigen::Vector2d c;
     if (spec.radius) {
         const double r = *spec.radius;
-        if (!std::isfinite(r) || std::abs(r) < kMinRadius) return fail("R must not be zero");
-        if (closed) return fail("R cannot describe a full circle: use I/J/K");
+        if (!std::isfinite(r) || std::abs(r) < kMinRadius) return fail(message("arc_r_zero"));
+        if (closed) return fail(message("arc_r_full_circle"));
         const double half = chord / 2.0;
         if (half - std::abs(r) > kChordTolerance)
-            return fail("R " + fixed3(r) + " is smaller than half the distance between start and end ("
-                        + fixed3(half) + ")");
+            return fail(message("arc_r_too_small", {fixed3(r), fixed3(half)}));
         const double h = std::sqrt(std::max(0.0, r * r - half * half));
         const Eigen::Vector2d d = (e - s) / chord;
         const Eigen::Vector2d left(-d.y(), d.x());
@@ -75,17 +74,16 @@ std::variant<Arc, ArcError> makeArc(const ArcSpec& spec) {
         c = (s + e) / 2.0 + (centerLeft ? h : -h) * left;
     } else if (spec.centerOffset) {
         const Eigen::Vector3d& ijk = *spec.centerOffset;
-        if (!ijk.allFinite()) return fail("I/J/K are not finite");
+        if (!ijk.allFinite()) return fail(message("arc_ijk_not_finite"));
         c = s + Eigen::Vector2d(ijk[u], ijk[v]);
         const double r0 = (s - c).norm();
         const double r1 = (e - c).norm();
-        if (std::min(r0, r1) < kMinRadius) return fail("arc radius is zero: the center is on the start or end point");
+        if (std::min(r0, r1) < kMinRadius) return fail(message("arc_radius_zero"));
         const double err = std::abs(r0 - r1);
         if (err > kRadiusAbsTolerance || err > kRadiusRelTolerance * std::max(r0, r1))
-            return fail("arc end point is not on the circle: radius at start " + fixed3(r0) + ", at end "
-                        + fixed3(r1));
+            return fail(message("arc_end_off_circle", {fixed3(r0), fixed3(r1)}));
     } else {
-        return fail("G2/G3 needs I/J/K or R");
+        return fail(message("arc_needs_center"));
     }
 
     const double r0 = (s - c).norm();

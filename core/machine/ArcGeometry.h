@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/machine/MachineTypes.h"
 
 #include <Eigen/Core>
@@ -42,8 +43,9 @@ struct Arc {
     machine::Axes pointAt(double s) const;
 };
 
+// Why a G2/G3 block describes no arc, by message id (the interpreter raises it on the block).
 struct ArcError {
-    std::string message;
+    Message message;
 };
 
 std::variant<Arc, ArcError> makeArc(const ArcSpec& spec);

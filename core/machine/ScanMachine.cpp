@@ -31,7 +31,7 @@ ProbeResult ScanMachine::probe(const Axes& target, double feed, int port, int le
     if (!scanning_) {
         return machine_.probe(target, feed, port, level);
     }
-    refusal_ = "G31 probes the work";
+    refusal_ = message("scan_g31");
     position_ = target;
     ProbeResult result;
     result.position = target;
@@ -56,7 +56,7 @@ void ScanMachine::auxiliary(int code) {
         machine_.auxiliary(code);
         return;
     }
-    refusal_ = "M" + std::to_string(code) + " goes to the machine's PMC (a device)";
+    refusal_ = message("scan_pmc_m", {std::to_string(code)});
 }
 
 void ScanMachine::spindle(SpindleState state, double rpm) {

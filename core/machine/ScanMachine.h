@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/machine/MachineInterface.h"
 
 #include <array>
@@ -21,9 +22,9 @@ public:
     void beginScan(const Axes& from);
     void endScan() { scanning_ = false; }
     bool scanning() const { return scanning_; }
-    const std::optional<std::string>& refusal() const { return refusal_; }
+    const std::optional<Message>& refusal() const { return refusal_; }
     // Something outside the machine the scanned blocks reached (a Modbus slave) that a scan cannot follow.
-    void refuse(std::string why) { refusal_ = std::move(why); }
+    void refuse(Message why) { refusal_ = std::move(why); }
     // The output levels the scanned blocks set (nullopt: not written).
     std::optional<int> scannedOutput(int port) const { return outputs_[static_cast<std::size_t>(port - 1)]; }
 
@@ -49,7 +50,7 @@ public:
 private:
     MachineInterface& machine_;
     bool scanning_ = false;
-    std::optional<std::string> refusal_;
+    std::optional<Message> refusal_;
     Axes position_ = Axes::Zero();
     SpindleState spindle_ = SpindleState::Stop;
     double rpm_ = 0.0;

@@ -134,11 +134,8 @@ void Evaluator::writeVariable(int number, Value value, std::string_view text, st
         formatted = std::string(text);
     }
     if (auto refused = machine_.writeSystem(info, number, value.asNumber(), formatted)) {
-        if (info.kind == VariableKind::Alarm && *refused == macroAlarmWords(value.asNumber(), formatted).english()) {
-            throw MacroError::of(AlarmCode::MacroAlarm, macroAlarmWords(value.asNumber(), formatted), column);
-        }
-        throw MacroError{info.kind == VariableKind::Alarm ? AlarmCode::MacroAlarm : AlarmCode::InvalidArgument,
-                         *refused, column};
+        const AlarmCode code = info.kind == VariableKind::Alarm ? AlarmCode::MacroAlarm : AlarmCode::InvalidArgument;
+        throw MacroError::of(code, *refused, column);
     }
 }
 

@@ -163,7 +163,9 @@ void Executor::executeBlock(const gcode::Block& block, std::size_t frameIndex) {
     }
     if (block.suspect) {
         const gcode::Diagnostic suspect = program_.suspectMessage(current_);
-        throw MacroError{AlarmCode::SuspectLine, suspect.message, 0, suspect.messageId, suspect.messageArguments};
+        MacroError error = MacroError::of(AlarmCode::SuspectLine, Message{suspect.messageId, suspect.messageArguments});
+        error.message = suspect.message; // as the parser said it: a long echo of the line is clipped
+        throw error;
     }
     switch (block.control) {
     case Control::None: executeOrdinary(block, frameIndex); return;

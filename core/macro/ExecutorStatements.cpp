@@ -14,9 +14,9 @@ namespace {
 
 constexpr char kEndOfBlock = '\n'; // FANUC sends LF as the end of each record (ISO)
 
-void check(const std::optional<std::string>& refusal, std::uint32_t column) {
+void check(const std::optional<Message>& refusal, std::uint32_t column) {
     if (refusal) {
-        throw MacroError{AlarmCode::DeviceError, *refusal, column};
+        throw MacroError::of(AlarmCode::DeviceError, *refusal, column);
     }
 }
 

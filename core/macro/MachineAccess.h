@@ -24,8 +24,8 @@ public:
 
     // `text` is the comment written after the value (`#1503 = 1(text)`), already formatted.
     // Returns a message when the machine refuses the write; the executor raises it as an alarm.
-    virtual std::optional<std::string> writeSystem(const VariableInfo& info, int number, double value,
-                                                   std::string_view text) = 0;
+    virtual std::optional<Message> writeSystem(const VariableInfo& info, int number, double value,
+                                               std::string_view text) = 0;
 
     // The dialect's built-in homing program (M350 `M98 P501 X<axis>`) when no library defines it:
     // homes `axis` (0 X .. 4 B) at once in virtual time. Returns the alarm when it cannot.

@@ -19,10 +19,10 @@ class Peripherals {
 public:
     virtual ~Peripherals() = default;
 
-    virtual std::optional<std::string> openOutput() = 0;  // POPEN
-    virtual std::optional<std::string> closeOutput() = 0; // PCLOS
+    virtual std::optional<Message> openOutput() = 0;  // POPEN
+    virtual std::optional<Message> closeOutput() = 0; // PCLOS
     // One DPRNT or BPRNT record as the device receives it, its end-of-block code included.
-    virtual std::optional<std::string> output(std::string_view statement, std::string_view record) = 0;
+    virtual std::optional<Message> output(std::string_view statement, std::string_view record) = 0;
 
     // One MSETDATA or MGETDATA transfer: `bytes` bytes from or to the slave's registers (or coils)
     // from `address`, by Modbus `function`. A write carries the variables' bytes in `data`.

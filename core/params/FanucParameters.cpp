@@ -46,24 +46,25 @@ bool isFanucParameterNumber(int number) {
     return number >= kFirstFanucParameter && number <= kLastFanucParameter;
 }
 
-std::optional<std::string> refusedFanucParameter(int number, double value) {
+std::optional<Message> refusedFanucParameter(int number, double value) {
     if (!std::isfinite(value)) {
-        return "parameter " + std::to_string(number) + " must be a finite number";
+        return message("fanuc_param_not_finite", {std::to_string(number)});
     }
     if (const Simulated* p = find(number); p && (value < p->low || value > p->high || (p->whole && value != std::floor(value)))) {
-        char text[128];
-        std::snprintf(text, sizeof text, "parameter %d must be %sfrom %.10g to %.10g", number,
-                      p->whole ? "a whole number " : "", p->low, p->high);
-        return std::string(text);
+        char low[32];
+        char high[32];
+        std::snprintf(low, sizeof low, "%.10g", p->low);
+        std::snprintf(high, sizeof high, "%.10g", p->high);
+        return message(p->whole ? "fanuc_param_whole_range" : "fanuc_param_range", {std::to_string(number), low, high});
     }
     return std::nullopt;
 }
 
-std::optional<std::string> unreadFanucParameter(int number) {
+std::optional<Message> unreadFanucParameter(int number) {
     if (find(number)) {
         return std::nullopt;
     }
-    return "FANUC parameter " + std::to_string(number) + " is not simulated (kept as written)";
+    return message("fanuc_param_not_simulated", {std::to_string(number)});
 }
 
 double fanucParameter(const std::map<int, double>& values, int number) {

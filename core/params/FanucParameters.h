@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <map>
 #include <optional>
 #include <string>
@@ -26,10 +28,10 @@ inline constexpr int kFirstAddressCall = 6090;         // 6090-6091: address (AS
 bool isFanucParameterNumber(int number);
 
 // Why `value` cannot be parameter `number` (not finite, outside the simulated parameter's range).
-std::optional<std::string> refusedFanucParameter(int number, double value);
+std::optional<Message> refusedFanucParameter(int number, double value);
 
 // A warning for a number the simulator does not read, to be shown beside the file or option.
-std::optional<std::string> unreadFanucParameter(int number);
+std::optional<Message> unreadFanucParameter(int number);
 
 // The parameter's value, or the FANUC default when the machine does not set it.
 double fanucParameter(const std::map<int, double>& values, int number);

@@ -8,10 +8,9 @@
 
 namespace m350::params {
 
-std::optional<std::string> refusedParameterValue(int number, double value) {
+std::optional<Message> refusedParameterValue(int number, double value) {
     if (number == param::kMagazineCapacity && !(value >= 0 && value <= kMostPockets && value == std::floor(value))) {
-        return "parameter 801 (magazine capacity) must be a whole number from 0 to " + std::to_string(kMostPockets) +
-               " here (the M350 holds up to 20)";
+        return message("param_capacity_range", {std::to_string(kMostPockets)});
     }
     return std::nullopt;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/params/ParameterTable.h"
 
 #include <optional>
@@ -14,7 +15,7 @@ inline constexpr int kMostPockets = 999;
 // Values refused outright, wherever they come from (params.toml, --param, the panel), because they
 // size what the simulator allocates or loops over: a magazine capacity of 1e9 allocated for
 // minutes. Other out-of-range values are only warned about (see ParameterCatalogue::validate).
-std::optional<std::string> refusedParameterValue(int number, double value);
+std::optional<Message> refusedParameterValue(int number, double value);
 
 // Parameter 801 as a pocket count: what the tables of pockets are built from, whatever was set.
 int magazineCapacity(const ParameterTable& parameters);

@@ -104,7 +104,7 @@ std::optional<ToolEntry> ToolData::find(int tool) const {
     return found ? std::optional<ToolEntry>(*found) : std::nullopt;
 }
 
-std::optional<std::string> ToolData::put(const ToolEntry& entry) {
+std::optional<Message> ToolData::put(const ToolEntry& entry) {
     if (auto why = rows_.put(entry)) {
         return why;
     }
@@ -152,15 +152,14 @@ std::optional<double> ToolData::diameter(int tool) const {
     return row ? row->diameter : std::nullopt;
 }
 
-std::optional<std::string> ToolData::setZ(int tool, double value) {
+std::optional<Message> ToolData::setZ(int tool, double value) {
     ToolEntry entry;
     if (const ToolEntry* row = rows_.find(tool)) {
         entry = *row;
     } else {
         std::optional<int> pocket = rows_.freePocket(tool);
         if (!pocket) {
-            return "the tool table is full (" + std::to_string(ToolTable::kMaxTools) + " tools): no row for tool " +
-                   std::to_string(tool);
+            return message("tool_table_full_tool", {std::to_string(ToolTable::kMaxTools), std::to_string(tool)});
         }
         entry.tool = tool;
         entry.pocket = *pocket;
@@ -212,7 +211,7 @@ double ToolData::registerValue(OffsetRegister r, int number) const {
     }
 }
 
-std::optional<std::string> ToolData::setRegister(OffsetRegister r, int number, double value) {
+std::optional<Message> ToolData::setRegister(OffsetRegister r, int number, double value) {
     const ToolEntry* row = rows_.find(number);
     if (!row && value == 0.0) {
         return std::nullopt; // an offset that is 0 needs no row
@@ -226,8 +225,7 @@ std::optional<std::string> ToolData::setRegister(OffsetRegister r, int number, d
     } else {
         std::optional<int> pocket = rows_.freePocket(number);
         if (!pocket) {
-            return "the tool table is full (" + std::to_string(ToolTable::kMaxTools) + " tools): no row for offset " +
-                   std::to_string(number);
+            return message("tool_table_full_offset", {std::to_string(ToolTable::kMaxTools), std::to_string(number)});
         }
         entry.tool = number;
         entry.pocket = *pocket;
@@ -253,14 +251,14 @@ double ToolData::offsetVariable(int index) const {
     return registerValue(r, number);
 }
 
-std::optional<std::string> ToolData::setOffsetVariable(int index, double value) {
+std::optional<Message> ToolData::setOffsetVariable(int index, double value) {
     auto [r, number] = variableRegister(index);
     return setRegister(r, number, value);
 }
 
-std::optional<std::string> ToolData::reload(std::vector<std::string>& skipped) {
+std::optional<Message> ToolData::reload(std::vector<std::string>& skipped) {
     auto read = readToolTableFile(sourceFile_);
-    if (auto* error = std::get_if<std::string>(&read)) {
+    if (auto* error = std::get_if<Message>(&read)) {
         return *error;
     }
     ParsedToolTable& parsed = std::get<ParsedToolTable>(read);

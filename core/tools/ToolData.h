@@ -57,13 +57,13 @@ public:
     ToolTable table() const;
     std::optional<ToolEntry> find(int tool) const;
     // Adds or replaces a row (see ToolTable::put); the reason when refused, nothing changed then.
-    std::optional<std::string> put(const ToolEntry& entry);
+    std::optional<Message> put(const ToolEntry& entry);
     bool remove(int tool);
     // The whole table at once (an import, or putting back a saved state): M350 tools it lacks get Z 0.
     void replace(const ToolTable& table);
     // A tool's Z (0 when it has none); setZ makes the row (pocket = tool when free) when missing.
     double z(int tool) const;
-    std::optional<std::string> setZ(int tool, double z);
+    std::optional<Message> setZ(int tool, double z);
     // A tool's diameter (the row's D), when its row has one.
     std::optional<double> diameter(int tool) const;
 
@@ -77,10 +77,10 @@ public:
     double radiusOffset(int number) const;
     // One register of offset n (memory A: LengthGeometry is its one value).
     double registerValue(OffsetRegister r, int number) const;
-    std::optional<std::string> setRegister(OffsetRegister r, int number, double value);
+    std::optional<Message> setRegister(OffsetRegister r, int number, double value);
     // #2001-#2400 (index 1-400): memory A offset n; memory C H wear 1-200, then H geometry 1-200.
     double offsetVariable(int index) const;
-    std::optional<std::string> setOffsetVariable(int index, double value);
+    std::optional<Message> setOffsetVariable(int index, double value);
 
     // LinuxCNC's tool table codes work on a machine that keeps a tool.tbl (FANUC dialect): G10 L0
     // reads the file again. What the run itself changed stays as it is (LinuxCNC writes each G10 L1
@@ -88,7 +88,7 @@ public:
     // file cannot be read; its skipped lines in `skipped`.
     void setSourceFile(std::string path) { sourceFile_ = std::move(path); }
     bool keepsToolTable() const { return !sourceFile_.empty(); }
-    std::optional<std::string> reload(std::vector<std::string>& skipped);
+    std::optional<Message> reload(std::vector<std::string>& skipped);
     // LinuxCNC's random tool changer ([EMCIO]RANDOM_TOOLCHANGER = 1) at M6: tool `to` leaves its
     // pocket for the spindle (pocket 0) and tool `from` goes into that pocket. Tools not in the
     // table keep no pocket.

@@ -30,9 +30,9 @@ int wholeValue(const WordValue& w) {
     return roundToInt(w.value);
 }
 
-void check(const std::optional<std::string>& problem, std::uint32_t column) {
+void check(const std::optional<Message>& problem, std::uint32_t column) {
     if (problem) {
-        throw MacroError{AlarmCode::InvalidWord, *problem, column};
+        throw MacroError::of(AlarmCode::InvalidWord, *problem, column);
     }
 }
 
@@ -99,7 +99,7 @@ void check(const std::optional<std::string>& problem, std::uint32_t column) {
             } else {
                 ToolLifeManager::Selection chosen = manager.selectGroup(t);
                 if (chosen.refusal) {
-                    throw MacroError{AlarmCode::InvalidWord, *chosen.refusal, w.column};
+                    throw MacroError::of(AlarmCode::InvalidWord, *chosen.refusal, w.column);
                 }
                 w.value = chosen.tool;
             }
@@ -111,8 +111,8 @@ void check(const std::optional<std::string>& problem, std::uint32_t column) {
     for (WordValue& w : words) {
         if ((w.letter == 'H' || w.letter == 'D') && isCode(w, w.letter, 99)) {
             auto offset = manager.offsetOfToolInUse(w.letter);
-            if (auto* why = std::get_if<std::string>(&offset)) {
-                throw MacroError{AlarmCode::InvalidWord, *why, w.column};
+            if (auto* why = std::get_if<Message>(&offset)) {
+                throw MacroError::of(AlarmCode::InvalidWord, *why, w.column);
             }
             w.value = std::get<int>(offset);
         }

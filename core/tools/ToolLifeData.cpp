@@ -53,17 +53,19 @@ bool LifeData::removeGroup(int number) {
     return true;
 }
 
-std::optional<std::string> LifeData::capacityProblem(const LifeGroup& g) const {
+std::optional<Message> LifeData::capacityProblem(const LifeGroup& g) const {
     LifeCapacity capacity = lifeCapacity(gs);
-    std::string table = " (GS1/GS2 = " + std::to_string(gs & 1) + "/" + std::to_string(gs >> 1) + ": " +
-                        std::to_string(capacity.groups) + " groups of " + std::to_string(capacity.toolsPerGroup) +
-                        " tools)";
+    const std::vector<std::string> table{std::to_string(gs & 1), std::to_string(gs >> 1), std::to_string(capacity.groups),
+                                         std::to_string(capacity.toolsPerGroup)};
     if (g.number < 1 || g.number > capacity.groups) {
-        return "group " + std::to_string(g.number) + " is beyond the groups the memory holds" + table;
+        std::vector<std::string> arguments{std::to_string(g.number)};
+        arguments.insert(arguments.end(), table.begin(), table.end());
+        return message("tool_life_capacity_groups", std::move(arguments));
     }
     if (static_cast<int>(g.tools.size()) > capacity.toolsPerGroup) {
-        return "group " + std::to_string(g.number) + " has " + std::to_string(g.tools.size()) +
-               " tools, more than a group holds" + table;
+        std::vector<std::string> arguments{std::to_string(g.number), std::to_string(g.tools.size())};
+        arguments.insert(arguments.end(), table.begin(), table.end());
+        return message("tool_life_capacity_tools", std::move(arguments));
     }
     return std::nullopt;
 }

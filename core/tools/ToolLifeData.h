@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -56,7 +58,7 @@ struct LifeData {
     void putGroup(LifeGroup group);
     bool removeGroup(int number);
     // Why the group does not fit the capacity of `gs`, if it does not.
-    std::optional<std::string> capacityProblem(const LifeGroup& group) const;
+    std::optional<Message> capacityProblem(const LifeGroup& group) const;
     // Takes the settings from a FANUC control's parameters: 6800 (#0 GS1, #1 GS2, #2 LTM), 6801
     // (#6 EXT), 6810 (the ignore number); a parameter the machine does not set has its default.
     void applyFanucParameters(const std::map<int, double>& parameters);

@@ -5,18 +5,16 @@
 
 namespace m350::tools {
 
-std::optional<std::string> ToolLifeManager::beginEntry(int mode) {
+std::optional<Message> ToolLifeManager::beginEntry(int mode) {
     if (entry_) {
-        return "G10 L3: tool life data entry is already open (end it with G11)";
+        return message("tool_life_entry_open");
     }
     if (mode < 0 || mode > 2) {
-        return "G10 L3 P" + std::to_string(mode) + ": P1 adds or changes groups, P2 deletes them, no P enters "
-                                                  "all data anew";
+        return message("tool_life_entry_mode", {std::to_string(mode)});
     }
     if (mode != 0 && !data_.extendedEntry) {
-        return "G10 L3 P" + std::to_string(mode) + " (" + (mode == 1 ? "add or change" : "delete") +
-               " groups) needs the extended tool life management: parameter 6801 #6 EXT = 1 (6801 = 64 in "
-               "params.toml); without it G10 L3 enters all data anew";
+        return message("tool_life_entry_extended",
+                       {std::to_string(mode), mode == 1 ? bilingual("add or change", "添加或修改") : bilingual("delete", "删除")});
     }
     Entry entry;
     entry.mode = mode;
@@ -27,35 +25,34 @@ std::optional<std::string> ToolLifeManager::beginEntry(int mode) {
     return std::nullopt;
 }
 
-std::optional<std::string> ToolLifeManager::entryLine(const EntryLine& line) {
+std::optional<Message> ToolLifeManager::entryLine(const EntryLine& line) {
     Entry& e = *entry_;
     const LifeCapacity capacity = lifeCapacity(e.staged.gs);
     if (line.p) {
         if (line.t || line.h || line.d) {
-            return "G10 L3 data: a group (P L Q) and a tool (T H D) go in separate blocks";
+            return message("tool_life_entry_group_and_tool");
         }
         if (*line.p < 1 || *line.p > capacity.groups) {
-            return "G10 L3 data: group P" + std::to_string(*line.p) + " is beyond the " +
-                   std::to_string(capacity.groups) + " groups the memory holds (GS1/GS2)";
+            return message("tool_life_entry_group_beyond", {std::to_string(*line.p), std::to_string(capacity.groups)});
         }
         if (e.mode == 2) {
             if (line.l || line.q) {
-                return "G10 L3 P2 (delete): give only the group numbers P";
+                return message("tool_life_delete_only_p");
             }
             if (!data_.group(*line.p)) {
-                return "G10 L3 P2: there is no group " + std::to_string(*line.p) + " to delete";
+                return message("tool_life_delete_missing", {std::to_string(*line.p)});
             }
             e.deleted.insert(*line.p);
             return std::nullopt;
         }
         if (!line.l || *line.l < 1) {
-            return "G10 L3 data: group P" + std::to_string(*line.p) + " needs its life L (1 or more)";
+            return message("tool_life_entry_needs_life", {std::to_string(*line.p)});
         }
         if (line.q && *line.q != 1 && *line.q != 2) {
-            return "G10 L3 data: Q1 counts uses, Q2 counts minutes";
+            return message("tool_life_entry_q");
         }
         if (e.staged.group(*line.p)) {
-            return "G10 L3 data: group P" + std::to_string(*line.p) + " is entered twice";
+            return message("tool_life_entry_twice", {std::to_string(*line.p)});
         }
         LifeGroup group;
         group.number = *line.p;
@@ -68,15 +65,15 @@ std::optional<std::string> ToolLifeManager::entryLine(const EntryLine& line) {
     if (line.t) {
         LifeGroup* group = e.staged.group(e.group);
         if (!group || e.mode == 2) {
-            return "G10 L3 data: a tool T needs its group (P_ L_) in a block before it";
+            return message("tool_life_entry_tool_first");
         }
         if (*line.t < 1 || *line.t > 9999 || line.h.value_or(0) < 0 || line.d.value_or(0) < 0 ||
             line.h.value_or(0) > 999 || line.d.value_or(0) > 999) {
-            return "G10 L3 data: T takes 1-9999, H and D 0-999";
+            return message("tool_life_entry_ranges");
         }
         if (static_cast<int>(group->tools.size()) >= capacity.toolsPerGroup) {
-            return "G10 L3 data: group " + std::to_string(group->number) + " holds at most " +
-                   std::to_string(capacity.toolsPerGroup) + " tools (GS1/GS2)";
+            return message("tool_life_entry_group_full",
+                           {std::to_string(group->number), std::to_string(capacity.toolsPerGroup)});
         }
         LifeTool tool;
         tool.tool = *line.t;
@@ -89,18 +86,18 @@ std::optional<std::string> ToolLifeManager::entryLine(const EntryLine& line) {
         group->tools.push_back(tool);
         return std::nullopt;
     }
-    return "G10 L3 data: a block is a group (P L [Q]) or one of its tools (T [H] [D]); end with G11";
+    return message("tool_life_entry_block");
 }
 
-std::optional<std::string> ToolLifeManager::endEntry() {
+std::optional<Message> ToolLifeManager::endEntry() {
     if (!entry_) {
-        return "G11 without G10 L3";
+        return message("tool_life_g11_no_entry");
     }
     Entry e = std::move(*entry_);
     entry_.reset();
     for (const LifeGroup& g : e.staged.groups) {
         if (g.tools.empty()) {
-            return "G10 L3 data: group " + std::to_string(g.number) + " has no tools";
+            return message("tool_life_entry_no_tools", {std::to_string(g.number)});
         }
     }
     if (e.mode == 0) {

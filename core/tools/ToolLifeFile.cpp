@@ -192,9 +192,12 @@ public:
     ParsedToolLife finish() {
         std::vector<int> refused;
         for (const LifeGroup& g : out_.data.groups) {
-            std::optional<std::string> problem = g.tools.empty()
-                                                     ? std::optional("group " + std::to_string(g.number) + " has no tools")
-                                                     : out_.data.capacityProblem(g);
+            std::optional<std::string> problem;
+            if (g.tools.empty()) {
+                problem = "group " + std::to_string(g.number) + " has no tools";
+            } else if (auto capacity = out_.data.capacityProblem(g)) {
+                problem = capacity->english();
+            }
             if (problem) {
                 out_.issues.push_back({file_, groupFirstLine_[g.number], 1, *problem});
                 refused.push_back(g.number);

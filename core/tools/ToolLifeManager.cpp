@@ -50,9 +50,8 @@ ToolLifeManager::Selection ToolLifeManager::selectGroup(int t) {
     const int number = t - data_.ignoreNumber;
     const LifeGroup* group = data_.group(number);
     if (!group) {
-        return {0, "T" + std::to_string(t) + ": tool life group " + std::to_string(number) + " is not entered (T" +
-                       std::to_string(data_.ignoreNumber) + "+n selects group n; enter groups with G10 L3)",
-                };
+        return {0, message("tool_life_group_missing",
+                           {std::to_string(t), std::to_string(number), std::to_string(data_.ignoreNumber)})};
     }
     ++revision_;
     if (auto counted = countedTools_.find(number); counted != countedTools_.end() && group->kind == LifeKind::Count) {
@@ -77,8 +76,7 @@ ToolLifeManager::Selection ToolLifeManager::selectGroup(int t) {
         list += (list.empty() ? "" : ", ") + usedText(*group, tool);
     }
     notice_ = message(group->kind == LifeKind::Count ? "tool_life_expired_count" : "tool_life_expired_time",
-                      {std::to_string(number), list, std::to_string(last.tool)})
-                  .english();
+                      {std::to_string(number), list, std::to_string(last.tool)});
     return {last.tool, std::nullopt};
 }
 
@@ -164,10 +162,10 @@ void ToolLifeManager::cutShortAt(double t) {
     }
 }
 
-std::optional<std::string> ToolLifeManager::resetGroup(int number) {
+std::optional<Message> ToolLifeManager::resetGroup(int number) {
     LifeGroup* group = data_.group(number);
     if (!group) {
-        return "tool life group " + std::to_string(number) + " is not entered";
+        return message("tool_life_reset_missing", {std::to_string(number)});
     }
     for (LifeTool& tool : group->tools) {
         tool.used = 0;
@@ -182,11 +180,10 @@ std::optional<std::string> ToolLifeManager::resetGroup(int number) {
     return std::nullopt;
 }
 
-std::variant<int, std::string> ToolLifeManager::offsetOfToolInUse(char letter) const {
+std::variant<int, Message> ToolLifeManager::offsetOfToolInUse(char letter) const {
     const LifeTool* tool = active_ ? findTool(*active_) : nullptr;
     if (!tool) {
-        return std::string(1, letter) + "99: no tool of a tool life group is in use (select a group with T" +
-               std::to_string(data_.ignoreNumber + 1) + ".. and change to it first)";
+        return message("tool_life_offset_none", {std::string(1, letter), std::to_string(data_.ignoreNumber + 1)});
     }
     return letter == 'H' ? tool->h : tool->d;
 }

@@ -47,7 +47,7 @@ public:
 
     // The operator's tool life reset (counter clear) of one group: every tool's used life back to
     // 0, the tool in use counting on from there. The reason when there is no such group.
-    std::optional<std::string> resetGroup(int number);
+    std::optional<Message> resetGroup(int number);
 
     // From reset into automatic operation: count groups count again.
     void startRun();
@@ -57,10 +57,10 @@ public:
     // The tool a group command selects; it waits for the tool change. An ordinary T selects no group.
     struct Selection {
         int tool = 0;
-        std::optional<std::string> refusal; // no such group
+        std::optional<Message> refusal; // no such group
     };
     // What the last selection has to tell the operator (every tool of its group expired), once.
-    std::optional<std::string> takeNotice() { return std::exchange(notice_, std::nullopt); }
+    std::optional<Message> takeNotice() { return std::exchange(notice_, std::nullopt); }
     Selection selectGroup(int t);
     void selectOrdinaryTool() {
         selected_.reset();
@@ -90,16 +90,16 @@ public:
     std::optional<InUse> inUse() const { return active_; }
     std::optional<InUse> selected() const { return selected_; }
     // H99 / D99: the offset number entered for the tool in use.
-    std::variant<int, std::string> offsetOfToolInUse(char letter) const;
+    std::variant<int, Message> offsetOfToolInUse(char letter) const;
 
     // G10 L3 data entry (ToolLifeEntry.cpp). mode: 0 replace everything, 1 add/change, 2 delete.
     bool entering() const { return entry_.has_value(); }
-    std::optional<std::string> beginEntry(int mode);
+    std::optional<Message> beginEntry(int mode);
     struct EntryLine {
         std::optional<int> p, l, q, t, h, d;
     };
-    std::optional<std::string> entryLine(const EntryLine& line);
-    std::optional<std::string> endEntry(); // G11
+    std::optional<Message> entryLine(const EntryLine& line);
+    std::optional<Message> endEntry(); // G11
 
 private:
     const LifeTool* findTool(const InUse& at) const;
@@ -117,7 +117,7 @@ private:
     std::optional<InUse> selected_;
     std::optional<InUse> active_;
     bool newTool_ = false;
-    std::optional<std::string> notice_;
+    std::optional<Message> notice_;
     // the use of the tool in use for a minutes group
     double useSeconds_ = 0.0;
     int usedBefore_ = 0;

@@ -24,34 +24,34 @@ std::optional<ToolType> toolTypeFromKey(std::string_view key) {
     return static_cast<ToolType>(found - kTypeKeys.begin());
 }
 
-std::optional<std::string> invalidEntry(const ToolEntry& entry) {
-    const std::string tool = "tool " + std::to_string(entry.tool);
+std::optional<Message> invalidEntry(const ToolEntry& entry) {
+    const std::string tool = std::to_string(entry.tool);
     if (entry.tool < 1) {
-        return "tool numbers start at 1 (T0 is the empty spindle)";
+        return message("tool_table_tool_zero");
     }
     if (entry.pocket < 0 || entry.pocket > ToolTable::kMaxPocket) {
-        return tool + ": pocket " + std::to_string(entry.pocket) + " is beyond 0-1000";
+        return message("tool_table_pocket_range", {tool, std::to_string(entry.pocket)});
     }
     for (std::size_t axis = 0; axis < entry.offsets.size(); ++axis) {
         if (!finite(entry.offsets[axis])) {
-            return tool + ": the " + std::string(1, kOffsetLetters[axis]) + " offset is not a finite number";
+            return message("tool_table_offset_not_finite", {tool, std::string(1, kOffsetLetters[axis])});
         }
     }
     if (!finite(entry.diameter) || !finite(entry.frontAngle) || !finite(entry.backAngle) || !finite(entry.lengthWear) ||
         !finite(entry.radiusWear)) {
-        return tool + ": D, I, J and the wear must be finite numbers";
+        return message("tool_table_not_finite", {tool});
     }
     if (entry.orientation && (*entry.orientation < 0 || *entry.orientation > 9)) {
-        return tool + ": orientation Q runs from 0 to 9";
+        return message("tool_table_orientation", {tool});
     }
     if (entry.maxRpm && !(std::isfinite(*entry.maxRpm) && *entry.maxRpm > 0.0)) {
-        return tool + ": the maximum rpm must be a positive number";
+        return message("tool_table_rpm", {tool});
     }
     if (entry.teeth && *entry.teeth < 1) {
-        return tool + ": a tool has at least 1 tooth";
+        return message("tool_table_teeth", {tool});
     }
     if (entry.comment.find_first_of("\r\n") != std::string::npos) {
-        return tool + ": a comment is one line";
+        return message("tool_table_comment_line", {tool});
     }
     return std::nullopt;
 }
@@ -85,12 +85,12 @@ const ToolEntry* ToolTable::findPocket(int pocket) const {
     return nullptr;
 }
 
-std::optional<std::string> ToolTable::put(const ToolEntry& entry) {
+std::optional<Message> ToolTable::put(const ToolEntry& entry) {
     if (auto why = invalidEntry(entry)) {
         return why;
     }
     if (const ToolEntry* other = findPocket(entry.pocket); other && other->tool != entry.tool) {
-        return "pocket " + std::to_string(entry.pocket) + " already holds tool " + std::to_string(other->tool);
+        return message("tool_table_pocket_taken", {std::to_string(entry.pocket), std::to_string(other->tool)});
     }
     for (Line& line : lines_) {
         if (line.entry && line.entry->tool == entry.tool) {
@@ -102,7 +102,7 @@ std::optional<std::string> ToolTable::put(const ToolEntry& entry) {
         }
     }
     if (count_ >= static_cast<std::size_t>(kMaxTools)) {
-        return "the tool table is full (" + std::to_string(kMaxTools) + " tools)";
+        return message("tool_table_full", {std::to_string(kMaxTools)});
     }
     lines_.push_back({entry, {}});
     ++count_;

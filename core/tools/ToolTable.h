@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -72,7 +74,7 @@ public:
 
     // Adds a row, or replaces the row of the same tool where it stands. Refuses (the reason) a value
     // a tool table cannot hold, a pocket another tool has, or a 1001st tool; changes nothing then.
-    std::optional<std::string> put(const ToolEntry& entry);
+    std::optional<Message> put(const ToolEntry& entry);
     bool remove(int tool);
     // The lowest pocket no tool holds, `preferred` when free; nullopt when all 1000 are taken.
     std::optional<int> freePocket(int preferred) const;
@@ -97,6 +99,6 @@ private:
 
 // Why `entry` cannot be a row of any tool table (tool below 1, pocket beyond 0-1000, Q beyond 0-9,
 // a number that is not finite, teeth below 1, rpm not positive), or nullopt.
-std::optional<std::string> invalidEntry(const ToolEntry& entry);
+std::optional<Message> invalidEntry(const ToolEntry& entry);
 
 } // namespace m350::tools

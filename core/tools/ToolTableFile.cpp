@@ -266,10 +266,10 @@ std::string formatToolTable(const ToolTable& table) {
     return out;
 }
 
-std::variant<ParsedToolTable, std::string> readToolTableFile(const std::filesystem::path& path) {
+std::variant<ParsedToolTable, Message> readToolTableFile(const std::filesystem::path& path) {
     std::string bytes;
     if (auto why = files::readMachineFile(path, bytes)) {
-        return path.string() + ": cannot read the tool table: " + *why;
+        return message("tool_table_unreadable", {path.string(), *why});
     }
     return parseToolTable(bytes, path.string());
 }

@@ -50,7 +50,7 @@ std::string formatToolEntry(const ToolEntry& entry);
 std::string formatToolTable(const ToolTable& table);
 
 // Reads and parses a file; the error (naming the file) when it cannot be read.
-std::variant<ParsedToolTable, std::string> readToolTableFile(const std::filesystem::path& path);
+std::variant<ParsedToolTable, Message> readToolTableFile(const std::filesystem::path& path);
 
 inline constexpr const char* kToolTableFileName = "tool.tbl";
 

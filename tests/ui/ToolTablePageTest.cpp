@@ -75,7 +75,8 @@ TEST(ToolTablePage, AFieldEditedInThePromptIsTheToolsParameterAndIsSavedInToolTb
     panel.key("LEFT");
     panel.key("ENTER");
     answer(panel, "0");
-    EXPECT_TRUE(panel.window().messageText().contains(QStringLiteral("at least 1 tooth")))
+    // the tool table's refusal by message id, in the panel's language
+    EXPECT_TRUE(panel.window().messageText().contains(QStringLiteral("刀具2：刀具至少有1个齿")))
         << panel.window().messageText().toStdString();
     const QString saved = fileText(QDir(panel.folder()).filePath("tool.tbl"));
     EXPECT_TRUE(saved.contains(QStringLiteral("\nT2 P2 Z-50.5 ;{type=ball}\n"))) << saved.toStdString();

@@ -44,7 +44,7 @@ Arc arcOf(const ArcSpec& spec) {
 
 std::string errorOf(const ArcSpec& spec) {
     auto result = makeArc(spec);
-    if (const auto* error = std::get_if<ArcError>(&result)) return error->message;
+    if (const auto* error = std::get_if<ArcError>(&result)) return error->message.english();
     ADD_FAILURE() << "expected an error";
     return {};
 }

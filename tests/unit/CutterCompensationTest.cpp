@@ -67,7 +67,7 @@ Path segments(const CutterCompensation::Result& r) {
 
 std::string message(const CutterCompensation::Result& r) {
     const auto* e = std::get_if<CompensationError>(&r);
-    return e ? e->message : "no error";
+    return e ? e->message.english() : "no error";
 }
 
 // Feeds the whole program and collects every final segment, the flush at program end included.

@@ -185,7 +185,7 @@ TEST(ExternalOutputRun, BprntValueTooLargeAlarmsAtTheVariable) {
 TEST(ExternalOutputRun, BreakRunSendsOnlyWhatComesAfterTheStartLine) {
     controller::Controller c(test::fanucMachine(), {});
     ASSERT_TRUE(c.loadFile(test::writeTempFile(lines({"POPEN", "DPRNT[A]", "G0 X1", "DPRNT[B]", "PCLOS", "M30"}))));
-    std::string why;
+    Message why;
     ASSERT_TRUE(c.breakRun().startAtLine(3, &why)) << why;
     EXPECT_EQ(c.advance(100.0), controller::Controller::RunState::Finished);
     EXPECT_EQ(c.externalDevices().received(), "B\n"); // POPEN was scanned: the device is open; A is not sent again

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -155,6 +156,21 @@ TEST(FanucCallParameters, TwoSettingsForOneCodeAreRefusedNamingBoth) {
                                 "(params.toml:2:8) already makes it call O9010: keep one of them");
 }
 
+// The Controller itself (the panel's path; m350-sim refuses the clash before): the machine's call
+// codes stay and the message line says why, in the panel's language.
+TEST(FanucCallParameters, AClashOfTheRunSettingsKeepsTheCallCodesAndSaysSo) {
+    auto run = runFanuc(lines({"#100=1", "M30"}), withParameters({{6050, 100}, {6052, 100}}));
+    EXPECT_RUN_OK(run);
+    const std::vector<Message>& said = run.report.messageWords;
+    auto kept = std::find_if(said.begin(), said.end(), [](const Message& m) { return m.id == "call_codes_kept"; });
+    ASSERT_NE(kept, said.end()) << ::testing::PrintToString(run.report.messages);
+    EXPECT_EQ(kept->english(), "parameter 6052 = 100 makes G100 call O9012, but parameter 6050 = 100 (--param 6050) "
+                               "already makes it call O9010: keep one of them (the machine's call codes are kept)");
+    EXPECT_EQ(kept->in(MessageLanguage::Chinese),
+              "参数6052 = 100使G100调用O9012，但parameter 6050 = 100 (--param 6050)已使其调用O9010：请只保留其中一个"
+              "（机床的调用代码保持不变）");
+}
+
 TEST(FanucCallParameters, ACallParameterIsSimulatedAndNoLongerWarned) {
     for (int number : {6050, 6059, 6071, 6079, 6080, 6089, 6090, 6091}) {
         EXPECT_FALSE(params::unreadFanucParameter(number).has_value()) << number;
@@ -163,6 +179,7 @@ TEST(FanucCallParameters, ACallParameterIsSimulatedAndNoLongerWarned) {
     EXPECT_TRUE(params::unreadFanucParameter(6092).has_value());
     EXPECT_EQ(params::refusedFanucParameter(6050, -100), "parameter 6050 must be from 0 to 9999");
     EXPECT_EQ(params::refusedFanucParameter(6090, 91), "parameter 6090 must be from 0 to 90");
+    EXPECT_EQ(params::refusedFanucParameter(6090, 91)->in(MessageLanguage::Chinese), "参数6090须在0到90之间");
 }
 
 class CallParameterFolder : public ::testing::Test {

@@ -290,10 +290,16 @@ TEST_F(HookMachine, UserKeysRunTheirHookSwitchAnOutputOrNameAPanelKey) {
     EXPECT_EQ(k3.value, 1323);
     controller::KeyPress k4 = c.operatorPanel().pressUserKey(4);
     EXPECT_EQ(k4.kind, controller::KeyPress::Kind::Refused);
-    EXPECT_NE(k4.why.find("key-4.nc"), std::string::npos) << k4.why;
+    EXPECT_NE(k4.why.english().find("key-4.nc"), std::string::npos) << k4.why;
     controller::KeyPress k5 = c.operatorPanel().pressUserKey(5);
     EXPECT_EQ(k5.kind, controller::KeyPress::Kind::Refused);
-    EXPECT_NE(k5.why.find("parameter 214 = 500"), std::string::npos) << k5.why;
+    EXPECT_NE(k5.why.english().find("parameter 214 = 500"), std::string::npos) << k5.why;
+    // the panel says a refused key in its language (KeyPress::why is said by id)
+    EXPECT_EQ(k5.why.id, "key_no_function");
+    EXPECT_NE(k5.why.in(MessageLanguage::Chinese).find("K5：参数214 = 500不是按键功能"), std::string::npos)
+        << k5.why.in(MessageLanguage::Chinese);
+    EXPECT_EQ(c.operatorPanel().pressUserKey(8).why.in(MessageLanguage::Chinese), "K8：面板只有K1-K7");
+    EXPECT_EQ(c.operatorPanel().pressExternKey(9).why.in(MessageLanguage::Chinese), "外部按键9：只有按键1-6");
 }
 
 TEST_F(HookMachine, ExternalKeysAndFunctionKeysRunTheirHooks) {

@@ -43,7 +43,7 @@ bool hasEnglishWords(const std::string& text) {
     static const std::set<std::string> kept{
         "MGETDATA", "MSETDATA", "Modbus", "modbus", "toml", "slave", "TLCH", "GOTO", "GOTOn", "THEN", "WHILE",
         "BPRNT", "DPRNT", "POPEN", "PCLOS", "FANUC", "ATAN", "FIFO", "LinuxCNC", "slib", "tool", "table", "machine", "variables", "common", "coordinates", "additional",
-        "systems", "reference", "points"};
+        "systems", "reference", "points", "params", "help"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;

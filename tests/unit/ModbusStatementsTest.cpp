@@ -262,9 +262,11 @@ TEST(ModbusStatements, ConversionsAreFlaggedAndAlarmOnlyWhenReached) {
 TEST(ModbusStatements, BreakRunRefusesToScanATransfer) {
     controller::Controller c(modbusMachine(), {});
     ASSERT_TRUE(c.loadFile(test::writeTempFile(lines({"MSETDATA[200,1,0,2,16,300]", "G0 X1", "G0 X2", "M30"}))));
-    std::string why;
+    Message why;
     EXPECT_FALSE(c.breakRun().startAtLine(3, &why));
-    EXPECT_NE(why.find("MSETDATA talks to Modbus slave 1"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("MSETDATA talks to Modbus slave 1"), std::string::npos) << why;
+    EXPECT_EQ(why.english(), "MSETDATA talks to Modbus slave 1 at " + why.arguments[1] + ", before the start line: a scan cannot");
+    EXPECT_EQ(why.in(MessageLanguage::Chinese), "起始行之前的" + why.arguments[1] + "：MSETDATA与Modbus从站1通信，扫描无法执行");
 }
 
 // The trace has both frames of each transfer, as a PC slave would log them.

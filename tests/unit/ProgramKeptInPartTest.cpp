@@ -246,9 +246,9 @@ TEST(ProgramKeptInPart, StartingAtALineIsTheSameAsWithTheProgramKeptWhole) {
         const std::string path = test::writeTempFile(text);
         controller::Controller c(test::m350Machine(), settings);
         ASSERT_TRUE(c.loadFile(path));
-        std::string why;
+        Message why;
         EXPECT_FALSE(c.breakRun().startAtLine(40000, &why));
-        EXPECT_NE(why.find("its blocks are on lines 1-"), std::string::npos) << why;
+        EXPECT_NE(why.english().find("its blocks are on lines 1-"), std::string::npos) << why;
         ASSERT_TRUE(c.breakRun().startAtLine(15000, &why)) << why; // in the fourth chunk
         EXPECT_EQ(c.advance(1e9), controller::Controller::RunState::Finished);
         reports.push_back(c.status().report());

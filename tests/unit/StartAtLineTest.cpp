@@ -64,7 +64,7 @@ TEST(StartAtLine, RebuildsTheModalStateAndApproachesZUpXYOverZDown) {
     cfg.parameters.set(param::kSafeZ, 20); // G55 Z20 = machine Z20
     Recorder rec;
     auto c = loaded(std::move(cfg), kProgram, &rec);
-    std::string why;
+    Message why;
     ASSERT_TRUE(c->breakRun().startAtLine(7, &why)) << why;
     EXPECT_EQ(c->runState(), RunState::Running);
     const std::string modal = c->status().modalLine();
@@ -98,7 +98,7 @@ TEST(StartAtLine, RebuildsTheModalStateAndApproachesZUpXYOverZDown) {
 TEST(StartAtLine, WithoutParam90ZRisesOnlyToTheHigherOfTheTwo) {
     Recorder rec;
     auto c = loaded(machine(), kProgram, &rec);
-    std::string why;
+    Message why;
     ASSERT_TRUE(c->breakRun().startAtLine(7, &why)) << why;
     c->advance(100.0);
     auto moves = rec.moves();
@@ -111,7 +111,7 @@ TEST(StartAtLine, WithoutParam90ZRisesOnlyToTheHigherOfTheTwo) {
 TEST(StartAtLine, ABlankLineStartsAtTheNextBlockAndAJumpIsFollowed) {
     Recorder rec;
     auto c = loaded(machine(), lines({"#1 = 2", "GOTO 10", "G0 X99", "N10 G0 X1", "", "G0 X2", "M30"}), &rec);
-    std::string why;
+    Message why;
     ASSERT_TRUE(c->breakRun().startAtLine(5, &why)) << why;
     c->advance(100.0);
     auto moves = rec.moves();
@@ -123,52 +123,57 @@ TEST(StartAtLine, ABlankLineStartsAtTheNextBlockAndAJumpIsFollowed) {
 TEST(StartAtLine, Refusals) {
     const std::string program = lines({"G91", "GOTO 4", "G0 X99", "N4 G0 X1", "M98 P100", "M30", "O100", "G0 Y1", "M99"});
     auto c = loaded(machine(), program);
-    std::string why;
+    Message why;
     EXPECT_FALSE(c->breakRun().startAtLine(40, &why));
-    EXPECT_NE(why.find("is not in"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("is not in"), std::string::npos) << why;
     EXPECT_FALSE(c->breakRun().startAtLine(0, &why));
     EXPECT_FALSE(c->breakRun().startAtLine(8, &why));
-    EXPECT_NE(why.find("O100, a subprogram"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("O100, a subprogram"), std::string::npos) << why;
+    EXPECT_EQ(why.in(MessageLanguage::Chinese), "第8行在子程序O100中：请从调用它的主程序行开始"); // the 断点加工 page's words
     EXPECT_FALSE(c->breakRun().startAtLine(3, &why));
-    EXPECT_NE(why.find("never reaches"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("never reaches"), std::string::npos) << why;
     // a refusal changes nothing: G91 was scanned, but the modal state is as it was
     EXPECT_NE(c->status().modalLine().find("G90"), std::string::npos) << c->status().modalLine();
     EXPECT_EQ(c->runState(), RunState::Idle);
 
     ASSERT_TRUE(c->breakRun().startAtLine(4, &why)) << why;
     EXPECT_FALSE(c->breakRun().startAtLine(4, &why));
-    EXPECT_NE(why.find("RESET first"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("RESET first"), std::string::npos) << why;
 
     auto cfg = machine();
     cfg.parameters.set(param::kHomeBeforeProcessing, 1);
     auto unhomed = loaded(std::move(cfg), program, nullptr, false);
     EXPECT_FALSE(unhomed->breakRun().startAtLine(4, &why));
-    EXPECT_NE(why.find("parameter 220"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("parameter 220"), std::string::npos) << why;
 }
 
 TEST(StartAtLine, RefusesAToolChangeBeforeTheLineOnAMachineWithAMagazine) {
     Recorder rec;
     auto c = loaded(bundledMachine(), lines({"T2", "G0 X10", "M30"}), &rec);
-    std::string why;
+    Message why;
     EXPECT_FALSE(c->breakRun().startAtLine(2, &why));
-    EXPECT_NE(why.find("tool accounting cannot be scanned"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("tool accounting cannot be scanned"), std::string::npos) << why;
     EXPECT_TRUE(rec.moves().empty()); // nothing moved
     EXPECT_TRUE(c->breakRun().startAtLine(1, &why)) << why; // the change itself may start
 }
 
 TEST(StartAtLine, RefusesWhatAScanCannotFollow) {
     auto c = loaded(machine(), lines({"G31 X10 F100", "G0 X1", "M30"}));
-    std::string why;
+    Message why;
     EXPECT_FALSE(c->breakRun().startAtLine(2, &why));
-    EXPECT_NE(why.find("G31"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("G31"), std::string::npos) << why;
+    EXPECT_EQ(why.id, "scan_alarm"); // this machine has no skip input: G31 alarms in the scan
+    EXPECT_NE(why.in(MessageLanguage::Chinese).find("处产生报警：G31：G31需要P<输入1-24>和L<电平>"), std::string::npos)
+        << why.in(MessageLanguage::Chinese);
 
     auto alarmed = loaded(machine(), lines({"#3000 = 1(stop)", "G0 X1", "M30"}));
     EXPECT_FALSE(alarmed->breakRun().startAtLine(2, &why));
-    EXPECT_NE(why.find("raise an alarm"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("raise an alarm"), std::string::npos) << why;
+    EXPECT_NE(why.in(MessageLanguage::Chinese).find("产生报警"), std::string::npos) << why.in(MessageLanguage::Chinese);
 
     auto compensating = loaded(machine(), lines({"G41 D1 G1 X10 F100", "X20", "G40 X30", "M30"}));
     EXPECT_FALSE(compensating->breakRun().startAtLine(2, &why));
-    EXPECT_NE(why.find("G41/G42"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("G41/G42"), std::string::npos) << why;
 }
 
 // Pauses in the second pass of a loop, resets, resumes: the same pass goes on and the run ends
@@ -199,7 +204,7 @@ void pauseResetResume(double resumeMode, std::vector<machine::MachineEvent>& aft
     c->reset();
     ASSERT_TRUE(c->breakRun().pauseBreakPoint()); // kept through RESET
     std::size_t before = rec.events.size();
-    std::string why;
+    Message why;
     ASSERT_TRUE(c->breakRun().resumeAtPause(&why)) << why;
     EXPECT_FALSE(c->breakRun().pauseBreakPoint());
     EXPECT_EQ(c->advance(100.0), RunState::Finished);
@@ -235,9 +240,9 @@ TEST(ResumeAtPause, FromThePointWhereTheHoldStoppedWithParam93) {
 
 TEST(ResumeAtPause, NothingToResumeWithoutAPause) {
     auto c = loaded(machine(), kLoop);
-    std::string why;
+    Message why;
     EXPECT_FALSE(c->breakRun().resumeAtPause(&why));
-    EXPECT_NE(why.find("no paused run"), std::string::npos) << why;
+    EXPECT_NE(why.english().find("no paused run"), std::string::npos) << why;
 }
 
 } // namespace

@@ -109,7 +109,7 @@ TEST(ToolData, TouchOffSavedSurvivesAReloadWithTheCommentsAndParamsTomlAgrees) {
         controller::Controller c(load(folder), {});
         ASSERT_TRUE(c.loadMdi({"G53 Z-80", "#1431 = -41.5"}));
         ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
-        std::string why;
+        Message why;
         ASSERT_TRUE(c.toolTableEdits().touchOffTool(0.0, &why)) << why; // G54 Z is 0: T1's Z becomes -80
         ASSERT_TRUE(c.toolTableEdits().changed());
         ASSERT_EQ(controller::saveToolTable(c, config::MachineFolder(folder)), std::nullopt);

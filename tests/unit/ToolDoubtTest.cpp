@@ -55,6 +55,10 @@ TEST(ToolDoubt, AnEStopInT2LeavesTheToolUnsureAndT3IsRefusedUntilTheOperatorEnte
     ASSERT_EQ(refused.status, controller::RunStatus::Alarm);
     ASSERT_TRUE(refused.alarm);
     EXPECT_EQ(refused.alarm->messageId, "tool_unsure_refused");
+    EXPECT_EQ(refused.alarm->message,
+              "No tool change before the operator enters the tool the spindle holds: a change to T2 was stopped");
+    EXPECT_EQ(messageText(refused.alarm->messageId, refused.alarm->messageArguments, MessageLanguage::Chinese),
+              "换刀T2被中断: 输入主轴上的刀号之前不能换刀!");
     EXPECT_EQ(refused.alarm->line, 2u);
     EXPECT_EQ(refused.alarm->column, 1u);
     EXPECT_EQ(refused.tool, 0) << "nothing moved towards a pocket";

@@ -55,7 +55,7 @@ TEST(ToolLifeView, TheOperatorResetsAGroupWhenNoProgramRuns) {
     controller::Controller& c = *run.controller;
     ASSERT_TRUE(c.start());
     c.advance(1.0);
-    std::string why;
+    Message why;
     EXPECT_FALSE(c.toolLife().resetGroup(1, &why));
     EXPECT_EQ(why, "a program runs: reset the tool life of group 1 when it has stopped");
     while (c.advance(1.0) == controller::Controller::RunState::Running) {
@@ -69,6 +69,7 @@ TEST(ToolLifeView, TheOperatorResetsAGroupWhenNoProgramRuns) {
     EXPECT_EQ(c.toolLife().manager().data().group(1)->tools[1].used, 0);
     EXPECT_FALSE(c.toolLife().resetGroup(7, &why));
     EXPECT_EQ(why, "tool life group 7 is not entered");
+    EXPECT_EQ(why.in(MessageLanguage::Chinese), "刀具寿命组7未输入"); // the panel's Tool Life page says it so
     // the next run starts again from T11
     ASSERT_TRUE(c.start());
     while (c.advance(1.0) == controller::Controller::RunState::Running) {

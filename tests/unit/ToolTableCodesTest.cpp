@@ -138,7 +138,7 @@ TEST(ToolTableCodes, TouchOffOnTheM350WritesTheToolsParameterAndTheDisplayReadsT
     ASSERT_TRUE(c.loadMdi({"G53 Z-80"}));
     ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
     EXPECT_DOUBLE_EQ(c.variable(852).number, -10.0) << "-80 - (-20) - (-50)";
-    std::string why;
+    Message why;
     ASSERT_TRUE(c.toolTableEdits().touchOffTool(5.0, &why)) << why;
     EXPECT_DOUBLE_EQ(c.parameter(930), -65.0) << "-80 - (-20) - 5";
     EXPECT_DOUBLE_EQ(c.variable(1430).number, -65.0);
@@ -151,20 +151,22 @@ TEST(ToolTableCodes, TouchOffRefusesAnEmptySpindleAToolWithoutAParameterAndARun)
     controller::RunSettings settings;
     settings.tool = 0;
     controller::Controller empty(m350Machine(), settings);
-    std::string why;
+    Message why;
     EXPECT_FALSE(empty.toolTableEdits().touchOffTool(0.0, &why));
-    EXPECT_THAT(why, HasSubstr("empty"));
+    EXPECT_THAT(why.english(), HasSubstr("empty"));
     settings.tool = 40; // capacity 16 + 20 virtual tools: 36 at most
     controller::Controller beyond(m350Machine(), settings);
     EXPECT_FALSE(beyond.toolTableEdits().touchOffTool(0.0, &why));
-    EXPECT_THAT(why, HasSubstr("tool 40 has no Z offset parameter"));
+    EXPECT_THAT(why.english(), HasSubstr("tool 40 has no Z offset parameter"));
+    EXPECT_EQ(why.in(MessageLanguage::Chinese), // the Probe page says it in the panel's language
+              "刀具40在本M350上没有Z偏置参数（刀库刀具为参数930-945，超出容量的20把虚拟刀具为973-992）");
     settings.tool = 1;
     controller::Controller running(m350Machine(), settings);
     ASSERT_TRUE(running.loadMdi({"G04 P5000"}));
     ASSERT_TRUE(running.start());
     running.advance(0.5);
     EXPECT_FALSE(running.toolTableEdits().touchOffTool(0.0, &why));
-    EXPECT_THAT(why, HasSubstr("a program is running"));
+    EXPECT_THAT(why.english(), HasSubstr("a program is running"));
     EXPECT_FALSE(running.toolTableEdits().touchOffTool(std::nan(""), &why));
     EXPECT_DOUBLE_EQ(running.parameter(930), 0.0);
 }
@@ -175,7 +177,7 @@ TEST(ToolTableCodes, TouchOffOnAFanucWritesTheRowAndAppliesG43) {
     controller::Controller c(fanucWithTable(), settings);
     ASSERT_TRUE(c.loadMdi({"G10 L2 P1 Z-100", "G90 G54 G00 Z70"})); // machine Z -30 under G49
     ASSERT_EQ(c.run().status, controller::RunStatus::Ok);
-    std::string why;
+    Message why;
     ASSERT_TRUE(c.toolTableEdits().touchOffTool(10.0, &why)) << why;
     EXPECT_DOUBLE_EQ(c.toolTableEdits().table().find(2)->offset(tools::kZ), 60.0) << "-30 - (-100) - 10";
     EXPECT_DOUBLE_EQ(c.variable(2002).number, 60.0);

@@ -174,15 +174,15 @@ TEST(ToolTableFile, PutRefusesAPocketTakenAValueOutOfRangeAndChangesNothing) {
     ToolEntry clash{};
     clash.tool = 3;
     clash.pocket = 2;
-    EXPECT_THAT(table.put(clash).value_or(""), HasSubstr("pocket 2 already holds tool 2"));
+    EXPECT_THAT(table.put(clash).value_or(Message{}).english(), HasSubstr("pocket 2 already holds tool 2"));
     ToolEntry bad{};
     bad.tool = 1;
     bad.pocket = 1;
     bad.orientation = 12;
-    EXPECT_THAT(table.put(bad).value_or(""), HasSubstr("orientation Q runs from 0 to 9"));
+    EXPECT_THAT(table.put(bad).value_or(Message{}).english(), HasSubstr("orientation Q runs from 0 to 9"));
     bad.orientation.reset();
     bad.offsets[kZ] = std::numeric_limits<double>::infinity();
-    EXPECT_THAT(table.put(bad).value_or(""), HasSubstr("the Z offset is not a finite number"));
+    EXPECT_THAT(table.put(bad).value_or(Message{}).english(), HasSubstr("the Z offset is not a finite number"));
     EXPECT_EQ(table, before);
     EXPECT_EQ(*table.freePocket(2), 3) << "pocket 2 is taken: the lowest free one";
 }
@@ -199,7 +199,7 @@ TEST(ToolTableFile, AThousandToolsFitAndTheNextIsRefused) {
     ToolEntry extra{};
     extra.tool = 5000;
     extra.pocket = 0;
-    EXPECT_THAT(parsed.table.put(extra).value_or(""), HasSubstr("full"));
+    EXPECT_THAT(parsed.table.put(extra).value_or(Message{}).english(), HasSubstr("full"));
 }
 
 TEST(ToolTableFile, NumbersReadAsTheSeedWritesThemAndNothingLooser) {

@@ -7,6 +7,7 @@
 #include "core/tools/ToolData.h"
 #include "core/tools/ToolTableFile.h"
 #include "core/tools/ToolTableText.h"
+#include "ui/i18n/Language.h"
 #include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
 
@@ -101,9 +102,10 @@ void ToolTablePage::editField(const tools::ToolEntry& entry, Column column) {
             break;
         case Column::Tool: break;
         }
-        auto why = ok ? tools::invalidEntry(changed) : std::optional<std::string>(tr("not a valid value").toStdString());
-        if (why) {
-            context().notify(tr("T%1: %2").arg(entry.tool).arg(QString::fromStdString(*why)));
+        const std::optional<Message> invalid = ok ? tools::invalidEntry(changed) : std::nullopt;
+        if (!ok || invalid) {
+            const QString why = invalid ? QString::fromStdString(invalid->in(Language::messageLanguage())) : tr("not a valid value");
+            context().notify(tr("T%1: %2").arg(entry.tool).arg(why));
             return;
         }
         context().session().putTool(changed);
@@ -190,8 +192,8 @@ void ToolTablePage::importTable() {
         }
         const QString path = resolvePath(*text);
         auto read = tools::readToolTableFile(path.toStdString());
-        if (auto* error = std::get_if<std::string>(&read)) {
-            context().notify(QString::fromStdString(*error));
+        if (auto* error = std::get_if<Message>(&read)) {
+            context().notify(QString::fromStdString(error->in(Language::messageLanguage())));
             return;
         }
         auto parsed = std::make_shared<tools::ParsedToolTable>(std::get<tools::ParsedToolTable>(std::move(read)));

@@ -2,6 +2,7 @@
 
 #include "ui/i18n/AlarmText.h"
 #include "ui/i18n/DiagnosticText.h"
+#include "ui/i18n/Language.h"
 #include "ui/session/ProgramPreviews.h"
 #include "ui/session/SimulationRun.h"
 
@@ -426,9 +427,9 @@ void SessionWorker::setWorkPosition(int axis, double value) {
 
 void SessionWorker::setVariable(int number, double value) {
     lastError_.clear();
-    std::string why;
+    Message why;
     if (!controller_->setVariable(number, value, &why)) {
-        refuse(QString::fromStdString(why));
+        refuse(QString::fromStdString(why.in(Language::messageLanguage())));
         return;
     }
     publish();

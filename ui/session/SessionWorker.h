@@ -123,7 +123,7 @@ private:
     bool saveParameters(const std::map<int, double>& values); // into params.toml; refuses when it cannot
     void keepParametersTheRunChanged();
     QVector<double> userVariables(); // #50-#499, NaN for a vacant one
-    void startedAt(const char* event, bool started, const std::string& why);
+    void startedAt(const char* event, bool started, const Message& why);
     void startNextStep();
     void continueSteps(); // after a frame: the next step of runHooks when one ended well
     void panelKey(const QString& key, int code);

@@ -4,6 +4,7 @@
 #include "ui/session/SessionWorker.h"
 
 #include "core/controller/Controller.h"
+#include "ui/i18n/Language.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -29,7 +30,7 @@ void SessionWorker::startAtLine(int line) {
     if (!loadCurrentFile()) {
         return;
     }
-    std::string why;
+    Message why;
     startedAt("start_line", controller_->breakRun().startAtLine(static_cast<std::uint32_t>(line), &why), why);
 }
 
@@ -39,7 +40,7 @@ void SessionWorker::resumeAtPause() {
         refuse(tr("No paused run to resume (PAUSE, then RESET)"));
         return;
     }
-    std::string why;
+    Message why;
     startedAt("break_run", controller_->breakRun().resumeAtPause(&why), why);
 }
 
@@ -61,13 +62,13 @@ void SessionWorker::powerResume() {
     if (!loadCurrentFile()) {
         return;
     }
-    std::string why;
+    Message why;
     startedAt("break_run", controller_->breakRun().startAtLine(static_cast<std::uint32_t>(kept.keptLine), &why), why);
 }
 
-void SessionWorker::startedAt(const char* event, bool started, const std::string& why) {
+void SessionWorker::startedAt(const char* event, bool started, const Message& why) {
     if (!started) {
-        refuse(QString::fromStdString(why));
+        refuse(QString::fromStdString(why.in(Language::messageLanguage())));
         return;
     }
     activity_ = Activity::Auto;

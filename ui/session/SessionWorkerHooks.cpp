@@ -3,6 +3,7 @@
 #include "ui/session/SessionWorker.h"
 
 #include "ui/session/HookSteps.h"
+#include "ui/i18n/Language.h"
 
 #include "core/controller/Controller.h"
 
@@ -154,7 +155,7 @@ void SessionWorker::keyPressed(const controller::KeyPress& press, const QString&
         log_->record("output", key + QStringLiteral(": OUT%1").arg(press.value, 2, 10, QLatin1Char('0')));
         break;
     case controller::KeyPress::Kind::PanelKey: panelKey(key, press.value); return;
-    case controller::KeyPress::Kind::Refused: refuse(QString::fromStdString(press.why)); return;
+    case controller::KeyPress::Kind::Refused: refuse(QString::fromStdString(press.why.in(Language::messageLanguage()))); return;
     }
     publish();
 }

@@ -7,14 +7,15 @@
 #include "core/controller/ToolTableSave.h"
 #include "core/tools/ToolData.h"
 #include "ui/i18n/AlarmText.h"
+#include "ui/i18n/Language.h"
 
 namespace m350::ui {
 
 void SessionWorker::putTool(const tools::ToolEntry& entry) {
     lastError_.clear();
-    std::string why;
+    Message why;
     if (!controller_->toolTableEdits().putTool(entry, &why)) {
-        refuse(QString::fromStdString(why));
+        refuse(QString::fromStdString(why.in(Language::messageLanguage())));
         return;
     }
     log_->record("tool_table", QStringLiteral("T%1").arg(entry.tool));
@@ -23,9 +24,9 @@ void SessionWorker::putTool(const tools::ToolEntry& entry) {
 
 void SessionWorker::removeTool(int tool) {
     lastError_.clear();
-    std::string why;
+    Message why;
     if (!controller_->toolTableEdits().removeTool(tool, &why)) {
-        refuse(QString::fromStdString(why));
+        refuse(QString::fromStdString(why.in(Language::messageLanguage())));
         return;
     }
     log_->record("tool_table", QStringLiteral("T%1 -").arg(tool));
@@ -34,9 +35,9 @@ void SessionWorker::removeTool(int tool) {
 
 void SessionWorker::replaceToolTable(const tools::ToolTable& table, const QString& from) {
     lastError_.clear();
-    std::string why;
+    Message why;
     if (!controller_->toolTableEdits().replaceTable(table, &why)) {
-        refuse(QString::fromStdString(why));
+        refuse(QString::fromStdString(why.in(Language::messageLanguage())));
         return;
     }
     log_->record("tool_table", from);
@@ -57,9 +58,9 @@ void SessionWorker::touchOffTool(double workZ) {
         }
         controller_->notePanelWrite(*z);
     }
-    std::string why;
+    Message why;
     if (!controller_->toolTableEdits().touchOffTool(workZ, &why)) {
-        refuse(QString::fromStdString(why));
+        refuse(QString::fromStdString(why.in(Language::messageLanguage())));
         return;
     }
     log_->record("touch_off", QStringLiteral("T%1 Z = %2").arg(controller_->panelStatus().tool).arg(workZ, 0, 'f', 3));
@@ -86,9 +87,9 @@ void SessionWorker::keepToolTable() {
 
 void SessionWorker::resetToolLife(int group) {
     lastError_.clear();
-    std::string why;
+    Message why;
     if (!controller_->toolLife().resetGroup(group, &why)) {
-        refuse(QString::fromStdString(why));
+        refuse(QString::fromStdString(why.in(Language::messageLanguage())));
         return;
     }
     log_->record("tool_life_reset", QStringLiteral("P%1").arg(group)); // the group as G10 L3 names it
