@@ -3,9 +3,9 @@
 // A long replay of real operator actions, the same every time for one (count, seed): page switches
 // among all the pages, softkeys (Monitor's menus and back, the Param page's tabs, the Program
 // page's disks, the tool pages' links), jog taps in STEP mode, override keys, handwheel clicks, MDI
-// lines typed and run, and a program loaded and run twice. The machine stays where it started
-// give or take a few hundredths (each move is undone by the next). Used by the replay test that
-// compares lazy and per-action rendering and by tests/bench/replay_1m.sh (1,000,000 actions).
+// lines typed and run, and a program loaded and run twice. The moves come in pairs that mostly undo
+// each other, so the machine wanders a few millimetres, far from its limits. Used by the replay
+// test that compares the fast replay with --eager-replay, and by tests/bench/replay_1m.sh.
 #include <cstdint>
 #include <cstdio>
 #include <functional>
