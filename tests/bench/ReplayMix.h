@@ -3,8 +3,9 @@
 // A long replay of real operator actions, the same every time for one (count, seed): page switches
 // among all the pages, softkeys (Monitor's menus and back, the Param page's tabs, the Program
 // page's disks, the tool pages' links), jog taps in STEP mode, override keys, handwheel clicks, MDI
-// lines typed and run, and a program loaded and run twice. The moves come in pairs that mostly undo
-// each other, so the machine wanders a few millimetres, far from its limits. Used by the replay
+// lines typed and run, and a program loaded and run twice. Jog taps and wheel clicks come in pairs
+// that undo each other; the MDI page's F1 runs its line 1, whichever line was typed, so the machine
+// wanders slowly (some 400 mm in X and Y over a million actions, within its travel). Used by the replay
 // test that compares the fast replay with --eager-replay, and by tests/bench/replay_1m.sh.
 #include <cstdint>
 #include <cstdio>
