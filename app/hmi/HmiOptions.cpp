@@ -43,6 +43,10 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
            "the window's size, WIDTHxHEIGHT (default 1024x600; the controller's screens: 800x480, 1024x600, 1280x800)");
     app.add_option("--replay", o.replay, "play operator actions (JSON Lines) in virtual time, then exit")
         ->check(CLI::ExistingFile);
+    app.add_flag("--eager-replay", o.eagerReplay,
+                 "play a replay as m350-hmi did before: the panel laid out after every action, the machine in a "
+                 "thread of its own, every file of the scratch machine folder synced (much slower; to check that "
+                 "the fast way ends the same)");
     app.add_option("--state", o.state, "write the panel's state as JSON and exit");
     app.add_option("--record", o.record, "record the operator's actions to this file (JSON Lines)");
     app.add_flag("--unhomed", o.unhomed, "start with no axis homed, as after power-on");

@@ -27,6 +27,7 @@ struct HmiOptions {
     std::uint64_t dprntLimit = controller::RunSettings{}.externalOutputLimit; // bytes of DPRNT output dprnt.txt keeps
     int width = 1024, height = 600; // --size: the controller's screens are 800x480, 1024x600, 1280x800
     double measure = 0.0;    // > 0: start the program, measure the panel for this long, print JSON, exit
+    bool eagerReplay = false; // --eager-replay: a replay as before, for comparing (much slower)
     bool headlessRun() const { return !screenshot.empty() || !replay.empty() || !state.empty(); }
 };
 

@@ -4,6 +4,7 @@
 #include "app/hmi/HmiOutputs.h"
 #include "app/sim/BreakageOptions.h"
 #include "core/config/MachineConfig.h"
+#include "core/files/ScratchFolder.h"
 #include "ui/i18n/Language.h"
 #include "ui/pages/ProgramPage.h"
 #include "ui/panel/BackupImportFlow.h"
@@ -101,6 +102,9 @@ int main(int argc, char** argv) {
             return fail(error);
         }
         folder = *copy;
+        if (o.headlessRun() && !o.eagerReplay) {
+            files::setScratchFolder(scratch.path().toStdString()); // gone at exit: nothing there need survive a power cut
+        }
     }
     if (auto refused = hmi::refusedOutput(o, folder)) {
         return fail(*refused);
@@ -112,6 +116,7 @@ int main(int argc, char** argv) {
     ui::MachineSession::Options sessionOptions;
     sessionOptions.clock = o.headlessRun() ? ui::MachineSession::Clock::Manual : ui::MachineSession::Clock::RealTime;
     sessionOptions.rate = o.rate;
+    sessionOptions.panelThread = o.headlessRun() && !o.eagerReplay;
     sessionOptions.homed = !o.unhomed;
     sessionOptions.tool = o.tool;
     sessionOptions.externalOutputLimit = o.dprntLimit;
@@ -176,7 +181,8 @@ int main(int argc, char** argv) {
         if (!actions) {
             return fail(error);
         }
-        if (error = ui::playReplay(window, session, *actions, replay, places); !error.isEmpty()) {
+        if (error = ui::playReplay(window, session, *actions, replay, places,
+                                    o.eagerReplay ? ui::ReplayLayout::EachAction : ui::ReplayLayout::WhenRead); !error.isEmpty()) {
             return fail(error);
         }
     }

@@ -1,6 +1,7 @@
 #include "core/files/AtomicFile.h"
 
 #include "core/files/FileDescriptor.h"
+#include "core/files/ScratchFolder.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -93,7 +94,7 @@ std::optional<std::string> writeFileAtomically(const fs::path& path, std::string
         ::unlink(temp.c_str());
         return error;
     }
-    if (::fsync(file.get()) != 0 || !file.close()) {
+    if (!syncUnlessScratch(file.get(), path) || !file.close()) {
         std::string error = failure(temp, "cannot sync");
         ::unlink(temp.c_str());
         return error;
@@ -111,6 +112,9 @@ std::optional<std::string> writeFileAtomically(const fs::path& path, std::string
 }
 
 std::optional<std::string> syncFolder(const fs::path& folder) {
+    if (inScratchFolder(folder)) {
+        return std::nullopt;
+    }
     FileDescriptor directory(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
     if (directory.get() < 0 || ::fsync(directory.get()) != 0) return failure(folder, "cannot sync the folder");
     return std::nullopt;

@@ -2,6 +2,7 @@
 
 #include "core/files/AtomicFile.h"
 #include "core/files/MachineFileRead.h"
+#include "core/files/ScratchFolder.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -85,7 +86,7 @@ bool SystemLog::append(LogEntry entry, std::string* error) {
     const std::string text = line(entry);
     const int fd = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
     bool written = fd >= 0 && ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) &&
-                   ::fsync(fd) == 0;
+                   syncUnlessScratch(fd, path_);
     if (fd >= 0 && ::close(fd) != 0) {
         written = false;
     }

@@ -9,6 +9,8 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#include "tests/bench/ReplayMix.h"
+
 #include <gtest/gtest.h>
 
 namespace m350::test {
@@ -22,7 +24,7 @@ struct HmiRun {
     QImage screenshot;
 };
 
-HmiRun runHmi(const QStringList& arguments) {
+HmiRun runHmi(const QStringList& arguments, int timeoutMs = 60000) {
     QTemporaryDir dir;
     QString state = dir.filePath("state.json");
     QString png = dir.filePath("screen.png");
@@ -32,9 +34,9 @@ HmiRun runHmi(const QStringList& arguments) {
     hmi.setProcessEnvironment(env);
     hmi.start(M350_HMI_PATH, arguments + QStringList{"--state", state, "--screenshot", png});
     HmiRun run;
-    if (!hmi.waitForFinished(60000)) {
+    if (!hmi.waitForFinished(timeoutMs)) {
         hmi.kill();
-        run.errors = "m350-hmi did not finish within 60 s";
+        run.errors = QStringLiteral("m350-hmi did not finish within %1 s").arg(timeoutMs / 1000);
         return run;
     }
     run.exitCode = hmi.exitCode();
@@ -242,6 +244,62 @@ TEST(HmiReplay, ToolLifeViewShowsTheSisterAProgramBroughtIn) {
     ASSERT_EQ(rows.size(), 2);
     EXPECT_EQ(rows.at(0).toString(), "2|Minutes|1:00|T6|6|0|1:08|0:00|# Life reached") << "17 units of 4 s";
     EXPECT_EQ(rows.at(1).toString(), "|||T7|7|0|0:00|1:00|@ In use");
+}
+
+} // namespace m350::test
+
+namespace m350::test {
+
+// A long replay of real actions (tests/bench/ReplayMix.h: page switches, softkeys, jog taps in STEP
+// mode, overrides, wheel clicks, MDI lines, two program runs) ends the same played fast (the panel
+// laid out only where an action reads it, the machine in the panel's thread) as played the way
+// m350-hmi played every replay before (--eager-replay): the same state, the same screenshot.
+TEST(HmiReplay, ALongReplayOfRealActionsEndsAsTheEagerReplayEnds) {
+    constexpr long kActions = 5000;
+    QTemporaryDir dir;
+    QFile program(dir.filePath("part.nc"));
+    ASSERT_TRUE(program.open(QIODevice::WriteOnly));
+    program.write(QByteArray::fromStdString(ReplayMix::programText()));
+    program.close();
+    QFile replayFile(dir.filePath("mix.jsonl"));
+    ASSERT_TRUE(replayFile.open(QIODevice::WriteOnly));
+    ReplayMix(7, program.fileName().toStdString()).write(kActions, [&replayFile](const std::string& line) {
+        replayFile.write(QByteArray::fromStdString(line + "\n"));
+    });
+    replayFile.close();
+    const QStringList arguments{"--replay", replayFile.fileName(), "--programs", dir.path(), "--lang", "en"};
+    HmiRun fast = runHmi(arguments, 120000);
+    HmiRun eager = runHmi(QStringList{"--eager-replay"} + arguments, 240000);
+    ASSERT_EQ(fast.exitCode, 0) << fast.errors.toStdString();
+    ASSERT_EQ(eager.exitCode, 0) << eager.errors.toStdString();
+
+    // the replay did what it says: MDI lines kept, the program loaded, the machine moved and came back
+    EXPECT_FALSE(fast.state["mdi_lines"].toArray().isEmpty());
+    EXPECT_TRUE(fast.state["program"].toString().endsWith("part.nc")) << fast.state["program"].toString().toStdString();
+    // the work record's start date is the wall clock's: the one field two runs never share
+    QJsonObject fastState = fast.state;
+    QJsonObject eagerState = eager.state;
+    fastState.remove("work_record");
+    eagerState.remove("work_record");
+    EXPECT_EQ(QJsonDocument(fastState).toJson().toStdString(), QJsonDocument(eagerState).toJson().toStdString());
+
+    // every pixel the same but the status line's clock (the wall clock's time, at its right end)
+    ASSERT_FALSE(fast.screenshot.isNull());
+    ASSERT_EQ(fast.screenshot.size(), eager.screenshot.size());
+    const QImage a = fast.screenshot.convertToFormat(QImage::Format_RGB32);
+    const QImage b = eager.screenshot.convertToFormat(QImage::Format_RGB32);
+    int different = 0;
+    QString first;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            const bool clock = y >= 20 && y < 50 && x >= a.width() / 2;
+            if (!clock && a.pixel(x, y) != b.pixel(x, y)) {
+                first = first.isEmpty() ? QStringLiteral("%1,%2").arg(x).arg(y) : first;
+                ++different;
+            }
+        }
+    }
+    EXPECT_EQ(different, 0) << "first at " << first.toStdString();
 }
 
 } // namespace m350::test

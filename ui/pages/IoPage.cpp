@@ -230,11 +230,14 @@ void IoPage::rebuildTable(const PanelSnapshot& snapshot) {
             rows_.push_back({f.parameter, f.input});
         }
     }
-    table_->setRowCount(static_cast<int>(rows_.size()));
-    for (int row = 0; row < rows_.size(); ++row) {
-        for (int col = 0; col < ColumnCount; ++col) {
-            if (!table_->item(row, col)) {
-                table_->setItem(row, col, new QTableWidgetItem);
+    { // the fitted columns measured once, at the end of this block
+        const TableFill filling(table_);
+        table_->setRowCount(static_cast<int>(rows_.size()));
+        for (int row = 0; row < rows_.size(); ++row) {
+            for (int col = 0; col < ColumnCount; ++col) {
+                if (!table_->item(row, col)) {
+                    table_->setItem(row, col, new QTableWidgetItem);
+                }
             }
         }
     }

@@ -122,21 +122,24 @@ void LogPage::fill(const PanelSnapshot& snapshot) {
     const auto& entries = *snapshot.log;
     const QHash<QString, QString> words = eventTable();
     int count = std::min<int>(kShownRows, static_cast<int>(entries.size()));
-    table_->setRowCount(count);
-    for (int row = 0; row < count; ++row) {
-        const files::LogEntry& e = entries[entries.size() - 1 - static_cast<std::size_t>(row)];
-        QString key = QString::fromStdString(e.event);
-        QString text = words.value(key, key);
-        if (!e.detail.empty()) {
-            text += QStringLiteral(": ") + QString::fromStdString(e.detail);
+    { // the fitted columns measured once, at the end of this block
+        const TableFill filling(table_);
+        table_->setRowCount(count);
+        for (int row = 0; row < count; ++row) {
+            const files::LogEntry& e = entries[entries.size() - 1 - static_cast<std::size_t>(row)];
+            QString key = QString::fromStdString(e.event);
+            QString text = words.value(key, key);
+            if (!e.detail.empty()) {
+                text += QStringLiteral(": ") + QString::fromStdString(e.detail);
+            }
+            auto* time = new QTableWidgetItem(QString::fromStdString(e.time));
+            auto* event = new QTableWidgetItem(text);
+            if (e.event == "alarm" || e.event == "estop") {
+                event->setForeground(QColor(255, 120, 120));
+            }
+            table_->setItem(row, 0, time);
+            table_->setItem(row, 1, event);
         }
-        auto* time = new QTableWidgetItem(QString::fromStdString(e.time));
-        auto* event = new QTableWidgetItem(text);
-        if (e.event == "alarm" || e.event == "estop") {
-            event->setForeground(QColor(255, 120, 120));
-        }
-        table_->setItem(row, 0, time);
-        table_->setItem(row, 1, event);
     }
 }
 

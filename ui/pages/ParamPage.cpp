@@ -196,15 +196,18 @@ void ParamPage::showCategory(std::size_t category) {
     category_ = category;
     const auto& numbers = pages_->categories()[category].numbers;
     table_->clearContents();
-    table_->setRowCount(static_cast<int>(numbers.size()));
-    for (int row = 0; row < table_->rowCount(); ++row) {
-        const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
-        table_->setItem(row, Number, new QTableWidgetItem(QString::number(info.number)));
-        table_->setItem(row, Note, new QTableWidgetItem);
-        table_->setItem(row, Value, new QTableWidgetItem);
-        table_->setItem(row, Unit, new QTableWidgetItem(QString::fromStdString(info.unit)));
-        table_->item(row, Unit)->setToolTip(QString::fromStdString(info.unit));
-        table_->item(row, Value)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    { // the fitted columns measured once, at the end of this block
+        const TableFill filling(table_);
+        table_->setRowCount(static_cast<int>(numbers.size()));
+        for (int row = 0; row < table_->rowCount(); ++row) {
+            const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
+            table_->setItem(row, Number, new QTableWidgetItem(QString::number(info.number)));
+            table_->setItem(row, Note, new QTableWidgetItem);
+            table_->setItem(row, Value, new QTableWidgetItem);
+            table_->setItem(row, Unit, new QTableWidgetItem(QString::fromStdString(info.unit)));
+            table_->item(row, Unit)->setToolTip(QString::fromStdString(info.unit));
+            table_->item(row, Value)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        }
     }
     // the unit column is as wide as this group's longest unit ("pulse/mm", "mm/s^2"), the name
     // column takes the rest and shows a cut name in full as its tooltip
@@ -228,11 +231,14 @@ void ParamPage::showVariables(bool on) {
         return;
     }
     table_->clearContents();
-    table_->setRowCount(kLastVariable - kFirstVariable + 1);
-    for (int row = 0; row < table_->rowCount(); ++row) {
-        table_->setItem(row, Number, new QTableWidgetItem(QStringLiteral("#%1").arg(kFirstVariable + row)));
-        table_->setItem(row, Value, new QTableWidgetItem);
-        table_->item(row, Value)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    { // the fitted columns measured once, at the end of this block
+        const TableFill filling(table_);
+        table_->setRowCount(kLastVariable - kFirstVariable + 1);
+        for (int row = 0; row < table_->rowCount(); ++row) {
+            table_->setItem(row, Number, new QTableWidgetItem(QStringLiteral("#%1").arg(kFirstVariable + row)));
+            table_->setItem(row, Value, new QTableWidgetItem);
+            table_->item(row, Value)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        }
     }
     table_->selectRow(0);
     retranslate();

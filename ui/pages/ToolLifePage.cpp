@@ -122,24 +122,27 @@ void ToolLifePage::fill() {
             rows_.push_back({&group, &tool, &tool == &group.tools.front()});
         }
     }
-    table_->setRowCount(static_cast<int>(rows_.size()));
-    QFont bold = table_->font();
-    bold.setBold(true);
-    for (int row = 0; row < static_cast<int>(rows_.size()); ++row) {
-        const bool inUse = rowHighlighted(row);
-        for (int c = 0; c < kColumns; ++c) {
-            auto* item = new QTableWidgetItem(cellText(row, static_cast<Column>(c)));
-            if (c != static_cast<int>(Column::State) && c != static_cast<int>(Column::Kind)) {
-                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    { // the fitted columns measured once, at the end of this block
+        const TableFill filling(table_);
+        table_->setRowCount(static_cast<int>(rows_.size()));
+        QFont bold = table_->font();
+        bold.setBold(true);
+        for (int row = 0; row < static_cast<int>(rows_.size()); ++row) {
+            const bool inUse = rowHighlighted(row);
+            for (int c = 0; c < kColumns; ++c) {
+                auto* item = new QTableWidgetItem(cellText(row, static_cast<Column>(c)));
+                if (c != static_cast<int>(Column::State) && c != static_cast<int>(Column::Kind)) {
+                    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+                }
+                if (inUse) {
+                    item->setBackground(QBrush(QColor(30, 110, 60)));
+                    item->setForeground(QBrush(Qt::white));
+                    item->setFont(bold);
+                } else if (rows_[static_cast<std::size_t>(row)].tool->expired && c >= static_cast<int>(Column::Tool)) {
+                    item->setForeground(QBrush(QColor(255, 120, 120)));
+                }
+                table_->setItem(row, c, item);
             }
-            if (inUse) {
-                item->setBackground(QBrush(QColor(30, 110, 60)));
-                item->setForeground(QBrush(Qt::white));
-                item->setFont(bold);
-            } else if (rows_[static_cast<std::size_t>(row)].tool->expired && c >= static_cast<int>(Column::Tool)) {
-                item->setForeground(QBrush(QColor(255, 120, 120)));
-            }
-            table_->setItem(row, c, item);
         }
     }
     select(currentRow_);

@@ -146,14 +146,17 @@ void ToolTablePage::render(const PanelSnapshot& snapshot) {
 
 void ToolTablePage::fill() {
     rows_ = shown_->entries();
-    table_->setRowCount(static_cast<int>(rows_.size()));
-    for (int row = 0; row < static_cast<int>(rows_.size()); ++row) {
-        for (int c = 0; c < kColumns; ++c) {
-            auto* item = new QTableWidgetItem(cellText(row, static_cast<Column>(c)));
-            if (c != static_cast<int>(Column::Comment) && c != static_cast<int>(Column::Type)) {
-                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    { // the fitted columns measured once, at the end of this block
+        const TableFill filling(table_);
+        table_->setRowCount(static_cast<int>(rows_.size()));
+        for (int row = 0; row < static_cast<int>(rows_.size()); ++row) {
+            for (int c = 0; c < kColumns; ++c) {
+                auto* item = new QTableWidgetItem(cellText(row, static_cast<Column>(c)));
+                if (c != static_cast<int>(Column::Comment) && c != static_cast<int>(Column::Type)) {
+                    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+                }
+                table_->setItem(row, c, item);
             }
-            table_->setItem(row, c, item);
         }
     }
     auto kept = std::find_if(rows_.begin(), rows_.end(), [this](const tools::ToolEntry& e) { return e.tool == currentTool_; });

@@ -13,7 +13,6 @@
 #include <QMap>
 
 class QLabel;
-class QStackedWidget;
 
 namespace m350::ui {
 
@@ -21,6 +20,7 @@ class BackupImportFlow;
 class KeyPad;
 class Language;
 class Page;
+class PageStack;
 class SoftkeyBar;
 class StatusLine;
 
@@ -80,7 +80,7 @@ private:
     Language* language_;
     ActionDispatcher* dispatcher_;
     StatusLine* status_;
-    QStackedWidget* stack_;
+    PageStack* stack_;
     QLabel* message_;
     QLabel* alarm_;
     SoftkeyBar* softkeys_;

@@ -52,15 +52,18 @@ void ProgramList::showFolder(ProgramFiles::Disk disk, const QString& folder, Pro
     folder_ = folder;
     sort_ = sort;
     entries_ = ProgramFiles::list(folder, disk, sort);
-    table_->setRowCount(static_cast<int>(entries_.size()));
     const QLocale locale;
-    for (int row = 0; row < entries_.size(); ++row) {
-        const ProgramFiles::Entry& e = entries_[row];
-        auto* size = new QTableWidgetItem(locale.formattedDataSize(e.size, 1, QLocale::DataSizeTraditionalFormat));
-        size->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        table_->setItem(row, 0, new QTableWidgetItem(e.name));
-        table_->setItem(row, 1, size);
-        table_->setItem(row, 2, new QTableWidgetItem(e.modified.toString(QStringLiteral("yyyy-MM-dd HH:mm"))));
+    { // the fitted columns measured once, at the end of this block
+        const TableFill filling(table_);
+        table_->setRowCount(static_cast<int>(entries_.size()));
+        for (int row = 0; row < entries_.size(); ++row) {
+            const ProgramFiles::Entry& e = entries_[row];
+            auto* size = new QTableWidgetItem(locale.formattedDataSize(e.size, 1, QLocale::DataSizeTraditionalFormat));
+            size->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            table_->setItem(row, 0, new QTableWidgetItem(e.name));
+            table_->setItem(row, 1, size);
+            table_->setItem(row, 2, new QTableWidgetItem(e.modified.toString(QStringLiteral("yyyy-MM-dd HH:mm"))));
+        }
     }
     header_->setText(QStringLiteral("%1    %2 %3").arg(diskName(disk), tr("Cur Path:", "msg 952"),
                                                       QDir::toNativeSeparators(folder)));

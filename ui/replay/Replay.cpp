@@ -1,8 +1,10 @@
 #include "ui/replay/Replay.h"
 
+#include "ui/actions/PanelKey.h"
 #include "ui/pages/PageId.h"
 #include "ui/pages/ProgramPage.h"
 #include "ui/panel/MainWindow.h"
+#include "ui/replay/DeferredLayout.h"
 #include "ui/session/MachineSession.h"
 
 #include <QCoreApplication>
@@ -99,6 +101,28 @@ bool onProgramDisk(MainWindow& window, const QString& file, QStringList* disks) 
     return shown;
 }
 
+// Whether the action may read what the layout decides: anything that reaches the screen (a page,
+// a softkey, a cursor key moving a list, typed text, a question). The machine's own keys (cycle,
+// jog, overrides, the handwheel's switches), the wheel, a forced input, a load and time passing
+// go to the machine alone.
+bool readsLayout(const OperatorAction& action) {
+    using Kind = OperatorAction::Kind;
+    switch (action.kind) {
+    case Kind::Wait:
+    case Kind::Wheel:
+    case Kind::Force:
+    case Kind::Load: return false;
+    case Kind::Key:
+    case Kind::KeyDown:
+    case Kind::KeyUp: {
+        const PanelKey* key = PanelKey::named(action.name);
+        return !key || !(key->role == PanelKey::Role::Machine || key->role == PanelKey::Role::Jog ||
+                         key->role == PanelKey::Role::Wheel);
+    }
+    default: return true;
+    }
+}
+
 } // namespace
 
 std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QString* error,
@@ -168,7 +192,7 @@ void settle(MachineSession& session) {
 }
 
 QString playReplay(MainWindow& window, MachineSession& session, const std::vector<OperatorAction>& actions,
-                   const QString& path, const std::vector<ReplayPlace>& places) {
+                   const QString& path, const std::vector<ReplayPlace>& places, ReplayLayout layout) {
     constexpr double kFrame = 1.0 / 60.0;
     double now = 0.0;
     // nobody watches a replay's frames: the pages render each snapshot as always, but no widget
@@ -181,6 +205,10 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
         ~Restore() { window.setUpdatesEnabled(painting); }
     } restore{window, painting};
     settle(session);
+    std::optional<DeferredLayout> layouts;
+    if (layout == ReplayLayout::WhenRead) {
+        layouts.emplace();
+    }
     for (std::size_t i = 0; i < actions.size(); ++i) {
         const OperatorAction& action = actions[i];
         // a time mark with a later action after it: the panel need not see its moment (nothing is
@@ -210,11 +238,16 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
                 .arg(place.column)
                 .arg(action.name, disks.join(QStringLiteral(", ")));
         }
+        if (layouts && readsLayout(action)) {
+            layouts->catchUp();
+        }
         window.dispatcher().dispatch(action);
         if (action.kind != OperatorAction::Kind::Wait) { // time passing asks nothing of the machine
             settle(session);
         }
     }
+    settle(session);
+    layouts.reset();
     settle(session);
     return {};
 }

@@ -29,6 +29,12 @@ struct ReplayPlace {
 std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QString* error,
                                                       std::vector<ReplayPlace>* places = nullptr);
 
+// When a replay lays the panel out. EachAction: after every action, as the live panel does.
+// WhenRead: only before an action that may read what the layout decides (a list's scroll
+// position, the width of a question: any action on the screen rather than the machine) and at
+// the end; the end state and the screenshot are the same, the layout work a fraction.
+enum class ReplayLayout { EachAction, WhenRead };
+
 // Plays the actions against the panel in virtual time: time passes in display frames up to each
 // action's `t`, then the action goes through the dispatcher. Ends at the last action's time. Time
 // in which nothing happens passes at once (MachineSession::advanceWhileQuiet): the machine sees
@@ -36,7 +42,8 @@ std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QStri
 // on one of its disks (links followed): else the replay stops there. Empty when it played to its
 // end, else why not, at `path`:line:column from `places` (readReplay's).
 QString playReplay(MainWindow& window, MachineSession& session, const std::vector<OperatorAction>& actions,
-                   const QString& path = {}, const std::vector<ReplayPlace>& places = {});
+                   const QString& path = {}, const std::vector<ReplayPlace>& places = {},
+                   ReplayLayout layout = ReplayLayout::WhenRead);
 
 // Lets the session catch up and the window show the latest snapshot (for screenshots and tests).
 void settle(MachineSession& session);

@@ -4,6 +4,8 @@
 
 #include "core/config/MachineConfig.h"
 
+#include <QCoreApplication>
+#include <QEvent>
 #include <QMetaObject>
 
 #include <algorithm>
@@ -14,14 +16,21 @@ namespace m350::ui {
 MachineSession::MachineSession(config::MachineConfig config, Options options, QObject* parent)
     : QObject(parent), access_(QString::fromStdString(config.folder)) {
     qRegisterMetaType<SnapshotPtr>();
+    panelThread_ = options.panelThread && options.clock == Clock::Manual;
     worker_ = new SessionWorker(std::move(config), options);
-    worker_->moveToThread(&thread_);
-    connect(worker_, &SessionWorker::published, this, [this](const SnapshotPtr& snapshot) {
-        latest_ = snapshot;
-        emit snapshotReady(snapshot);
-    });
-    thread_.setObjectName("machine");
-    thread_.start();
+    // queued in either case: a snapshot reaches the panel when its event loop next runs
+    connect(
+        worker_, &SessionWorker::published, this,
+        [this](const SnapshotPtr& snapshot) {
+            latest_ = snapshot;
+            emit snapshotReady(snapshot);
+        },
+        Qt::QueuedConnection);
+    if (!panelThread_) {
+        worker_->moveToThread(&thread_);
+        thread_.setObjectName("machine");
+        thread_.start();
+    }
     post([](SessionWorker& w) { w.begin(); });
     logPasswordsProblem();
 }
@@ -39,7 +48,7 @@ void MachineSession::logPasswordsProblem() {
 }
 
 MachineSession::~MachineSession() {
-    QMetaObject::invokeMethod(worker_, [w = worker_] { w->finish(); }, Qt::BlockingQueuedConnection);
+    runNow([](SessionWorker& w) { w.finish(); });
     thread_.quit();
     thread_.wait();
     delete worker_;
@@ -47,6 +56,15 @@ MachineSession::~MachineSession() {
 
 void MachineSession::post(std::function<void(SessionWorker&)> call) {
     QMetaObject::invokeMethod(worker_, [w = worker_, call = std::move(call)] { call(*w); }, Qt::QueuedConnection);
+}
+
+void MachineSession::runNow(const std::function<void(SessionWorker&)>& call) {
+    if (panelThread_) {
+        QCoreApplication::sendPostedEvents(worker_, QEvent::MetaCall); // what was posted before, in order
+        call(*worker_);
+        return;
+    }
+    QMetaObject::invokeMethod(worker_, [w = worker_, &call] { call(*w); }, Qt::BlockingQueuedConnection);
 }
 
 void MachineSession::start() { post([](SessionWorker& w) { w.start(); }); }
@@ -146,21 +164,19 @@ void MachineSession::advance(double seconds) {
     constexpr double kFrame = 1.0 / 60.0;
     while (seconds > 1e-12) {
         double step = std::min(kFrame, seconds);
-        QMetaObject::invokeMethod(worker_, [w = worker_, step] { w->advanceManual(step); },
-                                  Qt::BlockingQueuedConnection);
+        runNow([step](SessionWorker& w) { w.advanceManual(step); });
         seconds -= step;
     }
 }
 
 double MachineSession::advanceWhileQuiet(double seconds, bool publishAtEnd) {
     double passed = 0.0;
-    QMetaObject::invokeMethod(worker_, [w = worker_, seconds, publishAtEnd, &passed] { passed = w->advanceWhileQuiet(seconds, publishAtEnd); },
-                              Qt::BlockingQueuedConnection);
+    runNow([seconds, publishAtEnd, &passed](SessionWorker& w) { passed = w.advanceWhileQuiet(seconds, publishAtEnd); });
     return passed;
 }
 
 void MachineSession::sync() {
-    QMetaObject::invokeMethod(worker_, [w = worker_] { w->publish(); }, Qt::BlockingQueuedConnection);
+    runNow([](SessionWorker& w) { w.publish(); });
 }
 
 } // namespace m350::ui

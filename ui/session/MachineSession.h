@@ -47,6 +47,10 @@ public:
         std::vector<machine::ToolBreak> toolBreaks; // --break: tools that break in the simulated world
         // --dprnt-limit: the most bytes of DPRNT output dprnt.txt keeps (the first and the last records)
         std::uint64_t externalOutputLimit = controller::RunSettings{}.externalOutputLimit;
+        // Manual clock only: the machine runs in the panel's own thread, its calls queued to the
+        // panel's event loop in the same order, so a headless replay hands nothing between threads
+        // (two thread switches an action cost more than the action on a busy machine).
+        bool panelThread = false;
     };
     MachineSession(config::MachineConfig config, Options options, QObject* parent = nullptr);
     ~MachineSession() override;
@@ -152,7 +156,10 @@ signals:
 
 private:
     void post(std::function<void(SessionWorker&)> call);
+    // Runs `call` in the worker after every call posted before it, and waits for it.
+    void runNow(const std::function<void(SessionWorker&)>& call);
     QThread thread_;
+    bool panelThread_ = false;
     SessionWorker* worker_ = nullptr;
     SnapshotPtr latest_;
     UserAccess access_;

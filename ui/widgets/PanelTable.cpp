@@ -37,4 +37,20 @@ QTableWidget* addPanelTable(QVBoxLayout* column, QWidget* page, int columns, con
     return table;
 }
 
+TableFill::TableFill(QTableWidget* table) : table_(table) {
+    QHeaderView* header = table_->horizontalHeader();
+    for (int c = 0; c < header->count(); ++c) {
+        if (header->sectionResizeMode(c) == QHeaderView::ResizeToContents) {
+            fitted_.push_back(c);
+            header->setSectionResizeMode(c, QHeaderView::Fixed);
+        }
+    }
+}
+
+TableFill::~TableFill() {
+    for (int c : fitted_) {
+        table_->horizontalHeader()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
+    }
+}
+
 } // namespace m350::ui
