@@ -45,6 +45,7 @@ double peakRssMb() {
 void previewOf(benchmark::State& state, std::size_t lines) {
     const std::string path = program(lines).path();
     std::size_t bytes = 0, moves = 0;
+    double coarsened = 0.0;
     for (auto _ : state) {
         preview::Preview p = preview::buildPreview(machine(), path);
         if (!p.loaded || p.alarm) {
@@ -53,11 +54,13 @@ void previewOf(benchmark::State& state, std::size_t lines) {
         }
         bytes = p.bytes();
         moves = p.path.size();
+        coarsened = p.coarsenedTo;
         benchmark::DoNotOptimize(p.path.bounds());
     }
     state.counters["moves"] = double(moves);
     state.counters["bytes_per_move"] = moves ? double(bytes) / double(moves) : 0.0;
     state.counters["peak_rss_mb"] = peakRssMb();
+    state.counters["coarsened_to_mm"] = coarsened;
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines));
 }
 
@@ -66,6 +69,11 @@ BENCHMARK(BM_Preview_1M)->Unit(benchmark::kMillisecond);
 
 void BM_Preview_10M(benchmark::State& state) { previewOf(state, 10'000'000); }
 BENCHMARK(BM_Preview_10M)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// 32,000,000 lines, about 1.1 GB: past the 12-million-move budget, so the path is coarsened
+// (counter coarsened_to_mm) and memory stays bounded (run it alone: --benchmark_filter=Preview_1GB).
+void BM_Preview_1GB(benchmark::State& state) { previewOf(state, 32'000'000); }
+BENCHMARK(BM_Preview_1GB)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // What a frame walks: the coarsest level fine enough for the scale, the chunks whose box meets the
 // view, their points. At 1000 pixels for the whole path, then for a tenth of it.

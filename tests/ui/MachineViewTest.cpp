@@ -235,6 +235,37 @@ TEST(MachineView, ACrashIntoAPocketIsMarkedAtThePocket) {
                 colourNear(image, at + QPointF(0, -16), QColor(0xff, 0x30, 0x30).darker(220), 2));
 }
 
+// A program past the preview's memory budget is drawn simplified, and the view says so.
+TEST(MachineView, APathPastTheBudgetIsSimplifiedAndSaysSo) {
+    auto loaded = config::loadMachineFolder(
+        (std::filesystem::path(config::bundledMachinesDirectory()) / "m350-linear16").string());
+    ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(loaded));
+    QTemporaryDir dir;
+    const QString path = dir.filePath("zigzag.nc");
+    QByteArray text = "G90 G0 X0 Y0\n";
+    for (int i = 0; i < 3000; ++i) {
+        text += QByteArray("G1 X") + QByteArray::number(i % 2 ? 50 : 0) + " Y" + QByteArray::number(i * 0.01) + " F6000\n";
+    }
+    text += "M30\n";
+    test::putFile(path, text);
+    preview::PreviewSettings settings;
+    settings.segmentBudget = 1000;
+    auto built = std::make_shared<const preview::Preview>(
+        preview::buildPreview(std::get<config::MachineConfig>(std::move(loaded)), path.toStdString(), settings));
+    ASSERT_GT(built->coarsenedTo, 0.0);
+    EXPECT_LE(built->path.size(), 1000u);
+    EXPECT_GE(built->moves, 3001u);
+    ui::MachineView view;
+    view.resize(640, 400);
+    ui::MachineViewContent content;
+    content.preview.file = path;
+    content.preview.preview = built;
+    view.setContent(content);
+    EXPECT_TRUE(view.notes().join(" ").contains(ui::MachineView::tr("Simplified to %1 mm (memory budget)").section('%', 0, 0)))
+        << view.notes().join(" ").toStdString();
+    EXPECT_GT(view.state()["path"].toObject()["coarsenedTo"].toDouble(), 0.0);
+}
+
 TEST(MachineView, KeysZoomPanAndFit) {
     PanelHarness panel;
     panel.loadProgram("square.nc", kSquare);

@@ -365,6 +365,16 @@ void MachineView::paintOverlay(QPainter& painter, ViewPlane plane, const QRect& 
     painter.setPen(kText);
     const QRect inner(6, 4, pane.width() - 12, pane.height() - 8);
     painter.drawText(inner, Qt::AlignLeft | Qt::AlignTop, plane == ViewPlane::Top ? tr("X-Y  Top view") : tr("X-Z  Front view"));
+    painter.drawText(inner, Qt::AlignRight | Qt::AlignTop, notes().join(QLatin1Char('\n')));
+    if (highlight_) {
+        painter.setPen(kPicked);
+        painter.drawText(inner, Qt::AlignRight | Qt::AlignBottom,
+                         QStringLiteral("%1:%2").arg(highlight_->file.section(QLatin1Char('/'), -1)).arg(highlight_->line));
+    }
+    paintScaleBar(painter, view, pane);
+}
+
+QStringList MachineView::notes() const {
     QStringList notes;
     const auto& built = content_.preview.preview;
     if (content_.preview.building) {
@@ -381,13 +391,7 @@ void MachineView::paintOverlay(QPainter& painter, ViewPlane plane, const QRect& 
     } else if (!content_.preview.building) {
         notes << tr("No program path");
     }
-    painter.drawText(inner, Qt::AlignRight | Qt::AlignTop, notes.join(QLatin1Char('\n')));
-    if (highlight_) {
-        painter.setPen(kPicked);
-        painter.drawText(inner, Qt::AlignRight | Qt::AlignBottom,
-                         QStringLiteral("%1:%2").arg(highlight_->file.section(QLatin1Char('/'), -1)).arg(highlight_->line));
-    }
-    paintScaleBar(painter, view, pane);
+    return notes;
 }
 
 void MachineView::paintScaleBar(QPainter& painter, const ViewTransform& view, const QRect& pane) {

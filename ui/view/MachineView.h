@@ -8,6 +8,7 @@
 #include <QImage>
 #include <QJsonObject>
 #include <QString>
+#include <QStringList>
 #include <QTimer>
 #include <QWidget>
 
@@ -72,6 +73,9 @@ public:
     };
     const std::optional<Fault>& fault() const { return fault_; }
     std::size_t lastDrawnLines() const { return drawnLines_; }
+    // The lines the pane's corner shows: the path's moves, that it is being built, simplified to
+    // a tolerance (a program past the memory budget), or that there is none.
+    QStringList notes() const;
     QJsonObject state() const;
 
 signals:
