@@ -49,8 +49,10 @@ public:
             path.addLine(segment);
         }
         if (path.size() >= settings_.segmentBudget) {
-            // twice as coarse each time: the store halves at least, so this stays rare
-            preview_.coarsenedTo = preview_.coarsenedTo > 0.0 ? preview_.coarsenedTo * 2.0 : firstTolerance();
+            // the moves since the last time at the tolerance reached so far first (the older ones
+            // are within it already); twice as coarse only while that leaves more than half the
+            // budget, so the store halves at least and this stays rare
+            preview_.coarsenedTo = preview_.coarsenedTo > 0.0 ? preview_.coarsenedTo : firstTolerance();
             path.coarsen(preview_.coarsenedTo);
             while (path.size() * 2 > settings_.segmentBudget) {
                 preview_.coarsenedTo *= 2.0;

@@ -86,6 +86,9 @@ TEST(PathPreview, AProgramOverTheBudgetIsMergedNotDropped) {
     EXPECT_EQ(p.moves, 20001u);
     EXPECT_GT(p.coarsenedTo, 0.0);
     EXPECT_LE(p.path.size(), 1000u);
+    // no coarser than the budget needs: 200 mm in 1000 moves is 0.2 mm a move (the tolerance
+    // doubled at every budget hit went to metres)
+    EXPECT_LT(p.coarsenedTo, 1.0);
     // the whole program is still there: it ends where the program does, the last rapid a rapid
     const preview::Point3 end = p.path.position();
     EXPECT_FLOAT_EQ(end.x, 0.0F);
