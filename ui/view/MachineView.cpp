@@ -65,12 +65,11 @@ void MachineView::setContent(MachineViewContent content) {
     content_ = std::move(content);
     if (newPath) {
         highlight_.reset();
-        fittedPath_ = false;
+        autoFitted_ = false; // a machine drawn before its path came is fitted again when the path comes
     }
-    if (!fittedPath_ && (content_.preview.preview || content_.scene)) {
+    if (!autoFitted_ && (content_.preview.preview || content_.scene)) {
         fit();
-        // a machine drawn before its path came is fitted again when the path comes
-        fittedPath_ = content_.preview.preview != nullptr;
+        autoFitted_ = true;
     }
     if (content_.alarm.isEmpty()) {
         fault_.reset();
@@ -193,8 +192,11 @@ void MachineView::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
     // keep what is in the middle in the middle, at the same scale
     layoutPanes();
-    if (!fittedPath_) {
+    // a fitted view stays fitted to the new size
+    if (fitted_ == Fitted::Path) {
         fit();
+    } else if (fitted_ == Fitted::Machine) {
+        fitMachine();
     }
 }
 

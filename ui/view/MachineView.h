@@ -102,7 +102,7 @@ private:
     MachineViewContent content_;
     std::array<ViewTransform, 2> views_;
     ViewPlane plane_ = ViewPlane::Top;
-    bool fittedPath_ = false; // the current path has been fitted once
+    bool autoFitted_ = false; // fitted by itself since the path (or the machine) came
     enum class Fitted { Free, Path, Machine };
     Fitted fitted_ = Fitted::Free;
     std::optional<Highlight> highlight_;

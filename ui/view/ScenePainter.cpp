@@ -69,7 +69,9 @@ void paintHeads(QPainter& painter, const preview::MachineScene& scene, const Sce
             ScenePainter::paintTool(painter, tool, at, plane, view, head.atStation ? kToolInSpindle : kToolInPocket);
         }
         painter.setPen(head.atStation ? Qt::white : kPocket);
-        painter.drawText(view.toPixel(on(plane, at)) + QPointF(6, -6), QStringLiteral("H%1").arg(head.number));
+        // stacked: heads often share a place (offsets of 0 until commissioned)
+        painter.drawText(view.toPixel(on(plane, at)) + QPointF(8, -6 - 13.0 * (head.number - 1)),
+                         head.tool != 0 ? QStringLiteral("H%1:T%2").arg(head.number).arg(head.tool) : QStringLiteral("H%1").arg(head.number));
     }
 }
 
