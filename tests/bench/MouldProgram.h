@@ -28,8 +28,10 @@ inline void writeMouldProgram(std::ostream& out, std::size_t lines) {
             n = std::snprintf(line, sizeof line, "G%d X%.3f Y%.3f I%.3f J0\n", dir > 0 ? 2 : 3, to, y, double(dir));
             x = to;
         } else {
-            if (x > 200.0 || x < 0.0) {
-                // the next row: this line steps over, the arcs stay in their row
+            if ((x > 200.0 && dir > 0) || (x < 0.0 && dir < 0)) {
+                // the next row: this line steps over, the arcs stay in their row (only when moving
+                // outward: the check turned back and forth at the edge, so the rows never reversed
+                // and the "raster" was a band kilometres long)
                 dir = -dir;
                 y = y > 200.0 ? 0.0 : y + 0.2;
             }

@@ -99,6 +99,39 @@ TEST(PathPreview, AProgramOverTheBudgetIsMergedNotDropped) {
     EXPECT_LT(p.path.bytes(), 1000u * 40u + 4 * sizeof(preview::PathStore::Chunk) + 200000u);
 }
 
+// A CAM raster with half circles (arcs a third of the moves): past the budget the arcs merge
+// too, at the tolerance the path's length needs, not more.
+TEST(PathPreview, ARasterWithArcsOverTheBudgetIsMergedToTheToleranceItNeeds) {
+    std::string text = "G90 G17 G1 F1500\n";
+    double x = 0.0, y = 0.0;
+    int dir = 1;
+    for (int i = 0; i < 30000; ++i) {
+        if (i % 3 == 2) {
+            const double to = x + 2.0 * dir;
+            text += std::string(dir > 0 ? "G2" : "G3") + " X" + std::to_string(to) + " Y" + std::to_string(y) + " I" +
+                    std::to_string(double(dir)) + " J0\n";
+            x = to;
+        } else {
+            if (x > 200.0 || x < 0.0) {
+                dir = -dir;
+                y += 0.2;
+            }
+            x += 0.05 * dir;
+            text += "G1 X" + std::to_string(x) + " Y" + std::to_string(y) + "\n";
+        }
+    }
+    text += "M30\n";
+    preview::PreviewSettings settings;
+    settings.segmentBudget = 3000;
+    preview::Preview p = preview::buildPreview(m350Machine(), writeTempFile(text), settings);
+    ASSERT_TRUE(p.loaded);
+    EXPECT_LE(p.path.size(), 3000u);
+    // the path is about 10,000 half circles of pi mm and 20,000 steps of 0.05 mm: 32,400 mm,
+    // so 1,500 moves (half the budget) of about 22 mm would do; four times that is the bound
+    EXPECT_GT(p.coarsenedTo, 0.0);
+    EXPECT_LT(p.coarsenedTo, 4.0 * 22.0) << "merged " << p.path.size();
+}
+
 TEST(PathPreview, CoarserLevelsForSmallViewsEachAQuarterOfTheOneBelow) {
     std::string text = "G90 G1 F1000\n";
     for (int i = 0; i < 60000; ++i) {
