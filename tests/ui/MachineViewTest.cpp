@@ -56,6 +56,22 @@ ui::MachineView* openGraphics(PanelHarness& panel) {
     return page ? page->view() : nullptr;
 }
 
+// Loads `program`, opens the view and runs the program until it stops with its alarm.
+ui::MachineView* runToAlarm(PanelHarness& panel, const QString& name, const QByteArray& program) {
+    panel.loadProgram(name, program);
+    ui::MachineView* view = openGraphics(panel);
+    panel.key("START");
+    panel.advance(10.0);
+    EXPECT_TRUE(panel.session().latest()->status.alarm) << "the program should stop with an alarm";
+    return view;
+}
+
+// The fault mark's ring (bright or dim: it flashes) near a pixel.
+bool faultRingNear(const QImage& image, QPointF at) {
+    const QColor ring(0xff, 0x30, 0x30);
+    return colourNear(image, at, ring, 2) || colourNear(image, at, ring.darker(220), 2);
+}
+
 // A rectangle 100 x 50 from work zero, then up.
 const QByteArray kSquare = "G90 G0 X0 Y0 Z5\nG1 Z-1 F3000\nG1 X100\nG1 Y50\nG1 X0\nG1 Y0\nG0 Z5\nM30\n";
 
@@ -158,11 +174,8 @@ TEST(MachineView, AClickOnAMoveOpensItsLineInTheEditor) {
 
 TEST(MachineView, AnAlarmIsMarkedWhereTheSpindleStoodUntilReset) {
     PanelHarness panel;
-    panel.loadProgram("alarm.nc", "G90 G0 X30 Y20\n#3000=1(BAD)\nM30\n");
-    ui::MachineView* view = openGraphics(panel);
+    ui::MachineView* view = runToAlarm(panel, "alarm.nc", "G90 G0 X30 Y20\n#3000=1(BAD)\nM30\n");
     ASSERT_NE(view, nullptr);
-    panel.key("START");
-    panel.advance(10.0);
     const auto snapshot = panel.session().latest();
     ASSERT_TRUE(snapshot->status.alarm);
     ASSERT_TRUE(view->fault());
@@ -171,9 +184,7 @@ TEST(MachineView, AnAlarmIsMarkedWhereTheSpindleStoodUntilReset) {
     EXPECT_TRUE(view->fault()->text.contains("BAD"));
     const QImage image = view->grab().toImage();
     const QPointF at = pixelOf(*view, ViewPlane::Top, snapshot->status.machine(0), snapshot->status.machine(1), 0.0);
-    EXPECT_TRUE(colourNear(image, at + QPointF(16, 0), QColor(0xff, 0x30, 0x30), 2) ||
-                colourNear(image, at + QPointF(16, 0), QColor(0xff, 0x30, 0x30).darker(220), 2))
-        << "the marker's ring around the place";
+    EXPECT_TRUE(faultRingNear(image, at + QPointF(16, 0))) << "the marker's ring around the place";
     EXPECT_EQ(view->state()["fault"].toObject()["text"].toString(), view->fault()->text);
     panel.key("RESET");
     panel.advance(0.1);
@@ -217,11 +228,8 @@ TEST(MachineView, TheRacksToolsAndTheSpindlesAreDrawnWhereTheParametersPutThem) 
 // T1 driven sideways into pocket 4 (X230 Y5 Z-80, holding T4): the crash alarm is marked there.
 TEST(MachineView, ACrashIntoAPocketIsMarkedAtThePocket) {
     PanelHarness panel;
-    panel.loadProgram("crash.nc", "G53 G0 Z0\nG53 G0 X230 Y60\nG53 G0 Z-80\nG53 G1 Y5 F2000\nM30\n");
-    ui::MachineView* view = openGraphics(panel);
+    ui::MachineView* view = runToAlarm(panel, "crash.nc", "G53 G0 Z0\nG53 G0 X230 Y60\nG53 G0 Z-80\nG53 G1 Y5 F2000\nM30\n");
     ASSERT_NE(view, nullptr);
-    panel.key("START");
-    panel.advance(10.0);
     const auto snapshot = panel.session().latest();
     ASSERT_TRUE(snapshot->status.alarm);
     EXPECT_EQ(snapshot->status.alarm->code, AlarmCode::Crash);
@@ -231,8 +239,7 @@ TEST(MachineView, ACrashIntoAPocketIsMarkedAtThePocket) {
     EXPECT_NEAR(view->fault()->at.z, -80.0, 1e-6);
     const QImage image = view->grab().toImage();
     const QPointF at = pixelOf(*view, ViewPlane::Top, 230.0, view->fault()->at.y, -80.0);
-    EXPECT_TRUE(colourNear(image, at + QPointF(0, -16), QColor(0xff, 0x30, 0x30), 2) ||
-                colourNear(image, at + QPointF(0, -16), QColor(0xff, 0x30, 0x30).darker(220), 2));
+    EXPECT_TRUE(faultRingNear(image, at + QPointF(0, -16)));
 }
 
 // A program past the preview's memory budget is drawn simplified, and the view says so.
