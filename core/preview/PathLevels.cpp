@@ -114,8 +114,10 @@ PathLevels PathLevels::build(const PathStore& store, std::size_t smallest) {
     }
     const double diagonal =
         std::hypot(box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z);
-    // the finest level: a 4096-pixel view of the whole path loses nothing in it
-    double tolerance = std::max(diagonal / 8192.0, 1e-4);
+    // the finest level: a 4096-pixel view of the whole path loses nothing in it; and no finer
+    // than a quarter of the moves would need (a level keeps about length / tolerance points), so
+    // a dense path does not pass over its moves again and again for levels that keep too many
+    double tolerance = std::max({diagonal / 8192.0, 1e-4, 4.0 * store.length() / double(store.size())});
     std::size_t below = store.size();
     while (tolerance < diagonal) {
         Level level = levels.levels_.empty() ? fromStore(store, tolerance) : fromLevel(levels.levels_.back(), tolerance);

@@ -36,11 +36,14 @@ void PathStore::addLine(const PathSegment& segment) {
     Box box;
     box.add(position_);
     box.add(segment.end);
+    length_ += std::hypot(segment.end.x - position_.x, segment.end.y - position_.y, segment.end.z - position_.z);
     add(segment, nullptr, box);
 }
 
 void PathStore::addArc(const PathSegment& segment, ArcCentre centre) {
-    add(segment, &centre, PlanarArc(position_, segment, centre).box());
+    const PlanarArc arc(position_, segment, centre);
+    length_ += std::hypot(arc.radius * arc.sweep, arc.endW - arc.startW);
+    add(segment, &centre, arc.box());
 }
 
 std::uint16_t PathStore::fileIndex(const std::string& name) {
@@ -71,6 +74,7 @@ void PathStore::coarsen(double tolerance) {
     position_ = start;
     size_ = 0;
     arcCount_ = 0;
+    length_ = 0.0;
     // the path so far is kept; a point closer than `tolerance` to the last kept one is dropped,
     // unless the kind of move changes there (a rapid stays a rapid)
     Point3 kept = start;

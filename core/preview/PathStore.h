@@ -40,6 +40,8 @@ public:
     std::size_t size() const { return size_; }
     std::size_t arcCount() const { return arcCount_; }
     Box bounds() const { return bounds_; }
+    // How long the path is, mm (an arc along its arc): a view level's tolerance from it.
+    double length() const { return length_; }
     // Bytes the store holds (capacities, not sizes): what the budget counts.
     std::size_t bytes() const;
 
@@ -58,6 +60,7 @@ private:
     Box bounds_;
     std::size_t size_ = 0;
     std::size_t arcCount_ = 0;
+    double length_ = 0.0;
 };
 
 } // namespace m350::preview
