@@ -6,6 +6,7 @@
 #include "core/preview/ArcPoints.h"
 #include "core/preview/PreviewBuilder.h"
 
+#include <atomic>
 #include <cmath>
 
 namespace m350::test {
@@ -130,6 +131,25 @@ TEST(PathPreview, ARasterWithArcsOverTheBudgetIsMergedToTheToleranceItNeeds) {
     // so 1,500 moves (half the budget) of about 22 mm would do; four times that is the bound
     EXPECT_GT(p.coarsenedTo, 0.0);
     EXPECT_LT(p.coarsenedTo, 4.0 * 22.0) << "merged " << p.path.size();
+}
+
+// A build nobody waits for any more stops at its next few thousand moves, inside the run of an
+// endless program, and says it was cancelled (the preview's own controller is left by an
+// exception: the sanitizer build runs this too).
+TEST(PathPreview, ACancelledBuildStopsInsideTheRun) {
+    const std::string program = writeTempFile("#1=0\nWHILE[#1 LT 1]DO1\nG1 X10 F60000\nG1 X0\nEND1\nM30\n");
+    std::atomic<bool> cancel{true}; // cancelled before it starts: it stops at its first check
+    preview::PreviewSettings settings;
+    settings.cancel = &cancel;
+    const preview::Preview p = preview::buildPreview(m350Machine(), program, settings);
+    EXPECT_TRUE(p.loaded);
+    EXPECT_TRUE(p.cancelled);
+    EXPECT_EQ(p.moves, 4096u) << "the first check comes at 4,096 moves";
+    cancel = false;
+    settings.maxSimTime = 2000.0; // not cancelled: the endless loop ends at the time limit
+    const preview::Preview whole = preview::buildPreview(m350Machine(), program, settings);
+    EXPECT_FALSE(whole.cancelled);
+    EXPECT_GT(whole.moves, 4096u);
 }
 
 TEST(PathPreview, CoarserLevelsForSmallViewsEachAQuarterOfTheOneBelow) {
