@@ -49,6 +49,13 @@ void frames(benchmark::State& state, double zoom, bool running) {
     view.setContent(contentAt(0));
     view.fit();
     if (zoom > 1.0) {
+        // about the middle of the raster (the path's box reaches back to machine zero, where the
+        // program starts from)
+        const auto& path = millionMoves()->path;
+        const auto& middle = path.chunks()[path.chunks().size() / 2].start;
+        const ui::ViewTransform& top = view.transform(ui::ViewPlane::Top);
+        const QPointF at = top.toPixel({middle.x, middle.y});
+        view.panBy(at.x() - top.size().width() / 2.0, at.y() - top.size().height() / 2.0);
         view.zoomBy(zoom);
     }
     QImage image(view.size(), QImage::Format_ARGB32_Premultiplied);

@@ -46,7 +46,42 @@ void pieces(const preview::PathSegment& s, const Point3& start, const preview::A
 }
 
 
+// The moves or points of the chunks in view: what a frame would draw.
+template <class Chunks, class Size>
+std::size_t inView(const Chunks& chunks, ViewPlane plane, const QRectF& visible, Size size) {
+    std::size_t n = 0;
+    for (const auto& chunk : chunks) {
+        if (shows(visible, planeBox(plane, chunk.box))) {
+            n += size(chunk);
+        }
+    }
+    return n;
+}
+
 } // namespace
+
+// The level for the scale (PathLevels::forScale), or a coarser one while the one for the scale
+// would draw more than kMostLines in view: a path far denser than the pixels (a CAM raster seen
+// whole, a kilometre of moves in 200 mm) fills its area either way, and a frame stays in its 16 ms.
+const preview::PathLevels::Level* PathPainter::levelFor(const preview::Preview& preview, ViewPlane plane,
+                                                         const ViewTransform& view, const QRectF& visible) {
+    const auto& levels = preview.levels.levels();
+    const preview::PathLevels::Level* level = preview.levels.forScale(view.mmPerPixel());
+    std::size_t index = level ? std::size_t(level - levels.data()) : 0;
+    if (!level) {
+        const std::size_t moves =
+            inView(preview.path.chunks(), plane, visible, [](const preview::PathStore::Chunk& c) { return c.segments.size(); });
+        if (moves <= kMostLines || levels.empty()) {
+            return nullptr;
+        }
+        level = &levels.front();
+    }
+    while (index + 1 < levels.size() &&
+           inView(level->chunks, plane, visible, [](const preview::PathLevels::Chunk& c) { return c.points.size(); }) > kMostLines) {
+        level = &levels[++index];
+    }
+    return level;
+}
 
 // The lines of a frame by pen; a line wholly to one side of the pixels shown is left out (a chunk
 // partly in view brings all its moves).
@@ -69,7 +104,7 @@ std::size_t PathPainter::paint(QPainter& painter, const preview::Preview& previe
                                std::size_t done, const Colours& colours) {
     const QRectF visible = view.visibleMm().adjusted(-view.mmPerPixel(), -view.mmPerPixel(), view.mmPerPixel(), view.mmPerPixel());
     LineBuckets lines(view.size());
-    if (const preview::PathLevels::Level* level = preview.levels.forScale(view.mmPerPixel())) {
+    if (const preview::PathLevels::Level* level = levelFor(preview, plane, view, visible)) {
         for (const preview::PathLevels::Chunk& chunk : level->chunks) {
             if (!shows(visible, planeBox(plane, chunk.box))) {
                 continue;

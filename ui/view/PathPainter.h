@@ -44,7 +44,12 @@ public:
     // The move drawn nearest to pixel `at`, within `radius` pixels.
     static std::optional<std::size_t> hit(const preview::PathStore& path, ViewPlane plane, const ViewTransform& view,
                                           QPointF at, double radius);
+    // The most lines a frame draws of a path before it takes a coarser level (about 5 ms).
+    static constexpr std::size_t kMostLines = 100'000;
+
 private:
+    static const preview::PathLevels::Level* levelFor(const preview::Preview& preview, ViewPlane plane,
+                                                      const ViewTransform& view, const QRectF& visible);
     static void drawBuckets(QPainter& painter, const LineBuckets& lines, const Colours& colours);
 
 public:
