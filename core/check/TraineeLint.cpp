@@ -155,6 +155,9 @@ private:
     static int number(const ExprNode& node) { return roundToInt(node.number); }
 
     template <typename F> void forEachVariable(ExprId root, F visit) const {
+        if (root == gcode::kNoExpr || pool_[root].kind == ExprKind::Number) {
+            return; // most words: no allocation for them
+        }
         std::vector<ExprId> pending{root};
         while (!pending.empty()) {
             const ExprId id = pending.back();
