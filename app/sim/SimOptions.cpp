@@ -222,6 +222,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     check->add_option("PROGRAM", o.program, "program file (.nc)")->required();
     addMachineOptions(check);
     addLanguageOption(check);
+    check->add_flag("--lint", o.lint,
+                    "also warn about what runs but is seldom meant: an input wait with no way out, a variable read "
+                    "before it is set, an output left on, M30 right after M6");
     CLI::App* import = app.add_subcommand("import", "make a machine folder from a copy of an M350's system disk");
     import->add_option("BACKUP_DIR", o.backupDir, "the backup: the folder that holds setting, slib-g.nc ...")
         ->required()

@@ -21,6 +21,7 @@ struct SimOptions {
     std::vector<int> printVariables;
     std::optional<std::string> traceFile;
     std::optional<std::string> outputFile; // --dprnt: where POPEN/DPRNT/BPRNT/PCLOS output goes
+    bool lint = false;                   // check --lint: the trainee lints (check::TraineeLint) too
     bool home = false;                   // 回零 every axis that has a home switch before the run
     std::optional<std::string> toolTableFile; // --tool-table: instead of the folder's tool.tbl
     std::optional<std::string> toolsOut;      // --tools-out: the tool table after the run

@@ -11,6 +11,7 @@
 #include "app/sim/SpindleLoadJson.h"
 
 #include "core/check/StaticCheck.h"
+#include "core/check/TraineeLint.h"
 #include "core/config/CallCodeParameters.h"
 #include "core/params/FanucParameters.h"
 #include "core/files/OutputFile.h"
@@ -87,6 +88,14 @@ int check(controller::Controller& controller, const sim::SimOptions& o) {
                                {machine.variableLayout, {machine.additionalWorkSystems(), machine.rotation()}})
                 .findings();
         diagnostics.insert(diagnostics.end(), findings.begin(), findings.end());
+        if (o.lint) {
+            if (const std::optional<std::uint32_t> main = controller.program().mainUnit()) {
+                std::vector<gcode::Diagnostic> lints =
+                    check::TraineeLint(controller.program(), *machine.dialect, machine.variableLayout)
+                        .findings(controller.program().units[*main].file);
+                diagnostics.insert(diagnostics.end(), lints.begin(), lints.end());
+            }
+        }
     }
     return checkResult(diagnostics, o.language);
 }

@@ -69,6 +69,7 @@ std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint3
     depth_ = 0;
     lastLint_ = {};
     assignments_.clear();
+    lintNestedComments();
     Block block;
     block.location = {fileIndex_, lineNumber, tokens_.front().column};
     try {

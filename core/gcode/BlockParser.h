@@ -126,6 +126,7 @@ private:
     void checkExponents();
     std::string hashBracketHint(std::size_t fromToken, std::size_t toToken) const;
     void lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken);
+    void lintNestedComments();
     std::optional<Block> brokenLoopBlock(Block block) const;
     std::string describe(const Token& token) const;
     std::string source(const Token& token) const;

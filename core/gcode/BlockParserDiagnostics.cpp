@@ -187,4 +187,24 @@ void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, 
     }
 }
 
+// `(rough (T1) pass)`: comments do not nest, on the M350 ("nested parentheses inside comments
+// fail", community test reports) as on FANUC. The comment ends at the first ')' and `pass)` is read
+// as words; said at the inner '(' so the alarm that follows makes sense.
+void BlockParser::lintNestedComments() {
+    for (const Token& t : tokens_) {
+        if (t.kind != TokenKind::Comment || t.length < 2 || line_[t.offset] != '(') {
+            continue;
+        }
+        std::uint32_t column = t.column + 1;
+        for (std::uint32_t i = t.offset + 1; i + 1 < t.offset + t.length; ++i) {
+            const auto byte = static_cast<unsigned char>(line_[i]);
+            if (byte == '(') {
+                note(column, message("lint_comment_nested"));
+                break;
+            }
+            column += (byte & 0xC0) != 0x80 ? 1 : 0; // one per character, not per UTF-8 byte
+        }
+    }
+}
+
 } // namespace m350::gcode

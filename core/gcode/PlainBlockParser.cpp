@@ -123,6 +123,9 @@ PlainResult parsePlainLine(const char* text, const Dialect& dialect, SourceLocat
             if ((classOf(closing) & kLineEnd) != 0) {
                 return PlainResult::Declined; // not closed on its line
             }
+            if (*closing == '(') {
+                return PlainResult::Declined; // a nested '(': the general parser says where it ends
+            }
             wordLetter = static_cast<unsigned char>(*closing) < 0x80 ? wordLetter : 0;
         }
         if (comment.empty()) {

@@ -165,3 +165,50 @@ TEST_F(CliTest, CheckOnAMissingFileKeepsTheCheckLayout) {
 }
 
 } // namespace m350::clitest
+
+namespace m350::clitest {
+
+// Issue 28: `check --lint` warns about what a trainee's macro gets wrong though it runs, at the
+// place, in the language asked; without --lint `check` says only what would alarm.
+TEST_F(CliTest, CheckLintWarnsAboutATraineesMacroInChinese) {
+    write("t.nc", "#13=7\n"
+                  "WHILE [#[1520+#13-1] NE 0] DO1 (wait for IN07)\n"
+                  "G04 P10\n"
+                  "END1\n"
+                  "#1552=1\n"
+                  "G0 X#5\n"
+                  "IF [#1521 EQ 1] GOTO9\n"
+                  "#1552=0\n"
+                  "T2 M6\n"
+                  "N9 M30\n");
+    ProcessResult plain = sim({"check", "t.nc"});
+    EXPECT_EQ(plain.exitStatus, kExitOk) << plain.err;
+    EXPECT_TRUE(output(plain)["diagnostics"].empty()) << plain.out;
+
+    ProcessResult r = sim({"check", "t.nc", "--lint", "--lang", "zh_CN"});
+    EXPECT_EQ(r.exitStatus, kExitOk) << "warnings do not fail the check: " << r.err;
+    json j = output(r);
+    EXPECT_EQ(j.value("status", ""), "ok");
+    std::vector<std::string> ids;
+    for (const json& d : j["diagnostics"]) {
+        EXPECT_EQ(d.value("severity", ""), "warning") << d;
+        ids.push_back(d.value("message_id", ""));
+    }
+    EXPECT_EQ(ids, (std::vector<std::string>{"lint_input_wait", "lint_output_left_on",
+                                             "lint_read_before_set", "lint_m30_after_m6"}));
+    for (const char* line : {"t.nc:2:1: 警告: WHILE 等待输入 #[1520+#13-1]，既无超时也无出口",
+                             "t.nc:5:1: 警告: 输出 #1552 在此打开，程序经某一路径到达第10行的 M30 时仍未关闭",
+                             "t.nc:6:5: 警告: #5 在本程序给它赋值之前就被读取", "t.nc:10:4: 警告: M6 之后紧接 M30"}) {
+        EXPECT_NE(r.err.find(line), std::string::npos) << line << "\n" << r.err;
+    }
+
+    // a '(' in a comment: the comment ends at the first ')', and the warning explains the error after it
+    write("n.nc", "G04 P10 (dwell (ms))\nM30\n");
+    ProcessResult nested = sim({"check", "n.nc", "--lint", "--lang", "zh_CN"});
+    EXPECT_EQ(nested.exitStatus, kExitError);
+    EXPECT_NE(nested.err.find("n.nc:1:16: 警告: 注释中又有“(”：注释不能嵌套，注释在第一个“)”处结束"), std::string::npos)
+        << nested.err;
+    EXPECT_NE(nested.err.find("n.nc:1:20: "), std::string::npos) << nested.err;
+}
+
+} // namespace m350::clitest

@@ -310,4 +310,21 @@ TEST(ProgramChecker, FindsTheLineOfAnErrorWithTheMachinesLibraries) {
     EXPECT_TRUE(ui::ProgramChecker::diagnose(*machine.dialect, machine.libraries, "t.nc", "M98 P777\n").size() == 1);
 }
 
+// Issue 28: the editor warns as `check --lint` does, at the line and column of the mistake.
+TEST(ProgramChecker, WarnsAboutAnOutputLeftOnInATraineesMacro) {
+    auto loaded = config::loadMachineFolder(
+        QDir(QString::fromStdString(config::bundledMachinesDirectory())).filePath("m350-linear16").toStdString());
+    ASSERT_TRUE(std::holds_alternative<config::MachineConfig>(loaded));
+    const auto& machine = std::get<config::MachineConfig>(loaded);
+    const QString wrong = "G0 X0\n#1552=1\nIF [#1521 EQ 1] GOTO9\n#1552=0\nN9 M30\n";
+    auto marks = ui::ProgramChecker::diagnose(*machine.dialect, machine.libraries, "t.nc", wrong);
+    ASSERT_EQ(marks.size(), 1);
+    EXPECT_EQ(marks.front().line, 2);
+    EXPECT_EQ(marks.front().column, 1);
+    EXPECT_TRUE(marks.front().message.contains("#1552")) << marks.front().message.toStdString();
+    EXPECT_TRUE(marks.front().message.contains("5")) << marks.front().message.toStdString();
+    const QString right = "G0 X0\n#1552=1\nIF [#1521 EQ 1] GOTO9\n#1552=0\nM30\nN9 #1552=0\nM30\n";
+    EXPECT_TRUE(ui::ProgramChecker::diagnose(*machine.dialect, machine.libraries, "t.nc", right).isEmpty());
+}
+
 } // namespace m350::test

@@ -1,6 +1,7 @@
 #include "ui/program/ProgramChecker.h"
 #include "ui/i18n/DiagnosticText.h"
 
+#include "core/check/TraineeLint.h"
 #include "core/gcode/Parser.h"
 #include "core/gcode/SourceText.h"
 
@@ -68,8 +69,13 @@ QVector<CodeView::Mark> ProgramChecker::diagnose(const gcode::Dialect& dialect,
         }
     }
     parser.finish(program);
+    std::vector<gcode::Diagnostic> found = parser.diagnostics();
+    if (!program.files.empty()) {
+        const std::vector<gcode::Diagnostic> lints = check::TraineeLint(program, dialect).findings(0); // the edited text
+        found.insert(found.end(), lints.begin(), lints.end());
+    }
     QVector<CodeView::Mark> marks;
-    for (const gcode::Diagnostic& d : parser.diagnostics()) {
+    for (const gcode::Diagnostic& d : found) {
         if (d.file == file || d.file == name) {
             marks.append({static_cast<int>(d.line), static_cast<int>(d.column), DiagnosticText::message(d)});
         }

@@ -17,7 +17,7 @@ namespace m350::ui {
 // config::parsingDialect, as the Controller parses: the codes that call macros take G65's argument
 // rule in their blocks.
 // Runs a pause after the last keystroke, in a thread of its own, and reports the findings about
-// this file at their line and column.
+// this file at their line and column, with the trainee lints of `check --lint` (check::TraineeLint).
 class ProgramChecker : public QObject {
     Q_OBJECT
 public:
