@@ -92,9 +92,9 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
     info->setRowStretch(line, 1);
     // the program window sits under the coordinates, beside the overrides and counters
     auto* left = new QVBoxLayout;
-    left->addLayout(dro, 1);
+    left->addLayout(dro);
     program_ = new ProgramWindow(context.machineFolder(), this);
-    left->addWidget(program_);
+    left->addWidget(program_, 1); // what the DRO leaves: more of the program around its block
     row->addLayout(left, 3);
     row->addLayout(info, 2);
     column->addLayout(row, 1);

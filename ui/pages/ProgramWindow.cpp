@@ -39,7 +39,7 @@ ProgramWindow::ProgramWindow(QString machineFolder, QWidget* parent)
     auto* rows = new QGridLayout;
     rows->setHorizontalSpacing(0); // the highlight runs unbroken from the number to the text
     rows->setVerticalSpacing(0);
-    for (int row = 0; row < kRows; ++row) {
+    for (int row = 0; row < kMostRows; ++row) {
         numbers_[static_cast<std::size_t>(row)] = rowLabel(this, "programLineNumber");
         numbers_[static_cast<std::size_t>(row)]->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         numbers_[static_cast<std::size_t>(row)]->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
@@ -50,8 +50,47 @@ ProgramWindow::ProgramWindow(QString machineFolder, QWidget* parent)
         rows->addWidget(texts_[static_cast<std::size_t>(row)], row, 1);
     }
     rows->setColumnStretch(1, 1);
-    column->addLayout(rows);
+    rows->setRowStretch(kMostRows, 1); // the rows stay together at the top
+    column->addLayout(rows, 1);
+    // the rows past kRows ask for no room (a window that showed them can still shrink: 1024x600
+    // to 800x480): the layout does not set this widget's minimum, minimumSizeHint says kRows;
+    // fitRows shows those the height holds
+    column->setSizeConstraint(QLayout::SetNoConstraint);
+    for (int row = kRows; row < kMostRows; ++row) {
+        numbers_[static_cast<std::size_t>(row)]->hide();
+        texts_[static_cast<std::size_t>(row)]->hide();
+    }
     retranslate();
+}
+
+// The layout's width, the height of kRows rows (what the Monitor must give it at 800x480).
+QSize ProgramWindow::minimumSizeHint() const {
+    const QMargins margins = contentsMargins() + layout()->contentsMargins();
+    const int height = caption_->sizeHint().height() + kRows * texts_[0]->sizeHint().height() + 6;
+    return QSize(QFrame::minimumSizeHint().width(), height + margins.top() + margins.bottom());
+}
+
+QSize ProgramWindow::sizeHint() const { return minimumSizeHint(); }
+
+void ProgramWindow::resizeEvent(QResizeEvent* event) {
+    QFrame::resizeEvent(event);
+    fitRows();
+}
+
+// As many rows as the height holds; a change shows the running block in the middle again.
+void ProgramWindow::fitRows() {
+    const int rowHeight = std::max(1, texts_[0]->sizeHint().height());
+    const int room = contentsRect().height() - caption_->sizeHint().height() - 6;
+    const int fit = std::clamp(room / rowHeight, kRows, kMostRows);
+    if (fit == rows_) {
+        return;
+    }
+    rows_ = fit;
+    for (int row = 0; row < kMostRows; ++row) {
+        numbers_[static_cast<std::size_t>(row)]->setVisible(row < rows_);
+        texts_[static_cast<std::size_t>(row)]->setVisible(row < rows_);
+    }
+    redraw();
 }
 
 void ProgramWindow::render(const PanelSnapshot& snapshot) {
@@ -115,11 +154,11 @@ void ProgramWindow::use(const QString& name, const PanelSnapshot& snapshot) {
 void ProgramWindow::redraw() {
     const int count = static_cast<int>(source_.lines.size());
     if (running_ > 0) {
-        first_ = std::clamp(running_ - kRows / 2, 1, std::max(1, count - kRows + 1));
+        first_ = std::clamp(running_ - rows_ / 2, 1, std::max(1, count - rows_ + 1));
     } else {
         first_ = count > 0 ? 1 : 0;
     }
-    for (int row = 0; row < kRows; ++row) {
+    for (int row = 0; row < rows_; ++row) {
         const auto index = static_cast<std::size_t>(row);
         const int line = first_ + row;
         const bool shown = first_ > 0 && line <= count;
@@ -150,7 +189,7 @@ void ProgramWindow::retranslate() {
 }
 
 QString ProgramWindow::runningText() const {
-    for (int row = 0; row < kRows; ++row) {
+    for (int row = 0; row < rows_; ++row) {
         if (rowHighlighted(row)) {
             return texts_[static_cast<std::size_t>(row)]->text();
         }

@@ -22,7 +22,11 @@ namespace m350::ui {
 class ProgramWindow : public QFrame {
     Q_OBJECT
 public:
-    static constexpr int kRows = 5; // the running block is the middle one, when it can be
+    // Rows shown: at least kRows, as many more as its height holds (the Monitor gives it the room
+    // the DRO leaves), at most kMostRows; the running block is the middle one, when it can be.
+    static constexpr int kRows = 5;
+    static constexpr int kMostRows = 15;
+    int rows() const { return rows_; }
     ProgramWindow(QString machineFolder, QWidget* parent = nullptr);
     void render(const PanelSnapshot& snapshot);
     void retranslate();
@@ -32,6 +36,12 @@ public:
     QString captionText() const;
     QString rowText(int row) const;             // "12  G01 X10", as shown
     bool rowHighlighted(int row) const;
+
+    QSize minimumSizeHint() const override;
+    QSize sizeHint() const override;
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     struct Source {
@@ -45,8 +55,10 @@ private:
     void redraw();
     QString machineFolder_;
     QLabel* caption_;
-    std::array<QLabel*, kRows> numbers_{};
-    std::array<QLabel*, kRows> texts_{};
+    std::array<QLabel*, kMostRows> numbers_{};
+    std::array<QLabel*, kMostRows> texts_{};
+    int rows_ = kRows;
+    void fitRows();
     Source source_;
     // Files read before, by path: a run that goes in and out of a library file (O20000 in
     // slib-g.nc) reads each once while it stays unchanged on disk.
