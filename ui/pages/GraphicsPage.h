@@ -22,6 +22,7 @@ public:
     void softkey(int number) override;
     bool key(const QString& name) override;
     void render(const PanelSnapshot& snapshot) override;
+    bool rendersEverySnapshot() const override { return true; }
     QJsonObject state() const override;
 
     MachineView* view() const { return view_; }

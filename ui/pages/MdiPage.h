@@ -29,6 +29,7 @@ public:
     bool key(const QString& name) override;
     bool typed(const QString& text) override;
     void render(const PanelSnapshot& snapshot) override;
+    bool rendersEverySnapshot() const override { return true; }
     void retranslate() override;
     QJsonObject state() const override;
 

@@ -40,6 +40,10 @@ public:
         return false;
     }
     virtual void render(const PanelSnapshot& snapshot) = 0;
+    // Whether render keeps something of each snapshot it is given (the MDI page's result line
+    // follows the run it saw start): such a page is rendered at every snapshot even where the
+    // panel may skip the snapshots nobody reads (a headless replay).
+    virtual bool rendersEverySnapshot() const { return false; }
     virtual void retranslate() {}
     virtual QJsonObject state() const { return {}; } // page-specific part of --state
 

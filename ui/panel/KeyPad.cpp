@@ -65,6 +65,7 @@ QPushButton* KeyPad::addKey(const PanelKey& key) {
         connect(button, &QPushButton::clicked, this, [this, name] { sink_(OperatorAction::key(name)); });
     }
     buttons_.insert(name, button);
+    shown_.push_back({&key, button, false});
     return button;
 }
 
@@ -87,13 +88,12 @@ void KeyPad::retranslate() {
 
 void KeyPad::render(const PanelSnapshot& snapshot) {
     const controller::PanelStatus& s = snapshot.status;
-    for (const PanelKey& key : PanelKey::all()) {
-        QPushButton* button = buttons_.value(key.name);
-        if (!button) {
-            continue;
-        }
+    for (Shown& shown : shown_) {
+        const PanelKey& key = *shown.key;
+        QPushButton* button = shown.button;
         const bool on = lampOn(key, s);
-        if (key.lamp != PanelKey::Lamp::None && button->property("lamp").toBool() != on) {
+        if (key.lamp != PanelKey::Lamp::None && shown.lamp != on) {
+            shown.lamp = on;
             button->setProperty("lamp", on);
             button->setStyleSheet({}); // re-polish for the lamp property
         }

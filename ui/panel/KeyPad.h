@@ -36,6 +36,13 @@ private:
     void retranslate();
     Sink sink_;
     QMap<QString, QPushButton*> buttons_;
+    // each snapshot goes over these, not over the names (a replay renders one every action)
+    struct Shown {
+        const PanelKey* key;
+        QPushButton* button;
+        bool lamp; // its "lamp" property as last set
+    };
+    std::vector<Shown> shown_;
     HandwheelWidget* wheel_;
 };
 

@@ -113,8 +113,24 @@ bool MainWindow::showPage(const QString& id) {
     if (snapshot_) {
         page->render(*snapshot_);
         status_->render(*snapshot_, page->id(), page->title());
+        renderHeld_ = false;
     }
     return true;
+}
+
+void MainWindow::holdRendering(bool hold) {
+    holdRendering_ = hold;
+    if (!hold) {
+        renderHeld();
+    }
+}
+
+void MainWindow::renderHeld() {
+    if (renderHeld_ && snapshot_) {
+        status_->render(*snapshot_, currentPage()->id(), currentPage()->title());
+        currentPage()->render(*snapshot_);
+    }
+    renderHeld_ = false;
 }
 
 Page* MainWindow::currentPage() const { return static_cast<Page*>(stack_->currentWidget()); }
@@ -169,9 +185,14 @@ QString MainWindow::alarmText() const { return alarm_->text(); }
 void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
     snapshot_ = snapshot;
     const PanelSnapshot& s = *snapshot;
-    status_->render(s, currentPage()->id(), currentPage()->title());
-    currentPage()->render(s);
-    keys_->render(s);
+    if (holdRendering_ && !currentPage()->rendersEverySnapshot()) {
+        renderHeld_ = true;
+    } else {
+        status_->render(s, currentPage()->id(), currentPage()->title());
+        currentPage()->render(s);
+        renderHeld_ = false;
+    }
+    keys_->render(s); // the handwheel's axis follows the machine's axes: a wheel click reads it
     QString message = s.status.notice ? AlarmText::message(*s.status.notice) : QString::fromStdString(s.status.message);
     if (s.status.run == controller::PanelStatus::Run::Hold) {
         QString why = QString::fromStdString(s.status.programStop);

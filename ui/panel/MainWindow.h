@@ -58,6 +58,10 @@ public:
     QString alarmText() const;
     // The panel's state for --state: page, mode, state, positions, tool, message, alarm, IO, MDI lines.
     QJsonObject state() const;
+    // A headless replay: the page and status line render a snapshot only when something is about
+    // to read them (renderHeld), a page that keeps what each snapshot showed still renders them all.
+    void holdRendering(bool hold);
+    void renderHeld();
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -91,6 +95,8 @@ private:
     QString notice_;
     std::string dialogShown_;
     bool bootPromptAsked_ = false;
+    bool holdRendering_ = false;
+    bool renderHeld_ = false; // a snapshot the page and status line have not rendered
     std::string toolPromptAlarm_; // the alarm the tool number prompt was last asked at
     std::string rightsPromptAlarm_; // the parameter write refused that the password was last asked at
     QMenu* panelMenu_ = nullptr;

@@ -8,6 +8,8 @@
 #include <QHBoxLayout>
 #include <QLabel>
 
+#include <cstring>
+
 namespace m350::ui {
 
 namespace {
@@ -46,10 +48,14 @@ void StatusLine::render(const PanelSnapshot& snapshot, const QString& pageId, co
     PanelText::State state = displayedState(snapshot);
     mode_->setText(PanelText::mode(displayedMode(snapshot, pageId)));
     state_->setText(PanelText::state(state));
-    state_->setProperty("level", state == PanelText::State::Error || state == PanelText::State::Alarm ? "bad"
-                                 : state == PanelText::State::Ready                                  ? "ok"
-                                                                                                     : "busy");
-    state_->setStyleSheet({}); // re-polish for the property
+    const char* level = state == PanelText::State::Error || state == PanelText::State::Alarm ? "bad"
+                        : state == PanelText::State::Ready                                  ? "ok"
+                                                                                            : "busy";
+    if (!stateLevel_ || std::strcmp(level, stateLevel_) != 0) { // a re-polish costs more than the rest of the line
+        stateLevel_ = level;
+        state_->setProperty("level", level);
+        state_->setStyleSheet({}); // re-polish for the property
+    }
     QString file = snapshot.status.mdi ? QStringLiteral("MDI") : QFileInfo(snapshot.programFile).fileName();
     file_->setText(file);
     page_->setText(pageTitle);

@@ -22,6 +22,7 @@ public:
 private:
     QLabel* mode_;
     QLabel* state_;
+    const char* stateLevel_ = nullptr; // the "level" property state_ was last polished with
     QLabel* file_;
     QLabel* page_;
     QLabel* level_; // 访客 / 操作员 / 管理员 / 超级管理

@@ -202,12 +202,17 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
     struct Restore {
         MainWindow& window;
         bool painting;
-        ~Restore() { window.setUpdatesEnabled(painting); }
+        ~Restore() {
+            window.holdRendering(false);
+            window.setUpdatesEnabled(painting);
+        }
     } restore{window, painting};
     settle(session);
     std::optional<DeferredLayout> layouts;
     if (layout == ReplayLayout::WhenRead) {
         layouts.emplace();
+        // the page and status line render only the snapshot an action or the end reads
+        window.holdRendering(true);
     }
     for (std::size_t i = 0; i < actions.size(); ++i) {
         const OperatorAction& action = actions[i];
@@ -239,6 +244,7 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
                 .arg(action.name, disks.join(QStringLiteral(", ")));
         }
         if (layouts && readsLayout(action)) {
+            window.renderHeld();
             layouts->catchUp();
         }
         window.dispatcher().dispatch(action);
@@ -247,6 +253,7 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
         }
     }
     settle(session);
+    window.holdRendering(false);
     layouts.reset();
     settle(session);
     return {};
