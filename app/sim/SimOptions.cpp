@@ -283,7 +283,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
             const auto* catalogue = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled());
             if (catalogue && catalogue->find(number)) {
                 if (auto problem = catalogue->validate(number, value)) {
-                    std::cerr << "m350-sim: warning: --param " << p << ": " << *problem << " (used as given)\n";
+                    std::cerr << "m350-sim: "
+                              << messageText("param_kept_as_given", {"--param " + p, bilingual(*problem)}, languageAsked(argc, argv))
+                              << '\n';
                 }
             }
             o.settings.parameters[number] = value;
