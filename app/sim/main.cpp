@@ -144,22 +144,23 @@ std::optional<std::string> writeExternalOutput(const controller::Controller& con
     }
     const std::string file = sim::externalOutputPath(o);
     if (auto problem = files::writeOutputFile(file, controller.externalDevices().received())) {
-        std::cerr << "m350-sim: cannot write the external output (DPRNT) to " << file << ": " << *problem << '\n';
+        std::cerr << "m350-sim: " << messageText("dprnt_cannot_write", {file, *problem}, o.language) << '\n';
         return problem;
     }
-    std::cerr << "m350-sim: external output (POPEN/DPRNT/PCLOS) written to " << file << '\n';
+    std::cerr << "m350-sim: " << messageText("dprnt_written", {file}, o.language) << '\n';
     return std::nullopt;
 }
 
 // Tool life data the run used or entered (G10 L3) go back into the machine folder's toollife.txt.
-std::optional<std::string> saveToolLife(controller::Controller& controller, const config::MachineFolder& folder) {
+std::optional<std::string> saveToolLife(controller::Controller& controller, const config::MachineFolder& folder,
+                                        MessageLanguage language) {
     if (!controller.toolLife().manager().changed()) {
         return std::nullopt;
     }
     if (auto problem = folder.saveToolLife(controller.toolLife().manager().data())) {
-        std::cerr << "m350-sim: cannot write the tool life data to " << folder.path().string() << "/"
-                  << config::MachineFolder::fileName(config::FolderFile::ToolLife) << ": "
-                  << *problem << '\n';
+        const std::string file =
+            folder.path().string() + "/" + std::string(config::MachineFolder::fileName(config::FolderFile::ToolLife));
+        std::cerr << "m350-sim: " << messageText("life_data_cannot_write", {file, *problem}, language) << '\n';
         return problem;
     }
     controller.toolLife().manager().markSaved();
@@ -303,7 +304,7 @@ int runCommand(int argc, char** argv) {
         report = controller.status().report();
     }
     std::optional<std::string> outputProblem = writeExternalOutput(controller, o);
-    if (auto lifeProblem = saveToolLife(controller, config::MachineFolder(folder))) {
+    if (auto lifeProblem = saveToolLife(controller, config::MachineFolder(folder), o.language)) {
         outputProblem = lifeProblem;
     }
     printDiagnostics(report.diagnostics, o.language);
@@ -315,7 +316,8 @@ int runCommand(int argc, char** argv) {
                   << ": alarm: " << (a.messageId.empty() ? a.message : messageText(a.messageId, a.messageArguments, o.language))
                   << '\n';
         if (a.callerLine > 0) {
-            std::cerr << a.callerFile << ':' << a.callerLine << ": note: the alarm is in the library this line called\n";
+            std::cerr << a.callerFile << ':' << a.callerLine << ": " << messageText("alarm_in_library_note", {}, o.language)
+                      << '\n';
         }
     }
     printFallenTools(report.fallenTools, o.language);

@@ -93,6 +93,14 @@ TEST_F(CliFileWordsTest, AProgramOrTraceFileItCannotHaveIsAFileErrorByIdInTheLan
     EXPECT_EQ(j["alarm"].value("message", "").rfind("cannot write the trace file: ", 0), 0u) << j;
 }
 
+TEST_F(CliFileWordsTest, WhereTheExternalOutputWentIsSaidInTheLanguage) {
+    write("out.nc", "POPEN\nDPRNT[HELLO]\nPCLOS\nM30\n");
+    auto [english, chinese] = both({"run", "out.nc", "--dialect", "fanuc"});
+    EXPECT_EQ(chinese.exitStatus, kExitOk) << chinese.err;
+    EXPECT_SAYS(english, "m350-sim: external output (POPEN/DPRNT/PCLOS) written to ");
+    EXPECT_SAYS(chinese, "m350-sim: 外部输出(POPEN/DPRNT/PCLOS)已写入");
+}
+
 TEST_F(CliFileWordsTest, ToolTableAndToolLifeLinesSkippedAreSaidInTheLanguage) {
     write("t.tbl", "T1 P1 Z-5\nT0 P2\nT3 P1\n");
     auto [english, chinese] = both({"run", "p.nc", "--tool-table", "t.tbl"});
