@@ -2,6 +2,7 @@
 
 #include "core/files/OutputFile.h"
 #include "core/files/OutputGuard.h"
+#include "ui/i18n/Language.h"
 
 #include <QImageWriter>
 #include <QStringList>
@@ -46,12 +47,12 @@ std::optional<QString> writeOutput(const std::string& path, const QByteArray& by
 }
 
 std::optional<QString> refusedOutput(const HmiOptions& o, const QString& machineFolder) {
-    std::vector<files::GuardedPath> guarded{{"the machine folder", machineFolder.toStdString(), true}};
+    std::vector<files::GuardedPath> guarded{{bilingual("the machine folder", "机床文件夹"), machineFolder.toStdString(), true}};
     if (!o.program.empty()) {
-        guarded.push_back({"the loaded program", o.program, false});
+        guarded.push_back({bilingual("the loaded program", "已加载的程序"), o.program, false});
     }
     if (!o.replay.empty()) {
-        guarded.push_back({"the replay being played", o.replay, false});
+        guarded.push_back({bilingual("the replay being played", "正在回放的录制文件"), o.replay, false});
     }
     std::vector<std::pair<std::string, std::string>> outputs; // option, path
     for (const auto& [option, path] : {std::pair{"--state", &o.state}, {"--screenshot", &o.screenshot}, {"--record", &o.record}}) {
@@ -62,7 +63,7 @@ std::optional<QString> refusedOutput(const HmiOptions& o, const QString& machine
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         const auto& [option, path] = outputs[i];
         if (auto refused = files::refusedOutput(option, path, guarded)) {
-            return QString::fromStdString(*refused);
+            return QString::fromStdString(refused->in(ui::Language::messageLanguage()));
         }
         if (auto why = files::unwritableOutput(path)) {
             return QString::fromStdString(files::describeUnwritable(option, path, *why));

@@ -24,7 +24,7 @@ bool loadForCommand(controller::Controller& controller, const SimOptions& o) {
     return controller.loadFile(o.program);
 }
 
-std::optional<std::string> missingHook(const SimOptions& o, const config::MachineConfig& machine) {
+std::optional<Message> missingHook(const SimOptions& o, const config::MachineConfig& machine) {
     if (o.command != SimOptions::Command::Hook) {
         return std::nullopt;
     }
@@ -39,10 +39,9 @@ std::optional<std::string> missingHook(const SimOptions& o, const config::Machin
             present += file.name;
         }
     }
-    return "hook " + o.hookName + ": the machine folder " + machine.folder + " has no " +
-           std::string(config::hookFile(hook).fileName) + " (run at: " + std::string(config::hookFile(hook).runsWhen) +
-           "); its hook files: " + (present.empty() ? "none" : present) +
-           "; the hooks are: " + config::runnableHookNames();
+    return message("hook_missing_sim", {o.hookName, machine.folder, std::string(config::hookFile(hook).fileName),
+                                        config::runsWhenWords(config::hookFile(hook)),
+                                        present.empty() ? bilingual("none", "无") : present, config::runnableHookNames()});
 }
 
 std::optional<controller::RunReport> homeBeforeRun(controller::Controller& controller) {

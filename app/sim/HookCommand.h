@@ -15,7 +15,7 @@ bool loadForCommand(controller::Controller& controller, const SimOptions& o);
 
 // `hook NAME` on a machine folder without that file: the usage message, naming the hook files the
 // folder has.
-std::optional<std::string> missingHook(const SimOptions& o, const config::MachineConfig& machine);
+std::optional<Message> missingHook(const SimOptions& o, const config::MachineConfig& machine);
 
 // --home: the folder's fndzero.nc run to its end when it has one (as the panel's Go Home does),
 // else the native homing of every axis with a switch. The report when homing fails.

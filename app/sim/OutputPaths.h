@@ -16,6 +16,6 @@ std::string externalOutputPath(const SimOptions& o);
 // An output option (--trace, --dprnt, --tools-out, or the default dprnt.txt) that names a file the
 // run reads (the program, a library, a machine-folder file, --tool-table): why it is refused. Said
 // before anything is opened for writing: `--trace prog.nc` emptied the program and exited 0.
-std::optional<std::string> outputNamingAnInput(const SimOptions& o, const config::MachineConfig& machine);
+std::optional<Message> outputNamingAnInput(const SimOptions& o, const config::MachineConfig& machine);
 
 } // namespace m350::sim

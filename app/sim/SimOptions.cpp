@@ -281,12 +281,16 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
             }
             if (auto unread = params::isFanucParameterNumber(number) ? params::unreadFanucParameter(number)
                                                                      : std::nullopt) {
-                std::cerr << "m350-sim: warning: --param " << p << ": " << unread->in(languageAsked(argc, argv)) << '\n';
+                std::cerr << "m350-sim: "
+                          << messageText("usage_warning", {"--param " + p, bilingual(*unread)}, languageAsked(argc, argv))
+                          << '\n';
             }
             const auto* catalogue = std::get_if<params::ParameterCatalogue>(&params::ParameterCatalogue::bundled());
             if (catalogue && catalogue->find(number)) {
                 if (auto problem = catalogue->validate(number, value)) {
-                    std::cerr << "m350-sim: warning: --param " << p << ": " << *problem << " (used as given)\n";
+                    std::cerr << "m350-sim: "
+                              << messageText("param_kept_as_given", {"--param " + p, bilingual(*problem)}, languageAsked(argc, argv))
+                              << '\n';
                 }
             }
             o.settings.parameters[number] = value;

@@ -35,6 +35,9 @@ nlohmann::json toolLifeJson(const tools::ToolLifeManager& manager, const std::ve
                              {"line", issue.line},
                              {"column", issue.column},
                              {"message", issue.message}});
+        if (!issue.words.id.empty()) {
+            issueList.back()["message_id"] = issue.words.id;
+        }
     }
     return {{"ignore", view.ignoreNumber},
             {"gs", view.gs},

@@ -49,17 +49,17 @@ std::filesystem::path tableFile(const SimOptions& o, const config::MachineConfig
 
 } // namespace
 
-std::optional<std::string> useToolTableFile(const SimOptions& o, config::MachineConfig& machine) {
+std::optional<Message> useToolTableFile(const SimOptions& o, config::MachineConfig& machine) {
     if (!o.toolTableFile) {
         return std::nullopt;
     }
     auto read = tools::readToolTableFile(*o.toolTableFile);
     if (auto* error = std::get_if<Message>(&read)) {
-        return error->english();
+        return *error;
     }
     auto& parsed = std::get<tools::ParsedToolTable>(read);
     for (const tools::ToolTableIssue& issue : parsed.issues) {
-        std::cerr << tools::formatIssue(issue) << '\n';
+        std::cerr << tools::formatIssue(issue, o.language) << '\n';
     }
     machine.toolTable = std::move(parsed.table);
     machine.toolTableFile = *o.toolTableFile;
@@ -83,6 +83,9 @@ int listTools(controller::Controller& controller, const SimOptions& o) {
                                   {"line", issue.line},
                                   {"column", issue.column},
                                   {"message", issue.message}});
+                if (!issue.words.id.empty()) {
+                    issues.back()["message_id"] = issue.words.id;
+                }
                 if (issue.omitted > 0) {
                     issues.back()["omitted"] = issue.omitted; // as `check` marks the findings it left out
                 }

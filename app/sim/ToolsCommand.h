@@ -12,7 +12,7 @@ namespace m350::sim {
 
 // --tool-table FILE: that tool.tbl replaces the machine folder's for this run (its refused lines
 // are printed as warnings with file:line:col, the rest loads). The error when it cannot be read.
-std::optional<std::string> useToolTableFile(const SimOptions& o, config::MachineConfig& machine);
+std::optional<Message> useToolTableFile(const SimOptions& o, config::MachineConfig& machine);
 
 // `m350-sim tools`: the machine's tool table as a run starts with it (the folder's tool.tbl, or
 // --tool-table; on the M350 the Z of T1-T16 and the virtual tools from params 930-945 / 973-992).

@@ -60,9 +60,18 @@ void printFallenTools(const std::vector<devices::FallenTool>& fallen, MessageLan
     }
 }
 
-int fail(const std::string& code, const std::string& message, const std::string& file) {
-    std::cerr << file << ": " << message << '\n';
-    std::cout << sim::dump(sim::errorJson(code, message, file)) << '\n';
+// A file the run needs that cannot be had, said in the --lang language; the JSON keeps the
+// English and gives the id.
+int fail(const std::string& code, const Message& words, const std::string& file, MessageLanguage language) {
+    std::cerr << file << ": " << words.in(language) << '\n';
+    nlohmann::json j = sim::errorJson(code, words.english(), file);
+    j["alarm"]["message_id"] = words.id;
+    nlohmann::json arguments = nlohmann::json::array();
+    for (const std::string& argument : words.arguments) {
+        arguments.push_back(argumentIn(argument, MessageLanguage::English));
+    }
+    j["alarm"]["message_arguments"] = std::move(arguments);
+    std::cout << sim::dump(j) << '\n';
     return kExitError;
 }
 
@@ -144,22 +153,23 @@ std::optional<std::string> writeExternalOutput(const controller::Controller& con
     }
     const std::string file = sim::externalOutputPath(o);
     if (auto problem = files::writeOutputFile(file, controller.externalDevices().received())) {
-        std::cerr << "m350-sim: cannot write the external output (DPRNT) to " << file << ": " << *problem << '\n';
+        std::cerr << "m350-sim: " << messageText("dprnt_cannot_write", {file, *problem}, o.language) << '\n';
         return problem;
     }
-    std::cerr << "m350-sim: external output (POPEN/DPRNT/PCLOS) written to " << file << '\n';
+    std::cerr << "m350-sim: " << messageText("dprnt_written", {file}, o.language) << '\n';
     return std::nullopt;
 }
 
 // Tool life data the run used or entered (G10 L3) go back into the machine folder's toollife.txt.
-std::optional<std::string> saveToolLife(controller::Controller& controller, const config::MachineFolder& folder) {
+std::optional<std::string> saveToolLife(controller::Controller& controller, const config::MachineFolder& folder,
+                                        MessageLanguage language) {
     if (!controller.toolLife().manager().changed()) {
         return std::nullopt;
     }
     if (auto problem = folder.saveToolLife(controller.toolLife().manager().data())) {
-        std::cerr << "m350-sim: cannot write the tool life data to " << folder.path().string() << "/"
-                  << config::MachineFolder::fileName(config::FolderFile::ToolLife) << ": "
-                  << *problem << '\n';
+        const std::string file =
+            folder.path().string() + "/" + std::string(config::MachineFolder::fileName(config::FolderFile::ToolLife));
+        std::cerr << "m350-sim: " << messageText("life_data_cannot_write", {file, *problem}, language) << '\n';
         return problem;
     }
     controller.toolLife().manager().markSaved();
@@ -198,8 +208,8 @@ int runCommand(int argc, char** argv) {
         return kExitError;
     }
     config::MachineConfig machineConfig = std::move(std::get<config::MachineConfig>(loaded));
-    for (const std::string& warning : machineConfig.warnings) {
-        std::cerr << warning << '\n';
+    for (std::size_t i = 0; i < machineConfig.warnings.size(); ++i) {
+        std::cerr << machineConfig.warning(i, o.language) << '\n';
     }
     if (o.dialect) {
         machineConfig.dialect = gcode::Dialect::byName(*o.dialect);
@@ -234,34 +244,36 @@ int runCommand(int argc, char** argv) {
         }
     }
     if (auto error = sim::useToolTableFile(o, machineConfig)) {
-        return fail("file_error", *error, *o.toolTableFile);
+        return fail("file_error", *error, *o.toolTableFile, o.language);
     }
     if (o.command == sim::SimOptions::Command::Run || o.command == sim::SimOptions::Command::Check) {
         std::error_code ec; // a symlink loop or an unreadable folder is an error, not an abort
         const std::filesystem::file_status status = std::filesystem::status(o.program, ec);
-        std::optional<std::string> unreadable;
+        std::optional<Message> unreadable;
         if (ec || !std::filesystem::exists(status)) {
-            unreadable = "cannot open program: " + (ec ? ec.message() : std::string("no such file"));
+            unreadable = ec && ec != std::errc::no_such_file_or_directory ? message("program_cannot_open", {ec.message()})
+                                                                           : message("program_missing");
         } else if (!std::filesystem::is_regular_file(status)) {
-            unreadable = "cannot open program: it is a folder, FIFO or device, not a program file";
+            unreadable = message("program_not_a_file");
         }
         if (unreadable && o.command == sim::SimOptions::Command::Check) {
-            return checkResult({{gcode::Severity::Error, gcode::DiagnosticKind::Syntax, o.program, 0, 0, *unreadable}},
-                               o.language);
+            return checkResult(
+                {gcode::diagnostic(gcode::Severity::Error, gcode::DiagnosticKind::Syntax, o.program, 0, 0, *unreadable)},
+                o.language);
         }
         if (unreadable) {
-            return fail("file_error", *unreadable, o.program);
+            return fail("file_error", *unreadable, o.program, o.language);
         }
     }
     if (auto refused = sim::outputNamingAnInput(o, machineConfig)) {
-        std::cerr << "m350-sim: " << *refused << '\n';
+        std::cerr << "m350-sim: " << refused->in(o.language) << '\n';
         return 64;
     }
     std::unique_ptr<files::OutputFile> trace;
     if (o.traceFile) {
         auto opened = files::OutputFile::open(*o.traceFile);
         if (auto* error = std::get_if<std::string>(&opened)) {
-            return fail("file_error", "cannot write the trace file: " + *error, *o.traceFile);
+            return fail("file_error", message("trace_cannot_write", {*error}), *o.traceFile, o.language);
         }
         trace = std::move(std::get<std::unique_ptr<files::OutputFile>>(opened));
         o.settings.trace = &trace->stream();
@@ -272,7 +284,7 @@ int runCommand(int argc, char** argv) {
             return 64;
         }
         if (auto problem = sim::missingHook(o, machineConfig)) {
-            std::cerr << "m350-sim: " << *problem << "\n";
+            std::cerr << "m350-sim: " << problem->in(o.language) << "\n";
             return 64;
         }
     }
@@ -301,7 +313,7 @@ int runCommand(int argc, char** argv) {
         report = controller.status().report();
     }
     std::optional<std::string> outputProblem = writeExternalOutput(controller, o);
-    if (auto lifeProblem = saveToolLife(controller, config::MachineFolder(folder))) {
+    if (auto lifeProblem = saveToolLife(controller, config::MachineFolder(folder), o.language)) {
         outputProblem = lifeProblem;
     }
     printDiagnostics(report.diagnostics, o.language);
@@ -313,7 +325,8 @@ int runCommand(int argc, char** argv) {
                   << ": alarm: " << (a.messageId.empty() ? a.message : messageText(a.messageId, a.messageArguments, o.language))
                   << '\n';
         if (a.callerLine > 0) {
-            std::cerr << a.callerFile << ':' << a.callerLine << ": note: the alarm is in the library this line called\n";
+            std::cerr << a.callerFile << ':' << a.callerLine << ": " << messageText("alarm_in_library_note", {}, o.language)
+                      << '\n';
         }
     }
     printFallenTools(report.fallenTools, o.language);

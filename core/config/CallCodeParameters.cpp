@@ -61,9 +61,10 @@ std::optional<CallParameterError> addCallParameters(macro::CallCodes& table,
             auto place = origins.find(number);
             const std::string setting = bilingual("parameter " + std::to_string(number) + " = " + shortNumber(value->second),
                                                   "参数" + std::to_string(number) + " = " + shortNumber(value->second));
-            const std::string settingText = argumentIn(setting, MessageLanguage::English);
-            const std::string origin =
-                settingText + (place != origins.end() ? " (" + place->second + ")" : std::string());
+            // said inside another parameter's clash message, in that message's language
+            const std::string where = place != origins.end() ? " (" + place->second + ")" : std::string();
+            const std::string origin = bilingual(argumentIn(setting, MessageLanguage::English) + where,
+                                                 argumentIn(setting, MessageLanguage::Chinese) + where);
             const double v = value->second;
             if (v != std::floor(v)) {
                 return CallParameterError{message("call_param_whole", {setting}), number};

@@ -1,5 +1,7 @@
 #include "core/config/HookFiles.h"
 
+#include "core/common/Message.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -13,50 +15,50 @@ using H = Hook;
 
 // In the order of the enum: hookFile() indexes it.
 constexpr std::array kHooks{
-    HookFile{H::ToolWord, "T", "T.nc", "a T word set from the panel (#1504 = the target tool)"},
-    HookFile{H::AllTools, "ALL_T", "ALL_T.nc", "M101: every tool in turn"},
-    HookFile{H::HomeAll, "fndzero", "fndzero.nc", "Go Home, all axes (回机械原点)"},
-    HookFile{H::HomeX, "fndX", "fndX.nc", "Go Home, X"},
-    HookFile{H::HomeY, "fndY", "fndY.nc", "Go Home, Y"},
-    HookFile{H::HomeZ, "fndZ", "fndZ.nc", "Go Home, Z"},
-    HookFile{H::HomeA, "fndA", "fndA.nc", "Go Home, the 4th axis"},
-    HookFile{H::HomeB, "fndB", "fndB.nc", "Go Home, the 5th axis"},
-    HookFile{H::GoToWorkZero, "gotozero", "gotozero.nc", "Go Work Zero, all axes (回工件原点)"},
-    HookFile{H::AbsZero, "abszero", "abszero.nc", "absolute-encoder homing, all axes"},
-    HookFile{H::AbsX, "absX", "absX.nc", "absolute-encoder homing, X"},
-    HookFile{H::AbsY, "absY", "absY.nc", "absolute-encoder homing, Y"},
-    HookFile{H::AbsZ, "absZ", "absZ.nc", "absolute-encoder homing, Z"},
-    HookFile{H::AbsA, "absA", "absA.nc", "absolute-encoder homing, the 4th axis"},
-    HookFile{H::AbsB, "absB", "absB.nc", "absolute-encoder homing, the 5th axis"},
-    HookFile{H::Probe, "probe", "probe.nc", "the Probe page's fixed setting (#1502 = 1 first, 2 again)"},
-    HookFile{H::MultiProbe, "mulprobe", "mulprobe.nc", "the Probe page's multi-tool setting (tools in #1970-#1989)"},
-    HookFile{H::Pause, "pause", "pause.nc", "PAUSE, M00 or G04 P-1 holding a run"},
-    HookFile{H::Error, "error", "error.nc", "an alarm"},
-    HookFile{H::PowerOn, "sysstart", "sysstart.nc", "power-on, before the boot homing prompt"},
-    HookFile{H::Key1, "key-1", "key-1.nc", "K1 while param 210 = 0"},
-    HookFile{H::Key2, "key-2", "key-2.nc", "K2 while param 211 = 0"},
-    HookFile{H::Key3, "key-3", "key-3.nc", "K3 while param 212 = 0"},
-    HookFile{H::Key4, "key-4", "key-4.nc", "K4 while param 213 = 0"},
-    HookFile{H::Key5, "key-5", "key-5.nc", "K5 while param 214 = 0"},
-    HookFile{H::Key6, "key-6", "key-6.nc", "K6 while param 215 = 0"},
-    HookFile{H::Key7, "key-7", "key-7.nc", "K7 while param 216 = 0"},
-    HookFile{H::ExtButton, "ext_button", "ext_button.nc", "FUNC K01-K14 (#1996 = M250-M263)"},
-    HookFile{H::ExtKey1, "extnc0-1", "extnc0-1.nc", "external key 1 while param 272 = 0"},
-    HookFile{H::ExtKey2, "extnc1-1", "extnc1-1.nc", "external key 2 while param 273 = 0"},
-    HookFile{H::ExtKey3, "extnc2-1", "extnc2-1.nc", "external key 3 while param 274 = 0"},
-    HookFile{H::ExtKey4, "extnc3-1", "extnc3-1.nc", "external key 4 while param 275 = 0"},
-    HookFile{H::ExtKey5, "extnc4-1", "extnc4-1.nc", "external key 5 while param 276 = 0"},
-    HookFile{H::ExtKey6, "extnc5-1", "extnc5-1.nc", "external key 6 while param 277 = 0"},
-    HookFile{H::M3, "M3", "M3.nc", "the M3 key"},
-    HookFile{H::M4, "M4", "M4.nc", "the M4 key"},
-    HookFile{H::M5, "M5", "M5.nc", "the M5 key"},
-    HookFile{H::M8, "M8", "M8.nc", "the M8 key"},
-    HookFile{H::M9, "M9", "M9.nc", "the M9 key"},
-    HookFile{H::M10, "M10", "M10.nc", "the M10 key"},
-    HookFile{H::M11, "M11", "M11.nc", "the M11 key"},
-    HookFile{H::M19, "M19", "M19.nc", "the M19 key"},
-    HookFile{H::Mdi, "mdi", kMdiProgramFile, "the MDI program kept beside mdiblock"},
-    HookFile{H::UserLibrary, "slibuser", "slibuser.nc", "user G-code handlers O9100-O9199 (G100-G199)", false},
+    HookFile{H::ToolWord, "T", "T.nc", "a T word set from the panel (#1504 = the target tool)", "从面板设定T指令（#1504 = 目标刀号）"},
+    HookFile{H::AllTools, "ALL_T", "ALL_T.nc", "M101: every tool in turn", "M101：依次换上每把刀"},
+    HookFile{H::HomeAll, "fndzero", "fndzero.nc", "Go Home, all axes (回机械原点)", "回机械原点，全部轴"},
+    HookFile{H::HomeX, "fndX", "fndX.nc", "Go Home, X", "回机械原点，X轴"},
+    HookFile{H::HomeY, "fndY", "fndY.nc", "Go Home, Y", "回机械原点，Y轴"},
+    HookFile{H::HomeZ, "fndZ", "fndZ.nc", "Go Home, Z", "回机械原点，Z轴"},
+    HookFile{H::HomeA, "fndA", "fndA.nc", "Go Home, the 4th axis", "回机械原点，第4轴"},
+    HookFile{H::HomeB, "fndB", "fndB.nc", "Go Home, the 5th axis", "回机械原点，第5轴"},
+    HookFile{H::GoToWorkZero, "gotozero", "gotozero.nc", "Go Work Zero, all axes (回工件原点)", "回工件原点，全部轴"},
+    HookFile{H::AbsZero, "abszero", "abszero.nc", "absolute-encoder homing, all axes", "绝对值编码器回零，全部轴"},
+    HookFile{H::AbsX, "absX", "absX.nc", "absolute-encoder homing, X", "绝对值编码器回零，X轴"},
+    HookFile{H::AbsY, "absY", "absY.nc", "absolute-encoder homing, Y", "绝对值编码器回零，Y轴"},
+    HookFile{H::AbsZ, "absZ", "absZ.nc", "absolute-encoder homing, Z", "绝对值编码器回零，Z轴"},
+    HookFile{H::AbsA, "absA", "absA.nc", "absolute-encoder homing, the 4th axis", "绝对值编码器回零，第4轴"},
+    HookFile{H::AbsB, "absB", "absB.nc", "absolute-encoder homing, the 5th axis", "绝对值编码器回零，第5轴"},
+    HookFile{H::Probe, "probe", "probe.nc", "the Probe page's fixed setting (#1502 = 1 first, 2 again)", "对刀页面的固定对刀（先#1502 = 1，再次为2）"},
+    HookFile{H::MultiProbe, "mulprobe", "mulprobe.nc", "the Probe page's multi-tool setting (tools in #1970-#1989)", "对刀页面的多刀固定对刀（刀具在#1970-#1989中）"},
+    HookFile{H::Pause, "pause", "pause.nc", "PAUSE, M00 or G04 P-1 holding a run", "暂停键、M00或G04 P-1暂停运行时"},
+    HookFile{H::Error, "error", "error.nc", "an alarm", "报警时"},
+    HookFile{H::PowerOn, "sysstart", "sysstart.nc", "power-on, before the boot homing prompt", "开机时，回零提示之前"},
+    HookFile{H::Key1, "key-1", "key-1.nc", "K1 while param 210 = 0", "参数210 = 0时的K1键"},
+    HookFile{H::Key2, "key-2", "key-2.nc", "K2 while param 211 = 0", "参数211 = 0时的K2键"},
+    HookFile{H::Key3, "key-3", "key-3.nc", "K3 while param 212 = 0", "参数212 = 0时的K3键"},
+    HookFile{H::Key4, "key-4", "key-4.nc", "K4 while param 213 = 0", "参数213 = 0时的K4键"},
+    HookFile{H::Key5, "key-5", "key-5.nc", "K5 while param 214 = 0", "参数214 = 0时的K5键"},
+    HookFile{H::Key6, "key-6", "key-6.nc", "K6 while param 215 = 0", "参数215 = 0时的K6键"},
+    HookFile{H::Key7, "key-7", "key-7.nc", "K7 while param 216 = 0", "参数216 = 0时的K7键"},
+    HookFile{H::ExtButton, "ext_button", "ext_button.nc", "FUNC K01-K14 (#1996 = M250-M263)", "FUNC K01-K14（#1996 = M250-M263）"},
+    HookFile{H::ExtKey1, "extnc0-1", "extnc0-1.nc", "external key 1 while param 272 = 0", "参数272 = 0时的外部按键1"},
+    HookFile{H::ExtKey2, "extnc1-1", "extnc1-1.nc", "external key 2 while param 273 = 0", "参数273 = 0时的外部按键2"},
+    HookFile{H::ExtKey3, "extnc2-1", "extnc2-1.nc", "external key 3 while param 274 = 0", "参数274 = 0时的外部按键3"},
+    HookFile{H::ExtKey4, "extnc3-1", "extnc3-1.nc", "external key 4 while param 275 = 0", "参数275 = 0时的外部按键4"},
+    HookFile{H::ExtKey5, "extnc4-1", "extnc4-1.nc", "external key 5 while param 276 = 0", "参数276 = 0时的外部按键5"},
+    HookFile{H::ExtKey6, "extnc5-1", "extnc5-1.nc", "external key 6 while param 277 = 0", "参数277 = 0时的外部按键6"},
+    HookFile{H::M3, "M3", "M3.nc", "the M3 key", "M3键"},
+    HookFile{H::M4, "M4", "M4.nc", "the M4 key", "M4键"},
+    HookFile{H::M5, "M5", "M5.nc", "the M5 key", "M5键"},
+    HookFile{H::M8, "M8", "M8.nc", "the M8 key", "M8键"},
+    HookFile{H::M9, "M9", "M9.nc", "the M9 key", "M9键"},
+    HookFile{H::M10, "M10", "M10.nc", "the M10 key", "M10键"},
+    HookFile{H::M11, "M11", "M11.nc", "the M11 key", "M11键"},
+    HookFile{H::M19, "M19", "M19.nc", "the M19 key", "M19键"},
+    HookFile{H::Mdi, "mdi", kMdiProgramFile, "the MDI program kept beside mdiblock", "mdiblock旁保存的MDI程序"},
+    HookFile{H::UserLibrary, "slibuser", "slibuser.nc", "user G-code handlers O9100-O9199 (G100-G199)", "用户G代码处理程序O9100-O9199（G100-G199）", false},
 };
 
 constexpr bool inEnumOrder() {
@@ -99,6 +101,8 @@ const HookFile* findHook(std::string_view name) {
     }
     return nullptr;
 }
+
+std::string runsWhenWords(const HookFile& hook) { return bilingual(hook.runsWhen, hook.runsWhenZh); }
 
 std::string runnableHookNames() {
     std::string names;

@@ -70,6 +70,7 @@ struct HookFile {
     std::string_view name;     // as `m350-sim hook NAME` takes it: "fndzero", "key-3", "T"
     std::string_view fileName; // in the machine folder: "fndzero.nc"
     std::string_view runsWhen; // what runs it, for usage texts
+    std::string_view runsWhenZh; // the same in the panel's Chinese
     bool runnable = true;      // false for a library (slibuser.nc), which is loaded, not run
 };
 
@@ -77,6 +78,8 @@ std::span<const HookFile> hookFiles();
 const HookFile& hookFile(Hook hook);
 // By its name, with or without ".nc", in any case ("fndx" is fndX.nc).
 const HookFile* findHook(std::string_view name);
+// What runs the hook, as a message argument in both languages (core/common/Message.h).
+std::string runsWhenWords(const HookFile& hook);
 // The names of the hooks `m350-sim hook` runs, comma separated, for usage messages.
 std::string runnableHookNames();
 // The hook's file in the machine folder: its own name, or the same name in another case (a copy

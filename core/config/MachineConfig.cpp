@@ -339,7 +339,8 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
                     fail(file, refused->english(), value.source());
                 }
                 if (auto unread = params::unreadFanucParameter(n)) {
-                    config.warnings.push_back(warningAt(file, value.source(), unread->english()));
+                    config.warn(warningAt(file, value.source(), unread->english()),
+                                warningAt(file, value.source(), unread->in(MessageLanguage::Chinese)));
                 }
                 config.fanucParameters[n] = v;
                 config.fanucParameterOrigins[n] = placeOf(file, value.source());
@@ -352,7 +353,8 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
             // other members of the IO triples (enable, level) are not catalogued and pass as written.
             if (known && known->find(n)) {
                 if (auto problem = known->validate(n, v)) {
-                    config.warnings.push_back(file.string() + ": warning: " + *problem + " (used as written)");
+                    const Message kept = message("param_kept_as_written", {file.string(), bilingual(*problem)});
+                    config.warn(kept.english(), kept.in(MessageLanguage::Chinese));
                 }
             }
             config.parameters.set(n, v);
@@ -432,7 +434,7 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
     }
     tools::ParsedToolTable parsed = tools::parseToolTable(text, file.string());
     for (const tools::ToolTableIssue& issue : parsed.issues) {
-        config.warnings.push_back(tools::formatIssue(issue));
+        config.warn(tools::formatIssue(issue), tools::formatIssue(issue, MessageLanguage::Chinese));
     }
     if (parsed.issues.empty()) {
         files::refreshLastGood(file);
@@ -491,7 +493,7 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         }
         tools::ParsedToolLife& parsed = std::get<tools::ParsedToolLife>(life);
         for (const tools::LifeFileIssue& issue : parsed.issues) {
-            config.warnings.push_back(issue.text());
+            config.warn(issue.text(), issue.text(MessageLanguage::Chinese));
         }
         const fs::path lifeFile = dir / MachineFolder::fileName(FolderFile::ToolLife);
         if (parsed.issues.empty()) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/config/InterfaceSignals.h"
 #include "core/config/MagazineConfig.h"
 #include "core/config/ModbusSlaves.h"
@@ -70,7 +71,17 @@ struct MachineConfig {
     bool rotation() const { return coordinateRotation.value_or(dialect->id == gcode::DialectId::Fanuc); }
     int additionalWorkSystems() const { return variableLayout.workSystems(*dialect); }
     int magazineCapacity = 0; // machines whose capacity is not a parameter (FANUC)
-    std::vector<std::string> warnings; // values the panel would refuse, kept as written
+    std::vector<std::string> warnings; // values the panel would refuse, kept as written (English)
+    std::map<std::size_t, std::string> warningsChinese; // a warning's Chinese, by its index in `warnings`
+    void warn(std::string english, std::string chinese) {
+        warningsChinese[warnings.size()] = std::move(chinese);
+        warnings.push_back(std::move(english));
+    }
+    // The i-th warning in `language` (English where it has no Chinese).
+    const std::string& warning(std::size_t i, MessageLanguage language) const {
+        auto chinese = language == MessageLanguage::Chinese ? warningsChinese.find(i) : warningsChinese.end();
+        return chinese != warningsChinese.end() ? chinese->second : warnings[i];
+    }
     std::map<int, std::array<double, 5>> referencePoints; // G30 P2/P3 (FANUC G28: point 1), machine coordinates
     // The simulated world: how far each axis travels from where it stands at power-on to its home
     // switch ([homing] switch_distance = [X, Y, Z, A, B]); no parameter says this.

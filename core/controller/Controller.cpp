@@ -584,7 +584,7 @@ int Controller::stepOnce(int toolBefore) {
     }
     if (interp_.hasReloadIssues()) [[unlikely]] {
         for (std::string& issue : interp_.takeReloadIssues()) {
-            status_.postMessage(std::move(issue));
+            status_.postMessage(message("tool_table_reload_issue", {std::move(issue)}));
         }
     }
     if (auto stop = interp_.takeStop()) {

@@ -20,24 +20,20 @@ bool Controller::hasHook(config::Hook hook) const { return config::hookPath(conf
 
 bool Controller::loadHook(config::Hook hook, const std::map<int, double>& variables) {
     const config::HookFile& file = config::hookFile(hook);
-    auto say = [this, &file](std::string why) {
-        diagnostics_.assign(1, {gcode::Severity::Error, gcode::DiagnosticKind::Syntax, std::string(file.fileName), 0, 0,
-                                std::move(why)});
+    auto say = [this, &file](const Message& why) {
+        diagnostics_.assign(1, gcode::diagnostic(gcode::Severity::Error, gcode::DiagnosticKind::Syntax,
+                                                 std::string(file.fileName), 0, 0, why));
         return false;
     };
     if (state_ == RunState::Running || state_ == RunState::Hold) {
         // the running program stays loaded
-        return say("a program is running: " + std::string(file.fileName) + " waits until it ends or is reset");
+        return say(message("hook_busy", {std::string(file.fileName)}));
     }
-    auto refuse = [this, &say](std::string why) {
-        executor_.reset();
-        hook_.reset();
-        return say(std::move(why));
-    };
     auto path = config::hookPath(config_.folder, hook);
     if (!path || !file.runnable) {
-        return refuse("the machine folder " + config_.folder + " has no " + std::string(file.fileName) + " (" +
-                      std::string(file.runsWhen) + ")");
+        executor_.reset();
+        hook_.reset();
+        return say(message("hook_missing", {config_.folder, std::string(file.fileName), config::runsWhenWords(file)}));
     }
     if (!loadFile(*path)) {
         return false;

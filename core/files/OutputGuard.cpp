@@ -41,14 +41,14 @@ std::optional<GuardHit> outputOverGuarded(const fs::path& output, const std::vec
     return std::nullopt;
 }
 
-std::optional<std::string> refusedOutput(const std::string& option, const fs::path& output,
-                                         const std::vector<GuardedPath>& guarded) {
+std::optional<Message> refusedOutput(const std::string& option, const fs::path& output,
+                                     const std::vector<GuardedPath>& guarded) {
     auto hit = outputOverGuarded(output, guarded);
     if (!hit) {
         return std::nullopt;
     }
-    return option + " " + output.string() + (hit->inside ? " is inside " : " is ") + hit->guarded.what + " (" +
-           hit->guarded.path.string() + "): refused, nothing was written";
+    return message(hit->inside ? "output_inside_guarded" : "output_is_guarded",
+                   {option, output.string(), hit->guarded.what, hit->guarded.path.string()});
 }
 
 std::optional<Unwritable> unwritableOutput(const fs::path& output) {

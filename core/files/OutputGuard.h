@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -10,7 +12,7 @@ namespace m350::files {
 // What a program reads or owns and so never writes an output over: an input file (the program, a
 // library, a replay being played), or a whole folder (the panel's machine folder).
 struct GuardedPath {
-    std::string what; // "the program of this run", "the replay being played", "the machine folder"
+    std::string what; // "the program of this run", "the replay being played": in both languages (bilingual())
     std::filesystem::path path;
     bool folder = false; // nothing inside it either (a new file included)
 };
@@ -26,8 +28,8 @@ struct GuardHit {
 // once emptied the program. m350-sim and m350-hmi both ask it.
 std::optional<GuardHit> outputOverGuarded(const std::filesystem::path& output, const std::vector<GuardedPath>& guarded);
 // The same, as the command lines say it: "--trace prog.nc is the program of this run (prog.nc):
-// refused, nothing was written".
-std::optional<std::string> refusedOutput(const std::string& option, const std::filesystem::path& output,
+// refused, nothing was written", by message id (`option` may be bilingual too).
+std::optional<Message> refusedOutput(const std::string& option, const std::filesystem::path& output,
                                          const std::vector<GuardedPath>& guarded);
 
 // Why `output` cannot be an output file at all, said before a run rather than after it.

@@ -62,7 +62,7 @@ std::variant<ParameterRestore, std::string> readParameterBackup(const std::files
         auto value = node.value<double>();
         if (!value || !std::isfinite(*value)) return where(file, node.source()) + "parameter " + std::to_string(n) + " must be a finite number";
         if (catalogue.find(n))
-            if (auto problem = catalogue.validate(n, *value)) restore.outOfRange.push_back(*problem);
+            if (auto problem = catalogue.validate(n, *value)) restore.outOfRange.push_back(problem->english());
         restore.values[n] = *value;
     }
     if (restore.values.size() != static_cast<std::size_t>(ParameterTable::kCount))

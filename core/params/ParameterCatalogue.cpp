@@ -207,33 +207,36 @@ const ParameterInfo* ParameterCatalogue::find(int number) const {
     return it == index_.end() ? nullptr : &params_[it->second];
 }
 
-std::optional<std::string> ParameterCatalogue::validate(int number, double value) const {
+std::optional<Message> ParameterCatalogue::validate(int number, double value) const {
     const ParameterInfo* p = find(number);
-    if (p == nullptr) return "parameter " + std::to_string(number) + " is not in the catalogue";
+    if (p == nullptr) return message("param_not_catalogued", {std::to_string(number)});
     // The words are put together only for a refusal: a machine folder's every parameter is checked.
-    auto refusal = [&](const std::string& rule) {
-        return "parameter " + std::to_string(number) + " (" + p->nameEn + ") must be " + rule + ", not " +
-               formatNumber(value);
+    auto refusal = [&](std::string_view id, std::vector<std::string> rule) {
+        std::vector<std::string> arguments{std::to_string(number), bilingual(p->nameEn, p->nameZh)};
+        arguments.insert(arguments.end(), rule.begin(), rule.end());
+        arguments.push_back(formatNumber(value));
+        return message(id, std::move(arguments));
     };
-    auto range = [p] { return "from " + formatNumber(p->min) + " to " + formatNumber(p->max); };
     switch (p->type) {
     case ParameterInfo::Type::Int:
         // Written as negations so that NaN is refused too.
         if (!(value == std::floor(value) && value >= p->min && value <= p->max))
-            return refusal("a whole number " + range());
+            return refusal("param_must_be_whole", {formatNumber(p->min), formatNumber(p->max)});
         return std::nullopt;
     case ParameterInfo::Type::Real:
-        if (!(value >= p->min && value <= p->max)) return refusal(range());
+        if (!(value >= p->min && value <= p->max)) return refusal("param_must_be_in_range", {formatNumber(p->min), formatNumber(p->max)});
         return std::nullopt;
     case ParameterInfo::Type::Select:
         break;
     }
-    std::string choices;
+    std::string english;
+    std::string chinese;
     for (const ParameterOption& option : p->options) {
         if (option.value == value) return std::nullopt;
-        choices += (choices.empty() ? "" : ", ") + formatNumber(option.value) + " (" + option.en + ")";
+        english += (english.empty() ? "" : ", ") + formatNumber(option.value) + " (" + option.en + ")";
+        chinese += (chinese.empty() ? "" : "、") + formatNumber(option.value) + "（" + option.zh + "）";
     }
-    return refusal("one of " + choices);
+    return refusal("param_must_be_one_of", {bilingual(english, chinese)});
 }
 
 double ParameterCatalogue::atResolution(int number, double value) const {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/params/ParameterTable.h"
 
 #include <optional>
@@ -42,8 +43,8 @@ public:
     const ParameterInfo* find(int number) const;
     const std::vector<ParameterInfo>& all() const { return params_; } // in page order, as the TSV
 
-    // nullopt when the controller would accept `value`; else a plain English reason.
-    std::optional<std::string> validate(int number, double value) const;
+    // nullopt when the controller would accept `value`; else the reason, by message id.
+    std::optional<Message> validate(int number, double value) const;
     // `value` at the parameter's resolution, as params.toml keeps it: a whole number for an int or
     // a select, four decimals for a real (the pages show three; taught positions such as the
     // factory 135 = 5.7195 carry four); an uncatalogued number as it is.

@@ -263,7 +263,7 @@ std::optional<Message> ToolData::reload(std::vector<std::string>& skipped) {
     }
     ParsedToolTable& parsed = std::get<ParsedToolTable>(read);
     for (const ToolTableIssue& issue : parsed.issues) {
-        skipped.push_back(formatIssue(issue));
+        skipped.push_back(bilingual(formatIssue(issue), formatIssue(issue, MessageLanguage::Chinese)));
     }
     ToolTable table = std::move(parsed.table);
     for (int tool : changedSinceLoad_) {

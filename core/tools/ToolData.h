@@ -88,7 +88,7 @@ public:
     // file cannot be read; its skipped lines in `skipped`.
     void setSourceFile(std::string path) { sourceFile_ = std::move(path); }
     bool keepsToolTable() const { return !sourceFile_.empty(); }
-    std::optional<Message> reload(std::vector<std::string>& skipped);
+    std::optional<Message> reload(std::vector<std::string>& skipped); // skipped: each issue bilingual()
     // LinuxCNC's random tool changer ([EMCIO]RANDOM_TOOLCHANGER = 1) at M6: tool `to` leaves its
     // pocket for the spindle (pocket 0) and tool `from` goes into that pocket. Tools not in the
     // table keep no pocket.

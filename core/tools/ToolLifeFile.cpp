@@ -14,7 +14,7 @@ namespace {
 
 // A bad item of a line: what is wrong and the field it is in (its column).
 struct LineError {
-    std::string message;
+    Message words;
     std::string_view at;
 };
 
@@ -41,8 +41,7 @@ int number(std::string_view text, int low, int high, std::string_view what) {
     int value = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec != std::errc{} || end != text.data() + text.size() || value < low || value > high) {
-        throw LineError{std::string(what) + " must be a whole number from " + std::to_string(low) + " to " +
-                            std::to_string(high) + ", not '" + std::string(text) + "'",
+        throw LineError{message("life_file_number", {std::string(what), std::to_string(low), std::to_string(high), std::string(text)}),
                         text};
     }
     return value;
@@ -55,7 +54,7 @@ LifeKind kindOf(std::string_view text) {
     if (text == "minutes") {
         return LifeKind::Minutes;
     }
-    throw LineError{"the life is counted in 'count' or 'minutes', not '" + std::string(text) + "'", text};
+    throw LineError{message("life_file_kind", {std::string(text)}), text};
 }
 
 // `key value key value ...` after the item's own number; every key once, all required.
@@ -68,18 +67,17 @@ std::vector<int> namedNumbers(const std::vector<std::string_view>& f, std::size_
             ++k;
         }
         if (k == keys.size() || i + 1 >= f.size()) {
-            throw LineError{k == keys.size() ? "unknown word '" + std::string(f[i]) + "'"
-                                             : "'" + std::string(f[i]) + "' needs a value",
+            throw LineError{message(k == keys.size() ? "life_file_unknown_word" : "life_file_needs_value", {std::string(f[i])}),
                             f[i]};
         }
         if (values[k] >= 0) {
-            throw LineError{"'" + std::string(f[i]) + "' is given twice", f[i]};
+            throw LineError{message("life_file_word_twice", {std::string(f[i])}), f[i]};
         }
         values[k] = number(f[i + 1], 0, keys[k].second, f[i]);
     }
     for (std::size_t k = 0; k < keys.size(); ++k) {
         if (values[k] < 0) {
-            throw LineError{"missing '" + std::string(keys[k].first) + "'", f.back()};
+            throw LineError{message("life_file_missing_word", {std::string(keys[k].first)}), f.back()};
         }
     }
     return values;
@@ -87,12 +85,10 @@ std::vector<int> namedNumbers(const std::vector<std::string_view>& f, std::size_
 
 void parseSetting(const std::vector<std::string_view>& f, LifeData& data) {
     if (data.fromParameters && (f[0] == "gs" || f[0] == "ignore" || f[0] == "ltm")) {
-        const char* where = f[0] == "gs"       ? "parameter 6800 #0 GS1 / #1 GS2"
-                            : f[0] == "ignore" ? "parameter 6810"
-                                               : "parameter 6800 #2 LTM";
-        throw LineError{"on a FANUC machine '" + std::string(f[0]) + "' is the control's " + where +
-                            ": set it in params.toml",
-                        f[0]};
+        const std::string where = f[0] == "gs"       ? bilingual("parameter 6800 #0 GS1 / #1 GS2", "参数6800 #0 GS1 / #1 GS2")
+                                  : f[0] == "ignore" ? bilingual("parameter 6810", "参数6810")
+                                                     : bilingual("parameter 6800 #2 LTM", "参数6800 #2 LTM");
+        throw LineError{message("life_file_fanuc_setting", {std::string(f[0]), where}), f[0]};
     }
     if (f[0] == "gs" && f.size() == 2) {
         data.gs = number(f[1], 0, 3, "gs");
@@ -101,36 +97,33 @@ void parseSetting(const std::vector<std::string_view>& f, LifeData& data) {
     } else if (f[0] == "ltm" && f.size() == 2) {
         data.defaultKind = kindOf(f[1]);
     } else {
-        throw LineError{"expected 'gs N', 'ignore N', 'ltm count|minutes', 'group N life L count|minutes' or "
-                        "'tool T h H d D used U'",
-                        f[0]};
+        throw LineError{message("life_file_expected_line"), f[0]};
     }
 }
 
 LifeGroup parseGroup(const std::vector<std::string_view>& f, const LifeData& data) {
     if (f.size() != 5 || f[2] != "life") {
-        throw LineError{"a group line is 'group N life L count|minutes'", f.size() > 2 ? f[2] : f[0]};
+        throw LineError{message("life_file_group_line"), f.size() > 2 ? f[2] : f[0]};
     }
     LifeGroup group;
-    group.number = number(f[1], 1, 128, "the group number");
-    group.life = number(f[3], 1, 99999, "the life");
+    group.number = number(f[1], 1, 128, bilingual("the group number", "刀具组号"));
+    group.life = number(f[3], 1, 99999, bilingual("the life", "寿命值"));
     group.kind = kindOf(f[4]);
     if (data.group(group.number)) {
-        throw LineError{"group " + std::to_string(group.number) + " is given twice", f[1]};
+        throw LineError{message("life_file_group_twice", {std::to_string(group.number)}), f[1]};
     }
     return group;
 }
 
 LifeTool parseTool(const std::vector<std::string_view>& f, const LifeGroup& group) {
     if (f.size() < 2) {
-        throw LineError{"a tool line is 'tool T h H d D used U'", f[0]};
+        throw LineError{message("life_file_tool_line"), f[0]};
     }
     LifeTool tool;
-    tool.tool = number(f[1], 1, 9999, "the tool number");
+    tool.tool = number(f[1], 1, 9999, bilingual("the tool number", "刀号"));
     for (const LifeTool& sister : group.tools) {
         if (sister.tool == tool.tool) {
-            throw LineError{"T" + std::to_string(tool.tool) + " is already in group " + std::to_string(group.number),
-                            f[1]};
+            throw LineError{message("life_file_tool_twice", {std::to_string(tool.tool), std::to_string(group.number)}), f[1]};
         }
     }
     std::vector<int> v = namedNumbers(f, 2, {{"h", 999}, {"d", 999}, {"used", 9999999}});
@@ -168,7 +161,7 @@ public:
             if (f[0] == "tool") {
                 LifeGroup* group = out_.data.group(currentGroup_);
                 if (!group) {
-                    throw LineError{"a tool line must follow its 'group' line", f[0]};
+                    throw LineError{message("life_file_tool_first"), f[0]};
                 }
                 group->tools.push_back(parseTool(f, *group));
                 groupLines_[currentGroup_].emplace_back(text);
@@ -184,7 +177,7 @@ public:
             }
         } catch (const LineError& e) {
             const auto column = static_cast<std::uint32_t>(e.at.data() - text.data()) + 1;
-            out_.issues.push_back({file_, number, column, e.message});
+            out_.issues.push_back({file_, number, column, e.words.english(), e.words});
             out_.data.unreadLines.emplace_back(text);
         }
     }
@@ -192,14 +185,14 @@ public:
     ParsedToolLife finish() {
         std::vector<int> refused;
         for (const LifeGroup& g : out_.data.groups) {
-            std::optional<std::string> problem;
+            std::optional<Message> problem;
             if (g.tools.empty()) {
-                problem = "group " + std::to_string(g.number) + " has no tools";
+                problem = message("life_file_group_no_tools", {std::to_string(g.number)});
             } else if (auto capacity = out_.data.capacityProblem(g)) {
-                problem = capacity->english();
+                problem = *capacity;
             }
             if (problem) {
-                out_.issues.push_back({file_, groupFirstLine_[g.number], 1, *problem});
+                out_.issues.push_back({file_, groupFirstLine_[g.number], 1, problem->english(), *problem});
                 refused.push_back(g.number);
             }
         }
@@ -222,8 +215,9 @@ private:
 
 } // namespace
 
-std::string LifeFileIssue::text() const {
-    return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: " + message + " (line skipped)";
+std::string LifeFileIssue::text(MessageLanguage language) const {
+    return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+           messageText("life_file_line_skipped", {words.id.empty() ? message : bilingual(words)}, language);
 }
 
 ParsedToolLife parseToolLife(std::string_view text, const std::string& file, const LifeData* settings) {

@@ -30,9 +30,10 @@ struct LifeFileIssue {
     std::string file;
     std::uint32_t line = 0;   // 1-based
     std::uint32_t column = 0; // 1-based
-    std::string message;
+    std::string message; // English, as the JSON says it
+    Message words;       // the same by message id
     // "toollife.txt:3:26: error: unknown word 'extra' (line skipped)"
-    std::string text() const;
+    std::string text(MessageLanguage language = MessageLanguage::English) const;
 };
 
 struct ParsedToolLife {

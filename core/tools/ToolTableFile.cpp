@@ -25,9 +25,10 @@ void capIssues(std::vector<ToolTableIssue>& issues) {
     findings.reserve(issues.size());
     for (ToolTableIssue& issue : issues) {
         const bool error = issue.severity == ToolTableIssue::Severity::Error;
-        findings.push_back({error ? gcode::Severity::Error : gcode::Severity::Warning, gcode::DiagnosticKind::Syntax,
-                            std::move(issue.file), static_cast<std::uint32_t>(issue.line),
-                            static_cast<std::uint32_t>(issue.column), clipEcho(std::move(issue.message))});
+        findings.push_back(gcode::diagnostic(error ? gcode::Severity::Error : gcode::Severity::Warning,
+                                             gcode::DiagnosticKind::Syntax, std::move(issue.file),
+                                             static_cast<std::uint32_t>(issue.line),
+                                             static_cast<std::uint32_t>(issue.column), issue.words));
     }
     gcode::DiagnosticCap cap;
     cap.finish(findings, gcode::Program{}, gcode::DiagnosticCap::Order::AsFiled);
@@ -36,7 +37,7 @@ void capIssues(std::vector<ToolTableIssue>& issues) {
         issues.push_back({d.severity == gcode::Severity::Error ? ToolTableIssue::Severity::Error
                                                                : ToolTableIssue::Severity::Warning,
                           std::move(d.file), static_cast<int>(d.line), static_cast<int>(d.column),
-                          std::move(d.message), d.omitted});
+                          std::move(d.message), d.omitted, Message{std::move(d.messageId), std::move(d.messageArguments)}});
     }
 }
 
@@ -66,47 +67,45 @@ public:
             while (i < line_.size() && !blank(line_[i]) && line_[i] != ';') ++i;
             const std::string_view value = line_.substr(start + 1, i - start - 1);
             if (auto [it, fresh] = seen.emplace(letter, start + 1); !fresh) {
-                return refuse(issues, start, std::string(1, letter) + " is given twice (first at column " +
-                                                 std::to_string(it->second) + ")");
+                return refuse(issues, start, message("tool_table_word_twice", {std::string(1, letter), std::to_string(it->second)}));
             }
             if (auto why = setWord(entry, letter, value)) {
                 return refuse(issues, start, *why);
             }
         }
         if (!seen.count('T') || !seen.count('P')) {
-            return refuse(issues, 0, std::string("a row needs T (the tool number) and P (its pocket)") +
-                                         (seen.count('T') ? ": P is missing" : ": T is missing"));
+            return refuse(issues, 0, message(seen.count('T') ? "tool_table_no_pocket" : "tool_table_no_tool"));
         }
         return entry;
     }
 
 private:
-    std::optional<ToolEntry> refuse(std::vector<ToolTableIssue>& issues, std::size_t index, std::string why) const {
+    std::optional<ToolEntry> refuse(std::vector<ToolTableIssue>& issues, std::size_t index, const Message& why) const {
         issues.push_back({ToolTableIssue::Severity::Error, file_, lineNumber_, static_cast<int>(index) + 1,
-                          std::move(why)});
+                          why.english(), 0, why});
         return std::nullopt;
     }
 
-    static std::optional<std::string> setWord(ToolEntry& entry, char letter, std::string_view text) {
+    static std::optional<Message> setWord(ToolEntry& entry, char letter, std::string_view text) {
         const std::string word = std::string(1, letter) + std::string(text);
         if (letter == 'T' || letter == 'P' || letter == 'Q') {
             std::optional<int> n = parseWholeNumber(text);
             if (!n) {
-                return "'" + word + "': " + std::string(1, letter) + " needs a whole number";
+                return message("tool_table_whole_number", {word, std::string(1, letter)});
             }
             if (letter == 'T') {
                 if (*n < 1) {
-                    return "'" + word + "': tool numbers start at 1 (T0 is the empty spindle)";
+                    return message("tool_table_tool_from_1", {word});
                 }
                 entry.tool = *n;
             } else if (letter == 'P') {
                 if (*n < 0 || *n > ToolTable::kMaxPocket) {
-                    return "'" + word + "': pockets run from 1 to 1000 (0 is the spindle)";
+                    return message("tool_table_pocket_word", {word});
                 }
                 entry.pocket = *n;
             } else {
                 if (*n < 0 || *n > 9) {
-                    return "'" + word + "': the orientation Q runs from 0 to 9";
+                    return message("tool_table_orientation_range", {word});
                 }
                 entry.orientation = *n;
             }
@@ -123,16 +122,13 @@ private:
                                                                : target;
         if (!target) {
             if (!std::isalpha(static_cast<unsigned char>(letter))) {
-                return "'" + word + "' is no word: a row is T.. P.. then X Y Z A B C U V W D I J Q and a ;comment";
+                return message("tool_table_not_a_word", {word});
             }
-            return "'" + std::string(1, letter) +
-                   "' is no tool table word (LinuxCNC reads T P X Y Z A B C U V W D I J Q and would skip the "
-                   "row); put maximum rpm, teeth and type in the comment: ;{rpm=24000 teeth=2 type=flat}";
+            return message("tool_table_unknown_letter", {std::string(1, letter)});
         }
         std::optional<double> v = parseTableNumber(text);
         if (!v) {
-            return "'" + word + "': " + std::string(1, letter) + " needs a number" +
-                   (text.empty() ? " right after the letter" : "");
+            return message(text.empty() ? "tool_table_number_after_letter" : "tool_table_number", {word, std::string(1, letter)});
         }
         *target = v;
         return std::nullopt;
@@ -142,8 +138,8 @@ private:
         CommentParts parts = splitComment(line_.substr(from), static_cast<int>(from) + 1);
         entry.comment = parts.text;
         for (const CommentProblem& problem : parts.problems) {
-            issues.push_back({ToolTableIssue::Severity::Warning, file_, lineNumber_, problem.column,
-                              problem.message + " (kept as comment text)"});
+            const Message kept = message("tool_table_kept_as_comment", {problem.message});
+            issues.push_back({ToolTableIssue::Severity::Warning, file_, lineNumber_, problem.column, kept.english(), 0, kept});
         }
         if (parts.problems.empty()) {
             entry.maxRpm = parts.maxRpm;
@@ -167,10 +163,12 @@ bool commentOrBlank(std::string_view line) {
 
 } // namespace
 
-std::string formatIssue(const ToolTableIssue& issue) {
+std::string formatIssue(const ToolTableIssue& issue, MessageLanguage language) {
     const bool error = issue.severity == ToolTableIssue::Severity::Error;
-    return issue.file + ":" + std::to_string(issue.line) + ":" + std::to_string(issue.column) +
-           (error ? ": error: " : ": warning: ") + issue.message + (error && issue.omitted == 0 ? " (line skipped)" : "");
+    const std::string words = issue.words.id.empty() ? issue.message : bilingual(issue.words);
+    return issue.file + ":" + std::to_string(issue.line) + ":" + std::to_string(issue.column) + ": " +
+           messageText(!error ? "tool_table_warning" : issue.omitted == 0 ? "tool_table_error_skipped" : "tool_table_error",
+                       {words}, language);
 }
 
 bool ParsedToolTable::skippedLines() const {
@@ -203,18 +201,16 @@ ParsedToolTable parseToolTable(std::string_view text, const std::string& fileNam
             continue;
         }
         std::optional<ToolEntry> entry = RowReader(line, fileName, number).read(out.issues);
-        auto refuse = [&](std::string why) {
-            out.issues.push_back({ToolTableIssue::Severity::Error, fileName, number, 1, std::move(why)});
+        auto refuse = [&](const Message& why) {
+            out.issues.push_back({ToolTableIssue::Severity::Error, fileName, number, 1, why.english(), 0, why});
             entry.reset();
         };
         if (entry && toolLine.count(entry->tool)) {
-            refuse("tool " + std::to_string(entry->tool) + " is already in the table (line " +
-                   std::to_string(toolLine[entry->tool]) + "): tool numbers must be unique");
+            refuse(message("tool_table_tool_twice", {std::to_string(entry->tool), std::to_string(toolLine[entry->tool])}));
         } else if (entry && pocketLine.count(entry->pocket)) {
-            refuse("pocket " + std::to_string(entry->pocket) + " already holds a tool (line " +
-                   std::to_string(pocketLine[entry->pocket]) + "): pocket numbers must be unique");
+            refuse(message("tool_table_pocket_twice", {std::to_string(entry->pocket), std::to_string(pocketLine[entry->pocket])}));
         } else if (entry && out.table.size() >= static_cast<std::size_t>(ToolTable::kMaxTools)) {
-            refuse("more than " + std::to_string(ToolTable::kMaxTools) + " tools");
+            refuse(message("tool_table_too_many", {std::to_string(ToolTable::kMaxTools)}));
         }
         if (!entry) {
             out.table.appendText(std::string(line));

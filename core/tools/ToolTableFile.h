@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/tools/ToolTable.h"
 
 #include <filesystem>
@@ -31,9 +32,10 @@ struct ToolTableIssue {
     // > 0: this issue stands for that many left out (gcode::DiagnosticCap: a table of 100,000 bad
     // lines lists its first and last 500, as `check` does)
     std::uint64_t omitted = 0;
+    Message words{}; // `message` by message id (core/common/Message.h), for the panel and `m350-sim --lang`
 };
 // "tool.tbl:3:7: error: ... (line skipped)" / "tool.tbl:4:30: warning: ..."
-std::string formatIssue(const ToolTableIssue& issue);
+std::string formatIssue(const ToolTableIssue& issue, MessageLanguage language = MessageLanguage::English);
 
 struct ParsedToolTable {
     ToolTable table;

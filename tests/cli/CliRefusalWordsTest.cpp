@@ -238,7 +238,7 @@ TEST_F(CliRefusalWordsTest, UsageErrorsAreSaidInTheLangLanguage) {
              Usage{{"--dialect", "fanuc", "--param", "6050=100", "--param", "6052=100"},
                    "m350-sim: --param 6052: parameter 6052 = 100 makes G100 call O9012, but parameter 6050 = 100 "
                    "(--param 6050) already makes it call O9010: keep one of them",
-                   "m350-sim: --param 6052: 参数6052 = 100使G100调用O9012，但parameter 6050 = 100 (--param 6050)已使其调用O9010"},
+                   "m350-sim: --param 6052: 参数6052 = 100使G100调用O9012，但参数6050 = 100 (--param 6050)已使其调用O9010"},
          }) {
         SCOPED_TRACE(usage.english);
         std::vector<std::string> args{"run", "q.nc"};

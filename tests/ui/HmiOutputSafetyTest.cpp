@@ -38,7 +38,8 @@ HmiResult hmi(const QStringList& arguments, const QString& workingDirectory, int
     process.setWorkingDirectory(workingDirectory);
     QElapsedTimer clock;
     clock.start();
-    process.start(M350_HMI_PATH, arguments);
+    // the refusals are checked in English unless a test asks for the panel's zh_CN
+    process.start(M350_HMI_PATH, arguments.contains("--lang") ? arguments : QStringList{"--lang", "en"} + arguments);
     HmiResult run;
     if (!process.waitForFinished(timeoutMs)) {
         process.kill();
@@ -108,6 +109,18 @@ TEST_F(HmiOutputs, AnOutputOnTheProgramTheReplayOrTheMachineFolderIsRefused) {
                   "--record replay.jsonl is the replay being played (replay.jsonl)");
     expectRefused(run({"--state", "out.json", "--screenshot", "out.json"}), "--screenshot out.json is also the --state file");
     EXPECT_FALSE(QFileInfo::exists(path("out.json")));
+}
+
+// The zh_CN panel (the default) says the refusal in Chinese, by message id as m350-sim does.
+TEST_F(HmiOutputs, AnOutputOnAnInputIsRefusedInThePanelsLanguage) {
+    HmiResult r = run({"--lang", "zh_CN", "prog.nc", "--state", "prog.nc"});
+    EXPECT_EQ(r.exitCode, 2) << r.errors.toStdString();
+    EXPECT_TRUE(r.errors.contains(QStringLiteral("--state prog.nc是已加载的程序（prog.nc）：已拒绝，未写入任何内容")))
+        << r.errors.toStdString();
+    r = run({"--lang", "zh_CN", "--config", "machine", "--record", "machine/r.jsonl"});
+    EXPECT_TRUE(r.errors.contains(QStringLiteral("--record machine/r.jsonl位于机床文件夹（machine）内：已拒绝，未写入任何内容")))
+        << r.errors.toStdString();
+    EXPECT_EQ(contents(path("prog.nc")), "G0 X1\nM30\n");
 }
 
 TEST_F(HmiOutputs, AFolderAFileAsAFolderAndATextFileAsAScreenshotAreRefused) {

@@ -167,7 +167,7 @@ TEST(FanucCallParameters, AClashOfTheRunSettingsKeepsTheCallCodesAndSaysSo) {
     EXPECT_EQ(kept->english(), "parameter 6052 = 100 makes G100 call O9012, but parameter 6050 = 100 (--param 6050) "
                                "already makes it call O9010: keep one of them (the machine's call codes are kept)");
     EXPECT_EQ(kept->in(MessageLanguage::Chinese),
-              "参数6052 = 100使G100调用O9012，但parameter 6050 = 100 (--param 6050)已使其调用O9010：请只保留其中一个"
+              "参数6052 = 100使G100调用O9012，但参数6050 = 100 (--param 6050)已使其调用O9010：请只保留其中一个"
               "（机床的调用代码保持不变）");
 }
 

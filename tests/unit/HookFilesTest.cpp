@@ -166,7 +166,14 @@ TEST_F(HookMachine, AMissingHookIsRefusedNamingItsFile) {
     Controller c(machine(), {});
     EXPECT_FALSE(c.loadHook(Hook::PowerOn));
     ASSERT_EQ(c.diagnostics().size(), 1u);
-    EXPECT_NE(c.diagnostics()[0].message.find("has no sysstart.nc"), std::string::npos) << diagnosticsOf(c);
+    EXPECT_NE(c.diagnostics()[0].message.find("has no sysstart.nc (power-on, before the boot homing prompt)"),
+              std::string::npos)
+        << diagnosticsOf(c);
+    // the zh_CN panel says it by its id, with what runs the hook in Chinese
+    const gcode::Diagnostic& d = c.diagnostics()[0];
+    EXPECT_EQ(d.messageId, "hook_missing");
+    const std::string chinese = messageText(d.messageId, d.messageArguments, MessageLanguage::Chinese);
+    EXPECT_NE(chinese.find("中没有sysstart.nc（开机时，回零提示之前）"), std::string::npos) << chinese;
     EXPECT_FALSE(c.start());
 }
 

@@ -43,7 +43,9 @@ bool hasEnglishWords(const std::string& text) {
     static const std::set<std::string> kept{
         "MGETDATA", "MSETDATA", "Modbus", "modbus", "toml", "slave", "TLCH", "GOTO", "GOTOn", "THEN", "WHILE",
         "BPRNT", "DPRNT", "POPEN", "PCLOS", "FANUC", "ATAN", "FIFO", "LinuxCNC", "slib", "tool", "table", "machine", "variables", "common", "coordinates", "additional",
-        "systems", "reference", "points", "params", "help"};
+        "systems", "reference", "points", "params", "help",
+        // the words of toollife.txt and tool.tbl lines, which the file keeps in any language
+        "count", "minutes", "group", "life", "used", "ignore", "teeth", "type", "flat"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;

@@ -120,7 +120,7 @@ TEST(ParameterCatalogue, ValidateInt) {
     EXPECT_EQ(bundled().validate(801, 20), std::nullopt);
     EXPECT_EQ(bundled().validate(801, 25),
               "parameter 801 (Total number of tools) must be a whole number from 0 to 20, not 25");
-    EXPECT_THAT(bundled().validate(801, 2.5).value_or(""), HasSubstr("whole number from 0 to 20, not 2.5"));
+    EXPECT_THAT(bundled().validate(801, 2.5).value_or(m350::Message{}).english(), HasSubstr("whole number from 0 to 20, not 2.5"));
     EXPECT_TRUE(bundled().validate(801, -1).has_value());
 }
 
@@ -136,10 +136,15 @@ TEST(ParameterCatalogue, ValidateSelect) {
     EXPECT_EQ(bundled().validate(802, 4), std::nullopt);
     auto message = bundled().validate(802, 5);
     ASSERT_TRUE(message.has_value());
-    EXPECT_THAT(*message, HasSubstr("parameter 802 (Tool magazine type) must be one of 0 (NULL), "));
-    EXPECT_THAT(*message, HasSubstr("4 (Servo disc), not 5"));
+    EXPECT_EQ(message->id, "param_must_be_one_of");
+    EXPECT_THAT(message->english(), HasSubstr("parameter 802 (Tool magazine type) must be one of 0 (NULL), "));
+    EXPECT_THAT(message->english(), HasSubstr("4 (Servo disc), not 5"));
+    // the panel's and `m350-sim --lang zh_CN`'s words: the parameter's Chinese name and choices
+    EXPECT_THAT(message->in(m350::MessageLanguage::Chinese), HasSubstr("参数802（刀库类型）须为0（无刀库）、1（多工序）"));
+    EXPECT_THAT(message->in(m350::MessageLanguage::Chinese), HasSubstr("4（圆盘刀库）之一，不能为5"));
     EXPECT_TRUE(bundled().validate(802, 1.5).has_value());
-    EXPECT_THAT(bundled().validate(4, 0).value_or(""), HasSubstr("parameter 4 is not in the catalogue"));
+    ASSERT_TRUE(bundled().validate(4, 0).has_value());
+    EXPECT_EQ(bundled().validate(4, 0)->english(), "parameter 4 is not in the catalogue");
 }
 
 TEST(ParameterCatalogue, ApplyDefaults) {

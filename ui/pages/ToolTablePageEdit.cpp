@@ -201,7 +201,7 @@ void ToolTablePage::importTable() {
         int refused = 0;
         for (const tools::ToolTableIssue& issue : parsed->issues) {
             if (issue.severity == tools::ToolTableIssue::Severity::Error && refused++ == 0) {
-                skipped = QString::fromStdString(tools::formatIssue(issue));
+                skipped = QString::fromStdString(tools::formatIssue(issue, Language::messageLanguage()));
             }
         }
         QString question = tr("Replace the tool table with the %1 tools of %2?")
