@@ -57,7 +57,10 @@ bool asksForHelpOrVersion(int argc, char** argv) {
 
 // --measure: run the loaded program in real time and report what the operator would see.
 int measure(QApplication& app, ui::MainWindow& window, ui::MachineSession& session, double seconds, qint64 startNs) {
-    ui::PanelMeter meter(window.findChild<QWidget*>(QStringLiteral("droMachine0")), startNs);
+    // what repaints every frame on the page shown: the machine view on 图形显示, else the DRO
+    const bool graphics = window.currentPage()->id() == QLatin1String("graphics");
+    ui::PanelMeter meter(window.findChild<QWidget*>(graphics ? QStringLiteral("machineView") : QStringLiteral("droMachine0")),
+                         startNs);
     QObject::connect(&session, &ui::MachineSession::snapshotReady, &meter, &ui::PanelMeter::onSnapshot);
     window.show();
     session.start();
