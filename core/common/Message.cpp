@@ -5,15 +5,19 @@
 
 namespace m350 {
 
-// translations/messages.tsv, compiled in by CMake (core/CMakeLists.txt): one source for the
-// core's English, the CLI's and the panel's Chinese.
-extern const char* const kMessageTableTsv;
+// translations/messages.tsv, compiled in by CMake (core/CMakeLists.txt) in pieces of whole lines,
+// the last nullptr: one source for the core's English, the CLI's and the panel's Chinese.
+extern const char* const kMessageTableTsv[];
 
 namespace {
 
 std::vector<MessagePattern> readTable() {
     std::vector<MessagePattern> table;
-    std::string_view text(kMessageTableTsv);
+    std::string whole;
+    for (const char* const* part = kMessageTableTsv; *part; ++part) {
+        whole += *part;
+    }
+    std::string_view text(whole);
     while (!text.empty()) {
         const std::size_t end = text.find('\n');
         std::string_view line = text.substr(0, end);
