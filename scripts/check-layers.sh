@@ -9,8 +9,8 @@ set -euo pipefail
 root="${1:-$(dirname "${BASH_SOURCE[0]}")/..}"
 
 # Bottom first. core never includes ui or app; ui never includes app.
-core_layers=(common files params gcode machine macro tools interp check devices config backup controller preview)
-ui_layers=(i18n session widgets view program pages actions panel replay)
+core_layers=(common files params gcode machine macro tools interp check devices config backup controller preview training)
+ui_layers=(i18n session widgets view program pages actions panel replay training)
 app_layers=(sim hmi)
 
 rank_of() { # LIST... -- NAME: the index of NAME in LIST, or nothing

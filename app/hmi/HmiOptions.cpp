@@ -48,6 +48,16 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
                  "thread of its own, every file of the scratch machine folder synced (much slower; to check that "
                  "the fast way ends the same)");
     app.add_option("--state", o.state, "write the panel's state as JSON and exit");
+    CLI::Option* exercise = app.add_option("--exercise", o.exercise, "a training exercise folder (resources/exercises/NAME)")
+        ->check(CLI::ExistingDirectory);
+    CLI::Option* attempt =
+        app.add_option("--attempt", o.attempt,
+                       "with --exercise: grade this recorded attempt without a window, exit 0 pass, 1 fail, 2 error")
+            ->check(CLI::ExistingFile)
+            ->needs(exercise);
+    app.add_option("--verdict", o.verdict, "with --attempt: write the verdict (JSON) here")->needs(attempt);
+    app.add_option("--exam-key", o.examKey, "the exam's key: the attempt's hash chain is checked with it")->needs(attempt);
+    app.add_flag("--exam", o.exam, "with --attempt: refuse an attempt whose hash chain is missing or broken")->needs(attempt);
     app.add_option("--record", o.record, "record the operator's actions to this file (JSON Lines)");
     app.add_flag("--unhomed", o.unhomed, "start with no axis homed, as after power-on");
     app.add_option("--tool", o.tool, "tool in the spindle at start")->check(CLI::Range(0, 99));

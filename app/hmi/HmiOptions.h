@@ -28,6 +28,15 @@ struct HmiOptions {
     int width = 1024, height = 600; // --size: the controller's screens are 800x480, 1024x600, 1280x800
     double measure = 0.0;    // > 0: start the program, measure the panel for this long, print JSON, exit
     bool eagerReplay = false; // --eager-replay: a replay as before, for comparing (much slower)
+    // 训练 training: --exercise DIR with --attempt grades a recorded attempt headless (exit 0 pass,
+    // 1 fail, 2 error) and writes --verdict; --exam-key checks the attempt's hash chain with the
+    // exam's key, --exam refuses an attempt without an intact chain
+    std::string exercise;
+    std::string attempt;
+    std::string verdict;
+    std::string examKey;
+    bool exam = false;
+    bool grading() const { return !exercise.empty() && !attempt.empty(); }
     bool headlessRun() const { return !screenshot.empty() || !replay.empty() || !state.empty(); }
 };
 

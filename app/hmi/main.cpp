@@ -1,5 +1,6 @@
 // m350-hmi: the desktop panel. Builds the session and the window, then either runs the event loop
 // or (with --screenshot / --replay / --state) renders in virtual time and exits.
+#include "app/hmi/GradeCommand.h"
 #include "app/hmi/HmiOptions.h"
 #include "app/hmi/HmiOutputs.h"
 #include "app/sim/BreakageOptions.h"
@@ -93,6 +94,9 @@ int main(int argc, char** argv) {
     }
     if (o.language == "zh_CN" && !language.fontProblem().isEmpty()) {
         std::fprintf(stderr, "%s\n", qPrintable(language.fontProblem()));
+    }
+    if (o.grading()) {
+        return hmi::gradeCommand(o, language);
     }
     // The panel writes into its machine folder (MDI lines ...): the bundled machine is never
     // written; a replay or screenshot works on a throwaway copy, the desktop on the user's own.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <vector>
 
 namespace m350::config {
@@ -19,6 +20,10 @@ struct MagazineConfig {
     double openingY = 1.0;
     double forkDepth = 30.0;
     double tolerance = 1.0;
+    // Where the forks really stand (machine X Y Z, one a pocket): the iron, which params 830+ only
+    // describe. Empty: where params 830+/850+/870+ say at power-on (a machine whose parameters are
+    // right). A training exercise sets them so that a wrong parameter misses the fork.
+    std::vector<std::array<double, 3>> forks;
 
     // multi-head (多工序, M350 type 1): param 801 heads (at most 4), lowered by the outputs of
     // params 777, 780, 783, 786; a head comes down only with Z at or above param 806.

@@ -2,6 +2,8 @@
 
 #include "core/machine/MachineTypes.h"
 
+#include <cmath>
+
 namespace m350::config {
 
 namespace {
@@ -50,6 +52,26 @@ void readRack(const toml::table& t, MagazineConfig& out) {
     out.openingY = choice(t, "opening", "+Y", {"+Y", "-Y"}) == "+Y" ? 1.0 : -1.0;
     out.onGantry = choice(t, "carried", "fixed", {"fixed", "gantry"}) == "gantry";
     out.slideTravel = positive(t, "slide_travel", out.slideTravel);
+    if (const toml::node* forks = t.get("forks")) {
+        const toml::array* list = forks->as_array();
+        if (!list) {
+            throw Invalid{"[magazine] forks must list each pocket's [X, Y, Z], e.g. forks = [[50, 5, -80], [110, 5, -80]]"};
+        }
+        for (const toml::node& fork : *list) {
+            const toml::array* xyz = fork.as_array();
+            std::array<double, 3> at{};
+            for (std::size_t i = 0; xyz && xyz->size() == 3 && i < 3; ++i) {
+                at[i] = xyz->get(i)->value<double>().value_or(NAN);
+            }
+            if (!xyz || xyz->size() != 3 || !std::isfinite(at[0]) || !std::isfinite(at[1]) || !std::isfinite(at[2])) {
+                throw Invalid{"[magazine] forks must list each pocket's [X, Y, Z], e.g. forks = [[50, 5, -80], [110, 5, -80]]"};
+            }
+            out.forks.push_back(at);
+        }
+        if (out.forks.size() > 20) {
+            throw Invalid{"[magazine] forks: a linear rack has at most 20 pockets"};
+        }
+    }
     if (out.onGantry && out.topLoading) {
         throw Invalid{"[magazine] a rack carried on the gantry is loaded from the side (its slide moves the forks)"};
     }

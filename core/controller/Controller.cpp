@@ -687,6 +687,7 @@ bool Controller::optionalStopOn() {
 void Controller::raiseAlarm(const Alarm& alarm) {
     noteStopInChange(); // before the state says Alarm: an alarm inside a change stops it too
     alarm_ = alarm;
+    events_.alarm(machine_.time(), alarm);
     panel_.clearDialog();
     if (executor_ && executor_->changingTool()) {
         toolLife_.manager().revertChange(); // the change never completed: its tool is not in use
@@ -699,6 +700,15 @@ void Controller::raiseAlarm(const Alarm& alarm) {
     if (alarm.code != AlarmCode::EmergencyStop) {
         runEventHook(config::Hook::Error); // its own alarm is only a message: the first one stands
     }
+}
+
+void Controller::setState(RunState next) {
+    if (next == RunState::Finished && state_ != RunState::Finished) {
+        const auto unit = program_.mainUnit();
+        const bool named = unit && !mdi_; // a hook file (T.nc) by its name too
+        events_.finished(machine_.time(), named ? program_.files[program_.units[*unit].file].name : std::string());
+    }
+    state_ = next;
 }
 
 } // namespace m350::controller

@@ -13,6 +13,7 @@
 #include "core/controller/OperatorPanel.h"
 #include "core/controller/ParameterWrites.h"
 #include "core/controller/PanelStatus.h"
+#include "core/controller/RunEvents.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
 #include "core/controller/RunState.h"
@@ -194,6 +195,8 @@ public:
     // What the controller says as a run goes (StatusBoard.h): the messages, the #1503 status line, the trace.
     StatusBoard& status() { return status_; }
     const StatusBoard& status() const { return status_; }
+    // Every alarm and every run that reached its end, with its virtual time (RunEvents.h).
+    const RunEvents& events() const { return events_; }
     // The machine's configuration as it stands: parameters, offsets of the folder, the tool table now.
     config::MachineConfig config() const;
 
@@ -305,7 +308,8 @@ private:
     std::optional<machine::Axes> beforePauseHook_; // where the hold stopped the axes, if pause.nc moved them
     // The run state changes only through setState(); the parts read it by const reference.
     RunState state_ = RunState::Idle;
-    void setState(RunState next) { state_ = next; }
+    void setState(RunState next);
+    RunEvents events_;
     std::optional<Alarm> alarm_;
     double displayTime_ = 0.0;
     machine::SimulatedMachine::Remainder remainder_; // what a hold cut short

@@ -1,5 +1,7 @@
 #include "core/controller/MagazineDriver.h"
 
+#include "core/config/RackForks.h"
+
 #include "core/common/Numeric.h"
 #include "core/params/IoPorts.h"
 #include "core/params/ParameterLimits.h"
@@ -121,16 +123,7 @@ void MagazineDriver::buildRack() {
     g.openingY = m.openingY;
     g.forkDepth = m.forkDepth;
     g.tolerance = m.tolerance;
-    const int capacity = std::clamp(saturatingInt(p.get(param::kMagazineCapacity)), 0, 20);
-    for (int k = 1; k <= capacity; ++k) {
-        // On the gantry the forks stand beside the spindle in Y: Y 0 is "slide out", the travel "in".
-        double y = m.onGantry ? 0.0 : p.get(param::kPocketY + k - 1);
-        Eigen::Vector3d at(p.get(param::kPocketX + k - 1), y, p.get(param::kPocketZ + k - 1));
-        if (at.isZero() || (m.onGantry && at.x() == 0.0 && at.z() == 0.0)) {
-            break; // no position set: the rack ends here, whatever param 801 says
-        }
-        g.pockets.push_back(at);
-    }
+    g.pockets = config::rackForks(m, p);
     slideOut_ = false;
     const int pockets = static_cast<int>(g.pockets.size());
     const int spindle = toolInMagazine(saturatingInt(p.get(param::kCurrentTool)), pockets);

@@ -19,6 +19,7 @@ std::string at(const Vector3d& p) {
     return text::position(p);
 }
 
+using text::millimetres;
 using text::number;
 
 } // namespace
@@ -181,6 +182,14 @@ std::optional<Message> LinearRack::moveEmpty(const Vector3d& from, const Vector3
     for (int k = 1; k <= pocketCount(); ++k) {
         const int standing = pockets_[static_cast<std::size_t>(k - 1)];
         const Vector3d& p = geometry_.pockets[static_cast<std::size_t>(k - 1)];
+        if (standing != 0 && vertical && to.z() < from.z() && !crosses(columnOf(k), from, to)) {
+            const double off = std::hypot(to.x() - p.x(), to.y() - p.y());
+            const double holderTop = p.z() + geometry_.forkDepth;
+            if (off <= geometry_.holderRadius && from.z() > holderTop - kStill && to.z() < holderTop - kStill) {
+                return message("rack_nose_off_centre", {number(standing), number(k), at(to), millimetres(off),
+                                                        millimetres(geometry_.tolerance)});
+            }
+        }
         if (standing == 0 || !crosses(columnOf(k), from, to)) {
             continue;
         }

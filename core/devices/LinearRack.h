@@ -29,6 +29,10 @@ public:
         double forkDepth = 30.0; // how far along its way in a held tool is engaged in a fork
         double tolerance = 1.0;  // how far off a pocket's axis still counts as in it
         double zoneAbove = 40.0; // the magazine zone reaches this far above the pockets
+        // A tool holder's flange radius: an empty nose coming down within it but further off the
+        // tool's axis than `tolerance` lands on the holder instead of over the pull stud (BT30's
+        // flange is 46 mm across, BT40's 63 mm).
+        double holderRadius = 23.0;
     };
 
     LinearRack(Geometry geometry, std::vector<int> pocketTools, int spindleTool);

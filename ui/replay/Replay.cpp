@@ -125,6 +125,56 @@ bool readsLayout(const OperatorAction& action) {
 
 } // namespace
 
+std::optional<QJsonObject> readReplayObject(const QByteArray& raw, ReplayLineProblem* problem) {
+    const QByteArray line = raw.trimmed();
+    problem->why.clear();
+    if (line.isEmpty() || line.startsWith("//")) {
+        return std::nullopt;
+    }
+    const int indent = static_cast<int>(raw.indexOf(line.at(0))); // columns count from the raw line
+    QJsonParseError parse{};
+    QJsonDocument doc = QJsonDocument::fromJson(line, &parse);
+    if (parse.error != QJsonParseError::NoError || !doc.isObject()) {
+        if (auto shape = shapeProblem(line)) {
+            *problem = {indent + shape->first, shape->second};
+        } else {
+            *problem = {indent + parse.offset + 1,
+                        parse.error != QJsonParseError::NoError ? parse.errorString() : QStringLiteral("expected {...}")};
+        }
+        return std::nullopt;
+    }
+    return doc.object();
+}
+
+std::optional<OperatorAction> readReplayAction(const QJsonObject& object, const QByteArray& raw, double previous,
+                                               ReplayLineProblem* problem, int* column) {
+    const QByteArray line = raw.trimmed();
+    const int indent = line.isEmpty() ? 0 : static_cast<int>(raw.indexOf(line.at(0)));
+    QString why;
+    auto action = OperatorAction::fromJson(object, &why);
+    const QString key = why.startsWith(QLatin1String("\"t\"")) ? QStringLiteral("t") : actionKey(object);
+    *column = indent + keyColumn(line, key);
+    if (!action) {
+        *problem = {*column, why};
+        return std::nullopt;
+    }
+    const int timeColumn = indent + keyColumn(line, QStringLiteral("t"));
+    if (!(action->t <= kMostReplaySeconds)) {
+        *problem = {timeColumn, QStringLiteral("t = %1 s is beyond the longest replay, %2 s (24 h) of virtual time")
+                                    .arg(action->t)
+                                    .arg(kMostReplaySeconds)};
+        return std::nullopt;
+    }
+    if (action->t < previous) {
+        *problem = {timeColumn, QStringLiteral("t = %1 comes before the previous action's %2 (actions must be in "
+                                               "time order)")
+                                    .arg(action->t)
+                                    .arg(previous)};
+        return std::nullopt;
+    }
+    return action;
+}
+
 std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QString* error,
                                                       std::vector<ReplayPlace>* places) {
     QFile file(path);
@@ -135,46 +185,25 @@ std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QStri
     std::vector<OperatorAction> actions;
     int lineNumber = 0;
     double previous = 0.0;
-    auto failAt = [&](int column, const QString& why) {
-        *error = QStringLiteral("%1:%2:%3: %4").arg(path).arg(lineNumber).arg(column).arg(why);
+    ReplayLineProblem problem;
+    auto failAt = [&] {
+        *error = QStringLiteral("%1:%2:%3: %4").arg(path).arg(lineNumber).arg(problem.column).arg(problem.why);
         return std::nullopt;
     };
     while (!file.atEnd()) {
         ++lineNumber;
         const QByteArray raw = file.readLine();
-        const QByteArray line = raw.trimmed();
-        if (line.isEmpty() || line.startsWith("//")) {
+        const std::optional<QJsonObject> object = readReplayObject(raw, &problem);
+        if (!object) {
+            if (!problem.why.isEmpty()) {
+                return failAt();
+            }
             continue;
         }
-        const int indent = static_cast<int>(raw.indexOf(line.at(0))); // columns count from the raw line
-        QJsonParseError parse{};
-        QJsonDocument doc = QJsonDocument::fromJson(line, &parse);
-        if (parse.error != QJsonParseError::NoError || !doc.isObject()) {
-            if (auto problem = shapeProblem(line)) {
-                return failAt(indent + problem->first, problem->second);
-            }
-            return failAt(indent + parse.offset + 1, parse.error != QJsonParseError::NoError ? parse.errorString()
-                                                                                        : QStringLiteral("expected {...}"));
-        }
-        const QJsonObject object = doc.object();
-        QString why;
-        auto action = OperatorAction::fromJson(object, &why);
-        const QString key = why.startsWith(QLatin1String("\"t\"")) ? QStringLiteral("t") : actionKey(object);
-        const int column = indent + keyColumn(line, key);
+        int column = 1;
+        auto action = readReplayAction(*object, raw, previous, &problem, &column);
         if (!action) {
-            return failAt(column, why);
-        }
-        const int timeColumn = indent + keyColumn(line, QStringLiteral("t"));
-        if (!(action->t <= kMostReplaySeconds)) {
-            return failAt(timeColumn, QStringLiteral("t = %1 s is beyond the longest replay, %2 s (24 h) of virtual time")
-                                          .arg(action->t)
-                                          .arg(kMostReplaySeconds));
-        }
-        if (action->t < previous) {
-            return failAt(timeColumn, QStringLiteral("t = %1 comes before the previous action's %2 (actions must be in "
-                                                     "time order)")
-                                          .arg(action->t)
-                                          .arg(previous));
+            return failAt();
         }
         previous = action->t;
         actions.push_back(*action);

@@ -2,6 +2,8 @@
 
 #include "ui/actions/OperatorAction.h"
 
+#include <QByteArray>
+#include <QJsonObject>
 #include <QString>
 
 #include <optional>
@@ -22,6 +24,20 @@ struct ReplayPlace {
     int line = 0;
     int column = 1;
 };
+
+// What is wrong with a line of a replay file, at its column (1-based).
+struct ReplayLineProblem {
+    int column = 1;
+    QString why;
+};
+
+// One line of a replay (or attempt) file as a JSON object: nullopt for a blank or // line, and
+// nullopt with `problem` filled when it is not one JSON object.
+std::optional<QJsonObject> readReplayObject(const QByteArray& raw, ReplayLineProblem* problem);
+// The action the object of line `raw` says, in time order after `previous` and within the longest
+// replay; `column` is that of the action's name (what playReplay's messages point at).
+std::optional<OperatorAction> readReplayAction(const QJsonObject& object, const QByteArray& raw, double previous,
+                                               ReplayLineProblem* problem, int* column);
 
 // A replay file: JSON Lines, one operator action a line, in order of their virtual time `t`.
 // Blank lines and lines starting with // are skipped. An error names file:line:column and what is

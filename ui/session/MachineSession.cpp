@@ -179,4 +179,8 @@ void MachineSession::sync() {
     runNow([](SessionWorker& w) { w.publish(); });
 }
 
+void MachineSession::examine(const std::function<void(controller::Controller&)>& look) {
+    runNow([&look](SessionWorker& w) { look(w.controller()); });
+}
+
 } // namespace m350::ui

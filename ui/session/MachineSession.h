@@ -24,6 +24,9 @@
 namespace m350::config {
 struct MachineConfig;
 }
+namespace m350::controller {
+class Controller;
+}
 
 namespace m350::ui {
 
@@ -148,6 +151,9 @@ public:
     double advanceWhileQuiet(double seconds, bool publishAtEnd = true);
     // Waits until every call queued so far has run (replays and tests).
     void sync();
+    // Runs `look` on the controller in its thread after every call queued so far, and waits: how a
+    // training attempt's end is read for grading (core/training/FactsFromController.h).
+    void examine(const std::function<void(controller::Controller&)>& look);
 
     SnapshotPtr latest() const { return latest_; }
 

@@ -61,6 +61,7 @@ public:
     // the time that passed (0 when not quiet).
     double advanceWhileQuiet(double seconds, bool publishAtEnd);
     void publish();
+    controller::Controller& controller() { return *controller_; }
     void logParameterChanges();
     // 仿真 (a SimulationRun beside the machine): speed 0 = as fast as the core goes.
     void startSimulation(const QString& path, double speed);

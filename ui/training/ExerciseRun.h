@@ -1,0 +1,33 @@
+#pragma once
+
+#include "core/training/Exercise.h"
+#include "ui/actions/OperatorAction.h"
+#include "ui/replay/Replay.h"
+#include "ui/session/MachineSession.h"
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace m350::ui {
+
+// What an attempt at an exercise starts from, alike in the panel's training mode and the headless
+// grader: the machine folder made for it, the session's options, and the exercise's faults among
+// the trainee's actions.
+
+// The machine folder for an attempt at `into` (core/training/ExerciseMachine.h), or why not.
+std::optional<Message> prepareAttemptMachine(const training::Exercise& exercise, const QString& into);
+
+// The session's options: the exercise's start (homed, the tool in the spindle) and its breaking tools.
+MachineSession::Options attemptSessionOptions(const training::Exercise& exercise, MachineSession::Clock clock);
+
+// The exercise's faults as `force` actions at their times (after the attempt's begin, or after the
+// first START key), put among `actions` in time order; `places` (readReplay's) kept in step, a
+// fault's place being line 0.
+void injectFaults(const training::Exercise& exercise, std::vector<OperatorAction>& actions, std::vector<ReplayPlace>& places);
+
+// A fault as the action that injects it at virtual time `t`.
+OperatorAction faultAction(const training::InjectedFault& fault, double t);
+
+} // namespace m350::ui
