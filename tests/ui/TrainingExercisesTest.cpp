@@ -1,0 +1,160 @@
+// Every bundled exercise (resources/exercises/NAME) loads, and each of its recorded attempts
+// (tests/training/attempts/NAME/*.jsonl) is graded as its first line says: `// passes` for the
+// correct one, `// fails: id id ...` for a wrong one, naming exactly the checks that fail (the
+// check that names its mistake among them). Graded headless through m350-hmi --exercise --attempt,
+// as a trainer grades a class, with the exit status and the verdict JSON checked.
+#include "core/config/MachineConfig.h"
+#include "core/training/ExerciseFile.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <variant>
+
+namespace m350::test {
+
+namespace {
+
+const QString kExercises = QStringLiteral(M350_SOURCE_DIR "/resources/exercises");
+const QString kAttempts = QStringLiteral(M350_SOURCE_DIR "/tests/training/attempts");
+
+struct Expected {
+    bool passes = false;
+    std::set<std::string> failing;
+};
+
+// The attempt's first line: "// passes" or "// fails: a b c".
+Expected expectedOf(const QString& attempt) {
+    QFile file(attempt);
+    Expected out;
+    if (!file.open(QIODevice::ReadOnly)) {
+        return out;
+    }
+    const QString first = QString::fromUtf8(file.readLine()).trimmed();
+    if (first == QLatin1String("// passes")) {
+        out.passes = true;
+    } else if (first.startsWith(QLatin1String("// fails:"))) {
+        for (const QString& id : first.mid(9).split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+            out.failing.insert(id.toStdString());
+        }
+    }
+    return out;
+}
+
+struct Graded {
+    int exitCode = -1;
+    QString output;
+    QJsonObject verdict;
+};
+
+Graded grade(const QString& exercise, const QString& attempt, const QStringList& extra = {}) {
+    QTemporaryDir dir;
+    const QString verdict = dir.filePath(QStringLiteral("verdict.json"));
+    QProcess hmi;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    hmi.setProcessEnvironment(env);
+    hmi.start(QStringLiteral(M350_HMI_PATH),
+              QStringList{QStringLiteral("--lang"), QStringLiteral("en"), QStringLiteral("--exercise"), exercise,
+                          QStringLiteral("--attempt"), attempt, QStringLiteral("--verdict"), verdict} +
+                  extra);
+    Graded out;
+    if (!hmi.waitForFinished(120000)) {
+        hmi.kill();
+        out.output = QStringLiteral("m350-hmi did not finish");
+        return out;
+    }
+    out.exitCode = hmi.exitCode();
+    out.output = QString::fromUtf8(hmi.readAllStandardOutput() + hmi.readAllStandardError());
+    QFile file(verdict);
+    if (file.open(QIODevice::ReadOnly)) {
+        out.verdict = QJsonDocument::fromJson(file.readAll()).object();
+    }
+    return out;
+}
+
+QStringList exerciseNames() {
+    return QDir(kExercises).entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name);
+}
+
+} // namespace
+
+TEST(TrainingExercises, EveryBundledExerciseLoads) {
+    const QStringList names = exerciseNames();
+    ASSERT_FALSE(names.isEmpty());
+    for (const QString& name : names) {
+        SCOPED_TRACE(name.toStdString());
+        auto loaded = training::loadExercise((kExercises + QLatin1Char('/') + name).toStdString(),
+                                             config::bundledMachinesDirectory());
+        if (auto* error = std::get_if<training::ExerciseError>(&loaded)) {
+            ADD_FAILURE() << error->where() << ": " << error->words.english();
+            continue;
+        }
+        const auto& exercise = std::get<training::Exercise>(loaded);
+        EXPECT_FALSE(exercise.title.chinese.empty());
+        EXPECT_FALSE(exercise.task.english.empty());
+        const QStringList attempts =
+            QDir(kAttempts + QLatin1Char('/') + name).entryList(QStringList{QStringLiteral("*.jsonl")}, QDir::Files);
+        int correct = 0;
+        int wrong = 0;
+        for (const QString& attempt : attempts) {
+            const Expected expected = expectedOf(kAttempts + QLatin1Char('/') + name + QLatin1Char('/') + attempt);
+            correct += expected.passes;
+            wrong += !expected.passes && !expected.failing.empty();
+        }
+        EXPECT_GE(correct, 1) << "a recorded correct attempt";
+        EXPECT_GE(wrong, 2) << "at least two recorded wrong attempts, each naming the checks it fails";
+    }
+}
+
+class ExerciseAttempt : public testing::TestWithParam<std::string> {};
+
+TEST_P(ExerciseAttempt, IsGradedAsItsFirstLineSays) {
+    const QString name = QString::fromStdString(GetParam());
+    const QString exercise = kExercises + QLatin1Char('/') + name;
+    const QStringList attempts =
+        QDir(kAttempts + QLatin1Char('/') + name).entryList(QStringList{QStringLiteral("*.jsonl")}, QDir::Files);
+    for (const QString& attempt : attempts) {
+        SCOPED_TRACE(attempt.toStdString());
+        const QString path = kAttempts + QLatin1Char('/') + name + QLatin1Char('/') + attempt;
+        const Expected expected = expectedOf(path);
+        const Graded graded = grade(exercise, path);
+        ASSERT_EQ(graded.exitCode, expected.passes ? 0 : 1) << graded.output.toStdString();
+        EXPECT_EQ(graded.verdict.value(QStringLiteral("passed")).toBool(), expected.passes);
+        std::set<std::string> failing;
+        for (const QJsonValue& check : graded.verdict.value(QStringLiteral("checks")).toArray()) {
+            const QJsonObject c = check.toObject();
+            if (!c.value(QStringLiteral("passed")).toBool()) {
+                failing.insert(c.value(QStringLiteral("id")).toString().toStdString());
+                EXPECT_FALSE(c.value(QStringLiteral("reason")).toObject().value(QStringLiteral("zh_CN")).toString().isEmpty());
+            }
+        }
+        EXPECT_EQ(failing, expected.failing) << graded.output.toStdString();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, ExerciseAttempt, testing::ValuesIn([] {
+                             std::vector<std::string> names;
+                             for (const QString& name : exerciseNames()) {
+                                 names.push_back(name.toStdString());
+                             }
+                             return names;
+                         }()),
+                         [](const testing::TestParamInfo<std::string>& info) {
+                             std::string name = info.param;
+                             for (char& c : name) {
+                                 c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                             }
+                             return name;
+                         });
+
+} // namespace m350::test
