@@ -37,7 +37,7 @@ struct InjectedFault {
     double at = 0.0;           // virtual s, counted from `after`
     enum class After { Begin, FirstStart } after = After::Begin; // the attempt's start, or the first START key
     int input = 0;
-    std::string fault = "stuck"; // stuck slow bouncing pressed none (the replay's force action)
+    std::string fault = "stuck"; // stuck slow bouncing none (the replay's force action)
     int level = 0;
     double seconds = 0.0;
 };

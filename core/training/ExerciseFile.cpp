@@ -278,7 +278,7 @@ InjectedFault readFault(const ExerciseTomlReader& in, const toml::table& t, cons
     fault.input = in.whole(in.required(t, "input", where), "input", 1, 999);
     const toml::node& kind = in.required(t, "fault", where);
     fault.fault = in.text(kind, "fault");
-    static const std::set<std::string> faults{"stuck", "slow", "bouncing", "pressed", "none"};
+    static const std::set<std::string> faults{"stuck", "slow", "bouncing", "none"};
     if (!faults.count(fault.fault)) {
         in.refuse(kind.source(), message("exercise_unknown_fault", {fault.fault}));
     }
