@@ -12,6 +12,28 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::AttemptGrader</name>
+    <message>
+        <source>--verdict %1 is the attempt it grades: refused, nothing written</source>
+        <translation>--verdict %1 is the attempt it grades: refused, nothing written</translation>
+    </message>
+    <message>
+        <source>--verdict %1 lies in the exercise folder %2: refused, nothing written</source>
+        <translation>--verdict %1 lies in the exercise folder %2: refused, nothing written</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::AttemptRun</name>
+    <message>
+        <source>no folder for the attempt's machine: %1</source>
+        <translation>no folder for the attempt's machine: %1</translation>
+    </message>
+    <message>
+        <source>Training: %1 · time left %2:%3 · F7: task, hint, hand in</source>
+        <translation>Training: %1 · time left %2:%3 · F7: task, hint, hand in</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::BackupImportFlow</name>
     <message>
         <source>Controller backup: the folder that holds setting, slib-g.nc ...</source>
@@ -2782,6 +2804,92 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::TrainingStartPage</name>
+    <message>
+        <source>Training: %1</source>
+        <translation>Training: %1</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Exercise</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Level</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Best time</source>
+        <translation>Best time</translation>
+    </message>
+    <message>
+        <source>not tried</source>
+        <translation>not tried</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>passed</translation>
+    </message>
+    <message>
+        <source>failed (%1 tries)</source>
+        <translation>failed (%1 tries)</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::TrainingWindow</name>
+    <message>
+        <source>The exam names exercise %1, which is not in %2</source>
+        <translation>The exam names exercise %1, which is not in %2</translation>
+    </message>
+    <message>
+        <source>Training</source>
+        <translation>Training</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Open</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Back</translation>
+    </message>
+    <message>
+        <source>Panel</source>
+        <translation>Panel</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Task</translation>
+    </message>
+    <message>
+        <source>No hints (exam)</source>
+        <translation>No hints (exam)</translation>
+    </message>
+    <message>
+        <source>Hint</source>
+        <translation>Hint</translation>
+    </message>
+    <message>
+        <source>Hand in</source>
+        <translation>Hand in</translation>
+    </message>
+    <message>
+        <source>No more hints for this exercise.</source>
+        <translation>No more hints for this exercise.</translation>
+    </message>
+    <message>
+        <source>Hint %1: %2</source>
+        <translation>Hint %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::UserAccess</name>
     <message>
         <source>Guest</source>
@@ -2817,6 +2925,69 @@
         <source>File save failed!</source>
         <comment>msg 907</comment>
         <translation>File save failed!</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::VerdictPage</name>
+    <message>
+        <source>PASSED: %1</source>
+        <translation>PASSED: %1</translation>
+    </message>
+    <message>
+        <source>FAILED: %1</source>
+        <translation>FAILED: %1</translation>
+    </message>
+    <message>
+        <source>score %1/100, time %2, hints %3</source>
+        <translation>score %1/100, time %2, hints %3</translation>
+    </message>
+    <message>
+        <source>time out</source>
+        <translation>time out</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>Check</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Result</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Measured</translation>
+    </message>
+    <message>
+        <source>Expected</source>
+        <translation>Expected</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>passed</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>failed</translation>
+    </message>
+    <message>
+        <source>parameter %1</source>
+        <translation>parameter %1</translation>
+    </message>
+    <message>
+        <source>output OUT%1</source>
+        <translation>output OUT%1</translation>
+    </message>
+    <message>
+        <source>tool T%1</source>
+        <translation>tool T%1</translation>
+    </message>
+    <message>
+        <source>This check passed.</source>
+        <translation>This check passed.</translation>
+    </message>
+    <message>
+        <source>F5 opens %1 in the panel.</source>
+        <translation>F5 opens %1 in the panel.</translation>
     </message>
 </context>
 <context>

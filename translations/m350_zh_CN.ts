@@ -12,6 +12,28 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::AttemptGrader</name>
+    <message>
+        <source>--verdict %1 is the attempt it grades: refused, nothing written</source>
+        <translation>--verdict %1 就是要评分的练习记录：拒绝，未写入任何内容</translation>
+    </message>
+    <message>
+        <source>--verdict %1 lies in the exercise folder %2: refused, nothing written</source>
+        <translation>--verdict %1 位于练习文件夹 %2 中：拒绝，未写入任何内容</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::AttemptRun</name>
+    <message>
+        <source>no folder for the attempt's machine: %1</source>
+        <translation>无法为本次练习建立机床文件夹：%1</translation>
+    </message>
+    <message>
+        <source>Training: %1 · time left %2:%3 · F7: task, hint, hand in</source>
+        <translation>训练：%1 · 剩余 %2:%3 · F7：任务、提示、交卷</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::BackupImportFlow</name>
     <message>
         <source>Controller backup: the folder that holds setting, slib-g.nc ...</source>
@@ -2782,6 +2804,92 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::TrainingStartPage</name>
+    <message>
+        <source>Training: %1</source>
+        <translation>训练：%1</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>练习</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>难度</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Best time</source>
+        <translation>最佳用时</translation>
+    </message>
+    <message>
+        <source>not tried</source>
+        <translation>未练习</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <source>failed (%1 tries)</source>
+        <translation>未通过（已练 %1 次）</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::TrainingWindow</name>
+    <message>
+        <source>The exam names exercise %1, which is not in %2</source>
+        <translation>考试列出的练习 %1 不在 %2 中</translation>
+    </message>
+    <message>
+        <source>Training</source>
+        <translation>训练</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>打开</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>返回</translation>
+    </message>
+    <message>
+        <source>Panel</source>
+        <translation>面板</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>任务</translation>
+    </message>
+    <message>
+        <source>No hints (exam)</source>
+        <translation>无提示（考试）</translation>
+    </message>
+    <message>
+        <source>Hint</source>
+        <translation>提示</translation>
+    </message>
+    <message>
+        <source>Hand in</source>
+        <translation>交卷</translation>
+    </message>
+    <message>
+        <source>No more hints for this exercise.</source>
+        <translation>本练习没有更多提示了。</translation>
+    </message>
+    <message>
+        <source>Hint %1: %2</source>
+        <translation>提示 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::UserAccess</name>
     <message>
         <source>Guest</source>
@@ -2817,6 +2925,69 @@
         <source>File save failed!</source>
         <comment>msg 907</comment>
         <translation>文件生成失败!</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::VerdictPage</name>
+    <message>
+        <source>PASSED: %1</source>
+        <translation>通过：%1</translation>
+    </message>
+    <message>
+        <source>FAILED: %1</source>
+        <translation>未通过：%1</translation>
+    </message>
+    <message>
+        <source>score %1/100, time %2, hints %3</source>
+        <translation>得分 %1/100，用时 %2，提示 %3 次</translation>
+    </message>
+    <message>
+        <source>time out</source>
+        <translation>超时</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>检查项</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <source>Expected</source>
+        <translation>应为</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>未通过</translation>
+    </message>
+    <message>
+        <source>parameter %1</source>
+        <translation>参数 %1</translation>
+    </message>
+    <message>
+        <source>output OUT%1</source>
+        <translation>输出 OUT%1</translation>
+    </message>
+    <message>
+        <source>tool T%1</source>
+        <translation>刀具 T%1</translation>
+    </message>
+    <message>
+        <source>This check passed.</source>
+        <translation>此项检查通过。</translation>
+    </message>
+    <message>
+        <source>F5 opens %1 in the panel.</source>
+        <translation>F5 在面板中打开 %1。</translation>
     </message>
 </context>
 <context>

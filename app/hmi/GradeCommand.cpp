@@ -2,7 +2,10 @@
 
 #include "app/hmi/HmiOutputs.h"
 #include "ui/i18n/Language.h"
+#include "core/training/Exam.h"
 #include "ui/training/AttemptGrader.h"
+
+#include <variant>
 
 #include <cstdio>
 
@@ -20,8 +23,16 @@ int gradeCommand(const HmiOptions& o, ui::Language& language) {
     ui::GradeRequest request;
     request.exerciseFolder = QString::fromStdString(o.exercise);
     request.attemptFile = QString::fromStdString(o.attempt);
-    request.examKey = QByteArray::fromStdString(o.examKey);
-    request.requireChain = o.exam;
+    if (!o.exam.empty()) {
+        auto exam = training::loadExam(o.exam);
+        if (auto* error = std::get_if<training::ExerciseError>(&exam)) {
+            const MessageLanguage said = language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
+            std::fprintf(stderr, "m350-hmi: %s: %s\n", error->where().c_str(), error->words.in(said).c_str());
+            return 2;
+        }
+        request.examKey = QByteArray::fromStdString(std::get<training::Exam>(exam).key);
+        request.requireChain = true;
+    }
     request.language = &language;
     const ui::GradeOutcome outcome = ui::gradeAttemptFile(request);
     if (!outcome.verdict) {

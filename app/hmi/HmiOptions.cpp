@@ -48,6 +48,11 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
                  "thread of its own, every file of the scratch machine folder synced (much slower; to check that "
                  "the fast way ends the same)");
     app.add_option("--state", o.state, "write the panel's state as JSON and exit");
+    app.add_flag("--training", o.training, "训练 Training: the exercises' start page (with --exam, the exam)");
+    app.add_option("--trainee", o.trainee, "the trainee's name (training: the attempts are kept under it)");
+    app.add_option("--exercises", o.exercises, "the training's exercises folder (default: the bundled exercises)")
+        ->check(CLI::ExistingDirectory);
+    app.add_option("--attempts", o.attempts, "where the training keeps attempts and progress (default: the user's data folder)");
     CLI::Option* exercise = app.add_option("--exercise", o.exercise, "a training exercise folder (resources/exercises/NAME)")
         ->check(CLI::ExistingDirectory);
     CLI::Option* attempt =
@@ -56,8 +61,10 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
             ->check(CLI::ExistingFile)
             ->needs(exercise);
     app.add_option("--verdict", o.verdict, "with --attempt: write the verdict (JSON) here")->needs(attempt);
-    app.add_option("--exam-key", o.examKey, "the exam's key: the attempt's hash chain is checked with it")->needs(attempt);
-    app.add_flag("--exam", o.exam, "with --attempt: refuse an attempt whose hash chain is missing or broken")->needs(attempt);
+    app.add_option("--exam", o.exam,
+                   "an exam (exam.toml: exercises, time_limit, key): with --training the exam's exercises, no hints; "
+                   "with --attempt an attempt must carry the exam's intact hash chain")
+        ->check(CLI::ExistingFile);
     app.add_option("--record", o.record, "record the operator's actions to this file (JSON Lines)");
     app.add_flag("--unhomed", o.unhomed, "start with no axis homed, as after power-on");
     app.add_option("--tool", o.tool, "tool in the spindle at start")->check(CLI::Range(0, 99));

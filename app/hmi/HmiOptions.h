@@ -29,13 +29,17 @@ struct HmiOptions {
     double measure = 0.0;    // > 0: start the program, measure the panel for this long, print JSON, exit
     bool eagerReplay = false; // --eager-replay: a replay as before, for comparing (much slower)
     // 训练 training: --exercise DIR with --attempt grades a recorded attempt headless (exit 0 pass,
-    // 1 fail, 2 error) and writes --verdict; --exam-key checks the attempt's hash chain with the
-    // exam's key, --exam refuses an attempt without an intact chain
+    // 1 fail, 2 error) and writes --verdict; --exam FILE (exam.toml) checks the attempt's hash chain
+    // with the exam's key and refuses an attempt without one. --training opens the training's start
+    // page (with --exam, the exam); with --exercise and --replay it plays an attempt through it.
+    bool training = false;
+    std::string trainee;
+    std::string exercises; // the exercises folder (default: the bundled ones)
+    std::string attempts;  // where attempts and progress.json go (default: the user's data folder)
     std::string exercise;
     std::string attempt;
     std::string verdict;
-    std::string examKey;
-    bool exam = false;
+    std::string exam;
     bool grading() const { return !exercise.empty() && !attempt.empty(); }
     bool headlessRun() const { return !screenshot.empty() || !replay.empty() || !state.empty(); }
 };

@@ -96,8 +96,8 @@ CheckResult evaluate(const Check& check, const AttemptFacts& facts) {
     case K::NoAlarm:
     case K::NoCrash: {
         result.passed = true;
-        result.measured = "none";
-        result.expected = "none";
+        result.measured = "-";
+        result.expected = "-";
         for (const Event& event : facts.events) {
             const bool counts = event.kind == Event::Kind::Alarm && !isOperatorAlarm(event.alarm) &&
                                 (check.kind == K::NoAlarm || event.alarm.code == AlarmCode::Crash);
@@ -113,7 +113,7 @@ CheckResult evaluate(const Check& check, const AttemptFacts& facts) {
     }
     case K::Alarm: {
         result.expected = check.code;
-        result.measured = "none";
+        result.measured = "-";
         for (const Event& event : facts.events) {
             if (event.kind == Event::Kind::Alarm && alarmKey(event.alarm.code) == check.code) {
                 result.passed = true;
@@ -138,7 +138,7 @@ CheckResult evaluate(const Check& check, const AttemptFacts& facts) {
     case K::Variable: {
         auto value = facts.variables.find(check.number);
         if (value == facts.variables.end() || !value->second) {
-            result.measured = "vacant";
+            result.measured = "-"; // vacant
             result.expected = shownNumber(check.expect);
         } else {
             within(*value->second);
@@ -155,7 +155,7 @@ CheckResult evaluate(const Check& check, const AttemptFacts& facts) {
         break;
     }
     case K::Responded: {
-        result.expected = check.key + " <= " + shownNumber(check.within) + " s after " + check.code;
+        result.expected = check.code + " → " + check.key + " ≤ " + shownNumber(check.within) + " s";
         const Event* alarm = nullptr;
         for (const Event& event : facts.events) {
             if (event.kind == Event::Kind::Alarm && alarmKey(event.alarm.code) == check.code) {
@@ -164,15 +164,15 @@ CheckResult evaluate(const Check& check, const AttemptFacts& facts) {
             }
         }
         if (!alarm) {
-            result.measured = "no " + check.code;
+            result.measured = "-";
             break;
         }
         result.target = lineTarget(alarm->alarm);
-        result.measured = "no " + check.key;
+        result.measured = check.code + " → -";
         for (const PressedKey& key : facts.keys) {
             if (key.name == check.key && key.t >= alarm->time - 1e-9) {
                 const double after = key.t - alarm->time;
-                result.measured = check.key + " " + shownNumber(after) + " s after " + check.code;
+                result.measured = check.code + " → " + check.key + " " + shownNumber(after) + " s";
                 result.passed = after <= check.within + 1e-9;
                 break;
             }
@@ -194,13 +194,13 @@ CheckResult evaluate(const Check& check, const AttemptFacts& facts) {
             runs += event.kind == Event::Kind::Finished && (check.file.empty() || event.program == check.file);
         }
         result.measured = std::to_string(runs);
-        result.expected = ">= " + shownNumber(check.expect);
+        result.expected = "≥ " + shownNumber(check.expect);
         result.passed = runs >= static_cast<int>(check.expect);
         break;
     }
     case K::TimeUsed:
         result.measured = shownNumber(facts.timeUsed) + " s";
-        result.expected = "<= " + shownNumber(check.within) + " s";
+        result.expected = "≤ " + shownNumber(check.within) + " s";
         result.passed = facts.timeUsed <= check.within + 1e-9;
         break;
     }

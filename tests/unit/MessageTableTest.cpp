@@ -47,7 +47,7 @@ bool hasEnglishWords(const std::string& text) {
         // the words of toollife.txt and tool.tbl lines, which the file keeps in any language
         "count", "minutes", "group", "life", "used", "ignore", "teeth", "type", "flat",
         // exercise.toml's keys and values, typed as the file has them
-        "hints", "time", "limit", "true", "false", "stuck", "slow", "bouncing", "pressed", "none", "begin", "start"};
+        "hints", "exercises", "time", "limit", "true", "false", "stuck", "slow", "bouncing", "pressed", "none", "begin", "start"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;

@@ -130,10 +130,15 @@ void ActionRecorder::record(const OperatorAction& action) {
     // the next one, and a gap made longer by rounding would let the 试切 override ramp down between
     // turns in the replay (it ramps down five times faster than up: the run would crawl)
     stamped.t = clock_();
-    // each line goes straight to the file: a session can end at any moment
-    if (writeLine(QJsonDocument(stamped.toJson()).toJson(QJsonDocument::Compact) + '\n')) {
-        publish();
+    writeExtra(format_ ? format_(stamped) : QJsonDocument(stamped.toJson()).toJson(QJsonDocument::Compact) + '\n');
+}
+
+bool ActionRecorder::writeExtra(const QByteArray& line) {
+    if (fd_ < 0 || line.isEmpty()) {
+        return false;
     }
+    // each line goes straight to the file: a session can end at any moment
+    return writeLine(line) && publish();
 }
 
 } // namespace m350::ui

@@ -26,6 +26,12 @@ public:
     QString stop();
     bool recording() const { return fd_ >= 0; }
     void record(const OperatorAction& action);
+    // What a line of an action is (default: its JSON): a training attempt chains every line
+    // (ui/training/AttemptFile.h); an empty line is not written.
+    using Format = std::function<QByteArray(const OperatorAction&)>;
+    void setFormat(Format format) { format_ = std::move(format); }
+    // A line of the caller's own (an attempt's first line and its hand-in), written as an action's is.
+    bool writeExtra(const QByteArray& line);
 
 signals:
     void failed(const QString& why); // a write failed: the recording stopped
@@ -35,6 +41,7 @@ private:
     bool writeLine(const QByteArray& line);
     void fail(const QString& why);
     Clock clock_;
+    Format format_;
     int fd_ = -1;
     QString path_;                 // as the operator named it
     std::filesystem::path target_; // where it goes (a link's file)

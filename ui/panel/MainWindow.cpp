@@ -180,6 +180,13 @@ void MainWindow::notify(const QString& text) {
 }
 
 QString MainWindow::messageText() const { return message_->text(); }
+
+void MainWindow::setStandingNote(const QString& text) {
+    if (message_->text() == standingNote_) {
+        message_->setText(text);
+    }
+    standingNote_ = text;
+}
 QString MainWindow::alarmText() const { return alarm_->text(); }
 
 void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
@@ -201,7 +208,7 @@ void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
     if (!s.lastError.isEmpty()) {
         message = s.lastError;
     }
-    message_->setText(message.isEmpty() ? notice_ : message);
+    message_->setText(!message.isEmpty() ? message : !notice_.isEmpty() ? notice_ : standingNote_);
     QString alarm;
     if (s.status.alarm) {
         alarm = AlarmText::located(*s.status.alarm);
@@ -312,7 +319,8 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
         return QMainWindow::eventFilter(watched, event);
     }
     QWidget* active = QApplication::activeWindow();
-    if (active != this && active != prompt_) {
+    // window(): the panel may sit inside another (训练 Training's); hidden, it takes no keys
+    if ((active != window() && active != prompt_) || !isVisible()) {
         return false;
     }
     auto action = actionForKey(*static_cast<QKeyEvent*>(event), press);

@@ -48,6 +48,10 @@ public:
     bool startRecording(const QString& path, QString* error);
     QString stopRecording(); // empty when every action reached the file, else why not
     bool recording() const;
+    class ActionRecorder& recorder() { return *recorder_; }
+    // A text the message line shows while nothing else is said (a training attempt's task and the
+    // time left).
+    void setStandingNote(const QString& text);
     BackupImportFlow& backupImport() { return *backupImport_; } // the Panel menu's 导入控制器备份
 
     StatusLine* statusLine() const { return status_; }
@@ -93,6 +97,7 @@ private:
     QMap<QString, Page*> pages_;
     SnapshotPtr snapshot_;
     QString notice_;
+    QString standingNote_;
     std::string dialogShown_;
     bool bootPromptAsked_ = false;
     bool holdRendering_ = false;

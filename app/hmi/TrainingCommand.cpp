@@ -1,0 +1,144 @@
+#include "app/hmi/TrainingCommand.h"
+
+#include "app/hmi/HmiOutputs.h"
+#include "core/training/Exam.h"
+#include "core/training/ExerciseFile.h"
+#include "ui/i18n/Language.h"
+#include "ui/panel/MainWindow.h"
+#include "ui/replay/Replay.h"
+#include "ui/training/AttemptFile.h"
+#include "ui/training/AttemptRun.h"
+#include "ui/training/ExerciseRun.h"
+#include "ui/training/TrainingStartPage.h"
+#include "ui/training/TrainingWindow.h"
+
+#include <QApplication>
+#include <QBuffer>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+
+#include <cstdio>
+#include <variant>
+
+namespace m350::hmi {
+
+namespace {
+
+int failWith(const QString& message) {
+    std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
+    return 2;
+}
+
+// Plays the attempt file through the training window: start the exercise, the actions on its
+// panel, then the hand-in when the attempt has one.
+QString playAttempt(ui::TrainingWindow& window, const HmiOptions& o, const QByteArray& examKey) {
+    const QString exerciseName = QFileInfo(QString::fromStdString(o.exercise)).fileName();
+    const auto& exercises = window.exercises();
+    const auto found = std::find_if(exercises.begin(), exercises.end(),
+                                    [&](const training::Exercise& e) { return QString::fromStdString(e.name) == exerciseName; });
+    if (found == exercises.end()) {
+        return QStringLiteral("--exercise %1 is not one of the training's exercises (%2)")
+            .arg(QString::fromStdString(o.exercise), window.problems().join(QStringLiteral("; ")));
+    }
+    window.startPage()->select(static_cast<int>(found - exercises.begin()));
+    QFile toml(QDir(QString::fromStdString(found->folder)).filePath(QString::fromLatin1(training::kExerciseFileName)));
+    const QByteArray exerciseToml = toml.open(QIODevice::ReadOnly) ? toml.readAll() : QByteArray();
+    QString error;
+    std::optional<ui::Attempt> attempt = ui::readAttempt(QString::fromStdString(o.replay), exerciseToml, examKey, &error);
+    if (!attempt) {
+        return error;
+    }
+    window.softkey(1);
+    ui::AttemptRun* run = window.attempt();
+    if (!run) {
+        return window.startPage()->text();
+    }
+    std::vector<ui::OperatorAction> actions = attempt->actions;
+    std::vector<ui::ReplayPlace> places = attempt->places;
+    ui::injectFaults(run->exercise(), actions, places);
+    if (attempt->handedInAt && (actions.empty() || actions.back().t < *attempt->handedInAt)) {
+        ui::OperatorAction wait;
+        wait.t = *attempt->handedInAt;
+        actions.push_back(wait);
+        places.push_back({0, 1});
+    }
+    error = ui::playReplay(run->window(), run->session(), actions, QString::fromStdString(o.replay), places);
+    if (!error.isEmpty()) {
+        return error;
+    }
+    for (int hint = 0; hint < attempt->hints; ++hint) {
+        run->takeHint();
+    }
+    if (attempt->handedInAt) {
+        window.handIn(attempt->timedOut, attempt->handedInAt);
+    }
+    return {};
+}
+
+} // namespace
+
+int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& language) {
+    ui::TrainingWindow::Options options;
+    options.exercisesFolder = QString::fromStdString(o.exercises.empty() ? training::bundledExercisesDirectory() : o.exercises);
+    options.trainee = QString::fromStdString(o.trainee);
+    options.language = &language;
+    QTemporaryDir scratch;
+    options.attemptsFolder = !o.attempts.empty() ? QString::fromStdString(o.attempts)
+                             : o.headlessRun()   ? scratch.path()
+                                                 : QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+                                                     QStringLiteral("/training");
+    if (!QDir().mkpath(options.attemptsFolder)) {
+        return failWith(QStringLiteral("--attempts %1: the folder cannot be made").arg(options.attemptsFolder));
+    }
+    if (!o.exam.empty()) {
+        auto exam = training::loadExam(o.exam);
+        if (auto* error = std::get_if<training::ExerciseError>(&exam)) {
+            const MessageLanguage said = language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
+            return failWith(QString::fromStdString(error->where() + ": " + error->words.in(said)));
+        }
+        options.exam = std::get<training::Exam>(exam);
+    }
+    options.clock = o.headlessRun() ? ui::MachineSession::Clock::Manual : ui::MachineSession::Clock::RealTime;
+    ui::TrainingWindow window(options);
+    window.resize(o.width, o.height);
+    window.show();
+    if (!o.headlessRun()) {
+        return app.exec();
+    }
+    if (!o.replay.empty()) {
+        if (o.exercise.empty()) {
+            return failWith(QStringLiteral("--training --replay plays an attempt: name its --exercise"));
+        }
+        if (QString error = playAttempt(window, o, options.exam ? QByteArray::fromStdString(options.exam->key) : QByteArray());
+            !error.isEmpty()) {
+            return failWith(error);
+        }
+    }
+    if (window.attempt()) {
+        ui::settle(window.attempt()->session());
+    }
+    QCoreApplication::processEvents();
+    if (!o.screenshot.empty()) {
+        QByteArray png;
+        QBuffer buffer(&png);
+        buffer.open(QIODevice::WriteOnly);
+        if (!window.grab().save(&buffer, screenshotFormat(o.screenshot)->constData())) {
+            return failWith(QStringLiteral("--screenshot %1: the image could not be made").arg(QString::fromStdString(o.screenshot)));
+        }
+        if (auto error = writeOutput(o.screenshot, png)) {
+            return failWith(QStringLiteral("--screenshot: %1").arg(*error));
+        }
+    }
+    if (!o.state.empty()) {
+        if (auto error = writeOutput(o.state, QJsonDocument(window.state()).toJson(QJsonDocument::Indented))) {
+            return failWith(QStringLiteral("--state: %1").arg(*error));
+        }
+    }
+    return 0;
+}
+
+} // namespace m350::hmi
