@@ -82,6 +82,39 @@ Graded grade(const QString& exercise, const QString& attempt, const QStringList&
     return out;
 }
 
+// An exam file with the empty key (the training's attempts outside an exam are chained with it).
+QString emptyKeyExam(const QString& folder) {
+    const QString path = folder + QStringLiteral("/exam.toml");
+    QFile file(path);
+    if (file.open(QIODevice::WriteOnly)) {
+        file.write("exercises = [\"any\"]\nkey = \"\"\n");
+    }
+    return path;
+}
+
+// The attempt played through m350-hmi --training (the panel's training mode): its --state.
+QJsonObject trainingRun(const QString& exercise, const QString& attempt, const QString& attempts) {
+    QTemporaryDir dir;
+    const QString state = dir.filePath(QStringLiteral("state.json"));
+    QProcess hmi;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    hmi.setProcessEnvironment(env);
+    hmi.start(QStringLiteral(M350_HMI_PATH),
+              QStringList{QStringLiteral("--lang"), QStringLiteral("en"), QStringLiteral("--training"), QStringLiteral("--trainee"),
+                          QStringLiteral("test"), QStringLiteral("--attempts"), attempts, QStringLiteral("--exercise"), exercise,
+                          QStringLiteral("--replay"), attempt, QStringLiteral("--state"), state});
+    if (!hmi.waitForFinished(120000)) {
+        hmi.kill();
+        return {};
+    }
+    QFile file(state);
+    if (!file.open(QIODevice::ReadOnly)) {
+        return QJsonObject{{QStringLiteral("error"), QString::fromUtf8(hmi.readAllStandardError())}};
+    }
+    return QJsonDocument::fromJson(file.readAll()).object();
+}
+
 QStringList exerciseNames() {
     return QDir(kExercises).entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name);
 }
@@ -139,6 +172,25 @@ TEST_P(ExerciseAttempt, IsGradedAsItsFirstLineSays) {
             }
         }
         EXPECT_EQ(failing, expected.failing) << graded.output.toStdString();
+
+        // the same attempt through the training's panel: the same verdict, check by check, and the
+        // attempt it recorded is chained and grades the same headless
+        QTemporaryDir attempts;
+        const QJsonObject panel = trainingRun(exercise, path, attempts.path());
+        ASSERT_EQ(panel.value(QStringLiteral("page")).toString(), QStringLiteral("verdict")) << QJsonDocument(panel).toJson().toStdString();
+        EXPECT_EQ(panel.value(QStringLiteral("passed")).toBool(), expected.passes);
+        const QJsonArray headless = graded.verdict.value(QStringLiteral("checks")).toArray();
+        const QJsonArray inPanel = panel.value(QStringLiteral("checks")).toArray();
+        ASSERT_EQ(inPanel.size(), headless.size());
+        for (qsizetype i = 0; i < headless.size(); ++i) {
+            for (const char* field : {"id", "passed", "measured", "expected"}) {
+                EXPECT_EQ(inPanel[i].toObject().value(QLatin1String(field)), headless[i].toObject().value(QLatin1String(field)))
+                    << field << " of " << headless[i].toObject().value(QStringLiteral("id")).toString().toStdString();
+            }
+        }
+        const Graded recorded = grade(exercise, panel.value(QStringLiteral("attempt_file")).toString(),
+                                      QStringList{QStringLiteral("--exam"), emptyKeyExam(attempts.path())});
+        EXPECT_EQ(recorded.exitCode, expected.passes ? 0 : 1) << recorded.output.toStdString();
     }
 }
 

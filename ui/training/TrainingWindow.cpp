@@ -17,6 +17,7 @@
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
 #include <QKeyEvent>
 #include <QStackedWidget>
 #include <QVBoxLayout>
@@ -304,6 +305,15 @@ QJsonObject TrainingWindow::state() const {
     }
     if (attempt_ && attempt_->verdict()) {
         out.insert(QStringLiteral("verdict"), verdict_->summary());
+        out.insert(QStringLiteral("passed"), attempt_->verdict()->passed);
+        QJsonArray checks;
+        for (const training::CheckResult& check : attempt_->verdict()->checks) {
+            checks.append(QJsonObject{{QStringLiteral("id"), QString::fromStdString(check.id)},
+                                      {QStringLiteral("passed"), check.passed},
+                                      {QStringLiteral("measured"), QString::fromStdString(check.measured)},
+                                      {QStringLiteral("expected"), QString::fromStdString(check.expected)}});
+        }
+        out.insert(QStringLiteral("checks"), checks);
     }
     return out;
 }
