@@ -3,7 +3,9 @@
 #include "app/hmi/HmiOutputs.h"
 #include "ui/i18n/Language.h"
 #include "core/training/Exam.h"
+#include "core/training/ExerciseFile.h"
 #include "ui/training/AttemptGrader.h"
+#include "ui/training/ClassReport.h"
 
 #include <variant>
 
@@ -11,6 +13,57 @@
 
 namespace m350::hmi {
 
+
+namespace {
+
+// The exam's key, or why the exam file is refused.
+std::optional<std::string> examKey(const HmiOptions& o, ui::Language& language, std::string* key) {
+    auto exam = training::loadExam(o.exam);
+    if (auto* error = std::get_if<training::ExerciseError>(&exam)) {
+        const MessageLanguage said = language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
+        return error->where() + ": " + error->words.in(said);
+    }
+    *key = std::get<training::Exam>(exam).key;
+    return std::nullopt;
+}
+
+} // namespace
+
+int classReportCommand(const HmiOptions& o, ui::Language& language) {
+    std::string key;
+    if (!o.exam.empty()) {
+        if (auto refused = examKey(o, language, &key)) {
+            std::fprintf(stderr, "m350-hmi: %s\n", refused->c_str());
+            return 2;
+        }
+    }
+    const QString exercises = QString::fromStdString(o.exercises.empty() ? training::bundledExercisesDirectory() : o.exercises);
+    const ui::ClassReport report = ui::gradeClass(QString::fromStdString(o.classReport), exercises, QByteArray::fromStdString(key),
+                                                  !o.exam.empty(), &language);
+    const QByteArray csv = ui::classReportCsv(report);
+    std::fwrite(csv.constData(), 1, static_cast<std::size_t>(csv.size()), stdout);
+    if (!o.reportCsv.empty()) {
+        if (auto error = writeOutput(o.reportCsv, csv)) {
+            std::fprintf(stderr, "m350-hmi: --report-csv: %s\n", qPrintable(*error));
+            return 2;
+        }
+    }
+    if (!o.reportHtml.empty()) {
+        const QString title = QStringLiteral("M350 Studio 训练 Training: %1").arg(QString::fromStdString(o.classReport));
+        if (auto error = writeOutput(o.reportHtml, ui::classReportHtml(report, title))) {
+            std::fprintf(stderr, "m350-hmi: --report-html: %s\n", qPrintable(*error));
+            return 2;
+        }
+    }
+    int failures = 0;
+    for (const ui::ClassAttempt& attempt : report.attempts) {
+        if (!attempt.verdict) {
+            std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(attempt.error));
+            ++failures;
+        }
+    }
+    return failures == 0 ? 0 : 2;
+}
 
 int gradeCommand(const HmiOptions& o, ui::Language& language) {
     if (!o.verdict.empty()) {
@@ -24,13 +77,12 @@ int gradeCommand(const HmiOptions& o, ui::Language& language) {
     request.exerciseFolder = QString::fromStdString(o.exercise);
     request.attemptFile = QString::fromStdString(o.attempt);
     if (!o.exam.empty()) {
-        auto exam = training::loadExam(o.exam);
-        if (auto* error = std::get_if<training::ExerciseError>(&exam)) {
-            const MessageLanguage said = language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
-            std::fprintf(stderr, "m350-hmi: %s: %s\n", error->where().c_str(), error->words.in(said).c_str());
+        std::string key;
+        if (auto refused = examKey(o, language, &key)) {
+            std::fprintf(stderr, "m350-hmi: %s\n", refused->c_str());
             return 2;
         }
-        request.examKey = QByteArray::fromStdString(std::get<training::Exam>(exam).key);
+        request.examKey = QByteArray::fromStdString(key);
         request.requireChain = true;
     }
     request.language = &language;

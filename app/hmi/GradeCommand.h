@@ -13,4 +13,8 @@ namespace m350::hmi {
 // it cannot be graded (a bad exercise or attempt, an output refused).
 int gradeCommand(const HmiOptions& options, ui::Language& language);
 
+// m350-hmi --class-report FOLDER [--report-csv F] [--report-html F]: every attempt graded, the
+// class's table printed and written. Exit 0 when every attempt could be graded, 2 otherwise.
+int classReportCommand(const HmiOptions& options, ui::Language& language);
+
 } // namespace m350::hmi

@@ -61,6 +61,12 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
             ->check(CLI::ExistingFile)
             ->needs(exercise);
     app.add_option("--verdict", o.verdict, "with --attempt: write the verdict (JSON) here")->needs(attempt);
+    CLI::Option* report = app.add_option("--class-report", o.classReport,
+                                         "grade every attempt (*.jsonl) under this folder for a class report (with "
+                                         "--exercises, default the bundled ones)")
+                              ->check(CLI::ExistingDirectory);
+    app.add_option("--report-csv", o.reportCsv, "with --class-report: the report as CSV")->needs(report);
+    app.add_option("--report-html", o.reportHtml, "with --class-report: the report as one self-contained HTML page")->needs(report);
     app.add_option("--exam", o.exam,
                    "an exam (exam.toml: exercises, time_limit, key): with --training the exam's exercises, no hints; "
                    "with --attempt an attempt must carry the exam's intact hash chain")

@@ -40,6 +40,10 @@ struct HmiOptions {
     std::string attempt;
     std::string verdict;
     std::string exam;
+    // --class-report FOLDER: every attempt under it graded, --report-csv and --report-html written
+    std::string classReport;
+    std::string reportCsv;
+    std::string reportHtml;
     bool grading() const { return !exercise.empty() && !attempt.empty(); }
     bool headlessRun() const { return !screenshot.empty() || !replay.empty() || !state.empty(); }
 };

@@ -100,6 +100,9 @@ int main(int argc, char** argv) {
         app.setStyleSheet(ui::panelStyleSheet());
         return hmi::trainingCommand(app, o, language);
     }
+    if (!o.classReport.empty()) {
+        return hmi::classReportCommand(o, language);
+    }
     if (o.grading()) {
         return hmi::gradeCommand(o, language);
     }
