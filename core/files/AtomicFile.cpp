@@ -6,6 +6,9 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
+#include <string>
+#include <unordered_map>
 
 #include <fcntl.h>
 #include <signal.h>
@@ -86,25 +89,88 @@ namespace {
 // A file of the scratch folder is rewritten where it is: a crash loses the folder anyway, and a
 // replay of many MDI lines spent a third of its file time on the temp file, the rename and the
 // search for stale temp files. Only a plain file with one name (or none yet) is: a link goes on
-// being replaced, not written through.
+// being replaced, not written through. The file also stays open between writes (a replay
+// rewrites mdi.nc and the MDI lines at every line run; opening, truncating and closing were most
+// of such a write): its handle is used again only while the name still leads to the same file.
+class ScratchHandles {
+public:
+    ScratchHandles() = default;
+    ScratchHandles(const ScratchHandles&) = delete;
+    ScratchHandles& operator=(const ScratchHandles&) = delete;
+    ~ScratchHandles() { forgetAll(); }
+
+    // The kept handle of `path` if it is still the file `now` describes, else -1 (and forgotten).
+    int find(const std::string& path, const struct stat* now) {
+        auto it = open_.find(path);
+        if (it == open_.end()) {
+            return -1;
+        }
+        struct stat kept {};
+        if (now && ::fstat(it->second, &kept) == 0 && kept.st_dev == now->st_dev && kept.st_ino == now->st_ino) {
+            return it->second;
+        }
+        ::close(it->second);
+        open_.erase(it);
+        return -1;
+    }
+    void keep(const std::string& path, int fd) {
+        if (open_.size() >= kMostKept) {
+            forgetAll();
+        }
+        open_.emplace(path, fd);
+    }
+    void forget(const std::string& path) { find(path, nullptr); }
+    std::mutex& mutex() { return mutex_; }
+
+private:
+    void forgetAll() {
+        for (const auto& [path, fd] : open_) {
+            ::close(fd);
+        }
+        open_.clear();
+    }
+    static constexpr std::size_t kMostKept = 32;
+    std::mutex mutex_;
+    std::unordered_map<std::string, int> open_;
+};
+
+ScratchHandles& scratchHandles() {
+    static ScratchHandles handles;
+    return handles;
+}
+
 std::optional<std::optional<std::string>> writeScratchInPlace(const fs::path& path, std::string_view content,
                                                               const AtomicWriteHooks& hooks) {
     if (hooks.beforeRename || !inScratchFolder(path)) {
         return std::nullopt;
     }
     struct stat existing {};
-    if (::lstat(path.c_str(), &existing) == 0 && (!S_ISREG(existing.st_mode) || existing.st_nlink != 1)) {
+    const bool exists = ::lstat(path.c_str(), &existing) == 0;
+    if (exists && (!S_ISREG(existing.st_mode) || existing.st_nlink != 1)) {
         return std::nullopt;
     }
-    FileDescriptor file(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644));
-    if (file.get() < 0) {
-        return std::nullopt; // the careful way says what is wrong
+    ScratchHandles& handles = scratchHandles();
+    const std::lock_guard lock(handles.mutex());
+    int fd = handles.find(path.string(), exists ? &existing : nullptr);
+    if (fd < 0) {
+        fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+        if (fd < 0) {
+            return std::nullopt; // the careful way says what is wrong
+        }
+        handles.keep(path.string(), fd);
     }
-    if (auto error = writeAll(file.get(), path, content, hooks)) {
+    // from the start, then cut to the new length; an empty rewrite still marks the file modified
+    if (::lseek(fd, 0, SEEK_SET) != 0) {
+        handles.forget(path.string());
+        return std::optional<std::string>(failure(path, "cannot write"));
+    }
+    if (auto error = writeAll(fd, path, content, hooks)) {
+        handles.forget(path.string());
         return error;
     }
-    if (!file.close()) {
-        return std::optional<std::string>(failure(path, "cannot close"));
+    if (::ftruncate(fd, static_cast<off_t>(content.size())) != 0 || (content.empty() && ::futimens(fd, nullptr) != 0)) {
+        handles.forget(path.string());
+        return std::optional<std::string>(failure(path, "cannot write"));
     }
     return std::optional<std::string>();
 }

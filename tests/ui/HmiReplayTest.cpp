@@ -51,6 +51,29 @@ HmiRun runHmi(const QStringList& arguments, int timeoutMs = 60000) {
 
 QString replay(const char* name) { return QDir(M350_REPLAY_DIR).filePath(QString::fromLatin1(name)); }
 
+
+// Pixels that differ between two screenshots of one size, the status line's clock aside (the wall
+// clock's time, at its right end); `first` names the first one.
+int differingPixels(const QImage& fast, const QImage& eager, QString* first) {
+    if (fast.isNull() || fast.size() != eager.size()) {
+        *first = QStringLiteral("no screenshot or sizes differ");
+        return -1;
+    }
+    const QImage a = fast.convertToFormat(QImage::Format_RGB32);
+    const QImage b = eager.convertToFormat(QImage::Format_RGB32);
+    int different = 0;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            const bool clock = y >= 20 && y < 50 && x >= a.width() / 2;
+            if (!clock && a.pixel(x, y) != b.pixel(x, y)) {
+                *first = first->isEmpty() ? QStringLiteral("%1,%2").arg(x).arg(y) : *first;
+                ++different;
+            }
+        }
+    }
+    return different;
+}
+
 } // namespace
 
 TEST(HmiReplay, MdiLineRunsAndTheStateShowsWhereTheMachineIs) {
@@ -284,22 +307,53 @@ TEST(HmiReplay, ALongReplayOfRealActionsEndsAsTheEagerReplayEnds) {
     EXPECT_EQ(QJsonDocument(fastState).toJson().toStdString(), QJsonDocument(eagerState).toJson().toStdString());
 
     // every pixel the same but the status line's clock (the wall clock's time, at its right end)
-    ASSERT_FALSE(fast.screenshot.isNull());
-    ASSERT_EQ(fast.screenshot.size(), eager.screenshot.size());
-    const QImage a = fast.screenshot.convertToFormat(QImage::Format_RGB32);
-    const QImage b = eager.screenshot.convertToFormat(QImage::Format_RGB32);
-    int different = 0;
     QString first;
-    for (int y = 0; y < a.height(); ++y) {
-        for (int x = 0; x < a.width(); ++x) {
-            const bool clock = y >= 20 && y < 50 && x >= a.width() / 2;
-            if (!clock && a.pixel(x, y) != b.pixel(x, y)) {
-                first = first.isEmpty() ? QStringLiteral("%1,%2").arg(x).arg(y) : first;
-                ++different;
-            }
+    EXPECT_EQ(differingPixels(fast.screenshot, eager.screenshot, &first), 0) << "first at " << first.toStdString();
+}
+
+// Lists scrolled far down between page switches (the System Log, the parameter table on two
+// tabs, the IO ports) end where the eager replay leaves them: a fast replay that skipped a layout
+// an action reads would scroll a table by the wrong height and show other rows.
+TEST(HmiReplay, ListsScrolledBetweenPageSwitchesEndAsTheEagerReplayLeavesThem) {
+    QTemporaryDir dir;
+    QFile replayFile(dir.filePath("scroll.jsonl"));
+    ASSERT_TRUE(replayFile.open(QIODevice::WriteOnly));
+    double t = 0.0;
+    auto step = [&](const QString& body) {
+        t += 0.05;
+        replayFile.write(QStringLiteral("{\"t\":%1,%2}\n").arg(t, 0, 'f', 2).arg(body).toUtf8());
+    };
+    auto keys = [&](const char* key, int times) {
+        for (int i = 0; i < times; ++i) {
+            step(QStringLiteral("\"key\":\"%1\"").arg(QLatin1String(key)));
         }
-    }
-    EXPECT_EQ(different, 0) << "first at " << first.toStdString();
+    };
+    step(QStringLiteral("\"page\":\"log\""));
+    keys("DOWN", 60);
+    step(QStringLiteral("\"page\":\"param\""));
+    keys("DOWN", 45);
+    step(QStringLiteral("\"softkey\":8"));
+    keys("DOWN", 30);
+    keys("LOG", 1);
+    keys("PARAM", 1);
+    keys("UP", 7);
+    step(QStringLiteral("\"page\":\"log\""));
+    step(QStringLiteral("\"page\":\"io\""));
+    keys("DOWN", 20);
+    step(QStringLiteral("\"page\":\"param\""));
+    replayFile.close();
+    const QStringList arguments{"--replay", replayFile.fileName(), "--lang", "en"};
+    HmiRun fast = runHmi(arguments);
+    HmiRun eager = runHmi(QStringList{"--eager-replay"} + arguments);
+    ASSERT_EQ(fast.exitCode, 0) << fast.errors.toStdString();
+    ASSERT_EQ(eager.exitCode, 0) << eager.errors.toStdString();
+    QJsonObject fastState = fast.state;
+    QJsonObject eagerState = eager.state;
+    fastState.remove("work_record");
+    eagerState.remove("work_record");
+    EXPECT_EQ(QJsonDocument(fastState).toJson().toStdString(), QJsonDocument(eagerState).toJson().toStdString());
+    QString first;
+    EXPECT_EQ(differingPixels(fast.screenshot, eager.screenshot, &first), 0) << "first at " << first.toStdString();
 }
 
 } // namespace m350::test

@@ -80,5 +80,33 @@ TEST_F(ScratchFolderWrite, AFileOutsideItOrALinkInItIsStillReplacedWhole) {
     EXPECT_EQ(readText(hard), "G1 X4\n");
 }
 
+// The file stays open between writes: each write still leaves exactly its content, and a file
+// removed, replaced by another or given a second name in between is written as it now is.
+TEST_F(ScratchFolderWrite, RepeatedWritesFollowTheNameNotAnOldHandle) {
+    const fs::path file = root_ / "scratch" / "mdi.nc";
+    for (const char* text : {"G91 G1 X0.05 F600\n", "G91 G1 X-0.05 F600\n", "M30\n", "", "G0 X1\nG0 Y2\n"}) {
+        ASSERT_EQ(writeFileAtomically(file, text), std::nullopt);
+        EXPECT_EQ(readText(file), text);
+    }
+    fs::remove(file);
+    ASSERT_EQ(writeFileAtomically(file, "G1 X5\n"), std::nullopt);
+    EXPECT_EQ(readText(file), "G1 X5\n") << "a removed file is made again";
+
+    const fs::path other = root_ / "scratch" / "other.nc";
+    writeText(other, "(other)\n");
+    fs::rename(other, file); // someone replaced it: the old handle's file is gone from the name
+    ASSERT_EQ(writeFileAtomically(file, "G1 X6\n"), std::nullopt);
+    EXPECT_EQ(readText(file), "G1 X6\n");
+
+    const fs::path second = root_ / "kept" / "second-name.nc";
+    fs::create_hard_link(file, second);
+    ASSERT_EQ(writeFileAtomically(file, "G1 X7\n"), std::nullopt);
+    EXPECT_EQ(readText(file), "G1 X7\n");
+    EXPECT_EQ(readText(second), "G1 X6\n") << "a file with two names is replaced, the other name keeps it";
+    ASSERT_EQ(writeFileAtomically(file, "G1 X8\n"), std::nullopt);
+    EXPECT_EQ(readText(file), "G1 X8\n");
+    EXPECT_EQ(readText(second), "G1 X6\n");
+}
+
 } // namespace
 } // namespace m350::files

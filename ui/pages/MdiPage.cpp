@@ -4,6 +4,7 @@
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/MdiLines.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/TextSizeDelegate.h"
 
 #include <QJsonArray>
 #include <QLabel>
@@ -22,6 +23,7 @@ MdiPage::MdiPage(PanelContext& context, QWidget* parent) : Page(context, parent)
     list_ = new QListWidget(this);
     list_->setObjectName("mdiLines");
     list_->setFocusPolicy(Qt::NoFocus);
+    new TextSizeDelegate(list_);
     editor_ = new QLineEdit(this);
     editor_->setObjectName("mdiEditor");
     editor_->setFocusPolicy(Qt::NoFocus); // keys reach it through the dispatcher

@@ -114,6 +114,7 @@ bool MainWindow::showPage(const QString& id) {
         page->render(*snapshot_);
         status_->render(*snapshot_, page->id(), page->title());
         renderHeld_ = false;
+        statusHeld_ = false;
     }
     return true;
 }
@@ -126,11 +127,14 @@ void MainWindow::holdRendering(bool hold) {
 }
 
 void MainWindow::renderHeld() {
-    if (renderHeld_ && snapshot_) {
+    if ((renderHeld_ || statusHeld_) && snapshot_) {
         status_->render(*snapshot_, currentPage()->id(), currentPage()->title());
+    }
+    if (renderHeld_ && snapshot_) {
         currentPage()->render(*snapshot_);
     }
     renderHeld_ = false;
+    statusHeld_ = false;
 }
 
 Page* MainWindow::currentPage() const { return static_cast<Page*>(stack_->currentWidget()); }
@@ -194,6 +198,11 @@ void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
     const PanelSnapshot& s = *snapshot;
     if (holdRendering_ && !currentPage()->rendersEverySnapshot()) {
         renderHeld_ = true;
+    } else if (holdRendering_) {
+        // the page keeps something of every snapshot; the status line shows the latest alone
+        statusHeld_ = true;
+        currentPage()->render(s);
+        renderHeld_ = false;
     } else {
         status_->render(s, currentPage()->id(), currentPage()->title());
         currentPage()->render(s);

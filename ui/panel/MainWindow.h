@@ -102,6 +102,7 @@ private:
     bool bootPromptAsked_ = false;
     bool holdRendering_ = false;
     bool renderHeld_ = false; // a snapshot the page and status line have not rendered
+    bool statusHeld_ = false; // a snapshot the status line has not rendered (the page has)
     std::string toolPromptAlarm_; // the alarm the tool number prompt was last asked at
     std::string rightsPromptAlarm_; // the parameter write refused that the password was last asked at
     QMenu* panelMenu_ = nullptr;

@@ -1,5 +1,7 @@
 #include "ui/widgets/PanelTable.h"
 
+#include "ui/widgets/TextSizeDelegate.h"
+
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
@@ -16,6 +18,7 @@ QTableWidget* makePanelTable(QWidget* parent, int columns, const char* objectNam
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table->verticalHeader()->hide();
     table->verticalHeader()->setDefaultSectionSize(rowHeight);
+    new TextSizeDelegate(table);
     return table;
 }
 
