@@ -271,6 +271,8 @@ InjectedFault readFault(const ExerciseTomlReader& in, const toml::table& t, cons
         const std::string event = in.text(*after, "after");
         if (event == "start") {
             fault.after = InjectedFault::After::FirstStart;
+        } else if (event == "mdi") {
+            fault.after = InjectedFault::After::FirstMdiRun;
         } else if (event != "begin") {
             in.refuse(after->source(), message("exercise_unknown_fault_event", {event}));
         }
