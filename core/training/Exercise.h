@@ -35,9 +35,10 @@ struct LineChange {
 // A fault injected into an input while the attempt runs, as a trainer's `force` action.
 struct InjectedFault {
     double at = 0.0;           // virtual s, counted from `after`
-    enum class After { Begin, FirstStart } after = After::Begin; // the attempt's start, or the first START key
+    // the attempt's start, the first START key, or the first MDI line run (F1-F6 on the MDI page)
+    enum class After { Begin, FirstStart, FirstMdiRun } after = After::Begin;
     int input = 0;
-    std::string fault = "stuck"; // stuck slow bouncing none (the replay's force action)
+    std::string fault = "stuck"; // stuck slow bouncing pressed none (the replay's force action)
     int level = 0;
     double seconds = 0.0;
 };

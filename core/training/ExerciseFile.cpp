@@ -271,6 +271,8 @@ InjectedFault readFault(const ExerciseTomlReader& in, const toml::table& t, cons
         const std::string event = in.text(*after, "after");
         if (event == "start") {
             fault.after = InjectedFault::After::FirstStart;
+        } else if (event == "mdi") {
+            fault.after = InjectedFault::After::FirstMdiRun;
         } else if (event != "begin") {
             in.refuse(after->source(), message("exercise_unknown_fault_event", {event}));
         }
@@ -278,7 +280,7 @@ InjectedFault readFault(const ExerciseTomlReader& in, const toml::table& t, cons
     fault.input = in.whole(in.required(t, "input", where), "input", 1, 999);
     const toml::node& kind = in.required(t, "fault", where);
     fault.fault = in.text(kind, "fault");
-    static const std::set<std::string> faults{"stuck", "slow", "bouncing", "none"};
+    static const std::set<std::string> faults{"stuck", "slow", "bouncing", "pressed", "none"};
     if (!faults.count(fault.fault)) {
         in.refuse(kind.source(), message("exercise_unknown_fault", {fault.fault}));
     }

@@ -39,6 +39,11 @@ TEST(OperatorAction, ReadsTheIssuesExamples) {
     ASSERT_TRUE(force);
     EXPECT_EQ(force->force.input, 11);
     EXPECT_EQ(force->force.fault, "stuck");
+    auto press = parse(R"({"t":4,"force":{"input":14,"fault":"pressed","level":1,"seconds":0.3}})");
+    ASSERT_TRUE(press); // an exercise's [[faults]] "pressed" plays as this action: the level for the seconds, once
+    EXPECT_EQ(press->force.fault, "pressed");
+    EXPECT_EQ(press->force.level, 1);
+    EXPECT_DOUBLE_EQ(press->force.seconds, 0.3);
     auto wait = parse(R"({"t":8})");
     ASSERT_TRUE(wait);
     EXPECT_EQ(wait->kind, OperatorAction::Kind::Wait);
@@ -50,7 +55,8 @@ TEST(OperatorAction, ReadsTheIssuesExamples) {
 TEST(OperatorAction, WritesWhatItReads) {
     for (const char* json : {R"({"t":1.5,"key":"JOG_Z-"})", R"({"t":1,"key_down":"JOG_X+"})",
                              R"({"t":0,"page":"io"})", R"({"t":0,"text":"G0 X10"})", R"({"t":0,"lang":"en"})",
-                             R"({"t":2,"force":{"input":13,"fault":"slow","seconds":2}})"}) {
+                             R"({"t":2,"force":{"input":13,"fault":"slow","seconds":2}})",
+                             R"({"t":3,"force":{"input":14,"fault":"pressed","level":1,"seconds":0.3}})"}) {
         auto action = parse(json);
         ASSERT_TRUE(action) << json;
         auto again = OperatorAction::fromJson(action->toJson(), nullptr);

@@ -108,6 +108,7 @@ void ActionDispatcher::force(const OperatorAction::Force& f) {
     Fault fault = f.fault == QLatin1String("slow")       ? Fault::Slow
                   : f.fault == QLatin1String("bouncing") ? Fault::Bouncing
                   : f.fault == QLatin1String("none")     ? Fault::None
+                  : f.fault == QLatin1String("pressed")  ? Fault::Pressed
                                                          : Fault::Stuck;
     session_.forceInput(f.input, fault, f.level, f.seconds);
 }

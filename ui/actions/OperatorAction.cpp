@@ -61,6 +61,9 @@ QJsonObject OperatorAction::toJson() const {
             if (force.fault != QLatin1String("none")) {
                 f["seconds"] = force.seconds;
             }
+            if (force.fault == QLatin1String("pressed")) {
+                f["level"] = force.level;
+            }
         }
         out["force"] = f;
         break;
@@ -163,11 +166,12 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
         if (a.force.input < 1 || a.force.input > 24) {
             return fail(QStringLiteral("force input must be 1-24 (IN01-IN24)"));
         }
-        static const QStringList faults{"stuck", "slow", "bouncing", "none"};
+        static const QStringList faults{"stuck", "slow", "bouncing", "pressed", "none"};
         if (!faults.contains(a.force.fault)) {
-            return fail(QStringLiteral("force fault must be stuck, slow, bouncing or none"));
+            return fail(QStringLiteral("force fault must be stuck, slow, bouncing, pressed or none"));
         }
-        if (a.force.fault == QLatin1String("stuck") && a.force.level != 0 && a.force.level != 1) {
+        const bool levelled = a.force.fault == QLatin1String("stuck") || a.force.fault == QLatin1String("pressed");
+        if (levelled && a.force.level != 0 && a.force.level != 1) {
             return fail(QStringLiteral("force level must be 0 or 1"));
         }
         return a;

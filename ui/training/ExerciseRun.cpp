@@ -2,6 +2,8 @@
 
 #include "core/config/MachineConfig.h"
 #include "core/training/ExerciseMachine.h"
+#include "ui/actions/PanelKey.h"
+#include "ui/pages/PageId.h"
 
 #include <algorithm>
 
@@ -34,23 +36,55 @@ OperatorAction faultAction(const training::InjectedFault& fault, double t) {
     return action;
 }
 
-void injectFaults(const training::Exercise& exercise, std::vector<OperatorAction>& actions, std::vector<ReplayPlace>& places) {
-    places.resize(actions.size());
-    std::optional<double> firstStart;
+namespace {
+
+bool isKey(const OperatorAction& action) {
+    return action.kind == OperatorAction::Kind::Key || action.kind == OperatorAction::Kind::KeyDown;
+}
+
+std::optional<double> firstStart(const std::vector<OperatorAction>& actions) {
     for (const OperatorAction& action : actions) {
-        if ((action.kind == OperatorAction::Kind::Key || action.kind == OperatorAction::Kind::KeyDown) &&
-            action.name == QLatin1String("START")) {
-            firstStart = action.t;
-            break;
+        if (isKey(action) && action.name == QLatin1String("START")) {
+            return action.t;
         }
     }
+    return std::nullopt;
+}
+
+// F1-F6 pressed on the MDI page (opened by its key or a page action, left by another page's) runs
+// an MDI line: the moment a change typed in MDI begins, whenever the trainee gets there.
+std::optional<double> firstMdiRun(const std::vector<OperatorAction>& actions) {
+    bool onMdi = false;
+    for (const OperatorAction& action : actions) {
+        if (isKey(action)) {
+            const PanelKey* key = PanelKey::named(action.name);
+            if (key && key->role == PanelKey::Role::Page) {
+                onMdi = key->page == PageId::mdi;
+            }
+        } else if (action.kind == OperatorAction::Kind::Page) {
+            onMdi = action.name == PageId::mdi;
+        } else if (action.kind == OperatorAction::Kind::Softkey && onMdi && action.softkey <= 6) {
+            return action.t;
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+void injectFaults(const training::Exercise& exercise, std::vector<OperatorAction>& actions, std::vector<ReplayPlace>& places) {
+    places.resize(actions.size());
+    const std::optional<double> started = firstStart(actions);
+    const std::optional<double> mdiRun = firstMdiRun(actions);
     for (const training::InjectedFault& fault : exercise.faults) {
         double t = fault.at;
-        if (fault.after == training::InjectedFault::After::FirstStart) {
-            if (!firstStart) {
+        using After = training::InjectedFault::After;
+        if (fault.after != After::Begin) {
+            const std::optional<double>& from = fault.after == After::FirstStart ? started : mdiRun;
+            if (!from) {
                 continue; // never started: the fault never comes
             }
-            t += *firstStart;
+            t += *from;
         }
         // after every action of the same moment: the START that triggers it goes first
         auto at = std::upper_bound(actions.begin(), actions.end(), t, [](double time, const OperatorAction& a) { return time < a.t; });

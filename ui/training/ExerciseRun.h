@@ -22,8 +22,8 @@ std::optional<Message> prepareAttemptMachine(const training::Exercise& exercise,
 // The session's options: the exercise's start (homed, the tool in the spindle) and its breaking tools.
 MachineSession::Options attemptSessionOptions(const training::Exercise& exercise, MachineSession::Clock clock);
 
-// The exercise's faults as `force` actions at their times (after the attempt's begin, or after the
-// first START key), put among `actions` in time order; `places` (readReplay's) kept in step, a
+// The exercise's faults as `force` actions at their times (after the attempt's begin, the first
+// START key, or the first MDI line run: F1-F6 on the MDI page), put among `actions` in time order; `places` (readReplay's) kept in step, a
 // fault's place being line 0.
 void injectFaults(const training::Exercise& exercise, std::vector<OperatorAction>& actions, std::vector<ReplayPlace>& places);
 
