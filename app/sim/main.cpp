@@ -202,9 +202,15 @@ int runCommand(int argc, char** argv) {
     std::string folder = machineFolder(o);
     auto loaded = config::loadMachineFolder(folder);
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
-        std::cerr << error->where() << ": " << error->message << '\n';
-        std::cout << sim::dump(sim::errorJson("config_error", error->message, error->file, error->line, error->column))
-                  << '\n';
+        std::cerr << error->text(o.language) << '\n';
+        nlohmann::json j = sim::errorJson("config_error", error->message.english(), error->file, error->line, error->column);
+        j["alarm"]["message_id"] = error->message.id;
+        nlohmann::json arguments = nlohmann::json::array();
+        for (const std::string& argument : error->message.arguments) {
+            arguments.push_back(argumentIn(argument, MessageLanguage::English));
+        }
+        j["alarm"]["message_arguments"] = std::move(arguments);
+        std::cout << sim::dump(j) << '\n';
         return kExitError;
     }
     config::MachineConfig machineConfig = std::move(std::get<config::MachineConfig>(loaded));

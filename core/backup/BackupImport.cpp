@@ -217,7 +217,7 @@ void writeFolder(const fs::path& into, const Files& files) {
     }
     auto loaded = config::loadMachineFolder(temp.string());
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
-        abandon(into, "the imported folder does not load (" + error->message + "); nothing written");
+        abandon(into, "the imported folder does not load (" + error->message.english() + "); nothing written");
     }
     std::error_code renamed;
     fs::rename(temp, into, renamed);

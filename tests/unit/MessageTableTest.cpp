@@ -45,7 +45,12 @@ bool hasEnglishWords(const std::string& text) {
         "BPRNT", "DPRNT", "POPEN", "PCLOS", "FANUC", "ATAN", "FIFO", "LinuxCNC", "slib", "tool", "table", "machine", "variables", "common", "coordinates", "additional",
         "systems", "reference", "points", "params", "help",
         // the words of toollife.txt and tool.tbl lines, which the file keeps in any language
-        "count", "minutes", "group", "life", "used", "ignore", "teeth", "type", "flat"};
+        "count", "minutes", "group", "life", "used", "ignore", "teeth", "type", "flat",
+        // machine.toml's sections, keys and values, as the file spells them
+        "TOML", "away", "change", "changer", "clamped", "codes", "commanded", "data", "dialect", "distance", "drawbar",
+        "empty", "false", "true", "fanuc", "homing", "input", "output", "outputs", "interface", "signal", "signals",
+        "lambda", "libraries", "links", "load", "magazine", "memory", "name", "offset", "pockets", "position",
+        "random", "released", "rotation", "select", "slide", "spindle", "stock", "strobe", "switch"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;
