@@ -153,8 +153,8 @@ std::optional<std::string> writeExternalOutput(const controller::Controller& con
     }
     const std::string file = sim::externalOutputPath(o);
     if (auto problem = files::writeOutputFile(file, controller.externalDevices().received())) {
-        std::cerr << "m350-sim: " << messageText("dprnt_cannot_write", {file, *problem}, o.language) << '\n';
-        return problem;
+        std::cerr << "m350-sim: " << messageText("dprnt_cannot_write", {file, bilingual(*problem)}, o.language) << '\n';
+        return problem->english();
     }
     std::cerr << "m350-sim: " << messageText("dprnt_written", {file}, o.language) << '\n';
     return std::nullopt;
@@ -278,8 +278,8 @@ int runCommand(int argc, char** argv) {
     std::unique_ptr<files::OutputFile> trace;
     if (o.traceFile) {
         auto opened = files::OutputFile::open(*o.traceFile);
-        if (auto* error = std::get_if<std::string>(&opened)) {
-            return fail("file_error", message("trace_cannot_write", {*error}), *o.traceFile, o.language);
+        if (auto* error = std::get_if<Message>(&opened)) {
+            return fail("file_error", message("trace_cannot_write", {bilingual(*error)}), *o.traceFile, o.language);
         }
         trace = std::move(std::get<std::unique_ptr<files::OutputFile>>(opened));
         o.settings.trace = &trace->stream();
@@ -344,7 +344,7 @@ int runCommand(int argc, char** argv) {
         }
     }
     if (auto error = sim::exportTools(controller, o)) {
-        std::cerr << "m350-sim: --tools-out: " << *error << '\n';
+        std::cerr << "m350-sim: --tools-out: " << error->in(o.language) << '\n';
         report.status = controller::RunStatus::Error;
     }
     nlohmann::json json = sim::reportJson(report, controller, o.printVariables);
@@ -357,8 +357,8 @@ int runCommand(int argc, char** argv) {
     if (trace) {
         controller.status().finishTrace();
         if (auto problem = trace->commit()) {
-            std::cerr << "m350-sim: --trace: " << *problem << '\n';
-            outputProblem = problem;
+            std::cerr << "m350-sim: --trace: " << problem->in(o.language) << '\n';
+            outputProblem = problem->english();
         }
     }
     if (outputProblem && json["alarm"].is_null()) { // what the run did was not all written: no success

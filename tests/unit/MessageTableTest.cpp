@@ -50,7 +50,9 @@ bool hasEnglishWords(const std::string& text) {
         "TOML", "away", "change", "changer", "clamped", "codes", "commanded", "data", "dialect", "distance", "drawbar",
         "empty", "false", "true", "fanuc", "homing", "input", "output", "outputs", "interface", "signal", "signals",
         "lambda", "libraries", "links", "load", "magazine", "memory", "name", "offset", "pockets", "position",
-        "random", "released", "rotation", "select", "slide", "spindle", "stock", "strobe", "switch"};
+        "random", "released", "rotation", "select", "slide", "spindle", "stock", "strobe", "switch",
+        // the command lines' options
+        "screenshot"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;
