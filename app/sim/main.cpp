@@ -194,7 +194,7 @@ int runCommand(int argc, char** argv) {
     }
     sim::SimOptions& o = *parsed.options;
     if (o.command == sim::SimOptions::Command::Import) {
-        return sim::runImport(o.backupDir, o.intoDir);
+        return sim::runImport(o.backupDir, o.intoDir, o.language);
     }
     if (o.command == sim::SimOptions::Command::ResetPasswords) {
         return sim::runResetPasswords(o.configDir, o.language);

@@ -51,8 +51,8 @@ bool hasEnglishWords(const std::string& text) {
         "empty", "false", "true", "fanuc", "homing", "input", "output", "outputs", "interface", "signal", "signals",
         "lambda", "libraries", "links", "load", "magazine", "memory", "name", "offset", "pockets", "position",
         "random", "released", "rotation", "select", "slide", "spindle", "stock", "strobe", "switch",
-        // the command lines' options
-        "screenshot"};
+        // the command lines' options, the controller backup's file names
+        "screenshot", "setting"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;
