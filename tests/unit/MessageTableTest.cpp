@@ -52,7 +52,9 @@ bool hasEnglishWords(const std::string& text) {
         "lambda", "libraries", "links", "load", "magazine", "memory", "name", "offset", "pockets", "position",
         "random", "released", "rotation", "select", "slide", "spindle", "stock", "strobe", "switch",
         // the command lines' options, the controller backup's file names
-        "screenshot", "setting"};
+        "screenshot", "setting",
+        // passwords.toml's levels and its "SALT:HASH"
+        "operator", "admin", "super", "SALT", "HASH"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;
