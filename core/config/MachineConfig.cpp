@@ -472,7 +472,7 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         loadOffsets(dir, config);
         loadVariables(dir, config);
         if (auto wrong = loadModbusSlaves((dir / MachineFolder::fileName(FolderFile::Modbus)).string(), config.modbus)) {
-            fail(dir / MachineFolder::fileName(FolderFile::Modbus), message("config_modbus_wrong", {*wrong}));
+            fail(dir / MachineFolder::fileName(FolderFile::Modbus), *wrong);
         }
         loadToolTable(dir, config);
         tools::LifeData lifeSettings;

@@ -108,6 +108,16 @@ TEST_F(CliConfigWordsTest, AToolTableZThatDiffersFromTheParameterIsSaidInTheLang
     EXPECT_SAYS(chinese, "m350/params.toml: 警告：参数930（T1 Z）为-53.677，但m350/tool.tbl:1中为-20；以刀具表为准");
 }
 
+TEST_F(CliConfigWordsTest, AModbusTableItRefusesIsSaidInTheLanguage) {
+    replace("modbus.toml", "[slave.1.holding]\n8192 = 70000\n");
+    auto [english, chinese] = both();
+    EXPECT_EQ(english.exitStatus, kExitError);
+    EXPECT_SAYS(english, "m350/modbus.toml: line 2: slave 1 holding '8192': addresses are 0-65535 and values whole "
+                         "numbers from -32768 to 65535");
+    EXPECT_EQ(chinese.exitStatus, kExitError);
+    EXPECT_SAYS(chinese, "m350/modbus.toml: 第2行：从站1 holding '8192'：地址为 0-65535，数值须为 -32768 到 65535 的整数");
+}
+
 TEST_F(CliConfigWordsTest, AFolderThatIsNotThereIsSaidInTheLanguage) {
     ProcessResult chinese = sim({"mdi", "G4 P1", "--config", "nowhere", "--lang", "zh_CN"});
     EXPECT_EQ(chinese.exitStatus, kExitError);

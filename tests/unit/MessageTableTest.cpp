@@ -54,7 +54,9 @@ bool hasEnglishWords(const std::string& text) {
         // the command lines' options, the controller backup's file names
         "screenshot", "setting",
         // passwords.toml's levels and its "SALT:HASH"
-        "operator", "admin", "super", "SALT", "HASH"};
+        "operator", "admin", "super", "SALT", "HASH",
+        // modbus.toml's tables
+        "holding", "coils", "discrete"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;
