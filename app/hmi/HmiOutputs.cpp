@@ -41,7 +41,7 @@ std::optional<QByteArray> screenshotFormat(const std::string& path) {
 
 std::optional<QString> writeOutput(const std::string& path, const QByteArray& bytes) {
     if (auto problem = files::writeOutputFile(path, std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())))) {
-        return QString::fromStdString(*problem);
+        return QString::fromStdString(problem->in(ui::Language::messageLanguage()));
     }
     return std::nullopt;
 }
@@ -66,22 +66,22 @@ std::optional<QString> refusedOutput(const HmiOptions& o, const QString& machine
             return QString::fromStdString(refused->in(ui::Language::messageLanguage()));
         }
         if (auto why = files::unwritableOutput(path)) {
-            return QString::fromStdString(files::describeUnwritable(option, path, *why));
+            return QString::fromStdString(files::describeUnwritable(option, path, *why).in(ui::Language::messageLanguage()));
         }
         for (std::size_t j = 0; j < i; ++j) {
             if (files::outputOverGuarded(path, {{"", outputs[j].second, false}}) ||
                 std::filesystem::weakly_canonical(std::filesystem::absolute(path)) ==
                     std::filesystem::weakly_canonical(std::filesystem::absolute(outputs[j].second))) {
-                return QString::fromStdString(option + " " + path + " is also the " + outputs[j].first +
-                                              " file: refused, nothing was written");
+                return QString::fromStdString(message("hmi_output_twice", {option, path, outputs[j].first})
+                                                  .in(ui::Language::messageLanguage()));
             }
         }
     }
     if (!o.screenshot.empty() && !screenshotFormat(o.screenshot)) {
-        return QString::fromStdString("--screenshot " + o.screenshot + ": ." +
-                                      std::filesystem::path(o.screenshot).extension().string().substr(1) +
-                                      " is not an image format (" + imageSuffixes().toStdString() +
-                                      "): refused, nothing was written");
+        return QString::fromStdString(message("hmi_not_an_image",
+                                              {o.screenshot, std::filesystem::path(o.screenshot).extension().string().substr(1),
+                                               imageSuffixes().toStdString()})
+                                          .in(ui::Language::messageLanguage()));
     }
     return std::nullopt;
 }

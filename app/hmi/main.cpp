@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
     }
     auto loaded = config::loadMachineFolder(folder.toStdString());
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
-        return fail(QString::fromStdString(error->where() + ": " + error->message));
+        return fail(QString::fromStdString(error->text(ui::Language::messageLanguage())));
     }
     ui::MachineSession::Options sessionOptions;
     sessionOptions.clock = o.headlessRun() ? ui::MachineSession::Clock::Manual : ui::MachineSession::Clock::RealTime;

@@ -27,7 +27,8 @@ nlohmann::json importJson(const backup::BackupImport& r, const backup::ImportErr
     }
     nlohmann::json alarm = nullptr;
     if (error) {
-        alarm = {{"code", error->code}, {"message", error->message}, {"file", error->file}, {"line", 0}, {"column", 0}};
+        alarm = {{"code", error->code}, {"message", error->message.english()}, {"message_id", error->message.id},
+                 {"file", error->file}, {"line", 0}, {"column", 0}};
     }
     return {{"status", error ? "error" : "ok"},
             {"alarm", alarm},
@@ -52,18 +53,18 @@ nlohmann::json importJson(const backup::BackupImport& r, const backup::ImportErr
 
 } // namespace
 
-int runImport(const std::string& backupDir, const std::string& intoDir) {
+int runImport(const std::string& backupDir, const std::string& intoDir, MessageLanguage language) {
     auto outcome = backup::importControllerBackup(backupDir, intoDir);
     if (auto* error = std::get_if<backup::ImportError>(&outcome)) {
-        std::cerr << error->file << ": " << error->message << '\n';
+        std::cerr << error->file << ": " << error->message.in(language) << '\n';
         std::cout << dump(importJson(backup::BackupImport{}, error)) << '\n';
         return kExitError;
     }
     const auto& result = std::get<backup::BackupImport>(outcome);
     if (result.unchanged) {
-        std::cerr << result.machineFolder << ": already holds this backup's import; nothing written\n";
+        std::cerr << message("import_already_done", {result.machineFolder}).in(language) << '\n';
     } else {
-        std::cerr << "Imported " << backupDir << " into " << result.machineFolder << "\n";
+        std::cerr << message("import_done", {backupDir, result.machineFolder}).in(language) << '\n';
     }
     std::cerr << backup::formatImportReport(result);
     std::cout << dump(importJson(result, nullptr)) << '\n';

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <string>
 
 namespace m350::sim {
@@ -9,6 +11,6 @@ namespace m350::sim {
 // status, alarm (the error, as the other commands give it), what was written, copied and skipped,
 // what to review, what the simulator cannot model. Exit status 0, or 2 for a damaged or missing
 // backup, a machine folder that is not empty, or a failed write (nothing is written then).
-int runImport(const std::string& backupDir, const std::string& intoDir);
+int runImport(const std::string& backupDir, const std::string& intoDir, MessageLanguage language);
 
 } // namespace m350::sim

@@ -28,14 +28,16 @@ int runResetPasswords(const std::string& folder, MessageLanguage language) {
     const config::MachineFolder store(folder);
     const std::string file = store.pathOf(config::FolderFile::Passwords).string();
     if (auto error = config::resetPasswords(store)) {
-        std::cerr << "m350-sim: reset-passwords: " << *error << '\n';
-        std::cout << dump(errorJson("file_error", *error, file)) << '\n';
+        std::cerr << "m350-sim: reset-passwords: " << error->in(language) << '\n';
+        nlohmann::json j = errorJson("file_error", error->english(), file);
+        j["alarm"]["message_id"] = error->id;
+        std::cout << dump(j) << '\n';
         return 2;
     }
     files::SystemLog log(store.pathOf(config::FolderFile::SystemLog).string());
     std::string error;
     if (!log.load(&error) || !log.append({now(), "passwords_reset", file}, &error)) {
-        std::cerr << "m350-sim: warning: the System Log did not take the reset: " << error << '\n';
+        std::cerr << "m350-sim: " << message("passwords_log_failed", {error}).in(language) << '\n';
     }
     const Message said = message("passwords_reset", {file});
     std::cerr << said.in(language) << '\n';

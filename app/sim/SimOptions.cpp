@@ -230,6 +230,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
         ->required()
         ->check(nonEmptyPath);
     import->add_option("--into", o.intoDir, "the new machine folder (missing or empty)")->required()->check(nonEmptyPath);
+    import->add_option_function<std::string>(
+              "--lang", [&o](const std::string& name) { parseMessageLanguage(name, o.language); },
+              "language of what it prints on stderr: en (default) or zh_CN (the JSON stays English)")
+        ->check(CLI::IsMember({"en", "zh_CN"}));
     CLI::App* hook = app.add_subcommand("hook", "run one of the machine folder's hook files as the panel would");
     hook->add_option("NAME", o.hookName, "fndzero, key-3, probe, T (#1504 = the target tool: --var 1504=5) ...")
         ->required()

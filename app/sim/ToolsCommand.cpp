@@ -110,7 +110,7 @@ int listTools(controller::Controller& controller, const SimOptions& o) {
     return skipped ? kExitError : kExitOk;
 }
 
-std::optional<std::string> exportTools(controller::Controller& controller, const SimOptions& o) {
+std::optional<Message> exportTools(controller::Controller& controller, const SimOptions& o) {
     if (!o.toolsOut) {
         return std::nullopt;
     }

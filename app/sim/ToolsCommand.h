@@ -20,6 +20,6 @@ std::optional<Message> useToolTableFile(const SimOptions& o, config::MachineConf
 int listTools(controller::Controller& controller, const SimOptions& o);
 
 // --tools-out FILE after run / mdi / hook: the tool table as the run left it, written atomically.
-std::optional<std::string> exportTools(controller::Controller& controller, const SimOptions& o);
+std::optional<Message> exportTools(controller::Controller& controller, const SimOptions& o);
 
 } // namespace m350::sim

@@ -153,8 +153,8 @@ std::optional<std::string> writeExternalOutput(const controller::Controller& con
     }
     const std::string file = sim::externalOutputPath(o);
     if (auto problem = files::writeOutputFile(file, controller.externalDevices().received())) {
-        std::cerr << "m350-sim: " << messageText("dprnt_cannot_write", {file, *problem}, o.language) << '\n';
-        return problem;
+        std::cerr << "m350-sim: " << messageText("dprnt_cannot_write", {file, bilingual(*problem)}, o.language) << '\n';
+        return problem->english();
     }
     std::cerr << "m350-sim: " << messageText("dprnt_written", {file}, o.language) << '\n';
     return std::nullopt;
@@ -194,7 +194,7 @@ int runCommand(int argc, char** argv) {
     }
     sim::SimOptions& o = *parsed.options;
     if (o.command == sim::SimOptions::Command::Import) {
-        return sim::runImport(o.backupDir, o.intoDir);
+        return sim::runImport(o.backupDir, o.intoDir, o.language);
     }
     if (o.command == sim::SimOptions::Command::ResetPasswords) {
         return sim::runResetPasswords(o.configDir, o.language);
@@ -202,9 +202,15 @@ int runCommand(int argc, char** argv) {
     std::string folder = machineFolder(o);
     auto loaded = config::loadMachineFolder(folder);
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
-        std::cerr << error->where() << ": " << error->message << '\n';
-        std::cout << sim::dump(sim::errorJson("config_error", error->message, error->file, error->line, error->column))
-                  << '\n';
+        std::cerr << error->text(o.language) << '\n';
+        nlohmann::json j = sim::errorJson("config_error", error->message.english(), error->file, error->line, error->column);
+        j["alarm"]["message_id"] = error->message.id;
+        nlohmann::json arguments = nlohmann::json::array();
+        for (const std::string& argument : error->message.arguments) {
+            arguments.push_back(argumentIn(argument, MessageLanguage::English));
+        }
+        j["alarm"]["message_arguments"] = std::move(arguments);
+        std::cout << sim::dump(j) << '\n';
         return kExitError;
     }
     config::MachineConfig machineConfig = std::move(std::get<config::MachineConfig>(loaded));
@@ -272,8 +278,8 @@ int runCommand(int argc, char** argv) {
     std::unique_ptr<files::OutputFile> trace;
     if (o.traceFile) {
         auto opened = files::OutputFile::open(*o.traceFile);
-        if (auto* error = std::get_if<std::string>(&opened)) {
-            return fail("file_error", message("trace_cannot_write", {*error}), *o.traceFile, o.language);
+        if (auto* error = std::get_if<Message>(&opened)) {
+            return fail("file_error", message("trace_cannot_write", {bilingual(*error)}), *o.traceFile, o.language);
         }
         trace = std::move(std::get<std::unique_ptr<files::OutputFile>>(opened));
         o.settings.trace = &trace->stream();
@@ -338,7 +344,7 @@ int runCommand(int argc, char** argv) {
         }
     }
     if (auto error = sim::exportTools(controller, o)) {
-        std::cerr << "m350-sim: --tools-out: " << *error << '\n';
+        std::cerr << "m350-sim: --tools-out: " << error->in(o.language) << '\n';
         report.status = controller::RunStatus::Error;
     }
     nlohmann::json json = sim::reportJson(report, controller, o.printVariables);
@@ -351,8 +357,8 @@ int runCommand(int argc, char** argv) {
     if (trace) {
         controller.status().finishTrace();
         if (auto problem = trace->commit()) {
-            std::cerr << "m350-sim: --trace: " << *problem << '\n';
-            outputProblem = problem;
+            std::cerr << "m350-sim: --trace: " << problem->in(o.language) << '\n';
+            outputProblem = problem->english();
         }
     }
     if (outputProblem && json["alarm"].is_null()) { // what the run did was not all written: no success

@@ -99,8 +99,8 @@ struct Refusal {
     ImportError error;
 };
 
-[[noreturn]] void refuse(std::string code, const fs::path& file, std::string message) {
-    throw Refusal{{std::move(code), file.string(), std::move(message)}};
+[[noreturn]] void refuse(std::string code, const fs::path& file, Message words) {
+    throw Refusal{{std::move(code), file.string(), std::move(words)}};
 }
 
 // Everything the machine folder will hold, and what the import says of it.
@@ -170,12 +170,13 @@ bool alreadyImported(const fs::path& into, const Files& files) {
         return false;
     }
     if (!fs::is_directory(into)) {
-        refuse("machine_folder_not_empty", into, "is a file, not a folder; nothing written");
+        refuse("machine_folder_not_empty", into, message("import_is_a_file"));
     }
     if (fs::is_empty(into)) {
         return false;
     }
     std::string differing;
+    std::string differingZh;
     int count = 0;
     for (const FolderFile& file : files) {
         if (sameContent(into / file.name, file)) {
@@ -183,14 +184,15 @@ bool alreadyImported(const fs::path& into, const Files& files) {
         }
         if (++count <= 3) {
             std::error_code ec;
-            differing += (differing.empty() ? "" : ", ") + file.name +
-                         (fs::exists(fs::symlink_status(into / file.name, ec)) ? " differs" : " is missing");
+            const bool there = fs::exists(fs::symlink_status(into / file.name, ec));
+            differing += (differing.empty() ? "" : ", ") + file.name + (there ? " differs" : " is missing");
+            differingZh += (differingZh.empty() ? "" : "，") + (there ? file.name + "内容不同" : "缺少" + file.name);
         }
     }
     if (count > 0) {
         refuse("machine_folder_not_empty", into,
-               "is not empty and does not hold this backup's import (" + differing + (count > 3 ? ", ..." : "") +
-                   "); nothing written: choose a new or empty folder");
+               message("import_not_empty", {bilingual(differing + (count > 3 ? ", ..." : ""),
+                                                      differingZh + (count > 3 ? "，……" : ""))}));
     }
     return true;
 }
@@ -203,29 +205,29 @@ void writeFolder(const fs::path& into, const Files& files) {
     const fs::path temp = parent / ("." + into.filename().string() + ".import-tmp");
     fs::remove_all(temp);
     fs::create_directory(temp);
-    auto abandon = [&temp](const fs::path& file, std::string message) {
+    auto abandon = [&temp](const fs::path& file, Message words) {
         std::error_code ignored;
         fs::remove_all(temp, ignored);
-        refuse("file_error", file, std::move(message));
+        refuse("file_error", file, std::move(words));
     };
     for (const FolderFile& each : files) {
         const fs::path file = temp / each.name;
         fs::create_directories(file.parent_path());
         if (auto error = each.source ? copyStreaming(*each.source, file) : files::writeFileAtomically(file, each.bytes)) {
-            abandon(into / each.name, *error + "; nothing written");
+            abandon(into / each.name, message("import_write_failed", {*error}));
         }
     }
     auto loaded = config::loadMachineFolder(temp.string());
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
-        abandon(into, "the imported folder does not load (" + error->message + "); nothing written");
+        abandon(into, message("import_does_not_load", {bilingual(error->message)}));
     }
     std::error_code renamed;
     fs::rename(temp, into, renamed);
     if (renamed) {
-        abandon(into, "cannot move the import into place: " + renamed.message() + "; nothing written");
+        abandon(into, message("import_cannot_move", {renamed.message()}));
     }
     if (auto error = files::syncFolder(parent)) {
-        refuse("file_error", parent, *error);
+        refuse("file_error", parent, message("import_sync_failed", {*error}));
     }
 }
 
@@ -234,7 +236,8 @@ void writeFolder(const fs::path& into, const Files& files) {
 std::variant<BackupImport, ImportError> importControllerBackup(const fs::path& backupFolder, const fs::path& into) {
     const auto& loadedCatalogue = params::ParameterCatalogue::bundled();
     if (auto* error = std::get_if<std::string>(&loadedCatalogue)) {
-        return ImportError{"file_error", params::ParameterCatalogue::bundledPath(), *error};
+        return ImportError{"file_error", params::ParameterCatalogue::bundledPath(),
+                           message("import_catalogue_unreadable", {*error})};
     }
     const params::ParameterCatalogue& catalogue = std::get<params::ParameterCatalogue>(loadedCatalogue);
     auto read = readControllerBackup(backupFolder, &catalogue);
@@ -249,7 +252,7 @@ std::variant<BackupImport, ImportError> importControllerBackup(const fs::path& b
     BackupImport result;
     try {
         if (inside(backupFolder, target)) {
-            refuse("machine_folder_not_empty", into, "lies inside the backup folder; nothing written");
+            refuse("machine_folder_not_empty", into, message("import_inside_backup"));
         }
         const Files files = plan(backup, catalogue, result);
         result.unchanged = alreadyImported(target, files);
@@ -259,7 +262,8 @@ std::variant<BackupImport, ImportError> importControllerBackup(const fs::path& b
     } catch (const Refusal& refusal) {
         return refusal.error;
     } catch (const fs::filesystem_error& e) {
-        return ImportError{"file_error", e.path1().empty() ? into.string() : e.path1().string(), e.code().message()};
+        return ImportError{"file_error", e.path1().empty() ? into.string() : e.path1().string(),
+                           message("config_system_error", {e.code().message()})};
     }
     result.machineFolder = target.string();
     return result;

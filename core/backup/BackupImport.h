@@ -36,7 +36,7 @@ struct BackupImport {
 struct ImportError {
     std::string code; // "backup_error", "machine_folder_not_empty", "file_error"
     std::string file;
-    std::string message;
+    Message message; // by id: said in the CLI's --lang and the panel's language
 };
 
 // The report an import writes into the machine folder beside what it made.

@@ -26,8 +26,8 @@ struct Failure {
     BackupError error;
 };
 
-[[noreturn]] void fail(const fs::path& file, std::string message) {
-    throw Failure{{file.string(), std::move(message)}};
+[[noreturn]] void fail(const fs::path& file, Message words) {
+    throw Failure{{file.string(), std::move(words)}};
 }
 
 // A data file's bytes: a folder, FIFO or device (a link to one) is said as what it is, an
@@ -35,7 +35,7 @@ struct Failure {
 std::string readBytes(const fs::path& file) {
     std::string bytes;
     if (auto why = files::readMachineFile(file, bytes)) {
-        fail(file, "cannot read: " + *why + "; nothing imported");
+        fail(file, message("backup_cannot_read", {*why}));
     }
     return bytes;
 }
@@ -53,44 +53,48 @@ double littleEndianDouble(const char* bytes) {
     return std::bit_cast<double>(bits);
 }
 
-// The name of value `index` of a table in messages: "parameter 129 (浮动对刀仪厚度 Floating tool
-// set thickness)" or "#805 (G54 X)".
+// The name of value `index` of a table in messages, in both languages (bilingual()): "parameter 129
+// (浮动对刀仪厚度 Floating tool set thickness)" / 参数129（浮动对刀仪厚度）, or "#805 (G54 X)".
 using IndexName = std::string (*)(int index, const params::ParameterCatalogue* catalogue);
 
 std::string parameterName(int index, const params::ParameterCatalogue* catalogue) {
-    std::string name = "parameter " + std::to_string(index);
+    std::string english = "parameter " + std::to_string(index);
+    std::string chinese = "参数" + std::to_string(index);
     if (const params::ParameterInfo* info = catalogue ? catalogue->find(index) : nullptr) {
-        name += " (" + info->nameZh + " " + info->nameEn + ")";
+        english += " (" + info->nameZh + " " + info->nameEn + ")";
+        chinese += "（" + info->nameZh + "）";
     }
-    return name;
+    return bilingual(english, chinese);
 }
 
 std::string offsetName(int index, const params::ParameterCatalogue*) {
     static constexpr const char* systems[] = {"G92", "G54", "G55", "G56", "G57", "G58", "G59", "G52", "common offset"};
+    static constexpr const char* systemsZh[] = {"G92", "G54", "G55", "G56", "G57", "G58", "G59", "G52", "公共偏置"};
     static constexpr const char* axes[] = {"X", "Y", "Z", "4th", "5th"};
-    return "#" + std::to_string(800 + index) + " (" + systems[index / 5] + " " + axes[index % 5] + ")";
+    static constexpr const char* axesZh[] = {"X", "Y", "Z", "第4轴", "第5轴"};
+    const std::string number = "#" + std::to_string(800 + index);
+    return bilingual(number + " (" + systems[index / 5] + " " + axes[index % 5] + ")",
+                     number + "（" + systemsZh[index / 5] + " " + axesZh[index % 5] + "）");
 }
 
-std::vector<double> readTable(const fs::path& file, std::size_t count, const char* what, IndexName name,
+std::vector<double> readTable(const fs::path& file, std::size_t count, const std::string& what, IndexName name,
                               const params::ParameterCatalogue* catalogue) {
     const std::string bytes = readBytes(file);
     const std::size_t expected = count * sizeof(double);
     if (bytes.size() != expected) {
-        std::string message = "holds " + std::to_string(bytes.size()) + " bytes; " + what + " holds " +
-                              std::to_string(count) + " little-endian float64 (" + std::to_string(expected) +
-                              " bytes)";
+        std::vector<std::string> arguments{std::to_string(bytes.size()), what, std::to_string(count),
+                                           std::to_string(expected)};
         if (bytes.size() < expected) {
-            message += ": truncated, the values from " + name(static_cast<int>(bytes.size() / 8), catalogue) +
-                       " on are missing";
+            arguments.push_back(name(static_cast<int>(bytes.size() / 8), catalogue));
         }
-        fail(file, message + "; nothing imported");
+        fail(file, message(bytes.size() < expected ? "backup_truncated" : "backup_wrong_size", std::move(arguments)));
     }
     std::vector<double> values(count);
     for (std::size_t i = 0; i < count; ++i) {
         values[i] = littleEndianDouble(bytes.data() + i * sizeof(double));
         if (auto why = implausibleValue(values[i])) {
-            fail(file, "offset " + std::to_string(i * sizeof(double)) + ", " + name(static_cast<int>(i), catalogue) +
-                           ": " + *why + "; the file is damaged, nothing imported");
+            fail(file, message("backup_damaged",
+                               {std::to_string(i * sizeof(double)), name(static_cast<int>(i), catalogue), bilingual(*why)}));
         }
     }
     return values;
@@ -208,18 +212,18 @@ const BackupFile* findProgram(const ControllerBackup& backup, std::string_view n
     return nullptr;
 }
 
-std::optional<std::string> implausibleValue(double value) {
+std::optional<Message> implausibleValue(double value) {
     if (std::isnan(value)) {
-        return "the value is nan";
+        return message("backup_value_nan");
     }
     if (std::isinf(value)) {
-        return std::string("the value is ") + (value > 0 ? "infinity" : "-infinity");
+        return message("backup_value_infinite", {value > 0 ? "infinity" : "-infinity"});
     }
     const double magnitude = std::abs(value);
     if (magnitude > kLargestPlausible || (magnitude != 0.0 && magnitude < kSmallestPlausible)) {
         std::ostringstream text;
-        text << "the value " << value << " is no parameter or offset a controller stores";
-        return text.str();
+        text << value;
+        return message("backup_value_implausible", {text.str()});
     }
     return std::nullopt;
 }
@@ -227,24 +231,25 @@ std::optional<std::string> implausibleValue(double value) {
 std::variant<ControllerBackup, BackupError> readControllerBackup(const fs::path& folder,
                                                                  const params::ParameterCatalogue* catalogue) {
     ControllerBackup backup;
+    const std::string settingFile = bilingual("a setting file", "setting 文件");
     try {
         if (!fs::is_directory(folder)) {
-            fail(folder, "not a folder: a controller backup is the folder that holds `setting`, slib-g.nc ...");
+            fail(folder, message("backup_not_a_folder"));
         }
         const std::optional<fs::path> setting = dataFile(folder, "setting");
         if (!setting) {
-            fail(folder / "setting",
-                 "not found: a controller backup (the M350's system disk) holds its parameters in `setting`");
+            fail(folder / "setting", message("backup_no_setting"));
         }
         backup.setting =
-            parameterTable(readTable(*setting, params::ParameterTable::kCount, "a setting file", parameterName, catalogue));
+            parameterTable(readTable(*setting, params::ParameterTable::kCount, settingFile, parameterName, catalogue));
         if (const auto defaults = dataFile(folder, "default_setting")) {
             backup.defaultSetting = parameterTable(
-                readTable(*defaults, params::ParameterTable::kCount, "a setting file", parameterName, catalogue));
+                readTable(*defaults, params::ParameterTable::kCount, settingFile, parameterName, catalogue));
         }
         if (const auto coordinate = dataFile(folder, "coordinate")) {
             std::vector<double> offsets =
-                readTable(*coordinate, kCoordinateCount, "a coordinate file", offsetName, catalogue);
+                readTable(*coordinate, kCoordinateCount, bilingual("a coordinate file", "coordinate 文件"), offsetName,
+                          catalogue);
             backup.coordinate.emplace();
             std::copy(offsets.begin(), offsets.end(), backup.coordinate->begin());
         }
@@ -255,7 +260,8 @@ std::variant<ControllerBackup, BackupError> readControllerBackup(const fs::path&
     } catch (const Failure& f) {
         return f.error;
     } catch (const fs::filesystem_error& e) {
-        return BackupError{e.path1().empty() ? folder.string() : e.path1().string(), e.code().message()};
+        return BackupError{e.path1().empty() ? folder.string() : e.path1().string(),
+                           message("config_system_error", {e.code().message()})};
     }
     return backup;
 }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include "core/params/ParameterCatalogue.h"
 #include "core/params/ParameterTable.h"
 
@@ -46,7 +48,7 @@ struct ControllerBackup {
 
 struct BackupError {
     std::string file;
-    std::string message;
+    Message message; // by id: said in the CLI's --lang and the panel's language
 };
 
 // Reads the backup folder. A missing `setting`, or a binary file of the wrong size or holding a
@@ -62,6 +64,6 @@ const BackupFile* findProgram(const ControllerBackup& backup, std::string_view n
 bool sameNameAnyCase(std::string_view a, std::string_view b);
 
 // Why a value read from a float64 table is refused, or nullopt when it is a plausible value.
-std::optional<std::string> implausibleValue(double value);
+std::optional<Message> implausibleValue(double value);
 
 } // namespace m350::backup

@@ -35,23 +35,22 @@ std::optional<macro::VariableRange> parseRange(std::string_view text) {
 
 void readCommonVariables(const std::filesystem::path& file, const toml::node& node, MachineConfig& config) {
     if (config.dialect->id != gcode::DialectId::Fanuc) {
-        fail(file, "[variables] common is for FANUC machines: the M350's variables are fixed (#50-#499 common)",
-             node.source());
+        fail(file, message("config_common_fanuc_only"), node.source());
     }
     const toml::array* list = node.as_array();
     if (!list || list->empty()) {
-        fail(file, "[variables] common must list ranges such as [\"100-499\", \"500-999\"]", node.source());
+        fail(file, message("config_common_list"), node.source());
     }
     std::vector<macro::VariableRange> ranges;
     for (const toml::node& entry : *list) {
         auto text = entry.value<std::string>();
         auto range = text ? parseRange(*text) : std::nullopt;
         if (!range) {
-            fail(file, "[variables] common: each range is a string such as \"100-499\"", entry.source());
+            fail(file, message("config_common_range_string"), entry.source());
         }
         ranges.push_back(*range);
         if (auto refused = macro::VariableLayout::refusedCommon(ranges)) {
-            fail(file, "[variables] common: " + *refused, entry.source());
+            fail(file, message("config_common_refused", {*refused}), entry.source());
         }
     }
     config.variableLayout.common = std::move(ranges);
@@ -59,15 +58,14 @@ void readCommonVariables(const std::filesystem::path& file, const toml::node& no
 
 void readCoordinates(const std::filesystem::path& file, const toml::table& coordinates, MachineConfig& config) {
     if (config.dialect->id != gcode::DialectId::Fanuc) {
-        fail(file, "[coordinates] is for FANUC machines: the M350 has neither G54.1 nor G68",
-             coordinates.source());
+        fail(file, message("config_coordinates_fanuc_only"), coordinates.source());
     }
     config.variableLayout.additionalWorkSystems = toml_reading::wholeValue(
         file, coordinates, "additional_systems", 0, macro::VariableLayout::kMostWorkSystems, -1);
     if (const toml::node* rotation = coordinates.get("rotation")) {
         auto on = rotation->value_exact<bool>();
         if (!on) {
-            fail(file, "[coordinates] rotation must be true or false", rotation->source());
+            fail(file, message("config_rotation_bool"), rotation->source());
         }
         config.coordinateRotation = *on;
     }
@@ -82,7 +80,7 @@ void readControlOptions(const std::filesystem::path& file, const toml::table& ma
     if (const toml::node* coordinates = machine.get("coordinates")) {
         const toml::table* table = coordinates->as_table();
         if (!table) {
-            fail(file, "[coordinates] must be a table", coordinates->source());
+            fail(file, message("config_coordinates_table"), coordinates->source());
         }
         readCoordinates(file, *table, config);
     }

@@ -50,14 +50,11 @@ void readInterfaceSignals(const std::filesystem::path& file, const toml::table& 
         const std::string name = "[interface_signals] " + std::string(k);
         auto text = node.value<std::string>();
         if (!text) {
-            fail(file, name + " must be a signal's name in quotes, such as \"IN05\" or \"OUT07\"",
-                 node.source());
+            fail(file, message("config_signal_quoted", {name}), node.source());
         }
         if (k == "UI") {
             if (*text != "spindle_load") {
-                fail(file,
-                     name + " = \"" + *text + "\": all sixteen inputs at once can only be \"spindle_load\"",
-                     node.source());
+                fail(file, message("config_signal_ui_all", {name, *text}), node.source());
             }
             out.inputsAreSpindleLoad = true;
             wordAt = node.source();
@@ -65,8 +62,7 @@ void readInterfaceSignals(const std::filesystem::path& file, const toml::table& 
         }
         if (const int bit = signalNumber(k, "UI"); bit >= 0) {
             if (bit >= InterfaceSignals::kInputs) {
-                fail(file, name + ": the interface inputs run from UI000 to UI015 (#1000-#1015)",
-                     key.source());
+                fail(file, message("config_signal_ui_range", {name}), key.source());
             }
             InterfaceSignals::Bit& wired = out.inputs[static_cast<std::size_t>(bit)];
             if (const int pin = pinNamed(*text, "IN", machine::kInputCount)) {
@@ -82,11 +78,7 @@ void readInterfaceSignals(const std::filesystem::path& file, const toml::table& 
             } else if (*text == "new_tool_signal") {
                 wired = {Source::NewToolSignal, 0};
             } else {
-                fail(file,
-                     name + " = \"" + *text + "\": an input is IN01-IN" +
-                         std::to_string(machine::kInputCount) +
-                         ", \"commanded_tool_in_spindle\", \"spindle_empty\", \"t0_commanded\", "
-                         "\"tool_change_signal\" or \"new_tool_signal\"",
+                fail(file, message("config_signal_input_source", {name, *text, std::to_string(machine::kInputCount)}),
                      node.source());
             }
             bitsWired = true;
@@ -96,26 +88,18 @@ void readInterfaceSignals(const std::filesystem::path& file, const toml::table& 
         const bool narrow = bit >= 0 && bit < InterfaceSignals::kOutputs;
         const bool wide = bit >= 100 && bit < 100 + InterfaceSignals::kWideOutputs;
         if (!narrow && !wide) {
-            fail(file,
-                 name + ": the interface signals are UI000-UI015 (or UI for all of them), UO000-UO015 and "
-                        "UO100-UO131",
-                 key.source());
+            fail(file, message("config_signal_name", {name}), key.source());
         }
         const int pin = pinNamed(*text, "OUT", machine::kOutputCount);
         if (pin == 0) {
-            fail(file,
-                 name + " = \"" + *text + "\": an interface output drives OUT01-OUT" +
-                     std::to_string(machine::kOutputCount),
+            fail(file, message("config_signal_output_pin", {name, *text, std::to_string(machine::kOutputCount)}),
                  node.source());
         }
         (narrow ? out.outputs[static_cast<std::size_t>(bit)]
                 : out.wideOutputs[static_cast<std::size_t>(bit - 100)]) = pin;
     }
     if (out.inputsAreSpindleLoad && bitsWired) {
-        fail(file,
-             "[interface_signals] UI gives all sixteen inputs the spindle load: UI000-UI015 cannot be wired "
-             "too",
-             wordAt);
+        fail(file, message("config_signal_ui_and_bits"), wordAt);
     }
 }
 

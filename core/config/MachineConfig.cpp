@@ -40,6 +40,11 @@ std::string placeOf(const fs::path& file, const toml::source_region& where) {
     return file.string() + ":" + std::to_string(where.begin.line) + ":" + std::to_string(where.begin.column);
 }
 
+// "file: warning: the lines above were not read (its last good copy: ...)"
+Message linesNotRead(const fs::path& file) {
+    return warningIn(file, message("config_lines_not_read", {files::lastGoodPath(file).string()}));
+}
+
 // slibuser.nc, the user's G-code handlers (O9100-O9199 = G100-G199), is loaded beside slib-g.nc
 // as the M350 does, whether or not machine.toml lists it.
 void addUserLibrary(const fs::path& folder, MachineConfig& config) {
@@ -105,7 +110,7 @@ void readNumberedTools(const fs::path& file, const toml::table& t, MachineConfig
         if (!tool) {
             continue; // the length and diameter lists
         }
-        auto index = static_cast<std::size_t>(numberKey(file, key.str(), value.source(), 1, 9999, "[tools.N] tool"));
+        auto index = static_cast<std::size_t>(numberKey(file, key.str(), value.source(), 1, 9999, bilingual("[tools.N] tool", "[tools.N] 刀具")));
         auto set = [&](std::vector<double>& values, const char* name) {
             if (const toml::node* v = tool->get(name)) {
                 values.resize(std::max(values.size(), index), 0.0);
@@ -128,19 +133,17 @@ void readToolData(const fs::path& file, const toml::table& t, MachineConfig& con
     if (const toml::node* memory = data->get("offset_memory")) {
         const std::optional<std::string> type = memory->value<std::string>();
         if (!type || (*type != "A" && *type != "C")) {
-            fail(file, "[tool_data] offset_memory is \"A\" or \"C\" (FANUC tool compensation memory A or C)",
-                 memory->source());
+            fail(file, message("config_offset_memory_choice"), memory->source());
         }
         if (config.dialect->id != gcode::DialectId::Fanuc) {
-            fail(file, "[tool_data] offset_memory is a FANUC control's: the M350 keeps its tools' Z in parameters",
-                 memory->source());
+            fail(file, message("config_offset_memory_fanuc"), memory->source());
         }
         config.offsetMemory = *type == "A" ? tools::OffsetMemory::A : tools::OffsetMemory::C;
     }
     if (const toml::node* random = data->get("random_changer")) {
         const std::optional<bool> on = random->value<bool>();
         if (!on) {
-            fail(file, "[tool_data] random_changer is true or false", random->source());
+            fail(file, message("config_random_changer_bool"), random->source());
         }
         config.randomToolChanger = *on;
     }
@@ -149,13 +152,11 @@ void readToolData(const fs::path& file, const toml::table& t, MachineConfig& con
 void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     fs::path file = folder / MachineFolder::fileName(FolderFile::Machine);
     if (!fs::exists(file)) {
-        fail(file, "not found: a machine folder needs machine.toml");
+        fail(file, message("config_no_machine_toml"));
     }
     toml::table t = parseToml(file);
     if (t.empty()) {
-        config.warnings.push_back(file.string() +
-                                  ": warning: empty: the machine is an M350 with no libraries, no magazine and "
-                                  "the folder's name (name, dialect, [libraries] ... are its keys)");
+        config.warn(warningIn(file, message("config_machine_toml_empty")));
     }
     warnUnknownKeys(file, t,
                     {"name", "name_zh", "dialect", "libraries", "libraries.g", "libraries.m", "libraries.other", "codes", "codes.*",
@@ -175,36 +176,32 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                      "tool_data.offset_memory", "tool_data.random_changer", "interface_signals",
                      "interface_signals.*", "variables", "variables.common", "coordinates",
                      "coordinates.additional_systems", "coordinates.rotation"},
-                    config.warnings);
+                    config);
     config.name = t["name"].value_or(folder.filename().string());
     config.nameZh = t["name_zh"].value_or(std::string());
     std::string dialect = t["dialect"].value_or(std::string("m350"));
     config.dialect = gcode::Dialect::byName(dialect);
     if (!config.dialect) {
-        fail(file, "dialect '" + dialect + "' is unknown (m350 or fanuc)");
+        fail(file, message("config_unknown_dialect", {dialect}));
     }
     auto addLibrary = [&](const toml::node& node, gcode::FileRole role) {
         auto name = node.value<std::string>();
         if (!name) {
-            fail(file, "library entries must be file names", node.source());
+            fail(file, message("config_library_not_name"), node.source());
         }
         fs::path path = folder / *name;
         const std::vector<fs::path> allowed = libraryFolders(folder);
         if (std::none_of(allowed.begin(), allowed.end(), [&](const fs::path& f) { return isInside(path, f); }) &&
             !inSiblingMachineFolder(path, folder)) {
-            fail(file,
-                 "library '" + *name + "' lies outside the machine folder " + folder.string() +
-                     " (after resolving '..' and symlinks): refused, nothing was read. Keep it in the folder, or "
-                     "name its folder in " + kLibrariesVariable,
-                 node.source());
+            fail(file, message("config_library_outside", {*name, folder.string(), kLibrariesVariable}), node.source());
         }
         std::error_code ec;
         const fs::file_status status = fs::status(path, ec);
         if (!fs::exists(status)) {
-            fail(file, "library '" + *name + "' not found in " + folder.string(), node.source());
+            fail(file, message("config_library_missing", {*name, folder.string()}), node.source());
         }
         if (!fs::is_regular_file(status)) {
-            fail(file, "library '" + *name + "' is a folder, FIFO or device, not a program file", node.source());
+            fail(file, message("config_library_not_file", {*name}), node.source());
         }
         config.libraries.push_back({path.string(), role});
     };
@@ -226,14 +223,14 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         for (auto&& [key, value] : *codes) {
             std::string_view k = key.str();
             if (k.size() < 2 || (k[0] != 'M' && k[0] != 'G')) {
-                fail(file, "[codes] key '" + std::string(k) + "' must be an M or G code such as M6");
+                fail(file, message("config_codes_key", {std::string(k)}));
             }
-            int code = numberKey(file, k.substr(1), key.source(), 0, 9999, "code");
+            int code = numberKey(file, k.substr(1), key.source(), 0, 9999, bilingual("code", "代码"));
             const int program = roundToInt(numberValue(file, value, k));
             const std::string origin = "[codes] " + std::string(k) + " = " + std::to_string(program) + " (" +
                                        placeOf(file, key.source()) + ")";
             if (config.codeCalls.add(k[0], code, {program, macro::CallKind::Subprogram, 0, origin})) {
-                fail(file, "[codes] names " + std::string(1, k[0]) + std::to_string(code) + " twice", key.source());
+                fail(file, message("config_codes_twice", {std::string(1, k[0]) + std::to_string(code)}), key.source());
             }
         }
     }
@@ -241,7 +238,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
         for (const toml::node& node : *links) {
             const toml::table* link = node.as_table();
             if (!link) {
-                fail(file, "[[io_links]] entries must be tables");
+                fail(file, message("config_io_links_tables"));
             }
             machine::IoLink l;
             l.output = (*link)["output"].value_or(0);
@@ -249,7 +246,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
             l.delay = (*link)["delay_ms"].value_or(150.0) / 1000.0;
             l.inverted = (*link)["inverted"].value_or(false);
             if (l.output < 1 || l.output > machine::kOutputCount || l.input < 1 || l.input > machine::kInputCount) {
-                fail(file, "io link needs output 1-21 and input 1-24");
+                fail(file, message("config_io_link_pins"));
             }
             config.ioLinks.push_back(l);
         }
@@ -264,7 +261,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     }
     if (auto distances = t["homing"]["switch_distance"].as_array()) {
         if (distances->size() > 5) {
-            fail(file, "[homing] switch_distance has more than 5 axes");
+            fail(file, message("config_switch_distance_axes"));
         }
         for (std::size_t i = 0; i < distances->size(); ++i) {
             config.homeSwitchDistance[i] = std::abs(numberValue(file, *distances->get(i), "switch_distance"));
@@ -291,17 +288,15 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
     if (config.dialect->id == gcode::DialectId::Fanuc) {
         readInterfaceSignals(file, t, config.interfaceSignals);
     } else if (const toml::node* signals = t.get("interface_signals")) {
-        config.warnings.push_back(warningAt(file, signals->source(),
-                                            "[interface_signals] are a FANUC's (#1000-#1133): this M350 machine "
-                                            "ignores them"));
+        config.warn(warningAt(file, signals->source(), message("config_interface_signals_m350")));
     }
     readControlOptions(file, t, config);
     if (auto points = t["reference_points"].as_table()) {
         for (auto&& [key, value] : *points) {
-            int number = numberKey(file, key.str(), key.source(), 1, 4, "reference point");
+            int number = numberKey(file, key.str(), key.source(), 1, 4, bilingual("reference point", "参考点"));
             const toml::array* axes = value.as_array();
             if (!axes || axes->size() > 5) {
-                fail(file, "reference point " + std::to_string(number) + " must be [X, Y, Z, A, B]");
+                fail(file, message("config_reference_point_axes", {std::to_string(number)}));
             }
             std::array<double, 5> position{};
             for (std::size_t i = 0; i < axes->size(); ++i) {
@@ -327,34 +322,34 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
         return;
     }
     toml::table t = parseToml(file);
-    warnUnknownKeys(file, t, {"params", "params.*"}, config.warnings);
+    warnUnknownKeys(file, t, {"params", "params.*"}, config);
     if (auto params = t["params"].as_table()) {
         for (auto&& [key, value] : *params) {
             const bool fanuc = config.dialect->id == gcode::DialectId::Fanuc;
             int n = numberKey(file, key.str(), key.source(), 0,
-                              fanuc ? params::kLastFanucParameter : params::ParameterTable::kCount - 1, "parameter");
+                              fanuc ? params::kLastFanucParameter : params::ParameterTable::kCount - 1,
+                              bilingual("parameter", "参数"));
             double v = numberValue(file, value, key.str());
             if (params::isFanucParameterNumber(n)) {
                 if (auto refused = params::refusedFanucParameter(n, v)) {
-                    fail(file, refused->english(), value.source());
+                    fail(file, *refused, value.source());
                 }
                 if (auto unread = params::unreadFanucParameter(n)) {
-                    config.warn(warningAt(file, value.source(), unread->english()),
-                                warningAt(file, value.source(), unread->in(MessageLanguage::Chinese)));
+                    config.warn(warningAt(file, value.source(), *unread));
                 }
                 config.fanucParameters[n] = v;
                 config.fanucParameterOrigins[n] = placeOf(file, value.source());
                 continue;
             }
             if (auto refused = params::refusedParameterValue(n, v)) {
-                fail(file, refused->english(), value.source());
+                fail(file, *refused, value.source());
             }
             // A value the panel would refuse is kept (a simulator may be asked for it) but said; the
             // other members of the IO triples (enable, level) are not catalogued and pass as written.
             if (known && known->find(n)) {
                 if (auto problem = known->validate(n, v)) {
                     const Message kept = message("param_kept_as_written", {file.string(), bilingual(*problem)});
-                    config.warn(kept.english(), kept.in(MessageLanguage::Chinese));
+                    config.warn(kept);
                 }
             }
             config.parameters.set(n, v);
@@ -362,7 +357,7 @@ void loadParams(const fs::path& folder, MachineConfig& config) {
     }
     if (auto refused = rebuildCallCodes(config)) {
         const toml::node* setting = t["params"].as_table()->get(std::to_string(refused->parameter));
-        fail(file, refused->message.english(), setting ? setting->source() : toml::source_region{});
+        fail(file, refused->message, setting ? setting->source() : toml::source_region{});
     }
 }
 
@@ -372,26 +367,25 @@ void loadOffsets(const fs::path& folder, MachineConfig& config) {
         return;
     }
     toml::table t = parseToml(file);
-    warnUnknownKeys(file, t, {"G92", "G54", "G55", "G56", "G57", "G58", "G59", "G52", "common"}, config.warnings);
+    warnUnknownKeys(file, t, {"G92", "G54", "G55", "G56", "G57", "G58", "G59", "G52", "common"}, config);
     static constexpr std::pair<const char*, int> slots[] = {{"G92", 0}, {"G54", 1}, {"G55", 2}, {"G56", 3},
                                                             {"G57", 4}, {"G58", 5}, {"G59", 6}, {"G52", 7},
                                                             {"common", 8}};
     for (auto [name, slot] : slots) {
         if (const toml::node* given = t.get(name); given && !given->is_array()) {
-            fail(file, std::string(name) + " must be [X, Y, Z, A, B]", given->source());
+            fail(file, message("config_axes_list", {name}), given->source());
         }
         if (auto axes = t[name].as_array()) {
             if (axes->size() > 5) {
-                fail(file, std::string(name) + " has more than 5 axes", axes->source());
+                fail(file, message("config_axes_too_many", {name}), axes->source());
             }
             for (std::size_t i = 0; i < axes->size(); ++i) {
                 config.offsets[static_cast<std::size_t>(slot)][i] = numberValue(file, *axes->get(i), name);
             }
             if (axes->size() < 3) {
-                config.warnings.push_back(warningAt(file, axes->source(),
-                                                    std::string(name) + " has " + std::to_string(axes->size()) +
-                                                        (axes->size() == 1 ? " value" : " values") +
-                                                        " for [X, Y, Z, A, B]: the axes it leaves out are 0"));
+                config.warn(warningAt(file, axes->source(),
+                                      axes->size() == 1 ? message("config_axes_one", {name})
+                                                        : message("config_axes_few", {name, std::to_string(axes->size())})));
             }
         }
     }
@@ -403,17 +397,15 @@ void loadVariables(const fs::path& folder, MachineConfig& config) {
         return;
     }
     toml::table t = parseToml(file);
-    warnUnknownKeys(file, t, {"variables", "variables.*"}, config.warnings);
+    warnUnknownKeys(file, t, {"variables", "variables.*"}, config);
     const macro::VariableMap map(*config.dialect, config.variableLayout);
     if (auto vars = t["variables"].as_table()) {
         for (auto&& [key, value] : *vars) {
-            const int number = numberKey(file, key.str(), key.source(), 1, macro::VariableLayout::kLastVariable, "variable");
+            const int number = numberKey(file, key.str(), key.source(), 1, macro::VariableLayout::kLastVariable,
+                                         bilingual("variable", "变量"));
             const double v = numberValue(file, value, key.str());
             if (map.describe(number).kind == macro::VariableKind::Undefined) {
-                config.warnings.push_back(warningAt(file, key.source(),
-                                                    "#" + std::to_string(number) +
-                                                        " is no variable of this machine (machine.toml [variables] "
-                                                        "common lists its common variables); not loaded"));
+                config.warn(warningAt(file, key.source(), message("config_variable_undefined", {std::to_string(number)})));
                 continue;
             }
             config.variables[number] = v;
@@ -430,7 +422,7 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
     }
     std::string text;
     if (auto why = files::readMachineFile(file, text)) {
-        fail(file, "cannot read the tool table: " + *why);
+        fail(file, message("config_tool_table_unreadable", {*why}));
     }
     tools::ParsedToolTable parsed = tools::parseToolTable(text, file.string());
     for (const tools::ToolTableIssue& issue : parsed.issues) {
@@ -439,7 +431,7 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
     if (parsed.issues.empty()) {
         files::refreshLastGood(file);
     } else if (!files::lastGoodNote(file).empty()) {
-        config.warnings.push_back(file.string() + ": warning: the lines above were not read" + files::lastGoodNote(file));
+        config.warn(linesNotRead(file));
     }
     const std::vector<tools::ToolTable::Line>& lines = parsed.table.lines();
     for (std::size_t i = 0; config.dialect->id == gcode::DialectId::M350 && i < lines.size(); ++i) {
@@ -450,11 +442,11 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
         }
         const double inParams = config.parameters.get(*parameter);
         if (inParams != 0.0 && inParams != *row->offsets[tools::kZ]) {
-            config.warnings.push_back((folder / MachineFolder::fileName(FolderFile::Params)).string() + ": warning: parameter " +
-                                      std::to_string(*parameter) + " (T" + std::to_string(row->tool) + " Z) is " +
-                                      tools::tableNumber(inParams) + " but " + file.string() + ":" +
-                                      std::to_string(i + 1) + " says " + tools::tableNumber(*row->offsets[tools::kZ]) +
-                                      "; the tool table is used");
+            config.warn(warningIn(folder / MachineFolder::fileName(FolderFile::Params),
+                                  message("config_z_mismatch",
+                                          {std::to_string(*parameter), std::to_string(row->tool), tools::tableNumber(inParams),
+                                           file.string(), std::to_string(i + 1),
+                                           tools::tableNumber(*row->offsets[tools::kZ])})));
         }
     }
     config.toolTable = std::move(parsed.table);
@@ -469,11 +461,11 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
     config.folder = folder;
     try {
         if (!fs::is_directory(dir)) {
-            fail(dir, "not a machine folder (no such directory)");
+            fail(dir, message("config_not_a_folder"));
         }
         // a save a crash interrupted is finished (or dropped) before any file is read
         if (auto broken = MachineFolder(dir).finishInterruptedChange()) {
-            fail(dir / MachineFolder::kChangeJournal, *broken);
+            fail(dir / MachineFolder::kChangeJournal, message("config_journal_broken", {*broken}));
         }
         loadMachineToml(dir, config);
         loadParams(dir, config);
@@ -489,7 +481,7 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         }
         auto life = tools::loadToolLife(folder, lifeSettings.fromParameters ? &lifeSettings : nullptr);
         if (auto* unreadable = std::get_if<std::string>(&life)) {
-            fail(dir / MachineFolder::fileName(FolderFile::ToolLife), *unreadable);
+            fail(dir / MachineFolder::fileName(FolderFile::ToolLife), message("config_tool_life_unreadable", {*unreadable}));
         }
         tools::ParsedToolLife& parsed = std::get<tools::ParsedToolLife>(life);
         for (const tools::LifeFileIssue& issue : parsed.issues) {
@@ -499,22 +491,24 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         if (parsed.issues.empty()) {
             files::refreshLastGood(lifeFile);
         } else if (!files::lastGoodNote(lifeFile).empty()) {
-            config.warnings.push_back(lifeFile.string() + ": warning: the lines above were not read" +
-                                      files::lastGoodNote(lifeFile));
+            config.warn(linesNotRead(lifeFile));
         }
         config.toolLife = std::move(parsed.data);
         config.toolLifeIssues = std::move(parsed.issues);
         if (auto wrong = tools::readLoadMonitorSettings((dir / tools::kSpindleLoadFileName).string(), config.loadMonitor)) {
-            return ConfigError{(dir / tools::kSpindleLoadFileName).string(), wrong->message, wrong->line, wrong->column};
+            return ConfigError{(dir / tools::kSpindleLoadFileName).string(), message("config_spindle_load_wrong", {wrong->message}),
+                               wrong->line, wrong->column};
         }
         files::refreshLastGood(dir / MachineFolder::fileName(FolderFile::Params));
     } catch (const Failure& f) {
         ConfigError error = f.error;
-        error.message += files::lastGoodNote(error.file);
+        if (!files::lastGoodNote(error.file).empty()) {
+            error.message = message("config_last_good", {bilingual(error.message), files::lastGoodPath(error.file).string()});
+        }
         return error;
     } catch (const fs::filesystem_error& e) {
         // a symlink loop, a dangling link, a folder that cannot be listed: an error, not an abort
-        return ConfigError{e.path1().empty() ? folder : e.path1().string(), e.code().message()};
+        return ConfigError{e.path1().empty() ? folder : e.path1().string(), message("config_system_error", {e.code().message()})};
     }
     return config;
 }
@@ -524,6 +518,10 @@ std::string ConfigError::where() const {
         return file;
     }
     return file + ":" + std::to_string(line) + (column > 0 ? ":" + std::to_string(column) : std::string());
+}
+
+std::string ConfigError::text(MessageLanguage language) const {
+    return where() + ": " + message.in(language);
 }
 
 std::string bundledMachinesDirectory() {

@@ -77,6 +77,7 @@ struct MachineConfig {
         warningsChinese[warnings.size()] = std::move(chinese);
         warnings.push_back(std::move(english));
     }
+    void warn(const Message& words) { warn(words.english(), words.in(MessageLanguage::Chinese)); }
     // The i-th warning in `language` (English where it has no Chinese).
     const std::string& warning(std::size_t i, MessageLanguage language) const {
         auto chinese = language == MessageLanguage::Chinese ? warningsChinese.find(i) : warningsChinese.end();
@@ -115,11 +116,13 @@ struct MachineConfig {
 
 struct ConfigError {
     std::string file;
-    std::string message;
+    Message message; // by id: m350-sim --lang and the panel say it in their language
     int line = 0; // 1-based where the file says what is wrong; 0 when the whole file is
     int column = 0;
     // "file:line:col", "file:line" or "file", as messages name a place
     std::string where() const;
+    // "where: message" in `language`, as the CLI and the panel print it
+    std::string text(MessageLanguage language) const;
 };
 
 std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& folder);

@@ -116,7 +116,10 @@ std::optional<std::string> MachineFolder::write(FolderFile file, std::string_vie
     case W::KeepingLastGood:
         return files::saveKeepingLastGood(target, content, hooks);
     case W::AsOutput:
-        return files::writeOutputFile(target, content);
+        if (auto error = files::writeOutputFile(target, content)) {
+            return error->english();
+        }
+        return std::nullopt;
     case W::Never:
     case W::Appended:
         break;
@@ -197,10 +200,13 @@ std::optional<std::string> MachineFolder::exportToolTable(const fs::path& target
         return refused;
     }
     if (auto why = files::unwritableOutput(target)) {
-        return files::describeUnwritable("the tool table export", target, *why);
+        return files::describeUnwritable("the tool table export", target, *why).english();
     }
     // a device or FIFO the operator names is written as one, a file replaced whole
-    return files::writeOutputFile(target, tools::formatToolTable(table));
+    if (auto error = files::writeOutputFile(target, tools::formatToolTable(table))) {
+        return error->english();
+    }
+    return std::nullopt;
 }
 
 bool MachineFolder::isFolderFile(const fs::path& path) const {

@@ -11,7 +11,7 @@ namespace {
 using Device = MagazineConfig::Device;
 
 struct Invalid {
-    std::string message;
+    Message words;
 };
 
 // A whole pin number within 1..count (0 when absent).
@@ -22,7 +22,7 @@ int pin(const toml::table& t, const char* key, int count) {
     }
     auto n = node->value<int64_t>();
     if (!n || *n < 1 || *n > count) {
-        throw Invalid{std::string("[magazine] ") + key + " must be a pin from 1 to " + std::to_string(count)};
+        throw Invalid{message("config_magazine_pin", {key, std::to_string(count)})};
     }
     return static_cast<int>(*n);
 }
@@ -30,21 +30,23 @@ int pin(const toml::table& t, const char* key, int count) {
 double positive(const toml::table& t, const char* key, double fallback) {
     double v = t[key].value_or(fallback);
     if (!(v >= 0.0)) {
-        throw Invalid{std::string("[magazine] ") + key + " cannot be negative"};
+        throw Invalid{message("config_magazine_negative", {key})};
     }
     return v;
 }
 
 std::string choice(const toml::table& t, const char* key, std::string fallback, std::initializer_list<const char*> allowed) {
     std::string v = t[key].value_or(fallback);
-    std::string list;
+    std::string english;
+    std::string chinese;
     for (const char* a : allowed) {
         if (v == a) {
             return v;
         }
-        list += std::string(list.empty() ? "" : " or ") + "\"" + a + "\"";
+        english += std::string(english.empty() ? "" : " or ") + "\"" + a + "\"";
+        chinese += std::string(chinese.empty() ? "" : "或") + "\"" + a + "\"";
     }
-    throw Invalid{std::string("[magazine] ") + key + " must be " + list + ", not '" + v + "'"};
+    throw Invalid{message("config_magazine_choice", {key, bilingual(english, chinese), v})};
 }
 
 void readRack(const toml::table& t, MagazineConfig& out) {
@@ -55,7 +57,7 @@ void readRack(const toml::table& t, MagazineConfig& out) {
     if (const toml::node* forks = t.get("forks")) {
         const toml::array* list = forks->as_array();
         if (!list) {
-            throw Invalid{"[magazine] forks must list each pocket's [X, Y, Z], e.g. forks = [[50, 5, -80], [110, 5, -80]]"};
+            throw Invalid{message("config_magazine_forks")};
         }
         for (const toml::node& fork : *list) {
             const toml::array* xyz = fork.as_array();
@@ -64,16 +66,16 @@ void readRack(const toml::table& t, MagazineConfig& out) {
                 at[i] = xyz->get(i)->value<double>().value_or(NAN);
             }
             if (!xyz || xyz->size() != 3 || !std::isfinite(at[0]) || !std::isfinite(at[1]) || !std::isfinite(at[2])) {
-                throw Invalid{"[magazine] forks must list each pocket's [X, Y, Z], e.g. forks = [[50, 5, -80], [110, 5, -80]]"};
+                throw Invalid{message("config_magazine_forks")};
             }
             out.forks.push_back(at);
         }
         if (out.forks.size() > 20) {
-            throw Invalid{"[magazine] forks: a linear rack has at most 20 pockets"};
+            throw Invalid{message("config_magazine_forks_count")};
         }
     }
     if (out.onGantry && out.topLoading) {
-        throw Invalid{"[magazine] a rack carried on the gantry is loaded from the side (its slide moves the forks)"};
+        throw Invalid{message("config_magazine_gantry_side")};
     }
 }
 
@@ -82,21 +84,21 @@ void readDisc(const toml::table& t, MagazineConfig& out) {
         for (const toml::node& n : *select) {
             auto v = n.value<int64_t>();
             if (!v || *v < 1 || *v > machine::kOutputCount) {
-                throw Invalid{"[magazine] select_outputs must list output pins from 1 to 21"};
+                throw Invalid{message("config_magazine_select_outputs")};
             }
             out.selectOutputs.push_back(static_cast<int>(*v));
         }
     }
     out.strobeOutput = pin(t, "strobe_output", machine::kOutputCount);
     if (out.selectOutputs.empty() || out.strobeOutput == 0 || out.inPositionInput == 0) {
-        throw Invalid{"[magazine] a servo disc needs select_outputs, strobe_output and in_position_input"};
+        throw Invalid{message("config_magazine_disc_needs")};
     }
 }
 
 void readUmbrella(const toml::table& t, MagazineConfig& out) {
     out.pockets = t["pockets"].value_or(0);
     if (out.pockets < 1 || out.pockets > 99) {
-        throw Invalid{"[magazine] an umbrella carousel needs pockets = 1 to 99"};
+        throw Invalid{message("config_magazine_umbrella_pockets")};
     }
     out.slideSeconds = positive(t, "slide_s", out.slideSeconds);
     out.slideOutput = pin(t, "slide_output", machine::kOutputCount);
@@ -107,12 +109,11 @@ void readUmbrella(const toml::table& t, MagazineConfig& out) {
     out.clampedInput = pin(t, "clamped_input", machine::kInputCount);
     if (out.slideOutput == 0 || out.atSpindleInput == 0 || out.awayInput == 0 || out.inPositionInput == 0 ||
         out.drawbarOutput == 0 || out.releasedInput == 0 || out.clampedInput == 0) {
-        throw Invalid{"[magazine] an umbrella carousel needs slide_output, at_spindle_input, away_input, "
-                      "in_position_input, drawbar_output, released_input and clamped_input"};
+        throw Invalid{message("config_magazine_umbrella_needs")};
     }
     if (const toml::array* xy = t["change_xy"].as_array()) {
         if (xy->size() != 2 || !xy->get(0)->value<double>() || !xy->get(1)->value<double>()) {
-            throw Invalid{"[magazine] change_xy must be [X, Y]"};
+            throw Invalid{message("config_magazine_change_xy")};
         }
         out.changeXYGiven = true;
         out.changeX = *xy->get(0)->value<double>();
@@ -122,7 +123,7 @@ void readUmbrella(const toml::table& t, MagazineConfig& out) {
 
 } // namespace
 
-std::optional<std::string> readMagazine(const toml::table& t, MagazineConfig& out) {
+std::optional<Message> readMagazine(const toml::table& t, MagazineConfig& out) {
     try {
         std::string device = choice(t, "device", "", {"linear-rack", "servo-disc", "umbrella", "multi-head"});
         out.device = device == "linear-rack"  ? Device::LinearRack
@@ -143,7 +144,7 @@ std::optional<std::string> readMagazine(const toml::table& t, MagazineConfig& ou
         case Device::None: break;
         }
     } catch (const Invalid& invalid) {
-        return invalid.message;
+        return invalid.words;
     }
     return std::nullopt;
 }

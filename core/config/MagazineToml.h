@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/config/MagazineConfig.h"
 
 #include "core/files/Toml.h"
@@ -10,6 +11,6 @@
 namespace m350::config {
 
 // Reads the [magazine] table of machine.toml into `out`; what is wrong with it, if anything.
-std::optional<std::string> readMagazine(const toml::table& magazine, MagazineConfig& out);
+std::optional<Message> readMagazine(const toml::table& magazine, MagazineConfig& out);
 
 } // namespace m350::config

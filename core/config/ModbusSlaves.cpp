@@ -21,12 +21,12 @@ std::optional<int> numberKey(std::string_view key, int low, int high) {
 }
 
 std::string lineOf(const toml::node& node) {
-    return "line " + std::to_string(node.source().begin.line) + ": ";
+    return std::to_string(node.source().begin.line);
 }
 
 } // namespace
 
-std::optional<std::string> loadModbusSlaves(const std::string& path, ModbusSlaves& out) {
+std::optional<Message> loadModbusSlaves(const std::string& path, ModbusSlaves& out) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) {
         return std::nullopt;
@@ -35,20 +35,19 @@ std::optional<std::string> loadModbusSlaves(const std::string& path, ModbusSlave
     try {
         t = files::parseTomlFile(path);
     } catch (const toml::parse_error& e) {
-        return std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column) + ": " +
-               std::string(e.description());
+        return message("modbus_toml_syntax",
+                       {std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column),
+                        std::string(e.description())});
     }
     const toml::table* slaves = t["slave"].as_table();
     if (!slaves) {
-        return t.contains("slave") ? std::optional<std::string>("'slave' must be a table: [slave.1.holding]")
-                                   : std::nullopt;
+        return t.contains("slave") ? std::optional<Message>(message("modbus_slave_table")) : std::nullopt;
     }
     for (auto&& [key, node] : *slaves) {
         auto slave = numberKey(key.str(), 1, 247);
         const toml::table* tables = node.as_table();
         if (!slave || !tables) {
-            return lineOf(node) + "[slave." + std::string(key.str()) +
-                   "] must be a slave address 1-247 with tables of what it holds: [slave.1.holding]";
+            return message("modbus_slave_address", {lineOf(node), std::string(key.str())});
         }
         devices::ModbusMemory& memory = out.slaves[*slave];
         for (auto&& [kind, entries] : *tables) {
@@ -57,18 +56,16 @@ std::optional<std::string> loadModbusSlaves(const std::string& path, ModbusSlave
             const bool bits = name == "coils" || name == "discrete";
             const toml::table* table = entries.as_table();
             if ((!registers && !bits) || !table) {
-                return lineOf(entries) + "slave " + std::to_string(*slave) + ": '" + name +
-                       "' is none of its tables: holding, input (registers), coils, discrete (bits), e.g. "
-                       "[slave." + std::to_string(*slave) + ".holding]";
+                return message("modbus_unknown_table", {lineOf(entries), std::to_string(*slave), name});
             }
             for (auto&& [address, value] : *table) {
                 auto number = numberKey(address.str(), 0, 65535);
-                const std::string where = lineOf(value) + "slave " + std::to_string(*slave) + " " + name + " '" +
-                                          std::string(address.str()) + "': addresses are 0-65535 and ";
+                const std::vector<std::string> where{lineOf(value), std::to_string(*slave), name,
+                                                     std::string(address.str())};
                 if (registers) {
                     auto v = value.value<double>();
                     if (!number || !v || *v != std::floor(*v) || *v < -32768 || *v > 65535) {
-                        return where + "values whole numbers from -32768 to 65535";
+                        return message("modbus_register_value", where);
                     }
                     auto& target = name == "holding" ? memory.holding : memory.input;
                     target[*number] = static_cast<std::uint16_t>(static_cast<int>(*v) & 0xFFFF);
@@ -81,7 +78,7 @@ std::optional<std::string> loadModbusSlaves(const std::string& path, ModbusSlave
                     on = *i == 1;
                 }
                 if (!number || !on) {
-                    return where + "values 0 or 1 (false or true)";
+                    return message("modbus_bit_value", where);
                 }
                 (name == "coils" ? memory.coils : memory.discrete)[*number] = *on;
             }

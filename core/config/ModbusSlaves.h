@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/devices/ModbusSlave.h"
 
 #include <map>
@@ -23,6 +24,6 @@ struct ModbusSlaves {
 };
 
 // Reads modbus.toml; what is wrong with it (with its line), if anything. A missing file is no slave.
-std::optional<std::string> loadModbusSlaves(const std::string& path, ModbusSlaves& out);
+std::optional<Message> loadModbusSlaves(const std::string& path, ModbusSlaves& out);
 
 } // namespace m350::config

@@ -72,13 +72,13 @@ std::variant<Passwords, PasswordsProblem> readPasswords(const MachineFolder& fol
         return Passwords{}; // never changed: every level at its default
     }
     if (ec) {
-        return PasswordsProblem{file + ": " + ec.message()};
+        return PasswordsProblem{message("passwords_unreadable", {file, ec.message()})};
     }
     toml::table table;
     try {
         table = files::parseTomlFile(file);
     } catch (const toml::parse_error& e) {
-        return PasswordsProblem{placeOf(file, e.source()) + ": " + std::string(e.description())};
+        return PasswordsProblem{message("passwords_toml", {placeOf(file, e.source()), std::string(e.description())})};
     }
     Passwords passwords;
     for (auto&& [name, node] : table) {
@@ -89,17 +89,15 @@ std::variant<Passwords, PasswordsProblem> readPasswords(const MachineFolder& fol
             }
         }
         if (!level) {
-            return PasswordsProblem{placeOf(file, name.source()) + ": '" + std::string(name.str()) +
-                                    "' is no user level (operator, admin or super)"};
+            return PasswordsProblem{message("passwords_no_level", {placeOf(file, name.source()), std::string(name.str())})};
         }
         const std::optional<std::string> text = node.value<std::string>();
         const std::size_t colon = text ? text->find(':') : std::string::npos;
         std::optional<std::string> salt = colon != std::string::npos ? fromHex(text->substr(0, colon)) : std::nullopt;
         std::optional<std::string> hash = colon != std::string::npos ? fromHex(text->substr(colon + 1)) : std::nullopt;
         if (!salt || !hash || hash->size() != Passwords::kHashBytes) {
-            return PasswordsProblem{placeOf(file, node.source()) + ": " + std::string(name.str()) +
-                                    " must be \"SALT:HASH\" in hex, the hash " +
-                                    std::to_string(Passwords::kHashBytes) + " bytes (the panel writes it)"};
+            return PasswordsProblem{message("passwords_bad_hash", {placeOf(file, node.source()), std::string(name.str()),
+                                                                   std::to_string(Passwords::kHashBytes)})};
         }
         passwords.levels[static_cast<std::size_t>(*level)] = StoredPassword{std::move(*salt), std::move(*hash)};
     }
@@ -118,12 +116,15 @@ std::string formatPasswords(const Passwords& passwords) {
     return text;
 }
 
-std::optional<std::string> resetPasswords(const MachineFolder& folder) {
+std::optional<Message> resetPasswords(const MachineFolder& folder) {
     std::error_code ec;
     if (fs::is_directory(fs::symlink_status(folder.pathOf(FolderFile::Passwords), ec))) {
-        return folder.pathOf(FolderFile::Passwords).string() + " is a folder: remove it by hand, nothing was written";
+        return message("passwords_is_folder", {folder.pathOf(FolderFile::Passwords).string()});
     }
-    return folder.write(FolderFile::Passwords, formatPasswords(Passwords{}));
+    if (auto error = folder.write(FolderFile::Passwords, formatPasswords(Passwords{}))) {
+        return message("passwords_write_failed", {*error});
+    }
+    return std::nullopt;
 }
 
 } // namespace m350::config

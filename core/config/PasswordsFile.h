@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/config/MachineFolder.h"
 #include "core/params/ParameterPages.h"
 
@@ -29,7 +30,7 @@ struct Passwords {
 // one), larger than a machine file can be, not TOML, or a line that is not a level with a salt and
 // a hash. The panel then opens no level above Guest until the file is repaired (README).
 struct PasswordsProblem {
-    std::string message; // "FILE:LINE:COL: why" or "FILE: why"
+    Message message; // "FILE:LINE:COL: why" or "FILE: why", by id
 };
 
 // The folder's passwords.toml read through files::parseTomlFile (the machine folder's regular-file
@@ -41,6 +42,6 @@ std::string formatPasswords(const Passwords& passwords);
 
 // The explicit reset (`m350-sim reset-passwords`): passwords.toml written anew with no level, so
 // every level opens with its default password again. nullopt on success, else why.
-std::optional<std::string> resetPasswords(const MachineFolder& folder);
+std::optional<Message> resetPasswords(const MachineFolder& folder);
 
 } // namespace m350::config

@@ -19,9 +19,11 @@ void readNumber(const std::filesystem::path& file, const toml::table& table, con
     }
     double v = toml_reading::numberValue(file, *node, key);
     if (v < low || v > high) {
-        char range[64];
-        std::snprintf(range, sizeof range, "from %g to %g", low, high);
-        fail(file, "[" + std::string(section) + "] " + key + " must be a number " + range, node->source());
+        char from[32];
+        char to[32];
+        std::snprintf(from, sizeof from, "%g", low);
+        std::snprintf(to, sizeof to, "%g", high);
+        fail(file, message("config_number_in_range", {section, key, from, to}), node->source());
     }
     out = v;
 }
@@ -34,12 +36,12 @@ void readRange(const std::filesystem::path& file, const toml::table& stock, cons
     }
     const toml::array* range = node->as_array();
     if (!range || range->size() != 2) {
-        fail(file, std::string("[stock] ") + key + " must be [min, max]", node->source());
+        fail(file, message("config_stock_min_max", {key}), node->source());
     }
     low = toml_reading::numberValue(file, *range->get(0), key);
     high = toml_reading::numberValue(file, *range->get(1), key);
     if (low > high) {
-        fail(file, std::string("[stock] ") + key + " must be [min, max] with min <= max", node->source());
+        fail(file, message("config_stock_min_le_max", {key}), node->source());
     }
 }
 
@@ -56,8 +58,7 @@ void readSpindleLoadWorld(const std::filesystem::path& file, const toml::table& 
     if (load) {
         double spikeMs = model.spikeSeconds * 1000.0;
         if (const toml::node* lambda = load->get("lambda")) {
-            fail(file, "[spindle_load] lambda is FANUC parameter 4127: set it in params.toml (4127 = 143)",
-                 lambda->source());
+            fail(file, message("config_lambda_parameter"), lambda->source());
         }
         readNumber(file, *load, "spindle_load", "idle", 0.0, 100.0, model.idle);
         readNumber(file, *load, "spindle_load", "per_krpm", 0.0, 100.0, model.perKrpm);
@@ -69,7 +70,7 @@ void readSpindleLoadWorld(const std::filesystem::path& file, const toml::table& 
     if (stock) {
         machine::Stock s;
         if (!stock->contains("top")) {
-            fail(file, "[stock] needs top (the machine Z of the work's top face)", stock->source());
+            fail(file, message("config_stock_needs_top"), stock->source());
         }
         constexpr double kFar = 1e6;
         readNumber(file, *stock, "stock", "top", -kFar, kFar, s.top);

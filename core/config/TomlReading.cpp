@@ -19,21 +19,21 @@ bool isKnown(std::initializer_list<std::string_view> known, const std::string& p
 }
 
 void checkKeys(const fs::path& file, const toml::table& table, const std::string& prefix,
-               std::initializer_list<std::string_view> known, std::vector<std::string>& warnings) {
+               std::initializer_list<std::string_view> known, MachineConfig& config) {
     for (auto&& [key, value] : table) {
         const std::string path = prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
         if (isKnown(known, prefix + ".*")) {
             continue;
         }
         if (!isKnown(known, path)) {
-            warnings.push_back(warningAt(file, key.source(), "unknown key '" + path + "' (ignored; a typo?)"));
+            config.warn(warningAt(file, key.source(), message("config_unknown_key", {path})));
             continue;
         }
         if (const toml::table* inner = value.as_table()) {
-            checkKeys(file, *inner, path, known, warnings);
+            checkKeys(file, *inner, path, known, config);
         } else if (const toml::array* entries = value.as_array(); entries && entries->is_array_of_tables()) {
             for (const toml::node& entry : *entries) {
-                checkKeys(file, *entry.as_table(), path, known, warnings);
+                checkKeys(file, *entry.as_table(), path, known, config);
             }
         }
     }
@@ -41,11 +41,15 @@ void checkKeys(const fs::path& file, const toml::table& table, const std::string
 
 } // namespace
 
-std::string warningAt(const fs::path& file, const toml::source_region& where, const std::string& message) {
-    return file.string() + ":" + placed(where) + ": warning: " + message;
+Message warningAt(const fs::path& file, const toml::source_region& where, const Message& words) {
+    return message("config_warning_at", {file.string() + ":" + placed(where), bilingual(words)});
 }
 
-void fail(const fs::path& file, std::string message, const toml::source_region& where) {
+Message warningIn(const fs::path& file, const Message& words) {
+    return message("config_warning_at", {file.string(), bilingual(words)});
+}
+
+void fail(const fs::path& file, Message message, const toml::source_region& where) {
     ConfigError error{file.string(), std::move(message)};
     error.line = static_cast<int>(where.begin.line);
     error.column = static_cast<int>(where.begin.column);
@@ -56,18 +60,16 @@ toml::table parseToml(const fs::path& file) {
     try {
         return files::parseTomlFile(file.string());
     } catch (const toml::parse_error& e) {
-        fail(file, std::string(e.description()), e.source());
+        fail(file, message("config_toml_syntax", {std::string(e.description())}), e.source());
     }
 }
 
 int numberKey(const fs::path& file, std::string_view text, const toml::source_region& where, int low, int high,
-              const char* what) {
+              const std::string& what) {
     int n = 0;
     auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
     if (ec != std::errc() || ptr != text.data() + text.size() || n < low || n > high) {
-        fail(file,
-             std::string(what) + " '" + std::string(text) + "' is not a number from " + std::to_string(low) + " to " +
-                 std::to_string(high),
+        fail(file, message("config_number_key", {what, std::string(text), std::to_string(low), std::to_string(high)}),
              where);
     }
     return n;
@@ -76,13 +78,11 @@ int numberKey(const fs::path& file, std::string_view text, const toml::source_re
 double numberValue(const fs::path& file, const toml::node& node, std::string_view key) {
     if (auto v = node.value<double>()) {
         if (!std::isfinite(*v)) {
-            fail(file,
-                 "'" + std::string(key) + "' must be a finite number, not " + (std::isnan(*v) ? "nan" : "inf"),
-                 node.source());
+            fail(file, message("config_must_be_finite", {std::string(key), std::isnan(*v) ? "nan" : "inf"}), node.source());
         }
         return *v;
     }
-    fail(file, "'" + std::string(key) + "' must be a number", node.source());
+    fail(file, message("config_must_be_number", {std::string(key)}), node.source());
 }
 
 int wholeValue(const fs::path& file, const toml::table& table, std::string_view key, int low, int high, int fallback) {
@@ -92,17 +92,15 @@ int wholeValue(const fs::path& file, const toml::table& table, std::string_view 
     }
     auto v = node->value_exact<std::int64_t>();
     if (!v || *v < low || *v > high) {
-        fail(file,
-             "'" + std::string(key) + "' must be a whole number from " + std::to_string(low) + " to " +
-                 std::to_string(high),
+        fail(file, message("config_must_be_whole", {std::string(key), std::to_string(low), std::to_string(high)}),
              node->source());
     }
     return static_cast<int>(*v);
 }
 
 void warnUnknownKeys(const fs::path& file, const toml::table& table, std::initializer_list<std::string_view> known,
-                     std::vector<std::string>& warnings) {
-    checkKeys(file, table, "", known, warnings);
+                     MachineConfig& config) {
+    checkKeys(file, table, "", known, config);
 }
 
 } // namespace m350::config::toml_reading

@@ -19,17 +19,20 @@ struct Failure {
     ConfigError error;
 };
 
-[[noreturn]] void fail(const std::filesystem::path& file, std::string message, const toml::source_region& where = {});
+[[noreturn]] void fail(const std::filesystem::path& file, Message message, const toml::source_region& where = {});
 
 // The file parsed; refused when it is not a regular file or larger than a machine file can be.
 toml::table parseToml(const std::filesystem::path& file);
 
 // "file:line:col: warning: message", as the loaders list what they kept but doubt.
-std::string warningAt(const std::filesystem::path& file, const toml::source_region& where, const std::string& message);
+Message warningAt(const std::filesystem::path& file, const toml::source_region& where, const Message& words);
+// "file: warning: message": a doubt about the whole file.
+Message warningIn(const std::filesystem::path& file, const Message& words);
 
 // A table key that must be a whole number low..high (parameter, variable, reference point numbers).
+// `what` names the key in both languages (bilingual(): "parameter", 参数).
 int numberKey(const std::filesystem::path& file, std::string_view text, const toml::source_region& where, int low,
-              int high, const char* what);
+              int high, const std::string& what);
 
 // A finite number: nan or inf as a position, feed or time would stop virtual time advancing.
 double numberValue(const std::filesystem::path& file, const toml::node& node, std::string_view key);
@@ -42,6 +45,6 @@ int wholeValue(const std::filesystem::path& file, const toml::table& table, std:
 // dotted paths ("magazine.device"); "codes.*" accepts any key under [codes]; an array of tables
 // ("io_links") is checked entry by entry.
 void warnUnknownKeys(const std::filesystem::path& file, const toml::table& table,
-                     std::initializer_list<std::string_view> known, std::vector<std::string>& warnings);
+                     std::initializer_list<std::string_view> known, MachineConfig& config);
 
 } // namespace m350::config::toml_reading

@@ -15,8 +15,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string failure(const fs::path& file, const char* what, int error) {
-    return file.string() + ": " + what + ": " + std::strerror(error);
+Message failure(const fs::path& file, const char* id, int error) {
+    return message(id, {file.string(), std::strerror(error)});
+}
+
+std::optional<Message> passedOn(std::optional<std::string> why) {
+    return why ? std::optional<Message>(message("output_write_failed", {*why})) : std::nullopt;
 }
 
 } // namespace
@@ -33,31 +37,31 @@ fs::path OutputFile::writtenPath(const fs::path& target) {
     return ec ? target : real;
 }
 
-std::variant<std::unique_ptr<OutputFile>, std::string> OutputFile::open(const fs::path& named) {
+std::variant<std::unique_ptr<OutputFile>, Message> OutputFile::open(const fs::path& named) {
     const fs::path target = writtenPath(named);
     struct stat existing {};
     const bool exists = ::stat(target.c_str(), &existing) == 0;
     if (exists && S_ISDIR(existing.st_mode)) {
-        return named.string() + ": cannot write: it is a folder";
+        return message("output_cannot_write_folder", {named.string()});
     }
     if (exists && !S_ISREG(existing.st_mode)) {
         std::unique_ptr<OutputFile> direct(new OutputFile(target, {}));
         direct->stream_.open(target, std::ios::binary);
         if (!direct->stream_) {
-            return failure(named, "cannot open", errno);
+            return failure(named, "output_cannot_open", errno);
         }
         return direct;
     }
     auto created = createTempBeside(target, exists ? existing.st_mode & 07777 : 0644);
     if (auto* error = std::get_if<std::string>(&created)) {
-        return *error;
+        return message("output_write_failed", {*error});
     }
     const TempFile temp = std::get<TempFile>(created);
     ::close(temp.descriptor);
     std::unique_ptr<OutputFile> file(new OutputFile(target, temp.path));
     file->stream_.open(temp.path, std::ios::binary | std::ios::trunc);
     if (!file->stream_) {
-        return failure(target, "cannot open", errno);
+        return failure(target, "output_cannot_open", errno);
     }
     return file;
 }
@@ -69,15 +73,15 @@ OutputFile::~OutputFile() {
     }
 }
 
-std::optional<std::string> OutputFile::commit() {
+std::optional<Message> OutputFile::commit() {
     errno = 0;
     stream_.flush();
     if (!stream_) {
-        return failure(target_, "cannot write", errno != 0 ? errno : EIO);
+        return failure(target_, "output_cannot_write", errno != 0 ? errno : EIO);
     }
     stream_.close();
     if (!stream_) {
-        return failure(target_, "cannot write", errno != 0 ? errno : EIO);
+        return failure(target_, "output_cannot_write", errno != 0 ? errno : EIO);
     }
     if (temp_.empty()) {
         committed_ = true;
@@ -87,29 +91,29 @@ std::optional<std::string> OutputFile::commit() {
     if (fd < 0 || ::fsync(fd) != 0) {
         const int error = errno;
         if (fd >= 0) ::close(fd);
-        return failure(target_, "cannot sync", error);
+        return failure(target_, "output_cannot_sync", error);
     }
     ::close(fd);
     if (::rename(temp_.c_str(), target_.c_str()) != 0) {
-        return failure(target_, "cannot replace", errno);
+        return failure(target_, "output_cannot_replace", errno);
     }
     committed_ = true;
     for (const fs::path& stale : staleTempFiles(target_)) {
         ::unlink(stale.c_str());
     }
-    return syncFolder(target_.parent_path().empty() ? fs::path(".") : target_.parent_path());
+    return passedOn(syncFolder(target_.parent_path().empty() ? fs::path(".") : target_.parent_path()));
 }
 
-std::optional<std::string> writeOutputFile(const fs::path& target, std::string_view content) {
+std::optional<Message> writeOutputFile(const fs::path& target, std::string_view content) {
     auto opened = OutputFile::open(target);
-    if (auto* error = std::get_if<std::string>(&opened)) {
+    if (auto* error = std::get_if<Message>(&opened)) {
         return *error;
     }
     OutputFile& file = *std::get<std::unique_ptr<OutputFile>>(opened);
     errno = 0;
     file.stream().write(content.data(), static_cast<std::streamsize>(content.size()));
     if (!file.stream()) { // a large content fails here, not at the flush: say this errno
-        return failure(target, "cannot write", errno != 0 ? errno : EIO);
+        return failure(target, "output_cannot_write", errno != 0 ? errno : EIO);
     }
     return file.commit();
 }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -18,15 +20,15 @@ namespace m350::files {
 // leads to is replaced and the link stays. Every write error is reported.
 class OutputFile {
 public:
-    // The file opened for writing, or why not (naming the file).
-    static std::variant<std::unique_ptr<OutputFile>, std::string> open(const std::filesystem::path& target);
+    // The file opened for writing, or why not (naming the file), by message id.
+    static std::variant<std::unique_ptr<OutputFile>, Message> open(const std::filesystem::path& target);
     ~OutputFile(); // removes the temp file unless commit() succeeded
     OutputFile(const OutputFile&) = delete;
     OutputFile& operator=(const OutputFile&) = delete;
 
     std::ostream& stream() { return stream_; }
     // Flushes, syncs and renames the temp file over the target; nullopt on success, else why.
-    std::optional<std::string> commit();
+    std::optional<Message> commit();
 
     // Where writing `target` goes: the file a link leads to (the link stays), else the target.
     static std::filesystem::path writtenPath(const std::filesystem::path& target);
@@ -40,6 +42,6 @@ private:
 };
 
 // Writes `content` as one OutputFile; nullopt on success, else why.
-std::optional<std::string> writeOutputFile(const std::filesystem::path& target, std::string_view content);
+std::optional<Message> writeOutputFile(const std::filesystem::path& target, std::string_view content);
 
 } // namespace m350::files

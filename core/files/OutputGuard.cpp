@@ -65,16 +65,16 @@ std::optional<Unwritable> unwritableOutput(const fs::path& output) {
     return std::nullopt;
 }
 
-std::string describeUnwritable(const std::string& option, const fs::path& output, Unwritable why) {
-    std::string reason;
+Message describeUnwritable(const std::string& option, const fs::path& output, Unwritable why) {
     switch (why) {
-    case Unwritable::Folder: reason = "it is a folder, not a file"; break;
-    case Unwritable::Socket: reason = "it is a socket, not a file"; break;
-    case Unwritable::BlockDevice: reason = "it is a disk (block device), not a file"; break;
-    case Unwritable::NoFolder: reason = "the folder " + parentOf(output).string() + " does not exist"; break;
-    case Unwritable::ParentNotFolder: reason = parentOf(output).string() + " is not a folder"; break;
+    case Unwritable::Folder: return message("output_is_folder", {option, output.string()});
+    case Unwritable::Socket: return message("output_is_socket", {option, output.string()});
+    case Unwritable::BlockDevice: return message("output_is_disk", {option, output.string()});
+    case Unwritable::NoFolder: return message("output_no_folder", {option, output.string(), parentOf(output).string()});
+    case Unwritable::ParentNotFolder:
+        break;
     }
-    return option + " " + output.string() + ": " + reason + ": refused, nothing was written";
+    return message("output_parent_not_folder", {option, output.string(), parentOf(output).string()});
 }
 
 } // namespace m350::files

@@ -38,6 +38,7 @@ enum class Unwritable { Folder, Socket, BlockDevice, NoFolder, ParentNotFolder }
 // or a character device (written as a device, never replaced).
 std::optional<Unwritable> unwritableOutput(const std::filesystem::path& output);
 // "--state notes.txt/s.json: notes.txt is not a folder: refused, nothing was written"
-std::string describeUnwritable(const std::string& option, const std::filesystem::path& output, Unwritable why);
+// (by message id; `option` may be bilingual())
+Message describeUnwritable(const std::string& option, const std::filesystem::path& output, Unwritable why);
 
 } // namespace m350::files

@@ -156,4 +156,15 @@ TEST_F(CliFileWordsTest, AParameterValueThePanelWouldRefuseIsWarnedInTheLanguage
     EXPECT_SAYS(folderChinese, "params.toml: 警告：参数129（浮动对刀仪厚度）须在0到99之间，不能为120（按写入的值使用）");
 }
 
+TEST_F(CliFileWordsTest, AnOutputFileItCannotWriteIsSaidInTheLanguage) {
+    fs::create_directory(dir_ / "shots");
+    auto [english, chinese] = both({"run", "p.nc", "--trace", "shots"});
+    EXPECT_EQ(english.exitStatus, kExitError);
+    EXPECT_SAYS(english, "shots: cannot write the trace file: shots: cannot write: it is a folder");
+    EXPECT_EQ(chinese.exitStatus, kExitError);
+    EXPECT_SAYS(chinese, "shots: 无法写入跟踪文件：shots：无法写入：这是一个文件夹");
+    ProcessResult tools = sim({"run", "p.nc", "--tools-out", "shots", "--lang", "zh_CN"});
+    EXPECT_SAYS(tools, "m350-sim: --tools-out: shots：无法写入：这是一个文件夹");
+}
+
 } // namespace m350::clitest

@@ -181,6 +181,35 @@ TEST_F(CliImportTest, ANanInSettingIsRefusedNamingItsOffsetAndParameter) {
     EXPECT_FALSE(fs::exists(dir_ / "machine"));
 }
 
+// With --lang zh_CN the import's refusals and its result are said in Chinese (message ids); the
+// JSON keeps the English with the message_id.
+TEST_F(CliImportTest, TheImportSpeaksTheLanguageAsked) {
+    backup_.setting[129] = std::nan("");
+    backup_.writeTo(dir_ / "SYSDISK");
+    ProcessResult nan = sim({"import", "SYSDISK", "--into", "machine", "--lang", "zh_CN"});
+    EXPECT_EQ(nan.exitStatus, kExitError);
+    EXPECT_NE(nan.err.find("SYSDISK/setting: 偏移1032处，参数129（浮动对刀仪厚度）：该值为 NaN；文件已损坏，未导入任何内容"),
+              std::string::npos)
+        << nan.err;
+    json j = output(nan);
+    EXPECT_EQ(j["alarm"].value("message_id", ""), "backup_damaged") << j;
+    EXPECT_NE(j["alarm"].value("message", "").find("the file is damaged, nothing imported"), std::string::npos) << j;
+
+    write("mine/params.toml", "[params]\n61 = 1\n");
+    backup_.setting[129] = 10.0;
+    backup_.writeTo(dir_ / "SYSDISK");
+    ProcessResult full = sim({"import", "SYSDISK", "--into", "mine", "--lang", "zh_CN"});
+    EXPECT_EQ(full.exitStatus, kExitError);
+    EXPECT_NE(full.err.find("mine: 不是空文件夹，其中也不是此备份的导入结果（缺少machine.toml，params.toml内容不同，"), std::string::npos)
+        << full.err;
+    ProcessResult done = sim({"import", "SYSDISK", "--into", "machine", "--lang", "zh_CN"});
+    EXPECT_EQ(done.exitStatus, kExitOk) << done.err;
+    EXPECT_NE(done.err.find("已将SYSDISK导入"), std::string::npos) << done.err;
+    ProcessResult missing = sim({"import", "nowhere", "--into", "other", "--lang", "zh_CN"});
+    EXPECT_NE(missing.err.find("nowhere: 不是文件夹：控制器备份是存放 `setting`、slib-g.nc 等文件的文件夹"), std::string::npos)
+        << missing.err;
+}
+
 // Issue 26: a `coordinate` or `setting` that is a folder or a link to a device was "not found" or
 // gave "every work offset is 0"; each is said as what it is (a device refused unread).
 TEST_F(CliImportTest, ADataFileThatIsAFolderFifoOrDeviceIsSaidAsWhatItIs) {

@@ -75,6 +75,11 @@ TEST_F(UserRightsTest, ResetPasswordsReplacesAFifoAndRefusesAFolder) {
     ProcessResult folder = sim({"reset-passwords", "--config", "machine"});
     EXPECT_EQ(folder.exitStatus, kExitError);
     EXPECT_NE(folder.err.find("is a folder"), std::string::npos) << folder.err;
+    ProcessResult folderChinese = sim({"reset-passwords", "--config", "machine", "--lang", "zh_CN"});
+    EXPECT_EQ(folderChinese.exitStatus, kExitError);
+    EXPECT_NE(folderChinese.err.find("m350-sim: reset-passwords: machine/passwords.toml是文件夹：请手动删除，未写入任何内容"),
+              std::string::npos)
+        << folderChinese.err;
 
     ProcessResult usage = sim({"reset-passwords"});
     EXPECT_EQ(usage.exitStatus, 64) << "the folder is never guessed";

@@ -27,7 +27,7 @@ const m350::config::MachineConfig& machine(std::size_t index) {
         for (std::size_t i = 0; i < kMachines.size(); ++i) {
             auto folder = m350::config::loadMachineFolder(std::string(M350_MACHINES_DIR) + "/" + kMachines[i]);
             if (auto* error = std::get_if<m350::config::ConfigError>(&folder)) {
-                std::fprintf(stderr, "%s: %s\n", error->where().c_str(), error->message.c_str());
+                std::fprintf(stderr, "%s: %s\n", error->where().c_str(), error->message.english().c_str());
                 std::abort();
             }
             configs[i] = std::get<m350::config::MachineConfig>(std::move(folder));

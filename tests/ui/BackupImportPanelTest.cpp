@@ -90,7 +90,8 @@ TEST(PanelBackupImport, EscKeepsThePanelOnItsMachineAndADamagedBackupIsRefusedIn
     ASSERT_TRUE(panel.window().prompt()->active());
     const QString refusal = panel.window().prompt()->question();
     EXPECT_TRUE(refusal.startsWith(QStringLiteral("导入被拒绝:"))) << refusal.toStdString();
-    EXPECT_TRUE(refusal.contains(QStringLiteral("SYSDISK/setting: offset 1032, parameter 129"))) << refusal.toStdString();
+    // the reason in the panel's language too (message ids)
+    EXPECT_TRUE(refusal.contains(QStringLiteral("SYSDISK/setting: 偏移1032处，参数129（浮动对刀仪厚度）：该值为 NaN；文件已损坏"))) << refusal.toStdString();
     panel.key("ENTER");
     EXPECT_FALSE(switched);
     EXPECT_FALSE(QDir(QDir(dir.path()).filePath("b")).exists());

@@ -90,8 +90,13 @@ TEST(ClassReport, GradesAFolderOfAttemptsIntoCsvAndAParsableHtmlTable) {
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
     hmi.setProcessEnvironment(env);
-    hmi.start(QStringLiteral(M350_HMI_PATH), {QStringLiteral("--class-report"), attempts, QStringLiteral("--report-html"), html,
-                                              QStringLiteral("--report-csv"), csv});
+    // one exercise, so that the table has one exercise column
+    const QString exercises = dir.filePath(QStringLiteral("exercises"));
+    QDir().mkpath(exercises + QStringLiteral("/pocket-taught-off"));
+    ASSERT_TRUE(QFile::copy(QStringLiteral(M350_SOURCE_DIR "/resources/exercises/pocket-taught-off/exercise.toml"),
+                            exercises + QStringLiteral("/pocket-taught-off/exercise.toml")));
+    hmi.start(QStringLiteral(M350_HMI_PATH), {QStringLiteral("--class-report"), attempts, QStringLiteral("--exercises"), exercises,
+                                              QStringLiteral("--report-html"), html, QStringLiteral("--report-csv"), csv});
     ASSERT_TRUE(hmi.waitForFinished(120000));
     ASSERT_EQ(hmi.exitCode(), 0) << hmi.readAllStandardError().toStdString();
 

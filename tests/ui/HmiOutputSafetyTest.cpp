@@ -132,6 +132,32 @@ TEST_F(HmiOutputs, AFolderAFileAsAFolderAndATextFileAsAScreenshotAreRefused) {
     expectRefused(run({"--screenshot", "notes.txt"}), "--screenshot notes.txt: .txt is not an image format");
 }
 
+// Every refusal of an output and a machine folder that does not load are said in the panel's
+// language (message ids, as m350-sim says them with --lang).
+TEST_F(HmiOutputs, TheOtherRefusalsAndALoadErrorAreSaidInThePanelsLanguage) {
+    ASSERT_TRUE(QDir(dir_.path()).mkdir("shots"));
+    auto said = [this](const QStringList& arguments, const QString& text) {
+        HmiResult r = run(QStringList{"--lang", "zh_CN"} + arguments);
+        EXPECT_EQ(r.exitCode, 2) << r.errors.toStdString();
+        EXPECT_TRUE(r.errors.contains(text)) << r.errors.toStdString();
+    };
+    said({"--state", "shots"}, QStringLiteral("--state shots：这是文件夹，不是文件：已拒绝，未写入任何内容"));
+    said({"--state", "notes.txt/state.json"}, QStringLiteral("--state notes.txt/state.json：notes.txt不是文件夹"));
+    said({"--state", "nowhere/state.json"}, QStringLiteral("文件夹nowhere不存在：已拒绝"));
+    said({"--screenshot", "notes.txt"}, QStringLiteral("--screenshot notes.txt：.txt不是图像格式（"));
+    said({"--state", "out.json", "--screenshot", "out.json"},
+         QStringLiteral("--screenshot out.json也是--state的输出文件：已拒绝，未写入任何内容"));
+    said({"--state", QString(250, QLatin1Char('s'))}, QStringLiteral("--state: 写入失败："));
+    EXPECT_EQ(contents(path("notes.txt")), "my notes\n");
+
+    write(path("machine/params.toml"), "[params]\n61 = = 3000\n");
+    said({"--config", "machine"}, QStringLiteral("machine/params.toml:2:6: TOML 语法错误："));
+    write(path("machine/params.toml"), "[params]\n61 = \"fast\"\n");
+    said({"--config", "machine"}, QStringLiteral("machine/params.toml:2:6: '61'须为数值"));
+    HmiResult english = run({"--config", "machine"});
+    EXPECT_TRUE(english.errors.contains("machine/params.toml:2:6: '61' must be a number")) << english.errors.toStdString();
+}
+
 TEST_F(HmiOutputs, ARegularFileIsReplacedWholeThroughALinkAndAFifoIsWrittenAsAFifo) {
     write(path("state.json"), "old");
     ASSERT_TRUE(QFile::link(path("state.json"), path("state-link.json")));

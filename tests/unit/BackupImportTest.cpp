@@ -190,7 +190,7 @@ TEST_F(BackupImportTest, AnImportChangedSinceIsNotOverwritten) {
     const std::string mine = readFile(dir_ / "machine/params.toml");
     backup::ImportError error = refused();
     EXPECT_EQ(error.code, "machine_folder_not_empty");
-    EXPECT_THAT(error.message, HasSubstr("params.toml differs"));
+    EXPECT_THAT(error.message.english(), HasSubstr("params.toml differs"));
     EXPECT_EQ(readFile(dir_ / "machine/params.toml"), mine);
 }
 
@@ -199,7 +199,7 @@ TEST_F(BackupImportTest, AnEmptyFolderIsFilledAndAFolderInsideTheBackupRefused) 
     imported("empty");
     EXPECT_TRUE(fs::exists(dir_ / "empty/machine.toml"));
     backup::ImportError inside = refused("SYSDISK/machine");
-    EXPECT_THAT(inside.message, HasSubstr("inside the backup"));
+    EXPECT_THAT(inside.message.english(), HasSubstr("inside the backup"));
     EXPECT_FALSE(fs::exists(dir_ / "SYSDISK/machine"));
 }
 
@@ -218,10 +218,10 @@ TEST_F(BackupImportTest, ADamagedSettingIsRefusedNamingTheFileOffsetAndParameter
         backup::ImportError error = refused();
         EXPECT_EQ(error.code, "backup_error");
         EXPECT_EQ(error.file, (dir_ / "SYSDISK/setting").string());
-        EXPECT_THAT(error.message, HasSubstr("offset " + std::to_string(c.parameter * 8) + ", parameter " +
+        EXPECT_THAT(error.message.english(), HasSubstr("offset " + std::to_string(c.parameter * 8) + ", parameter " +
                                              std::to_string(c.parameter) + " ("));
-        EXPECT_THAT(error.message, HasSubstr(c.says));
-        EXPECT_THAT(error.message, HasSubstr("nothing imported"));
+        EXPECT_THAT(error.message.english(), HasSubstr(c.says));
+        EXPECT_THAT(error.message.english(), HasSubstr("nothing imported"));
         EXPECT_TRUE(leftBehind().empty());
     }
 }
@@ -231,12 +231,12 @@ TEST_F(BackupImportTest, WrongSizesAndAMissingSettingAreRefused) {
     std::ofstream(dir_ / "SYSDISK/coordinate", std::ios::binary | std::ios::app) << "x";
     auto longer = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
     ASSERT_TRUE(std::holds_alternative<backup::ImportError>(longer));
-    EXPECT_THAT(std::get<backup::ImportError>(longer).message,
+    EXPECT_THAT(std::get<backup::ImportError>(longer).message.english(),
                 HasSubstr("holds 361 bytes; a coordinate file holds 45 little-endian float64 (360 bytes)"));
     fs::remove(dir_ / "SYSDISK/setting");
     auto missing = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
     ASSERT_TRUE(std::holds_alternative<backup::ImportError>(missing));
-    EXPECT_THAT(std::get<backup::ImportError>(missing).message, HasSubstr("not found"));
+    EXPECT_THAT(std::get<backup::ImportError>(missing).message.english(), HasSubstr("not found"));
     EXPECT_TRUE(leftBehind().empty());
 }
 
@@ -249,7 +249,7 @@ TEST_F(BackupImportTest, ABigEndianCopyIsRefusedAsDamaged) {
     std::ofstream(dir_ / "SYSDISK/setting", std::ios::binary) << setting;
     auto result = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
     ASSERT_TRUE(std::holds_alternative<backup::ImportError>(result));
-    EXPECT_THAT(std::get<backup::ImportError>(result).message, HasSubstr("the file is damaged"));
+    EXPECT_THAT(std::get<backup::ImportError>(result).message.english(), HasSubstr("the file is damaged"));
 }
 
 TEST_F(BackupImportTest, TheReportSaysWhatToReviewAndWhatCannotBeModelled) {

@@ -118,7 +118,7 @@ TEST(FolderChange, AJournalThatIsNotWholeStopsTheLoadNamingIt) {
     auto loaded = config::loadMachineFolder(folder.string());
     ASSERT_TRUE(std::holds_alternative<config::ConfigError>(loaded));
     EXPECT_EQ(std::get<config::ConfigError>(loaded).file, (folder / "save.journal").string());
-    EXPECT_THAT(std::get<config::ConfigError>(loaded).message, testing::HasSubstr("it has no end line"));
+    EXPECT_THAT(std::get<config::ConfigError>(loaded).message.english(), testing::HasSubstr("it has no end line"));
     EXPECT_EQ(readText(folder / "tool.tbl"), kTable) << "nothing is guessed";
 }
 

@@ -222,7 +222,7 @@ TEST(MachineFolderCrash, AHandBrokenFileNamesItsLineAndTheLastGoodCopy) {
     ASSERT_TRUE(std::holds_alternative<config::ConfigError>(loaded));
     const config::ConfigError& error = std::get<config::ConfigError>(loaded);
     EXPECT_EQ(error.where(), (folder / "params.toml").string() + ":3:6");
-    EXPECT_NE(error.message.find("(its last good copy: " + (folder / "params.toml.last-good").string() + ")"),
+    EXPECT_NE(error.message.english().find("(its last good copy: " + (folder / "params.toml.last-good").string() + ")"),
               std::string::npos)
         << error.message;
     EXPECT_EQ(readText(files::lastGoodPath(folder / "params.toml")), good) << "a broken file never replaces the copy";

@@ -47,7 +47,18 @@ bool hasEnglishWords(const std::string& text) {
         // the words of toollife.txt and tool.tbl lines, which the file keeps in any language
         "count", "minutes", "group", "life", "used", "ignore", "teeth", "type", "flat",
         // exercise.toml's keys and values, typed as the file has them
-        "hints", "exercises", "time", "limit", "true", "false", "stuck", "slow", "bouncing", "pressed", "none", "begin", "start"};
+        "hints", "exercises", "time", "limit", "true", "false", "stuck", "slow", "bouncing", "pressed", "none", "begin", "start", "mdi",
+        // machine.toml's sections, keys and values, as the file spells them
+        "TOML", "away", "change", "changer", "clamped", "codes", "commanded", "data", "dialect", "distance", "drawbar",
+        "empty", "false", "true", "fanuc", "homing", "input", "output", "outputs", "interface", "signal", "signals",
+        "lambda", "libraries", "links", "load", "magazine", "memory", "name", "offset", "pockets", "position",
+        "random", "released", "rotation", "select", "slide", "spindle", "stock", "strobe", "switch",
+        // the command lines' options, the controller backup's file names
+        "screenshot", "setting",
+        // passwords.toml's levels and its "SALT:HASH"
+        "operator", "admin", "super", "SALT", "HASH",
+        // modbus.toml's tables
+        "holding", "coils", "discrete", "forks"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;

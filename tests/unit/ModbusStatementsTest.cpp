@@ -352,7 +352,7 @@ TEST(ModbusSlavesFile, BadEntriesNameTheirLine) {
         config::ModbusSlaves slaves;
         auto problem = config::loadModbusSlaves(writeModbusToml(b.text), slaves);
         ASSERT_TRUE(problem) << b.text;
-        EXPECT_NE(problem->find(b.message), std::string::npos) << *problem;
+        EXPECT_NE(problem->english().find(b.message), std::string::npos) << *problem;
     }
 }
 

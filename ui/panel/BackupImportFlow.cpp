@@ -1,6 +1,7 @@
 #include "ui/panel/BackupImportFlow.h"
 
 #include "core/backup/BackupImport.h"
+#include "ui/i18n/Language.h"
 #include "ui/pages/PanelContext.h"
 
 #include <QCoreApplication>
@@ -89,7 +90,7 @@ void BackupImportFlow::importInto(const QString& backup, const QString& machineF
 void BackupImportFlow::report(const std::variant<backup::BackupImport, backup::ImportError>& outcome) {
     if (auto* error = std::get_if<backup::ImportError>(&outcome)) {
         context_.ask(tr("Import refused:\n%1: %2")
-                         .arg(QString::fromStdString(error->file), QString::fromStdString(error->message)),
+                         .arg(QString::fromStdString(error->file), QString::fromStdString(error->message.in(Language::messageLanguage()))),
                      [](bool) {});
         return;
     }

@@ -1,5 +1,7 @@
 #include "ui/session/UserAccess.h"
 
+#include "ui/i18n/Language.h"
+
 
 #include <QCryptographicHash>
 #include <QMessageAuthenticationCode>
@@ -108,7 +110,7 @@ std::optional<QString> UserAccess::changePassword(const QString& password) {
 void UserAccess::load() {
     auto read = config::readPasswords(folder_);
     if (auto* problem = std::get_if<config::PasswordsProblem>(&read)) {
-        problem_ = QString::fromStdString(problem->message);
+        problem_ = QString::fromStdString(problem->message.in(Language::messageLanguage()));
         return;
     }
     stored_ = std::get<config::Passwords>(read);

@@ -67,7 +67,7 @@ GradeOutcome gradeAttemptFile(const GradeRequest& request) {
     }
     auto config = config::loadMachineFolder(folder.toStdString());
     if (auto* error = std::get_if<config::ConfigError>(&config)) {
-        outcome.error = QString::fromStdString(error->where() + ": " + error->message);
+        outcome.error = QString::fromStdString(error->where()) + QStringLiteral(": ") + said(error->message, request.language);
         return outcome;
     }
     MachineSession session(std::move(std::get<config::MachineConfig>(config)),

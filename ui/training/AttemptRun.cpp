@@ -11,6 +11,7 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -48,7 +49,7 @@ std::unique_ptr<AttemptRun> AttemptRun::start(Setup setup, QString* error) {
     }
     auto loaded = config::loadMachineFolder(machine.toStdString());
     if (auto* failed = std::get_if<config::ConfigError>(&loaded)) {
-        *error = QString::fromStdString(failed->where() + ": " + failed->message);
+        *error = QString::fromStdString(failed->where() + ": " + failed->message.in(language));
         return nullptr;
     }
     run->session_ = std::make_unique<MachineSession>(std::move(std::get<config::MachineConfig>(loaded)),
@@ -149,11 +150,10 @@ const training::Verdict& AttemptRun::handIn(bool timedOut, std::optional<double>
         return *verdict_;
     }
     session_->sync();
-    if (at) {
-        now_ = *at;
-    } else if (session_->latest()) {
-        now_ = session_->latest()->sessionTime;
-    }
+    const double sessionNow = session_->latest() ? session_->latest()->sessionTime : now_;
+    // a played attempt's hand-in time; never before the last recorded action (whose time is the
+    // session's, summed frame by frame)
+    now_ = at ? std::max(*at, sessionNow) : sessionNow;
     const double used = timeUsed();
     window_->recorder().writeExtra(writer_->handIn(now_, hints_, timedOut));
     if (QString why = window_->stopRecording(); !why.isEmpty()) {
