@@ -22,4 +22,13 @@ for replay in docs/replays/*.jsonl; do
         scratch=
     done
 done
+# 训练 Training: its start page, an attempt under way and a verdict (docs/training/)
+for lang in zh_CN en; do
+    xvfb-run -a "$BUILD/app/m350-hmi" --lang "$lang" --training --trainee 王伟 \
+        --screenshot "docs/screenshots/training-start-$lang.png" 2>/dev/null
+    for shot in attempt verdict; do
+        xvfb-run -a "$BUILD/app/m350-hmi" --lang "$lang" --training --trainee 王伟 --exercise resources/exercises/pocket-taught-off \
+            --replay "docs/training/$shot.jsonl" --screenshot "docs/screenshots/training-$shot-$lang.png" 2>/dev/null
+    done
+done
 ls docs/screenshots

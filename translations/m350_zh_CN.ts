@@ -12,17 +12,6 @@
     </message>
 </context>
 <context>
-    <name>m350::ui::AttemptGrader</name>
-    <message>
-        <source>--verdict %1 is the attempt it grades: refused, nothing written</source>
-        <translation>--verdict %1 就是要评分的练习记录：拒绝，未写入任何内容</translation>
-    </message>
-    <message>
-        <source>--verdict %1 lies in the exercise folder %2: refused, nothing written</source>
-        <translation>--verdict %1 位于练习文件夹 %2 中：拒绝，未写入任何内容</translation>
-    </message>
-</context>
-<context>
     <name>m350::ui::AttemptRun</name>
     <message>
         <source>no folder for the attempt's machine: %1</source>
@@ -2988,6 +2977,17 @@
     <message>
         <source>F5 opens %1 in the panel.</source>
         <translation>F5 在面板中打开 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::AttemptGrader</name>
+    <message>
+        <source>--verdict %1 is the attempt it grades: refused, nothing written</source>
+        <translation>--verdict %1 就是要评分的练习记录：拒绝，未写入任何内容</translation>
+    </message>
+    <message>
+        <source>--verdict %1 lies in the exercise folder %2: refused, nothing written</source>
+        <translation>--verdict %1 位于练习文件夹 %2 中：拒绝，未写入任何内容</translation>
     </message>
 </context>
 <context>

@@ -116,11 +116,11 @@ std::optional<QString> refusedVerdictOutput(const QString& verdict, const QStrin
     const QString target = output.exists() ? output.canonicalFilePath()
                                            : QFileInfo(output.absolutePath()).canonicalFilePath() + QLatin1Char('/') + output.fileName();
     if (target == QFileInfo(attempt).canonicalFilePath()) {
-        return QCoreApplication::translate("AttemptGrader", "--verdict %1 is the attempt it grades: refused, nothing written")
+        return QCoreApplication::translate("m350::ui::AttemptGrader", "--verdict %1 is the attempt it grades: refused, nothing written")
             .arg(verdict);
     }
     if (target.startsWith(QFileInfo(exerciseFolder).canonicalFilePath() + QLatin1Char('/'))) {
-        return QCoreApplication::translate("AttemptGrader", "--verdict %1 lies in the exercise folder %2: refused, nothing written")
+        return QCoreApplication::translate("m350::ui::AttemptGrader", "--verdict %1 lies in the exercise folder %2: refused, nothing written")
             .arg(verdict, exerciseFolder);
     }
     return std::nullopt;

@@ -39,7 +39,7 @@ std::unique_ptr<AttemptRun> AttemptRun::start(Setup setup, QString* error) {
     std::unique_ptr<AttemptRun> run(new AttemptRun(std::move(setup)));
     const MessageLanguage language = spoken(run->setup_.language);
     if (!run->folder_.isValid()) {
-        *error = QCoreApplication::translate("AttemptRun", "no folder for the attempt's machine: %1").arg(run->folder_.errorString());
+        *error = AttemptRun::tr("no folder for the attempt's machine: %1").arg(run->folder_.errorString());
         return nullptr;
     }
     const QString machine = run->folder_.filePath(QStringLiteral("machine"));
@@ -131,7 +131,7 @@ void AttemptRun::showNote(double left) {
     }
     shownSecond_ = second;
     const QString task = QString::fromStdString(setup_.exercise.title.in(spoken(setup_.language)));
-    window_->setStandingNote(QCoreApplication::translate("AttemptRun", "Training: %1 · time left %2:%3 · F7: task, hint, hand in")
+    window_->setStandingNote(AttemptRun::tr("Training: %1 · time left %2:%3 · F7: task, hint, hand in")
                                  .arg(task)
                                  .arg(second / 60)
                                  .arg(second % 60, 2, 10, QLatin1Char('0')));
