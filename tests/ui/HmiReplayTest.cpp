@@ -74,6 +74,18 @@ int differingPixels(const QImage& fast, const QImage& eager, QString* first) {
     return different;
 }
 
+// Two runs of one replay end alike: the same --state but the work record's start date (the wall
+// clock's: the one field two runs never share), every pixel the same but the status line's clock.
+void expectSameEnd(const HmiRun& fast, const HmiRun& eager) {
+    QJsonObject fastState = fast.state;
+    QJsonObject eagerState = eager.state;
+    fastState.remove("work_record");
+    eagerState.remove("work_record");
+    EXPECT_EQ(QJsonDocument(fastState).toJson().toStdString(), QJsonDocument(eagerState).toJson().toStdString());
+    QString first;
+    EXPECT_EQ(differingPixels(fast.screenshot, eager.screenshot, &first), 0) << "first at " << first.toStdString();
+}
+
 } // namespace
 
 TEST(HmiReplay, MdiLineRunsAndTheStateShowsWhereTheMachineIs) {
@@ -299,16 +311,7 @@ TEST(HmiReplay, ALongReplayOfRealActionsEndsAsTheEagerReplayEnds) {
     // the replay did what it says: MDI lines kept, the program loaded, the machine moved and came back
     EXPECT_FALSE(fast.state["mdi_lines"].toArray().isEmpty());
     EXPECT_TRUE(fast.state["program"].toString().endsWith("part.nc")) << fast.state["program"].toString().toStdString();
-    // the work record's start date is the wall clock's: the one field two runs never share
-    QJsonObject fastState = fast.state;
-    QJsonObject eagerState = eager.state;
-    fastState.remove("work_record");
-    eagerState.remove("work_record");
-    EXPECT_EQ(QJsonDocument(fastState).toJson().toStdString(), QJsonDocument(eagerState).toJson().toStdString());
-
-    // every pixel the same but the status line's clock (the wall clock's time, at its right end)
-    QString first;
-    EXPECT_EQ(differingPixels(fast.screenshot, eager.screenshot, &first), 0) << "first at " << first.toStdString();
+    expectSameEnd(fast, eager);
 }
 
 // Lists scrolled far down between page switches (the System Log, the parameter table on two
@@ -347,13 +350,7 @@ TEST(HmiReplay, ListsScrolledBetweenPageSwitchesEndAsTheEagerReplayLeavesThem) {
     HmiRun eager = runHmi(QStringList{"--eager-replay"} + arguments);
     ASSERT_EQ(fast.exitCode, 0) << fast.errors.toStdString();
     ASSERT_EQ(eager.exitCode, 0) << eager.errors.toStdString();
-    QJsonObject fastState = fast.state;
-    QJsonObject eagerState = eager.state;
-    fastState.remove("work_record");
-    eagerState.remove("work_record");
-    EXPECT_EQ(QJsonDocument(fastState).toJson().toStdString(), QJsonDocument(eagerState).toJson().toStdString());
-    QString first;
-    EXPECT_EQ(differingPixels(fast.screenshot, eager.screenshot, &first), 0) << "first at " << first.toStdString();
+    expectSameEnd(fast, eager);
 }
 
 } // namespace m350::test

@@ -56,25 +56,28 @@ struct Graded {
     QJsonObject verdict;
 };
 
-Graded grade(const QString& exercise, const QString& attempt, const QStringList& extra = {}) {
-    QTemporaryDir dir;
-    const QString verdict = dir.filePath(QStringLiteral("verdict.json"));
+// m350-hmi offscreen with `arguments`; its exit status and what it printed.
+std::pair<int, QString> hmiOutput(const QStringList& arguments) {
     QProcess hmi;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
     hmi.setProcessEnvironment(env);
-    hmi.start(QStringLiteral(M350_HMI_PATH),
-              QStringList{QStringLiteral("--lang"), QStringLiteral("en"), QStringLiteral("--exercise"), exercise,
-                          QStringLiteral("--attempt"), attempt, QStringLiteral("--verdict"), verdict} +
-                  extra);
-    Graded out;
+    hmi.start(QStringLiteral(M350_HMI_PATH), arguments);
     if (!hmi.waitForFinished(120000)) {
         hmi.kill();
-        out.output = QStringLiteral("m350-hmi did not finish");
-        return out;
+        return {-1, QStringLiteral("m350-hmi did not finish")};
     }
-    out.exitCode = hmi.exitCode();
-    out.output = QString::fromUtf8(hmi.readAllStandardOutput() + hmi.readAllStandardError());
+    return {hmi.exitCode(), QString::fromUtf8(hmi.readAllStandardOutput() + hmi.readAllStandardError())};
+}
+
+Graded grade(const QString& exercise, const QString& attempt, const QStringList& extra = {}) {
+    QTemporaryDir dir;
+    const QString verdict = dir.filePath(QStringLiteral("verdict.json"));
+    Graded out;
+    std::tie(out.exitCode, out.output) =
+        hmiOutput(QStringList{QStringLiteral("--lang"), QStringLiteral("en"), QStringLiteral("--exercise"), exercise,
+                           QStringLiteral("--attempt"), attempt, QStringLiteral("--verdict"), verdict} +
+               extra);
     QFile file(verdict);
     if (file.open(QIODevice::ReadOnly)) {
         out.verdict = QJsonDocument::fromJson(file.readAll()).object();
@@ -96,21 +99,13 @@ QString emptyKeyExam(const QString& folder) {
 QJsonObject trainingRun(const QString& exercise, const QString& attempt, const QString& attempts) {
     QTemporaryDir dir;
     const QString state = dir.filePath(QStringLiteral("state.json"));
-    QProcess hmi;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-    hmi.setProcessEnvironment(env);
-    hmi.start(QStringLiteral(M350_HMI_PATH),
-              QStringList{QStringLiteral("--lang"), QStringLiteral("en"), QStringLiteral("--training"), QStringLiteral("--trainee"),
-                          QStringLiteral("test"), QStringLiteral("--attempts"), attempts, QStringLiteral("--exercise"), exercise,
-                          QStringLiteral("--replay"), attempt, QStringLiteral("--state"), state});
-    if (!hmi.waitForFinished(120000)) {
-        hmi.kill();
-        return {};
-    }
+    const auto [status, output] =
+        hmiOutput({QStringLiteral("--lang"), QStringLiteral("en"), QStringLiteral("--training"), QStringLiteral("--trainee"),
+                QStringLiteral("test"), QStringLiteral("--attempts"), attempts, QStringLiteral("--exercise"), exercise,
+                QStringLiteral("--replay"), attempt, QStringLiteral("--state"), state});
     QFile file(state);
     if (!file.open(QIODevice::ReadOnly)) {
-        return QJsonObject{{QStringLiteral("error"), QString::fromUtf8(hmi.readAllStandardError())}};
+        return QJsonObject{{QStringLiteral("error"), output}, {QStringLiteral("status"), status}};
     }
     return QJsonDocument::fromJson(file.readAll()).object();
 }
