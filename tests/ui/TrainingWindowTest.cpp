@@ -110,6 +110,39 @@ TEST(TrainingWindow, AnAttemptFromStartToVerdictThroughTheKeys) {
     EXPECT_TRUE(progress.readAll().contains("\"tries\": 1"));
 }
 
+TEST(TrainingWindow, AFailedChecksMacroLineOpensInTheEditor) {
+    TrainingHarness training;
+    ui::TrainingWindow& w = *training.window;
+    w.softkey(1);
+    ASSERT_TRUE(w.attempt());
+    // T2 run with pocket 2's X left 2 mm off: the empty nose lands on T2's holder in O20000
+    ui::OperatorAction mdi = ui::OperatorAction::key(QStringLiteral("MDI"));
+    mdi.t = 1;
+    ui::OperatorAction t2 = ui::OperatorAction::typed(QStringLiteral("T2"));
+    t2.t = 2;
+    ui::OperatorAction enter = ui::OperatorAction::key(QStringLiteral("ENTER"));
+    enter.t = 2.5;
+    ui::OperatorAction run = ui::OperatorAction::softkeyPress(1);
+    run.t = 3;
+    ui::OperatorAction wait;
+    wait.t = 40;
+    ASSERT_TRUE(ui::playReplay(w.attempt()->window(), w.attempt()->session(), {mdi, t2, enter, run, wait}).isEmpty());
+    w.key(QStringLiteral("TRAINING"));
+    w.softkey(4);
+    ASSERT_EQ(w.pageId(), QStringLiteral("verdict"));
+    w.key(QStringLiteral("DOWN")); // pocket-2-x, then no-crash
+    ASSERT_EQ(w.verdictPage()->target().kind, training::CheckTarget::Kind::Line);
+    EXPECT_EQ(w.verdictPage()->target().file, "slib-g.nc");
+    const int line = w.verdictPage()->target().line;
+    EXPECT_GT(line, 0);
+    w.softkey(5);
+    EXPECT_EQ(w.pageId(), QStringLiteral("attempt"));
+    EXPECT_EQ(w.attempt()->window().currentPage()->id(), QStringLiteral("program"));
+    const QJsonObject program = w.attempt()->window().currentPage()->state();
+    EXPECT_EQ(program.value(QStringLiteral("editor_file")).toString(), QStringLiteral("slib-g.nc"));
+    EXPECT_EQ(program.value(QStringLiteral("editor_line")).toInt(), line);
+}
+
 TEST(TrainingWindow, AnExamHasNoHintsAndHandsInWhenTheTimeRunsOut) {
     training::Exam exam;
     exam.exercises = {"pocket-taught-off"};
