@@ -205,3 +205,36 @@ INSTANTIATE_TEST_SUITE_P(Bundled, ExerciseAttempt, testing::ValuesIn([] {
                          });
 
 } // namespace m350::test
+
+namespace m350::test {
+
+// An exam takes only attempts the panel recorded in it: a hand-made attempt (no chain) and a
+// recorded one edited afterwards are refused with exit 2, naming the line.
+TEST(TrainingExam, TheGraderRefusesAnUnchainedOrEditedAttempt) {
+    const QString exercise = kExercises + QStringLiteral("/pocket-taught-off");
+    const QString handMade = kAttempts + QStringLiteral("/pocket-taught-off/correct.jsonl");
+    QTemporaryDir attempts;
+    const QString exam = emptyKeyExam(attempts.path());
+    const Graded unchained = grade(exercise, handMade, {QStringLiteral("--exam"), exam});
+    EXPECT_EQ(unchained.exitCode, 2);
+    EXPECT_TRUE(unchained.output.contains(QStringLiteral("carries no hash chain"))) << unchained.output.toStdString();
+
+    const QJsonObject panel = trainingRun(exercise, handMade, attempts.path());
+    const QString recorded = panel.value(QStringLiteral("attempt_file")).toString();
+    ASSERT_FALSE(recorded.isEmpty());
+    EXPECT_EQ(grade(exercise, recorded, {QStringLiteral("--exam"), exam}).exitCode, 0);
+    QFile file(recorded);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    QByteArray text = file.readAll();
+    file.close();
+    ASSERT_TRUE(text.contains("\"text\":\"110\""));
+    text.replace("\"text\":\"110\"", "\"text\":\"111\"");
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write(text);
+    file.close();
+    const Graded edited = grade(exercise, recorded, {QStringLiteral("--exam"), exam});
+    EXPECT_EQ(edited.exitCode, 2);
+    EXPECT_TRUE(edited.output.contains(QStringLiteral("does not follow the chain"))) << edited.output.toStdString();
+}
+
+} // namespace m350::test
