@@ -43,13 +43,18 @@ inline config::MachineConfig fanucMachine() {
     return config;
 }
 
-inline config::MachineConfig bundledMachine(const std::string& name = config::kDefaultMachine) {
-    auto loaded = config::loadMachineFolder(config::bundledMachinesDirectory() + "/" + name);
+// A machine folder loaded, or (a test failure said) the plain M350.
+inline config::MachineConfig folderMachine(const std::string& folder) {
+    auto loaded = config::loadMachineFolder(folder);
     if (const auto* error = std::get_if<config::ConfigError>(&loaded)) {
-        ADD_FAILURE() << "cannot load bundled machine " << name << ": " << error->file << ": " << error->message;
+        ADD_FAILURE() << "cannot load machine folder " << folder << ": " << error->file << ": " << error->message;
         return m350Machine();
     }
     return std::get<config::MachineConfig>(std::move(loaded));
+}
+
+inline config::MachineConfig bundledMachine(const std::string& name = config::kDefaultMachine) {
+    return folderMachine(config::bundledMachinesDirectory() + "/" + name);
 }
 
 // Lines joined with '\n', so line k of an alarm is element k-1.

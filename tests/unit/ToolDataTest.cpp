@@ -45,14 +45,7 @@ fs::path machineFolder(const std::string& name, const std::string& params, const
     return folder;
 }
 
-config::MachineConfig load(const fs::path& folder) {
-    auto loaded = config::loadMachineFolder(folder.string());
-    if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
-        ADD_FAILURE() << error->file << ": " << error->message;
-        return m350Machine();
-    }
-    return std::get<config::MachineConfig>(std::move(loaded));
-}
+config::MachineConfig load(const fs::path& folder) { return folderMachine(folder.string()); }
 
 TEST(ToolData, TheParametersAndTheTablesZAreOneStoreWhoeverWrites) {
     controller::Controller c(load(machineFolder("one-store", "", kToolTable)), {});
