@@ -126,6 +126,17 @@ std::optional<Message> prepareExerciseMachine(const Exercise& exercise, const st
             return message("exercise_copy_failed", {(fs::path(exercise.folder) / name).string(), target.string(), error.message()});
         }
     }
+    // the Program page's 本地程序 disk: a program the trainee loads with NC读取 and runs with START
+    for (const std::string& name : exercise.programs) {
+        fs::create_directories(target / "programs", error);
+        if (!error) {
+            fs::copy_file(fs::path(exercise.folder) / name, target / "programs" / name, fs::copy_options::overwrite_existing, error);
+        }
+        if (error) {
+            return message("exercise_copy_failed", {(fs::path(exercise.folder) / name).string(), (target / "programs").string(),
+                                                    error.message()});
+        }
+    }
     return std::nullopt;
 }
 
