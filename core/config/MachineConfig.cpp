@@ -162,7 +162,7 @@ void loadMachineToml(const fs::path& folder, MachineConfig& config) {
                     {"name", "name_zh", "dialect", "libraries", "libraries.g", "libraries.m", "libraries.other", "codes", "codes.*",
                      "io_links", "io_links.output", "io_links.input", "io_links.delay_ms", "io_links.inverted",
                      "magazine", "magazine.device", "magazine.capacity", "magazine.loading", "magazine.opening",
-                     "magazine.carried", "magazine.forks", "magazine.slide_travel", "magazine.fork_depth", "magazine.tolerance",
+                     "magazine.carried", "magazine.forks", "magazine.station", "magazine.slide_travel", "magazine.fork_depth", "magazine.tolerance",
                      "magazine.seconds_per_pocket", "magazine.settle_s", "magazine.clamp_ms",
                      "magazine.in_position_input", "magazine.select_outputs", "magazine.strobe_output",
                      "magazine.pockets", "magazine.slide_s", "magazine.slide_output", "magazine.at_spindle_input",

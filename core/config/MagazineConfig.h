@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace m350::config {
@@ -24,10 +25,12 @@ struct MagazineConfig {
     // describe. Empty: where params 830+/850+/870+ say at power-on (a machine whose parameters are
     // right). A training exercise sets them so that a wrong parameter misses the fork.
     std::vector<std::array<double, 3>> forks;
+    std::optional<std::array<double, 3>> station; // servo-disc: nose X Y Z with a tool seated at the station
 
     // multi-head (多工序, M350 type 1): param 801 heads (at most 4), lowered by the outputs of
     // params 777, 780, 783, 786; a head comes down only with Z at or above param 806.
     // servo-disc (圆盘, M350 type 4): the station is params 808/809 (X Y) and 807 (nose Z with a
+    // tool seated), or where `station` says it stands (the iron, as forks above);
     // tool seated); pockets = param 801. The drive takes the pocket number in binary on
     // select_outputs (bit 0 first), starts on strobe_output and reports in_position_input.
     // umbrella (斗笠式, FANUC): pockets, change_xy (default: reference point 3), grip Z = reference

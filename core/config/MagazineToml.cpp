@@ -90,6 +90,17 @@ void readDisc(const toml::table& t, MagazineConfig& out) {
         }
     }
     out.strobeOutput = pin(t, "strobe_output", machine::kOutputCount);
+    if (const toml::node* station = t.get("station")) {
+        const toml::array* xyz = station->as_array();
+        std::array<double, 3> at{};
+        for (std::size_t i = 0; xyz && xyz->size() == 3 && i < 3; ++i) {
+            at[i] = xyz->get(i)->value<double>().value_or(NAN);
+        }
+        if (!xyz || xyz->size() != 3 || !std::isfinite(at[0]) || !std::isfinite(at[1]) || !std::isfinite(at[2])) {
+            throw Invalid{"[magazine] station must be the change station's [X, Y, Z], e.g. station = [650, 20, -85]"};
+        }
+        out.station = at;
+    }
     if (out.selectOutputs.empty() || out.strobeOutput == 0 || out.inPositionInput == 0) {
         throw Invalid{message("config_magazine_disc_needs")};
     }

@@ -80,7 +80,8 @@ void MagazineDriver::buildDisc() {
     const config::MagazineConfig& m = context_.config.magazine;
     const params::ParameterTable& p = context_.config.parameters;
     devices::ServoDisc::Geometry g;
-    g.station = Eigen::Vector3d(p.get(param::kChangeFrontX), p.get(param::kChangeFrontY), p.get(param::kChangeZDown));
+    g.station = m.station ? Eigen::Vector3d((*m.station)[0], (*m.station)[1], (*m.station)[2])
+                          : Eigen::Vector3d(p.get(param::kChangeFrontX), p.get(param::kChangeFrontY), p.get(param::kChangeZDown));
     g.pockets = std::clamp(saturatingInt(p.get(param::kMagazineCapacity)), 1, 20);
     g.forkDepth = m.forkDepth;
     g.tolerance = m.tolerance;

@@ -100,6 +100,7 @@ struct Exercise {
     std::map<int, double> parameters; // written into params.toml
     std::vector<LineChange> lines;
     std::vector<std::string> files; // of the exercise folder, copied into the machine folder
+    std::vector<std::string> programs; // of the exercise folder, copied into its programs/ (本地程序)
     std::vector<ToolBreakage> breaks;
     std::vector<InjectedFault> faults;
     std::vector<Check> checks;

@@ -318,7 +318,7 @@ Exercise readExercise(const fs::path& folder, const fs::path& machinesFolder) {
     } catch (const toml::parse_error& e) {
         in.refuse(e.source(), message("exercise_bad_toml", {std::string(e.description())}));
     }
-    in.onlyKeys(root, {"level", "time_limit", "machine", "title", "task", "hints", "start", "parameters", "lines", "files",
+    in.onlyKeys(root, {"level", "time_limit", "machine", "title", "task", "hints", "start", "parameters", "lines", "files", "programs",
                        "breaks", "faults", "checks"},
                 "exercise.toml");
     const toml::source_region top{{1, 1}, {1, 1}, nullptr};
@@ -382,20 +382,26 @@ Exercise readExercise(const fs::path& folder, const fs::path& machinesFolder) {
             exercise.lines.push_back(std::move(change));
         });
     }
-    if (const toml::node* copied = root.get("files")) {
+    auto readCopied = [&](const char* key, std::vector<std::string>& into) {
+        const toml::node* copied = root.get(key);
+        if (!copied) {
+            return;
+        }
         const toml::array* names = copied->as_array();
         if (!names) {
-            in.refuse(copied->source(), message("exercise_not_text", {"files"}));
+            in.refuse(copied->source(), message("exercise_not_text", {key}));
         }
         for (const toml::node& name : *names) {
-            std::string copiedName = in.text(name, "files");
+            std::string copiedName = in.text(name, key);
             if (copiedName.find('/') != std::string::npos || copiedName.find("..") != std::string::npos ||
                 !fs::is_regular_file(folder / copiedName)) {
                 in.refuse(name.source(), message("exercise_no_file", {copiedName, folder.string()}));
             }
-            exercise.files.push_back(std::move(copiedName));
+            into.push_back(std::move(copiedName));
         }
-    }
+    };
+    readCopied("files", exercise.files);
+    readCopied("programs", exercise.programs);
     if (const toml::node* breaks = root.get("breaks")) {
         forEachTable(in, *breaks, "breaks", [&](const toml::table& t, const toml::source_region& where) {
             in.onlyKeys(t, {"tool", "short_by", "at"}, "breaks");

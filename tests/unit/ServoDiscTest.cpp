@@ -130,6 +130,25 @@ TEST(ServoDiscMachine, SameToolAndOutOfRangeChangeNothing) {
     }
 }
 
+// [magazine] station is where the iron stands: param 807 entered 10 mm too deep then drives the tool
+// being put away into its cup, where without it the station would follow the parameter.
+TEST(ServoDiscMachine, AStationKeptWhereItStandsCrashesAWrongCupHeight) {
+    config::MachineConfig config = bundledMachine(kDisc);
+    config.parameters.set(807, -95);
+    controller::Controller followed(config, {});
+    EXPECT_EQ(mdi(followed, "T3").status, controller::RunStatus::Ok);
+    config.magazine.station = std::array<double, 3>{650, 20, -85};
+    controller::Controller c(config, {});
+    controller::RunReport r = mdi(c, "T3");
+    ASSERT_TRUE(r.alarm) << "no crash";
+    EXPECT_EQ(r.alarm->code, AlarmCode::Crash);
+    config.parameters.set(807, -85);
+    controller::Controller right(config, {});
+    r = mdi(right, "T3");
+    ASSERT_EQ(r.status, controller::RunStatus::Ok) << (r.alarm ? r.alarm->message : "");
+    EXPECT_EQ(r.tool, 3);
+}
+
 // The machine's slib-g.nc with one line made wrong, carried by the program file after "T3".
 ProgramRun changeWith(const std::string& right, const std::string& wrong, controller::RunSettings settings = {}) {
     std::string program = "T3\nM30\n" + withLine(shippedLibrary(kDisc), right, wrong);
