@@ -97,7 +97,7 @@ void readDisc(const toml::table& t, MagazineConfig& out) {
             at[i] = xyz->get(i)->value<double>().value_or(NAN);
         }
         if (!xyz || xyz->size() != 3 || !std::isfinite(at[0]) || !std::isfinite(at[1]) || !std::isfinite(at[2])) {
-            throw Invalid{"[magazine] station must be the change station's [X, Y, Z], e.g. station = [650, 20, -85]"};
+            throw Invalid{message("config_magazine_station")};
         }
         out.station = at;
     }
