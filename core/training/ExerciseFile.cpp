@@ -1,9 +1,9 @@
 #include "core/training/ExerciseFile.h"
 
-#include "core/common/Alarm.h"
+#include "core/training/CheckToml.h"
+#include "core/training/ExerciseTomlReader.h"
+
 #include "core/common/ResourceDirectory.h"
-#include "core/files/MachineFileRead.h"
-#include "core/files/Toml.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,241 +27,6 @@ std::string ExerciseError::where() const {
 }
 
 namespace {
-
-struct ExerciseRefusal {
-    ExerciseError error;
-};
-
-// Reads exercise.toml's tables; every refusal throws ExerciseRefusal at the node concerned.
-class ExerciseTomlReader {
-public:
-    explicit ExerciseTomlReader(std::string file) : file_(std::move(file)) {}
-
-    [[noreturn]] void refuse(const toml::source_region& where, Message words) const {
-        ExerciseRefusal refusal;
-        refusal.error.place.file = file_;
-        refusal.error.place.line = static_cast<int>(where.begin.line);
-        refusal.error.place.column = static_cast<int>(where.begin.column);
-        refusal.error.words = std::move(words);
-        throw refusal;
-    }
-    [[noreturn]] void refuseFile(Message words) const { refuse(toml::source_region{}, std::move(words)); }
-
-    // Every key of `table` is one of `known` (a typo in an exercise is a check that never runs).
-    void onlyKeys(const toml::table& table, std::initializer_list<std::string_view> known, const std::string& in) const {
-        for (auto&& [key, value] : table) {
-            if (std::find(known.begin(), known.end(), key.str()) == known.end()) {
-                std::string list;
-                for (std::string_view name : known) {
-                    list += (list.empty() ? "" : ", ") + std::string(name);
-                }
-                refuse(key.source(), message("exercise_unknown_key", {std::string(key.str()), in, list}));
-            }
-        }
-    }
-
-    const toml::node& required(const toml::table& table, std::string_view key, const toml::source_region& where) const {
-        const toml::node* node = table.get(key);
-        if (!node) {
-            refuse(where, message("exercise_missing_key", {std::string(key)}));
-        }
-        return *node;
-    }
-
-    double number(const toml::node& node, std::string_view key) const {
-        std::optional<double> value = node.value<double>();
-        if (!value || !std::isfinite(*value)) {
-            refuse(node.source(), message("exercise_not_a_number", {std::string(key)}));
-        }
-        return *value;
-    }
-
-    int whole(const toml::node& node, std::string_view key, int low, int high) const {
-        std::optional<std::int64_t> value = node.value_exact<std::int64_t>();
-        if (!value || *value < low || *value > high) {
-            refuse(node.source(), message("exercise_not_whole", {std::string(key), std::to_string(low), std::to_string(high)}));
-        }
-        return static_cast<int>(*value);
-    }
-
-    std::string text(const toml::node& node, std::string_view key) const {
-        std::optional<std::string> value = node.value_exact<std::string>();
-        if (!value) {
-            refuse(node.source(), message("exercise_not_text", {std::string(key)}));
-        }
-        return *value;
-    }
-
-    const toml::table& table(const toml::node& node, std::string_view key) const {
-        const toml::table* t = node.as_table();
-        if (!t) {
-            refuse(node.source(), message("exercise_not_table", {std::string(key)}));
-        }
-        return *t;
-    }
-
-    // [title] zh_CN = "..." en = "...": both, never one alone (every word a trainee sees is in both).
-    LocalText localText(const toml::node& node, std::string_view key) const {
-        const toml::table& t = table(node, key);
-        onlyKeys(t, {"zh_CN", "en"}, std::string(key));
-        return {text(required(t, "zh_CN", node.source()), std::string(key) + ".zh_CN"),
-                text(required(t, "en", node.source()), std::string(key) + ".en")};
-    }
-
-    std::vector<LocalText> hints(const toml::node& node) const {
-        const toml::table& t = table(node, "hints");
-        onlyKeys(t, {"zh_CN", "en"}, "hints");
-        const toml::array* zh = required(t, "zh_CN", node.source()).as_array();
-        const toml::array* en = required(t, "en", node.source()).as_array();
-        if (!zh || !en || zh->size() != en->size()) {
-            refuse(node.source(), message("exercise_hints_pair"));
-        }
-        std::vector<LocalText> out;
-        for (std::size_t i = 0; i < zh->size(); ++i) {
-            out.push_back({text(*zh->get(i), "hints.zh_CN"), text(*en->get(i), "hints.en")});
-        }
-        return out;
-    }
-
-    const std::string& file() const { return file_; }
-
-private:
-    std::string file_;
-};
-
-const std::vector<std::pair<std::string_view, Check::Kind>>& checkKinds() {
-    static const std::vector<std::pair<std::string_view, Check::Kind>> kinds{
-        {"spindle_tool", Check::Kind::SpindleTool}, {"pocket_tool", Check::Kind::PocketTool},
-        {"no_alarm", Check::Kind::NoAlarm},         {"alarm", Check::Kind::Alarm},
-        {"no_crash", Check::Kind::NoCrash},         {"parameter", Check::Kind::Parameter},
-        {"tool_offset", Check::Kind::ToolOffset},   {"variable", Check::Kind::Variable},
-        {"output", Check::Kind::Output},            {"responded", Check::Kind::Responded},
-        {"file_line", Check::Kind::FileLine},       {"finished", Check::Kind::Finished},
-        {"time_used", Check::Kind::TimeUsed},
-    };
-    return kinds;
-}
-
-// The alarm codes a check may name (alarmKey's words).
-bool knownAlarmCode(std::string_view code) {
-    for (int c = 0; c <= static_cast<int>(AlarmCode::RightsLimited); ++c) {
-        if (alarmKey(static_cast<AlarmCode>(c)) == code) {
-            return true;
-        }
-    }
-    return false;
-}
-
-Check readCheck(const ExerciseTomlReader& in, const toml::table& t, const toml::source_region& where,
-                const fs::path& machineFolder) {
-    Check check;
-    check.place = {in.file(), static_cast<int>(where.begin.line), static_cast<int>(where.begin.column)};
-    check.id = in.text(in.required(t, "id", where), "id");
-    const toml::node& kindNode = in.required(t, "kind", where);
-    const std::string kind = in.text(kindNode, "kind");
-    const auto& kinds = checkKinds();
-    auto found = std::find_if(kinds.begin(), kinds.end(), [&](const auto& k) { return k.first == kind; });
-    if (found == kinds.end()) {
-        std::string list;
-        for (const auto& k : kinds) {
-            list += (list.empty() ? "" : ", ") + std::string(k.first);
-        }
-        in.refuse(kindNode.source(), message("exercise_unknown_check", {kind, list}));
-    }
-    check.kind = found->second;
-    check.why = in.localText(in.required(t, "why", where), "why");
-    using K = Check::Kind;
-    auto numberOf = [&](std::string_view key, int low, int high) { check.number = in.whole(in.required(t, key, where), key, low, high); };
-    auto expectNumber = [&] {
-        check.expect = in.number(in.required(t, "expect", where), "expect");
-        if (const toml::node* tolerance = t.get("tolerance")) {
-            check.tolerance = std::abs(in.number(*tolerance, "tolerance"));
-        }
-    };
-    auto alarmCode = [&](bool requiredCode) {
-        const toml::node* code = t.get("code");
-        if (!code && !requiredCode) {
-            return;
-        }
-        const toml::node& node = code ? *code : in.required(t, "code", where);
-        check.code = in.text(node, "code");
-        if (!knownAlarmCode(check.code)) {
-            in.refuse(node.source(), message("exercise_unknown_alarm_code", {check.code}));
-        }
-    };
-    switch (check.kind) {
-    case K::SpindleTool:
-        in.onlyKeys(t, {"id", "kind", "why", "expect"}, "checks");
-        check.expect = in.whole(in.required(t, "expect", where), "expect", 0, 9999);
-        break;
-    case K::PocketTool:
-        in.onlyKeys(t, {"id", "kind", "why", "pocket", "expect"}, "checks");
-        check.number = in.whole(in.required(t, "pocket", where), "pocket", 1, 999);
-        check.expect = in.whole(in.required(t, "expect", where), "expect", 0, 9999);
-        break;
-    case K::NoAlarm:
-    case K::NoCrash:
-        in.onlyKeys(t, {"id", "kind", "why"}, "checks");
-        break;
-    case K::Alarm:
-        in.onlyKeys(t, {"id", "kind", "why", "code"}, "checks");
-        alarmCode(true);
-        break;
-    case K::Parameter:
-        in.onlyKeys(t, {"id", "kind", "why", "number", "expect", "tolerance"}, "checks");
-        numberOf("number", 0, 99999);
-        expectNumber();
-        break;
-    case K::ToolOffset:
-        in.onlyKeys(t, {"id", "kind", "why", "tool", "expect", "tolerance"}, "checks");
-        numberOf("tool", 1, 9999);
-        expectNumber();
-        break;
-    case K::Variable:
-        in.onlyKeys(t, {"id", "kind", "why", "number", "expect", "tolerance"}, "checks");
-        numberOf("number", 1, 99999);
-        expectNumber();
-        break;
-    case K::Output:
-        in.onlyKeys(t, {"id", "kind", "why", "number", "expect"}, "checks");
-        numberOf("number", 1, 99);
-        check.expect = in.whole(in.required(t, "expect", where), "expect", 0, 1);
-        break;
-    case K::Responded:
-        in.onlyKeys(t, {"id", "kind", "why", "key", "within", "code"}, "checks");
-        check.key = in.text(in.required(t, "key", where), "key");
-        check.within = in.number(in.required(t, "within", where), "within");
-        alarmCode(true);
-        break;
-    case K::FileLine: {
-        in.onlyKeys(t, {"id", "kind", "why", "file", "line", "text"}, "checks");
-        const toml::node& fileNode = in.required(t, "file", where);
-        check.file = in.text(fileNode, "file");
-        if (fs::path(check.file).is_absolute() || check.file.find("..") != std::string::npos ||
-            !fs::is_regular_file(machineFolder / check.file)) {
-            in.refuse(fileNode.source(), message("exercise_no_machine_file", {check.file, machineFolder.string()}));
-        }
-        check.line = in.whole(in.required(t, "line", where), "line", 1, 1000000);
-        check.text = in.text(in.required(t, "text", where), "text");
-        break;
-    }
-    case K::Finished:
-        in.onlyKeys(t, {"id", "kind", "why", "program", "expect"}, "checks");
-        if (const toml::node* program = t.get("program")) {
-            check.file = in.text(*program, "program");
-        }
-        check.expect = 1;
-        if (const toml::node* times = t.get("expect")) {
-            check.expect = in.whole(*times, "expect", 1, 1000000);
-        }
-        break;
-    case K::TimeUsed:
-        in.onlyKeys(t, {"id", "kind", "why", "within"}, "checks");
-        check.within = in.number(in.required(t, "within", where), "within");
-        break;
-    }
-    return check;
-}
 
 InjectedFault readFault(const ExerciseTomlReader& in, const toml::table& t, const toml::source_region& where) {
     in.onlyKeys(t, {"at", "after", "input", "fault", "level", "seconds"}, "faults");
@@ -308,16 +73,7 @@ void forEachTable(const ExerciseTomlReader& in, const toml::node& node, std::str
 Exercise readExercise(const fs::path& folder, const fs::path& machinesFolder) {
     const fs::path file = folder / kExerciseFileName;
     ExerciseTomlReader in(file.string());
-    std::string text;
-    if (auto why = files::readMachineFile(file, text)) {
-        in.refuseFile(message("exercise_unreadable", {*why}));
-    }
-    toml::table root;
-    try {
-        root = files::parseTomlText(text, file.string());
-    } catch (const toml::parse_error& e) {
-        in.refuse(e.source(), message("exercise_bad_toml", {std::string(e.description())}));
-    }
+    const toml::table root = in.parse();
     in.onlyKeys(root, {"level", "time_limit", "machine", "title", "task", "hints", "start", "parameters", "lines", "files", "programs",
                        "breaks", "faults", "checks"},
                 "exercise.toml");
@@ -432,15 +188,6 @@ Exercise readExercise(const fs::path& folder, const fs::path& machinesFolder) {
 }
 
 } // namespace
-
-std::string_view checkKindName(Check::Kind kind) {
-    for (const auto& [name, k] : checkKinds()) {
-        if (k == kind) {
-            return name;
-        }
-    }
-    return "unknown";
-}
 
 std::variant<Exercise, ExerciseError> loadExercise(const std::string& folder, const std::string& machinesFolder) {
     try {
