@@ -27,6 +27,7 @@ QPushButton* reviewButton(QWidget* parent, const char* name) {
 
 ReviewBar::ReviewBar(ReviewPlayback& playback, QWidget* parent) : QWidget(parent), playback_(playback) {
     setObjectName("reviewBar");
+    setAttribute(Qt::WA_StyledBackground);
     timer_ = new QTimer(this);
     timer_->setInterval(kTickMs);
     connect(timer_, &QTimer::timeout, this, &ReviewBar::tick);

@@ -19,7 +19,7 @@
 #include <QEvent>
 #include <QJsonArray>
 #include <QKeyEvent>
-#include <QStackedWidget>
+#include <QGridLayout>
 #include <QStringList>
 #include <QVBoxLayout>
 
@@ -93,13 +93,20 @@ std::unique_ptr<ReviewWindow> ReviewWindow::open(const Request& request, QString
     auto* column = new QVBoxLayout(central);
     column->setContentsMargins(0, 0, 0, 0);
     column->setSpacing(0);
-    w.stack_ = new QStackedWidget(central);
-    w.stack_->addWidget(w.panel_.get());
-    w.program_ = new RunningProgramView(dialect, w.machineFolder_, w.stack_);
-    w.stack_->addWidget(w.program_);
-    w.machine_ = new MachineView(w.stack_);
-    w.stack_->addWidget(w.machine_);
-    column->addWidget(w.stack_, 1);
+    // the views lie over the panel, which is never hidden: a page acts on what it shows (the MDI
+    // page takes typed text only while its editor is visible), as it did for the trainee
+    w.screen_ = new QWidget(central);
+    auto* layers = new QGridLayout(w.screen_);
+    layers->setContentsMargins(0, 0, 0, 0);
+    layers->addWidget(w.panel_.get(), 0, 0);
+    w.program_ = new RunningProgramView(dialect, w.machineFolder_, w.screen_);
+    layers->addWidget(w.program_, 0, 0);
+    w.machine_ = new MachineView(w.screen_);
+    w.machine_->setAutoFillBackground(true);
+    layers->addWidget(w.machine_, 0, 0);
+    w.program_->hide();
+    w.machine_->hide();
+    column->addWidget(w.screen_, 1);
     w.setCentralWidget(central);
 
     settle(*w.session_);
@@ -129,8 +136,19 @@ void ReviewWindow::nextView() {
 }
 
 QString ReviewWindow::shown() const {
-    QWidget* current = stack_->currentWidget();
-    return current == program_ ? QStringLiteral("program") : current == machine_ ? QStringLiteral("machine") : QStringLiteral("panel");
+    return !program_->isHidden() ? QStringLiteral("program") : !machine_->isHidden() ? QStringLiteral("machine") : QStringLiteral("panel");
+}
+
+void ReviewWindow::showOver(QWidget* view) {
+    for (QWidget* over : {static_cast<QWidget*>(program_), static_cast<QWidget*>(machine_)}) {
+        if (over != view && !over->isHidden()) {
+            over->hide();
+        }
+    }
+    if (view && view->isHidden()) {
+        view->show();
+        view->raise();
+    }
 }
 
 void ReviewWindow::follow() {
@@ -139,7 +157,7 @@ void ReviewWindow::follow() {
         return;
     }
     program_->render(*snapshot);
-    QWidget* show = panel_.get();
+    QWidget* show = nullptr;
     if (view_ == View::Machine) {
         show = machine_;
     } else if (view_ == View::Follow && inRun(*snapshot)) {
@@ -148,7 +166,7 @@ void ReviewWindow::follow() {
     if (show == machine_) {
         machine_->setContent(GraphicsPage::contentOf(*snapshot));
     }
-    stack_->setCurrentWidget(show);
+    showOver(show);
     if (playback_->finished() && !verdict_ && playback_->error().isEmpty()) {
         verdict_ = gradePlayedAttempt(*session_, exercise_, attempt_, startDisplay_, machineFolder_);
         retranslate();

@@ -13,7 +13,6 @@
 #include <memory>
 #include <optional>
 
-class QStackedWidget;
 
 namespace m350::ui {
 
@@ -73,6 +72,7 @@ protected:
 private:
     ReviewWindow(training::Exercise exercise, Attempt attempt, Language* language);
     void retranslate();
+    void showOver(QWidget* view); // nullptr: the panel
     QString viewName() const;
     MessageLanguage spokenLanguage() const;
 
@@ -84,7 +84,7 @@ private:
     std::unique_ptr<MachineSession> session_;
     std::unique_ptr<MainWindow> panel_;
     std::unique_ptr<ReviewPlayback> playback_;
-    QStackedWidget* stack_ = nullptr;
+    QWidget* screen_ = nullptr; // the panel, the program view or the machine view over it
     RunningProgramView* program_ = nullptr;
     MachineView* machine_ = nullptr;
     ReviewBar* bar_ = nullptr;

@@ -23,6 +23,7 @@ constexpr auto kRunningMdiName = "MDI"; // what a run of MDI lines names its fil
 RunningProgramView::RunningProgramView(const gcode::Dialect& dialect, QString machineFolder, QWidget* parent)
     : QWidget(parent), machineFolder_(std::move(machineFolder)) {
     setObjectName("reviewProgramView");
+    setAttribute(Qt::WA_StyledBackground); // it lies over the panel: the style sheet's background hides it
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(4, 2, 4, 2);
     column->setSpacing(2);
