@@ -19,6 +19,7 @@
 #include <QEvent>
 #include <QJsonArray>
 #include <QKeyEvent>
+#include <QMenu>
 #include <QGridLayout>
 #include <QStringList>
 #include <QVBoxLayout>
@@ -212,7 +213,8 @@ bool ReviewWindow::eventFilter(QObject* watched, QEvent* event) {
     const bool keyEvent = type == QEvent::KeyPress || type == QEvent::KeyRelease || type == QEvent::ShortcutOverride;
     const bool mouseEvent = type == QEvent::MouseButtonPress || type == QEvent::MouseButtonRelease ||
                             type == QEvent::MouseButtonDblClick || type == QEvent::Wheel;
-    if ((!keyEvent && !mouseEvent) || QApplication::activeWindow() != this) {
+    // the panel's menu (its language) keeps its keys
+    if ((!keyEvent && !mouseEvent) || QApplication::activeWindow() != this || qobject_cast<QMenu*>(watched)) {
         return QMainWindow::eventFilter(watched, event);
     }
     if (keyEvent) {
