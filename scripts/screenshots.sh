@@ -31,4 +31,10 @@ for lang in zh_CN en; do
             --replay "docs/training/$shot.jsonl" --screenshot "docs/screenshots/training-$shot-$lang.png" 2>/dev/null
     done
 done
+# a trainer's review of the correct pocket-taught-off attempt, mid tool change (O20000 on slib-g.nc)
+for lang in zh_CN en; do
+    xvfb-run -a "$BUILD/app/m350-hmi" --lang "$lang" --review tests/training/attempts/pocket-taught-off/correct.jsonl \
+        --exercise resources/exercises/pocket-taught-off --review-until 15 \
+        --screenshot "docs/screenshots/review-$lang.png" 2>/dev/null
+done
 ls docs/screenshots

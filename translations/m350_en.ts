@@ -2269,6 +2269,135 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::ReviewBar</name>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
+    </message>
+    <message>
+        <source>End of the attempt</source>
+        <translation>End of the attempt</translation>
+    </message>
+    <message>
+        <source>Next: %1 s hand in</source>
+        <translation>Next: %1 s hand in</translation>
+    </message>
+    <message>
+        <source>Next: %1 s %2</source>
+        <translation>Next: %1 s %2</translation>
+    </message>
+    <message>
+        <source>key %1</source>
+        <translation>key %1</translation>
+    </message>
+    <message>
+        <source>key %1 held</source>
+        <translation>key %1 held</translation>
+    </message>
+    <message>
+        <source>key %1 let go</source>
+        <translation>key %1 let go</translation>
+    </message>
+    <message>
+        <source>types "%1"</source>
+        <translation>types "%1"</translation>
+    </message>
+    <message>
+        <source>handwheel %1 detents</source>
+        <translation>handwheel %1 detents</translation>
+    </message>
+    <message>
+        <source>page %1</source>
+        <translation>page %1</translation>
+    </message>
+    <message>
+        <source>fault IN%1 %2</source>
+        <translation>fault IN%1 %2</translation>
+    </message>
+    <message>
+        <source>language %1</source>
+        <translation>language %1</translation>
+    </message>
+    <message>
+        <source>load %1</source>
+        <translation>load %1</translation>
+    </message>
+    <message>
+        <source>time passes</source>
+        <translation>time passes</translation>
+    </message>
+    <message>
+        <source>Pause (Space)</source>
+        <translation>Pause (Space)</translation>
+    </message>
+    <message>
+        <source>Play (Space)</source>
+        <translation>Play (Space)</translation>
+    </message>
+    <message>
+        <source>Block (.)</source>
+        <translation>Block (.)</translation>
+    </message>
+    <message>
+        <source>%1 (F8)</source>
+        <translation>%1 (F8)</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ReviewWindow</name>
+    <message>
+        <source>no folder for the attempt's machine: %1</source>
+        <translation>no folder for the attempt's machine: %1</translation>
+    </message>
+    <message>
+        <source>Follow the run</source>
+        <translation>Follow the run</translation>
+    </message>
+    <message>
+        <source>Machine view</source>
+        <translation>Machine view</translation>
+    </message>
+    <message>
+        <source>Panel</source>
+        <translation>Panel</translation>
+    </message>
+    <message>
+        <source>(no name)</source>
+        <translation>(no name)</translation>
+    </message>
+    <message>
+        <source>Review: %1 · %2</source>
+        <translation>Review: %1 · %2</translation>
+    </message>
+    <message>
+        <source>Handed in: passed</source>
+        <translation>Handed in: passed</translation>
+    </message>
+    <message>
+        <source>Handed in: failed (%1)</source>
+        <translation>Handed in: failed (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::RunningProgramView</name>
+    <message>
+        <source>No program has run yet</source>
+        <translation>No program has run yet</translation>
+    </message>
+    <message>
+        <source>%1: cannot be read</source>
+        <translation>%1: cannot be read</translation>
+    </message>
+    <message>
+        <source>%1   Line %2</source>
+        <translation>%1   Line %2</translation>
+    </message>
+    <message>
+        <source>%1   (not running)</source>
+        <translation>%1   (not running)</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::SessionWorker</name>
     <message>
         <source>No program loaded: load one on the Program page</source>

@@ -2269,6 +2269,135 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::ReviewBar</name>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 秒</translation>
+    </message>
+    <message>
+        <source>End of the attempt</source>
+        <translation>练习记录已放完</translation>
+    </message>
+    <message>
+        <source>Next: %1 s hand in</source>
+        <translation>下一步：%1 秒 交卷</translation>
+    </message>
+    <message>
+        <source>Next: %1 s %2</source>
+        <translation>下一步：%1 秒 %2</translation>
+    </message>
+    <message>
+        <source>key %1</source>
+        <translation>按键 %1</translation>
+    </message>
+    <message>
+        <source>key %1 held</source>
+        <translation>按住 %1</translation>
+    </message>
+    <message>
+        <source>key %1 let go</source>
+        <translation>松开 %1</translation>
+    </message>
+    <message>
+        <source>types "%1"</source>
+        <translation>输入“%1”</translation>
+    </message>
+    <message>
+        <source>handwheel %1 detents</source>
+        <translation>手轮 %1 格</translation>
+    </message>
+    <message>
+        <source>page %1</source>
+        <translation>页面 %1</translation>
+    </message>
+    <message>
+        <source>fault IN%1 %2</source>
+        <translation>故障 IN%1 %2</translation>
+    </message>
+    <message>
+        <source>language %1</source>
+        <translation>语言 %1</translation>
+    </message>
+    <message>
+        <source>load %1</source>
+        <translation>载入 %1</translation>
+    </message>
+    <message>
+        <source>time passes</source>
+        <translation>等待</translation>
+    </message>
+    <message>
+        <source>Pause (Space)</source>
+        <translation>暂停（空格）</translation>
+    </message>
+    <message>
+        <source>Play (Space)</source>
+        <translation>播放（空格）</translation>
+    </message>
+    <message>
+        <source>Block (.)</source>
+        <translation>单段（.）</translation>
+    </message>
+    <message>
+        <source>%1 (F8)</source>
+        <translation>%1（F8）</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ReviewWindow</name>
+    <message>
+        <source>no folder for the attempt's machine: %1</source>
+        <translation>无法为本次练习建立机床文件夹：%1</translation>
+    </message>
+    <message>
+        <source>Follow the run</source>
+        <translation>跟随运行</translation>
+    </message>
+    <message>
+        <source>Machine view</source>
+        <translation>图形显示</translation>
+    </message>
+    <message>
+        <source>Panel</source>
+        <translation>面板</translation>
+    </message>
+    <message>
+        <source>(no name)</source>
+        <translation>（无名）</translation>
+    </message>
+    <message>
+        <source>Review: %1 · %2</source>
+        <translation>回看：%1 · %2</translation>
+    </message>
+    <message>
+        <source>Handed in: passed</source>
+        <translation>交卷：通过</translation>
+    </message>
+    <message>
+        <source>Handed in: failed (%1)</source>
+        <translation>交卷：未通过（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::RunningProgramView</name>
+    <message>
+        <source>No program has run yet</source>
+        <translation>还没有程序运行</translation>
+    </message>
+    <message>
+        <source>%1: cannot be read</source>
+        <translation>%1: 无法读取</translation>
+    </message>
+    <message>
+        <source>%1   Line %2</source>
+        <translation>%1   行 %2</translation>
+    </message>
+    <message>
+        <source>%1   (not running)</source>
+        <translation>%1   （未运行）</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::SessionWorker</name>
     <message>
         <source>No program loaded: load one on the Program page</source>

@@ -2,6 +2,7 @@
 
 #include "app/sim/ByteLimitOption.h"
 #include "ui/pages/PageTable.h"
+#include "ui/replay/Replay.h"
 
 #include <CLI/CLI.hpp>
 
@@ -60,6 +61,16 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
                        "with --exercise: grade this recorded attempt without a window, exit 0 pass, 1 fail, 2 error")
             ->check(CLI::ExistingFile)
             ->needs(exercise);
+    CLI::Option* review =
+        app.add_option("--review", o.review,
+                       "with --exercise: a trainer's review of this recorded attempt on the exercise's machine, "
+                       "1x-50x, pause, one block at a time (Space, '.', '+', '-', F8 the view)")
+            ->check(CLI::ExistingFile)
+            ->needs(exercise);
+    app.add_option("--review-until", o.reviewUntil,
+                   "with --review and --screenshot or --state: play the attempt to this many seconds (default: its end)")
+        ->check(CLI::Range(0.0, ui::kMostReplaySeconds))
+        ->needs(review);
     app.add_option("--verdict", o.verdict, "with --attempt: write the verdict (JSON) here")->needs(attempt);
     CLI::Option* report = app.add_option("--class-report", o.classReport,
                                          "grade every attempt (*.jsonl) under this folder for a class report (with "

@@ -40,6 +40,10 @@ struct HmiOptions {
     std::string attempt;
     std::string verdict;
     std::string exam;
+    // --review ATTEMPT.jsonl with --exercise DIR: a trainer's review of the attempt (the review bar);
+    // headless, played to --review-until T s (default: its end) and rendered
+    std::string review;
+    std::optional<double> reviewUntil;
     // --class-report FOLDER: every attempt under it graded, --report-csv and --report-html written
     std::string classReport;
     std::string reportCsv;

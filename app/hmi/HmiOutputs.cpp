@@ -54,6 +54,10 @@ std::optional<QString> refusedOutput(const HmiOptions& o, const QString& machine
     if (!o.replay.empty()) {
         guarded.push_back({bilingual("the replay being played", "正在回放的录制文件"), o.replay, false});
     }
+    if (!o.review.empty()) {
+        guarded.push_back({bilingual("the attempt being reviewed", "正在回看的练习记录"), o.review, false});
+        guarded.push_back({bilingual("the exercise folder", "练习文件夹"), o.exercise, true});
+    }
     std::vector<std::pair<std::string, std::string>> outputs; // option, path
     for (const auto& [option, path] : {std::pair{"--state", &o.state}, {"--screenshot", &o.screenshot}, {"--record", &o.record}}) {
         if (!path->empty()) {

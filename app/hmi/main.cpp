@@ -1,6 +1,7 @@
 // m350-hmi: the desktop panel. Builds the session and the window, then either runs the event loop
 // or (with --screenshot / --replay / --state) renders in virtual time and exits.
 #include "app/hmi/GradeCommand.h"
+#include "app/hmi/ReviewCommand.h"
 #include "app/hmi/TrainingCommand.h"
 #include "app/hmi/HmiOptions.h"
 #include "app/hmi/HmiOutputs.h"
@@ -95,6 +96,10 @@ int main(int argc, char** argv) {
     }
     if (o.language == "zh_CN" && !language.fontProblem().isEmpty()) {
         std::fprintf(stderr, "%s\n", qPrintable(language.fontProblem()));
+    }
+    if (!o.review.empty()) {
+        app.setStyleSheet(ui::panelStyleSheet());
+        return hmi::reviewCommand(app, o, language);
     }
     if (o.training) {
         app.setStyleSheet(ui::panelStyleSheet());

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 
 #include <sys/stat.h>
@@ -27,7 +29,7 @@ ino_t inodeOf(const fs::path& file) {
 class ScratchFolderWrite : public testing::Test {
 protected:
     void SetUp() override {
-        root_ = fs::path(testing::TempDir()) / "scratch-folder-write";
+        root_ = fs::path(testing::TempDir()) / ("scratch-folder-write-" + std::to_string(::getpid())); // parallel runs apart
         fs::remove_all(root_);
         fs::create_directories(root_ / "scratch");
         fs::create_directories(root_ / "kept");

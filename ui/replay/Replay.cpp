@@ -214,6 +214,19 @@ std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QStri
     return actions;
 }
 
+QString refusedReplayLoad(MainWindow& window, const OperatorAction& action, const QString& path, const ReplayPlace& place) {
+    QStringList disks;
+    if (action.kind != OperatorAction::Kind::Load || onProgramDisk(window, action.name, &disks)) {
+        return {};
+    }
+    return QStringLiteral("%1:%2:%3: load \"%4\": a replay loads only a program the Program page shows on "
+                          "its disks (%5), links followed: refused")
+        .arg(path)
+        .arg(place.line)
+        .arg(place.column)
+        .arg(action.name, disks.join(QStringLiteral(", ")));
+}
+
 void settle(MachineSession& session) {
     session.sync();
     QCoreApplication::processEvents();
@@ -262,15 +275,9 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
             }
             QCoreApplication::processEvents();
         }
-        QStringList disks;
-        if (action.kind == OperatorAction::Kind::Load && !onProgramDisk(window, action.name, &disks)) {
-            const ReplayPlace place = i < places.size() ? places[i] : ReplayPlace{};
-            return QStringLiteral("%1:%2:%3: load \"%4\": a replay loads only a program the Program page shows on "
-                                  "its disks (%5), links followed: refused")
-                .arg(path)
-                .arg(place.line)
-                .arg(place.column)
-                .arg(action.name, disks.join(QStringLiteral(", ")));
+        if (QString refused = refusedReplayLoad(window, action, path, i < places.size() ? places[i] : ReplayPlace{});
+            !refused.isEmpty()) {
+            return refused;
         }
         if (layouts && readsLayout(action)) {
             window.renderHeld();

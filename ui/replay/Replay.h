@@ -61,6 +61,10 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
                    const QString& path = {}, const std::vector<ReplayPlace>& places = {},
                    ReplayLayout layout = ReplayLayout::WhenRead);
 
+// Why a replay may not play `action` (a `load` of a file the Program page does not show on one of
+// its disks, links followed), at `path`:line:column of `place`; empty when it may.
+QString refusedReplayLoad(MainWindow& window, const OperatorAction& action, const QString& path, const ReplayPlace& place);
+
 // Lets the session catch up and the window show the latest snapshot (for screenshots and tests).
 void settle(MachineSession& session);
 

@@ -29,35 +29,45 @@ QString said(const Message& words, const Language* language) { return QString::f
 
 } // namespace
 
-GradeOutcome gradeAttemptFile(const GradeRequest& request) {
-    GradeOutcome outcome;
+std::optional<AttemptAtExercise> readAttemptAtExercise(const GradeRequest& request, QString* error) {
     auto loaded = training::loadExercise(request.exerciseFolder.toStdString(), config::bundledMachinesDirectory());
-    if (auto* error = std::get_if<training::ExerciseError>(&loaded)) {
-        outcome.error = QString::fromStdString(error->where()) + QStringLiteral(": ") + said(error->words, request.language);
-        return outcome;
+    if (auto* refused = std::get_if<training::ExerciseError>(&loaded)) {
+        *error = QString::fromStdString(refused->where()) + QStringLiteral(": ") + said(refused->words, request.language);
+        return std::nullopt;
     }
     const training::Exercise& exercise = std::get<training::Exercise>(loaded);
     QFile tomlFile(QDir(request.exerciseFolder).filePath(QString::fromLatin1(training::kExerciseFileName)));
     if (!tomlFile.open(QIODevice::ReadOnly)) {
-        outcome.error = QStringLiteral("%1: cannot read: %2").arg(tomlFile.fileName(), tomlFile.errorString());
-        return outcome;
+        *error = QStringLiteral("%1: cannot read: %2").arg(tomlFile.fileName(), tomlFile.errorString());
+        return std::nullopt;
     }
     const QByteArray exerciseToml = tomlFile.readAll();
-    std::optional<Attempt> attempt = readAttempt(request.attemptFile, exerciseToml, request.examKey, &outcome.error);
+    std::optional<Attempt> attempt = readAttempt(request.attemptFile, exerciseToml, request.examKey, error);
     if (!attempt) {
-        return outcome;
+        return std::nullopt;
     }
     if (request.requireChain && !attempt->chained) {
-        outcome.error = QStringLiteral("%1: the attempt carries no hash chain: an exam takes only attempts the panel "
-                                       "recorded in the exam")
-                            .arg(request.attemptFile);
-        return outcome;
+        *error = QStringLiteral("%1: the attempt carries no hash chain: an exam takes only attempts the panel "
+                                "recorded in the exam")
+                     .arg(request.attemptFile);
+        return std::nullopt;
     }
     if (!attempt->exercise.isEmpty() && attempt->exercise != QString::fromStdString(exercise.name)) {
-        outcome.error = QStringLiteral("%1:1: the attempt is at exercise \"%2\", not \"%3\"")
-                            .arg(request.attemptFile, attempt->exercise, QString::fromStdString(exercise.name));
+        *error = QStringLiteral("%1:1: the attempt is at exercise \"%2\", not \"%3\"")
+                     .arg(request.attemptFile, attempt->exercise, QString::fromStdString(exercise.name));
+        return std::nullopt;
+    }
+    return AttemptAtExercise{exercise, std::move(*attempt)};
+}
+
+GradeOutcome gradeAttemptFile(const GradeRequest& request) {
+    GradeOutcome outcome;
+    std::optional<AttemptAtExercise> read = readAttemptAtExercise(request, &outcome.error);
+    if (!read) {
         return outcome;
     }
+    const training::Exercise& exercise = read->exercise;
+    const Attempt* attempt = &read->attempt;
     QTemporaryDir scratch;
     files::setScratchFolder(scratch.path().toStdString()); // thrown away after grading: nothing there is synced
     const QString folder = scratch.filePath(QStringLiteral("machine"));
@@ -78,37 +88,34 @@ GradeOutcome gradeAttemptFile(const GradeRequest& request) {
     settle(session);
     double start = 0.0;
     session.examine([&start](controller::Controller& controller) { start = controller.displayTime(); });
-    std::vector<OperatorAction> actions = attempt->actions;
-    std::vector<ReplayPlace> places = attempt->places;
-    injectFaults(exercise, actions, places);
-    const double end = attempt->timeUsed();
-    if (actions.empty() || actions.back().t < end) {
-        OperatorAction handIn;
-        handIn.t = end; // time passes to the hand-in: a fault or a run still going has its say
-        actions.push_back(handIn);
-        places.push_back({0, 1});
-    }
+    std::vector<ReplayPlace> places;
+    const std::vector<OperatorAction> actions = gradedActions(exercise, *attempt, &places);
     if (QString error = playReplay(window, session, actions, request.attemptFile, places); !error.isEmpty()) {
         outcome.error = error;
         return outcome;
     }
+    outcome.verdict = gradePlayedAttempt(session, exercise, *attempt, start, folder);
+    return outcome;
+}
+
+training::Verdict gradePlayedAttempt(MachineSession& session, const training::Exercise& exercise, const Attempt& attempt,
+                                     double startDisplay, const QString& folder) {
     training::AttemptFacts facts;
     session.examine([&](controller::Controller& controller) {
-        facts = training::factsFromController(controller, exercise, start, folder.toStdString());
+        facts = training::factsFromController(controller, exercise, startDisplay, folder.toStdString());
     });
-    for (const OperatorAction& action : attempt->actions) {
+    for (const OperatorAction& action : attempt.actions) {
         if (action.kind == OperatorAction::Kind::Key || action.kind == OperatorAction::Kind::KeyDown) {
             facts.keys.push_back({action.t, action.name.toStdString()});
         }
     }
-    facts.timeUsed = end;
+    facts.timeUsed = attempt.timeUsed();
     training::Verdict verdict = training::gradeAttempt(exercise, facts);
-    verdict.trainee = attempt->trainee.toStdString();
-    verdict.hintsUsed = attempt->hints;
-    verdict.timedOut = verdict.timedOut || attempt->timedOut;
+    verdict.trainee = attempt.trainee.toStdString();
+    verdict.hintsUsed = attempt.hints;
+    verdict.timedOut = verdict.timedOut || attempt.timedOut;
     verdict.passed = verdict.passed && !verdict.timedOut;
-    outcome.verdict = std::move(verdict);
-    return outcome;
+    return verdict;
 }
 
 std::optional<QString> refusedVerdictOutput(const QString& verdict, const QString& attempt, const QString& exerciseFolder) {

@@ -4,6 +4,7 @@
 #include "core/training/ExerciseMachine.h"
 #include "ui/actions/PanelKey.h"
 #include "ui/pages/PageId.h"
+#include "ui/training/AttemptFile.h"
 
 #include <algorithm>
 
@@ -92,6 +93,21 @@ void injectFaults(const training::Exercise& exercise, std::vector<OperatorAction
         actions.insert(at, faultAction(fault, t));
         places.insert(places.begin() + index, ReplayPlace{0, 1});
     }
+}
+
+std::vector<OperatorAction> gradedActions(const training::Exercise& exercise, const Attempt& attempt,
+                                          std::vector<ReplayPlace>* places) {
+    std::vector<OperatorAction> actions = attempt.actions;
+    *places = attempt.places;
+    injectFaults(exercise, actions, *places);
+    const double end = attempt.timeUsed();
+    if (actions.empty() || actions.back().t < end) {
+        OperatorAction handIn;
+        handIn.t = end;
+        actions.push_back(handIn);
+        places->push_back({0, 1});
+    }
+    return actions;
 }
 
 } // namespace m350::ui

@@ -1,0 +1,84 @@
+#include "app/hmi/ReviewCommand.h"
+
+#include "app/hmi/HmiOutputs.h"
+#include "core/training/Exam.h"
+#include "ui/i18n/Language.h"
+#include "ui/replay/Replay.h"
+#include "ui/training/ReviewBar.h"
+#include "ui/training/ReviewPlayback.h"
+#include "ui/training/ReviewWindow.h"
+
+#include <QApplication>
+#include <QBuffer>
+#include <QJsonDocument>
+
+#include <cstdio>
+#include <variant>
+
+namespace m350::hmi {
+
+namespace {
+
+int refuse(const QString& message) {
+    std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
+    return 2;
+}
+
+} // namespace
+
+int reviewCommand(QApplication& app, const HmiOptions& o, ui::Language& language) {
+    ui::ReviewWindow::Request request;
+    request.exerciseFolder = QString::fromStdString(o.exercise);
+    request.attemptFile = QString::fromStdString(o.review);
+    request.language = &language;
+    if (!o.exam.empty()) {
+        auto exam = training::loadExam(o.exam);
+        if (auto* error = std::get_if<training::ExerciseError>(&exam)) {
+            const MessageLanguage said = language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
+            return refuse(QString::fromStdString(error->where() + ": " + error->words.in(said)));
+        }
+        request.examKey = QByteArray::fromStdString(std::get<training::Exam>(exam).key);
+    }
+    if (auto refused = refusedOutput(o, QString::fromStdString(o.exercise))) {
+        return refuse(*refused);
+    }
+    QString error;
+    std::unique_ptr<ui::ReviewWindow> window = ui::ReviewWindow::open(request, &error);
+    if (!window) {
+        return refuse(error);
+    }
+    window->resize(o.width, o.height);
+    window->show();
+    if (!o.headlessRun()) {
+        return app.exec();
+    }
+    ui::ReviewPlayback& playback = window->playback();
+    const double until = o.reviewUntil.value_or(playback.end());
+    playback.play(until - playback.now());
+    window->follow();
+    window->bar()->retranslate();
+    ui::settle(window->session());
+    QCoreApplication::processEvents();
+    if (!playback.error().isEmpty()) {
+        return refuse(playback.error());
+    }
+    if (!o.screenshot.empty()) {
+        QByteArray png;
+        QBuffer buffer(&png);
+        buffer.open(QIODevice::WriteOnly);
+        if (!window->grab().save(&buffer, screenshotFormat(o.screenshot)->constData())) {
+            return refuse(QStringLiteral("--screenshot %1: the image could not be made").arg(QString::fromStdString(o.screenshot)));
+        }
+        if (auto failed = writeOutput(o.screenshot, png)) {
+            return refuse(QStringLiteral("--screenshot: %1").arg(*failed));
+        }
+    }
+    if (!o.state.empty()) {
+        if (auto failed = writeOutput(o.state, QJsonDocument(window->state()).toJson(QJsonDocument::Indented))) {
+            return refuse(QStringLiteral("--state: %1").arg(*failed));
+        }
+    }
+    return 0;
+}
+
+} // namespace m350::hmi
