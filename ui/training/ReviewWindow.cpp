@@ -18,6 +18,7 @@
 #include <QApplication>
 #include <QEvent>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QKeyEvent>
 #include <QMenu>
 #include <QGridLayout>
@@ -246,14 +247,10 @@ QJsonObject ReviewWindow::state() const {
     }
     if (verdict_) {
         out.insert(QStringLiteral("passed"), verdict_->passed);
-        QJsonArray checks;
-        for (const training::CheckResult& check : verdict_->checks) {
-            checks.append(QJsonObject{{QStringLiteral("id"), QString::fromStdString(check.id)},
-                                      {QStringLiteral("passed"), check.passed},
-                                      {QStringLiteral("measured"), QString::fromStdString(check.measured)},
-                                      {QStringLiteral("expected"), QString::fromStdString(check.expected)}});
-        }
-        out.insert(QStringLiteral("checks"), checks);
+        // the checks as the grader's --verdict writes them
+        out.insert(QStringLiteral("checks"), QJsonDocument::fromJson(QByteArray::fromStdString(training::verdictJson(*verdict_)))
+                                                 .object()
+                                                 .value(QStringLiteral("checks")));
     }
     return out;
 }
