@@ -1,5 +1,7 @@
 #include "app/hmi/GradeCommand.h"
 
+#include "app/hmi/ExamOption.h"
+
 #include "app/hmi/HmiOutputs.h"
 #include "ui/i18n/Language.h"
 #include "core/training/Exam.h"
@@ -14,28 +16,16 @@
 namespace m350::hmi {
 
 
-namespace {
-
-// The exam's key, or why the exam file is refused.
-std::optional<std::string> examKey(const HmiOptions& o, ui::Language& language, std::string* key) {
-    auto exam = training::loadExam(o.exam);
-    if (auto* error = std::get_if<training::ExerciseError>(&exam)) {
-        const MessageLanguage said = language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
-        return error->where() + ": " + error->words.in(said);
-    }
-    *key = std::get<training::Exam>(exam).key;
-    return std::nullopt;
-}
-
-} // namespace
 
 int classReportCommand(const HmiOptions& o, ui::Language& language) {
     std::string key;
     if (!o.exam.empty()) {
-        if (auto refused = examKey(o, language, &key)) {
+        training::Exam exam;
+        if (auto refused = readExamOption(o.exam, language, &exam)) {
             std::fprintf(stderr, "m350-hmi: %s\n", refused->c_str());
             return 2;
         }
+        key = exam.key;
     }
     const QString exercises = QString::fromStdString(o.exercises.empty() ? training::bundledExercisesDirectory() : o.exercises);
     const ui::ClassReport report = ui::gradeClass(QString::fromStdString(o.classReport), exercises, QByteArray::fromStdString(key),
@@ -77,12 +67,12 @@ int gradeCommand(const HmiOptions& o, ui::Language& language) {
     request.exerciseFolder = QString::fromStdString(o.exercise);
     request.attemptFile = QString::fromStdString(o.attempt);
     if (!o.exam.empty()) {
-        std::string key;
-        if (auto refused = examKey(o, language, &key)) {
+        training::Exam exam;
+        if (auto refused = readExamOption(o.exam, language, &exam)) {
             std::fprintf(stderr, "m350-hmi: %s\n", refused->c_str());
             return 2;
         }
-        request.examKey = QByteArray::fromStdString(key);
+        request.examKey = QByteArray::fromStdString(exam.key);
         request.requireChain = true;
     }
     request.language = &language;

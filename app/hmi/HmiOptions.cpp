@@ -63,10 +63,10 @@ HmiParse parseHmiCommandLine(int argc, char** argv) {
             ->needs(exercise);
     CLI::Option* review =
         app.add_option("--review", o.review,
-                       "with --exercise: a trainer's review of this recorded attempt on the exercise's machine, "
-                       "1x-50x, pause, one block at a time (Space, '.', '+', '-', F8 the view)")
-            ->check(CLI::ExistingFile)
-            ->needs(exercise);
+                       "a trainer's review of this recorded attempt on its exercise's machine (--exercise, else the "
+                       "one its first line names among --exercises), 1x-50x, pause, one block at a time (Space, '.', "
+                       "'+', '-', F8 the view)")
+            ->check(CLI::ExistingFile);
     app.add_option("--review-until", o.reviewUntil,
                    "with --review and --screenshot or --state: play the attempt to this many seconds (default: its end)")
         ->check(CLI::Range(0.0, ui::kMostReplaySeconds))

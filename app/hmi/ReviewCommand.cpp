@@ -1,5 +1,11 @@
 #include "app/hmi/ReviewCommand.h"
 
+#include "app/hmi/ExamOption.h"
+#include "core/training/ExerciseFile.h"
+#include "ui/training/AttemptFile.h"
+
+#include <QDir>
+
 #include "app/hmi/HmiOutputs.h"
 #include "core/training/Exam.h"
 #include "ui/i18n/Language.h"
@@ -29,17 +35,25 @@ int refuse(const QString& message) {
 int reviewCommand(QApplication& app, const HmiOptions& o, ui::Language& language) {
     ui::ReviewWindow::Request request;
     request.exerciseFolder = QString::fromStdString(o.exercise);
+    if (request.exerciseFolder.isEmpty()) {
+        const QString named = ui::attemptHeader(QString::fromStdString(o.review)).first;
+        if (named.isEmpty() || named.contains(QLatin1Char('/')) || named.contains(QStringLiteral(".."))) {
+            return refuse(QStringLiteral("--review %1 names no exercise on its first line: give --exercise")
+                              .arg(QString::fromStdString(o.review)));
+        }
+        request.exerciseFolder = QDir(QString::fromStdString(o.exercises.empty() ? training::bundledExercisesDirectory() : o.exercises))
+                                     .filePath(named);
+    }
     request.attemptFile = QString::fromStdString(o.review);
     request.language = &language;
     if (!o.exam.empty()) {
-        auto exam = training::loadExam(o.exam);
-        if (auto* error = std::get_if<training::ExerciseError>(&exam)) {
-            const MessageLanguage said = language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
-            return refuse(QString::fromStdString(error->where() + ": " + error->words.in(said)));
+        training::Exam exam;
+        if (auto refused = readExamOption(o.exam, language, &exam)) {
+            return refuse(QString::fromStdString(*refused));
         }
-        request.examKey = QByteArray::fromStdString(std::get<training::Exam>(exam).key);
+        request.examKey = QByteArray::fromStdString(exam.key);
     }
-    if (auto refused = refusedOutput(o, QString::fromStdString(o.exercise))) {
+    if (auto refused = refusedOutput(o, request.exerciseFolder)) {
         return refuse(*refused);
     }
     QString error;

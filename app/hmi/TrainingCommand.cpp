@@ -1,5 +1,7 @@
 #include "app/hmi/TrainingCommand.h"
 
+#include "app/hmi/ExamOption.h"
+
 #include "app/hmi/HmiOutputs.h"
 #include "core/training/Exam.h"
 #include "core/training/ExerciseFile.h"
@@ -95,12 +97,11 @@ int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& langua
         return failWith(QStringLiteral("--attempts %1: the folder cannot be made").arg(options.attemptsFolder));
     }
     if (!o.exam.empty()) {
-        auto exam = training::loadExam(o.exam);
-        if (auto* error = std::get_if<training::ExerciseError>(&exam)) {
-            const MessageLanguage said = language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
-            return failWith(QString::fromStdString(error->where() + ": " + error->words.in(said)));
+        training::Exam exam;
+        if (auto refused = readExamOption(o.exam, language, &exam)) {
+            return failWith(QString::fromStdString(*refused));
         }
-        options.exam = std::get<training::Exam>(exam);
+        options.exam = exam;
     }
     options.clock = o.headlessRun() ? ui::MachineSession::Clock::Manual : ui::MachineSession::Clock::RealTime;
     ui::TrainingWindow window(options);

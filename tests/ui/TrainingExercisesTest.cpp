@@ -238,3 +238,27 @@ TEST(TrainingExam, TheGraderRefusesAnUnchainedOrEditedAttempt) {
 }
 
 } // namespace m350::test
+
+namespace m350::test {
+
+// --review without --exercise opens the exercise the attempt's first line names (bundled).
+TEST(TrainingReviewCommand, FindsTheExerciseTheAttemptNames) {
+    QTemporaryDir dir;
+    const QString state = dir.filePath(QStringLiteral("state.json"));
+    const auto [status, output] =
+        hmiOutput({QStringLiteral("--lang"), QStringLiteral("en"), QStringLiteral("--review"),
+                   kAttempts + QStringLiteral("/pocket-taught-off/correct.jsonl"), QStringLiteral("--state"), state});
+    ASSERT_EQ(status, 0) << output.toStdString();
+    QFile file(state);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(QJsonDocument::fromJson(file.readAll()).object().value(QStringLiteral("passed")).toBool());
+    QFile unnamed(dir.filePath(QStringLiteral("unnamed.jsonl")));
+    ASSERT_TRUE(unnamed.open(QIODevice::WriteOnly));
+    unnamed.write("{\"t\":1,\"key\":\"START\"}\n");
+    unnamed.close();
+    const auto [refused, why] = hmiOutput({QStringLiteral("--review"), unnamed.fileName(), QStringLiteral("--state"), state});
+    EXPECT_EQ(refused, 2);
+    EXPECT_TRUE(why.contains(QStringLiteral("names no exercise"))) << why.toStdString();
+}
+
+} // namespace m350::test

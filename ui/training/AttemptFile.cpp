@@ -103,6 +103,21 @@ std::optional<Attempt> readAttempt(const QString& path, const QByteArray& exerci
     return attempt;
 }
 
+std::pair<QString, QString> attemptHeader(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        return {};
+    }
+    for (int i = 0; i < 5 && !file.atEnd(); ++i) { // past a comment or two, to the first object
+        ReplayLineProblem problem;
+        if (const std::optional<QJsonObject> object = readReplayObject(file.readLine(), &problem)) {
+            const QJsonObject header = object->value(QStringLiteral("attempt")).toObject();
+            return {header.value(QStringLiteral("exercise")).toString(), header.value(QStringLiteral("trainee")).toString()};
+        }
+    }
+    return {};
+}
+
 AttemptWriter::AttemptWriter(const QByteArray& exerciseToml, const QByteArray& key)
     : key_(key), previous_(attemptChainSeed(key, exerciseToml)) {}
 

@@ -7,6 +7,7 @@
 #include <QString>
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace m350::ui {
@@ -38,6 +39,10 @@ struct Attempt {
 // are hashed and some are not, is refused at its line. Errors name file:line:col.
 std::optional<Attempt> readAttempt(const QString& path, const QByteArray& exerciseToml, const QByteArray& key,
                                    QString* error);
+
+// The exercise and the trainee the attempt's first line names (empty when it names none), without
+// reading the rest: how a class report and a review find them.
+std::pair<QString, QString> attemptHeader(const QString& path);
 
 // Writes an attempt as it goes (the panel's training mode): each line hashed into the chain and
 // flushed at once, so that a crash loses at most the line being written.

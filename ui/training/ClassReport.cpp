@@ -42,23 +42,6 @@ QString failedChecks(const training::Verdict& verdict) {
     return ids.join(QLatin1Char(' '));
 }
 
-// The header line's exercise and trainee, without reading the rest.
-std::pair<QString, QString> headerOf(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        return {};
-    }
-    for (int i = 0; i < 5 && !file.atEnd(); ++i) {
-        ReplayLineProblem problem;
-        const std::optional<QJsonObject> object = readReplayObject(file.readLine(), &problem);
-        if (object) {
-            const QJsonObject header = object->value(QStringLiteral("attempt")).toObject();
-            return {header.value(QStringLiteral("exercise")).toString(), header.value(QStringLiteral("trainee")).toString()};
-        }
-    }
-    return {};
-}
-
 bool better(const ClassAttempt& a, const ClassAttempt& b) {
     if (a.verdict->passed != b.verdict->passed) {
         return a.verdict->passed;
@@ -102,7 +85,7 @@ ClassReport gradeClass(const QString& attemptsFolder, const QString& exercisesFo
     for (const QString& file : files) {
         ClassAttempt attempt;
         attempt.file = root.relativeFilePath(file);
-        auto [exercise, trainee] = headerOf(file);
+        auto [exercise, trainee] = attemptHeader(file);
         const QFileInfo info(file);
         if (trainee.isEmpty()) {
             const QString folder = QFileInfo(info.absolutePath()).canonicalFilePath();
