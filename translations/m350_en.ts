@@ -3109,6 +3109,33 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::AttemptFile</name>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1: cannot read: %2</translation>
+    </message>
+    <message>
+        <source>a line after the hand-in: the attempt ended on the line before</source>
+        <translation>a line after the hand-in: the attempt ended on the line before</translation>
+    </message>
+    <message>
+        <source>the line's hash does not follow the chain: the attempt was changed after it was recorded (or belongs to another exercise or exam)</source>
+        <translation>the line's hash does not follow the chain: the attempt was changed after it was recorded (or belongs to another exercise or exam)</translation>
+    </message>
+    <message>
+        <source>the line has no hash while the lines before it have: the attempt was changed after it was recorded</source>
+        <translation>the line has no hash while the lines before it have: the attempt was changed after it was recorded</translation>
+    </message>
+    <message>
+        <source>"attempt" names the exercise and the trainee on the first line only</source>
+        <translation>"attempt" names the exercise and the trainee on the first line only</translation>
+    </message>
+    <message>
+        <source>the hand-in's t must be a time not before the last action's (%1)</source>
+        <translation>the hand-in's t must be a time not before the last action's (%1)</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::AttemptGrader</name>
     <message>
         <source>--verdict %1 is the attempt it grades: refused, nothing written</source>
@@ -3117,6 +3144,25 @@
     <message>
         <source>--verdict %1 lies in the exercise folder %2: refused, nothing written</source>
         <translation>--verdict %1 lies in the exercise folder %2: refused, nothing written</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1: cannot read: %2</translation>
+    </message>
+    <message>
+        <source>%1: the attempt carries no hash chain: an exam takes only attempts the panel recorded in the exam</source>
+        <translation>%1: the attempt carries no hash chain: an exam takes only attempts the panel recorded in the exam</translation>
+    </message>
+    <message>
+        <source>%1:1: the attempt is at exercise "%2", not "%3"</source>
+        <translation>%1:1: the attempt is at exercise "%2", not "%3"</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ClassReport</name>
+    <message>
+        <source>%1: no exercise "%2" in %3</source>
+        <translation>%1: no exercise "%2" in %3</translation>
     </message>
 </context>
 <context>
@@ -3308,6 +3354,104 @@ STEP MPG</translation>
     <message>
         <source>Spindle</source>
         <translation>Spindle</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::OperatorAction</name>
+    <message>
+        <source>"t" (virtual time in seconds, &gt;= 0) is missing or not a number</source>
+        <translation>"t" (virtual time in seconds, &gt;= 0) is missing or not a number</translation>
+    </message>
+    <message>
+        <source>one action per line: found %1 besides "t"</source>
+        <translation>one action per line: found %1 besides "t"</translation>
+    </message>
+    <message>
+        <source>unknown key "%1"</source>
+        <translation>unknown key "%1"</translation>
+    </message>
+    <message>
+        <source>softkey must be 1-6 (F1-F6) or 7-12 (second row)</source>
+        <translation>softkey must be 1-6 (F1-F6) or 7-12 (second row)</translation>
+    </message>
+    <message>
+        <source>unknown page "%1" (one of: %2)</source>
+        <translation>unknown page "%1" (one of: %2)</translation>
+    </message>
+    <message>
+        <source>lang must be zh_CN or en</source>
+        <translation>lang must be zh_CN or en</translation>
+    </message>
+    <message>
+        <source>wheel axis must be X, Y, Z, A or B</source>
+        <translation>wheel axis must be X, Y, Z, A or B</translation>
+    </message>
+    <message>
+        <source>wheel step must be 1, 10 or 100</source>
+        <translation>wheel step must be 1, 10 or 100</translation>
+    </message>
+    <message>
+        <source>wheel seconds must be &gt;= 0</source>
+        <translation>wheel seconds must be &gt;= 0</translation>
+    </message>
+    <message>
+        <source>force input must be 1-24 (IN01-IN24)</source>
+        <translation>force input must be 1-24 (IN01-IN24)</translation>
+    </message>
+    <message>
+        <source>force fault must be stuck, slow, bouncing, pressed or none</source>
+        <translation>force fault must be stuck, slow, bouncing, pressed or none</translation>
+    </message>
+    <message>
+        <source>force level must be 0 or 1</source>
+        <translation>force level must be 0 or 1</translation>
+    </message>
+    <message>
+        <source>unknown action "%1" (one of: key, key_down, key_up, softkey, text, wheel, page, force, lang, load)</source>
+        <translation>unknown action "%1" (one of: key, key_down, key_up, softkey, text, wheel, page, force, lang, load)</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::Replay</name>
+    <message>
+        <source>a line holds one action, a JSON object {...}</source>
+        <translation>a line holds one action, a JSON object {...}</translation>
+    </message>
+    <message>
+        <source>'%1' closes nothing that is open</source>
+        <translation>'%1' closes nothing that is open</translation>
+    </message>
+    <message>
+        <source>text after the action's closing }: one action a line</source>
+        <translation>text after the action's closing }: one action a line</translation>
+    </message>
+    <message>
+        <source>unterminated string: the " opened here is not closed on this line</source>
+        <translation>unterminated string: the " opened here is not closed on this line</translation>
+    </message>
+    <message>
+        <source>missing '%1' at the end of the line (the '%2' at column %3 is not closed)</source>
+        <translation>missing '%1' at the end of the line (the '%2' at column %3 is not closed)</translation>
+    </message>
+    <message>
+        <source>expected {...}</source>
+        <translation>expected {...}</translation>
+    </message>
+    <message>
+        <source>t = %1 s is beyond the longest replay, %2 s (24 h) of virtual time</source>
+        <translation>t = %1 s is beyond the longest replay, %2 s (24 h) of virtual time</translation>
+    </message>
+    <message>
+        <source>t = %1 comes before the previous action's %2 (actions must be in time order)</source>
+        <translation>t = %1 comes before the previous action's %2 (actions must be in time order)</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1: cannot read: %2</translation>
+    </message>
+    <message>
+        <source>%1:%2:%3: load "%4": a replay loads only a program the Program page shows on its disks (%5), links followed: refused</source>
+        <translation>%1:%2:%3: load "%4": a replay loads only a program the Program page shows on its disks (%5), links followed: refused</translation>
     </message>
 </context>
 </TS>

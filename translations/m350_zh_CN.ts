@@ -3109,6 +3109,33 @@
     </message>
 </context>
 <context>
+    <name>m350::ui::AttemptFile</name>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1：无法读取：%2</translation>
+    </message>
+    <message>
+        <source>a line after the hand-in: the attempt ended on the line before</source>
+        <translation>交卷之后还有一行：练习记录应在上一行结束</translation>
+    </message>
+    <message>
+        <source>the line's hash does not follow the chain: the attempt was changed after it was recorded (or belongs to another exercise or exam)</source>
+        <translation>此行的校验值与前面的链不符：练习记录在录制后被改动过（或属于另一个练习或考试）</translation>
+    </message>
+    <message>
+        <source>the line has no hash while the lines before it have: the attempt was changed after it was recorded</source>
+        <translation>前面各行都有校验值而此行没有：练习记录在录制后被改动过</translation>
+    </message>
+    <message>
+        <source>"attempt" names the exercise and the trainee on the first line only</source>
+        <translation>"attempt" 只能在第一行写明练习和学员</translation>
+    </message>
+    <message>
+        <source>the hand-in's t must be a time not before the last action's (%1)</source>
+        <translation>交卷的 t 不能早于最后一个操作的时间（%1）</translation>
+    </message>
+</context>
+<context>
     <name>m350::ui::AttemptGrader</name>
     <message>
         <source>--verdict %1 is the attempt it grades: refused, nothing written</source>
@@ -3117,6 +3144,25 @@
     <message>
         <source>--verdict %1 lies in the exercise folder %2: refused, nothing written</source>
         <translation>--verdict %1 位于练习文件夹 %2 中：拒绝，未写入任何内容</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1：无法读取：%2</translation>
+    </message>
+    <message>
+        <source>%1: the attempt carries no hash chain: an exam takes only attempts the panel recorded in the exam</source>
+        <translation>%1：练习记录没有校验链：考试只接受面板在考试中录制的练习记录</translation>
+    </message>
+    <message>
+        <source>%1:1: the attempt is at exercise "%2", not "%3"</source>
+        <translation>%1:1：该练习记录属于练习 "%2"，不是 "%3"</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ClassReport</name>
+    <message>
+        <source>%1: no exercise "%2" in %3</source>
+        <translation>%1：%3 中没有练习 "%2"</translation>
     </message>
 </context>
 <context>
@@ -3308,6 +3354,104 @@ STEP MPG</source>
     <message>
         <source>Spindle</source>
         <translation>主轴</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::OperatorAction</name>
+    <message>
+        <source>"t" (virtual time in seconds, &gt;= 0) is missing or not a number</source>
+        <translation>缺少 "t"（虚拟时间，单位秒，&gt;= 0）或它不是数字</translation>
+    </message>
+    <message>
+        <source>one action per line: found %1 besides "t"</source>
+        <translation>每行只能有一个操作：除 "t" 外还有 %1 个</translation>
+    </message>
+    <message>
+        <source>unknown key "%1"</source>
+        <translation>未知的按键 "%1"</translation>
+    </message>
+    <message>
+        <source>softkey must be 1-6 (F1-F6) or 7-12 (second row)</source>
+        <translation>softkey 须为 1-6（F1-F6）或 7-12（第二排）</translation>
+    </message>
+    <message>
+        <source>unknown page "%1" (one of: %2)</source>
+        <translation>未知的页面 "%1"（可用：%2）</translation>
+    </message>
+    <message>
+        <source>lang must be zh_CN or en</source>
+        <translation>lang 须为 zh_CN 或 en</translation>
+    </message>
+    <message>
+        <source>wheel axis must be X, Y, Z, A or B</source>
+        <translation>手轮轴须为 X、Y、Z、A 或 B</translation>
+    </message>
+    <message>
+        <source>wheel step must be 1, 10 or 100</source>
+        <translation>手轮倍率须为 1、10 或 100</translation>
+    </message>
+    <message>
+        <source>wheel seconds must be &gt;= 0</source>
+        <translation>手轮转动时间须 &gt;= 0</translation>
+    </message>
+    <message>
+        <source>force input must be 1-24 (IN01-IN24)</source>
+        <translation>force 的输入口须为 1-24（IN01-IN24）</translation>
+    </message>
+    <message>
+        <source>force fault must be stuck, slow, bouncing, pressed or none</source>
+        <translation>force 的故障须为 stuck、slow、bouncing、pressed 或 none</translation>
+    </message>
+    <message>
+        <source>force level must be 0 or 1</source>
+        <translation>force 的电平须为 0 或 1</translation>
+    </message>
+    <message>
+        <source>unknown action "%1" (one of: key, key_down, key_up, softkey, text, wheel, page, force, lang, load)</source>
+        <translation>未知的操作 "%1"（可用：key、key_down、key_up、softkey、text、wheel、page、force、lang、load）</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::Replay</name>
+    <message>
+        <source>a line holds one action, a JSON object {...}</source>
+        <translation>每行一个操作，即一个 JSON 对象 {...}</translation>
+    </message>
+    <message>
+        <source>'%1' closes nothing that is open</source>
+        <translation>'%1' 没有可闭合的括号</translation>
+    </message>
+    <message>
+        <source>text after the action's closing }: one action a line</source>
+        <translation>操作的结束 } 之后还有文字：每行只能一个操作</translation>
+    </message>
+    <message>
+        <source>unterminated string: the " opened here is not closed on this line</source>
+        <translation>字符串未结束：此处的 " 在本行没有闭合</translation>
+    </message>
+    <message>
+        <source>missing '%1' at the end of the line (the '%2' at column %3 is not closed)</source>
+        <translation>行尾缺少 '%1'（第 %3 列的 '%2' 没有闭合）</translation>
+    </message>
+    <message>
+        <source>expected {...}</source>
+        <translation>应为 {...}</translation>
+    </message>
+    <message>
+        <source>t = %1 s is beyond the longest replay, %2 s (24 h) of virtual time</source>
+        <translation>t = %1 秒超出了回放的最长时间，即 %2 秒（24 小时）虚拟时间</translation>
+    </message>
+    <message>
+        <source>t = %1 comes before the previous action's %2 (actions must be in time order)</source>
+        <translation>t = %1 早于上一个操作的 %2（操作须按时间顺序排列）</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1：无法读取：%2</translation>
+    </message>
+    <message>
+        <source>%1:%2:%3: load "%4": a replay loads only a program the Program page shows on its disks (%5), links followed: refused</source>
+        <translation>%1:%2:%3：load "%4"：回放只能载入文件管理页各磁盘（%5）上显示的程序（链接按其目标判断）：已拒绝</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,7 @@
 // A training attempt's hash chain (ui/training/AttemptFile.h): what the panel records reads back
 // chained; an edited, removed or unhashed line, another exercise's seed or another exam's key is
 // refused at the line where the chain breaks.
+#include "tests/ui/PanelHarness.h"
 #include "ui/training/AttemptFile.h"
 
 #include <QFile>
@@ -50,6 +51,7 @@ TEST(AttemptFile, WhatThePanelRecordsReadsBackChained) {
 }
 
 TEST(AttemptFile, AnEditedLineBreaksTheChainThere) {
+    EnglishPanel english; // the refusals as the English panel says them
     QTemporaryDir dir;
     QByteArray text = recorded("k");
     text.replace("\"T2\"", "\"T3\"");
@@ -60,6 +62,7 @@ TEST(AttemptFile, AnEditedLineBreaksTheChainThere) {
 }
 
 TEST(AttemptFile, ARemovedLineOrAMissingHashIsRefused) {
+    EnglishPanel english; // the refusals as the English panel says them
     QTemporaryDir dir;
     QList<QByteArray> lines = recorded("k").split('\n');
     QByteArray removed = lines[0] + '\n' + lines[2] + '\n' + lines[3] + '\n';

@@ -227,13 +227,18 @@ TEST_F(HmiOutputs, AReplayErrorNamesItsLineColumnAndTheRealProblem) {
     };
     for (const auto& [line, says] : cases) {
         write(path("bad.jsonl"), QByteArray("{\"t\":0}\n") + line + "\n");
-        HmiResult r = run({"--replay", "bad.jsonl"});
+        HmiResult r = run({"--replay", "bad.jsonl", "--lang", "en"});
         EXPECT_EQ(r.exitCode, 2) << line;
         // the line is the second one
         QString expected = QString::fromLatin1(says).replace("bad.jsonl:1:", "bad.jsonl:2:");
         EXPECT_TRUE(r.errors.contains(expected)) << line << ": " << r.errors.toStdString();
         EXPECT_LT(r.ms, 30000) << line;
     }
+    // and in the panel's own language, Chinese
+    write(path("bad.jsonl"), "{\"t\":0,\"key\":\"MDI}\n");
+    HmiResult zh = run({"--replay", "bad.jsonl", "--lang", "zh_CN"});
+    EXPECT_EQ(zh.exitCode, 2);
+    EXPECT_TRUE(zh.errors.contains(QStringLiteral("bad.jsonl:1:14: 字符串未结束"))) << zh.errors.toStdString();
 }
 
 // Two hours of virtual time with nothing happening: the machine sees every frame, the panel

@@ -159,9 +159,11 @@ TEST(HmiReplay, ABadReplayFileIsRefusedWithItsLine) {
     ASSERT_TRUE(file.open(QIODevice::WriteOnly));
     file.write("{\"t\":0,\"key\":\"MDI\"}\n{\"t\":1,\"wheel\":{\"axis\":\"X\",\"step\":3,\"detents\":1}}\n");
     file.close();
-    HmiRun run = runHmi({"--replay", bad});
+    HmiRun run = runHmi({"--replay", bad, "--lang", "en"});
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_TRUE(run.errors.contains("bad.jsonl:2:8: wheel step must be 1, 10 or 100")) << run.errors.toStdString();
+    HmiRun zh = runHmi({"--replay", bad}); // the panel's language
+    EXPECT_TRUE(zh.errors.contains("bad.jsonl:2:8: 手轮倍率须为 1、10 或 100")) << zh.errors.toStdString();
 }
 
 TEST(HmiReplay, EveryPageRendersInBothLanguages) {

@@ -1,4 +1,5 @@
 // The replay line format: every kind of action reads back as it was written; bad lines say why.
+#include "tests/ui/PanelHarness.h"
 #include "ui/actions/OperatorAction.h"
 #include "ui/actions/PanelKey.h"
 #include "ui/pages/PageTable.h"
@@ -66,6 +67,7 @@ TEST(OperatorAction, WritesWhatItReads) {
 }
 
 TEST(OperatorAction, RefusesWhatItDoesNotKnow) {
+    EnglishPanel english; // the refusals as the English panel says them
     QString error;
     EXPECT_FALSE(parse(R"({"t":0,"key":"LAUNCH"})", &error));
     EXPECT_TRUE(error.contains("LAUNCH"));
@@ -78,6 +80,7 @@ TEST(OperatorAction, RefusesWhatItDoesNotKnow) {
 }
 
 TEST(Replay, AReplayFileErrorNamesTheLine) {
+    EnglishPanel english; // the refusals as the English panel says them
     QTemporaryFile file;
     ASSERT_TRUE(file.open());
     file.write("{\"t\":0,\"key\":\"MDI\"}\n\n// a comment\n{\"t\":1,\"key\":\"NOPE\"}\n");
@@ -88,6 +91,7 @@ TEST(Replay, AReplayFileErrorNamesTheLine) {
 }
 
 TEST(Replay, ActionsMustBeInTimeOrder) {
+    EnglishPanel english; // the refusals as the English panel says them
     QTemporaryFile file;
     ASSERT_TRUE(file.open());
     file.write("{\"t\":2}\n{\"t\":1}\n");

@@ -35,6 +35,10 @@ inline void putFile(const QString& path, const QByteArray& text) {
     file.write(text);
 }
 
+// While it lives the panel speaks English (tests that read English words the panel says through
+// its translator); zh_CN, the panel's language, again after.
+struct EnglishPanel;
+
 class PanelHarness {
 public:
     explicit PanelHarness(ui::MachineSession::Options options = {}) {
@@ -119,6 +123,19 @@ private:
     std::unique_ptr<ui::MachineSession> session_;
     std::unique_ptr<ui::MainWindow> window_;
     static inline ui::Language* language_ = nullptr;
+};
+
+struct EnglishPanel {
+    EnglishPanel() {
+        QString error;
+        EXPECT_TRUE(PanelHarness::language()->set(QStringLiteral("en"), &error)) << error.toStdString();
+    }
+    ~EnglishPanel() {
+        QString error;
+        PanelHarness::language()->set(QStringLiteral("zh_CN"), &error);
+    }
+    EnglishPanel(const EnglishPanel&) = delete;
+    EnglishPanel& operator=(const EnglishPanel&) = delete;
 };
 
 } // namespace m350::test

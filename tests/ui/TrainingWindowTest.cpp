@@ -25,11 +25,9 @@ namespace m350::test {
 
 namespace {
 
-// A training on a folder holding only pocket-taught-off, in English (the panel's zh_CN again after).
+// A training on a folder holding only pocket-taught-off, in English.
 struct TrainingHarness {
     explicit TrainingHarness(std::optional<training::Exam> exam = std::nullopt) {
-        QString error;
-        EXPECT_TRUE(PanelHarness::language()->set(QStringLiteral("en"), &error)) << error.toStdString();
         const QString exercises = dir.filePath(QStringLiteral("exercises/pocket-taught-off"));
         QDir().mkpath(exercises);
         EXPECT_TRUE(QFile::copy(QStringLiteral(M350_SOURCE_DIR "/resources/exercises/pocket-taught-off/exercise.toml"),
@@ -45,11 +43,7 @@ struct TrainingHarness {
         window = std::make_unique<ui::TrainingWindow>(options);
         window->show();
     }
-    ~TrainingHarness() {
-        window.reset();
-        QString error;
-        PanelHarness::language()->set(QStringLiteral("zh_CN"), &error);
-    }
+    EnglishPanel english;
     QTemporaryDir dir;
     std::unique_ptr<ui::TrainingWindow> window;
 };

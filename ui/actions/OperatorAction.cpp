@@ -6,6 +6,8 @@
 #include <QJsonValue>
 #include <QStringList>
 
+#include <QCoreApplication>
+
 namespace m350::ui {
 
 namespace {
@@ -82,7 +84,7 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
     };
     OperatorAction a;
     if (!object.contains("t") || !object.value("t").isDouble() || object.value("t").toDouble() < 0.0) {
-        return fail(QStringLiteral("\"t\" (virtual time in seconds, >= 0) is missing or not a number"));
+        return fail(QCoreApplication::translate("m350::ui::OperatorAction", "\"t\" (virtual time in seconds, >= 0) is missing or not a number"));
     }
     a.t = object.value("t").toDouble();
     int kinds = 0;
@@ -92,14 +94,14 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
         }
     }
     if (kinds > 1) {
-        return fail(QStringLiteral("one action per line: found %1 besides \"t\"").arg(kinds));
+        return fail(QCoreApplication::translate("m350::ui::OperatorAction", "one action per line: found %1 besides \"t\"").arg(kinds));
     }
     for (Kind kind : {Kind::Key, Kind::KeyDown, Kind::KeyUp}) {
         if (object.contains(kindKey(kind))) {
             a.kind = kind;
             a.name = object.value(kindKey(kind)).toString();
             if (!PanelKey::named(a.name)) {
-                return fail(QStringLiteral("unknown key \"%1\"").arg(a.name));
+                return fail(QCoreApplication::translate("m350::ui::OperatorAction", "unknown key \"%1\"").arg(a.name));
             }
             return a;
         }
@@ -108,7 +110,7 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
         a.kind = Kind::Softkey;
         a.softkey = object.value("softkey").toInt();
         if (a.softkey < 1 || a.softkey > 12) {
-            return fail(QStringLiteral("softkey must be 1-6 (F1-F6) or 7-12 (second row)"));
+            return fail(QCoreApplication::translate("m350::ui::OperatorAction", "softkey must be 1-6 (F1-F6) or 7-12 (second row)"));
         }
         return a;
     }
@@ -121,7 +123,7 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
         a.kind = Kind::Page;
         a.name = object.value("page").toString();
         if (!PageTable::ids().contains(a.name)) {
-            return fail(QStringLiteral("unknown page \"%1\" (one of: %2)").arg(a.name, PageTable::ids().join(", ")));
+            return fail(QCoreApplication::translate("m350::ui::OperatorAction", "unknown page \"%1\" (one of: %2)").arg(a.name, PageTable::ids().join(", ")));
         }
         return a;
     }
@@ -129,7 +131,7 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
         a.kind = Kind::Language;
         a.name = object.value("lang").toString();
         if (a.name != QLatin1String("zh_CN") && a.name != QLatin1String("en")) {
-            return fail(QStringLiteral("lang must be zh_CN or en"));
+            return fail(QCoreApplication::translate("m350::ui::OperatorAction", "lang must be zh_CN or en"));
         }
         return a;
     }
@@ -146,13 +148,13 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
         a.wheel.detents = w.value("detents").toInt();
         a.wheel.seconds = w.value("seconds").toDouble(0.0);
         if (a.wheel.axis < 0) {
-            return fail(QStringLiteral("wheel axis must be X, Y, Z, A or B"));
+            return fail(QCoreApplication::translate("m350::ui::OperatorAction", "wheel axis must be X, Y, Z, A or B"));
         }
         if (a.wheel.step != 1 && a.wheel.step != 10 && a.wheel.step != 100) {
-            return fail(QStringLiteral("wheel step must be 1, 10 or 100"));
+            return fail(QCoreApplication::translate("m350::ui::OperatorAction", "wheel step must be 1, 10 or 100"));
         }
         if (!(a.wheel.seconds >= 0.0)) {
-            return fail(QStringLiteral("wheel seconds must be >= 0"));
+            return fail(QCoreApplication::translate("m350::ui::OperatorAction", "wheel seconds must be >= 0"));
         }
         return a;
     }
@@ -164,15 +166,15 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
         a.force.level = f.value("level").toInt();
         a.force.seconds = f.value("seconds").toDouble(0.0);
         if (a.force.input < 1 || a.force.input > 24) {
-            return fail(QStringLiteral("force input must be 1-24 (IN01-IN24)"));
+            return fail(QCoreApplication::translate("m350::ui::OperatorAction", "force input must be 1-24 (IN01-IN24)"));
         }
         static const QStringList faults{"stuck", "slow", "bouncing", "pressed", "none"};
         if (!faults.contains(a.force.fault)) {
-            return fail(QStringLiteral("force fault must be stuck, slow, bouncing, pressed or none"));
+            return fail(QCoreApplication::translate("m350::ui::OperatorAction", "force fault must be stuck, slow, bouncing, pressed or none"));
         }
         const bool levelled = a.force.fault == QLatin1String("stuck") || a.force.fault == QLatin1String("pressed");
         if (levelled && a.force.level != 0 && a.force.level != 1) {
-            return fail(QStringLiteral("force level must be 0 or 1"));
+            return fail(QCoreApplication::translate("m350::ui::OperatorAction", "force level must be 0 or 1"));
         }
         return a;
     }
@@ -181,7 +183,7 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
     }
     QStringList names = object.keys();
     names.removeAll(QStringLiteral("t"));
-    return fail(QStringLiteral("unknown action \"%1\" (one of: key, key_down, key_up, softkey, text, wheel, page, "
+    return fail(QCoreApplication::translate("m350::ui::OperatorAction", "unknown action \"%1\" (one of: key, key_down, key_up, softkey, text, wheel, page, "
                                "force, lang, load)")
                     .arg(names.join(", ")));
 }

@@ -21,7 +21,7 @@ namespace {
 // missing } at the end "unterminated string". Column 1-based; nullopt: ask Qt.
 std::optional<std::pair<int, QString>> shapeProblem(const QByteArray& line) {
     if (!line.startsWith('{')) {
-        return std::pair{1, QStringLiteral("a line holds one action, a JSON object {...}")};
+        return std::pair{1, QCoreApplication::translate("m350::ui::Replay", "a line holds one action, a JSON object {...}")};
     }
     std::vector<std::pair<char, int>> open; // bracket, column
     int stringAt = 0;
@@ -42,20 +42,20 @@ std::optional<std::pair<int, QString>> shapeProblem(const QByteArray& line) {
         } else if (c == '}' || c == ']') {
             const char expected = c == '}' ? '{' : '[';
             if (open.empty() || open.back().first != expected) {
-                return std::pair{i + 1, QStringLiteral("'%1' closes nothing that is open").arg(QLatin1Char(c))};
+                return std::pair{i + 1, QCoreApplication::translate("m350::ui::Replay", "'%1' closes nothing that is open").arg(QLatin1Char(c))};
             }
             open.pop_back();
             if (open.empty() && i + 1 < line.size()) {
-                return std::pair{i + 2, QStringLiteral("text after the action's closing }: one action a line")};
+                return std::pair{i + 2, QCoreApplication::translate("m350::ui::Replay", "text after the action's closing }: one action a line")};
             }
         }
     }
     if (stringAt > 0) {
-        return std::pair{stringAt, QStringLiteral("unterminated string: the \" opened here is not closed on this line")};
+        return std::pair{stringAt, QCoreApplication::translate("m350::ui::Replay", "unterminated string: the \" opened here is not closed on this line")};
     }
     if (!open.empty()) {
         return std::pair{static_cast<int>(line.size()) + 1,
-                         QStringLiteral("missing '%1' at the end of the line (the '%2' at column %3 is not closed)")
+                         QCoreApplication::translate("m350::ui::Replay", "missing '%1' at the end of the line (the '%2' at column %3 is not closed)")
                              .arg(QLatin1Char(open.back().first == '{' ? '}' : ']'))
                              .arg(QLatin1Char(open.back().first))
                              .arg(open.back().second)};
@@ -139,7 +139,7 @@ std::optional<QJsonObject> readReplayObject(const QByteArray& raw, ReplayLinePro
             *problem = {indent + shape->first, shape->second};
         } else {
             *problem = {indent + parse.offset + 1,
-                        parse.error != QJsonParseError::NoError ? parse.errorString() : QStringLiteral("expected {...}")};
+                        parse.error != QJsonParseError::NoError ? parse.errorString() : QCoreApplication::translate("m350::ui::Replay", "expected {...}")};
         }
         return std::nullopt;
     }
@@ -160,13 +160,13 @@ std::optional<OperatorAction> readReplayAction(const QJsonObject& object, const 
     }
     const int timeColumn = indent + keyColumn(line, QStringLiteral("t"));
     if (!(action->t <= kMostReplaySeconds)) {
-        *problem = {timeColumn, QStringLiteral("t = %1 s is beyond the longest replay, %2 s (24 h) of virtual time")
+        *problem = {timeColumn, QCoreApplication::translate("m350::ui::Replay", "t = %1 s is beyond the longest replay, %2 s (24 h) of virtual time")
                                     .arg(action->t)
                                     .arg(kMostReplaySeconds)};
         return std::nullopt;
     }
     if (action->t < previous) {
-        *problem = {timeColumn, QStringLiteral("t = %1 comes before the previous action's %2 (actions must be in "
+        *problem = {timeColumn, QCoreApplication::translate("m350::ui::Replay", "t = %1 comes before the previous action's %2 (actions must be in "
                                                "time order)")
                                     .arg(action->t)
                                     .arg(previous)};
@@ -179,7 +179,7 @@ std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QStri
                                                       std::vector<ReplayPlace>* places) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        *error = QStringLiteral("%1: cannot read: %2").arg(path, file.errorString());
+        *error = QCoreApplication::translate("m350::ui::Replay", "%1: cannot read: %2").arg(path, file.errorString());
         return std::nullopt;
     }
     std::vector<OperatorAction> actions;
@@ -219,7 +219,7 @@ QString refusedReplayLoad(MainWindow& window, const OperatorAction& action, cons
     if (action.kind != OperatorAction::Kind::Load || onProgramDisk(window, action.name, &disks)) {
         return {};
     }
-    return QStringLiteral("%1:%2:%3: load \"%4\": a replay loads only a program the Program page shows on "
+    return QCoreApplication::translate("m350::ui::Replay", "%1:%2:%3: load \"%4\": a replay loads only a program the Program page shows on "
                           "its disks (%5), links followed: refused")
         .arg(path)
         .arg(place.line)

@@ -4,6 +4,8 @@
 #include <QJsonDocument>
 #include <QMessageAuthenticationCode>
 
+#include <QCoreApplication>
+
 namespace m350::ui {
 
 double Attempt::timeUsed() const {
@@ -27,7 +29,7 @@ std::optional<Attempt> readAttempt(const QString& path, const QByteArray& exerci
                                    QString* error) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        *error = QStringLiteral("%1: cannot read: %2").arg(path, file.errorString());
+        *error = QCoreApplication::translate("m350::ui::AttemptFile", "%1: cannot read: %2").arg(path, file.errorString());
         return std::nullopt;
     }
     Attempt attempt;
@@ -52,26 +54,26 @@ std::optional<Attempt> readAttempt(const QString& path, const QByteArray& exerci
             continue;
         }
         if (attempt.handedInAt) {
-            return failAt(1, QStringLiteral("a line after the hand-in: the attempt ended on the line before"));
+            return failAt(1, QCoreApplication::translate("m350::ui::AttemptFile", "a line after the hand-in: the attempt ended on the line before"));
         }
         ++lines;
         if (object->contains(QLatin1String("h"))) {
             const QByteArray hash = object->take(QLatin1String("h")).toString().toLatin1();
             if (hashed != lines - 1 || hash != attemptLinkHash(key, previousHash, *object)) {
                 return failAt(static_cast<int>(raw.indexOf("\"h\"")) + 1,
-                              QStringLiteral("the line's hash does not follow the chain: the attempt was changed "
+                              QCoreApplication::translate("m350::ui::AttemptFile", "the line's hash does not follow the chain: the attempt was changed "
                                              "after it was recorded (or belongs to another exercise or exam)"));
             }
             previousHash = hash;
             ++hashed;
         } else if (hashed > 0) {
-            return failAt(1, QStringLiteral("the line has no hash while the lines before it have: the attempt was "
+            return failAt(1, QCoreApplication::translate("m350::ui::AttemptFile", "the line has no hash while the lines before it have: the attempt was "
                                             "changed after it was recorded"));
         }
         if (object->contains(QLatin1String("attempt"))) {
             if (lines != 1) {
                 return failAt(static_cast<int>(raw.indexOf("\"attempt\"")) + 1,
-                              QStringLiteral("\"attempt\" names the exercise and the trainee on the first line only"));
+                              QCoreApplication::translate("m350::ui::AttemptFile", "\"attempt\" names the exercise and the trainee on the first line only"));
             }
             const QJsonObject header = object->value(QLatin1String("attempt")).toObject();
             attempt.exercise = header.value(QLatin1String("exercise")).toString();
@@ -83,7 +85,7 @@ std::optional<Attempt> readAttempt(const QString& path, const QByteArray& exerci
             const double t = object->value(QLatin1String("t")).toDouble(-1.0);
             if (!(t >= previousTime) || !(t <= kMostReplaySeconds)) {
                 return failAt(static_cast<int>(raw.indexOf("\"t\"")) + 1,
-                              QStringLiteral("the hand-in's t must be a time not before the last action's (%1)").arg(previousTime));
+                              QCoreApplication::translate("m350::ui::AttemptFile", "the hand-in's t must be a time not before the last action's (%1)").arg(previousTime));
             }
             attempt.handedInAt = t;
             attempt.hints = handIn.value(QLatin1String("hints")).toInt();

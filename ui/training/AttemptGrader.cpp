@@ -38,7 +38,7 @@ std::optional<AttemptAtExercise> readAttemptAtExercise(const GradeRequest& reque
     const training::Exercise& exercise = std::get<training::Exercise>(loaded);
     QFile tomlFile(QDir(request.exerciseFolder).filePath(QString::fromLatin1(training::kExerciseFileName)));
     if (!tomlFile.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("%1: cannot read: %2").arg(tomlFile.fileName(), tomlFile.errorString());
+        *error = QCoreApplication::translate("m350::ui::AttemptGrader", "%1: cannot read: %2").arg(tomlFile.fileName(), tomlFile.errorString());
         return std::nullopt;
     }
     const QByteArray exerciseToml = tomlFile.readAll();
@@ -47,13 +47,13 @@ std::optional<AttemptAtExercise> readAttemptAtExercise(const GradeRequest& reque
         return std::nullopt;
     }
     if (request.requireChain && !attempt->chained) {
-        *error = QStringLiteral("%1: the attempt carries no hash chain: an exam takes only attempts the panel "
+        *error = QCoreApplication::translate("m350::ui::AttemptGrader", "%1: the attempt carries no hash chain: an exam takes only attempts the panel "
                                 "recorded in the exam")
                      .arg(request.attemptFile);
         return std::nullopt;
     }
     if (!attempt->exercise.isEmpty() && attempt->exercise != QString::fromStdString(exercise.name)) {
-        *error = QStringLiteral("%1:1: the attempt is at exercise \"%2\", not \"%3\"")
+        *error = QCoreApplication::translate("m350::ui::AttemptGrader", "%1:1: the attempt is at exercise \"%2\", not \"%3\"")
                      .arg(request.attemptFile, attempt->exercise, QString::fromStdString(exercise.name));
         return std::nullopt;
     }

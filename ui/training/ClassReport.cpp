@@ -12,6 +12,8 @@
 
 #include <algorithm>
 
+#include <QCoreApplication>
+
 namespace m350::ui {
 
 namespace {
@@ -103,7 +105,7 @@ ClassReport gradeClass(const QString& attemptsFolder, const QString& exercisesFo
         attempt.trainee = trainee;
         attempt.exercise = exercise;
         if (!report.exercises.contains(exercise)) {
-            attempt.error = QStringLiteral("%1: no exercise \"%2\" in %3").arg(attempt.file, exercise, exercisesFolder);
+            attempt.error = QCoreApplication::translate("m350::ui::ClassReport", "%1: no exercise \"%2\" in %3").arg(attempt.file, exercise, exercisesFolder);
         } else {
             GradeRequest request;
             request.exerciseFolder = QDir(exercisesFolder).filePath(exercise);
