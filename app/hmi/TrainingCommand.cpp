@@ -30,6 +30,13 @@ namespace m350::hmi {
 
 namespace {
 
+// A message of the table in the panel's language.
+QString saidIn(const ui::Language& language, const Message& words) {
+    return QString::fromStdString(
+        words.in(language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese));
+}
+
+
 int failWith(const QString& message) {
     std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
     return 2;
@@ -37,14 +44,13 @@ int failWith(const QString& message) {
 
 // Plays the attempt file through the training window: start the exercise, the actions on its
 // panel, then the hand-in when the attempt has one.
-QString playAttempt(ui::TrainingWindow& window, const HmiOptions& o, const QByteArray& examKey) {
+QString playAttempt(ui::TrainingWindow& window, const HmiOptions& o, const QByteArray& examKey, const ui::Language& language) {
     const QString exerciseName = QFileInfo(QString::fromStdString(o.exercise)).fileName();
     const auto& exercises = window.exercises();
     const auto found = std::find_if(exercises.begin(), exercises.end(),
                                     [&](const training::Exercise& e) { return QString::fromStdString(e.name) == exerciseName; });
     if (found == exercises.end()) {
-        return QStringLiteral("--exercise %1 is not one of the training's exercises (%2)")
-            .arg(QString::fromStdString(o.exercise), window.problems().join(QStringLiteral("; ")));
+        return saidIn(language, message("training_not_an_exercise", {o.exercise, window.problems().join(QStringLiteral("; ")).toStdString()}));
     }
     window.startPage()->select(static_cast<int>(found - exercises.begin()));
     QFile toml(QDir(QString::fromStdString(found->folder)).filePath(QString::fromLatin1(training::kExerciseFileName)));
@@ -94,7 +100,7 @@ int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& langua
                                                  : QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
                                                      QStringLiteral("/training");
     if (!QDir().mkpath(options.attemptsFolder)) {
-        return failWith(QStringLiteral("--attempts %1: the folder cannot be made").arg(options.attemptsFolder));
+        return failWith(saidIn(language, message("training_attempts_folder", {options.attemptsFolder.toStdString()})));
     }
     if (!o.exam.empty()) {
         training::Exam exam;
@@ -112,9 +118,9 @@ int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& langua
     }
     if (!o.replay.empty()) {
         if (o.exercise.empty()) {
-            return failWith(QStringLiteral("--training --replay plays an attempt: name its --exercise"));
+            return failWith(saidIn(language, message("training_replay_needs_exercise")));
         }
-        if (QString error = playAttempt(window, o, options.exam ? QByteArray::fromStdString(options.exam->key) : QByteArray());
+        if (QString error = playAttempt(window, o, options.exam ? QByteArray::fromStdString(options.exam->key) : QByteArray(), language);
             !error.isEmpty()) {
             return failWith(error);
         }
@@ -128,7 +134,7 @@ int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& langua
         QBuffer buffer(&png);
         buffer.open(QIODevice::WriteOnly);
         if (!window.grab().save(&buffer, screenshotFormat(o.screenshot)->constData())) {
-            return failWith(QStringLiteral("--screenshot %1: the image could not be made").arg(QString::fromStdString(o.screenshot)));
+            return failWith(saidIn(language, message("hmi_image_failed", {o.screenshot})));
         }
         if (auto error = writeOutput(o.screenshot, png)) {
             return failWith(QStringLiteral("--screenshot: %1").arg(*error));

@@ -217,7 +217,8 @@ int main(int argc, char** argv) {
         QBuffer buffer(&png);
         buffer.open(QIODevice::WriteOnly);
         if (!window.grab().save(&buffer, hmi::screenshotFormat(o.screenshot)->constData())) {
-            return fail(QStringLiteral("--screenshot %1: the image could not be made").arg(QString::fromStdString(o.screenshot)));
+            return fail(QString::fromStdString(message("hmi_image_failed", {o.screenshot})
+                                                   .in(o.language == "en" ? MessageLanguage::English : MessageLanguage::Chinese)));
         }
         if (auto error = hmi::writeOutput(o.screenshot, png)) {
             return fail(QStringLiteral("--screenshot: %1").arg(*error));

@@ -256,7 +256,8 @@ TEST(TrainingReviewCommand, FindsTheExerciseTheAttemptNames) {
     ASSERT_TRUE(unnamed.open(QIODevice::WriteOnly));
     unnamed.write("{\"t\":1,\"key\":\"START\"}\n");
     unnamed.close();
-    const auto [refused, why] = hmiOutput({QStringLiteral("--review"), unnamed.fileName(), QStringLiteral("--state"), state});
+    const auto [refused, why] = hmiOutput({QStringLiteral("--lang"), QStringLiteral("en"), QStringLiteral("--review"), unnamed.fileName(),
+                                           QStringLiteral("--state"), state});
     EXPECT_EQ(refused, 2);
     EXPECT_TRUE(why.contains(QStringLiteral("names no exercise"))) << why.toStdString();
 }

@@ -54,7 +54,7 @@ bool hasEnglishWords(const std::string& text) {
         "lambda", "libraries", "links", "load", "magazine", "memory", "name", "offset", "pockets", "position",
         "random", "released", "rotation", "select", "slide", "spindle", "stock", "strobe", "switch",
         // the command lines' options, the controller backup's file names
-        "screenshot", "setting",
+        "screenshot", "setting", "training", "replay", "exercise", "attempts", "review",
         // passwords.toml's levels and its "SALT:HASH"
         "operator", "admin", "super", "SALT", "HASH",
         // modbus.toml's tables
