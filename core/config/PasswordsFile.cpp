@@ -122,7 +122,7 @@ std::optional<Message> resetPasswords(const MachineFolder& folder) {
         return message("passwords_is_folder", {folder.pathOf(FolderFile::Passwords).string()});
     }
     if (auto error = folder.write(FolderFile::Passwords, formatPasswords(Passwords{}))) {
-        return message("passwords_write_failed", {*error});
+        return message("passwords_write_failed", {bilingual(*error)});
     }
     return std::nullopt;
 }

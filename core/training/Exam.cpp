@@ -23,7 +23,7 @@ ExerciseError examError(const std::string& file, const toml::source_region& wher
 std::variant<Exam, ExerciseError> loadExam(const std::string& file) {
     std::string text;
     if (auto why = files::readMachineFile(file, text)) {
-        return examError(file, {}, message("exercise_unreadable", {*why}));
+        return examError(file, {}, message("exercise_unreadable", {bilingual(*why)}));
     }
     toml::table root;
     try {

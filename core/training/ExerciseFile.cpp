@@ -310,7 +310,7 @@ Exercise readExercise(const fs::path& folder, const fs::path& machinesFolder) {
     ExerciseTomlReader in(file.string());
     std::string text;
     if (auto why = files::readMachineFile(file, text)) {
-        in.refuseFile(message("exercise_unreadable", {*why}));
+        in.refuseFile(message("exercise_unreadable", {bilingual(*why)}));
     }
     toml::table root;
     try {
