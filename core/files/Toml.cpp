@@ -14,10 +14,10 @@ toml::table parseTomlText(std::string_view text, std::string_view path) {
     return toml::parse(text, path);
 }
 
-UnreadableToml::UnreadableToml(Message why, const std::string& path)
-    : toml::parse_error(message("toml_unreadable", {bilingual(why)}).english().c_str(), toml::source_position{1, 1},
+UnreadableToml::UnreadableToml(Message reason, const std::string& path)
+    : toml::parse_error(message("toml_unreadable", {bilingual(reason)}).english().c_str(), toml::source_position{1, 1},
                         std::make_shared<const std::string>(path)),
-      why_(message("toml_unreadable", {bilingual(why)})) {}
+      reason_(std::move(reason)), why_(message("toml_unreadable", {bilingual(reason_)})) {}
 
 toml::table parseTomlFile(const std::string& path) {
     std::string text;

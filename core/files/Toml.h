@@ -28,10 +28,12 @@ toml::table parseTomlText(std::string_view text, std::string_view path);
 // a reader that says it in its language.
 class UnreadableToml : public toml::parse_error {
 public:
-    UnreadableToml(Message why, const std::string& path);
-    const Message& why() const { return why_; }
+    UnreadableToml(Message reason, const std::string& path);
+    const Message& why() const { return why_; }       // "cannot read: it is a FIFO ..."
+    const Message& reason() const { return reason_; } // "it is a FIFO ..."
 
 private:
+    Message reason_;
     Message why_;
 };
 

@@ -126,4 +126,34 @@ TEST_F(CliMachineFileWordsTest, ABadCommonRangeIsRefusedInChineseAtItsPlace) {
     EXPECT_SAYS(overlap, "[variables] common 有误：#100-#499 与 #400-#600 重叠");
 }
 
+// modbus.toml that cannot be read is said as that, not as a TOML syntax error.
+TEST_F(CliMachineFileWordsTest, AnUnreadableModbusFileIsNoSyntaxError) {
+    const fs::path folder = copy("m350-linear16");
+    fs::create_directory(folder / "modbus.toml");
+    auto [english, chinese] = both();
+    EXPECT_EQ(english.exitStatus, kExitError);
+    EXPECT_SAYS(english, "1:1: cannot read: it is a folder, not a regular file");
+    EXPECT_EQ(chinese.exitStatus, kExitError);
+    EXPECT_SAYS(chinese, "1:1：无法读取：这是文件夹，不是正规文件");
+    EXPECT_EQ(chinese.err.find("TOML"), std::string::npos) << chinese.err;
+}
+
+// A save.journal a crash left that cannot be finished stops the load, said in the language.
+TEST_F(CliMachineFileWordsTest, ABrokenChangeJournalIsSaidInChinese) {
+    const fs::path folder = copy("m350-linear16");
+    std::ofstream(folder / "save.journal") << "hello\n";
+    auto [english, chinese] = both();
+    EXPECT_EQ(english.exitStatus, kExitError);
+    EXPECT_SAYS(english, "save.journal: not a change journal of m350 (remove it to keep the files as they are)");
+    EXPECT_EQ(chinese.exitStatus, kExitError);
+    EXPECT_SAYS(chinese, "中断的保存未能完成：");
+    EXPECT_SAYS(chinese, "save.journal：不是本仿真器的修改日志（删除该日志即可保留文件现状）");
+    expectNoEnglishWords(chinese.err, "machine/save.journal");
+
+    fs::remove(folder / "save.journal");
+    fs::create_directory(folder / "save.journal");
+    ProcessResult dir = sim({"mdi", "G4 P1", "--config", "machine", "--lang", "zh_CN"});
+    EXPECT_SAYS(dir, "save.journal：无法读取中断保存的修改日志：这是文件夹，不是正规文件");
+}
+
 } // namespace m350::clitest
