@@ -169,8 +169,8 @@ std::optional<std::string> saveToolLife(controller::Controller& controller, cons
     if (auto problem = folder.saveToolLife(controller.toolLife().manager().data())) {
         const std::string file =
             folder.path().string() + "/" + std::string(config::MachineFolder::fileName(config::FolderFile::ToolLife));
-        std::cerr << "m350-sim: " << messageText("life_data_cannot_write", {file, *problem}, language) << '\n';
-        return problem;
+        std::cerr << "m350-sim: " << messageText("life_data_cannot_write", {file, bilingual(*problem)}, language) << '\n';
+        return problem->english();
     }
     controller.toolLife().manager().markSaved();
     return std::nullopt;

@@ -65,14 +65,14 @@ bool sameContent(const fs::path& a, const FolderFile& b) {
 }
 
 // `source` copied to `target` a chunk at a time, then synced; nullopt on success, else why.
-std::optional<std::string> copyStreaming(const fs::path& source, const fs::path& target) {
+std::optional<Message> copyStreaming(const fs::path& source, const fs::path& target) {
     std::ifstream in(source, std::ios::binary);
     if (!in) {
-        return source.string() + ": cannot read: " + std::strerror(errno);
+        return message("file_cannot_read_os", {source.string(), std::strerror(errno)});
     }
     std::ofstream out(target, std::ios::binary | std::ios::trunc);
     if (!out) {
-        return target.string() + ": cannot write: " + std::strerror(errno);
+        return message("file_cannot_write_os", {target.string(), std::strerror(errno)});
     }
     std::string chunk(kCopyChunk, '\0');
     while (in) {
@@ -81,10 +81,10 @@ std::optional<std::string> copyStreaming(const fs::path& source, const fs::path&
     }
     out.flush();
     if (in.bad()) {
-        return source.string() + ": cannot read";
+        return message("file_cannot_read_at", {source.string()});
     }
     if (!out) {
-        return target.string() + ": cannot write";
+        return message("file_cannot_write_at", {target.string()});
     }
     out.close();
     const int fd = ::open(target.c_str(), O_RDONLY | O_CLOEXEC);
@@ -92,7 +92,7 @@ std::optional<std::string> copyStreaming(const fs::path& source, const fs::path&
     if (fd >= 0) {
         ::close(fd);
     }
-    return synced ? std::nullopt : std::optional<std::string>(target.string() + ": cannot sync");
+    return synced ? std::nullopt : std::optional<Message>(message("file_cannot_sync_at", {target.string()}));
 }
 
 struct Refusal {
@@ -214,7 +214,7 @@ void writeFolder(const fs::path& into, const Files& files) {
         const fs::path file = temp / each.name;
         fs::create_directories(file.parent_path());
         if (auto error = each.source ? copyStreaming(*each.source, file) : files::writeFileAtomically(file, each.bytes)) {
-            abandon(into / each.name, message("import_write_failed", {*error}));
+            abandon(into / each.name, message("import_write_failed", {bilingual(*error)}));
         }
     }
     auto loaded = config::loadMachineFolder(temp.string());
@@ -227,7 +227,7 @@ void writeFolder(const fs::path& into, const Files& files) {
         abandon(into, message("import_cannot_move", {renamed.message()}));
     }
     if (auto error = files::syncFolder(parent)) {
-        refuse("file_error", parent, message("import_sync_failed", {*error}));
+        refuse("file_error", parent, message("import_sync_failed", {bilingual(*error)}));
     }
 }
 

@@ -35,7 +35,7 @@ struct Failure {
 std::string readBytes(const fs::path& file) {
     std::string bytes;
     if (auto why = files::readMachineFile(file, bytes)) {
-        fail(file, message("backup_cannot_read", {*why}));
+        fail(file, message("backup_cannot_read", {bilingual(*why)}));
     }
     return bytes;
 }

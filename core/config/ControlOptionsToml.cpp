@@ -50,7 +50,7 @@ void readCommonVariables(const std::filesystem::path& file, const toml::node& no
         }
         ranges.push_back(*range);
         if (auto refused = macro::VariableLayout::refusedCommon(ranges)) {
-            fail(file, message("config_common_refused", {*refused}), entry.source());
+            fail(file, message("config_common_refused", {bilingual(*refused)}), entry.source());
         }
     }
     config.variableLayout.common = std::move(ranges);

@@ -422,7 +422,7 @@ void loadToolTable(const fs::path& folder, MachineConfig& config) {
     }
     std::string text;
     if (auto why = files::readMachineFile(file, text)) {
-        fail(file, message("config_tool_table_unreadable", {*why}));
+        fail(file, message("config_tool_table_unreadable", {bilingual(*why)}));
     }
     tools::ParsedToolTable parsed = tools::parseToolTable(text, file.string());
     for (const tools::ToolTableIssue& issue : parsed.issues) {
@@ -465,7 +465,7 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         }
         // a save a crash interrupted is finished (or dropped) before any file is read
         if (auto broken = MachineFolder(dir).finishInterruptedChange()) {
-            fail(dir / MachineFolder::kChangeJournal, message("config_journal_broken", {*broken}));
+            fail(dir / MachineFolder::kChangeJournal, message("config_journal_broken", {bilingual(*broken)}));
         }
         loadMachineToml(dir, config);
         loadParams(dir, config);
@@ -480,8 +480,9 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
             lifeSettings.applyFanucParameters(config.fanucParameters);
         }
         auto life = tools::loadToolLife(folder, lifeSettings.fromParameters ? &lifeSettings : nullptr);
-        if (auto* unreadable = std::get_if<std::string>(&life)) {
-            fail(dir / MachineFolder::fileName(FolderFile::ToolLife), message("config_tool_life_unreadable", {*unreadable}));
+        if (auto* unreadable = std::get_if<Message>(&life)) {
+            fail(dir / MachineFolder::fileName(FolderFile::ToolLife),
+                 message("config_tool_life_unreadable", {bilingual(*unreadable)}));
         }
         tools::ParsedToolLife& parsed = std::get<tools::ParsedToolLife>(life);
         for (const tools::LifeFileIssue& issue : parsed.issues) {
@@ -496,7 +497,7 @@ std::variant<MachineConfig, ConfigError> loadMachineFolder(const std::string& fo
         config.toolLife = std::move(parsed.data);
         config.toolLifeIssues = std::move(parsed.issues);
         if (auto wrong = tools::readLoadMonitorSettings((dir / tools::kSpindleLoadFileName).string(), config.loadMonitor)) {
-            return ConfigError{(dir / tools::kSpindleLoadFileName).string(), message("config_spindle_load_wrong", {wrong->message}),
+            return ConfigError{(dir / tools::kSpindleLoadFileName).string(), message("config_spindle_load_wrong", {bilingual(wrong->message)}),
                                wrong->line, wrong->column};
         }
         files::refreshLastGood(dir / MachineFolder::fileName(FolderFile::Params));

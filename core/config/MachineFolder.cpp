@@ -45,9 +45,9 @@ constexpr std::array kFiles{
     FolderFileInfo{F::SystemLog, "system-log.tsv", W::Appended},
 };
 
-std::optional<std::string> readText(const fs::path& file, std::string& text) {
+std::optional<Message> readText(const fs::path& file, std::string& text) {
     if (auto why = files::readMachineFile(file, text)) {
-        return file.string() + ": cannot read: " + *why;
+        return message("folder_cannot_read", {file.string(), bilingual(*why)});
     }
     return std::nullopt;
 }
@@ -100,11 +100,11 @@ std::span<const FolderFileInfo> MachineFolder::files() { return kFiles; }
 
 std::string_view MachineFolder::fileName(FolderFile file) { return kFiles[static_cast<std::size_t>(file)].name; }
 
-std::optional<std::string> MachineFolder::write(FolderFile file, std::string_view content,
+std::optional<Message> MachineFolder::write(FolderFile file, std::string_view content,
                                                 const files::AtomicWriteHooks& hooks) const {
     const FolderFileInfo& info = kFiles[static_cast<std::size_t>(file)];
     if (folder_.empty()) {
-        return "this machine has no folder to keep " + std::string(info.name) + " in";
+        return message("folder_none", {std::string(info.name)});
     }
     if (auto error = finishInterruptedChange()) {
         return error;
@@ -116,18 +116,15 @@ std::optional<std::string> MachineFolder::write(FolderFile file, std::string_vie
     case W::KeepingLastGood:
         return files::saveKeepingLastGood(target, content, hooks);
     case W::AsOutput:
-        if (auto error = files::writeOutputFile(target, content)) {
-            return error->english();
-        }
-        return std::nullopt;
+        return files::writeOutputFile(target, content);
     case W::Never:
     case W::Appended:
         break;
     }
-    return target.string() + ": not written whole by the machine folder's store";
+    return message("folder_not_written", {target.string()});
 }
 
-std::optional<std::string> MachineFolder::saveParameters(const std::map<int, double>& values, bool addMissing) const {
+std::optional<Message> MachineFolder::saveParameters(const std::map<int, double>& values, bool addMissing) const {
     const fs::path file = pathOf(F::Params);
     std::string text;
     if (!addMissing && !fs::exists(file)) {
@@ -145,12 +142,12 @@ std::optional<std::string> MachineFolder::saveParameters(const std::map<int, dou
     return write(F::Params, updated);
 }
 
-std::optional<std::string> MachineFolder::saveToolTable(const tools::ToolTable& table,
+std::optional<Message> MachineFolder::saveToolTable(const tools::ToolTable& table,
                                                         const std::map<int, double>& zParameters,
                                                         const files::AtomicWriteHooks& hooks,
                                                         const std::map<int, double>& parameters) const {
     if (folder_.empty()) {
-        return "this machine has no folder to keep its tool table in";
+        return message("folder_none_tool_table");
     }
     if (auto error = finishInterruptedChange()) {
         return error;
@@ -177,7 +174,7 @@ std::optional<std::string> MachineFolder::saveToolTable(const tools::ToolTable& 
     return files::writeTogether(folder_ / kChangeJournal, change, hooks);
 }
 
-std::optional<std::string> MachineFolder::finishInterruptedChange() const {
+std::optional<Message> MachineFolder::finishInterruptedChange() const {
     if (folder_.empty()) {
         return std::nullopt;
     }
@@ -190,23 +187,20 @@ std::optional<std::string> MachineFolder::finishInterruptedChange() const {
     return files::finishInterruptedChange(folder_ / kChangeJournal, candidates);
 }
 
-std::optional<std::string> MachineFolder::saveToolLife(const tools::LifeData& data,
+std::optional<Message> MachineFolder::saveToolLife(const tools::LifeData& data,
                                                        const files::AtomicWriteHooks& hooks) const {
     return write(F::ToolLife, tools::formatToolLife(data), hooks);
 }
 
-std::optional<std::string> MachineFolder::exportToolTable(const fs::path& target, const tools::ToolTable& table) const {
+std::optional<Message> MachineFolder::exportToolTable(const fs::path& target, const tools::ToolTable& table) const {
     if (auto refused = refuseFolderFile(target)) {
         return refused;
     }
     if (auto why = files::unwritableOutput(target)) {
-        return files::describeUnwritable("the tool table export", target, *why).english();
+        return files::describeUnwritable(bilingual("the tool table export", "刀具表导出"), target, *why);
     }
     // a device or FIFO the operator names is written as one, a file replaced whole
-    if (auto error = files::writeOutputFile(target, tools::formatToolTable(table))) {
-        return error->english();
-    }
-    return std::nullopt;
+    return files::writeOutputFile(target, tools::formatToolTable(table));
 }
 
 bool MachineFolder::isFolderFile(const fs::path& path) const {
@@ -237,11 +231,11 @@ bool MachineFolder::isFolderFile(const fs::path& path) const {
     return isHookFile(name);
 }
 
-std::optional<std::string> MachineFolder::refuseFolderFile(const fs::path& path) const {
+std::optional<Message> MachineFolder::refuseFolderFile(const fs::path& path) const {
     if (!isFolderFile(path)) {
         return std::nullopt;
     }
-    return path.string() + " is a file of the machine folder " + folder_.string() + ": refused, nothing was written";
+    return message("folder_file_refused", {path.string(), folder_.string()});
 }
 
 } // namespace m350::config

@@ -69,27 +69,27 @@ public:
     // Writes a file whole as the table says (atomically, with its last-good copy where due). A
     // file the store never writes, or a folder that is empty (a machine built in memory), is
     // refused. nullopt on success, else why (naming the file); a failed write leaves the old file.
-    std::optional<std::string> write(FolderFile file, std::string_view content,
+    std::optional<Message> write(FolderFile file, std::string_view content,
                                      const files::AtomicWriteHooks& hooks = {}) const;
     // params.toml ([params] N = value) edited in place (params::setTomlNumbers); created when
     // there is none. With `addMissing` false only the values the file lists change (no file:
     // nothing is written).
-    std::optional<std::string> saveParameters(const std::map<int, double>& values, bool addMissing = true) const;
+    std::optional<Message> saveParameters(const std::map<int, double>& values, bool addMissing = true) const;
     // tool.tbl and, as one change (files::writeTogether: a crash leaves both old or both new), the
     // M350's Z parameters (930-945, 973-992; empty on a FANUC) that params.toml already lists, so
     // both files agree (tool.tbl is the one read), with `parameters` besides (added when missing,
     // as saveParameters does). `hooks` interrupt the change (see writeTogether).
-    std::optional<std::string> saveToolTable(const tools::ToolTable& table, const std::map<int, double>& zParameters,
+    std::optional<Message> saveToolTable(const tools::ToolTable& table, const std::map<int, double>& zParameters,
                                              const files::AtomicWriteHooks& hooks = {},
                                              const std::map<int, double>& parameters = {}) const;
-    std::optional<std::string> saveToolLife(const tools::LifeData& data, const files::AtomicWriteHooks& hooks = {}) const;
+    std::optional<Message> saveToolLife(const tools::LifeData& data, const files::AtomicWriteHooks& hooks = {}) const;
     // A tool table exported to `target` (any path, atomically); refused over a file of this folder.
-    std::optional<std::string> exportToolTable(const std::filesystem::path& target, const tools::ToolTable& table) const;
+    std::optional<Message> exportToolTable(const std::filesystem::path& target, const tools::ToolTable& table) const;
 
     // A save of several files that a crash interrupted (kChangeJournal) finished or dropped, so
     // that the folder holds one whole state; loadMachineFolder and every write call it first.
     // nullopt when the folder is whole, else why (naming the file).
-    std::optional<std::string> finishInterruptedChange() const;
+    std::optional<Message> finishInterruptedChange() const;
     static constexpr std::string_view kChangeJournal = "save.journal";
 
     // Whether `path` (after resolving symlinks and `..`) is a file of this folder: one of the
@@ -97,7 +97,7 @@ public:
     // file is never a run's output.
     bool isFolderFile(const std::filesystem::path& path) const;
     // "PATH is a file of the machine folder FOLDER: refused, nothing was written" when it is one.
-    std::optional<std::string> refuseFolderFile(const std::filesystem::path& path) const;
+    std::optional<Message> refuseFolderFile(const std::filesystem::path& path) const;
 
 private:
     std::filesystem::path folder_;

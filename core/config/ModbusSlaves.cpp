@@ -34,6 +34,9 @@ std::optional<Message> loadModbusSlaves(const std::string& path, ModbusSlaves& o
     toml::table t;
     try {
         t = files::parseTomlFile(path);
+    } catch (const files::UnreadableToml& e) {
+        return message("folder_cannot_read", {std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column),
+                                             bilingual(e.reason())});
     } catch (const toml::parse_error& e) {
         return message("modbus_toml_syntax",
                        {std::to_string(e.source().begin.line) + ":" + std::to_string(e.source().begin.column),

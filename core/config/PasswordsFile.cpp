@@ -77,6 +77,8 @@ std::variant<Passwords, PasswordsProblem> readPasswords(const MachineFolder& fol
     toml::table table;
     try {
         table = files::parseTomlFile(file);
+    } catch (const files::UnreadableToml& e) {
+        return PasswordsProblem{message("folder_cannot_read", {placeOf(file, e.source()), bilingual(e.reason())})};
     } catch (const toml::parse_error& e) {
         return PasswordsProblem{message("passwords_toml", {placeOf(file, e.source()), std::string(e.description())})};
     }
@@ -122,7 +124,7 @@ std::optional<Message> resetPasswords(const MachineFolder& folder) {
         return message("passwords_is_folder", {folder.pathOf(FolderFile::Passwords).string()});
     }
     if (auto error = folder.write(FolderFile::Passwords, formatPasswords(Passwords{}))) {
-        return message("passwords_write_failed", {*error});
+        return message("passwords_write_failed", {bilingual(*error)});
     }
     return std::nullopt;
 }

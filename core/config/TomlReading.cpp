@@ -59,6 +59,8 @@ void fail(const fs::path& file, Message message, const toml::source_region& wher
 toml::table parseToml(const fs::path& file) {
     try {
         return files::parseTomlFile(file.string());
+    } catch (const files::UnreadableToml& e) {
+        fail(file, e.why(), e.source());
     } catch (const toml::parse_error& e) {
         fail(file, message("config_toml_syntax", {std::string(e.description())}), e.source());
     }

@@ -27,7 +27,7 @@ std::map<int, double> toolZParameters(const Controller& controller) {
 
 } // namespace
 
-std::optional<std::string> saveToolTable(Controller& controller, const config::MachineFolder& folder,
+std::optional<Message> saveToolTable(Controller& controller, const config::MachineFolder& folder,
                                          const files::AtomicWriteHooks& hooks) {
     ToolTableEdits& edits = controller.toolTableEdits();
     const tools::ToolData::Mark mark = edits.mark();
@@ -38,7 +38,7 @@ std::optional<std::string> saveToolTable(Controller& controller, const config::M
     return std::nullopt;
 }
 
-std::optional<std::string> saveParameters(Controller& controller, const config::MachineFolder& folder,
+std::optional<Message> saveParameters(Controller& controller, const config::MachineFolder& folder,
                                           const std::map<int, double>& values, const files::AtomicWriteHooks& hooks) {
     ToolTableEdits& edits = controller.toolTableEdits();
     if (!edits.changed()) {

@@ -23,18 +23,17 @@ namespace {
 
 constexpr std::size_t kChunk = 64 * 1024;
 
-std::string failure(const fs::path& file, const char* what) {
-    return file.string() + ": " + what + ": " + std::strerror(errno);
-}
+// What failed on `file` (a message id) and the OS's reason in its own words.
+Message failure(const fs::path& file, const char* id) { return message(id, {file.string(), std::strerror(errno)}); }
 
-std::optional<std::string> writeAll(int fd, const fs::path& temp, std::string_view content,
+std::optional<Message> writeAll(int fd, const fs::path& temp, std::string_view content,
                                     const AtomicWriteHooks& hooks) {
     std::size_t done = 0;
     while (done < content.size()) {
         std::size_t size = std::min(kChunk, content.size() - done);
         ssize_t n = ::write(fd, content.data() + done, size);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return failure(temp, "cannot write");
+        if (n <= 0) return failure(temp, "file_cannot_write_os");
         done += static_cast<std::size_t>(n);
         if (hooks.afterChunk) hooks.afterChunk(done);
     }
@@ -43,13 +42,13 @@ std::optional<std::string> writeAll(int fd, const fs::path& temp, std::string_vi
 
 } // namespace
 
-std::variant<TempFile, std::string> createTempBeside(const fs::path& target, unsigned mode) {
+std::variant<TempFile, Message> createTempBeside(const fs::path& target, unsigned mode) {
     const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     std::string pattern =
         (folder / ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".XXXXXX")).string();
     const int fd = ::mkostemp(pattern.data(), O_CLOEXEC);
     if (fd < 0) {
-        return failure(target, "cannot create a file beside it");
+        return failure(target, "file_cannot_create_beside");
     }
     ::fchmod(fd, static_cast<mode_t>(mode));
     return TempFile{fd, pattern};
@@ -139,7 +138,7 @@ ScratchHandles& scratchHandles() {
     return handles;
 }
 
-std::optional<std::optional<std::string>> writeScratchInPlace(const fs::path& path, std::string_view content,
+std::optional<std::optional<Message>> writeScratchInPlace(const fs::path& path, std::string_view content,
                                                               const AtomicWriteHooks& hooks) {
     if (hooks.beforeRename || !inScratchFolder(path)) {
         return std::nullopt;
@@ -162,7 +161,7 @@ std::optional<std::optional<std::string>> writeScratchInPlace(const fs::path& pa
     // from the start, then cut to the new length; an empty rewrite still marks the file modified
     if (::lseek(fd, 0, SEEK_SET) != 0) {
         handles.forget(path.string());
-        return std::optional<std::string>(failure(path, "cannot write"));
+        return std::optional<Message>(failure(path, "file_cannot_write_os"));
     }
     if (auto error = writeAll(fd, path, content, hooks)) {
         handles.forget(path.string());
@@ -170,14 +169,14 @@ std::optional<std::optional<std::string>> writeScratchInPlace(const fs::path& pa
     }
     if (::ftruncate(fd, static_cast<off_t>(content.size())) != 0 || (content.empty() && ::futimens(fd, nullptr) != 0)) {
         handles.forget(path.string());
-        return std::optional<std::string>(failure(path, "cannot write"));
+        return std::optional<Message>(failure(path, "file_cannot_write_os"));
     }
-    return std::optional<std::string>();
+    return std::optional<Message>();
 }
 
 } // namespace
 
-std::optional<std::string> writeFileAtomically(const fs::path& path, std::string_view content,
+std::optional<Message> writeFileAtomically(const fs::path& path, std::string_view content,
                                                const AtomicWriteHooks& hooks) {
     if (auto done = writeScratchInPlace(path, content, hooks)) {
         return *done;
@@ -186,7 +185,7 @@ std::optional<std::string> writeFileAtomically(const fs::path& path, std::string
     struct stat existing {};
     if (::stat(path.c_str(), &existing) == 0) mode = existing.st_mode & 07777;
     auto created = createTempBeside(path, mode);
-    if (auto* error = std::get_if<std::string>(&created)) return *error;
+    if (auto* error = std::get_if<Message>(&created)) return *error;
     const fs::path temp = std::get<TempFile>(created).path;
     FileDescriptor file(std::get<TempFile>(created).descriptor);
     if (auto error = writeAll(file.get(), temp, content, hooks)) {
@@ -194,13 +193,13 @@ std::optional<std::string> writeFileAtomically(const fs::path& path, std::string
         return error;
     }
     if (!syncUnlessScratch(file.get(), path) || !file.close()) {
-        std::string error = failure(temp, "cannot sync");
+        Message error = failure(temp, "file_cannot_sync");
         ::unlink(temp.c_str());
         return error;
     }
     if (hooks.beforeRename) hooks.beforeRename();
     if (::rename(temp.c_str(), path.c_str()) != 0) {
-        std::string error = failure(path, "cannot replace");
+        Message error = failure(path, "file_cannot_replace");
         ::unlink(temp.c_str());
         return error;
     }
@@ -210,12 +209,12 @@ std::optional<std::string> writeFileAtomically(const fs::path& path, std::string
     return syncFolder(path.parent_path().empty() ? fs::path(".") : path.parent_path());
 }
 
-std::optional<std::string> syncFolder(const fs::path& folder) {
+std::optional<Message> syncFolder(const fs::path& folder) {
     if (inScratchFolder(folder)) {
         return std::nullopt;
     }
     FileDescriptor directory(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
-    if (directory.get() < 0 || ::fsync(directory.get()) != 0) return failure(folder, "cannot sync the folder");
+    if (directory.get() < 0 || ::fsync(directory.get()) != 0) return failure(folder, "file_cannot_sync_folder");
     return std::nullopt;
 }
 

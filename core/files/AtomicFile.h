@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -23,12 +25,12 @@ struct AtomicWriteHooks {
 // beside it (two writers never share one), which is synced, renamed over the target, and the folder
 // is synced so the rename itself survives a power cut. The target keeps its permissions. Temp files
 // that killed writers left for the same target are removed afterwards. nullopt on success, else
-// why (naming the file).
-std::optional<std::string> writeFileAtomically(const std::filesystem::path& path, std::string_view content,
+// why (naming the file), by message id.
+std::optional<Message> writeFileAtomically(const std::filesystem::path& path, std::string_view content,
                                                const AtomicWriteHooks& hooks = {});
 
 // Syncs a folder, so that a rename or a new file in it survives a power cut. nullopt on success.
-std::optional<std::string> syncFolder(const std::filesystem::path& folder);
+std::optional<Message> syncFolder(const std::filesystem::path& folder);
 
 // A new, empty temp file beside `target` for one writer: `.NAME.PID.XXXXXX` (hidden, so no reader
 // of the folder takes it for a file of its own), created with `mode`. Its open descriptor and path,
@@ -37,7 +39,7 @@ struct TempFile {
     int descriptor = -1;
     std::filesystem::path path;
 };
-std::variant<TempFile, std::string> createTempBeside(const std::filesystem::path& target, unsigned mode);
+std::variant<TempFile, Message> createTempBeside(const std::filesystem::path& target, unsigned mode);
 
 // The temp files beside `target` whose writer is gone (killed mid-write): the ones a later
 // successful write removes.

@@ -50,25 +50,25 @@ bool matches(const fs::path& file, const JournalEntry& entry) {
 }
 
 // The entries of a whole journal, or why it is not one.
-std::optional<std::string> parseJournal(const std::string& text, std::vector<JournalEntry>& entries) {
+std::optional<Message> parseJournal(const std::string& text, std::vector<JournalEntry>& entries) {
     std::istringstream in(text);
     std::string line;
     if (!std::getline(in, line) || line != kHeader) {
-        return "not a change journal of m350";
+        return message("journal_not_ours");
     }
     while (std::getline(in, line)) {
         if (line == kEnd) {
-            return entries.empty() ? std::optional<std::string>("it names no file") : std::nullopt;
+            return entries.empty() ? std::optional<Message>(message("journal_no_file")) : std::nullopt;
         }
         std::istringstream fields(line);
         JournalEntry entry;
         if (!(fields >> entry.name >> entry.size >> entry.checksum) || entry.name.find('/') != std::string::npos ||
             entry.name == "." || entry.name == "..") {
-            return "line " + std::to_string(entries.size() + 2) + " is no file of the change";
+            return message("journal_bad_line", {std::to_string(entries.size() + 2)});
         }
         entries.push_back(std::move(entry));
     }
-    return "it has no end line";
+    return message("journal_no_end");
 }
 
 void removePending(std::span<const ChangedFile> files) {
@@ -85,11 +85,11 @@ fs::path pendingPath(const fs::path& file) {
     return pending;
 }
 
-std::optional<std::string> finishInterruptedChange(const fs::path& journal, std::span<const fs::path> candidates) {
+std::optional<Message> finishInterruptedChange(const fs::path& journal, std::span<const fs::path> candidates) {
     struct stat info {};
     if (::lstat(journal.c_str(), &info) != 0) {
         if (errno != ENOENT) {
-            return journal.string() + ": " + std::strerror(errno);
+            return message("journal_os", {journal.string(), std::strerror(errno)});
         }
         for (const fs::path& file : candidates) {
             // a change that never happened: its journal was not written
@@ -99,11 +99,11 @@ std::optional<std::string> finishInterruptedChange(const fs::path& journal, std:
     }
     std::string text;
     if (auto why = readMachineFile(journal, text, kMostJournalBytes)) {
-        return journal.string() + ": cannot read the journal of an interrupted save: " + *why;
+        return message("journal_unreadable", {journal.string(), bilingual(*why)});
     }
     std::vector<JournalEntry> entries;
     if (auto why = parseJournal(text, entries)) {
-        return journal.string() + ": " + *why + " (remove it to keep the files as they are)";
+        return message("journal_refused", {journal.string(), bilingual(*why)});
     }
     const fs::path folder = folderOf(journal);
     for (const JournalEntry& entry : entries) {
@@ -112,27 +112,25 @@ std::optional<std::string> finishInterruptedChange(const fs::path& journal, std:
         std::error_code ec;
         if (fs::exists(fs::symlink_status(pending, ec))) {
             if (!matches(pending, entry)) {
-                return pending.string() + ": not the content the journal " + journal.string() +
-                       " names (remove both to keep the files as they are)";
+                return message("journal_pending_differs", {pending.string(), journal.string()});
             }
             if (::rename(pending.c_str(), target.c_str()) != 0) {
-                return target.string() + ": cannot finish an interrupted save: " + std::strerror(errno);
+                return message("journal_cannot_finish", {target.string(), std::strerror(errno)});
             }
         } else if (!matches(target, entry)) {
-            return target.string() + ": neither it nor its .pending file is what the journal " + journal.string() +
-                   " names (remove the journal to keep the file as it is)";
+            return message("journal_neither", {target.string(), journal.string()});
         }
     }
     if (auto error = syncFolder(folder)) {
         return error;
     }
     if (::unlink(journal.c_str()) != 0) {
-        return journal.string() + ": cannot remove: " + std::strerror(errno);
+        return message("file_cannot_remove", {journal.string(), std::strerror(errno)});
     }
     return syncFolder(folder);
 }
 
-std::optional<std::string> writeTogether(const fs::path& journal, std::span<const ChangedFile> files,
+std::optional<Message> writeTogether(const fs::path& journal, std::span<const ChangedFile> files,
                                          const AtomicWriteHooks& hooks) {
     std::vector<fs::path> paths;
     for (const ChangedFile& file : files) {
@@ -166,7 +164,7 @@ std::optional<std::string> writeTogether(const fs::path& journal, std::span<cons
     // the change has happened: from here a crash is finished by the next load
     for (std::size_t i = 0; i < files.size(); ++i) {
         if (::rename(pendingPath(files[i].path).c_str(), files[i].path.c_str()) != 0) {
-            return files[i].path.string() + ": cannot replace: " + std::strerror(errno);
+            return message("file_cannot_replace", {files[i].path.string(), std::strerror(errno)});
         }
         if (i + 1 < files.size() && hooks.betweenFiles) {
             hooks.betweenFiles();
@@ -183,7 +181,7 @@ std::optional<std::string> writeTogether(const fs::path& journal, std::span<cons
         }
     }
     if (::unlink(journal.c_str()) != 0) {
-        return journal.string() + ": cannot remove: " + std::strerror(errno);
+        return message("file_cannot_remove", {journal.string(), std::strerror(errno)});
     }
     return syncFolder(folderOf(journal));
 }

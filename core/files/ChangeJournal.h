@@ -24,14 +24,14 @@ struct ChangedFile {
 // removed. A change a crash interrupted is finished (or dropped, before its journal) by
 // finishInterruptedChange, which writeTogether also calls first. `hooks` interrupt the journal's
 // write (before the change) and come between the files (after it). nullopt on success, else why.
-std::optional<std::string> writeTogether(const std::filesystem::path& journal, std::span<const ChangedFile> files,
+std::optional<Message> writeTogether(const std::filesystem::path& journal, std::span<const ChangedFile> files,
                                          const AtomicWriteHooks& hooks = {});
 
 // After a crash: with a whole journal, the pending files it names are renamed into place (each
 // checked against its size and checksum) and the journal removed; without one, the `candidates`'
 // NAME.pending files, left by a change that never happened, are removed. Nothing to do is one stat.
 // nullopt when the folder is whole again, else why (naming the file).
-std::optional<std::string> finishInterruptedChange(const std::filesystem::path& journal,
+std::optional<Message> finishInterruptedChange(const std::filesystem::path& journal,
                                                    std::span<const std::filesystem::path> candidates);
 
 // NAME.pending beside `file`: where writeTogether puts its new content until the change happens.

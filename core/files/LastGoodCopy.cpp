@@ -29,7 +29,7 @@ fs::path lastGoodPath(const fs::path& file) {
     return copy;
 }
 
-std::optional<std::string> saveKeepingLastGood(const fs::path& file, std::string_view content,
+std::optional<Message> saveKeepingLastGood(const fs::path& file, std::string_view content,
                                                const AtomicWriteHooks& hooks) {
     if (auto error = writeFileAtomically(file, content, hooks)) {
         return error;

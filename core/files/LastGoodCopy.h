@@ -17,7 +17,7 @@ std::filesystem::path lastGoodPath(const std::filesystem::path& file);
 
 // Writes `content` into `file` atomically, then the same into its last good copy. nullopt on
 // success, else why; a copy that cannot be written fails the save too (the folder is read-only or full).
-std::optional<std::string> saveKeepingLastGood(const std::filesystem::path& file, std::string_view content,
+std::optional<Message> saveKeepingLastGood(const std::filesystem::path& file, std::string_view content,
                                                const AtomicWriteHooks& hooks = {});
 
 // After `file` loaded cleanly: an existing last good copy that differs from it is replaced. Nothing

@@ -15,28 +15,29 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string notRegular(mode_t mode) {
-    const char* what = S_ISDIR(mode)                     ? "a folder"
-                       : S_ISFIFO(mode)                  ? "a FIFO (named pipe)"
-                       : S_ISCHR(mode) || S_ISBLK(mode)  ? "a device"
-                       : S_ISSOCK(mode)                  ? "a socket"
-                                                         : "something";
-    return std::string("it is ") + what + ", not a regular file";
+Message notRegular(mode_t mode) {
+    return message(S_ISDIR(mode)                      ? "machine_file_folder"
+                   : S_ISFIFO(mode)                   ? "machine_file_fifo"
+                   : S_ISCHR(mode) || S_ISBLK(mode)   ? "machine_file_device"
+                   : S_ISSOCK(mode)                   ? "machine_file_socket"
+                                                      : "machine_file_special");
 }
 
-std::string tooBig(std::uintmax_t bytes, std::uintmax_t most) {
-    return std::to_string(bytes) + " bytes is more than a machine file can be (" + std::to_string(most / (1024 * 1024)) +
-           " MiB)";
+Message tooBig(std::uintmax_t bytes, std::uintmax_t most) {
+    return message("machine_file_too_big", {std::to_string(bytes), std::to_string(most / (1024 * 1024))});
 }
+
+// What the OS said (its own words, as strerror gives them), framed in the language said.
+Message osSaid(int error) { return message("machine_file_os", {std::strerror(error)}); }
 
 } // namespace
 
-std::optional<std::string> readMachineFile(const fs::path& file, std::string& text, std::uintmax_t mostBytes) {
+std::optional<Message> readMachineFile(const fs::path& file, std::string& text, std::uintmax_t mostBytes) {
     text.clear();
     // stat before open: a device is refused without being opened at all
     struct stat info {};
     if (::stat(file.c_str(), &info) != 0) {
-        return std::strerror(errno);
+        return osSaid(errno);
     }
     if (!S_ISREG(info.st_mode)) {
         return notRegular(info.st_mode);
@@ -44,10 +45,10 @@ std::optional<std::string> readMachineFile(const fs::path& file, std::string& te
     // O_NONBLOCK: should the file be swapped for a FIFO after the stat, opening it does not wait
     const FileDescriptor fd(::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
     if (fd.get() < 0) {
-        return std::strerror(errno);
+        return osSaid(errno);
     }
     if (::fstat(fd.get(), &info) != 0) {
-        return std::strerror(errno);
+        return osSaid(errno);
     }
     if (!S_ISREG(info.st_mode)) {
         return notRegular(info.st_mode);
@@ -72,7 +73,7 @@ std::optional<std::string> readMachineFile(const fs::path& file, std::string& te
             continue;
         }
         if (n < 0) {
-            const std::string why = std::strerror(errno);
+            const Message why = osSaid(errno);
             text.clear();
             return why;
         }

@@ -19,8 +19,8 @@ Message failure(const fs::path& file, const char* id, int error) {
     return message(id, {file.string(), std::strerror(error)});
 }
 
-std::optional<Message> passedOn(std::optional<std::string> why) {
-    return why ? std::optional<Message>(message("output_write_failed", {*why})) : std::nullopt;
+std::optional<Message> passedOn(const std::optional<Message>& why) {
+    return why ? std::optional<Message>(message("output_write_failed", {bilingual(*why)})) : std::nullopt;
 }
 
 } // namespace
@@ -53,8 +53,8 @@ std::variant<std::unique_ptr<OutputFile>, Message> OutputFile::open(const fs::pa
         return direct;
     }
     auto created = createTempBeside(target, exists ? existing.st_mode & 07777 : 0644);
-    if (auto* error = std::get_if<std::string>(&created)) {
-        return message("output_write_failed", {*error});
+    if (auto* error = std::get_if<Message>(&created)) {
+        return message("output_write_failed", {bilingual(*error)});
     }
     const TempFile temp = std::get<TempFile>(created);
     ::close(temp.descriptor);

@@ -40,7 +40,7 @@ bool SystemLog::load(std::string* error, std::size_t* skipped) {
     }
     std::string whole;
     if (auto why = readMachineFile(path_, whole)) {
-        *error = path_ + ": cannot read the system log: " + *why;
+        *error = path_ + ": cannot read the system log: " + why->english();
         return false;
     }
     std::istringstream in(std::move(whole));
@@ -106,7 +106,7 @@ bool SystemLog::compact(std::string* error) {
         content += line(e);
     }
     if (auto why = writeFileAtomically(path_, content)) {
-        *error = *why;
+        *error = why->english();
         return false;
     }
     tornTail_ = false;

@@ -14,14 +14,15 @@ toml::table parseTomlText(std::string_view text, std::string_view path) {
     return toml::parse(text, path);
 }
 
+UnreadableToml::UnreadableToml(Message reason, const std::string& path)
+    : toml::parse_error(message("toml_unreadable", {bilingual(reason)}).english().c_str(), toml::source_position{1, 1},
+                        std::make_shared<const std::string>(path)),
+      reason_(std::move(reason)), why_(message("toml_unreadable", {bilingual(reason_)})) {}
+
 toml::table parseTomlFile(const std::string& path) {
-    const auto unreadable = [&path](const std::string& why) {
-        return toml::parse_error(("cannot read: " + why).c_str(), toml::source_position{1, 1},
-                                 std::make_shared<const std::string>(path));
-    };
     std::string text;
     if (auto why = readMachineFile(path, text)) {
-        throw unreadable(*why);
+        throw UnreadableToml(std::move(*why), path);
     }
     return parseTomlText(text, path);
 }

@@ -12,6 +12,8 @@
 #endif
 #include <toml++/toml.h>
 
+#include "core/common/Message.h"
+
 #include <string>
 #include <string_view>
 
@@ -21,7 +23,21 @@ namespace m350::files {
 // TomlScreen.h) is refused with a toml::parse_error at the character that it stumbles on.
 toml::table parseTomlText(std::string_view text, std::string_view path);
 
-// Reads the file whole and parses it as parseTomlText does; an unreadable file is a toml::parse_error.
+// A file parseTomlFile could not read at all (a FIFO, a folder, too big, what the OS said): a
+// toml::parse_error at 1:1 whose description is the English, with the reason by message id for
+// a reader that says it in its language.
+class UnreadableToml : public toml::parse_error {
+public:
+    UnreadableToml(Message reason, const std::string& path);
+    const Message& why() const { return why_; }       // "cannot read: it is a FIFO ..."
+    const Message& reason() const { return reason_; } // "it is a FIFO ..."
+
+private:
+    Message reason_;
+    Message why_;
+};
+
+// Reads the file whole and parses it as parseTomlText does; an unreadable file is an UnreadableToml.
 toml::table parseTomlFile(const std::string& path);
 
 } // namespace m350::files

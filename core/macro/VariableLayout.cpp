@@ -33,23 +33,22 @@ int VariableLayout::workSystems(const gcode::Dialect& dialect) const {
     return additionalWorkSystems < 0 ? 48 : additionalWorkSystems;
 }
 
-std::optional<std::string> VariableLayout::refusedCommon(const std::vector<VariableRange>& ranges) {
+std::optional<Message> VariableLayout::refusedCommon(const std::vector<VariableRange>& ranges) {
     for (const VariableRange& r : ranges) {
         if (r.first > r.last) {
-            return text(r) + " runs backwards";
+            return message("common_range_backwards", {text(r)});
         }
         bool inside = std::any_of(std::begin(kCommonAreas), std::end(kCommonAreas), [&](const VariableRange& area) {
             return r.first >= area.first && r.last <= area.last;
         });
         if (!inside) {
-            return text(r) + " is not a common variable range: they lie within #100-#999 or #20000-#999999 "
-                             "(the numbers between are system variables)";
+            return message("common_range_outside", {text(r)});
         }
     }
     for (std::size_t i = 0; i < ranges.size(); ++i) {
         for (std::size_t j = i + 1; j < ranges.size(); ++j) {
             if (ranges[i].first <= ranges[j].last && ranges[j].first <= ranges[i].last) {
-                return text(ranges[i]) + " and " + text(ranges[j]) + " overlap";
+                return message("common_range_overlap", {text(ranges[i]), text(ranges[j])});
             }
         }
     }

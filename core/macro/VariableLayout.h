@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/gcode/Dialect.h"
 
 #include <optional>
@@ -32,7 +33,7 @@ struct VariableLayout {
 
     // Why `ranges` cannot be a FANUC machine's common variables: outside #100-#999 and
     // #20000-#999999 (the system variables lie between), or overlapping one another.
-    static std::optional<std::string> refusedCommon(const std::vector<VariableRange>& ranges);
+    static std::optional<Message> refusedCommon(const std::vector<VariableRange>& ranges);
 };
 
 } // namespace m350::macro

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <map>
 #include <optional>
 #include <string>
@@ -37,7 +39,7 @@ inline constexpr const char* kSpindleLoadFileName = "spindle-load.toml";
 struct LoadSettingsError {
     int line = 0;
     int column = 0;
-    std::string message;
+    Message message;
 };
 std::optional<LoadSettingsError> readLoadMonitorSettings(const std::string& path, LoadMonitorSettings& out);
 

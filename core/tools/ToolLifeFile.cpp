@@ -233,7 +233,7 @@ ParsedToolLife parseToolLife(std::string_view text, const std::string& file, con
     return reader.finish();
 }
 
-std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder, const LifeData* settings) {
+std::variant<ParsedToolLife, Message> loadToolLife(const std::string& folder, const LifeData* settings) {
     std::filesystem::path path = std::filesystem::path(folder) / kToolLifeFile;
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) {
@@ -241,7 +241,7 @@ std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder
     }
     std::string text;
     if (auto why = files::readMachineFile(path, text)) {
-        return "cannot read the file: " + *why;
+        return message("life_file_unreadable", {bilingual(*why)});
     }
     return parseToolLife(text, path.string(), settings);
 }

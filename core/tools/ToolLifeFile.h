@@ -44,8 +44,8 @@ struct ParsedToolLife {
 // `settings`: a FANUC machine's, from its parameters (LifeData::applyFanucParameters); the file's
 // own gs / ignore / ltm lines are then refused as lines that belong in params.toml.
 ParsedToolLife parseToolLife(std::string_view text, const std::string& file, const LifeData* settings = nullptr);
-// No file is no groups; a file that cannot be read is an error (the text says what), since saving
-// over it would lose it.
-std::variant<ParsedToolLife, std::string> loadToolLife(const std::string& folder, const LifeData* settings = nullptr);
+// No file is no groups; a file that cannot be read is an error (the message says what), since
+// saving over it would lose it.
+std::variant<ParsedToolLife, Message> loadToolLife(const std::string& folder, const LifeData* settings = nullptr);
 std::string formatToolLife(const LifeData& data);
 } // namespace m350::tools

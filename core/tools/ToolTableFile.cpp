@@ -265,7 +265,7 @@ std::string formatToolTable(const ToolTable& table) {
 std::variant<ParsedToolTable, Message> readToolTableFile(const std::filesystem::path& path) {
     std::string bytes;
     if (auto why = files::readMachineFile(path, bytes)) {
-        return message("tool_table_unreadable", {path.string(), *why});
+        return message("tool_table_unreadable", {path.string(), bilingual(*why)});
     }
     return parseToolTable(bytes, path.string());
 }

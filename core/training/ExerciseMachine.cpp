@@ -19,7 +19,7 @@ namespace {
 
 std::optional<Message> rewrite(const fs::path& file, const std::string& text) {
     if (auto why = files::writeFileAtomically(file.string(), text)) {
-        return message("exercise_write_failed", {*why});
+        return message("exercise_write_failed", {bilingual(*why)});
     }
     return std::nullopt;
 }
@@ -79,7 +79,7 @@ std::optional<Message> freezeForks(const fs::path& source, const fs::path& targe
     const fs::path file = target / "machine.toml";
     std::string text;
     if (auto why = files::readMachineFile(file, text)) {
-        return message("exercise_read_failed", {file.string(), *why});
+        return message("exercise_read_failed", {file.string(), bilingual(*why)});
     }
     const std::size_t header = text.find("\n[magazine]");
     const std::size_t lineEnd = header == std::string::npos ? std::string::npos : text.find('\n', header + 1);
@@ -146,7 +146,7 @@ std::optional<Message> prepareExerciseMachine(const Exercise& exercise, const st
         std::string text;
         if (fs::exists(params)) {
             if (auto why = files::readMachineFile(params, text)) {
-                return message("exercise_read_failed", {params.string(), *why});
+                return message("exercise_read_failed", {params.string(), bilingual(*why)});
             }
         }
         if (auto failed = rewrite(params, params::setTomlNumbers(text, "params", exercise.parameters))) {
@@ -157,7 +157,7 @@ std::optional<Message> prepareExerciseMachine(const Exercise& exercise, const st
         const fs::path file = target / change.file;
         std::string text;
         if (auto why = files::readMachineFile(file, text)) {
-            return message("exercise_read_failed", {file.string(), *why});
+            return message("exercise_read_failed", {file.string(), bilingual(*why)});
         }
         std::optional<std::string> changed = withLine(text, change.line, change.text);
         if (!changed) {

@@ -21,7 +21,7 @@ void ExerciseTomlReader::refuse(const toml::source_region& where, Message words)
 toml::table ExerciseTomlReader::parse() const {
     std::string text;
     if (auto why = files::readMachineFile(file_, text)) {
-        refuseFile(message("exercise_unreadable", {*why}));
+        refuseFile(message("exercise_unreadable", {bilingual(*why)}));
     }
     try {
         return files::parseTomlText(text, file_);

@@ -350,11 +350,11 @@ TEST(CommonVariables, ResetClearsThoseBelow500AndKeepsTheOthers) {
 TEST(CommonVariables, DeclaredRangesMustBeCommonAreasAndApart) {
     using macro::VariableLayout;
     EXPECT_EQ(VariableLayout::refusedCommon({{100, 499}, {500, 999}, {98000, 98499}}), std::nullopt);
-    EXPECT_EQ(VariableLayout::refusedCommon({{100, 1200}}).value_or(""),
+    EXPECT_EQ(VariableLayout::refusedCommon({{100, 1200}}).value_or(Message{}).english(),
               "#100-#1200 is not a common variable range: they lie within #100-#999 or #20000-#999999 (the numbers "
               "between are system variables)");
-    EXPECT_EQ(VariableLayout::refusedCommon({{100, 499}, {400, 600}}).value_or(""), "#100-#499 and #400-#600 overlap");
-    EXPECT_EQ(VariableLayout::refusedCommon({{600, 500}}).value_or(""), "#600-#500 runs backwards");
+    EXPECT_EQ(VariableLayout::refusedCommon({{100, 499}, {400, 600}}).value_or(Message{}).english(), "#100-#499 and #400-#600 overlap");
+    EXPECT_EQ(VariableLayout::refusedCommon({{600, 500}}).value_or(Message{}).english(), "#600-#500 runs backwards");
 }
 
 } // namespace

@@ -87,8 +87,8 @@ TEST(MachineFolder, TheFilesItOnlyReadsOrThatAreAppendedAreNotWrittenWhole) {
     const fs::path folder = freshFolder("inputs");
     writeText(folder / "machine.toml", "name = \"m\"\n");
     const MachineFolder store(folder);
-    EXPECT_THAT(store.write(FolderFile::Machine, "x").value_or(""), HasSubstr("machine.toml: not written whole"));
-    EXPECT_THAT(store.write(FolderFile::SystemLog, "x").value_or(""), HasSubstr("system-log.tsv: not written whole"));
+    EXPECT_THAT(store.write(FolderFile::Machine, "x").value_or(Message{}).english(), HasSubstr("machine.toml: not written whole"));
+    EXPECT_THAT(store.write(FolderFile::SystemLog, "x").value_or(Message{}).english(), HasSubstr("system-log.tsv: not written whole"));
     EXPECT_EQ(readText(folder / "machine.toml"), "name = \"m\"\n");
     EXPECT_FALSE(fs::exists(folder / "system-log.tsv"));
 }
@@ -105,16 +105,16 @@ TEST(MachineFolder, AFailedWriteLeavesTheOldFileAndSaysWhy) {
     const MachineFolder store(folder);
     ASSERT_EQ(store.write(FolderFile::ToolTable, "T1 P1 Z-50\n"), std::nullopt);
     ASSERT_EQ(store.write(FolderFile::Passwords, "old\n"), std::nullopt);
-    std::optional<std::string> toolTable, passwords;
+    std::optional<Message> toolTable, passwords;
     {
         FileSizeLimit limit(64);
         toolTable = store.write(FolderFile::ToolTable, std::string(4096, ';') + "\n");
         passwords = store.write(FolderFile::Passwords, std::string(4096, '#') + "\n");
     }
     ASSERT_TRUE(toolTable);
-    EXPECT_THAT(*toolTable, HasSubstr("tool.tbl"));
+    EXPECT_THAT(toolTable->english(), HasSubstr("tool.tbl"));
     ASSERT_TRUE(passwords);
-    EXPECT_THAT(*passwords, HasSubstr("passwords.toml"));
+    EXPECT_THAT(passwords->english(), HasSubstr("passwords.toml"));
     EXPECT_EQ(readText(folder / "tool.tbl"), "T1 P1 Z-50\n");
     EXPECT_EQ(readText(files::lastGoodPath(folder / "tool.tbl")), "T1 P1 Z-50\n");
     EXPECT_EQ(readText(folder / "passwords.toml"), "old\n");
@@ -211,7 +211,7 @@ TEST(MachineFolder, AToolTableExportIsRefusedOverAFolderFile) {
     writeText(folder / "tool.tbl", "T1 P1 Z-50\n");
     const MachineFolder store(folder);
     const tools::ToolTable table = tools::parseToolTable("T7 P7 Z-12\n", "tool.tbl").table;
-    EXPECT_THAT(store.exportToolTable(folder / "tool.tbl", table).value_or(""), HasSubstr("refused, nothing was written"));
+    EXPECT_THAT(store.exportToolTable(folder / "tool.tbl", table).value_or(Message{}).english(), HasSubstr("refused, nothing was written"));
     EXPECT_EQ(readText(folder / "tool.tbl"), "T1 P1 Z-50\n");
     ASSERT_EQ(store.exportToolTable(folder / "tool-export.tbl", table), std::nullopt);
     EXPECT_EQ(readText(folder / "tool-export.tbl"), "T7 P7 Z-12\n");

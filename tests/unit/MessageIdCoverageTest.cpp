@@ -15,6 +15,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 
 namespace m350 {
@@ -137,16 +138,41 @@ int bareRaises(const std::string& file, const std::string& source) {
     // built in the call, a warning pushed as text, a magazine refusal from text.
     static const std::regex configBare(
         R"re(\bfail\(\w+, *("|std::string|\w+ \+)|\bfail\(\w+, *$|warnings\.push_back|\bwarn\(" *|Invalid\{ *("|std::string))re");
-    // a message whose argument is a deeper layer's English (the change journal's,
-    // toollife.txt's, spindle-load.toml's, the file reader's, the variable layout's reasons)
+    // a message whose argument is a deeper layer's reason (the change journal's, toollife.txt's,
+    // spindle-load.toml's, the file reader's, the variable layout's) passed on as its English
+    // instead of nested with bilingual(Message)
     static const std::regex passedOn(
         R"re(config_(journal_broken|tool_life_unreadable|spindle_load_wrong|tool_table_unreadable|common_refused))re");
+    // The files whose reasons reach the operator inside another message: a reason returned, thrown
+    // or given as English words ("it is a FIFO...", "cannot " + ...) instead of message("id", ...).
+    static const std::set<std::string> reasonFiles{
+        "files/MachineFileRead.cpp", "files/Toml.cpp",         "files/AtomicFile.cpp",        "files/ChangeJournal.cpp",
+        "tools/ToolLifeFile.cpp",    "tools/SpindleLoadLimits.cpp", "macro/VariableLayout.cpp", "config/MachineFolder.cpp"};
+    static const std::regex reasonGiven(R"re(\b(return|throw)\b|\b(at|failure)\()re");
+    static const std::regex literal(R"re("(?:[^"\\]|\\.)*")re");
+    static const std::regex englishWord("[A-Za-z]{3,}");
+    const auto hasEnglishLiteral = [](const std::string& line) {
+        for (auto it = std::sregex_iterator(line.begin(), line.end(), literal); it != std::sregex_iterator(); ++it) {
+            const std::string text = it->str();
+            if (text.find(' ') != std::string::npos && std::regex_search(text, englishWord)) {
+                return true;
+            }
+        }
+        return false;
+    };
     const bool parser = file.rfind("gcode/", 0) == 0 || file.rfind("check/", 0) == 0;
     const bool config = file.rfind("config/", 0) == 0;
+    const bool reasons = reasonFiles.count(file) > 0;
     int count = 0;
     std::istringstream lines(source);
     for (std::string line; std::getline(lines, line);) {
-        if (config && (std::regex_search(line, configBare) || std::regex_search(line, passedOn))) {
+        const bool nested = line.find("bilingual(") != std::string::npos;
+        if (config && (std::regex_search(line, configBare) || (std::regex_search(line, passedOn) && !nested))) {
+            ++count;
+            continue;
+        }
+        if (reasons && !nested && line.find("message(") == std::string::npos && std::regex_search(line, reasonGiven) &&
+            hasEnglishLiteral(line)) {
             ++count;
             continue;
         }

@@ -58,7 +58,11 @@ bool hasEnglishWords(const std::string& text) {
         // passwords.toml's levels and its "SALT:HASH"
         "operator", "admin", "super", "SALT", "HASH",
         // modbus.toml's tables
-        "holding", "coils", "discrete", "forks", "station"};
+        "holding", "coils", "discrete", "forks", "station",
+        // spindle-load.toml's keys
+        "sample", "samples", "lower", "upper",
+        // a save's NAME.pending file
+        "pending"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;

@@ -136,7 +136,7 @@ TEST(ParamsFileWriter, AFailedWriteSaysWhichFile) {
     fs::path missing = fs::path(testing::TempDir()) / "no-such-folder" / "params.toml";
     auto error = files::writeFileAtomically(missing, "x");
     ASSERT_TRUE(error.has_value());
-    EXPECT_THAT(*error, HasSubstr("no-such-folder"));
+    EXPECT_THAT(error->english(), HasSubstr("no-such-folder"));
 }
 
 } // namespace

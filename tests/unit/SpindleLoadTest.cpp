@@ -97,7 +97,7 @@ TEST(SpindleLoadLimits, ABadFileSaysWhereAndWhat) {
     auto wrong = tools::readLoadMonitorSettings(path, settings);
     ASSERT_TRUE(wrong);
     EXPECT_EQ(wrong->line, 4) << wrong->message; // [tool.1]
-    EXPECT_NE(wrong->message.find("need 0 <= lower < upper"), std::string::npos) << wrong->message;
+    EXPECT_NE(wrong->message.english().find("need 0 <= lower < upper"), std::string::npos) << wrong->message;
     std::string good = test::writeTempFile("[monitor]\nsample_ms = 50\nsamples = 3\n[tool.2]\nlower = 8\nupper = 80\n", ".toml");
     ASSERT_FALSE(tools::readLoadMonitorSettings(good, settings));
     EXPECT_DOUBLE_EQ(settings.sampleSeconds, 0.05);

@@ -2,6 +2,7 @@
 
 #include "core/files/AtomicFile.h"
 #include "core/files/OutputFile.h"
+#include "ui/i18n/Language.h"
 
 #include <QJsonDocument>
 
@@ -45,8 +46,8 @@ bool ActionRecorder::start(const QString& path, QString* error) {
         return true;
     }
     auto created = files::createTempBeside(target_, exists ? existing.st_mode & 07777 : 0644);
-    if (auto* why = std::get_if<std::string>(&created)) {
-        *error = QString::fromStdString(*why); // it names the file
+    if (auto* why = std::get_if<Message>(&created)) {
+        *error = QString::fromStdString(why->in(Language::messageLanguage())); // it names the file
         return false;
     }
     fd_ = std::get<files::TempFile>(created).descriptor;

@@ -1,6 +1,7 @@
 #include "ui/pages/MdiLines.h"
 
 #include "core/config/MachineFolder.h"
+#include "ui/i18n/Language.h"
 
 #include <QFile>
 #include <QStringDecoder>
@@ -60,7 +61,7 @@ bool MdiLines::save(const QString& folder, const QStringList& lines, QString* er
     // as every machine folder file: a temp file, fsync, rename, fsync of the folder
     const std::string_view content(bytes.constData(), static_cast<std::size_t>(bytes.size()));
     if (auto problem = config::MachineFolder(folder.toStdString()).write(config::FolderFile::MdiBlock, content)) {
-        *error = QString::fromStdString(*problem);
+        *error = QString::fromStdString(problem->in(Language::messageLanguage()));
         return false;
     }
     return true;

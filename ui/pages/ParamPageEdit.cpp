@@ -4,6 +4,7 @@
 
 #include "core/config/MachineFolder.h"
 #include "core/params/ParameterBackup.h"
+#include "ui/i18n/Language.h"
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
@@ -113,7 +114,7 @@ void ParamPage::backup() {
     QString path = backupPath(context());
     std::string text = params::formatParameterBackup(s->status.parameters, *catalogue_, s->machineName.toStdString());
     if (auto error = context().folderFiles().write(config::FolderFile::ParamsBackup, text)) {
-        context().notify(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
+        context().notify(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(error->in(Language::messageLanguage())));
         return;
     }
     context().notify(tr("Parameters backed up to %1").arg(QFileInfo(path).fileName()));

@@ -1,5 +1,6 @@
 #include "ui/pages/RecordPage.h"
 
+#include "ui/i18n/Language.h"
 #include "ui/pages/PageId.h"
 #include "ui/pages/PanelContext.h"
 
@@ -64,7 +65,7 @@ void RecordPage::exportRecord() {
     const QByteArray text = recordText().toUtf8() + '\n';
     const std::string_view bytes(text.constData(), static_cast<std::size_t>(text.size()));
     if (auto error = folder.write(config::FolderFile::WorkRecord, bytes)) {
-        context().notify(tr("%1: cannot write: %2").arg(path, QString::fromStdString(*error)));
+        context().notify(tr("%1: cannot write: %2").arg(path, QString::fromStdString(error->in(Language::messageLanguage()))));
         return;
     }
     context().notify(tr("Working record saved to %1").arg(path));

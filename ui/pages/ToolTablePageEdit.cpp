@@ -233,7 +233,7 @@ void ToolTablePage::exportTable() {
             return;
         }
         if (auto error = context().folderFiles().exportToolTable(path.toStdString(), *shown_)) {
-            context().notify(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
+            context().notify(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(error->in(Language::messageLanguage())));
             return;
         }
         context().notify(tr("Tool table exported to %1").arg(QFileInfo(path).fileName()));

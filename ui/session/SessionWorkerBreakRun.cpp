@@ -89,7 +89,7 @@ void SessionWorker::keepBreakPoint() {
     }
     const std::string text = point->file + '\n' + std::to_string(point->line) + '\n';
     if (auto problem = folder_.write(config::FolderFile::BreakPoint, text)) {
-        lastError_ = QString::fromStdString(*problem);
+        lastError_ = QString::fromStdString(problem->in(Language::messageLanguage()));
         return;
     }
     keptBreak_ = std::make_pair(QString::fromStdString(point->file), static_cast<int>(point->line));

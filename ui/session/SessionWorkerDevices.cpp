@@ -6,6 +6,7 @@
 #include "ui/session/SessionWorker.h"
 
 #include "core/controller/Controller.h"
+#include "ui/i18n/Language.h"
 
 #include <string_view>
 
@@ -65,7 +66,7 @@ void SessionWorker::saveExternalOutput() {
     externalOutputUnsaved_ = false;
     externalOutputSaved_.start();
     if (auto problem = folder_.write(config::FolderFile::ExternalOutput, controller_->externalDevices().received())) {
-        lastError_ = tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*problem);
+        lastError_ = tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(problem->in(Language::messageLanguage()));
     }
 }
 

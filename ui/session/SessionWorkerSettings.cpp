@@ -4,6 +4,7 @@
 
 #include "core/controller/Controller.h"
 #include "core/controller/ToolTableSave.h"
+#include "ui/i18n/Language.h"
 
 #include <cmath>
 #include <limits>
@@ -22,7 +23,7 @@ bool SessionWorker::saveParameters(const std::map<int, double>& values) {
         return true; // a machine built in memory (tests of the core) has no folder to keep
     }
     if (auto error = controller::saveParameters(*controller_, folder_, values)) { // with tool.tbl when due
-        refuse(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(*error));
+        refuse(tr("File save failed!", "msg 907") + QStringLiteral(" ") + QString::fromStdString(error->in(Language::messageLanguage())));
         return false;
     }
     for (auto [number, value] : values) {

@@ -72,7 +72,7 @@ void SessionWorker::keepToolTable() {
     const tools::ToolData::Mark mark = controller_->toolTableEdits().mark();
     if (!folder_.path().empty() && controller_->toolTableEdits().changed() && !(failedToolMark_ && *failedToolMark_ == mark)) {
         if (auto error = controller::saveToolTable(*controller_, folder_)) {
-            toolTableProblem_ = QString::fromStdString(*error);
+            toolTableProblem_ = QString::fromStdString(error->in(Language::messageLanguage()));
             failedToolMark_ = mark;
         } else {
             toolTableProblem_.clear();
@@ -103,7 +103,7 @@ void SessionWorker::keepToolLife() {
     const std::uint64_t revision = life.revision();
     if (!folder_.path().empty() && life.changed() && failedLifeRevision_ != revision) {
         if (auto error = folder_.saveToolLife(life.data())) {
-            toolLifeProblem_ = QString::fromStdString(*error);
+            toolLifeProblem_ = QString::fromStdString(error->in(Language::messageLanguage()));
             failedLifeRevision_ = revision;
         } else {
             toolLifeProblem_.clear();

@@ -119,7 +119,7 @@ void UserAccess::load() {
 
 std::optional<QString> UserAccess::save() const {
     if (auto error = folder_.write(config::FolderFile::Passwords, config::formatPasswords(stored_))) {
-        return QString::fromStdString(*error);
+        return QString::fromStdString(error->in(Language::messageLanguage()));
     }
     return std::nullopt;
 }

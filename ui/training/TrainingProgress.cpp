@@ -1,6 +1,7 @@
 #include "ui/training/TrainingProgress.h"
 
 #include "core/files/AtomicFile.h"
+#include "ui/i18n/Language.h"
 
 #include <QFile>
 #include <QJsonDocument>
@@ -59,7 +60,7 @@ QString TrainingProgress::add(const QString& trainee, const QString& exercise, b
     }
     const QByteArray text = QJsonDocument(trainees).toJson(QJsonDocument::Indented);
     if (auto why = files::writeFileAtomically(file_.toStdString(), std::string_view(text.constData(), static_cast<std::size_t>(text.size())))) {
-        return QString::fromStdString(*why);
+        return QString::fromStdString(why->in(Language::messageLanguage()));
     }
     return {};
 }
