@@ -40,34 +40,40 @@ std::string formatParameterBackup(const ParameterTable& parameters, const Parame
     return out;
 }
 
-std::variant<ParameterRestore, std::string> readParameterBackup(const std::filesystem::path& file,
-                                                                const ParameterCatalogue& catalogue) {
+std::variant<ParameterRestore, Message> readParameterBackup(const std::filesystem::path& file,
+                                                            const ParameterCatalogue& catalogue) {
     toml::table t;
     try {
         t = files::parseTomlFile(file.string());
     } catch (const toml::parse_error& e) {
-        return where(file, e.source()) + std::string(e.description());
+        return message("backup_file_toml", {where(file, e.source()), std::string(e.description())});
     }
     const toml::node* format = t.at_path("backup.format").node();
-    if (!format || format->value<int>() != kFormat)
-        return file.string() + ":1:1: not a parameter backup (its [backup] table must say format = 1)";
+    if (!format || format->value<int>() != kFormat) {
+        return message("backup_file_not_backup", {file.string()});
+    }
     const toml::table* params = t["params"].as_table();
-    if (!params) return file.string() + ":1:1: no [params] table";
+    if (!params) {
+        return message("backup_file_no_params", {file.string()});
+    }
     ParameterRestore restore;
     for (auto&& [key, node] : *params) {
         int n = -1;
         auto [end, ec] = std::from_chars(key.str().data(), key.str().data() + key.str().size(), n);
-        if (ec != std::errc() || end != key.str().data() + key.str().size() || !ParameterTable::valid(n))
-            return where(file, key.source()) + "'" + std::string(key.str()) + "' is not a parameter from 0 to 999";
+        if (ec != std::errc() || end != key.str().data() + key.str().size() || !ParameterTable::valid(n)) {
+            return message("backup_file_bad_key", {where(file, key.source()), std::string(key.str())});
+        }
         auto value = node.value<double>();
-        if (!value || !std::isfinite(*value)) return where(file, node.source()) + "parameter " + std::to_string(n) + " must be a finite number";
+        if (!value || !std::isfinite(*value)) {
+            return message("backup_file_not_finite", {where(file, node.source()), std::to_string(n)});
+        }
         if (catalogue.find(n))
             if (auto problem = catalogue.validate(n, *value)) restore.outOfRange.push_back(problem->english());
         restore.values[n] = *value;
     }
-    if (restore.values.size() != static_cast<std::size_t>(ParameterTable::kCount))
-        return file.string() + ": holds " + std::to_string(restore.values.size()) +
-               " parameters; a backup holds all 1000 (0-999)";
+    if (restore.values.size() != static_cast<std::size_t>(ParameterTable::kCount)) {
+        return message("backup_file_count", {file.string(), std::to_string(restore.values.size())});
+    }
     return restore;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include "core/params/ParameterCatalogue.h"
 #include "core/params/ParameterTable.h"
 
@@ -36,7 +38,7 @@ struct ParameterRestore {
 // Reads a backup. The file must parse, say `format = 1`, and give every parameter 0-999 exactly
 // once as a number; otherwise the error names the file and line ("file:12:5: why"). A value
 // outside its catalogued range is restored as written and listed, as params.toml loading does.
-std::variant<ParameterRestore, std::string> readParameterBackup(const std::filesystem::path& file,
+std::variant<ParameterRestore, Message> readParameterBackup(const std::filesystem::path& file,
                                                                 const ParameterCatalogue& catalogue);
 
 } // namespace m350::params

@@ -62,7 +62,9 @@ bool hasEnglishWords(const std::string& text) {
         // spindle-load.toml's keys
         "sample", "samples", "lower", "upper",
         // a save's NAME.pending file
-        "pending"};
+        "pending",
+        // params-backup.toml's table and key
+        "backup", "format"};
     for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         if (kept.count(it->str()) == 0) {
             return true;

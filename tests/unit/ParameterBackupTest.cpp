@@ -36,7 +36,7 @@ TEST(ParameterBackup, ABackupRestoresEveryParameterAsSaved) {
     table.set(129, 10.25);
     fs::path file = backupFile("backup-ok.toml", params::formatParameterBackup(table, catalogue(), "m350 \"test\""));
     auto read = params::readParameterBackup(file, catalogue());
-    ASSERT_TRUE(std::holds_alternative<params::ParameterRestore>(read)) << std::get<std::string>(read);
+    ASSERT_TRUE(std::holds_alternative<params::ParameterRestore>(read)) << std::get<Message>(read).english();
     const params::ParameterRestore& restore = std::get<params::ParameterRestore>(read);
     ASSERT_EQ(restore.values.size(), 1000u);
     EXPECT_EQ(restore.values.at(61), 2500);
@@ -49,22 +49,22 @@ TEST(ParameterBackup, ABackupRestoresEveryParameterAsSaved) {
 TEST(ParameterBackup, ABrokenFileIsRefusedWithItsLine) {
     fs::path file = backupFile("backup-broken.toml", "[backup]\nformat = 1\n[params]\n0 = 50\n1 = fifty\n");
     auto read = params::readParameterBackup(file, catalogue());
-    ASSERT_TRUE(std::holds_alternative<std::string>(read));
-    EXPECT_THAT(std::get<std::string>(read), StartsWith(file.string() + ":5:"));
+    ASSERT_TRUE(std::holds_alternative<Message>(read));
+    EXPECT_THAT(std::get<Message>(read).english(), StartsWith(file.string() + ":5:"));
 }
 
 TEST(ParameterBackup, AFileThatIsNotABackupOrIsShortIsRefused) {
     auto other = params::readParameterBackup(backupFile("backup-other.toml", "[params]\n61 = 3000\n"), catalogue());
-    ASSERT_TRUE(std::holds_alternative<std::string>(other));
-    EXPECT_THAT(std::get<std::string>(other), HasSubstr("not a parameter backup"));
+    ASSERT_TRUE(std::holds_alternative<Message>(other));
+    EXPECT_THAT(std::get<Message>(other).english(), HasSubstr("not a parameter backup"));
     auto shortFile = params::readParameterBackup(backupFile("backup-short.toml", "[backup]\nformat = 1\n[params]\n61 = 3000\n"),
                                          catalogue());
-    ASSERT_TRUE(std::holds_alternative<std::string>(shortFile));
-    EXPECT_THAT(std::get<std::string>(shortFile), HasSubstr("holds 1 parameters"));
+    ASSERT_TRUE(std::holds_alternative<Message>(shortFile));
+    EXPECT_THAT(std::get<Message>(shortFile).english(), HasSubstr("holds 1 parameters"));
     auto wrongKey = params::readParameterBackup(backupFile("backup-key.toml", "[backup]\nformat = 1\n[params]\n1000 = 3\n"),
                                         catalogue());
-    ASSERT_TRUE(std::holds_alternative<std::string>(wrongKey));
-    EXPECT_THAT(std::get<std::string>(wrongKey), HasSubstr(":4:1: '1000' is not a parameter"));
+    ASSERT_TRUE(std::holds_alternative<Message>(wrongKey));
+    EXPECT_THAT(std::get<Message>(wrongKey).english(), HasSubstr(":4:1: '1000' is not a parameter"));
 }
 
 TEST(ParameterPages, TabsHoldTheFirmwareGroupsAndEveryListedNumberIsFound) {

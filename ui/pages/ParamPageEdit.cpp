@@ -134,8 +134,8 @@ void ParamPage::restore() {
             return;
         }
         auto read = params::readParameterBackup(path.toStdString(), *catalogue_);
-        if (auto* error = std::get_if<std::string>(&read)) {
-            context().notify(tr("Parameter restore refused, nothing changed: %1").arg(QString::fromStdString(*error)));
+        if (auto* error = std::get_if<Message>(&read)) {
+            context().notify(tr("Parameter restore refused, nothing changed: %1").arg(QString::fromStdString(error->in(Language::messageLanguage()))));
             return;
         }
         const params::ParameterRestore& restore = std::get<params::ParameterRestore>(read);
