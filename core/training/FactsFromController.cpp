@@ -4,6 +4,8 @@
 
 namespace m350::training {
 
+double attemptClock(const controller::Controller& controller) { return controller.displayTime(); }
+
 AttemptFacts factsFromController(controller::Controller& controller, const Exercise& exercise, double attemptStart,
                                  const std::string& machineFolder) {
     AttemptFacts facts;

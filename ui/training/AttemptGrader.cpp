@@ -87,7 +87,7 @@ GradeOutcome gradeAttemptFile(const GradeRequest& request) {
     window.show();
     settle(session);
     double start = 0.0;
-    session.examine([&start](controller::Controller& controller) { start = controller.displayTime(); });
+    session.examine([&start](controller::Controller& controller) { start = training::attemptClock(controller); });
     std::vector<ReplayPlace> places;
     const std::vector<OperatorAction> actions = gradedActions(exercise, *attempt, &places);
     if (QString error = playReplay(window, session, actions, request.attemptFile, places); !error.isEmpty()) {

@@ -57,7 +57,7 @@ std::unique_ptr<AttemptRun> AttemptRun::start(Setup setup, QString* error) {
     run->window_ = std::make_unique<MainWindow>(*run->session_, machine, run->setup_.language);
     AttemptRun* self = run.get();
     run->session_->sync();
-    run->session_->examine([self](controller::Controller& controller) { self->startDisplay_ = controller.displayTime(); });
+    run->session_->examine([self](controller::Controller& controller) { self->startDisplay_ = training::attemptClock(controller); });
     run->now_ = run->session_->latest() ? run->session_->latest()->sessionTime : 0.0;
     auto writer = std::make_shared<AttemptWriter>(run->setup_.exerciseToml, run->setup_.examKey);
     ActionRecorder& recorder = run->window_->recorder();

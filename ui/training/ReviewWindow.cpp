@@ -1,8 +1,8 @@
+#include "core/training/FactsFromController.h"
 #include "ui/training/ReviewWindow.h"
 
 #include "core/config/CallCodeParameters.h"
 #include "core/config/MachineConfig.h"
-#include "core/controller/Controller.h"
 #include "core/files/ScratchFolder.h"
 #include "ui/i18n/Language.h"
 #include "ui/pages/GraphicsPage.h"
@@ -112,7 +112,7 @@ std::unique_ptr<ReviewWindow> ReviewWindow::open(const Request& request, QString
     w.setCentralWidget(central);
 
     settle(*w.session_);
-    w.session_->examine([&w](controller::Controller& controller) { w.startDisplay_ = controller.displayTime(); });
+    w.session_->examine([&w](controller::Controller& controller) { w.startDisplay_ = training::attemptClock(controller); });
     std::vector<ReplayPlace> places;
     std::vector<OperatorAction> actions = gradedActions(w.exercise_, w.attempt_, &places);
     w.playback_ = std::make_unique<ReviewPlayback>(*w.panel_, *w.session_, std::move(actions), std::move(places),
