@@ -13,6 +13,7 @@
 #include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/MainWindow.h"
 #include "ui/panel/PanelStyle.h"
+#include "ui/panel/QuietOffscreen.h"
 #include "ui/panel/PanelMeter.h"
 #include "ui/session/MachineFolderCopy.h"
 #include "ui/replay/Replay.h"
@@ -84,6 +85,7 @@ int main(int argc, char** argv) {
     std::signal(SIGPIPE, SIG_IGN); // a FIFO whose reader went away is a write error, said, not a silent death
     QApplication app(argc, argv); // takes Qt's own options (-platform ...) out of argv first
     QApplication::setApplicationName(QStringLiteral("m350-studio"));
+    ui::installQuietOffscreen();
     ui::Language language(app);
     auto parsed = hmi::parseHmiCommandLine(argc, argv);
     if (!parsed.options) {

@@ -2,6 +2,8 @@
 
 #include <ostream>
 #include <stdexcept>
+#include <string_view>
+#include <unordered_map>
 
 namespace m350 {
 
@@ -77,12 +79,16 @@ const std::vector<MessagePattern>& messagePatterns() {
 }
 
 const MessagePattern* findMessagePattern(std::string_view id) {
-    for (const MessagePattern& pattern : messagePatterns()) {
-        if (pattern.id == id) {
-            return &pattern;
+    // looked up for every alarm and status line shown: hundreds of ids, searched by hash
+    static const std::unordered_map<std::string_view, const MessagePattern*> byId = [] {
+        std::unordered_map<std::string_view, const MessagePattern*> index;
+        for (const MessagePattern& pattern : messagePatterns()) {
+            index.emplace(pattern.id, &pattern); // the first of a repeated id, as the search found
         }
-    }
-    return nullptr;
+        return index;
+    }();
+    const auto found = byId.find(id);
+    return found == byId.end() ? nullptr : found->second;
 }
 
 std::string messageText(std::string_view id, const std::vector<std::string>& arguments, MessageLanguage language) {

@@ -355,4 +355,22 @@ TEST(HmiReplay, ListsScrolledBetweenPageSwitchesEndAsTheEagerReplayLeavesThem) {
     expectSameEnd(fast, eager);
 }
 
+// A headless replay's stderr carries what the panel says, not a platform note per page switch
+// (the offscreen platform's "does not support propagateSizeHints()" came at every switch).
+TEST(HmiReplay, PageSwitchesLeaveStderrQuiet) {
+    QTemporaryDir dir;
+    QFile replayFile(dir.filePath("pages.jsonl"));
+    ASSERT_TRUE(replayFile.open(QIODevice::WriteOnly));
+    const char* pages[] = {"MONITOR", "PARAM", "PROGRAM", "IO", "LOG", "SYSTEM", "MDI", "PROBE"};
+    for (int i = 0; i < 80; ++i) {
+        replayFile.write(QStringLiteral("{\"t\":%1,\"key\":\"%2\"}\n").arg(0.05 * i, 0, 'f', 2).arg(QLatin1String(pages[i % 8])).toUtf8());
+    }
+    replayFile.close();
+    HmiRun run = runHmi({"--replay", replayFile.fileName(), "--lang", "en"});
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_FALSE(run.errors.contains("propagateSizeHints")) << run.errors.toStdString();
+    EXPECT_LT(run.errors.count(QLatin1Char('\n')), 3) << run.errors.toStdString();
+    EXPECT_EQ(run.state.value("page").toString(), QStringLiteral("probe"));
+}
+
 } // namespace m350::test

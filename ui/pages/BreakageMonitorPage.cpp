@@ -1,6 +1,7 @@
 #include "ui/pages/BreakageMonitorPage.h"
 
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QChart>
 #include <QChartView>
@@ -85,9 +86,8 @@ BreakageMonitorPage::BreakageMonitorPage(PanelContext& context, QWidget* parent)
     grid->setColumnStretch(1, 1);
     grid->setColumnStretch(3, 1);
     column->addLayout(grid);
-    help_ = new QLabel(this);
+    help_ = new WrappedLabel(this);
     help_->setObjectName("pageHelp");
-    help_->setWordWrap(true);
     column->addWidget(help_);
     retranslate();
 }

@@ -3,6 +3,7 @@
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QHeaderView>
 #include <QLabel>
@@ -39,9 +40,8 @@ CoordPage::CoordPage(PanelContext& context, QWidget* parent) : Page(context, par
     }
     step_ = new QLabel(this);
     step_->setObjectName("coordStep");
-    help_ = new QLabel(this);
+    help_ = new WrappedLabel(this);
     help_->setObjectName("pageHelp");
-    help_->setWordWrap(true);
     column->addWidget(table_, 1);
     column->addWidget(step_);
     column->addWidget(help_);

@@ -3,6 +3,7 @@
 #include "ui/pages/PanelContext.h"
 
 #include "core/config/HookFiles.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -47,9 +48,8 @@ CustomKeysPage::CustomKeysPage(PanelContext& context, QWidget* parent) : Page(co
         grid->addWidget(button, (key - 1) / kColumns, (key - 1) % kColumns);
     }
     column->addLayout(grid);
-    runs_ = new QLabel(this);
+    runs_ = new WrappedLabel(this);
     runs_->setObjectName("customKeysRuns");
-    runs_->setWordWrap(true);
     column->addWidget(runs_);
     column->addStretch(1);
     retranslate();

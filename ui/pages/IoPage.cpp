@@ -7,6 +7,7 @@
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QGridLayout>
 #include <QHeaderView>
@@ -68,9 +69,8 @@ IoPage::IoPage(PanelContext& context, QWidget* parent) : Page(context, parent) {
         lamps->addWidget(l, 4 + (pin - 1) / 12, (pin - 1) % 12);
     }
     column->addLayout(lamps);
-    watch_ = new QLabel(this);
+    watch_ = new WrappedLabel(this);
     watch_->setObjectName("ioWatch");
-    watch_->setWordWrap(true);
     column->addWidget(watch_);
     retranslate();
 }

@@ -5,6 +5,7 @@
 #include "ui/pages/MdiLines.h"
 #include "ui/pages/PanelContext.h"
 #include "ui/widgets/TextSizeDelegate.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QJsonArray>
 #include <QLabel>
@@ -28,12 +29,10 @@ MdiPage::MdiPage(PanelContext& context, QWidget* parent) : Page(context, parent)
     editor_->setObjectName("mdiEditor");
     editor_->setFocusPolicy(Qt::NoFocus); // keys reach it through the dispatcher
     editor_->hide();
-    result_ = new QLabel(this);
+    result_ = new WrappedLabel(this);
     result_->setObjectName("mdiResult");
-    result_->setWordWrap(true);
-    help_ = new QLabel(this);
+    help_ = new WrappedLabel(this);
     help_->setObjectName("pageHelp");
-    help_->setWordWrap(true);
     list_->setMaximumHeight(6 * 26 + 8);
     dro_ = new CompactDro(this);
     column->addWidget(list_);

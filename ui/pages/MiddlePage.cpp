@@ -2,6 +2,7 @@
 
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QJsonObject>
 #include <QLabel>
@@ -27,9 +28,8 @@ MiddlePage::MiddlePage(PanelContext& context, QWidget* parent) : Page(context, p
     values_ = new QLabel(this);
     values_->setObjectName("middleValues");
     values_->setStyleSheet(QStringLiteral("font-family: 'DejaVu Sans Mono', 'WenQuanYi Micro Hei Mono', monospace; font-size: 13pt;"));
-    help_ = new QLabel(this);
+    help_ = new WrappedLabel(this);
     help_->setObjectName("pageHelp");
-    help_->setWordWrap(true);
     column->addWidget(values_);
     column->addStretch(1);
     column->addWidget(help_);

@@ -5,6 +5,7 @@
 #include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
 #include "ui/session/UserAccess.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QApplication>
 #include <QHBoxLayout>
@@ -65,9 +66,8 @@ ParamPage::ParamPage(PanelContext& context, QWidget* parent) : Page(context, par
     table_->setStyleSheet(QStringLiteral("QTableWidget { font-family: \"%1\"; font-size: 11pt; }")
                               .arg(QApplication::font().family()));
     connect(table_, &QTableWidget::currentCellChanged, this, [this] { fillInfo(); });
-    info_ = new QLabel(this);
+    info_ = new WrappedLabel(this);
     info_->setObjectName("paramInfo");
-    info_->setWordWrap(true);
     info_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     info_->setFixedWidth(205);
     info_->setTextFormat(Qt::PlainText);

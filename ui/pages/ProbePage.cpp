@@ -2,6 +2,7 @@
 
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QGridLayout>
 #include <QGroupBox>
@@ -97,13 +98,11 @@ ProbePage::ProbePage(PanelContext& context, QWidget* parent) : Page(context, par
     }
     gridBox_->hide();
     column->addWidget(gridBox_);
-    progress_ = new QLabel(this);
+    progress_ = new WrappedLabel(this);
     progress_->setObjectName("probeProgress");
-    progress_->setWordWrap(true);
     column->addWidget(progress_);
-    help_ = new QLabel(this);
+    help_ = new WrappedLabel(this);
     help_->setObjectName("pageHelp");
-    help_->setWordWrap(true);
     column->addWidget(help_, 1, Qt::AlignBottom);
     retranslate();
 }

@@ -6,6 +6,7 @@
 #include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
 #include "ui/session/UserAccess.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QDirIterator>
 #include <QGridLayout>
@@ -34,9 +35,8 @@ SystemPage::SystemPage(PanelContext& context, QWidget* parent) : Page(context, p
     for (const char* name : kFields) {
         auto* caption = new QLabel(this);
         caption->setObjectName("infoCaption");
-        auto* field = new QLabel(this);
+        auto* field = new WrappedLabel(this);
         field->setObjectName(QStringLiteral("system_%1").arg(QLatin1String(name)));
-        field->setWordWrap(true);
         field->setTextInteractionFlags(Qt::TextSelectableByMouse);
         grid->addWidget(caption, row, 0, Qt::AlignRight | Qt::AlignTop);
         grid->addWidget(field, row, 1);

@@ -21,6 +21,7 @@
 #include "ui/panel/PromptBox.h"
 #include "ui/panel/SoftkeyBar.h"
 #include "ui/panel/StatusLine.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QApplication>
 #include <QEvent>
@@ -46,9 +47,8 @@ MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language*
     stack_ = new PageStack(screen);
     message_ = new QLabel(screen);
     message_->setObjectName("messageLine");
-    alarm_ = new QLabel(screen);
+    alarm_ = new WrappedLabel(screen);
     alarm_->setObjectName("alarmLine");
-    alarm_->setWordWrap(true);
     alarm_->hide();
     softkeys_ = new SoftkeyBar(screen);
     column->addWidget(status_);

@@ -1,4 +1,5 @@
 #include "ui/panel/PromptBox.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QFrame>
 #include <QGridLayout>
@@ -19,9 +20,8 @@ PromptBox::PromptBox(QWidget* parent) : QWidget(parent) {
     frame_->setObjectName("promptFrame");
     centre->addWidget(frame_, 0, 0, Qt::AlignCenter);
     auto* layout = new QVBoxLayout(frame_);
-    question_ = new QLabel(frame_);
+    question_ = new WrappedLabel(frame_);
     question_->setObjectName("promptQuestion");
-    question_->setWordWrap(true);
     edit_ = new QLineEdit(frame_);
     edit_->setObjectName("promptText");
     hint_ = new QLabel(frame_);

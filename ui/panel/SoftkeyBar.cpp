@@ -1,7 +1,8 @@
 #include "ui/panel/SoftkeyBar.h"
 
+#include "ui/panel/SoftkeyButton.h"
+
 #include <QGridLayout>
-#include <QPushButton>
 
 namespace m350::ui {
 
@@ -11,7 +12,7 @@ SoftkeyBar::SoftkeyBar(QWidget* parent) : QWidget(parent) {
     grid->setContentsMargins(2, 2, 2, 2);
     grid->setSpacing(3);
     for (int number = 1; number <= 12; ++number) {
-        auto* button = new QPushButton(this);
+        auto* button = new SoftkeyButton(this);
         button->setObjectName(QStringLiteral("softkey%1").arg(number));
         button->setFocusPolicy(Qt::NoFocus);
         button->setMinimumHeight(34);

@@ -2,6 +2,7 @@
 
 #include "ui/program/GcodeHighlighter.h"
 #include "ui/program/ProgramChecker.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QFileInfo>
 #include <QLabel>
@@ -18,10 +19,9 @@ ProgramEditor::ProgramEditor(const gcode::Dialect& dialect, std::vector<config::
     title_ = new QLabel(this);
     title_->setObjectName("editorTitle");
     view_ = new CodeView(dialect, this);
-    findings_ = new QLabel(this);
+    findings_ = new WrappedLabel(this);
     findings_->setObjectName("editorFindings");
     findings_->setStyleSheet(QStringLiteral("color: #ff8080;"));
-    findings_->setWordWrap(true);
     column->addWidget(title_);
     column->addWidget(view_, 1);
     column->addWidget(findings_);

@@ -3,6 +3,7 @@
 #include "ui/program/CodeView.h"
 #include "ui/i18n/AlarmText.h"
 #include "ui/view/MachineView.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -22,9 +23,8 @@ SimulationPanel::SimulationPanel(const gcode::Dialect& dialect, QWidget* parent)
     view_->setObjectName("simulationView");
     row->addWidget(code_, 2);
     row->addWidget(view_, 3);
-    info_ = new QLabel(this);
+    info_ = new WrappedLabel(this);
     info_->setObjectName("simulationInfo");
-    info_->setWordWrap(true);
     column->addLayout(row, 1);
     column->addWidget(info_);
 }
