@@ -2429,11 +2429,6 @@
         <translation>No break point is kept in the machine folder</translation>
     </message>
     <message>
-        <source>File save failed!</source>
-        <comment>msg 907</comment>
-        <translation>File save failed!</translation>
-    </message>
-    <message>
         <source>External key %1</source>
         <translation>External key %1</translation>
     </message>
@@ -2444,6 +2439,11 @@
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>
         <translation>IN%1: no such input (IN01-IN24)</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>File save failed!</translation>
     </message>
 </context>
 <context>
@@ -3236,6 +3236,14 @@
         <source>FUNC K14</source>
         <comment>msg 163</comment>
         <translation>FUNC K14</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ExternalOutputFile</name>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>File save failed!</translation>
     </message>
 </context>
 <context>

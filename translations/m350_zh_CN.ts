@@ -2429,11 +2429,6 @@
         <translation>机床目录中没有保存的断点</translation>
     </message>
     <message>
-        <source>File save failed!</source>
-        <comment>msg 907</comment>
-        <translation>文件生成失败!</translation>
-    </message>
-    <message>
         <source>External key %1</source>
         <translation>扩展按键%1</translation>
     </message>
@@ -2444,6 +2439,11 @@
     <message>
         <source>IN%1: no such input (IN01-IN24)</source>
         <translation>IN%1: 无此输入口 (IN01-IN24)</translation>
+    </message>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>文件生成失败!</translation>
     </message>
 </context>
 <context>
@@ -3236,6 +3236,14 @@
         <source>FUNC K14</source>
         <comment>msg 163</comment>
         <translation>扩展按键14</translation>
+    </message>
+</context>
+<context>
+    <name>m350::ui::ExternalOutputFile</name>
+    <message>
+        <source>File save failed!</source>
+        <comment>msg 907</comment>
+        <translation>文件生成失败!</translation>
     </message>
 </context>
 <context>

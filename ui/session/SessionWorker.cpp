@@ -3,8 +3,6 @@
 #include "ui/i18n/AlarmText.h"
 #include "ui/i18n/DiagnosticText.h"
 #include "ui/i18n/Language.h"
-#include "ui/session/ProgramPreviews.h"
-#include "ui/session/SimulationRun.h"
 
 #include "core/config/HookFiles.h"
 #include "core/config/MachineConfig.h"
@@ -18,7 +16,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -59,9 +56,22 @@ QString axisNames(const std::vector<int>& axes) {
     return out.join(QLatin1Char(' '));
 }
 
+// The breakage monitor's spindle load view: the one shown until a sample came or the tool changed.
+std::shared_ptr<const controller::SpindleLoadView> spindleLoadSince(std::shared_ptr<const controller::SpindleLoadView> shown,
+                                                                    Controller& controller, int tool) {
+    const controller::SpindleLoadWatch& watch = controller.toolBreakage().spindleLoad();
+    if (!watch.model() || (shown && shown->taken == watch.monitor().taken() && shown->tool == tool)) {
+        return shown;
+    }
+    return std::make_shared<const controller::SpindleLoadView>(watch.view(tool, controller.dialect().id == gcode::DialectId::Fanuc));
+}
+
 } // namespace
 
-SessionWorker::SessionWorker(config::MachineConfig config, MachineSession::Options options) : options_(options) {
+SessionWorker::SessionWorker(config::MachineConfig config, MachineSession::Options options)
+    : externalOutput_(options.externalOutputLimit),
+      beside_(options.clock == MachineSession::Clock::Manual, [this] { publish(); }),
+      options_(options) {
     machineName_ = QString::fromStdString(config.name);
     machineNameZh_ = QString::fromStdString(config.nameZh);
     folder_ = config::MachineFolder(config.folder);
@@ -87,11 +97,10 @@ void SessionWorker::begin() {
 }
 
 void SessionWorker::finish() {
-    previews_.reset(); // cancels a build under way
+    beside_.finish();
     delete timer_;
     timer_ = nullptr;
-    keepExternalOutput();
-    saveExternalOutput(); // what came within the last second of a run still going
+    keepExternalOutput(false); // what came within the last second of a run still going
 }
 
 void SessionWorker::tick() {
@@ -117,7 +126,7 @@ void SessionWorker::advanceManual(double seconds) {
 }
 
 bool SessionWorker::quiet() const {
-    return !busy() && activity_ == Activity::None && pendingSteps_.isEmpty() && !(simulation_ && simulation_->running()) &&
+    return !busy() && activity_ == Activity::None && pendingSteps_.isEmpty() && !beside_.running() &&
            !controller_->manual().jogging();
 }
 
@@ -137,7 +146,7 @@ double SessionWorker::advanceWhileQuiet(double seconds, bool publishAtEnd) {
 
 void SessionWorker::advance(double seconds) {
     sessionTime_ += seconds;
-    advanceSimulation(seconds);
+    beside_.advance(seconds);
     const bool wasRunning = busy();
     Controller::RunState state = controller_->advance(seconds);
     noteAlarm();
@@ -200,9 +209,8 @@ void SessionWorker::logParameterChanges() {
 
 void SessionWorker::publish() {
     logParameterChanges();
-    keepToolTable();
-    keepToolLife();
-    keepExternalOutput();
+    toolData_.keep(*controller_, folder_);
+    keepExternalOutput(busy());
     auto snapshot = std::make_shared<PanelSnapshot>();
     snapshot->status = controller_->panelStatus();
     snapshot->activity = activity_;
@@ -215,13 +223,13 @@ void SessionWorker::publish() {
     snapshot->homingPrompt = controller_->homing().needsBootHomingPrompt() && !busy(); // after sysstart.nc
     snapshot->log = log_->entries();
     snapshot->workRecord = workRecord_;
-    snapshot->breakPoints = breakPoints();
-    snapshot->toolTable = toolTable_;
-    snapshot->toolTableProblem = toolTableProblem_;
-    snapshot->toolLife = toolLife_;
-    snapshot->toolLifeProblem = toolLifeProblem_;
+    snapshot->breakPoints = breakPointFile_.points(controller_->breakRun(), folder_);
+    snapshot->toolTable = toolData_.table();
+    snapshot->toolTableProblem = toolData_.tableProblem();
+    snapshot->toolLife = toolData_.life();
+    snapshot->toolLifeProblem = toolData_.lifeProblem();
     snapshot->tWordChangesTool = controller_->dialect().tCodeProgram >= 0;
-    keepSpindleLoad(snapshot->status.tool);
+    spindleLoad_ = spindleLoadSince(std::move(spindleLoad_), *controller_, snapshot->status.tool);
     snapshot->spindleLoad = spindleLoad_;
     scene_ = preview::sceneSince(std::move(scene_), *controller_);
     snapshot->scene = scene_;
@@ -229,17 +237,17 @@ void SessionWorker::publish() {
     if (watchVariables_) {
         snapshot->userVariables = userVariables();
     }
-    if (simulation_) {
-        snapshot->simulation = simulation_->view();
-    }
-    if (previews_) {
-        snapshot->programPreview = previews_->shown(ProgramPreviews::Slot::Program);
-        snapshot->simulationPreview = previews_->shown(ProgramPreviews::Slot::Simulation);
-    }
+    beside_.fill(*snapshot);
     snapshot->publishedNs = std::chrono::duration_cast<std::chrono::nanoseconds>(
                                 std::chrono::steady_clock::now().time_since_epoch())
                                 .count();
     emit published(snapshot);
+}
+
+void SessionWorker::keepExternalOutput(bool running) {
+    if (auto problem = externalOutput_.keep(controller_->externalDevices(), *log_, folder_, running)) {
+        lastError_ = *problem;
+    }
 }
 
 bool SessionWorker::loadCurrentFile() {
@@ -314,9 +322,9 @@ void SessionWorker::loadProgram(const QString& path) {
     fileLoaded_ = false;
     lastError_.clear();
     if (loadCurrentFile()) {
-        previews().request(ProgramPreviews::Slot::Program, controller_->config(), path, controller_->panelStatus().tool);
+        beside_.previewLoaded(controller_->config(), path, controller_->panelStatus().tool);
     } else {
-        previews().clear(ProgramPreviews::Slot::Program);
+        beside_.clearLoaded();
     }
     publish();
 }
@@ -457,45 +465,22 @@ void SessionWorker::setParameter(int number, double value) {
     publish(); // which logs the change (logParameterChanges)
 }
 
-// A simulation at speed 0 runs as fast as the core goes: with the wall clock for most of a
-// frame, with a manual clock (replays, tests) to its end at once, so a replay stays deterministic.
-void SessionWorker::advanceSimulation(double seconds) {
-    if (!simulation_ || !simulation_->running()) {
-        return;
-    }
-    constexpr long long kBudgetNs = 10'000'000; // of the 16.7 ms frame
-    if (simulation_->speed() > 0.0) {
-        simulation_->advance(seconds * simulation_->speed());
-    } else if (options_.clock == MachineSession::Clock::Manual) {
-        simulation_->advance(std::numeric_limits<double>::infinity());
-    } else {
-        simulation_->runFor(kBudgetNs);
-    }
-}
-
 void SessionWorker::startSimulation(const QString& path, double speed) {
     lastError_.clear();
-    simulation_.reset();
-    QString error;
-    simulation_ = SimulationRun::start(controller_->config(), path, controller_->panelStatus().tool, speed, &error);
-    if (!simulation_) {
-        previews().clear(ProgramPreviews::Slot::Simulation);
-        refuse(error);
+    if (auto error = beside_.start(controller_->config(), path, controller_->panelStatus().tool, speed)) {
+        refuse(*error);
         return;
     }
-    previews().request(ProgramPreviews::Slot::Simulation, controller_->config(), path, controller_->panelStatus().tool);
     publish();
 }
 
 void SessionWorker::setSimulationSpeed(double speed) {
-    if (simulation_) {
-        simulation_->setSpeed(speed);
-    }
+    beside_.setSpeed(speed);
     publish();
 }
 
 void SessionWorker::stopSimulation() {
-    simulation_.reset();
+    beside_.stop();
     publish();
 }
 

@@ -1,7 +1,11 @@
 #pragma once
 
 #include "ui/session/MachineSession.h"
+#include "ui/session/BreakPointFile.h"
+#include "ui/session/ExternalOutputFile.h"
 #include "ui/session/SessionLog.h"
+#include "ui/session/SimulationSide.h"
+#include "ui/session/ToolDataFiles.h"
 
 #include "core/config/MachineFolder.h"
 #include "core/params/ParameterTable.h"
@@ -23,12 +27,9 @@ class Controller;
 
 namespace m350::ui {
 
-class SimulationRun;
-class ProgramPreviews;
-
-// Lives in the session's worker thread and is, with the SimulationRun it owns, the only code of
-// the panel that touches the Controller. Each method runs one operator command, then publishes a
-// snapshot.
+// Lives in the session's worker thread and is, with the SimulationRun its SimulationSide owns,
+// the only code of the panel that touches the Controller. Each method runs one operator command,
+// then publishes a snapshot.
 class SessionWorker : public QObject {
     Q_OBJECT
 public:
@@ -115,7 +116,6 @@ private:
     bool quiet() const;
     void scheduleTick();
     void advance(double seconds);
-    void advanceSimulation(double seconds);
     bool busy() const;
     void noteAlarm();
     void refuse(const QString& why);
@@ -133,35 +133,18 @@ private:
     void powerOn();
     QVector<MachineSession::HookStep> pendingSteps_; // of runHooks, after the one that runs
     Activity stepsActivity_ = Activity::None;
-    void keepToolTable(); // saves a changed table; the table snapshots carry
-    std::shared_ptr<const tools::ToolTable> toolTable_;
     std::shared_ptr<const QStringList> mdiLines_;
-    std::optional<tools::ToolData::Mark> shownToolMark_;
-    std::optional<tools::ToolData::Mark> failedToolMark_;
-    QString toolTableProblem_;
-    void keepToolLife(); // saves changed tool life data; the view snapshots carry
-    std::shared_ptr<const tools::LifeView> toolLife_;
-    std::optional<std::uint64_t> shownLifeRevision_;
-    std::optional<std::uint64_t> failedLifeRevision_;
-    QString toolLifeProblem_;
-    void keepExternalOutput(); // DPRNT / BPRNT records: the system log and the folder's dprnt.txt
-    void saveExternalOutput(); // dprnt.txt, when records came since it was written
-    bool externalOutputUnsaved_ = false; // records came since dprnt.txt was last written
-    bool externalOutputCapLogged_ = false;
-    QElapsedTimer externalOutputSaved_;
-    void keepSpindleLoad(int tool); // SessionWorkerLoad.cpp: a new view when a sample came or the tool changed
-    std::shared_ptr<const controller::SpindleLoadView> spindleLoad_;
+    ToolDataFiles toolData_;
+    ExternalOutputFile externalOutput_;
+    BreakPointFile breakPointFile_;
+    SimulationSide beside_; // 仿真 and the machine view's previews
+    std::shared_ptr<const controller::SpindleLoadView> spindleLoad_; // the last published
     std::shared_ptr<const preview::MachineScene> scene_; // the last published (sceneSince)
-    void keepBreakPoint();
-    BreakPoints breakPoints() const;
-    mutable std::optional<std::pair<QString, int>> keptBreak_; // the machine folder's `breakpoint`, read once
+    void keepBreakPoint(); // after a pause or a reset mid-run
+    void keepExternalOutput(bool running); // DPRNT / BPRNT records: the system log and dprnt.txt
 
-    // SessionWorkerPreview.cpp: the machine view's previews of the loaded and the simulated program
-    ProgramPreviews& previews();
-    std::unique_ptr<ProgramPreviews> previews_; // made in the worker thread, on first use
 
     std::unique_ptr<controller::Controller> controller_;
-    std::unique_ptr<SimulationRun> simulation_;
     MachineSession::Options options_;
     QString machineName_;
     QString machineNameZh_;

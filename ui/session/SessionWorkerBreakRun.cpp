@@ -46,7 +46,7 @@ void SessionWorker::resumeAtPause() {
 
 void SessionWorker::powerResume() {
     lastError_.clear();
-    BreakPoints kept = breakPoints();
+    BreakPoints kept = breakPointFile_.points(controller_->breakRun(), folder_);
     if (kept.keptLine <= 0) {
         refuse(tr("No break point is kept in the machine folder"));
         return;
@@ -80,38 +80,10 @@ void SessionWorker::startedAt(const char* event, bool started, const Message& wh
     publish();
 }
 
-// After a pause or a reset mid-run: the break point goes to the machine folder, so a restart
-// can resume there.
 void SessionWorker::keepBreakPoint() {
-    auto point = controller_->breakRun().pauseBreakPoint();
-    if (!point) {
-        return;
+    if (auto problem = breakPointFile_.keep(controller_->breakRun(), folder_)) {
+        lastError_ = *problem;
     }
-    const std::string text = point->file + '\n' + std::to_string(point->line) + '\n';
-    if (auto problem = folder_.write(config::FolderFile::BreakPoint, text)) {
-        lastError_ = QString::fromStdString(problem->in(Language::messageLanguage()));
-        return;
-    }
-    keptBreak_ = std::make_pair(QString::fromStdString(point->file), static_cast<int>(point->line));
-}
-
-BreakPoints SessionWorker::breakPoints() const {
-    BreakPoints out;
-    if (auto point = controller_->breakRun().pauseBreakPoint()) {
-        out.pauseFile = QString::fromStdString(point->file);
-        out.pauseLine = static_cast<int>(point->line);
-    }
-    if (!keptBreak_) {
-        keptBreak_.emplace();
-        QFile file(QString::fromStdString(folder_.pathOf(config::FolderFile::BreakPoint).string()));
-        QList<QByteArray> lines = file.open(QIODevice::ReadOnly) ? file.readAll().split('\n') : QList<QByteArray>{};
-        if (lines.size() >= 2) {
-            *keptBreak_ = {QString::fromUtf8(lines[0]), lines[1].trimmed().toInt()};
-        }
-    }
-    out.keptFile = keptBreak_->first;
-    out.keptLine = keptBreak_->second;
-    return out;
 }
 
 } // namespace m350::ui

@@ -67,24 +67,6 @@ void SessionWorker::touchOffTool(double workZ) {
     publish();
 }
 
-// A save that failed is tried again when the data changes again, not at every frame.
-void SessionWorker::keepToolTable() {
-    const tools::ToolData::Mark mark = controller_->toolTableEdits().mark();
-    if (!folder_.path().empty() && controller_->toolTableEdits().changed() && !(failedToolMark_ && *failedToolMark_ == mark)) {
-        if (auto error = controller::saveToolTable(*controller_, folder_)) {
-            toolTableProblem_ = QString::fromStdString(error->in(Language::messageLanguage()));
-            failedToolMark_ = mark;
-        } else {
-            toolTableProblem_.clear();
-            failedToolMark_.reset();
-        }
-    }
-    if (!shownToolMark_ || !(*shownToolMark_ == mark)) {
-        toolTable_ = std::make_shared<const tools::ToolTable>(controller_->toolTableEdits().table());
-        shownToolMark_ = mark;
-    }
-}
-
 void SessionWorker::resetToolLife(int group) {
     lastError_.clear();
     Message why;
@@ -94,27 +76,6 @@ void SessionWorker::resetToolLife(int group) {
     }
     log_->record("tool_life_reset", QStringLiteral("P%1").arg(group)); // the group as G10 L3 names it
     publish();
-}
-
-// Counting changes the data every 4 s of cutting: a save that failed is tried again only when
-// the data changed since.
-void SessionWorker::keepToolLife() {
-    tools::ToolLifeManager& life = controller_->toolLife().manager();
-    const std::uint64_t revision = life.revision();
-    if (!folder_.path().empty() && life.changed() && failedLifeRevision_ != revision) {
-        if (auto error = folder_.saveToolLife(life.data())) {
-            toolLifeProblem_ = QString::fromStdString(error->in(Language::messageLanguage()));
-            failedLifeRevision_ = revision;
-        } else {
-            toolLifeProblem_.clear();
-            failedLifeRevision_.reset();
-            life.markSaved();
-        }
-    }
-    if (shownLifeRevision_ != revision) {
-        toolLife_ = std::make_shared<const tools::LifeView>(tools::makeLifeView(life));
-        shownLifeRevision_ = revision;
-    }
 }
 
 } // namespace m350::ui
