@@ -15,15 +15,24 @@ namespace {
 constexpr int kExitOk = 0;
 constexpr int kExitError = 2;
 
-// Every key is present whatever happened, so a script can read any of them.
+std::vector<std::string> english(const std::vector<Message>& messages) {
+    std::vector<std::string> texts;
+    for (const Message& m : messages) {
+        texts.push_back(m.english());
+    }
+    return texts;
+}
+
+// Every key is present whatever happened, so a script can read any of them; texts in English, as
+// every message of the JSON (the report on stderr and import-report.txt are in --lang).
 nlohmann::json importJson(const backup::BackupImport& r, const backup::ImportError* error) {
     nlohmann::json skipped = nlohmann::json::array();
     for (const backup::SkippedFile& file : r.skipped) {
-        skipped.push_back({{"file", file.name}, {"reason", file.reason}});
+        skipped.push_back({{"file", file.name}, {"reason", file.reason.english()}});
     }
     nlohmann::json review = nlohmann::json::array();
     for (const backup::ReviewItem& item : r.review) {
-        review.push_back({{"key", item.key}, {"value", item.value}, {"why", item.why}});
+        review.push_back({{"key", item.key}, {"value", argumentIn(item.value, MessageLanguage::English)}, {"why", item.why.english()}});
     }
     nlohmann::json alarm = nullptr;
     if (error) {
@@ -38,23 +47,23 @@ nlohmann::json importJson(const backup::BackupImport& r, const backup::ImportErr
             {"copied", r.copied},
             {"skipped", skipped},
             {"libraries", r.libraries},
-            {"hooks", r.hooks},
+            {"hooks", english(r.hooks)},
             {"parameters", r.parameters},
             {"changed_parameters", r.factoryCompared ? nlohmann::json(r.changedParameters) : nlohmann::json(nullptr)},
-            {"out_of_range", r.outOfRange},
+            {"out_of_range", english(r.outOfRange)},
             {"offsets", r.offsets},
             {"mdi_lines", r.mdiLines},
-            {"magazine", r.magazine},
+            {"magazine", r.magazine.english()},
             {"review", review},
-            {"unsupported", r.unsupported},
-            {"notes", r.notes},
+            {"unsupported", english(r.unsupported)},
+            {"notes", english(r.notes)},
             {"diagnostics", diagnosticsJson(r.diagnostics)}};
 }
 
 } // namespace
 
 int runImport(const std::string& backupDir, const std::string& intoDir, MessageLanguage language) {
-    auto outcome = backup::importControllerBackup(backupDir, intoDir);
+    auto outcome = backup::importControllerBackup(backupDir, intoDir, language);
     if (auto* error = std::get_if<backup::ImportError>(&outcome)) {
         std::cerr << error->file << ": " << error->message.in(language) << '\n';
         std::cout << dump(importJson(backup::BackupImport{}, error)) << '\n';
@@ -66,7 +75,7 @@ int runImport(const std::string& backupDir, const std::string& intoDir, MessageL
     } else {
         std::cerr << message("import_done", {backupDir, result.machineFolder}).in(language) << '\n';
     }
-    std::cerr << backup::formatImportReport(result);
+    std::cerr << backup::formatImportReport(result, language);
     std::cout << dump(importJson(result, nullptr)) << '\n';
     return kExitOk;
 }

@@ -35,9 +35,9 @@ int runResetPasswords(const std::string& folder, MessageLanguage language) {
         return 2;
     }
     files::SystemLog log(store.pathOf(config::FolderFile::SystemLog).string());
-    std::string error;
+    Message error;
     if (!log.load(&error) || !log.append({now(), "passwords_reset", file}, &error)) {
-        std::cerr << "m350-sim: " << message("passwords_log_failed", {error}).in(language) << '\n';
+        std::cerr << "m350-sim: " << message("passwords_log_failed", {bilingual(error)}).in(language) << '\n';
     }
     const Message said = message("passwords_reset", {file});
     std::cerr << said.in(language) << '\n';

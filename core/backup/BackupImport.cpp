@@ -104,7 +104,8 @@ struct Refusal {
 }
 
 // Everything the machine folder will hold, and what the import says of it.
-Files plan(const ControllerBackup& backup, const params::ParameterCatalogue& catalogue, BackupImport& result) {
+Files plan(const ControllerBackup& backup, const params::ParameterCatalogue& catalogue, MessageLanguage language,
+           BackupImport& result) {
     Files files;
     ImportedMachine machine = formatImportedMachine(backup);
     files.push_back({std::string(config::MachineFolder::fileName(config::FolderFile::Machine)), machine.text, std::nullopt});
@@ -120,14 +121,14 @@ Files plan(const ControllerBackup& backup, const params::ParameterCatalogue& cat
     result.changedParameters = std::move(params.changed);
     result.outOfRange = std::move(params.outOfRange);
     if (!backup.defaultSetting) {
-        result.notes.push_back("no default_setting: no parameter is compared with the factory values");
+        result.notes.push_back(message("import_note_no_default", {"default_setting"}));
     }
     if (backup.coordinate) {
         files.push_back({std::string(config::MachineFolder::fileName(config::FolderFile::Offsets)),
                          formatImportedOffsets(*backup.coordinate), std::nullopt});
         result.offsets = true;
     } else {
-        result.notes.push_back("no coordinate file: every work offset is 0");
+        result.notes.push_back(message("import_note_no_coordinate", {"coordinate"}));
     }
     if (backup.mdiblock) {
         ImportedMdi mdi = importMdiBlock(*backup.mdiblock);
@@ -137,14 +138,14 @@ Files plan(const ControllerBackup& backup, const params::ParameterCatalogue& cat
             result.notes.push_back(*mdi.note);
         }
     } else {
-        result.notes.push_back("no mdiblock: the MDI page starts with six empty lines");
+        result.notes.push_back(message("import_note_no_mdiblock", {"mdiblock"}));
     }
     for (const BackupFile& program : backup.programs) {
         files.push_back({program.name, {}, program.source});
         result.copied.push_back(program.name);
         const config::HookFile* hook = program.name.find('/') == std::string::npos ? config::findHook(program.name) : nullptr;
         if (hook && hook->runnable) {
-            result.hooks.push_back(program.name + ": " + std::string(hook->runsWhen));
+            result.hooks.push_back(message("import_hook", {program.name, config::runsWhenWords(*hook)}));
         }
     }
     result.skipped = backup.skipped;
@@ -153,7 +154,7 @@ Files plan(const ControllerBackup& backup, const params::ParameterCatalogue& cat
         result.written.push_back(file.name);
     }
     result.written.push_back(kImportReportFile);
-    files.push_back({kImportReportFile, formatImportReport(result), std::nullopt});
+    files.push_back({kImportReportFile, formatImportReport(result, language), std::nullopt});
     return files;
 }
 
@@ -164,8 +165,9 @@ bool inside(const fs::path& folder, const fs::path& path) {
     return end == base.end();
 }
 
-// Whether `into` may receive the import: true when it already holds exactly this import.
-bool alreadyImported(const fs::path& into, const Files& files) {
+// Whether `into` may receive the import: true when it already holds exactly this import (its report
+// in either language: `otherReport`).
+bool alreadyImported(const fs::path& into, const Files& files, const std::string& otherReport) {
     if (!fs::exists(into)) {
         return false;
     }
@@ -179,7 +181,8 @@ bool alreadyImported(const fs::path& into, const Files& files) {
     std::string differingZh;
     int count = 0;
     for (const FolderFile& file : files) {
-        if (sameContent(into / file.name, file)) {
+        if (sameContent(into / file.name, file) ||
+            (file.name == kImportReportFile && sameContent(into / file.name, {file.name, otherReport, std::nullopt}))) {
             continue;
         }
         if (++count <= 3) {
@@ -233,7 +236,8 @@ void writeFolder(const fs::path& into, const Files& files) {
 
 } // namespace
 
-std::variant<BackupImport, ImportError> importControllerBackup(const fs::path& backupFolder, const fs::path& into) {
+std::variant<BackupImport, ImportError> importControllerBackup(const fs::path& backupFolder, const fs::path& into,
+                                                               MessageLanguage reportLanguage) {
     const auto& loadedCatalogue = params::ParameterCatalogue::bundled();
     if (auto* error = std::get_if<std::string>(&loadedCatalogue)) {
         return ImportError{"file_error", params::ParameterCatalogue::bundledPath(),
@@ -254,8 +258,10 @@ std::variant<BackupImport, ImportError> importControllerBackup(const fs::path& b
         if (inside(backupFolder, target)) {
             refuse("machine_folder_not_empty", into, message("import_inside_backup"));
         }
-        const Files files = plan(backup, catalogue, result);
-        result.unchanged = alreadyImported(target, files);
+        const Files files = plan(backup, catalogue, reportLanguage, result);
+        const MessageLanguage other =
+            reportLanguage == MessageLanguage::Chinese ? MessageLanguage::English : MessageLanguage::Chinese;
+        result.unchanged = alreadyImported(target, files, formatImportReport(result, other));
         if (!result.unchanged) {
             writeFolder(target, files);
         }

@@ -12,86 +12,113 @@ namespace {
 constexpr std::size_t kErrorsPerFile = 5; // a factory library may have many of one kind
 constexpr std::size_t kOutOfRangeShown = 10; // the JSON result lists them all
 
-std::string joined(const std::vector<std::string>& names) {
-    std::string text;
-    for (const std::string& name : names) {
-        text += (text.empty() ? "" : ", ") + name;
-    }
-    return text;
-}
+// The report in one language: every word by message id; names, keys and values as they are.
+class ReportWriter {
+public:
+    explicit ReportWriter(MessageLanguage language) : language_(language) {}
 
-void section(std::string& out, const std::string& title, const std::vector<std::string>& lines) {
-    if (lines.empty()) {
-        return;
+    std::string say(const char* id, std::vector<std::string> arguments = {}) const {
+        return message(id, std::move(arguments)).in(language_);
     }
-    out += "\n" + title + "\n";
-    for (const std::string& line : lines) {
-        out += "  " + line + "\n";
+    std::string say(const Message& words) const { return words.in(language_); }
+    std::string colon() const { return language_ == MessageLanguage::Chinese ? "：" : ": "; }
+    std::string words(const std::string& argument) const { return argumentIn(argument, language_); }
+    std::string joined(const std::vector<std::string>& names) const {
+        std::string text;
+        for (const std::string& name : names) {
+            text += (text.empty() ? "" : language_ == MessageLanguage::Chinese ? "、" : ", ") + name;
+        }
+        return text;
     }
-}
 
-std::vector<std::string> syntaxLines(const std::vector<gcode::Diagnostic>& diagnostics) {
-    std::map<std::string, std::size_t> perFile;
-    for (const gcode::Diagnostic& d : diagnostics) {
-        ++perFile[d.file];
-    }
-    std::vector<std::string> lines;
-    std::map<std::string, std::size_t> shown;
-    for (const gcode::Diagnostic& d : diagnostics) {
-        std::size_t& n = shown[d.file];
-        if (++n <= kErrorsPerFile) {
-            lines.push_back(gcode::formatDiagnostic(d));
-        } else if (n == kErrorsPerFile + 1) {
-            lines.push_back(d.file + ": and " + std::to_string(perFile[d.file] - kErrorsPerFile) + " more");
+    void line(const std::string& text) { out_ += "  " + text + "\n"; }
+    void title(const std::string& text) { out_ += text + "\n"; }
+    void section(const std::string& title, const std::vector<std::string>& lines) {
+        if (lines.empty()) {
+            return;
+        }
+        out_ += "\n" + title + "\n";
+        for (const std::string& each : lines) {
+            line(each);
         }
     }
-    return lines;
-}
+    std::vector<std::string> said(const std::vector<Message>& messages) const {
+        std::vector<std::string> lines;
+        for (const Message& m : messages) {
+            lines.push_back(say(m));
+        }
+        return lines;
+    }
+    std::vector<std::string> syntaxLines(const std::vector<gcode::Diagnostic>& diagnostics) const {
+        std::map<std::string, std::size_t> perFile;
+        for (const gcode::Diagnostic& d : diagnostics) {
+            ++perFile[d.file];
+        }
+        std::vector<std::string> lines;
+        std::map<std::string, std::size_t> shown;
+        for (const gcode::Diagnostic& d : diagnostics) {
+            std::size_t& n = shown[d.file];
+            if (++n <= kErrorsPerFile) {
+                lines.push_back(gcode::formatDiagnostic(d, language_));
+            } else if (n == kErrorsPerFile + 1) {
+                lines.push_back(say("import_report_file_more", {d.file, std::to_string(perFile[d.file] - kErrorsPerFile)}));
+            }
+        }
+        return lines;
+    }
+    const std::string& text() const { return out_; }
+
+private:
+    MessageLanguage language_;
+    std::string out_;
+};
 
 } // namespace
 
-std::string formatImportReport(const BackupImport& r) {
-    std::string out = "Machine folder from a controller backup\n";
-    out += "  machine.toml: dialect m350, libraries " + (r.libraries.empty() ? "none" : joined(r.libraries)) + "\n";
-    out += "  " + r.magazine + "\n";
-    out += "  params.toml: " + std::to_string(r.parameters) + " parameters";
+std::string formatImportReport(const BackupImport& r, MessageLanguage language) {
+    ReportWriter out(language);
+    out.title(out.say("import_report_title"));
+    out.line(out.say("import_report_machine",
+                     {"machine.toml", r.libraries.empty() ? out.say("import_report_no_libraries") : out.joined(r.libraries)}));
+    out.line(out.say(r.magazine));
     if (r.factoryCompared) {
-        out += ", " + std::to_string(r.changedParameters.size()) + " differ from the factory values (default_setting)";
+        out.line(out.say("import_report_params_changed", {"params.toml", std::to_string(r.parameters),
+                                                          std::to_string(r.changedParameters.size()), "default_setting"}));
+    } else {
+        out.line(out.say("import_report_params", {"params.toml", std::to_string(r.parameters)}));
     }
-    out += "\n";
     if (r.offsets) {
-        out += "  offsets.toml: G92, G54-G59, G52 and the common offset (coordinate)\n";
+        out.line(out.say("import_report_offsets", {"offsets.toml", "coordinate"}));
     }
     if (!r.mdiLines.empty()) {
         const auto used = std::count_if(r.mdiLines.begin(), r.mdiLines.end(),
                                         [](const std::string& line) { return !line.empty(); });
-        out += "  mdiblock: the six MDI lines, " + std::to_string(used) + " in use\n";
+        out.line(out.say("import_report_mdi", {"mdiblock", std::to_string(used)}));
     }
-    out += "  copied as they were: " + std::to_string(r.copied.size()) + " .nc files" +
-           (r.copied.empty() ? "" : " (" + joined(r.copied) + ")") + "\n";
-    section(out, "Hook files (the panel and the controller run them as the M350 does):", r.hooks);
+    out.line(r.copied.empty() ? out.say("import_report_copied", {"0"})
+                              : out.say("import_report_copied_named", {std::to_string(r.copied.size()), out.joined(r.copied)}));
+    out.section(out.say("import_report_hooks"), out.said(r.hooks));
     std::vector<std::string> skipped;
     for (const SkippedFile& file : r.skipped) {
-        skipped.push_back(file.name + ": " + file.reason);
+        skipped.push_back(file.name + out.colon() + out.say(file.reason));
     }
-    section(out, "Not copied (" + std::to_string(r.skipped.size()) + " files the simulator does not use):", skipped);
+    out.section(out.say("import_report_skipped", {std::to_string(r.skipped.size())}), skipped);
     std::vector<std::string> review;
     for (const ReviewItem& item : r.review) {
-        review.push_back(item.key + " = " + item.value + ": " + item.why);
+        review.push_back(item.key + " = " + out.words(item.value) + out.colon() + out.say(item.why));
     }
-    section(out, "To review in machine.toml (no file of the backup gives these; stated values):", review);
-    section(out, "The simulator cannot model:", r.unsupported);
-    std::vector<std::string> outOfRange(r.outOfRange.begin(),
-                                        r.outOfRange.begin() + static_cast<std::ptrdiff_t>(
-                                                                   std::min(r.outOfRange.size(), kOutOfRangeShown)));
+    out.section(out.say("import_report_review", {"machine.toml"}), review);
+    out.section(out.say("import_report_unsupported"), out.said(r.unsupported));
+    const std::size_t shown = std::min(r.outOfRange.size(), kOutOfRangeShown);
+    std::vector<std::string> outOfRange =
+        out.said(std::vector<Message>(r.outOfRange.begin(), r.outOfRange.begin() + static_cast<std::ptrdiff_t>(shown)));
     if (r.outOfRange.size() > kOutOfRangeShown) {
-        outOfRange.push_back("and " + std::to_string(r.outOfRange.size() - kOutOfRangeShown) + " more");
+        outOfRange.push_back(out.say("import_report_more", {std::to_string(r.outOfRange.size() - kOutOfRangeShown)}));
     }
-    section(out, "Parameter values the panel would refuse (kept as the controller had them):", outOfRange);
-    section(out, "Syntax the simulator does not accept yet (a library's error stops every program):",
-            syntaxLines(r.diagnostics));
-    section(out, "Notes:", r.notes);
-    return out;
+    out.section(out.say("import_report_out_of_range"), outOfRange);
+    out.section(out.say("import_report_syntax"), out.syntaxLines(r.diagnostics));
+    out.section(out.say("import_report_notes"), out.said(r.notes));
+    return out.text();
 }
 
 } // namespace m350::backup

@@ -47,10 +47,7 @@ void libraries(const ControllerBackup& backup, ImportedMachine& out) {
             text += std::string(key) + " = \"" + library->name + "\"\n";
             out.libraries.push_back(library->name);
         } else {
-            out.unsupported.push_back(std::string("the backup has no ") + name + ": " +
-                                      (key == std::string("g") ? "T (O20000), probing (O502) and the G-code handlers"
-                                                               : "the M-code handlers (O10000+n)") +
-                                      " have nothing to run");
+            out.unsupported.push_back(message(key == std::string("g") ? "import_no_library_g" : "import_no_library_m", {name}));
         }
     }
     if (const BackupFile* user = findProgram(backup, "slibuser.nc")) {
@@ -88,26 +85,24 @@ void world(const ControllerBackup& backup, ImportedMachine& out) {
                 "# How far each axis stands from its home switch at power-on (mm).\n[homing]\nswitch_distance = " +
                 list(distances) + "\n";
     out.review.push_back({"homing.switch_distance", list(distances),
-                          "how far each axis stands from its home switch at power-on"});
+                          message("import_review_switch_distance")});
     out.text += "\n# The fixed setter's top: spindle-nose machine Z at contact with a zero-length tool.\n"
                 "[tool_setter]\ntop = " + params::tomlNumber(top) + "\nradius = " + params::tomlNumber(kSetterRadius) + "\n";
     out.review.push_back(
         {"tool_setter.top", params::tomlNumber(top),
-         lowest ? "chosen so that the tool with the lowest stored Z offset is 60 mm long"
-         : start != 0.0 ? "no tool was ever set: 80 mm below the setter's start Z (param 137)"
-                        : "no tool was ever set and param 137 is 0: the simulator's default"});
+         message(lowest ? "import_review_setter_lowest"
+                 : start != 0.0 ? "import_review_setter_start" : "import_review_setter_default")});
     if (params::wiredInput(p, param::kFloatingSetterInput)) {
         out.text += "\n# The floating setter: a block of param 129's thickness lying on the work.\n"
                     "[floating_setter]\ntop = " + params::tomlNumber(top - kFloatingBelowSetter) + "\n";
         out.review.push_back({"floating_setter.top", params::tomlNumber(top - kFloatingBelowSetter),
-                              "where the floating block lies: 10 mm below the fixed setter's top"});
+                              message("import_review_floating")});
     }
     out.text += "\n# Tool lengths T1..T" + std::to_string(tools) +
                 " (mm): the stored Z offset minus the setter's top, 60 for a tool never set.\n[tools]\nlength = " +
                 list(lengths) + "\n";
-    out.review.push_back({"tools.length", std::to_string(tools) + " tools",
-                          std::to_string(set) + " from their stored Z offsets (params 930-945, 973-992), " +
-                              std::to_string(tools - set) + " assumed 60 mm"});
+    out.review.push_back({"tools.length", bilingual(message("import_review_tool_count", {std::to_string(tools)})),
+                          message("import_review_tool_lengths", {std::to_string(set), std::to_string(tools - set)})});
 }
 
 // Params 488-492 give each motor output the programmed axis it drives. A 4th or 5th motor driving
@@ -121,13 +116,11 @@ void gantryMotors(const params::ParameterTable& p, ImportedMachine& out) {
             continue;
         }
         const char* programmed = axis == 1.0 ? "Y" : "Z";
-        const char* own = motor == 4 ? "A (the 4th axis, #883)" : "B (the 5th axis, #884)";
-        out.unsupported.push_back("motor " + std::to_string(motor) + " drives " + programmed + " (param " +
-                                  std::to_string(n) + " = " + params::tomlNumber(axis) +
-                                  "): a gantry's second motor. The simulator moves " + programmed +
-                                  " alone; " + own + " keeps what homing or a macro gives it (fndzero.nc's #" +
-                                  std::to_string(880 + motor - 1) + "=#" + std::to_string(880 + static_cast<int>(axis)) +
-                                  ") and does not follow " + programmed + "'s moves");
+        const Message own = message(motor == 4 ? "import_gantry_axis_4" : "import_gantry_axis_5");
+        out.unsupported.push_back(message("import_gantry_motor",
+                                          {std::to_string(motor), programmed, std::to_string(n), params::tomlNumber(axis),
+                                           bilingual(own), std::to_string(880 + motor - 1),
+                                           std::to_string(880 + static_cast<int>(axis)), "fndzero.nc"}));
     }
 }
 
@@ -141,7 +134,7 @@ ImportedMachine formatImportedMachine(const ControllerBackup& backup) {
     libraries(backup, out);
     ImportedWiring wiring = importWiring(backup.setting);
     out.magazine = wiring.magazine;
-    out.text += "\n# " + wiring.magazine + "\n" + (wiring.magazineToml.empty() ? "" : wiring.magazineToml);
+    out.text += "\n# " + wiring.magazine.english() + "\n" + (wiring.magazineToml.empty() ? "" : wiring.magazineToml);
     out.text += wiring.linksToml;
     world(backup, out);
     out.review.insert(out.review.begin(), wiring.review.begin(), wiring.review.end());

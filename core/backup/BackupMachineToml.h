@@ -18,10 +18,10 @@ namespace m350::backup {
 //   [floating_setter] top      10 mm below the fixed setter's top, when the floating input is wired
 struct ImportedMachine {
     std::string text;
-    std::string magazine; // what became of param 802
+    Message magazine; // what became of param 802
     std::vector<std::string> libraries;
     std::vector<ReviewItem> review;
-    std::vector<std::string> unsupported;
+    std::vector<Message> unsupported;
 };
 
 ImportedMachine formatImportedMachine(const ControllerBackup& backup);

@@ -39,7 +39,7 @@ ImportedParams formatImportedParams(const ControllerBackup& backup, const params
         }
         if (catalogue.find(n)) {
             if (auto problem = catalogue.validate(n, value)) {
-                out.outOfRange.push_back(problem->english());
+                out.outOfRange.push_back(*problem);
             }
         }
         body += line + (comment.empty() ? "" : "  # " + comment) + "\n";

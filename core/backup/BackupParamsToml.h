@@ -16,7 +16,7 @@ namespace m350::backup {
 struct ImportedParams {
     std::string text;
     std::vector<int> changed;     // differ from default_setting (empty without it)
-    std::vector<std::string> outOfRange; // values the panel would refuse, kept as the controller had them
+    std::vector<Message> outOfRange; // values the panel would refuse, kept as the controller had them
 };
 ImportedParams formatImportedParams(const ControllerBackup& backup, const params::ParameterCatalogue& catalogue);
 

@@ -58,14 +58,13 @@ ImportedMdi importMdiBlock(const std::string& raw) {
             mdi.lines.emplace_back(text->text);
         } else {
             mdi.lines.emplace_back();
-            mdi.note = "mdiblock line " + std::to_string(i + 1) + " is neither UTF-8 nor GBK: kept as bytes, shown empty";
+            mdi.note = message("import_mdi_undecodable", {"mdiblock", std::to_string(i + 1)});
         }
     }
     if (raw.size() != kMdiBlockBytes) {
-        mdi.note = "mdiblock holds " + std::to_string(raw.size()) + " bytes, not " + std::to_string(kMdiBlockBytes) +
-                   " (6 x 120): read as far as it goes";
+        mdi.note = message("import_mdi_size", {"mdiblock", std::to_string(raw.size()), std::to_string(kMdiBlockBytes)});
     } else if (tidied && !mdi.note) {
-        mdi.note = "mdiblock had bytes after a line's end (NUL): cleared, as the panel writes it";
+        mdi.note = message("import_mdi_after_end", {"mdiblock"});
     }
     return mdi;
 }

@@ -15,7 +15,7 @@ namespace m350::backup {
 struct ImportedMdi {
     std::string bytes;
     std::vector<std::string> lines;
-    std::optional<std::string> note; // what was not as the panel writes it
+    std::optional<Message> note; // what was not as the panel writes it
 };
 ImportedMdi importMdiBlock(const std::string& raw);
 

@@ -33,8 +33,11 @@ constexpr TypeName kTypes[] = {{"none", "无刀库"},
                                {"fixed row", "固定直排"},
                                {"servo disc", "圆盘刀库"}};
 
+// "magazine type 2 (follow row on the gantry, 龙门架直排)", as a message argument.
 std::string typeText(int type) {
-    return "magazine type " + std::to_string(type) + " (" + kTypes[type].en + ", " + kTypes[type].zh + ")";
+    return bilingual(message("import_magazine_type",
+                             {std::to_string(type), bilingual(std::string(kTypes[type].en) + ", " + kTypes[type].zh,
+                                                              kTypes[type].zh)}));
 }
 
 // Pockets 1.. with a position, as the rack device counts them: it ends at the first one unset.
@@ -56,71 +59,62 @@ void importMagazine(const params::ParameterTable& p, ImportedWiring& out) {
     const int capacity = saturatingInt(p.get(param::kMagazineCapacity));
     const int type = saturatingInt(typeValue);
     if (typeValue != std::floor(typeValue) || type < 0 || type > 4) {
-        out.magazine = "magazine type " + params::tomlNumber(typeValue) + " (param 802): unknown, no magazine device";
-        out.unsupported.push_back("param 802 = " + params::tomlNumber(typeValue) +
-                                  " is no M350 magazine type (0-4): the machine has no magazine device");
+        out.magazine = message("import_magazine_unknown", {params::tomlNumber(typeValue)});
+        out.unsupported.push_back(message("import_magazine_bad_type", {params::tomlNumber(typeValue)}));
         return;
     }
-    const std::string what = typeText(type) + ", capacity " + std::to_string(capacity);
+    const auto said = [&](const char* id, std::vector<std::string> more = {}) {
+        more.insert(more.begin(), {typeText(type), std::to_string(capacity)});
+        return message(id, std::move(more));
+    };
     if (type == 0) {
-        out.magazine = what + ": no magazine device" +
-                       (p.get(param::kVirtualTools) != 0.0 ? "; virtual tools are changed by hand (params 816-818)" : "");
+        out.magazine = said(p.get(param::kVirtualTools) != 0.0 ? "import_magazine_none_virtual" : "import_magazine_none");
         return;
     }
     if (type == 4) {
-        out.magazine = what + ": not modelled, no magazine device";
-        out.unsupported.push_back(
-            typeText(4) + " is not modelled from a backup: the factory O20000 leaves it unimplemented and no "
-                          "parameter says how the disc's drive is wired (pocket select outputs, start, in-position "
-                          "input). T runs your O20000 but no disc follows it; once you know the wiring, add "
-                          "[magazine] device = \"servo-disc\" as resources/machines/m350-servo-disc does");
+        out.magazine = said("import_magazine_not_modelled");
+        out.unsupported.push_back(message("import_disc_not_modelled", {typeText(4), "[magazine] device = \"servo-disc\"",
+                                                                       "resources/machines/m350-servo-disc"}));
         return;
     }
     if (capacity < 1) {
-        out.magazine = what + ": no magazine device (no pockets)";
-        out.unsupported.push_back(typeText(type) + " with capacity 0 (param 801): no magazine device");
+        out.magazine = said("import_magazine_no_pockets");
+        out.unsupported.push_back(message("import_magazine_capacity_zero", {typeText(type)}));
         return;
     }
     if (type == 1) {
         if (capacity > kMostHeads) {
-            out.magazine = what + ": not modelled, no magazine device";
-            out.unsupported.push_back(typeText(1) + " with " + std::to_string(capacity) +
-                                      " heads: the simulator models at most 4 (the IO page's cylinders 1-4)");
+            out.magazine = said("import_magazine_not_modelled");
+            out.unsupported.push_back(message("import_multi_too_many", {typeText(1), std::to_string(capacity)}));
             return;
         }
-        out.magazine = what + ": multi-head device, " + std::to_string(capacity) + " heads";
+        out.magazine = said("import_magazine_multi_head", {std::to_string(capacity)});
         out.magazineToml = "[magazine]\ndevice = \"multi-head\"\ntolerance = 1.0\n";
         return;
     }
     const bool onGantry = type == 2;
     const int pockets = pocketsWithPositions(p, capacity, onGantry);
     if (pockets == 0) {
-        out.magazine = what + ": no magazine device (no pocket positions)";
-        out.unsupported.push_back(typeText(type) + ": pocket 1 has no position (params 830/850/870), so there is "
-                                                   "no rack to model: no magazine device");
+        out.magazine = said("import_magazine_no_positions");
+        out.unsupported.push_back(message("import_rack_no_position", {typeText(type)}));
         return;
     }
     if (pockets < capacity) {
-        out.unsupported.push_back(
-            "the rack has positions for " + std::to_string(pockets) + " of its " + std::to_string(capacity) +
-            " pockets (params 830-885 hold 16 and the rack ends at the first pocket without one): tools " +
-            std::to_string(pockets + 1) + "-" + std::to_string(capacity) + " have no pocket in the simulation");
+        out.unsupported.push_back(message(
+            "import_rack_short", {std::to_string(pockets), std::to_string(capacity), std::to_string(pockets + 1)}));
     }
-    out.magazine = what + ": linear-rack device, " + std::to_string(pockets) + " pockets" +
-                   (onGantry ? ", carried on the gantry" : ", loaded from above");
+    out.magazine = said(onGantry ? "import_magazine_rack_gantry" : "import_magazine_rack_top", {std::to_string(pockets)});
     if (onGantry) {
         out.magazineToml = "[magazine]\ndevice = \"linear-rack\"\ncarried = \"gantry\"\nslide_travel = 100.0\n"
                            "fork_depth = 30.0\ntolerance = 1.0\n";
-        out.review.push_back({"magazine.slide_travel", "100.0",
-                              "how far the slide (output of param 753) pushes the forks out to the spindle"});
-        out.review.push_back({"magazine.fork_depth", "30.0", "how deep a tool sits in its fork"});
+        out.review.push_back({"magazine.slide_travel", "100.0", message("import_review_slide_travel")});
+        out.review.push_back({"magazine.fork_depth", "30.0", message("import_review_fork_depth")});
     } else {
         out.magazineToml = "[magazine]\ndevice = \"linear-rack\"\nloading = \"top\"\nfork_depth = 40.0\n"
                            "tolerance = 1.0\n";
         out.review.push_back({"magazine.loading", "\"top\"",
-                              "the factory O20000 puts a tool down into its fork from above; if yours slides it "
-                              "in from the side, write loading = \"side\" and opening = \"+Y\" or \"-Y\""});
-        out.review.push_back({"magazine.fork_depth", "40.0", "how deep a tool sits in its fork"});
+                              message("import_review_loading", {"loading = \"side\"", "opening = \"+Y\"", "\"-Y\""})});
+        out.review.push_back({"magazine.fork_depth", "40.0", message("import_review_fork_depth")});
     }
 }
 
@@ -130,6 +124,7 @@ struct Link {
     bool follows; // the input is active while the output is; else while it is not
     double delayMs;
     const char* why;
+    const char* whyZh;
 };
 
 // [[io_links]] for the sensors whose actuator the IO page wires and no device drives: the input
@@ -139,14 +134,15 @@ std::vector<int> importLinks(const params::ParameterTable& p, bool device, Impor
     const double clampMs = lockMs > 1.0 ? lockMs : kClampDelayMs;
     std::vector<Link> links;
     if (!device) { // a device moves its own clamp cylinder and drives its sensors
-        links.push_back({param::kDrawbarOutput, param::kToolReleasedInput, true, clampMs, "tool released"});
-        links.push_back({param::kDrawbarOutput, param::kToolClampedInput, false, clampMs, "tool clamped"});
+        links.push_back({param::kDrawbarOutput, param::kToolReleasedInput, true, clampMs, "tool released", "刀具松开"});
+        links.push_back({param::kDrawbarOutput, param::kToolClampedInput, false, clampMs, "tool clamped", "刀具锁紧"});
     }
-    links.push_back({param::kMagazineSlideOutput, kMagazineOutInput, true, kSlideDelayMs, "magazine out"});
-    links.push_back({param::kMagazineSlideOutput, kMagazineInInput, false, kSlideDelayMs, "magazine in"});
-    links.push_back({kDustCoverOutput, kDustCoverInput, true, kCoverDelayMs, "dust cover open"});
+    links.push_back({param::kMagazineSlideOutput, kMagazineOutInput, true, kSlideDelayMs, "magazine out", "刀库推出"});
+    links.push_back({param::kMagazineSlideOutput, kMagazineInInput, false, kSlideDelayMs, "magazine in", "刀库收回"});
+    links.push_back({kDustCoverOutput, kDustCoverInput, true, kCoverDelayMs, "dust cover open", "除尘罩打开"});
     std::vector<int> linked;
     std::string sensors;
+    std::string sensorsZh;
     for (const Link& link : links) {
         const params::PortAssignment output = params::portAssignment(p, link.outputParameter);
         const std::optional<params::PortAssignment> input = params::wiredInput(p, link.inputParameter);
@@ -162,11 +158,10 @@ std::vector<int> importLinks(const params::ParameterTable& p, bool device, Impor
                          "\ninverted = " + (link.follows != sameLevel ? "true" : "false") + "\n";
         linked.push_back(link.inputParameter);
         sensors += (sensors.empty() ? "" : ", ") + params::inputName(input->pin) + " " + link.why;
+        sensorsZh += (sensorsZh.empty() ? "" : "，") + params::inputName(input->pin) + link.whyZh;
     }
     if (!linked.empty()) {
-        out.review.push_back({"io_links", sensors,
-                              "each sensor follows its actuator's output after a stroke time the backup does not "
-                              "give (clamp: param 814 or 150 ms, slide 600 ms, dust cover 500 ms)"});
+        out.review.push_back({"io_links", bilingual(sensors, sensorsZh), message("import_review_io_links")});
     }
     return linked;
 }
@@ -178,6 +173,7 @@ void reportUndrivenInputs(const params::ParameterTable& p, bool device, const st
     static constexpr int sensors[] = {param::kToolReleasedInput, param::kToolClampedInput, kMagazineOutInput,
                                       kMagazineInInput, kDustCoverInput};
     std::string neverActive;
+    std::string neverActiveZh;
     for (const params::IoFunction& function : params::ioFunctions()) {
         const std::optional<params::PortAssignment> input = function.input ? params::wiredInput(p, function.parameter) : std::nullopt;
         if (!input) {
@@ -187,25 +183,25 @@ void reportUndrivenInputs(const params::ParameterTable& p, bool device, const st
         const bool drawbar = n == param::kToolReleasedInput || n == param::kToolClampedInput;
         const bool sensor = std::find(std::begin(sensors), std::end(sensors), n) != std::end(sensors);
         if (sensor && !(drawbar && device) && std::find(linked.begin(), linked.end(), n) == linked.end()) {
-            out.unsupported.push_back(params::inputName(input->pin) + " (" + function.nameEn + ", param " + std::to_string(n) +
-                                      ") is wired but nothing in the simulation moves it (its output is not wired): "
-                                      "a macro waiting for it stops with sensor_timeout");
+            out.unsupported.push_back(message("import_sensor_undriven", {params::inputName(input->pin),
+                                                                         bilingual(function.nameEn, function.nameZh),
+                                                                         std::to_string(n), "sensor_timeout"}));
         }
         const bool alarmOrLimit = (n >= 500 && n <= 542) || (n >= 635 && n <= 650);
         if (alarmOrLimit) {
             neverActive += (neverActive.empty() ? "" : ", ") + std::string(function.nameEn) + " " +
                            params::inputName(input->pin);
+            neverActiveZh += (neverActiveZh.empty() ? "" : "，") + std::string(function.nameZh) + params::inputName(input->pin);
         }
     }
     if (!neverActive.empty()) {
-        out.unsupported.push_back("wired but not simulated (the simulation never drives them; they read 0): " +
-                                  neverActive);
+        out.unsupported.push_back(message("import_inputs_never_active", {bilingual(neverActive, neverActiveZh)}));
     }
     static constexpr const char* axes[] = {"X", "Y", "Z"};
     for (int axis = 0; axis < 3; ++axis) {
         if (!params::wiredInput(p, param::kHomeSwitchX + 3 * axis)) {
-            out.unsupported.push_back(std::string("no home switch is wired for ") + axes[axis] + " (param " +
-                                      std::to_string(param::kHomeSwitchX + 3 * axis) + "): 回零 cannot home it");
+            out.unsupported.push_back(
+                message("import_no_home_switch", {axes[axis], std::to_string(param::kHomeSwitchX + 3 * axis)}));
         }
     }
 }

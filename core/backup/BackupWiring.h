@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/common/Message.h"
 #include "core/params/ParameterTable.h"
 
 #include <string>
@@ -8,11 +9,11 @@
 namespace m350::backup {
 
 // A value the import had to state because no file of the backup gives it: the machine.toml key,
-// the value written and why it needs the owner's eye.
+// the value written (may hold words: bilingual, said with argumentIn) and why it needs the owner's eye.
 struct ReviewItem {
     std::string key;
     std::string value;
-    std::string why;
+    Message why;
 };
 
 // What the import makes of a backup's magazine (param 802 and its geometry) and IO wiring (the
@@ -23,9 +24,9 @@ struct ReviewItem {
 struct ImportedWiring {
     std::string magazineToml; // "[magazine]\n..." or empty
     std::string linksToml;    // "[[io_links]]\n..." tables, or empty
-    std::string magazine;     // one line: the type and what became of it
+    Message magazine;         // one line: the type and what became of it
     std::vector<ReviewItem> review;
-    std::vector<std::string> unsupported;
+    std::vector<Message> unsupported;
 };
 
 ImportedWiring importWiring(const params::ParameterTable& parameters);

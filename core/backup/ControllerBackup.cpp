@@ -121,29 +121,29 @@ bool isElf(const fs::path& file) {
 }
 
 // Why a file of the system disk is not copied into the machine folder.
-std::string skipReason(const fs::path& file) {
+Message skipReason(const fs::path& file) {
     const std::string ext = lowercase(file.extension().string());
     const std::string stem = lowercase(file.stem().string());
     if (ext == ".bmp" || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".gif" || ext == ".ico") {
-        return "image (the panel draws its own screens)";
+        return message("import_skip_image");
     }
     if (ext == ".ko") {
-        return "kernel module (the controller's drivers)";
+        return message("import_skip_module");
     }
     if (ext == ".ttf" || ext == ".ttc" || ext == ".otf" || ext == ".fnt" || ext == ".fon" || ext == ".bdf" ||
         ext == ".pcf") {
-        return "font";
+        return message("import_skip_font");
     }
     if (ext == ".log" || stem.find("log") != std::string::npos) {
-        return "log";
+        return message("import_skip_log");
     }
     if (ext.empty() && (stem == "eng" || stem == "chs" || stem == "cht" || stem == "rus")) {
-        return "string table (the panel's words come from resources/firmware-ui-strings.tsv)";
+        return message("import_skip_strings", {"resources/firmware-ui-strings.tsv"});
     }
     if (ext == ".so" || isElf(file)) {
-        return "controller program or library (ELF)";
+        return message("import_skip_program");
     }
-    return "not used by the simulator";
+    return message("import_skip_unused");
 }
 
 constexpr const char* kDataFiles[] = {"setting", "default_setting", "coordinate", "mdiblock"};
@@ -169,14 +169,14 @@ void listFiles(const fs::path& folder, ControllerBackup& backup) {
         const fs::directory_entry& entry = *it;
         const std::string name = fs::relative(entry.path(), folder).generic_string();
         if (entry.is_symlink()) {
-            backup.skipped.push_back({name, "a link (not followed)"});
+            backup.skipped.push_back({name, message("import_skip_link")});
             continue;
         }
         if (entry.is_directory()) {
             continue;
         }
         if (!entry.is_regular_file()) {
-            backup.skipped.push_back({name, "not a regular file"});
+            backup.skipped.push_back({name, message("import_skip_special")});
             continue;
         }
         if (std::any_of(std::begin(kDataFiles), std::end(kDataFiles),

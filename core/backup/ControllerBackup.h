@@ -34,7 +34,7 @@ struct BackupFile {
 
 struct SkippedFile {
     std::string name;
-    std::string reason;
+    Message reason; // by id: said in the report's language
 };
 
 struct ControllerBackup {

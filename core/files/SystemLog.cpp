@@ -30,7 +30,7 @@ std::string line(const LogEntry& e) { return e.time + '\t' + e.event + '\t' + e.
 
 SystemLog::SystemLog(std::string path, std::size_t keep) : path_(std::move(path)), keep_(std::max<std::size_t>(keep, 1)) {}
 
-bool SystemLog::load(std::string* error, std::size_t* skipped) {
+bool SystemLog::load(Message* error, std::size_t* skipped) {
     entries_.clear();
     tornTail_ = false;
     std::size_t bad = 0;
@@ -40,7 +40,7 @@ bool SystemLog::load(std::string* error, std::size_t* skipped) {
     }
     std::string whole;
     if (auto why = readMachineFile(path_, whole)) {
-        *error = path_ + ": cannot read the system log: " + why->english();
+        *error = message("syslog_cannot_read", {path_, bilingual(*why)});
         return false;
     }
     std::istringstream in(std::move(whole));
@@ -64,7 +64,7 @@ bool SystemLog::load(std::string* error, std::size_t* skipped) {
         entries_.push_back(std::move(e));
     }
     if (in.bad()) {
-        *error = path_ + ": cannot read";
+        *error = message("syslog_read_failed", {path_});
         return false;
     }
     if (skipped) {
@@ -73,7 +73,7 @@ bool SystemLog::load(std::string* error, std::size_t* skipped) {
     return true;
 }
 
-bool SystemLog::append(LogEntry entry, std::string* error) {
+bool SystemLog::append(LogEntry entry, Message* error) {
     entry.time = clean(std::move(entry.time));
     entry.event = clean(std::move(entry.event));
     entry.detail = clean(std::move(entry.detail));
@@ -87,17 +87,19 @@ bool SystemLog::append(LogEntry entry, std::string* error) {
     const int fd = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
     bool written = fd >= 0 && ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) &&
                    syncUnlessScratch(fd, path_);
+    int failure = written ? 0 : errno;
     if (fd >= 0 && ::close(fd) != 0) {
+        failure = written ? errno : failure;
         written = false;
     }
     if (!written) {
-        *error = path_ + ": cannot append to the system log: " + std::strerror(errno);
+        *error = message("syslog_cannot_append", {path_, std::strerror(failure)});
         return false;
     }
     return true;
 }
 
-bool SystemLog::compact(std::string* error) {
+bool SystemLog::compact(Message* error) {
     if (entries_.size() > keep_) {
         entries_.erase(entries_.begin(), entries_.end() - static_cast<std::ptrdiff_t>(keep_));
     }
@@ -106,7 +108,7 @@ bool SystemLog::compact(std::string* error) {
         content += line(e);
     }
     if (auto why = writeFileAtomically(path_, content)) {
-        *error = why->english();
+        *error = message("syslog_cannot_rewrite", {path_, bilingual(*why)});
         return false;
     }
     tornTail_ = false;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/Message.h"
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -23,14 +25,15 @@ public:
     explicit SystemLog(std::string path, std::size_t keep = 2000);
 
     // Reads the file (a missing file is an empty log). Lines that are not three fields are
-    // skipped and counted in `skipped`.
-    bool load(std::string* error, std::size_t* skipped = nullptr);
-    bool append(LogEntry entry, std::string* error);
+    // skipped and counted in `skipped`. A failure says why in `error`, by message id (the OS's
+    // own words nested as it gives them).
+    bool load(Message* error, std::size_t* skipped = nullptr);
+    bool append(LogEntry entry, Message* error);
     const std::vector<LogEntry>& entries() const { return entries_; }
     const std::string& path() const { return path_; }
 
 private:
-    bool compact(std::string* error);
+    bool compact(Message* error);
     std::string path_;
     std::size_t keep_;
     std::vector<LogEntry> entries_;

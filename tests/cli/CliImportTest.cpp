@@ -6,6 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <regex>
+#include <set>
+#include <sstream>
+
 #include <sys/stat.h>
 
 namespace m350::clitest {
@@ -208,6 +213,113 @@ TEST_F(CliImportTest, TheImportSpeaksTheLanguageAsked) {
     ProcessResult missing = sim({"import", "nowhere", "--into", "other", "--lang", "zh_CN"});
     EXPECT_NE(missing.err.find("nowhere: 不是文件夹：控制器备份是存放 `setting`、slib-g.nc 等文件的文件夹"), std::string::npos)
         << missing.err;
+}
+
+namespace {
+
+bool isChinese(unsigned char lead) { return lead >= 0xE4 && lead <= 0xE9; }
+
+// The Latin words of 4+ letters a Chinese report says, leaving out what it names as the files and
+// the controller have them: a token holding . / _ = " [ or # (file names, paths, machine.toml keys
+// and values, G-code), the backup's own file names without an extension, the folder named on the
+// command line, and RTCP (in the catalogue's Chinese name of param 31, as the controller says it).
+std::set<std::string> englishWords(const std::string& text, const std::string& folder = "") {
+    static const std::regex token(R"re([\x21-\x7e]+)re"); // a run of printable ASCII, no space
+    static const std::regex word("[A-Za-z]{4,}");
+    static const std::set<std::string> names{"setting", "coordinate", "mdiblock", "ddcs", "loading", "opening", "device", "RTCP"};
+    std::set<std::string> found;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), token); it != std::sregex_iterator(); ++it) {
+        const std::string t = it->str();
+        if (t.find_first_of("./_=\"[#") != std::string::npos) {
+            continue;
+        }
+        for (auto w = std::sregex_iterator(t.begin(), t.end(), word); w != std::sregex_iterator(); ++w) {
+            if (names.count(w->str()) == 0 && w->str() != folder) {
+                found.insert(w->str());
+            }
+        }
+    }
+    return found;
+}
+
+// The report's lines that hold a Chinese character, once the controller's own names for what the
+// English says beside them are left out (the magazine types, a hook's 回机械原点).
+std::vector<std::string> chineseLines(std::string text) {
+    for (const std::string name : {"无刀库", "多工序", "龙门架直排", "固定直排", "圆盘刀库", "回机械原点", "回工件原点", "回零"}) {
+        for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name)) {
+            text.erase(at, name.size());
+        }
+    }
+    std::vector<std::string> found;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        if (std::any_of(line.begin(), line.end(), [](char c) { return isChinese(static_cast<unsigned char>(c)); })) {
+            found.push_back(line);
+        }
+    }
+    return found;
+}
+
+} // namespace
+
+// The report `m350-sim import` prints and the import-report.txt it writes are in --lang, wholly:
+// titles, the magazine, skipped files, review items, what cannot be modelled, syntax errors and
+// notes; the file's first line says its language. The JSON keeps its English texts and codes. A
+// second import into the folder in the other language finds it unchanged (the report is the same
+// import's) and leaves the report as it was.
+TEST_F(CliImportTest, TheReportAndImportReportTxtAreWhollyInTheLanguageAsked) {
+    backup_.files["key-1.nc"] = "G01 X\nM99\n"; // a syntax error the report lists
+    backup_.writeTo(dir_ / "SYSDISK");
+    fs::remove(dir_ / "SYSDISK/coordinate"); // a note
+    ControllerBackupWriter gantry = ControllerBackupWriter::dualYGantry(); // a gantry motor, a value out of range
+    gantry.writeTo(dir_ / "GANTRY");
+
+    for (const auto& [from, into] : {std::pair{"SYSDISK", "zh"}, std::pair{"GANTRY", "zh-gantry"}}) {
+        SCOPED_TRACE(from);
+        ProcessResult zh = sim({"import", from, "--into", into, "--lang", "zh_CN"});
+        ASSERT_EQ(zh.exitStatus, kExitOk) << zh.err;
+        const std::string report = m350::testing::readFile(dir_ / into / "import-report.txt");
+        EXPECT_EQ(report.substr(0, report.find('\n')), "由控制器备份生成的机器文件夹（本报告为中文）");
+        EXPECT_NE(zh.err.find(report), std::string::npos) << "the printed report is the file's:\n" << zh.err;
+        EXPECT_EQ(englishWords(zh.err, from), std::set<std::string>{}) << zh.err;
+        EXPECT_NE(report.find("仿真无法模拟："), std::string::npos) << report;
+        json j = output(zh);
+        EXPECT_EQ(j["magazine"].get<std::string>().rfind("magazine type ", 0), 0u) << "the JSON keeps the English: " << j;
+        for (const json& skipped : j["skipped"]) {
+            EXPECT_EQ(chineseLines(skipped.value("reason", "")), std::vector<std::string>{}) << skipped;
+        }
+    }
+    const std::string router = m350::testing::readFile(dir_ / "zh/import-report.txt");
+    EXPECT_NE(router.find("  刀库类型4（圆盘刀库），容量6：未建模，无刀库装置\n"), std::string::npos) << router;
+    EXPECT_NE(router.find("未复制（仿真不使用的7个文件）：\n"), std::string::npos) << router;
+    EXPECT_NE(router.find("  logo.bmp：图片（面板自行绘制画面）\n"), std::string::npos) << router;
+    EXPECT_NE(router.find("须在machine.toml中核对"), std::string::npos) << router;
+    EXPECT_NE(router.find("仿真尚不接受的语法"), std::string::npos) << router;
+    EXPECT_NE(router.find("key-1.nc:1:"), std::string::npos) << router;
+    EXPECT_NE(router.find("备注：\n  没有coordinate文件：所有工件坐标偏置为0\n"), std::string::npos) << router;
+    const std::string gantryReport = m350::testing::readFile(dir_ / "zh-gantry/import-report.txt");
+    EXPECT_NE(gantryReport.find("：龙门的第二个电机。"), std::string::npos) << gantryReport;
+    EXPECT_NE(gantryReport.find("面板会拒绝的参数值（按控制器原值保留）：\n"), std::string::npos) << gantryReport;
+    EXPECT_NE(gantryReport.find("\n  参数969（T3主轴速度）须为100到200的整数，不能为0\n"), std::string::npos) << gantryReport;
+
+    for (const auto& [from, into] : {std::pair{"SYSDISK", "en"}, std::pair{"GANTRY", "en-gantry"}}) {
+        SCOPED_TRACE(from);
+        ProcessResult en = sim({"import", from, "--into", into, "--lang", "en"});
+        ASSERT_EQ(en.exitStatus, kExitOk) << en.err;
+        const std::string report = m350::testing::readFile(dir_ / into / "import-report.txt");
+        EXPECT_EQ(report.substr(0, report.find('\n')), "Machine folder from a controller backup (this report in English)");
+        EXPECT_NE(en.err.find(report), std::string::npos) << en.err;
+        EXPECT_EQ(chineseLines(report), std::vector<std::string>{}) << report;
+        EXPECT_NE(report.find("The simulator cannot model:"), std::string::npos) << report;
+    }
+    EXPECT_NE(m350::testing::readFile(dir_ / "en/import-report.txt").find("  logo.bmp: image (the panel draws its own screens)\n"),
+              std::string::npos);
+
+    // the same import in the other language: this import all the same, nothing rewritten
+    ProcessResult again = sim({"import", "SYSDISK", "--into", "zh", "--lang", "en"});
+    ASSERT_EQ(again.exitStatus, kExitOk) << again.err;
+    EXPECT_EQ(output(again)["unchanged"], true);
+    EXPECT_EQ(m350::testing::readFile(dir_ / "zh/import-report.txt"), router);
 }
 
 // Issue 26: a `coordinate` or `setting` that is a folder or a link to a device was "not found" or

@@ -85,4 +85,24 @@ TEST_F(UserRightsTest, ResetPasswordsReplacesAFifoAndRefusesAFolder) {
     EXPECT_EQ(usage.exitStatus, 64) << "the folder is never guessed";
 }
 
+// The System Log's own failure (system-log.tsv is a folder) is said in the language asked, framed
+// by the warning that the reset went unlogged; the reset itself is done.
+TEST_F(UserRightsTest, ASystemLogThatCannotBeReadIsSaidInEitherLanguage) {
+    fs::path machine = copyMachine();
+    fs::create_directory(machine / "system-log.tsv");
+    ProcessResult chinese = sim({"reset-passwords", "--config", "machine", "--lang", "zh_CN"});
+    EXPECT_EQ(chinese.exitStatus, kExitOk) << chinese.err;
+    EXPECT_NE(chinese.err.find("m350-sim: 警告：系统日志未能记录此次重置：machine/system-log.tsv：无法读取系统日志："),
+              std::string::npos)
+        << chinese.err;
+    EXPECT_EQ(chinese.err.find("cannot"), std::string::npos) << chinese.err;
+    ProcessResult english = sim({"reset-passwords", "--config", "machine", "--lang", "en"});
+    EXPECT_EQ(english.exitStatus, kExitOk) << english.err;
+    EXPECT_NE(english.err.find("m350-sim: warning: the System Log did not take the reset: machine/system-log.tsv: cannot "
+                               "read the system log: "),
+              std::string::npos)
+        << english.err;
+    EXPECT_EQ(output(english).value("message_id", ""), "passwords_reset");
+}
+
 } // namespace m350::clitest

@@ -7,6 +7,8 @@
 #include "ui/panel/PromptBox.h"
 
 #include <QAction>
+#include <QDir>
+#include <QFile>
 #include <QJsonArray>
 #include <QTemporaryDir>
 
@@ -52,8 +54,15 @@ TEST(PanelBackupImport, TheMenuEntryImportsReportsAndSwitchesToTheNewMachine) {
         ASSERT_TRUE(panel.window().prompt()->active());
         const QString report = panel.window().prompt()->question();
         EXPECT_TRUE(report.contains(into)) << report.toStdString();
-        EXPECT_TRUE(report.contains(QStringLiteral("servo disc"))) << report.toStdString();
-        EXPECT_TRUE(report.contains(QStringLiteral("模拟器无法模拟:"))) << report.toStdString();
+        // the core's words in the panel's language too (message ids): the magazine and what cannot be modelled
+        EXPECT_TRUE(report.contains(QStringLiteral("刀库类型4（圆盘刀库），容量6：未建模，无刀库装置"))) << report.toStdString();
+        EXPECT_TRUE(report.contains(QStringLiteral("模拟器无法模拟:\n- 刀库类型4（圆盘刀库）无法从备份建模"))) << report.toStdString();
+        EXPECT_FALSE(report.contains(QStringLiteral("servo disc"))) << report.toStdString();
+        EXPECT_FALSE(report.contains(QStringLiteral("not modelled"))) << report.toStdString();
+        // and the machine folder's import-report.txt in the language of the import that made it
+        QFile written(QDir(into).filePath(QStringLiteral("import-report.txt")));
+        ASSERT_TRUE(written.open(QIODevice::ReadOnly));
+        EXPECT_EQ(QString::fromUtf8(written.readLine()).trimmed(), QStringLiteral("由控制器备份生成的机器文件夹（本报告为中文）"));
         EXPECT_TRUE(report.endsWith(QStringLiteral("是否将面板切换到此机床?"))) << report.toStdString();
         panel.key("ENTER");
         EXPECT_FALSE(panel.window().prompt()->active());

@@ -33,7 +33,7 @@ protected:
 
     std::variant<backup::BackupImport, backup::ImportError> import(const std::string& into = "machine") {
         backup_.writeTo(dir_ / "SYSDISK");
-        return backup::importControllerBackup(dir_ / "SYSDISK", dir_ / into);
+        return backup::importControllerBackup(dir_ / "SYSDISK", dir_ / into, MessageLanguage::English);
     }
     backup::BackupImport imported(const std::string& into = "machine") {
         auto result = import(into);
@@ -99,7 +99,7 @@ TEST_F(BackupImportTest, SlibuserNcLoadsBesideSlibGOnceAndTheHookFilesAreListed)
     EXPECT_EQ(fs::path(machine.libraries[2].path).filename(), "slibuser.nc");
     EXPECT_EQ(machine.libraries[2].role, gcode::FileRole::GLibrary);
     ASSERT_EQ(result.hooks.size(), 2u); // T.nc and pause.nc; slibuser.nc is a library, cam/cam1.nc no hook
-    EXPECT_THAT(backup::formatImportReport(result), HasSubstr("\n  pause.nc: "));
+    EXPECT_THAT(backup::formatImportReport(result, MessageLanguage::English), HasSubstr("\n  pause.nc: "));
 }
 
 TEST_F(BackupImportTest, NamesInAnotherCaseAsAFatStickLeavesThemAreFound) {
@@ -108,7 +108,7 @@ TEST_F(BackupImportTest, NamesInAnotherCaseAsAFatStickLeavesThemAreFound) {
     backup_.writeTo(dir_ / "SYSDISK");
     fs::rename(dir_ / "SYSDISK/setting", dir_ / "SYSDISK/SETTING");
     fs::rename(dir_ / "SYSDISK/coordinate", dir_ / "SYSDISK/COORDINATE");
-    auto result = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    auto result = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine", MessageLanguage::English);
     ASSERT_TRUE(std::holds_alternative<backup::BackupImport>(result)) << std::get<backup::ImportError>(result).message;
     const backup::BackupImport& r = std::get<backup::BackupImport>(result);
     EXPECT_EQ(r.libraries[0], "SLIB-G.NC");
@@ -141,7 +141,7 @@ TEST_F(BackupImportTest, WithoutDefaultSettingNothingIsComparedAndTheReportSaysS
     EXPECT_FALSE(result.factoryCompared);
     EXPECT_TRUE(result.changedParameters.empty());
     EXPECT_THAT(readFile(dir_ / "machine/params.toml"), ::testing::Not(HasSubstr("factory:")));
-    EXPECT_THAT(backup::formatImportReport(result), HasSubstr("no default_setting"));
+    EXPECT_THAT(backup::formatImportReport(result, MessageLanguage::English), HasSubstr("no default_setting"));
 }
 
 TEST_F(BackupImportTest, TheMdiLinesAndTheNcFilesKeepTheirBytes) {
@@ -162,13 +162,13 @@ TEST_F(BackupImportTest, TheMdiLinesAndTheNcFilesKeepTheirBytes) {
 TEST_F(BackupImportTest, AnMdiBlockOfTheWrongSizeIsReadAsFarAsItGoesAndSaid) {
     backup_.writeTo(dir_ / "SYSDISK");
     std::ofstream(dir_ / "SYSDISK/mdiblock", std::ios::binary) << std::string("G0 X1\0\0\0", 8) + "M3";
-    auto result = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    auto result = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine", MessageLanguage::English);
     ASSERT_TRUE(std::holds_alternative<backup::BackupImport>(result));
     const backup::BackupImport& r = std::get<backup::BackupImport>(result);
     EXPECT_EQ(r.mdiLines[0], "G0 X1");
     EXPECT_EQ(r.mdiLines[1], "");
     EXPECT_EQ(readFile(dir_ / "machine/mdiblock").size(), 720u);
-    EXPECT_THAT(backup::formatImportReport(r), HasSubstr("mdiblock holds 10 bytes, not 720"));
+    EXPECT_THAT(backup::formatImportReport(r, MessageLanguage::English), HasSubstr("mdiblock holds 10 bytes, not 720"));
 }
 
 TEST_F(BackupImportTest, TwoImportsOfOneBackupAreTheSameBytesAndTheSecondIntoTheFirstWritesNothing) {
@@ -229,12 +229,12 @@ TEST_F(BackupImportTest, ADamagedSettingIsRefusedNamingTheFileOffsetAndParameter
 TEST_F(BackupImportTest, WrongSizesAndAMissingSettingAreRefused) {
     backup_.writeTo(dir_ / "SYSDISK");
     std::ofstream(dir_ / "SYSDISK/coordinate", std::ios::binary | std::ios::app) << "x";
-    auto longer = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    auto longer = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine", MessageLanguage::English);
     ASSERT_TRUE(std::holds_alternative<backup::ImportError>(longer));
     EXPECT_THAT(std::get<backup::ImportError>(longer).message.english(),
                 HasSubstr("holds 361 bytes; a coordinate file holds 45 little-endian float64 (360 bytes)"));
     fs::remove(dir_ / "SYSDISK/setting");
-    auto missing = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    auto missing = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine", MessageLanguage::English);
     ASSERT_TRUE(std::holds_alternative<backup::ImportError>(missing));
     EXPECT_THAT(std::get<backup::ImportError>(missing).message.english(), HasSubstr("not found"));
     EXPECT_TRUE(leftBehind().empty());
@@ -247,7 +247,7 @@ TEST_F(BackupImportTest, ABigEndianCopyIsRefusedAsDamaged) {
         std::reverse(setting.begin() + static_cast<std::ptrdiff_t>(i), setting.begin() + static_cast<std::ptrdiff_t>(i + 8));
     }
     std::ofstream(dir_ / "SYSDISK/setting", std::ios::binary) << setting;
-    auto result = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine");
+    auto result = backup::importControllerBackup(dir_ / "SYSDISK", dir_ / "machine", MessageLanguage::English);
     ASSERT_TRUE(std::holds_alternative<backup::ImportError>(result));
     EXPECT_THAT(std::get<backup::ImportError>(result).message.english(), HasSubstr("the file is damaged"));
 }
@@ -255,7 +255,7 @@ TEST_F(BackupImportTest, ABigEndianCopyIsRefusedAsDamaged) {
 TEST_F(BackupImportTest, TheReportSaysWhatToReviewAndWhatCannotBeModelled) {
     backup::BackupImport result = imported();
     const std::string report = readFile(dir_ / "machine" / backup::kImportReportFile);
-    EXPECT_EQ(report, backup::formatImportReport(result));
+    EXPECT_EQ(report, backup::formatImportReport(result, MessageLanguage::English));
     EXPECT_THAT(report, HasSubstr("magazine type 4 (servo disc, 圆盘刀库) is not modelled"));
     for (const char* key : {"homing.switch_distance", "tool_setter.top", "floating_setter.top", "tools.length",
                             "io_links"}) {
@@ -272,7 +272,7 @@ TEST_F(BackupImportTest, SyntaxTheSimulatorDoesNotAcceptIsListedPerFile) {
     ASSERT_EQ(result.diagnostics.size(), 1u);
     EXPECT_EQ(result.diagnostics[0].file, "key-1.nc");
     EXPECT_EQ(result.diagnostics[0].line, 1u);
-    EXPECT_THAT(backup::formatImportReport(result), HasSubstr("key-1.nc:1:"));
+    EXPECT_THAT(backup::formatImportReport(result, MessageLanguage::English), HasSubstr("key-1.nc:1:"));
 }
 
 TEST_F(BackupImportTest, ToolLengthsMakeTheStoredZOffsetsTrueOnTheSimulatedSetter) {

@@ -48,7 +48,8 @@ bool hasLink(const MachineConfig& m, int output, int input, double seconds, bool
 
 std::string unsupported(const backup::ImportedWiring& wiring) {
     std::string all;
-    for (const std::string& line : wiring.unsupported) {
+    for (const Message& said : wiring.unsupported) {
+        const std::string line = said.english();
         all += line + "\n";
     }
     return all;
@@ -62,8 +63,8 @@ TEST(BackupWiring, TypeThreeIsARackLoadedFromAboveAsTheFactoryFlowDoesIt) {
     EXPECT_EQ(m.device, MagazineConfig::Device::LinearRack);
     EXPECT_TRUE(m.topLoading);
     EXPECT_FALSE(m.onGantry);
-    EXPECT_THAT(w.magazine, HasSubstr("fixed row, 固定直排"));
-    EXPECT_THAT(w.magazine, HasSubstr("3 pockets"));
+    EXPECT_THAT(w.magazine.english(), HasSubstr("fixed row, 固定直排"));
+    EXPECT_THAT(w.magazine.english(), HasSubstr("3 pockets"));
     EXPECT_TRUE(std::any_of(w.review.begin(), w.review.end(), [](const backup::ReviewItem& r) { return r.key == "magazine.loading"; }));
 }
 

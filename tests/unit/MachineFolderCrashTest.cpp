@@ -45,7 +45,7 @@ fs::path scratchFolder(const std::string& name) {
 
 std::unique_ptr<files::SystemLog> openLog(const fs::path& folder) {
     auto log = std::make_unique<files::SystemLog>((folder / "system-log.tsv").string(), 100000);
-    std::string error;
+    Message error;
     EXPECT_TRUE(log->load(&error)) << error;
     return log;
 }
@@ -67,7 +67,7 @@ bool saveVersion(const fs::path& folder, controller::Controller& controller, fil
     }
     tools::LifeData life;
     life.putGroup({1, 100 + v, tools::LifeKind::Count, {{1, 0, 0, 0}}});
-    std::string error;
+    Message error;
     return !config::MachineFolder(folder).saveToolLife(life) &&
            log.append({"2026-11-24 05:00:00", "save", std::to_string(v)}, &error) &&
            !files::writeFileAtomically(folder / "mdi.nc", "G0 X" + std::to_string(v) + "\n");
@@ -248,7 +248,7 @@ TEST(MachineFolderCrash, ALogLineCutShortIsSkippedAndTheNextAppendRepairsTheFile
     const fs::path file = folder / "system-log.tsv";
     writeText(file, "t1\tstart\tone\nt2\tstop\ttwo\nt3\tsta");
     files::SystemLog log(file.string());
-    std::string error;
+    Message error;
     std::size_t skipped = 0;
     ASSERT_TRUE(log.load(&error, &skipped)) << error;
     EXPECT_EQ(log.entries().size(), 2u);

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -216,6 +217,116 @@ TEST(MessageIdCoverage, NoNewAlarmOrFindingIsRaisedFromBareText) {
     }
     for (const auto& [file, count] : kStillBare) {
         EXPECT_TRUE(found.count(file) > 0) << file << " has no bare raise left: remove it from the list";
+    }
+}
+
+// The import's report (import-report.txt, the panel's import summary, what `m350-sim import` prints)
+// and the System Log's own errors: every word the operator reads is a message by id. A statement
+// here with an English literal (a space and a word) counts, unless it calls message( or
+// bilingual(, holds the Chinese beside the English (a pair), is the English half of a pair whose
+// Chinese is the next statement, or writes a machine folder file's own text (machine.toml's,
+// params.toml's and [[io_links]] comments: `text +=`, `Toml +=`), which stays as the file has it.
+const char* const kWordFiles[] = {"backup/BackupImport.cpp",     "backup/BackupImportReport.cpp", "backup/BackupWiring.cpp",
+                                  "backup/BackupMachineToml.cpp", "backup/BackupPrograms.cpp",     "backup/ControllerBackup.cpp",
+                                  "files/SystemLog.cpp"};
+
+bool hasChineseText(const std::string& text) {
+    return std::any_of(text.begin(), text.end(), [](char c) {
+        const auto lead = static_cast<unsigned char>(c);
+        return lead >= 0xE4 && lead <= 0xE9;
+    });
+}
+
+// A brace that opens or closes a block (the last thing on its line, or the first), not an
+// initializer list inside a statement ({"coordinate"}).
+bool blockBrace(const std::string& source, std::size_t at) {
+    const std::size_t lineEnd = std::min(source.find('\n', at), source.size());
+    const std::size_t lineStart = source.rfind('\n', at) == std::string::npos ? 0 : source.rfind('\n', at) + 1;
+    const std::string after = source.substr(at + 1, lineEnd - at - 1);
+    const std::string before = source.substr(lineStart, at - lineStart);
+    const auto blank = [](const std::string& text) {
+        return text.find_first_not_of(" \t\r") == std::string::npos || text.find_first_not_of(" \t\r") == text.find("//");
+    };
+    return blank(after) || blank(before);
+}
+
+// The source's statements (split at ; and at block braces outside literals), comments dropped.
+std::vector<std::string> statements(const std::string& source) {
+    std::vector<std::string> out;
+    std::string current;
+    bool inLiteral = false;
+    for (std::size_t i = 0; i < source.size(); ++i) {
+        const char c = source[i];
+        if (!inLiteral && c == '/' && i + 1 < source.size() && source[i + 1] == '/') {
+            i = std::min(source.find('\n', i), source.size() - 1);
+            continue;
+        }
+        if (inLiteral && c == '\\' && i + 1 < source.size()) {
+            current += source.substr(i, 2);
+            ++i;
+            continue;
+        }
+        if (c == '"' && (i == 0 || source[i - 1] != '\'')) {
+            inLiteral = !inLiteral;
+        }
+        if (!inLiteral && (c == ';' || ((c == '{' || c == '}') && blockBrace(source, i)))) {
+            out.push_back(current);
+            current.clear();
+            continue;
+        }
+        current += c;
+    }
+    out.push_back(current);
+    return out;
+}
+
+std::vector<std::string> bareWords(const std::string& source) {
+    static const std::regex literal(R"re("(?:[^"\\]|\\.)*")re");
+    static const std::regex word("[A-Za-z]{3,}");
+    static const std::regex fileText(R"re(\b(\w*[tT]ext|\w*Toml|body|comment) *\+?= )re");
+    const std::vector<std::string> all = statements(source);
+    std::vector<std::string> found;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const std::string& s = all[i];
+        bool english = false;
+        for (auto it = std::sregex_iterator(s.begin(), s.end(), literal); it != std::sregex_iterator(); ++it) {
+            const std::string text = it->str();
+            english = english || (text.find(' ') != std::string::npos && std::regex_search(text, word));
+        }
+        if (!english || s.find("message(") != std::string::npos || s.find("bilingual(") != std::string::npos ||
+            hasChineseText(s) || std::regex_search(s, fileText)) {
+            continue;
+        }
+        const bool pairedWithNext = i + 1 < all.size() && hasChineseText(all[i + 1]);
+        if (!pairedWithNext) {
+            found.push_back(s);
+        }
+    }
+    return found;
+}
+
+TEST(MessageIdCoverage, TheScanOfTheImportReportFindsBareEnglish) {
+    EXPECT_EQ(bareWords("        result.notes.push_back(\"no coordinate file: every work offset is 0\");\n").size(), 1u);
+    EXPECT_EQ(bareWords("    *error = path_ + \": cannot append to the system log: \" + std::strerror(errno);\n").size(), 1u);
+    EXPECT_EQ(bareWords("    result.notes.push_back(message(\"import_note_no_coordinate\", {\"coordinate\"}));\n").size(), 0u);
+    EXPECT_EQ(bareWords("    std::string english = \"parameter \" + n;\n    std::string chinese = \"参数\" + n;\n").size(), 0u);
+    EXPECT_EQ(bareWords("    out.text += \"\\n# The fixed setter's top\\n\";  // the file's own words\n").size(), 0u);
+    EXPECT_EQ(bareWords("    // a comment \"with words\" is no text\n").size(), 0u);
+}
+
+TEST(MessageIdCoverage, TheImportReportAndTheSystemLogSayNoBareEnglish) {
+    const std::filesystem::path core(M350_CORE_SOURCE_DIR);
+    for (const char* file : kWordFiles) {
+        std::ifstream in(core / file);
+        ASSERT_TRUE(in) << file;
+        std::stringstream text;
+        text << in.rdbuf();
+        std::string bare;
+        for (const std::string& statement : bareWords(text.str())) {
+            bare += "\n  " + statement;
+        }
+        EXPECT_EQ(bare, "") << file << " says English words without a message id: give each an id in "
+                                      "translations/messages.tsv (core/common/Message.h)";
     }
 }
 

@@ -75,8 +75,9 @@ void BackupImportFlow::importInto(const QString& backup, const QString& machineF
     context_.notify(tr("Importing %1 ...").arg(backup));
     using Outcome = std::variant<backup::BackupImport, backup::ImportError>;
     auto outcome = std::make_shared<Outcome>();
-    worker_ = QThread::create([outcome, from = backup.toStdString(), into = machineFolder.toStdString()] {
-        *outcome = backup::importControllerBackup(from, into);
+    worker_ = QThread::create([outcome, from = backup.toStdString(), into = machineFolder.toStdString(),
+                               language = Language::messageLanguage()] {
+        *outcome = backup::importControllerBackup(from, into, language);
     });
     connect(worker_, &QThread::finished, this, [this, outcome] {
         worker_->deleteLater();
@@ -99,7 +100,8 @@ void BackupImportFlow::report(const std::variant<backup::BackupImport, backup::I
     QStringList lines;
     lines << (r.unchanged ? tr("%1 already holds this backup's import; nothing written").arg(folder)
                           : tr("Machine folder made from the backup:\n%1").arg(folder));
-    lines << shortLine(r.magazine);
+    const MessageLanguage language = Language::messageLanguage();
+    lines << shortLine(r.magazine.in(language));
     if (r.factoryCompared) {
         lines << tr("%1 parameters, %2 differ from the factory values").arg(r.parameters).arg(r.changedParameters.size());
     }
@@ -108,7 +110,7 @@ void BackupImportFlow::report(const std::variant<backup::BackupImport, backup::I
     if (!r.unsupported.empty()) {
         lines << tr("The simulator cannot model:");
         for (std::size_t i = 0; i < r.unsupported.size() && i < kUnsupportedShown; ++i) {
-            lines << QStringLiteral("- ") + shortLine(r.unsupported[i]);
+            lines << QStringLiteral("- ") + shortLine(r.unsupported[i].in(language));
         }
     }
     if (!r.diagnostics.empty()) {

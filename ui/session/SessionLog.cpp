@@ -1,6 +1,7 @@
 #include "ui/session/SessionLog.h"
 
 #include "core/config/MachineFolder.h"
+#include "ui/i18n/Language.h"
 
 #include <QDateTime>
 
@@ -8,9 +9,9 @@ namespace m350::ui {
 
 SessionLog::SessionLog(const std::string& machineFolder)
     : log_(config::MachineFolder(machineFolder).pathOf(config::FolderFile::SystemLog).string()) {
-    std::string error;
+    Message error;
     if (!log_.load(&error)) {
-        problem_ = QString::fromStdString(error);
+        problem_ = error;
     }
     entries_ = std::make_shared<const std::vector<files::LogEntry>>(log_.entries());
 }
@@ -18,11 +19,15 @@ SessionLog::SessionLog(const std::string& machineFolder)
 void SessionLog::record(const char* event, const QString& detail) {
     files::LogEntry entry{QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")).toStdString(),
                            event, detail.toStdString()};
-    std::string error;
+    Message error;
     if (!log_.append(std::move(entry), &error)) {
-        problem_ = QString::fromStdString(error);
+        problem_ = error;
     }
     entries_ = std::make_shared<const std::vector<files::LogEntry>>(log_.entries());
+}
+
+QString SessionLog::problem() const {
+    return problem_ ? QString::fromStdString(problem_->in(Language::messageLanguage())) : QString();
 }
 
 } // namespace m350::ui

@@ -5,6 +5,7 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace m350::ui {
@@ -20,12 +21,12 @@ public:
     // Event keys: see LogPage for their words (start_work, resume, pause, mdi, home_all ...).
     void record(const char* event, const QString& detail = {});
     LogEntries entries() const { return entries_; }
-    const QString& problem() const { return problem_; } // why the log cannot be read or written
+    QString problem() const; // why the log cannot be read or written, in the panel's language
 
 private:
     files::SystemLog log_;
     LogEntries entries_;
-    QString problem_;
+    std::optional<Message> problem_;
 };
 
 } // namespace m350::ui
