@@ -61,8 +61,8 @@
         <translation>%1 parameters, %2 differ from the factory values</translation>
     </message>
     <message>
-        <source>%1 .nc files copied as they were, %2 files not copied</source>
-        <translation>%1 .nc files copied as they were, %2 files not copied</translation>
+        <source>.nc files copied as they were: %1; other files not copied: %2</source>
+        <translation>.nc files copied as they were: %1; other files not copied: %2</translation>
     </message>
     <message>
         <source>%1 stated values to review in machine.toml</source>

@@ -61,7 +61,7 @@
         <translation>%1 个参数, 其中 %2 个与出厂值不同</translation>
     </message>
     <message>
-        <source>%1 .nc files copied as they were, %2 files not copied</source>
+        <source>.nc files copied as they were: %1; other files not copied: %2</source>
         <translation>%1 个 .nc 文件原样复制, %2 个文件未复制</translation>
     </message>
     <message>

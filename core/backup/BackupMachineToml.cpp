@@ -70,15 +70,15 @@ void world(const ControllerBackup& backup, ImportedMachine& out) {
         }
     }
     const double start = p.get(param::kFixedSetterX + 2);
-    const double top = lowest ? *lowest - kAssumedToolLength
-                       : start != 0.0 ? start - kAssumedToolLength - kSetterBelowStart
-                                      : kDefaultSetterTop;
+    const double top = atFourDecimals(lowest ? *lowest - kAssumedToolLength
+                                      : start != 0.0 ? start - kAssumedToolLength - kSetterBelowStart
+                                                     : kDefaultSetterTop);
     std::vector<double> lengths;
     int set = 0;
     for (int k = 1; k <= tools; ++k) {
         auto z = storedOffset(p, k, capacity);
         set += z ? 1 : 0;
-        lengths.push_back(z ? *z - top : kAssumedToolLength);
+        lengths.push_back(z ? atFourDecimals(*z - top) : kAssumedToolLength);
     }
     const std::vector<double> distances(std::begin(kSwitchDistance), std::end(kSwitchDistance));
     out.text += "\n# The simulated world: facts no file of the backup gives. Stated, to be reviewed.\n"
@@ -93,9 +93,10 @@ void world(const ControllerBackup& backup, ImportedMachine& out) {
          message(lowest ? "import_review_setter_lowest"
                  : start != 0.0 ? "import_review_setter_start" : "import_review_setter_default")});
     if (params::wiredInput(p, param::kFloatingSetterInput)) {
+        const std::string floatingTop = params::tomlNumber(atFourDecimals(top - kFloatingBelowSetter));
         out.text += "\n# The floating setter: a block of param 129's thickness lying on the work.\n"
-                    "[floating_setter]\ntop = " + params::tomlNumber(top - kFloatingBelowSetter) + "\n";
-        out.review.push_back({"floating_setter.top", params::tomlNumber(top - kFloatingBelowSetter),
+                    "[floating_setter]\ntop = " + floatingTop + "\n";
+        out.review.push_back({"floating_setter.top", floatingTop,
                               message("import_review_floating")});
     }
     out.text += "\n# Tool lengths T1..T" + std::to_string(tools) +

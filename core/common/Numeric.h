@@ -27,4 +27,10 @@ inline std::int32_t roundToInt(double v) {
     return saturatingInt(std::round(v));
 }
 
+// At the parameters' four decimals (params.toml's resolution for a real): a sum or difference of
+// two of them written to a file reads -118.677, not -118.67699999999999.
+inline double atFourDecimals(double v) {
+    return std::round(v * 1e4) / 1e4;
+}
+
 } // namespace m350

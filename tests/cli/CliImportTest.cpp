@@ -136,6 +136,22 @@ TEST_F(CliImportTest, TheResultListsWhatWasWrittenCopiedAndSkipped) {
     EXPECT_EQ(m350::testing::readFile(dir_ / "machine/cam/cam1.nc"), "G0 X0 Y0\r\n");
 }
 
+// The numbers the import works out (the setters' tops, the tool lengths) are written at the
+// parameters' four decimals: no float noise such as -118.67699999999999 in machine.toml or the report.
+TEST_F(CliImportTest, WorkedOutNumbersAreWrittenAtFourDecimals) {
+    backup_.setting[930] = -20.0; // T1's and T2's Z offsets as taught: T2's length works out
+    backup_.setting[931] = -31.4; // as -31.4 - (-31.4 - 60), 60.00000000000001 in doubles
+    backup_.writeTo(dir_ / "SYSDISK");
+    ProcessResult r = import("machine");
+    ASSERT_EQ(r.exitStatus, kExitOk) << r.err;
+    const std::string toml = m350::testing::readFile(dir_ / "machine/machine.toml");
+    const std::regex noisy(R"(\d\.\d{5,})");
+    std::smatch found;
+    EXPECT_FALSE(std::regex_search(toml, found, noisy)) << found.str(0) << "\n" << toml;
+    EXPECT_FALSE(std::regex_search(r.err, found, noisy)) << found.str(0) << "\n" << r.err;
+    EXPECT_NE(toml.find("[tool_setter]\ntop = "), std::string::npos) << toml;
+}
+
 TEST_F(CliImportTest, ImportingTwiceGivesTheSameFolderAndASecondRunIntoItChangesNothing) {
     ASSERT_EQ(import("first").exitStatus, kExitOk);
     ASSERT_EQ(import("second").exitStatus, kExitOk);

@@ -105,7 +105,7 @@ void BackupImportFlow::report(const std::variant<backup::BackupImport, backup::I
     if (r.factoryCompared) {
         lines << tr("%1 parameters, %2 differ from the factory values").arg(r.parameters).arg(r.changedParameters.size());
     }
-    lines << tr("%1 .nc files copied as they were, %2 files not copied").arg(r.copied.size()).arg(r.skipped.size());
+    lines << tr(".nc files copied as they were: %1; other files not copied: %2").arg(r.copied.size()).arg(r.skipped.size());
     lines << tr("%1 stated values to review in machine.toml").arg(r.review.size());
     if (!r.unsupported.empty()) {
         lines << tr("The simulator cannot model:");
