@@ -798,6 +798,10 @@
         <source>DPRNT records not logged (sent faster than the log takes them)</source>
         <translation>DPRNT records not logged (sent faster than the log takes them)</translation>
     </message>
+    <message>
+        <source>The System Log is not saved: %1</source>
+        <translation>The System Log is not saved: %1</translation>
+    </message>
 </context>
 <context>
     <name>m350::ui::MachineView</name>

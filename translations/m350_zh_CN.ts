@@ -798,6 +798,10 @@
         <source>DPRNT records not logged (sent faster than the log takes them)</source>
         <translation>未记入日志的DPRNT记录（发送快于日志记录）</translation>
     </message>
+    <message>
+        <source>The System Log is not saved: %1</source>
+        <translation>系统日志未保存：%1</translation>
+    </message>
 </context>
 <context>
     <name>m350::ui::MachineView</name>

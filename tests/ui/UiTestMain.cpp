@@ -2,6 +2,7 @@
 // (the panel's default), with the panel's style sheet.
 #include "tests/ui/PanelHarness.h"
 #include "ui/panel/PanelStyle.h"
+#include "ui/panel/QuietOffscreen.h"
 
 #include <QApplication>
 
@@ -10,6 +11,7 @@
 int main(int argc, char** argv) {
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
+    m350::ui::installQuietOffscreen(); // as m350-hmi: no platform note per page switch in the test log
     m350::ui::Language language(app);
     m350::test::PanelHarness::setLanguage(&language);
     language.set(QStringLiteral("zh_CN"));

@@ -1,5 +1,6 @@
 #include "ui/pages/LogPage.h"
 #include "ui/widgets/PanelTable.h"
+#include "ui/widgets/WrappedLabel.h"
 
 #include "ui/pages/PanelContext.h"
 
@@ -24,6 +25,10 @@ LogPage::LogPage(PanelContext& context, QWidget* parent) : Page(context, parent)
     table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
     column->addWidget(table_);
+    problem_ = new WrappedLabel(this);
+    problem_->setObjectName("logProblem");
+    problem_->hide();
+    column->addWidget(problem_);
     retranslate();
 }
 
@@ -115,6 +120,11 @@ void LogPage::render(const PanelSnapshot& snapshot) {
     if (snapshot.log && snapshot.log.get() != shown_) {
         fill(snapshot);
     }
+    const QString problem = snapshot.logProblem.isEmpty() ? QString() : tr("The System Log is not saved: %1").arg(snapshot.logProblem);
+    if (problem_->text() != problem) {
+        problem_->setText(problem);
+        problem_->setVisible(!problem.isEmpty());
+    }
 }
 
 void LogPage::fill(const PanelSnapshot& snapshot) {
@@ -151,7 +161,7 @@ QJsonObject LogPage::state() const {
     for (int row = 0; row < std::min(rows(), 20); ++row) {
         newest.append(eventText(row));
     }
-    return {{"log_newest", newest}};
+    return {{"log_newest", newest}, {"log_problem", problem_->text()}};
 }
 
 } // namespace m350::ui

@@ -5,6 +5,7 @@
 
 #include <QHash>
 
+class QLabel;
 class QTableWidget;
 
 namespace m350::ui {
@@ -34,6 +35,7 @@ public:
 private:
     void fill(const PanelSnapshot& snapshot);
     QTableWidget* table_;
+    QLabel* problem_; // why system-log.tsv is not saved, when it is not
     const void* shown_ = nullptr; // the log list last shown (lists are replaced, never changed)
 };
 

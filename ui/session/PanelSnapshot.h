@@ -77,6 +77,7 @@ struct PanelSnapshot {
     // tool.tbl failed (empty when it is saved).
     std::shared_ptr<const tools::ToolTable> toolTable;
     QString toolTableProblem;
+    QString logProblem; // why system-log.tsv could not be read or written (SessionLog::problem)
     // Tool life management (core/tools/ToolLifeView.h; a new object only when it changed), why the
     // last save of toollife.txt failed, and whether the T word itself changes the tool (the M350,
     // where the manager is a simulator extra) rather than M06 (FANUC).

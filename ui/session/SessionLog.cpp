@@ -11,7 +11,7 @@ SessionLog::SessionLog(const std::string& machineFolder)
     : log_(config::MachineFolder(machineFolder).pathOf(config::FolderFile::SystemLog).string()) {
     Message error;
     if (!log_.load(&error)) {
-        problem_ = error;
+        loadProblem_ = error;
     }
     entries_ = std::make_shared<const std::vector<files::LogEntry>>(log_.entries());
 }
@@ -20,14 +20,17 @@ void SessionLog::record(const char* event, const QString& detail) {
     files::LogEntry entry{QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")).toStdString(),
                            event, detail.toStdString()};
     Message error;
-    if (!log_.append(std::move(entry), &error)) {
-        problem_ = error;
+    if (log_.append(std::move(entry), &error)) {
+        appendProblem_.reset();
+    } else {
+        appendProblem_ = error;
     }
     entries_ = std::make_shared<const std::vector<files::LogEntry>>(log_.entries());
 }
 
 QString SessionLog::problem() const {
-    return problem_ ? QString::fromStdString(problem_->in(Language::messageLanguage())) : QString();
+    const std::optional<Message>& problem = appendProblem_ ? appendProblem_ : loadProblem_;
+    return problem ? QString::fromStdString(problem->in(Language::messageLanguage())) : QString();
 }
 
 } // namespace m350::ui

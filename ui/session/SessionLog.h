@@ -21,12 +21,15 @@ public:
     // Event keys: see LogPage for their words (start_work, resume, pause, mdi, home_all ...).
     void record(const char* event, const QString& detail = {});
     LogEntries entries() const { return entries_; }
-    QString problem() const; // why the log cannot be read or written, in the panel's language
+    // Why the log could not be read or its last entry not be written, in the panel's language;
+    // empty when the last entry was written (a full disk that has room again).
+    QString problem() const;
 
 private:
     files::SystemLog log_;
     LogEntries entries_;
-    std::optional<Message> problem_;
+    std::optional<Message> loadProblem_;
+    std::optional<Message> appendProblem_;
 };
 
 } // namespace m350::ui

@@ -222,6 +222,7 @@ void SessionWorker::publish() {
     snapshot->machineNameZh = machineNameZh_;
     snapshot->homingPrompt = controller_->homing().needsBootHomingPrompt() && !busy(); // after sysstart.nc
     snapshot->log = log_->entries();
+    snapshot->logProblem = log_->problem();
     snapshot->workRecord = workRecord_;
     snapshot->breakPoints = breakPointFile_.points(controller_->breakRun(), folder_);
     snapshot->toolTable = toolData_.table();
