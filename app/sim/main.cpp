@@ -328,7 +328,8 @@ int runCommand(int argc, char** argv) {
         // an alarm with no line (a native homing alarm names params.toml) is not placed at :0:0
         std::cerr << (a.file.empty() ? std::string("m350-sim") : a.file)
                   << (a.line > 0 ? ":" + std::to_string(a.line) + ":" + std::to_string(a.column) : std::string())
-                  << ": alarm: " << (a.messageId.empty() ? a.message : messageText(a.messageId, a.messageArguments, o.language))
+                  << ": " << messageText("stderr_alarm_tag", {}, o.language) << ": " // 报警 in Chinese, as 警告 for a warning
+                  << (a.messageId.empty() ? a.message : messageText(a.messageId, a.messageArguments, o.language))
                   << '\n';
         if (a.callerLine > 0) {
             std::cerr << a.callerFile << ':' << a.callerLine << ": " << messageText("alarm_in_library_note", {}, o.language)

@@ -92,7 +92,7 @@ TEST_F(CliTest, ACrashAlarmHasItsMessageIdAndIsSaidInChineseWithLangZhCn) {
                                                    "Z-10.000 with no pocket under the tool (it fell onto the table)");
     }
     EXPECT_NE(english.err.find("alarm: T1 dropped: the drawbar was released"), std::string::npos) << english.err;
-    EXPECT_NE(chinese.err.find("alarm: T1掉落：在X300.000 Y200.000 Z-10.000松刀时刀具下方没有刀位"), std::string::npos)
+    EXPECT_NE(chinese.err.find("报警: T1掉落：在X300.000 Y200.000 Z-10.000松刀时刀具下方没有刀位"), std::string::npos)
         << chinese.err;
     EXPECT_NE(chinese.err.find("m350-sim: T1掉在工作台上"), std::string::npos) << chinese.err;
     EXPECT_EQ(chinese.err.find("dropped"), std::string::npos) << chinese.err;

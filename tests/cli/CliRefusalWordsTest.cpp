@@ -48,7 +48,7 @@ const std::vector<std::string> kFanuc{"--config", "fanuc"};
 TEST_F(CliRefusalWordsTest, ArcGeometryRefusalsAreSaidInChinese) {
     for (const Refusal& refusal : {
              Refusal{"G90 G0 X0 Y0\nG02 X0 Y0 R5 F100\nM30\n", {}, "arc_r_full_circle",
-                     "R cannot describe a full circle: use I/J/K", "p.nc:2:1: alarm: R不能指定整圆：请用I/J/K"},
+                     "R cannot describe a full circle: use I/J/K", "p.nc:2:1: 报警: R不能指定整圆：请用I/J/K"},
              Refusal{"G90 G0 X0 Y0\nG02 X10 Y0 R2 F100\nM30\n", {}, "arc_r_too_small",
                      "R 2.000 is smaller than half the distance between start and end (5.000)",
                      "R 2.000小于起点到终点距离的一半（5.000）"},
@@ -66,13 +66,13 @@ TEST_F(CliRefusalWordsTest, CutterCompensationRefusalsAreSaidInChinese) {
     for (const Refusal& refusal : {
              Refusal{"G90 G0 X0 Y0\nG41 D1 G02 X10 Y0 I5 J0 F100\nM30\n", {}, "compensation_start_arc",
                      "cutter compensation must start on a straight move (G0/G1), not an arc",
-                     "p.nc:2:1: alarm: 刀具半径补偿须在直线移动（G0/G1）上建立，不能在圆弧上建立"},
+                     "p.nc:2:1: 报警: 刀具半径补偿须在直线移动（G0/G1）上建立，不能在圆弧上建立"},
              Refusal{"G90 G0 X0 Y0\nG01 G41 D1 X20 F100\nM30\n", {}, "compensation_entry_short",
                      "cutter compensation entry move of length 20.000 is not longer than the cutter radius",
                      "刀补建立移动长度20.000不大于刀具半径"},
              Refusal{"G90 G0 X0 Y0\nG01 G41 D1 X200 F100\nG42 X300\nM30\n", {}, "compensation_switch_side",
                      "cannot switch between G41 and G42 while compensating: program G40 first",
-                     "p.nc:3:1: alarm: 刀补中不能在G41和G42之间切换：请先用G40取消刀补"},
+                     "p.nc:3:1: 报警: 刀补中不能在G41和G42之间切换：请先用G40取消刀补"},
              Refusal{"G90 G0 X0 Y0\nG01 G41 D1 X200 F100\nG40 G02 X400 I100\nM30\n", {}, "compensation_end_arc",
                      "cutter compensation must end (G40) on a straight move, not an arc",
                      "刀具半径补偿须在直线移动上取消（G40），不能在圆弧上取消"},
@@ -105,7 +105,7 @@ TEST_F(CliRefusalWordsTest, ToolLifeDataEntryRefusalsAreSaidInChinese) {
              Refusal{"G10 L3\nP1 L2 Q3\nM30\n", kFanuc, "tool_life_entry_q", "G10 L3 data: Q1 counts uses, Q2 counts minutes",
                      "G10 L3数据：Q1按使用次数计，Q2按分钟计"},
              Refusal{"G10 L3\nP1 L2\nT11\nP1 L2\nM30\n", kFanuc, "tool_life_entry_twice",
-                     "G10 L3 data: group P1 is entered twice", "p.nc:4:1: alarm: G10 L3数据：刀具组P1输入了两次"},
+                     "G10 L3 data: group P1 is entered twice", "p.nc:4:1: 报警: G10 L3数据：刀具组P1输入了两次"},
              Refusal{"G10 L3\nT11\nM30\n", kFanuc, "tool_life_entry_tool_first",
                      "G10 L3 data: a tool T needs its group (P_ L_) in a block before it",
                      "G10 L3数据：刀具T之前须有一段给出其刀具组（P_ L_）"},
@@ -129,10 +129,10 @@ TEST_F(CliRefusalWordsTest, ToolLifeSelectionRefusalsAndTheExpiredNoticeAreSaidI
     for (const Refusal& refusal : {
              Refusal{"G10 L3\nP1 L2\nT11 H11\nG11\nT105 M06\nM30\n", kFanuc, "tool_life_group_missing",
                      "T105: tool life group 5 is not entered (T100+n selects group n; enter groups with G10 L3)",
-                     "p.nc:5:1: alarm: T105：刀具寿命组5未输入（T100+n选择刀具组n；用G10 L3输入刀具组）"},
+                     "p.nc:5:1: 报警: T105：刀具寿命组5未输入（T100+n选择刀具组n；用G10 L3输入刀具组）"},
              Refusal{"G10 L3\nP1 L2\nT11 H11\nG11\nG43 H99 Z0\nM30\n", kFanuc, "tool_life_offset_none",
                      "H99: no tool of a tool life group is in use (select a group with T101.. and change to it first)",
-                     "p.nc:5:5: alarm: H99：没有正在使用的刀具寿命组刀具（请先用T101..选择刀具组并换上该刀具）"},
+                     "p.nc:5:5: 报警: H99：没有正在使用的刀具寿命组刀具（请先用T101..选择刀具组并换上该刀具）"},
          }) {
         expect(refusal);
     }
@@ -182,7 +182,7 @@ TEST_F(CliRefusalWordsTest, G31AndRepeatCountRefusalsAreSaidInChinese) {
                      "G31：没有跳转信号：未设置固定对刀仪的输入（参数575-577）"},
              Refusal{"G90 G81 X0 Y0 Z-5 R2 K1.5 F100\nM30\n", {"--dialect", "fanuc"}, "word_repeat_count",
                      "K1.5: the repeat count of a canned cycle is a whole number 0-9999",
-                     "p.nc:1:22: alarm: K1.5：固定循环的重复次数须为0-9999的整数"},
+                     "p.nc:1:22: 报警: K1.5：固定循环的重复次数须为0-9999的整数"},
          }) {
         expect(refusal);
     }

@@ -14,7 +14,7 @@ TEST_F(CliTest, AMacroAlarmIsSaidInChinese) {
     write("div.nc", "#1=0\n#2=5/#1\nM30\n");
     ProcessResult r = sim({"run", "div.nc", "--lang", "zh_CN"});
     EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
-    EXPECT_NE(r.err.find("div.nc:2:5: alarm: 除数为零"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("div.nc:2:5: 报警: 除数为零"), std::string::npos) << r.err;
     json j = output(r);
     EXPECT_EQ(j["alarm"].value("message", ""), "division by zero"); // the JSON keeps the English
     EXPECT_EQ(j["alarm"].value("message_id", ""), "division_by_zero");
@@ -26,19 +26,19 @@ TEST_F(CliTest, AnInterpreterAlarmIsSaidInChinese) {
     write("hpcc.nc", "G90\nG05.1 Q1\nM30\n");
     ProcessResult r = sim({"run", "hpcc.nc", "--lang", "zh_CN"});
     EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
-    EXPECT_NE(r.err.find("hpcc.nc:2:1: alarm: G5.1：本机床不支持此 G 代码"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("hpcc.nc:2:1: 报警: G5.1：本机床不支持此 G 代码"), std::string::npos) << r.err;
     EXPECT_EQ(output(r)["alarm"].value("message", ""), "G5.1: not a G code this machine knows");
     write("drill.nc", "G90 G81 X0 Y0 Z-5 F100\nM30\n");
     ProcessResult cycle = sim({"run", "drill.nc", "--dialect", "fanuc", "--lang", "zh_CN"});
     EXPECT_EQ(cycle.exitStatus, kExitAlarm) << cycle.err;
-    EXPECT_NE(cycle.err.find("alarm: G81 的第一个程序段需要 R（开始钻孔的R点平面）"), std::string::npos) << cycle.err;
+    EXPECT_NE(cycle.err.find("报警: G81 的第一个程序段需要 R（开始钻孔的R点平面）"), std::string::npos) << cycle.err;
 }
 
 TEST_F(CliTest, AnUndefinedVariableIsSaidInChinese) {
     write("var.nc", "#1=#9876\nM30\n");
     ProcessResult r = sim({"run", "var.nc", "--lang", "zh_CN"});
     EXPECT_EQ(r.exitStatus, kExitAlarm) << r.err;
-    EXPECT_NE(r.err.find("alarm: m350 方言中没有变量 #9876（未定义"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("报警: m350 方言中没有变量 #9876（未定义"), std::string::npos) << r.err;
 }
 
 TEST_F(CliTest, ASyntaxErrorIsSaidInChineseByCheckAndRun) {
