@@ -1,5 +1,7 @@
 #include "ui/session/SessionWorker.h"
 
+#include "ui/session/FrameClock.h"
+
 #include "ui/i18n/AlarmText.h"
 #include "ui/i18n/DiagnosticText.h"
 #include "ui/i18n/Language.h"
@@ -24,8 +26,6 @@ namespace m350::ui {
 using controller::Controller;
 
 namespace {
-
-constexpr qint64 kFrameNs = 1'000'000'000 / 60; // the display's 60 Hz
 
 controller::RunSettings settingsFor(const MachineSession::Options& options) {
     controller::RunSettings settings;
@@ -85,39 +85,20 @@ SessionWorker::~SessionWorker() = default;
 
 void SessionWorker::begin() {
     if (options_.clock == MachineSession::Clock::RealTime) {
-        timer_ = new QTimer(this);
-        timer_->setTimerType(Qt::PreciseTimer);
-        timer_->setSingleShot(true);
-        connect(timer_, &QTimer::timeout, this, &SessionWorker::tick);
-        wall_.start();
-        lastTickNs_ = 0;
-        scheduleTick();
+        frames_ = new FrameClock(this);
+        frames_->start(options_.rate, [this](double seconds) {
+            advance(seconds);
+            publish();
+        });
     }
     powerOn();
 }
 
 void SessionWorker::finish() {
     beside_.finish();
-    delete timer_;
-    timer_ = nullptr;
+    delete frames_;
+    frames_ = nullptr;
     keepExternalOutput(false); // what came within the last second of a run still going
-}
-
-void SessionWorker::tick() {
-    qint64 now = wall_.nsecsElapsed();
-    double seconds = static_cast<double>(now - lastTickNs_) * 1e-9 * options_.rate;
-    lastTickNs_ = now;
-    advance(seconds);
-    publish();
-    scheduleTick();
-}
-
-// The next tick falls on the next 1/60 s boundary since the clock started: 60 frames a second
-// on average, not a 16 ms timer's 62.5.
-void SessionWorker::scheduleTick() {
-    qint64 now = wall_.nsecsElapsed();
-    qint64 next = (now / kFrameNs + 1) * kFrameNs;
-    timer_->start(static_cast<int>((next - now + 999'999) / 1'000'000));
 }
 
 void SessionWorker::advanceManual(double seconds) {
@@ -149,7 +130,7 @@ void SessionWorker::advance(double seconds) {
     beside_.advance(seconds);
     const bool wasRunning = busy();
     Controller::RunState state = controller_->advance(seconds);
-    noteAlarm();
+    events_.noteAlarm(*controller_, *log_);
     if (wasRunning && !busy()) {
         keepParametersTheRunChanged();
     }
@@ -166,20 +147,6 @@ void SessionWorker::advance(double seconds) {
     operatorKeys();
 }
 
-// An alarm enters the system log once, when the run falls into it.
-void SessionWorker::noteAlarm() {
-    Controller::RunState run = controller_->runState();
-    bool alarmed = run == Controller::RunState::Alarm || run == Controller::RunState::EStop;
-    if (alarmed && !alarmLogged_) {
-        if (auto alarm = controller_->panelStatus().alarm) {
-            QString where = alarm->file.empty() ? QString()
-                                                : QStringLiteral("%1:%2: ").arg(QString::fromStdString(alarm->file)).arg(alarm->line);
-            log_->record("alarm", where + AlarmText::message(*alarm));
-        }
-    }
-    alarmLogged_ = alarmed;
-}
-
 bool SessionWorker::busy() const {
     auto state = controller_->runState();
     return state == Controller::RunState::Running || state == Controller::RunState::Hold;
@@ -192,23 +159,8 @@ void SessionWorker::refuse(const QString& why) {
     publish();
 }
 
-// Every parameter change since the last frame, whoever made it, with the level at the panel: the
-// event names the level, the detail the number, the values and the program line that wrote it.
-void SessionWorker::logParameterChanges() {
-    static constexpr std::array<const char*, 4> kEvents{"param_guest", "param_operator", "param_admin", "param_super"};
-    for (const controller::ParameterWrites::Change& change : controller_->takeParameterChanges()) {
-        QString detail = QStringLiteral("[%1] %2 -> %3")
-                             .arg(change.number)
-                             .arg(QString::number(change.before, 'g', 10), QString::number(change.after, 'g', 10));
-        if (!change.place.empty()) {
-            detail += QStringLiteral(" (%1)").arg(QString::fromStdString(change.place));
-        }
-        log_->record(kEvents[static_cast<std::size_t>(change.level)], detail);
-    }
-}
-
 void SessionWorker::publish() {
-    logParameterChanges();
+    events_.noteParameterChanges(*controller_, *log_);
     toolData_.keep(*controller_, folder_);
     keepExternalOutput(busy());
     auto snapshot = std::make_shared<PanelSnapshot>();
@@ -309,7 +261,7 @@ void SessionWorker::emergencyStop() {
     lastError_.clear();
     controller_->emergencyStop();
     log_->record("estop");
-    noteAlarm();
+    events_.noteAlarm(*controller_, *log_);
     activity_ = Activity::None;
     publish();
 }
@@ -463,7 +415,7 @@ void SessionWorker::setParameter(int number, double value) {
     if (!saveParameters({{number, value}})) {
         return;
     }
-    publish(); // which logs the change (logParameterChanges)
+    publish(); // which logs the change (MachineEventLog)
 }
 
 void SessionWorker::startSimulation(const QString& path, double speed) {

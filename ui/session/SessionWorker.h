@@ -3,6 +3,7 @@
 #include "ui/session/MachineSession.h"
 #include "ui/session/BreakPointFile.h"
 #include "ui/session/ExternalOutputFile.h"
+#include "ui/session/MachineEventLog.h"
 #include "ui/session/SessionLog.h"
 #include "ui/session/SimulationSide.h"
 #include "ui/session/ToolDataFiles.h"
@@ -13,9 +14,7 @@
 #include "core/preview/MachineScene.h"
 #include "core/tools/ToolData.h"
 
-#include <QElapsedTimer>
 #include <QObject>
-#include <QTimer>
 
 #include <memory>
 #include <optional>
@@ -26,6 +25,8 @@ class Controller;
 }
 
 namespace m350::ui {
+
+class FrameClock;
 
 // Lives in the session's worker thread and is, with the SimulationRun its SimulationSide owns,
 // the only code of the panel that touches the Controller. Each method runs one operator command,
@@ -63,7 +64,6 @@ public:
     double advanceWhileQuiet(double seconds, bool publishAtEnd);
     void publish();
     controller::Controller& controller() { return *controller_; }
-    void logParameterChanges();
     // 仿真 (a SimulationRun beside the machine): speed 0 = as fast as the core goes.
     void startSimulation(const QString& path, double speed);
     void setSimulationSpeed(double speed);
@@ -110,14 +110,11 @@ signals:
     void published(const m350::ui::SnapshotPtr& snapshot);
 
 private:
-    void tick();
     // Nothing runs, holds, jogs, simulates or waits to start: a frame changes nothing the panel
     // needs to see at once (devices the IO page switched still move: they show at the next publish).
     bool quiet() const;
-    void scheduleTick();
     void advance(double seconds);
     bool busy() const;
-    void noteAlarm();
     void refuse(const QString& why);
     QString loadErrors() const; // why the controller's last load failed
     bool loadCurrentFile();
@@ -148,15 +145,13 @@ private:
     MachineSession::Options options_;
     QString machineName_;
     QString machineNameZh_;
-    QTimer* timer_ = nullptr;
-    QElapsedTimer wall_;
-    qint64 lastTickNs_ = 0;
+    FrameClock* frames_ = nullptr; // a real-time clock's frames; a manual clock has none
     Activity activity_ = Activity::None;
     QString programFile_;
     bool fileLoaded_ = false; // the controller holds programFile_ (not MDI lines)
     std::unique_ptr<SessionLog> log_;
     WorkRecord workRecord_;
-    bool alarmLogged_ = false; // the alarm in force is in the system log
+    MachineEventLog events_; // alarms and parameter changes into the log
     QString lastError_; // why the last command was refused; every command clears it first
     double sessionTime_ = 0.0; // virtual seconds the session has run: only ever grows
     double feedOverride_ = 100.0;
