@@ -24,7 +24,7 @@ bool Controller::setSpindleToolNumber(int tool) {
         fanucSpindleTool_ = tool;
     }
     syncToolLength();
-    toolDoubt_.confirmed();
+    toolGuard_.confirmed();
     return true;
 }
 

@@ -18,7 +18,7 @@ bool Controller::setParameter(int n, double value) {
     config_.parameters.set(n, value);
     if (n == param::kCurrentTool && config_.dialect->id == gcode::DialectId::M350 && state_ != RunState::Running &&
         state_ != RunState::Hold) {
-        toolDoubt_.confirmed(); // the Param page's 当前刀具号 entry: the operator says which tool it is
+        toolGuard_.confirmed(); // the Param page's 当前刀具号 entry: the operator says which tool it is
     }
     configureMachine(); // the setters, the spindle sensor and the speeds follow at once
     return true;

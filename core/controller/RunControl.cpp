@@ -156,7 +156,6 @@ void Controller::stopAfterStep(std::uint64_t machineBlocksBefore) {
         return;
     }
     const TraceSource where = status_.source();
-    const std::string place = where.file + ":" + std::to_string(where.line);
     if (holdPending_ && !operation_.feedHoldSuppressed()) {
         holdPending_ = false;
         status_.postMessage(message("notice_pause_takes_effect", {where.file, std::to_string(where.line)}));
@@ -165,8 +164,7 @@ void Controller::stopAfterStep(std::uint64_t machineBlocksBefore) {
     }
     if (singleBlock_ && executor_->machineBlocksExecuted() != machineBlocksBefore &&
         !operation_.singleBlockSuppressed()) {
-        programStop_ = "single block stop (" + place + ")";
-        programStopWords_ = message("notice_start_after_stop", {bilingual(programStop_, "单段停止 (" + place + ")")});
+        programStop_.singleBlock(where);
         setState(RunState::Hold);
         if (status_.trace()) {
             status_.trace()->programStop(machine_.time(), "single block stop", where);
