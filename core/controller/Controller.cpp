@@ -1,4 +1,5 @@
 #include "core/controller/Controller.h"
+#include "core/controller/MachineSetup.h"
 #include "core/controller/UnattendedOperator.h"
 #include "core/config/CallCodeParameters.h"
 #include "core/params/FanucParameters.h"

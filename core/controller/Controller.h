@@ -5,6 +5,7 @@
 #include "core/config/MachineConfig.h"
 #include "core/controller/BreakRun.h"
 #include "core/controller/ExternalDevices.h"
+#include "core/controller/HoldMotion.h"
 #include "core/controller/Homing.h"
 #include "core/controller/InterfaceSignalsPmc.h"
 #include "core/controller/ManualControl.h"
@@ -21,7 +22,6 @@
 #include "core/controller/RunView.h"
 #include "core/controller/StatusBoard.h"
 #include "core/controller/MachineEventRouter.h"
-#include "core/controller/MachineSetup.h"
 #include "core/controller/MagazineDriver.h"
 #include "core/controller/ToolBreakage.h"
 #include "core/controller/SpindleToolGuard.h"
@@ -59,7 +59,9 @@ namespace m350::controller {
 // parts, each a class with its own state: manual() (jog, handwheel, 试切 guide, overrides),
 // homing() (回零), breakRun() (断点加工), operatorPanel() (dialogs, keys, watched inputs),
 // toolTableEdits(), toolLife(), toolBreakage(), externalDevices() and status() (messages, trace,
-// the run report).
+// the run report); without an accessor: the machine's observer (MachineEventRouter), the checks
+// of tool words and the spindle's tool (SpindleToolGuard), what a hold did to the machine
+// (HoldMotion) and why the program holds the run (ProgramStop).
 class Controller : public macro::MachineAccess,
                    private RunView,
                    private BreakRun::Starter {
@@ -262,7 +264,6 @@ private:
     std::optional<Alarm> runEventHook(config::Hook hook);
     std::optional<Alarm> runHookProgramToEnd(const std::string& name);
     void runPauseHook();
-    void returnAfterPauseHook();
     int spindleTool() const { return magazine_.spindleTool(); }
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
     // After a step: the single block stop, and the PAUSE #3004 held back (RunControl.cpp).
@@ -292,15 +293,13 @@ private:
     bool mdi_ = false;
     std::optional<config::Hook> hook_;  // the loaded program is this hook file
     bool inEventHook_ = false;          // pause.nc or error.nc runs: no hook starts inside it
-    std::optional<machine::Axes> beforePauseHook_; // where the hold stopped the axes, if pause.nc moved them
     // The run state changes only through setState(); the parts read it by const reference.
     RunState state_ = RunState::Idle;
     void setState(RunState next);
     RunEvents events_;
     std::optional<Alarm> alarm_;
     double displayTime_ = 0.0;
-    machine::SimulatedMachine::Remainder remainder_; // what a hold cut short
-    double liftedBy_ = 0.0;                          // Z lift of the hold (param 91, 70)
+    HoldMotion holdMotion_{machine_, config_.parameters}; // what a hold cut short, lifted, stopped
     ProgramStop programStop_;                        // see programStop()
     MachineEventRouter machineEvents_; // the machine's observer; before magazine_, which writes its input sources
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
@@ -315,9 +314,8 @@ private:
     OperationControl operation_;       // #3003, #3004
     bool singleBlock_ = false;
     bool holdPending_ = false;         // PAUSE came while #3004 kept feed hold off
-    std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 
-    // BreakRun::Starter (RunStart.cpp)
+    // BreakRun::Starter (RunControl.cpp)
     macro::Executor* programExecutor() final { return executor_ && !mdi_ ? executor_.get() : nullptr; }
     void clearForStart() final;
     bool dialogPending() const final { return panel_.dialogPending(); }
