@@ -1,21 +1,14 @@
 #include "core/controller/Controller.h"
+#include "core/config/CallCodeParameters.h"
 #include "core/controller/MachineSetup.h"
 #include "core/controller/UnattendedOperator.h"
-#include "core/config/CallCodeParameters.h"
 #include "core/params/FanucParameters.h"
-
 #include "core/params/IoPorts.h"
-#include "core/common/Numeric.h"
-
-#include "core/params/ParameterLimits.h"
 #include "core/params/ParameterNumbers.h"
-#include "core/devices/Magazine.h"
-#include "core/macro/MacroError.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <utility>
 
 namespace m350::controller {
