@@ -45,6 +45,10 @@ Message warningAt(const fs::path& file, const toml::source_region& where, const 
     return message("config_warning_at", {file.string() + ":" + placed(where), bilingual(words)});
 }
 
+std::string settingPlace(const fs::path& file, const toml::source_region& where) {
+    return file.string() + ":" + std::to_string(where.begin.line) + ":" + std::to_string(where.begin.column);
+}
+
 Message warningIn(const fs::path& file, const Message& words) {
     return message("config_warning_at", {file.string(), bilingual(words)});
 }

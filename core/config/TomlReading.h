@@ -26,6 +26,8 @@ toml::table parseToml(const std::filesystem::path& file);
 
 // "file:line:col: warning: message", as the loaders list what they kept but doubt.
 Message warningAt(const std::filesystem::path& file, const toml::source_region& where, const Message& words);
+// "file:line:col", where a setting stands, for messages that name it.
+std::string settingPlace(const std::filesystem::path& file, const toml::source_region& where);
 // "file: warning: message": a doubt about the whole file.
 Message warningIn(const std::filesystem::path& file, const Message& words);
 

@@ -1,49 +1,28 @@
 #include "core/controller/Controller.h"
 #include "core/config/CallCodeParameters.h"
+#include "core/controller/MachineSetup.h"
+#include "core/controller/UnattendedOperator.h"
 #include "core/params/FanucParameters.h"
-
 #include "core/params/IoPorts.h"
-#include "core/common/Numeric.h"
-
-#include "core/params/ParameterLimits.h"
 #include "core/params/ParameterNumbers.h"
-#include "core/devices/Magazine.h"
-#include "core/macro/MacroError.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <utility>
 
 namespace m350::controller {
 
-namespace {
-
-std::string shortSeconds(double seconds) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", seconds);
-    return text;
-}
-
-// What stopped the program (ModalInterpreter::stopForOperator), in both languages.
-std::string stopWords(const std::string& what) {
-    if (what == "M00 program stop") return bilingual(what, "M00 程序停止");
-    if (what == "M01 optional stop") return bilingual(what, "M01 选择停止");
-    if (what == "G04 P-1 waits for START") return bilingual(what, "G04 P-1 等待循环启动");
-    return what;
-}
-
-} // namespace
-
 Controller::Controller(config::MachineConfig config, RunSettings settings)
     : config_(std::move(config)), settings_(std::move(settings)),
-      tools_(*config_.dialect, config_.parameters, std::exchange(config_.toolTable, std::nullopt)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? this : nullptr),
+      tools_(*config_.dialect, config_.parameters, std::exchange(config_.toolTable, std::nullopt)), machine_(settings_.trace || settings_.observer || config_.magazine.present() ? &machineEvents_ : nullptr),
       interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters, config_.variableLayout),
-      magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, linkedInputSource_,
+      machineEvents_({config_, settings_, machine_, magazine_, status_, toolLife_, breakage_, state_, executor_,
+                      [this](double t) { interruptMotion(t, false); }}),
+      magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, machineEvents_.inputSources(),
                  [this] { return status_.source(); }}),
-      status_({config_, machine_, interp_, magazine_, executor_, program_, diagnostics_, state_, alarm_, toolDoubt_}, settings_),
+      toolGuard_({*config_.dialect, config_.parameters, magazine_, executor_, [this](int number) { return variable(number); }}),
+      status_({config_, machine_, interp_, magazine_, executor_, program_, diagnostics_, state_, alarm_, toolGuard_.doubt()}, settings_),
       devices_({config_.parameters, scan_, status_.traceWriter(), [this] { return machine_.time(); },
                 [this] { return status_.source(); }, [this](double seconds) { machine_.dwell(seconds); }},
                config_.modbus, settings_.externalOutputLimit),
@@ -81,7 +60,7 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
         interp_.setReferencePoint(number, Eigen::Map<const machine::Axes>(position.data()));
     }
     if (toolLife_.manager().enabled()) {
-        machine_.setObserver(this); // cutting time counts from the machine's feed events
+        machine_.setObserver(&machineEvents_); // cutting time counts from the machine's feed events
     }
     applyParameterOverrides();
     if (toolLife_.manager().data().fromParameters) {
@@ -144,48 +123,10 @@ config::MachineConfig Controller::config() const {
     return out;
 }
 
-// The machine's speeds, delays and spindle sensor, from the parameters as they stand.
+// The machine's speeds, delays, switches and setters follow the parameters as they stand.
 void Controller::configureMachine() {
-    const params::ParameterTable& p = config_.parameters;
-    machine::MotionLimits limits;
-    auto positive = [](double v, double fallback) { return v > 0.0 ? v : fallback; };
-    limits.rapidSpeed = positive(p.get(param::kRapidSpeed), 10000.0) / 60.0;
-    limits.maxSpeed = positive(p.get(param::kMaxSpeed), 12000.0) / 60.0;
-    limits.feedAcceleration = positive(p.get(param::kFeedAcceleration), 500.0);
-    limits.rapidAcceleration = positive(p.get(param::kRapidAcceleration), limits.feedAcceleration);
-    limits.spindleStartDelay = std::max(0.0, p.get(param::kSpindleStartDelay));
-    limits.spindleStopDelay = std::max(0.0, p.get(param::kSpindleStopDelay));
-    limits.maxSpindleRpm = positive(p.get(param::kMaxSpindleRpm), 24000.0);
-    machine_.setLimits(limits);
-    for (int axis = 0; axis < machine::kAxisCount; ++axis) {
-        machine::HomeSwitch homeSwitch = machine_.homeSwitch(axis); // it stays where it is
-        auto home = params::wiredInput(p, param::kHomeSwitchX + 3 * axis);
-        homeSwitch.port = home ? home->pin : 0;
-        homeSwitch.activeLevel = home ? home->activeLevel : 0;
-        machine_.setHomeSwitch(axis, homeSwitch);
-    }
-    machine::ToolSetter setter;
-    if (auto input = params::wiredInput(p, param::kFixedSetterInput)) {
-        setter.port = input->pin;
-        setter.activeLevel = input->activeLevel;
-    }
-    setter.x = p.get(param::kFixedSetterX);
-    setter.y = p.get(param::kFixedSetterX + 1);
-    setter.top = config_.setterTop;
-    setter.radius = config_.setterRadius;
-    machine_.setToolSetter(setter);
-    if (setter.port != 0) {
-        machine_.setObserver(this); // a rapid into the setter is a crash (checkSetterRapid)
-    }
-    machine::ToolSetter block; // the floating setter, where the machine folder puts one on the work
-    if (auto input = params::wiredInput(p, param::kFloatingSetterInput); input && config_.floatingSetterTop) {
-        block.port = input->pin;
-        block.activeLevel = input->activeLevel;
-        block.top = *config_.floatingSetterTop;
-    }
-    machine_.setFloatingSetter(block);
-    if (auto stopped = params::wiredInput(p, param::kSpindleStoppedInput)) {
-        machine_.setSpindleStoppedSensor({stopped->pin, stopped->activeLevel});
+    if (setUpMachine(machine_, config_)) {
+        machine_.setObserver(&machineEvents_); // a rapid into the setter is a crash
     }
 }
 
@@ -243,126 +184,19 @@ void Controller::applySettings() {
     }
 }
 
-void Controller::onMachineEvent(const machine::MachineEvent& event) {
-    if (status_.trace()) {
-        // an input an IoLink drives changes because of the output switch that came before it
-        TraceSource where = status_.source();
-        if (event.type == machine::MachineEvent::Type::Io && event.port < 0) {
-            if (auto it = linkedInputSource_.find(-event.port); it != linkedInputSource_.end()) {
-                where = it->second;
-            }
-        } else if (event.type == machine::MachineEvent::Type::Io) {
-            for (const machine::IoLink& link : config_.ioLinks) {
-                if (link.output == event.port) {
-                    linkedInputSource_[link.input] = where;
-                }
-            }
-        }
-        status_.trace()->machineEvent(event, where);
-    }
-    if (settings_.observer) {
-        settings_.observer->onMachineEvent(event);
-    }
-    try {
-        if (event.type == machine::MachineEvent::Type::Rapid) {
-            checkSetterRapid(event);
-        }
-        if (magazine_.device()) {
-            feedMagazine(event);
-        }
-    } catch (const macro::MacroError& error) {
-        // a move that runs into the hardware: where it was going is where it hits (the machine view
-        // marks it there; the axes stop where they are when the alarm comes)
-        const bool move = event.type == machine::MachineEvent::Type::Rapid ||
-                          event.type == machine::MachineEvent::Type::Feed || event.type == machine::MachineEvent::Type::Arc;
-        crashPlace_ = error.code == AlarmCode::Crash && move ? std::optional<machine::Axes>(event.to) : std::nullopt;
-        throw;
-    }
-    toolLife_.countCuttingTime(event);
-    // nothing to sample, nothing that breaks: the common case, every move of a program
-    if (breakage_.active()) {
-        watchSpindleLoad(event);
-    }
-}
-
-// Nothing listens to a straight move but a linear rack, which it passes wide of: no trace, no
-// observer, no cutting time counted, no spindle load or breakage to follow. Most moves of a program.
-bool Controller::ignoresMove(const machine::Axes& from, const machine::Axes& to) const {
-    return !status_.trace() && !settings_.observer && !toolLife_.manager().inUse() && !breakage_.active() &&
-           (!magazine_.device() || magazine_.ignores(from, to)) &&
-           machine_.setterPenetration(from, to) <= kSetterContact;
-}
-
-// The fixed setter is solid (the M350's 对刀仪, a FANUC's TS27R stylus): a rapid that drives the
-// tool below its trip point hits it, as a move into a rack pocket does. Only G31 may meet it.
-void Controller::checkSetterRapid(const machine::MachineEvent& event) {
-    const double depth = machine_.setterPenetration(event.from, event.to);
-    if (depth <= kSetterContact) {
-        return;
-    }
-    char mm[32];
-    std::snprintf(mm, sizeof mm, "%.3f", depth);
-    const std::string tool = std::to_string(spindleTool());
-    macro::MacroError crash = macro::MacroError::of(AlarmCode::Crash, message("setter_crash", {tool, mm}));
-    if (state_ == RunState::Alarm || state_ == RunState::EStop) {
-        status_.postMessage(Message{crash.messageId, crash.messageArguments}); // the first alarm stays the one shown
-        return;
-    }
-    throw crash;
-}
-
 bool Controller::manageTools(macro::EvaluatedBlock& block) {
-    if (block.has('T')) [[unlikely]] {
-        lastToolWord_ = roundToInt(block.words[block.firstOf['T' - 'A']].value);
-    }
-    if (toolDoubt_.doubt()) [[unlikely]] {
-        refuseChangeInDoubt(block);
-    }
+    toolGuard_.checkBlock(block);
     const bool took = toolLife_.applyBlock(block);
     if (toolLife_.manager().enabled()) {
-        machine_.setObserver(this); // groups entered by G10 L3: cutting time counts from now on
+        machine_.setObserver(&machineEvents_); // groups entered by G10 L3: cutting time counts from now on
         if (auto notice = toolLife_.manager().takeNotice()) {
             status_.postMessage(std::move(*notice));
         }
     }
-    if (!took && magazine_.device() && (block.has('T') || block.mCodes.has(61))) [[unlikely]] {
-        checkToolWord(block);
+    if (!took) {
+        toolGuard_.checkToolWord(block);
     }
     return took;
-}
-
-// The T code goes to the PMC as the block starts (FANUC's T strobe), before its motion and before
-// M06 calls the change program: a T the magazine cannot serve is refused there, at the T word. A T
-// that is a macro's argument (G65/G66 P.. T..) selects nothing.
-void Controller::checkToolWord(const macro::EvaluatedBlock& block) const {
-    if (block.mCodes.has(61)) {
-        const auto m61 = std::find_if(block.words.begin(), block.words.end(),
-                                      [](const macro::WordValue& w) { return w.letter == 'M' && w.value == 61.0; });
-        throw macro::MacroError::of(AlarmCode::InvalidWord, message("m61_with_magazine"), m61->column);
-    }
-    if (block.gCodes.has(65) || block.gCodes.has(66) || block.otherCodes) {
-        return;
-    }
-    const macro::WordValue& t = block.words[block.firstOf['T' - 'A']];
-    if (auto why = magazine_.refusedTool(roundToInt(t.value))) {
-        throw macro::MacroError::of(AlarmCode::InvalidArgument, *why, t.column);
-    }
-}
-
-// After a stop in a change, the next change (an M350's T, a FANUC's M06) would start from a tool
-// the controller only believes is in the spindle: refused at its word until the operator says.
-void Controller::refuseChangeInDoubt(const macro::EvaluatedBlock& block) const {
-    if (!magazine_.device() || (executor_ && executor_->changingTool()) || block.gCodes.has(65) ||
-        block.gCodes.has(66)) {
-        return;
-    }
-    const bool m350 = config_.dialect->id == gcode::DialectId::M350;
-    const auto word = std::find_if(block.words.begin(), block.words.end(), [m350](const macro::WordValue& w) {
-        return m350 ? w.letter == 'T' : w.letter == 'M' && w.value == 6.0;
-    });
-    if (word != block.words.end()) {
-        throw macro::MacroError::of(AlarmCode::InvalidArgument, toolDoubt_.refusal(), word->column);
-    }
 }
 
 void Controller::noteStopInChange() {
@@ -370,11 +204,8 @@ void Controller::noteStopInChange() {
         (state_ != RunState::Running && state_ != RunState::Hold && state_ != RunState::Alarm)) {
         return;
     }
-    const bool m350 = config_.dialect->id == gcode::DialectId::M350;
-    const macro::Value target = m350 ? variable(1504) : macro::Value::of(lastToolWord_);
-    const int recorded = m350 ? saturatingInt(config_.parameters.get(param::kCurrentTool)) : fanucSpindleTool_;
-    if (toolDoubt_.stoppedInChange(target.vacant ? 0 : roundToInt(target.number), recorded)) {
-        status_.postMessage(toolDoubt_.notice());
+    if (auto notice = toolGuard_.stoppedInChange(fanucSpindleTool_)) {
+        status_.postMessage(*notice);
     }
 }
 
@@ -387,34 +218,7 @@ void Controller::setUpBreakageWatch() {
     }
     breakage_.setUp(config_, settings_);
     if (breakage_.active()) {
-        machine_.setObserver(this); // the load follows every move; a break changes the tool's length
-    }
-}
-
-void Controller::watchSpindleLoad(const machine::MachineEvent& event) {
-    auto anomaly = breakage_.sample(event);
-    if (anomaly && state_ == RunState::Running && executor_) {
-        interruptMotion(anomaly->time, false); // the axes brake from where they were then
-        throw macro::MacroError::of(AlarmCode::SpindleLoad, anomaly->message);
-    }
-}
-
-// The magazine sees every event, also the safe state an alarm drives the outputs to (the drawbar
-// clamps, the heads go up): what it holds must follow. Once an alarm stands, what the hardware
-// suffers besides is a message, the first alarm stays the one shown.
-void Controller::feedMagazine(const machine::MachineEvent& event) {
-    if (state_ != RunState::Alarm && state_ != RunState::EStop) {
-        magazine_.onMachineEvent(event);
-        return;
-    }
-    try {
-        magazine_.onMachineEvent(event);
-    } catch (const macro::MacroError& error) {
-        if (error.messageId.empty()) {
-            status_.postMessage(error.message);
-        } else {
-            status_.postMessage(Message{error.messageId, error.messageArguments});
-        }
+        machine_.setObserver(&machineEvents_); // the load follows every move; a break changes the tool's length
     }
 }
 
@@ -430,63 +234,31 @@ void Controller::enterSafeState() {
     }
 }
 
-namespace {
-
-// Holds in a row, with the machine standing still between them, that an unattended run answers
-// with START before it takes them for a loop only an operator can end (`N1 M00` / `GOTO1`). Far
-// above any program's inspection stops in a loop, and reached in about a second (4 s of virtual time).
-constexpr int kMostIdleHolds = 20000;
-
-} // namespace
-
 RunReport Controller::run() {
     panel_.setUnattended(true);
     start();
-    constexpr double kNever = std::numeric_limits<double>::infinity();
-    const bool running = state_ == RunState::Running;
-    double pauseAt = settings_.pauseAt && running ? runStartedAt_ + *settings_.pauseAt : kNever;
-    double estopAt = settings_.estopAt && running ? runStartedAt_ + *settings_.estopAt : kNever;
-    std::optional<machine::Axes> heldAt; // where the machine stood at the last hold
-    int idleHolds = 0;                   // holds in a row with no move between them
+    UnattendedOperator unattended(settings_, runStartedAt_, state_ == RunState::Running);
     while (state_ == RunState::Running) {
-        if (estopAt != kNever && estopAt < pauseAt) {
-            advance(std::max(0.0, estopAt - displayTime_));
-            if (state_ == RunState::Running || state_ == RunState::Hold) {
-                status_.postMessage(message("notice_estop_pressed", {shortSeconds(estopAt - runStartedAt_),
-                                                                      status_.source().file,
-                                                                      std::to_string(status_.source().line)}));
-                emergencyStop();
-            }
-            estopAt = kNever;
-        } else if (pauseAt != kNever) {
-            advance(std::max(0.0, pauseAt - displayTime_));
-            if (state_ == RunState::Running) {
-                status_.postMessage(message("notice_pause_pressed", {shortSeconds(pauseAt - runStartedAt_),
-                                                                      status_.source().file,
-                                                                      std::to_string(status_.source().line)}));
-                hold();
-            }
-            pauseAt = kNever;
-        } else {
+        const UnattendedOperator::Press press = unattended.next();
+        if (press.key == UnattendedOperator::Key::None) {
             advance(std::numeric_limits<double>::infinity());
+        } else {
+            advance(std::max(0.0, press.at - displayTime_));
+            const bool eStop = press.key == UnattendedOperator::Key::EStop;
+            if (state_ == RunState::Running || (eStop && state_ == RunState::Hold)) {
+                status_.postMessage(unattended.pressed(press, status_.source()));
+                eStop ? emergencyStop() : hold();
+            }
         }
         if (state_ == RunState::Hold) {
-            // `N1 M00` / `GOTO1` holds forever and costs no virtual time: holds over and over with
-            // the machine standing still wait on an operator this run has not got
-            const machine::Axes at = machine_.position();
-            idleHolds = heldAt && (*heldAt - at).cwiseAbs().maxCoeff() == 0.0 ? idleHolds + 1 : 1;
-            heldAt = at;
-            if (idleHolds > kMostIdleHolds) {
+            if (!unattended.startAfterHold(machine_.position())) {
                 const TraceSource source = status_.source();
-                raiseAlarm(Alarm::of(AlarmCode::SimulatedTimeLimit,
-                                     message("operator_loop", {source.file, std::to_string(source.line),
-                                                               std::to_string(kMostIdleHolds)}),
-                                     source.file, source.line, 1));
+                raiseAlarm(Alarm::of(AlarmCode::SimulatedTimeLimit, unattended.loopWords(source), source.file,
+                                     source.line, 1));
                 break;
             }
-            status_.postMessage(programStop_.empty()
-                                    ? message("notice_start_after_pause")
-                                    : programStopWords_);
+            status_.postMessage(programStop_.text().empty() ? message("notice_start_after_pause")
+                                                            : programStop_.startWords());
             displayTime_ = machine_.time(); // START comes the moment the machine stands still
             resume();
         }
@@ -524,7 +296,7 @@ bool Controller::start() {
     displayTime_ = machine_.time();
     runStartedAt_ = displayTime_;
     runMovesFrom_ = machine_.movesMade();
-    crashPlace_.reset();
+    machineEvents_.forgetCrash();
     timeLimitFrom_ = runStartedAt_;
     breakRun_.runStartsFrom(machine_.position());
     if (!unit || !executor_->start(*unit)) {
@@ -589,7 +361,7 @@ int Controller::stepOnce(int toolBefore) {
     }
     if (auto stop = interp_.takeStop()) {
         if (inEventHook_) {
-            status_.postMessage(message("notice_start_in_hook", {stopWords(stop->what)}));
+            status_.postMessage(message("notice_start_in_hook", {ProgramStop::bilingualWhat(stop->what)}));
         } else {
             stopForOperator(*stop);
         }
@@ -605,8 +377,10 @@ int Controller::stepOnce(int toolBefore) {
         }
     }
     const int toolAfter = spindleTool();
-    if (toolAfter != lengthCheckedTool_ && machine_.spindleTurning()) [[unlikely]] {
-        checkToolLength(toolAfter);
+    if (!toolGuard_.lengthLookedAt(toolAfter) && machine_.spindleTurning()) [[unlikely]] {
+        if (auto warning = toolGuard_.toolTurns(toolAfter, status_.source())) {
+            status_.warn(*warning);
+        }
     }
     if (toolAfter != toolBefore) {
         syncToolLength();
@@ -630,42 +404,12 @@ void Controller::takeToolChange(const interp::ModalInterpreter::ToolChange& chan
     fanucSpindleTool_ = change.tool;
 }
 
-// On the M350 with its fixed setter on (param 130) every tool is set (对刀) before it cuts: its Z
-// offset (params 930-945, a virtual tool's 973-992) is where it trips the setter, and one never set
-// leaves work Z wrong by the whole tool length. The spindle turning with such a tool warns once per
-// tool. Without the fixed setter an offset of 0 is how the manual's single-tool 清零 works.
-void Controller::checkToolLength(int tool) {
-    lengthCheckedTool_ = tool;
-    if (config_.dialect->id != gcode::DialectId::M350 || tool == 0 ||
-        config_.parameters.get(param::kFixedSetterValid) == 0.0 || !lengthWarned_.insert(tool).second) {
-        return;
-    }
-    const std::optional<int> parameter = tools::m350ZParameter(tool, config_.parameters);
-    if (!parameter || config_.parameters.get(*parameter) != 0.0) {
-        return;
-    }
-    const std::string t = std::to_string(tool);
-    const std::string p = std::to_string(*parameter);
-    const TraceSource where = status_.source();
-    Alarm warning;
-    warning.code = AlarmCode::InvalidArgument;
-    warning.message = "T" + t + " turns with no Z offset (param " + p + " = 0): set the tool before it cuts";
-    warning.file = where.file;
-    warning.line = where.line;
-    warning.messageId = "tool_length_unset";
-    warning.messageArguments = {t, p};
-    status_.warn(warning);
-}
-
 void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& stop) {
     if (stop.kind == interp::ModalInterpreter::OperatorStop::Kind::Optional && !optionalStopOn()) {
         return;
     }
     TraceSource where{program_.fileName(stop.location), stop.location.line};
-    programStop_ = stop.what + " (" + where.file + ":" + std::to_string(where.line) + ")";
-    const std::string place = " (" + where.file + ":" + std::to_string(where.line) + ")";
-    programStopWords_ = message("notice_start_after_stop",
-                                {bilingual(programStop_, argumentIn(stopWords(stop.what), MessageLanguage::Chinese) + place)});
+    programStop_.stoppedBy(stop.what, where);
     setState(RunState::Hold);
     if (status_.trace()) {
         status_.trace()->programStop(machine_.time(), stop.what, where);

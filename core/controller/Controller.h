@@ -5,6 +5,7 @@
 #include "core/config/MachineConfig.h"
 #include "core/controller/BreakRun.h"
 #include "core/controller/ExternalDevices.h"
+#include "core/controller/HoldMotion.h"
 #include "core/controller/Homing.h"
 #include "core/controller/InterfaceSignalsPmc.h"
 #include "core/controller/ManualControl.h"
@@ -13,15 +14,17 @@
 #include "core/controller/OperatorPanel.h"
 #include "core/controller/ParameterWrites.h"
 #include "core/controller/PanelStatus.h"
+#include "core/controller/ProgramStop.h"
 #include "core/controller/RunEvents.h"
 #include "core/controller/RunReport.h"
 #include "core/controller/RunSettings.h"
 #include "core/controller/RunState.h"
 #include "core/controller/RunView.h"
 #include "core/controller/StatusBoard.h"
+#include "core/controller/MachineEventRouter.h"
 #include "core/controller/MagazineDriver.h"
 #include "core/controller/ToolBreakage.h"
-#include "core/controller/ToolDoubt.h"
+#include "core/controller/SpindleToolGuard.h"
 #include "core/controller/ToolLifeCounter.h"
 #include "core/controller/ToolTableEdits.h"
 #include "core/controller/TraceWriter.h"
@@ -39,7 +42,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -56,9 +58,10 @@ namespace m350::controller {
 // parts, each a class with its own state: manual() (jog, handwheel, 试切 guide, overrides),
 // homing() (回零), breakRun() (断点加工), operatorPanel() (dialogs, keys, watched inputs),
 // toolTableEdits(), toolLife(), toolBreakage(), externalDevices() and status() (messages, trace,
-// the run report).
+// the run report); without an accessor: the machine's observer (MachineEventRouter), the checks
+// of tool words and the spindle's tool (SpindleToolGuard), what a hold did to the machine
+// (HoldMotion) and why the program holds the run (ProgramStop).
 class Controller : public macro::MachineAccess,
-                   public machine::MachineObserver,
                    private RunView,
                    private BreakRun::Starter {
 public:
@@ -113,7 +116,7 @@ public:
     // Why the run holds when the program itself stopped (M00, M01 with the optional stop on, the
     // M350's G04 P-1): "M00 program stop (main.nc:12)"; empty for 暂停 or when running. resume()
     // is START. run() presses START by itself and notes it in the messages.
-    const std::string& programStop() const { return programStop_; }
+    const std::string& programStop() const { return programStop_.text(); }
     // Parameters 0-999 as they stand, for the panel's teach buttons (135-137) and IO page. A write
     // takes effect at once (setters, sensors, speeds); false for other numbers, a value that is
     // not finite or one that params::refusedParameterValue refuses.
@@ -156,7 +159,7 @@ public:
     bool setSpindleToolNumber(int tool);
     // Whether a stop in a tool change left the spindle's tool unknown (ToolDoubt.h): the next
     // change is refused at its T (M06 on a FANUC) until setSpindleToolNumber().
-    const ToolDoubt& toolDoubt() const { return toolDoubt_; }
+    const ToolDoubt& toolDoubt() const { return toolGuard_.doubt(); }
 
     // The panel's feed override (进给倍率) in percent, from 0 up to param 295 (150 % when it is 0);
     // G00 follows it when param 253 = 1. Returns the percentage set; while a FANUC macro's #3004
@@ -223,26 +226,17 @@ public:
     std::optional<HomingFailure> builtInHoming(int axis) override;
     std::optional<Message> parameterWrite(int parameter, double value) override;
     void homingStarts(int axis) override;
-    // machine::MachineObserver
-    void onMachineEvent(const machine::MachineEvent& event) override;
-    bool ignoresMove(const machine::Axes& from, const machine::Axes& to) const override;
 
 private:
-    void checkToolWord(const macro::EvaluatedBlock& block) const;
-    void refuseChangeInDoubt(const macro::EvaluatedBlock& block) const;
     // A RESET, an E-stop or an alarm stops the run inside a tool change: the spindle's tool is in doubt.
     void noteStopInChange();
     void takeToolChange(const interp::ModalInterpreter::ToolChange& change);
-    void feedMagazine(const machine::MachineEvent& event);
-    void checkSetterRapid(const machine::MachineEvent& event);
-    static constexpr double kSetterContact = 1e-3; // mm: a rapid that ends on the setter's top only touches it
     bool load(const gcode::SourceText& source, gcode::FileRole role);
     void applyParameterOverrides(); // --param, before anything reads the parameters
     void applySettings();
     void configureMachine();
     void syncToolLength() { breakage_.syncToolLength(); }
     void setUpBreakageWatch();
-    void watchSpindleLoad(const machine::MachineEvent& event);
     void enterSafeState();
     void stepOnce();
     int stepOnce(int toolBefore); // the spindle tool after the step
@@ -269,10 +263,8 @@ private:
     std::optional<Alarm> runEventHook(config::Hook hook);
     std::optional<Alarm> runHookProgramToEnd(const std::string& name);
     void runPauseHook();
-    void returnAfterPauseHook();
     int spindleTool() const { return magazine_.spindleTool(); }
     void stopForOperator(const interp::ModalInterpreter::OperatorStop& stop);
-    void checkToolLength(int tool);
     // After a step: the single block stop, and the PAUSE #3004 held back (RunControl.cpp).
     void stopAfterStep(std::uint64_t machineBlocksBefore);
     std::optional<Message> setOperationControl(int variable, double value);
@@ -293,31 +285,24 @@ private:
     std::vector<gcode::Diagnostic> diagnostics_;
     std::unique_ptr<macro::Executor> executor_;
     int fanucSpindleTool_ = 0;
-    int lastToolWord_ = 0;
-    int lengthCheckedTool_ = 0;  // the spindle tool checkToolLength() last saw turning
-    std::set<int> lengthWarned_; // the tools a missing length was warned of, once each // the last T a block gave (a FANUC's change fetches it at M06)
-    ToolDoubt toolDoubt_;
     double feedOverride_ = 100.0;
     double runStartedAt_ = 0.0;
     std::uint64_t runMovesFrom_ = 0; // the machine's movesMade() when the run started
-    std::optional<machine::Axes> crashPlace_; // where the move that ran into the hardware was going
     double timeLimitFrom_ = 0.0; // the run's start, moved on by its holds: --max-sim-time counts from here
     bool mdi_ = false;
     std::optional<config::Hook> hook_;  // the loaded program is this hook file
     bool inEventHook_ = false;          // pause.nc or error.nc runs: no hook starts inside it
-    std::optional<machine::Axes> beforePauseHook_; // where the hold stopped the axes, if pause.nc moved them
     // The run state changes only through setState(); the parts read it by const reference.
     RunState state_ = RunState::Idle;
     void setState(RunState next);
     RunEvents events_;
     std::optional<Alarm> alarm_;
     double displayTime_ = 0.0;
-    machine::SimulatedMachine::Remainder remainder_; // what a hold cut short
-    double liftedBy_ = 0.0;                          // Z lift of the hold (param 91, 70)
-    std::string programStop_;                        // see programStop()
-    Message programStopWords_;                       // the same by message id, set with it
-    std::map<int, TraceSource> linkedInputSource_; // input -> the line that switched its output
+    HoldMotion holdMotion_{machine_, config_.parameters}; // what a hold cut short, lifted, stopped
+    ProgramStop programStop_;                        // see programStop()
+    MachineEventRouter machineEvents_; // the machine's observer; before magazine_, which writes its input sources
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
+    SpindleToolGuard toolGuard_; // the T words, the doubt after a stop in a change, unset lengths; before status_
     StatusBoard status_;      // before devices_, which writes to its trace
     ExternalDevices devices_; // the external output device and the Modbus slaves
     ToolLifeCounter toolLife_;
@@ -328,9 +313,8 @@ private:
     OperationControl operation_;       // #3003, #3004
     bool singleBlock_ = false;
     bool holdPending_ = false;         // PAUSE came while #3004 kept feed hold off
-    std::optional<std::pair<machine::SpindleState, double>> spindleBeforeHold_;
 
-    // BreakRun::Starter (RunStart.cpp)
+    // BreakRun::Starter (RunControl.cpp)
     macro::Executor* programExecutor() final { return executor_ && !mdi_ ? executor_.get() : nullptr; }
     void clearForStart() final;
     bool dialogPending() const final { return panel_.dialogPending(); }

@@ -10,12 +10,6 @@
 
 namespace m350::controller {
 
-namespace {
-
-bool moved(const machine::Axes& from, const machine::Axes& to) { return (from - to).cwiseAbs().maxCoeff() > 1e-9; }
-
-} // namespace
-
 bool Controller::hasHook(config::Hook hook) const { return config::hookPath(config_.folder, hook).has_value(); }
 
 bool Controller::loadHook(config::Hook hook, const std::map<int, double>& variables) {
@@ -165,33 +159,13 @@ std::optional<Alarm> Controller::runHookProgramToEnd(const std::string& name) {
     return alarm;
 }
 
-// PAUSE, M00, G04 P-1: pause.nc may move the axes (lift Z, park); START brings them back first.
+// PAUSE, M00, G04 P-1: pause.nc may move the axes (lift Z, park); START brings them back first (HoldMotion).
 void Controller::runPauseHook() {
     const machine::Axes stoppedAt = machine_.position();
     std::optional<Alarm> alarm = runEventHook(config::Hook::Pause);
-    if (moved(stoppedAt, machine_.position())) {
-        beforePauseHook_ = stoppedAt;
-    }
+    holdMotion_.pauseHookRan(stoppedAt);
     if (alarm) {
         raiseAlarm(*alarm);
-    }
-}
-
-// Z up to the higher of the two, over at that height, then down to where the hold stopped.
-void Controller::returnAfterPauseHook() {
-    if (!beforePauseHook_) {
-        return;
-    }
-    const machine::Axes back = *beforePauseHook_;
-    beforePauseHook_.reset();
-    machine::Axes step = machine_.position();
-    const double safeZ = std::max(step(2), back(2));
-    for (int stage = 0; stage < 3; ++stage) {
-        machine::Axes target = stage == 0 ? step : back;
-        target(2) = stage == 2 ? back(2) : safeZ;
-        if (moved(machine_.position(), target)) {
-            machine_.rapid(target);
-        }
     }
 }
 

@@ -67,8 +67,8 @@ PanelStatus Controller::panelStatus() {
                                                           machine_.limits().maxSpindleRpm)
                                                : 0.0;
     out.tool = spindleTool();
-    if (toolDoubt_.doubt()) {
-        out.toolUnsure = toolDoubt_.notice();
+    if (toolGuard_.doubt().doubt()) {
+        out.toolUnsure = toolGuard_.doubt().notice();
     }
     out.totalCount = saturatingInt(config_.parameters.get(param::kTotalRunCount));
     out.pieceCount = saturatingInt(config_.parameters.get(param::kPieceCount));
@@ -76,13 +76,13 @@ PanelStatus Controller::panelStatus() {
     out.modalLine = status_.modalLine();
     out.message = status_.statusLine();
     out.notice = status_.notice();
-    out.programStop = programStop_;
+    out.programStop = programStop_.text();
     if (auto dialog = panel_.pendingDialog()) {
         out.dialog = dialog->text;
     }
     out.alarm = alarm_;
-    if (alarm_ && alarm_->code == AlarmCode::Crash && crashPlace_) {
-        out.alarmPlace = *crashPlace_;
+    if (alarm_ && alarm_->code == AlarmCode::Crash && machineEvents_.crashPlace()) {
+        out.alarmPlace = *machineEvents_.crashPlace();
     }
     if (executor_) {
         if (auto loc = executor_->location()) {

@@ -1,9 +1,8 @@
 // The operator's run controls: 暂停 hold and resume, reset, 急停 emergency stop, the feed override;
 // and what a FANUC macro switches off of them (#3003, #3004: OperationControl), with the single
-// block stop.
+// block stop; and how a break run (BreakRun::Starter) starts the loaded program inside it.
 #include "core/controller/Controller.h"
 
-#include "core/controller/ContinueRemainder.h"
 #include "core/params/ParameterNumbers.h"
 
 #include <algorithm>
@@ -38,20 +37,10 @@ void Controller::hold() {
         runPauseHook();
         return;
     }
-    remainder_ = interruptMotion(displayTime_, false);
+    const machine::SimulatedMachine::Remainder rest = interruptMotion(displayTime_, false);
     toolLife_.manager().cutShortAt(machine_.time());
-    breakRun_.rememberPause(remainder_);
-    const params::ParameterTable& p = config_.parameters;
-    if (p.get(param::kStopSpindleOnPause) != 0.0 && machine_.spindleState() != machine::SpindleState::Stop) {
-        spindleBeforeHold_ = std::make_pair(machine_.spindleState(), machine_.spindleRpm());
-        machine_.spindle(machine::SpindleState::Stop, 0.0);
-    }
-    liftedBy_ = p.get(param::kPauseZMode) != 0.0 ? std::max(0.0, p.get(param::kPauseLift)) : 0.0;
-    if (liftedBy_ > 0.0) {
-        machine::Axes up = machine_.position();
-        up(2) += liftedBy_;
-        machine_.rapid(up);
-    }
+    breakRun_.rememberPause(rest);
+    holdMotion_.held(rest);
     setState(RunState::Hold);
     if (status_.trace()) {
         status_.trace()->runState(displayTime_, "pause");
@@ -70,25 +59,10 @@ void Controller::resume() {
     if (status_.trace()) {
         status_.trace()->runState(machine_.time(), "resume");
     }
-    returnAfterPauseHook();
-    if (liftedBy_ > 0.0) {
-        machine::Axes down = machine_.position();
-        down(2) -= liftedBy_;
-        machine_.rapid(down);
-        liftedBy_ = 0.0;
+    const HoldMotion::Finished rest = holdMotion_.resume();
+    if (rest.cut && !(executor_ && executor_->changingTool())) {
+        toolLife_.manager().cut(rest.from, machine_.time()); // the rest of the cut the hold stopped
     }
-    if (spindleBeforeHold_) {
-        machine_.spindle(spindleBeforeHold_->first, spindleBeforeHold_->second);
-        spindleBeforeHold_.reset();
-    }
-    const double remainderFrom = machine_.time();
-    continueRemainder(machine_, remainder_);
-    const bool cutting = remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Feed ||
-                         remainder_.kind == machine::SimulatedMachine::Remainder::Kind::Arc;
-    if (cutting && !(executor_ && executor_->changingTool())) {
-        toolLife_.manager().cut(remainderFrom, machine_.time()); // the rest of the cut the hold stopped
-    }
-    remainder_ = {};
     programStop_.clear();
     setState(RunState::Running);
 }
@@ -105,10 +79,7 @@ void Controller::reset() {
     }
     enterSafeState();
     interp_.cancelRotation();
-    remainder_ = {};
-    liftedBy_ = 0.0;
-    beforePauseHook_.reset();
-    spindleBeforeHold_.reset();
+    holdMotion_.forget();
     alarm_.reset();
     programStop_.clear();
     panel_.clearSensorWait();
@@ -156,7 +127,6 @@ void Controller::stopAfterStep(std::uint64_t machineBlocksBefore) {
         return;
     }
     const TraceSource where = status_.source();
-    const std::string place = where.file + ":" + std::to_string(where.line);
     if (holdPending_ && !operation_.feedHoldSuppressed()) {
         holdPending_ = false;
         status_.postMessage(message("notice_pause_takes_effect", {where.file, std::to_string(where.line)}));
@@ -165,8 +135,7 @@ void Controller::stopAfterStep(std::uint64_t machineBlocksBefore) {
     }
     if (singleBlock_ && executor_->machineBlocksExecuted() != machineBlocksBefore &&
         !operation_.singleBlockSuppressed()) {
-        programStop_ = "single block stop (" + place + ")";
-        programStopWords_ = message("notice_start_after_stop", {bilingual(programStop_, "单段停止 (" + place + ")")});
+        programStop_.singleBlock(where);
         setState(RunState::Hold);
         if (status_.trace()) {
             status_.trace()->programStop(machine_.time(), "single block stop", where);
@@ -181,7 +150,7 @@ void Controller::emergencyStop(const std::string& why) {
     if (machine_.time() < displayTime_) {
         machine_.blockTime(displayTime_ - machine_.time());
     }
-    remainder_ = {};
+    holdMotion_.dropRemainder();
     raiseAlarm(Alarm::of(AlarmCode::EmergencyStop, why.empty() ? message("estop") : message("estop_extern", {why})));
     setState(RunState::EStop);
     if (status_.trace()) {
@@ -218,6 +187,55 @@ std::vector<std::string> Controller::timeLimitNumbers(double since) const {
         return {said(settings_.maxSimTime)};
     }
     return {said(settings_.maxSimTime), said(since), said(machine_.time())};
+}
+
+// BreakRun::Starter: what a break run needs of the Controller to start the loaded program inside it.
+
+void Controller::clearForStart() {
+    alarm_.reset();
+    panel_.clearDialog();
+    panel_.clearSensorWait();
+    programStop_.clear();
+    resetOperationControl();
+    devices_.beginRun(); // the scan opens it again where the program does (POPEN)
+}
+
+BreakRun::Starter::Saved Controller::save() const { return {offsets_, tools_.table(), config_.parameters}; }
+
+void Controller::restore(const Saved& saved) {
+    offsets_ = saved.offsets;
+    tools_.replace(saved.tools);
+    config_.parameters = saved.parameters;
+    panel_.clearDialog();
+    syncToolLength();
+    setState(RunState::Idle);
+}
+
+void Controller::startClock(const std::string& where) {
+    syncToolLength();
+    displayTime_ = std::max(displayTime_, machine_.time());
+    machine_.blockTime(displayTime_ - machine_.time());
+    runStartedAt_ = displayTime_;
+    timeLimitFrom_ = runStartedAt_;
+    if (status_.trace()) {
+        status_.trace()->runState(machine_.time(), "start at " + where);
+    }
+}
+
+// Whether the scan is inside the T-code program on a machine whose magazine is a device.
+bool Controller::inToolChange() const {
+    if (!magazine_.device() || dialect().tCodeProgram < 0) {
+        return false;
+    }
+    auto unit = program_.findUnit(dialect().tCodeProgram);
+    auto where = executor_->location();
+    if (!unit || !where || program_.units[*unit].begin >= program_.units[*unit].end) {
+        return false;
+    }
+    const gcode::ProgramUnit& u = program_.units[*unit];
+    const gcode::SourceLocation& first = program_.blocks[u.begin].location;
+    const gcode::SourceLocation& last = program_.blocks[u.end - 1].location;
+    return where->file == first.file && where->line >= first.line && where->line <= last.line;
 }
 
 } // namespace m350::controller

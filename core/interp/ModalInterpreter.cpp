@@ -68,28 +68,6 @@ ModalInterpreter::ModalInterpreter(const gcode::Dialect& dialect, params::Parame
     state_.spindleSpeed = parameters_.get(param::kDefaultSpindleSpeed); // M3 before any S
 }
 
-int ModalInterpreter::currentTool() const {
-    return dialect_.id == gcode::DialectId::M350 ? saturatingInt(parameters_.get(param::kCurrentTool))
-                                                  : state_.selectedTool;
-}
-
-double ModalInterpreter::toolZOffset() const {
-    if (dialect_.id != gcode::DialectId::M350) {
-        return 0.0;
-    }
-    std::optional<int> parameter = tools::m350ZParameter(currentTool(), parameters_);
-    return parameter ? parameters_.get(*parameter) : 0.0;
-}
-
-double ModalInterpreter::toolLengthOffset() const {
-    switch (state_.group(8)) {
-    // FANUC offset memory holds numbers in the input unit of the moment (G20: inches)
-    case 43: return state_.lengthOffsetValue * axisUnit(2);
-    case 44: return -state_.lengthOffsetValue * axisUnit(2);
-    default: return 0.0;
-    }
-}
-
 // FANUC reads the offset when G43/G44 or an H word under them is given (parameter EVO = 0), and
 // LinuxCNC when G43 is: changing the offset of the active H moves nothing until then.
 void ModalInterpreter::latchLengthOffset(const Words& words) {
@@ -103,34 +81,6 @@ void ModalInterpreter::applyLengthOffset(int number) {
     state_.groups[8] = 43;
     state_.lengthOffset = number;
     state_.lengthOffsetValue = tools_.lengthOffset(number);
-}
-
-int ModalInterpreter::activeSlot() const {
-    if (dialect_.id == gcode::DialectId::M350) {
-        int slot = saturatingInt(parameters_.get(param::kCurrentWorkSystem));
-        return (slot >= 0 && slot <= 6) ? slot : 1;
-    }
-    if (state_.additionalSystem > 0) {
-        return WorkOffsets::additionalSlot(state_.additionalSystem);
-    }
-    return state_.group(14) - 53;
-}
-
-void ModalInterpreter::refreshWorkOffset() const {
-    offsetCache_.inputs = offsetInputs();
-    offsetCache_.offset = computeWorkOffset();
-    offsetCache_.known = true;
-}
-
-machine::Axes ModalInterpreter::computeWorkOffset() const {
-    machine::Axes offset = offsets_.slot(activeSlot()) + offsets_.slot(WorkOffsets::kG52) +
-                           offsets_.slot(WorkOffsets::kCommon);
-    if (dialect_.id == gcode::DialectId::Fanuc) {
-        offset += offsets_.slot(WorkOffsets::kG92); // FANUC's G92 shifts the active system
-    }
-    offset(2) += toolZOffset(); // M350: work Z = machine Z - G54..G59 Z - tool Z offset
-    offset(2) += toolLengthOffset();
-    return offset;
 }
 
 machine::Axes ModalInterpreter::workPosition() const {

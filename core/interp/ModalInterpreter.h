@@ -8,6 +8,7 @@
 #include "core/interp/DrillingCycle.h"
 #include "core/interp/LetterWords.h"
 #include "core/interp/ModalState.h"
+#include "core/interp/OffsetsInForce.h"
 #include "core/interp/WorkOffsets.h"
 #include "core/machine/ArcGeometry.h"
 #include "core/machine/MachineInterface.h"
@@ -50,6 +51,9 @@ public:
 
     ModalInterpreter(const gcode::Dialect& dialect, params::ParameterTable& parameters, WorkOffsets& offsets,
                      tools::ToolData& tools, machine::MachineInterface& machine);
+    // Its parts keep references to its members.
+    ModalInterpreter(const ModalInterpreter&) = delete;
+    ModalInterpreter& operator=(const ModalInterpreter&) = delete;
 
     // G30 P2/P3 (and G28 on FANUC, point 1) go to these machine positions; G28 on the M350 goes to
     // the position after homing (params 122-126).
@@ -75,22 +79,17 @@ public:
 
     // The active system's slot in WorkOffsets (1..6 for G54..G59, from 9 on G54.1 P1.., 0 for the
     // M350's G92 system).
-    int activeSlot() const;
-    // Total offset between machine and work coordinates for each axis, tool Z offset included.
-    // Kept from block to block and computed again when what it is computed from changed.
-    const machine::Axes& workOffset() const {
-        if (!offsetCache_.known || !(offsetInputs() == offsetCache_.inputs)) {
-            refreshWorkOffset();
-        }
-        return offsetCache_.offset;
-    }
+    int activeSlot() const { return inForce_.activeSlot(); }
+    // Total offset between machine and work coordinates for each axis, tool Z offset included
+    // (OffsetsInForce: kept from block to block).
+    const machine::Axes& workOffset() const { return inForce_.total(); }
     machine::Axes workPosition() const;
     // The Z offset of the tool in the spindle (M350: params 930-945, virtual tools 973-992).
-    double toolZOffset() const;
-    int currentTool() const;
+    double toolZOffset() const { return inForce_.toolZOffset(); }
+    int currentTool() const { return inForce_.currentTool(); }
     // FANUC G43/G44 H: + or - the length of offset H as G43/G44 (or the last H under them) read it;
     // 0 under G49. A later change of the offset applies from the next G43/G44 or H word.
-    double toolLengthOffset() const;
+    double toolLengthOffset() const { return inForce_.toolLengthOffset(); }
     // What touch off does after writing the tool's length: G43 H`number`, reading it now.
     void applyLengthOffset(int number);
     // mm per program unit for an axis: 25.4 under G20 for X Y Z and for a linear 4th/5th axis
@@ -300,37 +299,6 @@ private:
     void runCycle(const DrillingCycle& cycle, const std::vector<machine::Axes>& holes, const Words& words);
     std::uint32_t cycleColumn(const Words& words) const;
 
-    // What workOffset() is computed from: the versions of the offsets and the parameters (the
-    // M350's work system, tool, magazine capacity and tool Z offsets), and as bit patterns (so -0.0
-    // and NaN compare exactly) the units, tool length mode, work system and latched length of the
-    // modal state, which is written in place.
-    struct OffsetInputs {
-        std::uint64_t offsetsVersion = 0;
-        std::uint64_t parametersVersion = 0;
-        std::array<std::uint64_t, 5> modal{};
-        bool operator==(const OffsetInputs& other) const { // without a branch or memcmp a field
-            std::uint64_t differ = (offsetsVersion ^ other.offsetsVersion) | (parametersVersion ^ other.parametersVersion);
-            for (std::size_t i = 0; i < modal.size(); ++i) {
-                differ |= modal[i] ^ other.modal[i];
-            }
-            return differ == 0;
-        }
-    };
-    struct OffsetCache {
-        bool known = false;
-        OffsetInputs inputs;
-        machine::Axes offset = machine::Axes::Zero();
-    };
-    OffsetInputs offsetInputs() const {
-        return {offsets_.version(),
-                parameters_.version(),
-                {std::bit_cast<std::uint64_t>(state_.groups[6]), std::bit_cast<std::uint64_t>(state_.groups[8]),
-                 std::bit_cast<std::uint64_t>(state_.groups[14]), std::bit_cast<std::uint64_t>(state_.lengthOffsetValue),
-                 static_cast<std::uint64_t>(state_.additionalSystem)}};
-    }
-    void refreshWorkOffset() const;
-    machine::Axes computeWorkOffset() const;
-
     const gcode::Dialect& dialect_;
     CoordinateFeatures features_;
     params::ParameterTable& parameters_;
@@ -339,7 +307,7 @@ private:
     machine::MachineInterface& machine_;
     ModalState state_;
     Words words_;
-    mutable OffsetCache offsetCache_;
+    OffsetsInForce inForce_{dialect_, parameters_, offsets_, state_}; // after state_, which it reads
     std::optional<OperatorStop> stop_;
     std::vector<std::string> lookAheadChanges_;
     std::optional<ToolChange> toolChange_;
