@@ -8,6 +8,7 @@
 #include "core/controller/HoldMotion.h"
 #include "core/controller/Homing.h"
 #include "core/controller/InterfaceSignalsPmc.h"
+#include "core/controller/LibraryCache.h"
 #include "core/controller/ManualControl.h"
 #include "core/controller/MessageLog.h"
 #include "core/controller/OperationControl.h"
@@ -75,6 +76,8 @@ public:
     const std::vector<gcode::Diagnostic>& diagnostics() const { return diagnostics_; }
     // The loaded program with the machine's libraries, as parsed (what check::StaticCheck reads).
     const gcode::Program& program() const { return program_; }
+    // How many times the machine's libraries were parsed: once while their files stay as they are.
+    std::uint64_t libraryParses() const { return libraries_.parses(); }
 
     // Hook files (Hooks.cpp; the table in config/HookFiles.h): the machine folder's programs that
     // the panel and the controller run when something happens. loadHook loads one as the program
@@ -255,10 +258,7 @@ private:
     bool axisHomed(int axis) const final { return homing_.homed(axis); }
     void parseWithLibraries(gcode::Program& program, const gcode::SourceText& source, gcode::FileRole role,
                             std::vector<gcode::Diagnostic>& diagnostics) const;
-    static bool addSourceFile(gcode::Parser& parser, gcode::Program& program, const std::string& path,
-                              gcode::FileRole role, std::vector<gcode::Diagnostic>& diagnostics);
-    void addCalledHooks(gcode::Parser& parser, gcode::Program& program, const std::string& mainPath,
-                        std::vector<gcode::Diagnostic>& diagnostics) const;
+    std::vector<LibraryCache::File> librariesFor(const std::string& mainPath) const;
     std::unique_ptr<macro::Executor> newExecutor();
     std::optional<Alarm> runEventHook(config::Hook hook);
     std::optional<Alarm> runHookProgramToEnd(const std::string& name);
@@ -282,6 +282,7 @@ private:
     interp::ModalInterpreter interp_;
     macro::VariableStore store_;
     gcode::Program program_;
+    mutable LibraryCache libraries_; // parseWithLibraries
     std::vector<gcode::Diagnostic> diagnostics_;
     std::unique_ptr<macro::Executor> executor_;
     int fanucSpindleTool_ = 0;

@@ -67,21 +67,19 @@ bool Controller::loadHookOrMdi(config::Hook hook, const std::map<int, double>& v
 }
 
 // ALL_T.nc is what M101 runs: its program (a file of blocks without an O number) becomes the M101
-// handler, ahead of any O10101 in the machine's M library.
-void Controller::addCalledHooks(gcode::Parser& parser, gcode::Program& program, const std::string& mainPath,
-                                std::vector<gcode::Diagnostic>& diagnostics) const {
+// handler, ahead of any O10101 in the machine's M library. Then the machine's libraries.
+std::vector<LibraryCache::File> Controller::librariesFor(const std::string& mainPath) const {
+    std::vector<LibraryCache::File> files;
     const int base = config_.dialect->mHandlerBase;
     auto path = config::hookPath(config_.folder, config::Hook::AllTools);
     std::error_code ec;
-    if (base < 0 || !path || std::filesystem::equivalent(*path, mainPath, ec)) {
-        return;
+    if (base >= 0 && path && !std::filesystem::equivalent(*path, mainPath, ec)) {
+        files.push_back({*path, gcode::FileRole::MLibrary, base + config::kAllToolsMCode});
     }
-    const std::size_t first = program.units.size();
-    if (addSourceFile(parser, program, *path, gcode::FileRole::MLibrary, diagnostics) && first < program.units.size() &&
-        program.units[first].number < 0) {
-        program.units[first].number = base + config::kAllToolsMCode;
-        program.indexUnit(static_cast<std::uint32_t>(first));
+    for (const config::LibraryFile& library : config_.libraries) {
+        files.push_back({library.path, library.role, -1});
     }
+    return files;
 }
 
 // pause.nc and error.nc run beside the program they interrupt: the hook's program and executor

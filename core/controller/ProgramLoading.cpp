@@ -34,30 +34,25 @@ bool Controller::load(const gcode::SourceText& source, gcode::FileRole role) {
 }
 
 // The file, then the hook programs that programs call (ALL_T.nc for M101), then the machine's
-// libraries: what a run of that file needs.
+// libraries: what a run of that file needs. The libraries come parsed from libraries_ while their
+// files read as they did.
 void Controller::parseWithLibraries(gcode::Program& program, const gcode::SourceText& source, gcode::FileRole role,
                                     std::vector<gcode::Diagnostic>& diagnostics) const {
     const gcode::Dialect dialect = config::parsingDialect(config_);
     gcode::Parser parser(dialect);
     parser.setDropChunksAbove(static_cast<std::size_t>(settings_.programKeptWholeUpTo));
+    const std::vector<LibraryCache::File> files = librariesFor(source.path);
+    if (auto parsed = settings_.reuseParsedLibraries ? libraries_.get(dialect, files) : nullptr) {
+        parser.startOn(program, std::move(parsed));
+    }
     parser.addSource(program, source, role);
-    addCalledHooks(parser, program, source.path, diagnostics);
-    for (const config::LibraryFile& library : config_.libraries) {
-        addSourceFile(parser, program, library.path, library.role, diagnostics);
+    if (!parser.joinLibraries(program)) {
+        for (const LibraryCache::File& file : files) {
+            LibraryCache::addFile(parser, program, file, diagnostics);
+        }
     }
     parser.finish(program);
     diagnostics.insert(diagnostics.end(), parser.diagnostics().begin(), parser.diagnostics().end());
-}
-
-bool Controller::addSourceFile(gcode::Parser& parser, gcode::Program& program, const std::string& path,
-                               gcode::FileRole role, std::vector<gcode::Diagnostic>& diagnostics) {
-    auto source = gcode::readSourceFile(path);
-    if (auto* error = std::get_if<gcode::SourceReadError>(&source)) {
-        diagnostics.push_back(gcode::diagnosticOf(*error));
-        return false;
-    }
-    parser.addSource(program, std::get<gcode::SourceText>(source), role);
-    return true;
 }
 
 std::unique_ptr<macro::Executor> Controller::newExecutor() {

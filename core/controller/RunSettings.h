@@ -55,6 +55,9 @@ struct RunSettings {
     // A program file larger than this (mapped UTF-8) is kept in memory only in part: its chunks of
     // plain lines are parsed again when they run (gcode::BlockList), so a 1 GB program fits.
     std::uint64_t programKeptWholeUpTo = gcode::kProgramKeptWholeUpTo;
+    // The machine's libraries are parsed once and joined to each program or MDI line while their
+    // files read the same (LibraryCache); false parses them at every load (tests compare both).
+    bool reuseParsedLibraries = true;
     // Told every machine event as it happens (the panel's simulation draws the path from them).
     machine::MachineObserver* observer = nullptr;
 };

@@ -33,6 +33,8 @@ public:
     enum class Order { Reading, AsFiled };
     void finish(std::vector<Diagnostic>& diagnostics, const Program& program, Order order = Order::Reading);
 
+    bool leftAnyOut() const { return omitted_ > 0; }
+
 private:
     void sortAndTrim(std::vector<Diagnostic>& diagnostics, const Program& program);
     void trim(std::vector<Diagnostic>& diagnostics, const Program& program);

@@ -17,6 +17,7 @@ struct IndexedTable {
     int base = 0;
     std::string_view what; // "pocket X (params 830-845)"
     std::string_view chinese; // the same for the panel in zh_CN
+    bool operator==(const IndexedTable&) const = default;
 };
 
 // Everything that differs between the M350 firmware's macro language and FANUC Custom Macro B.
@@ -73,6 +74,8 @@ struct Dialect {
     // parameters 6050-6059, 6080-6089), set on a copy the controller parses with. In their blocks,
     // as in G65's, `A1E2` is A1 and the argument E2.
     std::vector<std::pair<char, std::int32_t>> argumentCodes;
+
+    bool operator==(const Dialect&) const = default;
 
     static const Dialect& m350();
     static const Dialect& fanuc();

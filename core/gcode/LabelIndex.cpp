@@ -17,6 +17,15 @@ void LabelIndex::build(std::vector<std::pair<std::int32_t, std::uint32_t>> entri
     entries_ = std::move(entries);
 }
 
+LabelIndex LabelIndex::shifted(std::uint32_t offset) const {
+    LabelIndex moved;
+    moved.entries_ = entries_;
+    for (Entry& entry : moved.entries_) {
+        entry.second += offset;
+    }
+    return moved;
+}
+
 std::pair<std::vector<LabelIndex::Entry>::const_iterator, std::vector<LabelIndex::Entry>::const_iterator>
 LabelIndex::range(std::int32_t label) const {
     auto low = std::lower_bound(entries_.begin(), entries_.end(), Entry{label, 0});

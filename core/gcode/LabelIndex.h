@@ -16,6 +16,9 @@ public:
     // The labelled blocks in file order.
     void build(std::vector<std::pair<std::int32_t, std::uint32_t>> entries);
 
+    // The same labels on blocks `offset` further on (a unit moved into a larger program).
+    LabelIndex shifted(std::uint32_t offset) const;
+
     bool empty() const { return entries_.empty(); }
     std::size_t size() const; // how many different labels
     std::size_t count(std::int32_t label) const { return contains(label) ? 1 : 0; }

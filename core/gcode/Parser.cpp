@@ -5,11 +5,13 @@
 #include "core/gcode/BlockParser.h"
 #include "core/gcode/ChunkDropper.h"
 #include "core/gcode/LineSplitter.h"
+#include "core/gcode/ParsedLibraries.h"
 #include "core/gcode/PlainBlockParser.h"
 #include "core/gcode/PlainLinePrefetch.h"
 #include "core/gcode/WordFacts.h"
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -212,6 +214,70 @@ void Parser::demoteUnreachable(std::size_t firstNew, const Unreachable& unreacha
     }
 }
 
+void Parser::startOn(Program& program, std::shared_ptr<const ParsedLibraries> libraries) {
+    program.expressions = libraries->program.expressions;
+    program.statements = libraries->program.statements;
+    program.libraries = std::move(libraries);
+}
+
+namespace {
+
+constexpr std::string_view kOTwice = "flow_o_twice";
+
+// The O number a flow_o_twice finding names.
+std::int32_t numberDefinedTwice(const Diagnostic& d) {
+    std::int32_t number = -1;
+    const std::string& text = d.messageArguments.front();
+    std::from_chars(text.data(), text.data() + text.size(), number);
+    return number;
+}
+
+} // namespace
+
+bool Parser::joinLibraries(Program& program) {
+    const ParsedLibraries* libraries = program.libraries.get();
+    // Below this many findings no line of the libraries would have trimmed the list (trimIfLarge).
+    constexpr std::size_t kUntrimmed = 2 * (DiagnosticCap::kKeepFirst + DiagnosticCap::kKeepLast);
+    if (libraries == nullptr || !libraries->joinable ||
+        diagnostics_.size() + libraries->diagnostics.size() > kUntrimmed) {
+        return false;
+    }
+    const Program& part = libraries->program;
+    const auto firstFile = static_cast<std::uint32_t>(program.files.size());
+    const auto firstBlock = static_cast<std::uint32_t>(program.blocks.size());
+    const auto firstUnit = static_cast<std::uint32_t>(program.units.size());
+    // closeUnit says an O number defined twice in a library only when no file before defines it
+    // (findUnit then finds the main file's): the libraries alone could not know.
+    for (const Diagnostic& d : libraries->diagnostics) {
+        if (d.messageId != kOTwice || !program.hasUnit(numberDefinedTwice(d))) {
+            diagnostics_.push_back(d);
+        }
+    }
+    program.files.insert(program.files.end(), part.files.begin(), part.files.end());
+    for (const Block& partBlock : part.blocks) {
+        Block block = partBlock;
+        block.location.file += firstFile;
+        if (block.partner >= 0) {
+            block.partner += static_cast<std::int32_t>(firstBlock);
+        }
+        program.blocks.push_back(block);
+    }
+    for (const ProgramUnit& partUnit : part.units) {
+        ProgramUnit unit;
+        unit.number = partUnit.number;
+        unit.file = partUnit.file + firstFile;
+        unit.begin = partUnit.begin + firstBlock;
+        unit.end = partUnit.end + firstBlock;
+        unit.labels = partUnit.labels.shifted(firstBlock);
+        program.units.push_back(std::move(unit));
+    }
+    for (const auto& [block, finding] : part.suspects) {
+        program.suspects.emplace(block + firstBlock, finding);
+    }
+    program.indexUnitsOf(part, firstUnit);
+    return true;
+}
+
 void Parser::closeUnit(Program& program, std::uint32_t unitIndex) {
     ProgramUnit& unit = program.units[unitIndex];
     unit.end = static_cast<std::uint32_t>(program.blocks.size());
@@ -219,7 +285,7 @@ void Parser::closeUnit(Program& program, std::uint32_t unitIndex) {
         if (auto existing = program.findUnit(unit.number);
             existing && program.units[*existing].file == unit.file) {
             report(program, program.blocks[unit.begin], 1, DiagnosticKind::Flow,
-                   message("flow_o_twice", {std::to_string(unit.number),
+                   message(kOTwice, {std::to_string(unit.number),
                                             std::to_string(program.blocks[program.units[*existing].begin].location.line)}));
         }
     }

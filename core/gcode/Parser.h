@@ -15,6 +15,7 @@
 namespace m350::gcode {
 
 class ChunkSource;
+struct ParsedLibraries;
 class LineSplitter;
 class PlainLinePrefetch;
 
@@ -47,6 +48,18 @@ public:
     void finish(const Program& program);
 
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+    // Whether findings were left out to keep the list bounded (DiagnosticCap).
+    bool leftFindingsOut() const { return cap_.leftAnyOut(); }
+
+    // Library files parsed before on their own, to be joined after the main file (joinLibraries)
+    // instead of parsed again: called on an empty program, before the main file is added. Their
+    // expressions and statements go first into the program's storage, so their blocks join
+    // unchanged.
+    void startOn(Program& program, std::shared_ptr<const ParsedLibraries> libraries);
+    // Appends the libraries of startOn as if their files were added now: the same blocks, units,
+    // lookups and findings. False, with nothing changed, when that cannot be exactly so (see
+    // ParsedLibraries::joinable, or findings near the bound): then add the files.
+    bool joinLibraries(Program& program);
 
 private:
     std::uint32_t addFileEntry(Program& program, const std::string& path, FileRole role, std::string encoding);

@@ -18,6 +18,15 @@ void Program::indexUnit(std::uint32_t unitIndex) {
     }
 }
 
+void Program::indexUnitsOf(const Program& part, std::uint32_t firstUnit) {
+    for (const auto& [number, partUnits] : part.unitsByNumber_) {
+        std::vector<std::uint32_t>& here = unitsByNumber_[number];
+        for (std::uint32_t unit : partUnits) {
+            here.push_back(firstUnit + unit);
+        }
+    }
+}
+
 std::optional<std::uint32_t> Program::findUnit(std::int32_t number) const {
     auto it = unitsByNumber_.find(number);
     if (it == unitsByNumber_.end()) {

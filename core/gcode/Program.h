@@ -16,6 +16,8 @@
 
 namespace m350::gcode {
 
+struct ParsedLibraries;
+
 // What a file is for: the program to run, MDI lines, or one of the machine's macro libraries.
 // G-code handlers (O9000+n) are looked up in GLibrary files and M-code handlers (O10000+n) in
 // MLibrary files, as the M350 does with slib-g.nc and slib-m.nc.
@@ -72,6 +74,13 @@ public:
 
     // Indexes the O number of every unit; called by the parser after each file.
     void indexUnit(std::uint32_t unitIndex);
+    // Indexes the units of `part` (its files joined after this program's, their units from
+    // `firstUnit` on) in the order `part` indexed them.
+    void indexUnitsOf(const Program& part, std::uint32_t firstUnit);
+    bool hasUnit(std::int32_t number) const { return unitsByNumber_.contains(number); }
+
+    // Libraries parsed before, whose storage the blocks joined from them refer to (Parser::startOn).
+    std::shared_ptr<const ParsedLibraries> libraries;
 
 private:
     std::unordered_map<std::int32_t, std::vector<std::uint32_t>> unitsByNumber_;
