@@ -3,19 +3,13 @@
 #include "ui/i18n/AlarmText.h"
 #include "ui/session/SessionLog.h"
 
-#include "core/controller/Controller.h"
-
 #include <array>
 
 namespace m350::ui {
 
-using controller::Controller;
-
-void MachineEventLog::noteAlarm(Controller& controller, SessionLog& log) {
-    const Controller::RunState run = controller.runState();
-    const bool alarmed = run == Controller::RunState::Alarm || run == Controller::RunState::EStop;
+void MachineEventLog::noteAlarm(bool alarmed, const std::function<std::optional<Alarm>()>& inForce, SessionLog& log) {
     if (alarmed && !alarmLogged_) {
-        if (auto alarm = controller.panelStatus().alarm) {
+        if (const std::optional<Alarm> alarm = inForce()) {
             QString where = alarm->file.empty() ? QString()
                                                 : QStringLiteral("%1:%2: ").arg(QString::fromStdString(alarm->file)).arg(alarm->line);
             log.record("alarm", where + AlarmText::message(*alarm));
@@ -25,9 +19,9 @@ void MachineEventLog::noteAlarm(Controller& controller, SessionLog& log) {
 }
 
 // The event names the level, the detail the number, the values and the place.
-void MachineEventLog::noteParameterChanges(Controller& controller, SessionLog& log) {
+void MachineEventLog::noteParameterChanges(const std::vector<controller::ParameterWrites::Change>& changes, SessionLog& log) {
     static constexpr std::array<const char*, 4> kEvents{"param_guest", "param_operator", "param_admin", "param_super"};
-    for (const controller::ParameterWrites::Change& change : controller.takeParameterChanges()) {
+    for (const controller::ParameterWrites::Change& change : changes) {
         QString detail = QStringLiteral("[%1] %2 -> %3")
                              .arg(change.number)
                              .arg(QString::number(change.before, 'g', 10), QString::number(change.after, 'g', 10));

@@ -1,8 +1,11 @@
 #pragma once
 
-namespace m350::controller {
-class Controller;
-}
+#include "core/common/Alarm.h"
+#include "core/controller/ParameterWrites.h"
+
+#include <functional>
+#include <optional>
+#include <vector>
 
 namespace m350::ui {
 
@@ -13,8 +16,10 @@ class SessionLog;
 // whoever made it, with the level at the panel, the values and the program line that wrote it.
 class MachineEventLog {
 public:
-    void noteAlarm(controller::Controller& controller, SessionLog& log);
-    void noteParameterChanges(controller::Controller& controller, SessionLog& log);
+    // `alarmed`: the run is in an alarm or an E-stop; `alarm` gives the one in force (asked only
+    // when it is to be logged).
+    void noteAlarm(bool alarmed, const std::function<std::optional<Alarm>()>& alarm, SessionLog& log);
+    void noteParameterChanges(const std::vector<controller::ParameterWrites::Change>& changes, SessionLog& log);
 
 private:
     bool alarmLogged_ = false; // the alarm in force is in the log

@@ -2,20 +2,19 @@
 
 #include "ui/session/FrameClock.h"
 
-#include "ui/i18n/AlarmText.h"
 #include "ui/i18n/DiagnosticText.h"
 #include "ui/i18n/Language.h"
 
 #include "core/config/HookFiles.h"
 #include "core/config/MachineConfig.h"
 #include "core/controller/Controller.h"
+#include "core/controller/ToolTableSave.h"
 #include "core/gcode/Diagnostic.h"
 #include "core/params/ParameterNumbers.h"
 
 #include <QDateTime>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -130,7 +129,7 @@ void SessionWorker::advance(double seconds) {
     beside_.advance(seconds);
     const bool wasRunning = busy();
     Controller::RunState state = controller_->advance(seconds);
-    events_.noteAlarm(*controller_, *log_);
+    noteAlarm();
     if (wasRunning && !busy()) {
         keepParametersTheRunChanged();
     }
@@ -147,6 +146,12 @@ void SessionWorker::advance(double seconds) {
     operatorKeys();
 }
 
+void SessionWorker::noteAlarm() {
+    const Controller::RunState run = controller_->runState();
+    events_.noteAlarm(run == Controller::RunState::Alarm || run == Controller::RunState::EStop,
+                      [this] { return controller_->panelStatus().alarm; }, *log_);
+}
+
 bool SessionWorker::busy() const {
     auto state = controller_->runState();
     return state == Controller::RunState::Running || state == Controller::RunState::Hold;
@@ -160,8 +165,9 @@ void SessionWorker::refuse(const QString& why) {
 }
 
 void SessionWorker::publish() {
-    events_.noteParameterChanges(*controller_, *log_);
-    toolData_.keep(*controller_, folder_);
+    events_.noteParameterChanges(controller_->takeParameterChanges(), *log_);
+    toolData_.keep(controller_->toolTableEdits(), [this] { return controller::saveToolTable(*controller_, folder_); },
+                   controller_->toolLife().manager(), folder_);
     keepExternalOutput(busy());
     auto snapshot = std::make_shared<PanelSnapshot>();
     snapshot->status = controller_->panelStatus();
@@ -261,7 +267,7 @@ void SessionWorker::emergencyStop() {
     lastError_.clear();
     controller_->emergencyStop();
     log_->record("estop");
-    events_.noteAlarm(*controller_, *log_);
+    noteAlarm();
     activity_ = Activity::None;
     publish();
 }

@@ -115,6 +115,7 @@ private:
     bool quiet() const;
     void advance(double seconds);
     bool busy() const;
+    void noteAlarm(); // an alarm into the log once (MachineEventLog)
     void refuse(const QString& why);
     QString loadErrors() const; // why the controller's last load failed
     bool loadCurrentFile();

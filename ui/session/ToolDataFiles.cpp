@@ -3,20 +3,22 @@
 #include "ui/i18n/Language.h"
 
 #include "core/config/MachineFolder.h"
-#include "core/controller/Controller.h"
-#include "core/controller/ToolTableSave.h"
+#include "core/controller/ToolTableEdits.h"
+#include "core/tools/ToolLifeManager.h"
 
 namespace m350::ui {
 
-void ToolDataFiles::keep(controller::Controller& controller, const config::MachineFolder& folder) {
-    keepTable(controller, folder);
-    keepLife(controller, folder);
+void ToolDataFiles::keep(const controller::ToolTableEdits& table, const SaveTable& saveTable, tools::ToolLifeManager& life,
+                         const config::MachineFolder& folder) {
+    keepTable(table, saveTable, folder);
+    keepLife(life, folder);
 }
 
-void ToolDataFiles::keepTable(controller::Controller& controller, const config::MachineFolder& folder) {
-    const tools::ToolData::Mark mark = controller.toolTableEdits().mark();
-    if (!folder.path().empty() && controller.toolTableEdits().changed() && !(failedTableMark_ && *failedTableMark_ == mark)) {
-        if (auto error = controller::saveToolTable(controller, folder)) {
+void ToolDataFiles::keepTable(const controller::ToolTableEdits& table, const SaveTable& saveTable,
+                              const config::MachineFolder& folder) {
+    const tools::ToolData::Mark mark = table.mark();
+    if (!folder.path().empty() && table.changed() && !(failedTableMark_ && *failedTableMark_ == mark)) {
+        if (auto error = saveTable()) {
             tableProblem_ = QString::fromStdString(error->in(Language::messageLanguage()));
             failedTableMark_ = mark;
         } else {
@@ -25,14 +27,13 @@ void ToolDataFiles::keepTable(controller::Controller& controller, const config::
         }
     }
     if (!shownTableMark_ || !(*shownTableMark_ == mark)) {
-        table_ = std::make_shared<const tools::ToolTable>(controller.toolTableEdits().table());
+        table_ = std::make_shared<const tools::ToolTable>(table.table());
         shownTableMark_ = mark;
     }
 }
 
 // Counting changes the data every 4 s of cutting.
-void ToolDataFiles::keepLife(controller::Controller& controller, const config::MachineFolder& folder) {
-    tools::ToolLifeManager& life = controller.toolLife().manager();
+void ToolDataFiles::keepLife(tools::ToolLifeManager& life, const config::MachineFolder& folder) {
     const std::uint64_t revision = life.revision();
     if (!folder.path().empty() && life.changed() && failedLifeRevision_ != revision) {
         if (auto error = folder.saveToolLife(life.data())) {

@@ -5,7 +5,10 @@
 
 #include <QString>
 
+#include "core/common/Message.h"
+
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -13,7 +16,10 @@ namespace m350::config {
 class MachineFolder;
 }
 namespace m350::controller {
-class Controller;
+class ToolTableEdits;
+}
+namespace m350::tools {
+class ToolLifeManager;
 }
 
 namespace m350::ui {
@@ -24,8 +30,12 @@ namespace m350::ui {
 // save that failed is said, and tried again only when the data changes again, not at every frame.
 class ToolDataFiles {
 public:
+    // The table's save (controller::saveToolTable: with the parameters params.toml lists).
+    using SaveTable = std::function<std::optional<Message>()>;
+
     // Saves what changed since the last call and makes new views of it.
-    void keep(controller::Controller& controller, const config::MachineFolder& folder);
+    void keep(const controller::ToolTableEdits& table, const SaveTable& saveTable, tools::ToolLifeManager& life,
+              const config::MachineFolder& folder);
 
     std::shared_ptr<const tools::ToolTable> table() const { return table_; }
     const QString& tableProblem() const { return tableProblem_; } // why tool.tbl was not saved
@@ -33,8 +43,8 @@ public:
     const QString& lifeProblem() const { return lifeProblem_; } // why toollife.txt was not saved
 
 private:
-    void keepTable(controller::Controller& controller, const config::MachineFolder& folder);
-    void keepLife(controller::Controller& controller, const config::MachineFolder& folder);
+    void keepTable(const controller::ToolTableEdits& table, const SaveTable& saveTable, const config::MachineFolder& folder);
+    void keepLife(tools::ToolLifeManager& life, const config::MachineFolder& folder);
 
     std::shared_ptr<const tools::ToolTable> table_;
     std::optional<tools::ToolData::Mark> shownTableMark_;
