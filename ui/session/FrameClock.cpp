@@ -24,19 +24,12 @@ void FrameClock::start(double rate, std::function<void(double seconds)> frame) {
     scheduleTick();
 }
 
-void FrameClock::stop() {
-    timer_->stop();
-    frame_ = {};
-}
-
 void FrameClock::tick() {
     const qint64 now = wall_.nsecsElapsed();
     const double seconds = static_cast<double>(now - lastTickNs_) * 1e-9 * rate_;
     lastTickNs_ = now;
-    if (frame_) {
-        frame_(seconds);
-        scheduleTick();
-    }
+    frame_(seconds);
+    scheduleTick();
 }
 
 void FrameClock::scheduleTick() {

@@ -16,8 +16,7 @@ class FrameClock : public QObject {
     Q_OBJECT
 public:
     explicit FrameClock(QObject* parent = nullptr);
-    void start(double rate, std::function<void(double seconds)> frame);
-    void stop();
+    void start(double rate, std::function<void(double seconds)> frame); // runs until deleted
 
 private:
     void tick();
