@@ -1,6 +1,7 @@
 #include "ui/pages/CompactDro.h"
 
 #include "ui/i18n/PanelText.h"
+#include "ui/widgets/MeasuredLabel.h"
 
 #include <QEvent>
 #include <QGridLayout>
@@ -34,8 +35,8 @@ CompactDro::CompactDro(QWidget* parent) : QWidget(parent) {
     for (int axis = 0; axis < 5; ++axis) {
         const auto i = static_cast<std::size_t>(axis);
         names_[i] = new QLabel(PanelText::axis(axis), this);
-        machine_[i] = new QLabel(this);
-        work_[i] = new QLabel(this);
+        machine_[i] = new MeasuredLabel(this);
+        work_[i] = new MeasuredLabel(this);
         units_[i] = new QLabel(this);
         units_[i]->setProperty("droUnit", true);
         for (QLabel* value : {machine_[i], work_[i]}) {

@@ -6,6 +6,7 @@
 #include "ui/pages/PanelContext.h"
 #include "ui/pages/ProgramWindow.h"
 #include "ui/session/HookSteps.h"
+#include "ui/widgets/MeasuredLabel.h"
 
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -98,14 +99,14 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
     row->addLayout(left, 3);
     row->addLayout(info, 2);
     column->addLayout(row, 1);
-    modal_ = new QLabel(this);
+    modal_ = new MeasuredLabel(this);
     modal_->setObjectName("modalLine");
     column->addWidget(modal_);
     retranslate();
 }
 
 QLabel* MonitorPage::infoLabel(const QString& name) {
-    auto* label = new QLabel(this);
+    auto* label = new MeasuredLabel(this);
     label->setObjectName(QStringLiteral("info_") + name);
     label->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     values_.insert(name, label);

@@ -5,6 +5,7 @@
 #include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
 #include "ui/session/UserAccess.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/WrappedLabel.h"
 
 #include <QApplication>
@@ -47,10 +48,10 @@ ParamPage::ParamPage(PanelContext& context, QWidget* parent) : Page(context, par
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(4, 4, 4, 4);
     auto* header = new QHBoxLayout;
-    tabs_ = new QLabel(this);
+    tabs_ = new MeasuredLabel(this);
     tabs_->setObjectName("paramTabs");
     tabs_->setTextFormat(Qt::RichText);
-    group_ = new QLabel(this);
+    group_ = new MeasuredLabel(this);
     group_->setObjectName("paramGroup");
     group_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     header->addWidget(tabs_);

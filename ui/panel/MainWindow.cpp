@@ -21,6 +21,7 @@
 #include "ui/panel/PromptBox.h"
 #include "ui/panel/SoftkeyBar.h"
 #include "ui/panel/StatusLine.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/WrappedLabel.h"
 
 #include <QApplication>
@@ -45,7 +46,7 @@ MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language*
     column->setSpacing(2);
     status_ = new StatusLine(screen);
     stack_ = new PageStack(screen);
-    message_ = new QLabel(screen);
+    message_ = new MeasuredLabel(screen);
     message_->setObjectName("messageLine");
     alarm_ = new WrappedLabel(screen);
     alarm_->setObjectName("alarmLine");

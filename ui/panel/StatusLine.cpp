@@ -2,6 +2,7 @@
 
 #include "ui/panel/PanelMode.h"
 #include "ui/session/UserAccess.h"
+#include "ui/widgets/MeasuredLabel.h"
 
 #include <QDateTime>
 #include <QFileInfo>
@@ -15,7 +16,7 @@ namespace m350::ui {
 namespace {
 
 QLabel* field(QWidget* parent, const char* name, int minimumWidth) {
-    auto* label = new QLabel(parent);
+    auto* label = new MeasuredLabel(parent);
     label->setObjectName(name);
     label->setMinimumWidth(minimumWidth);
     label->setAlignment(Qt::AlignCenter);
