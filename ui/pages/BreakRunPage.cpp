@@ -2,6 +2,7 @@
 
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/MeasuredLabel.h"
 
 #include <QFileInfo>
 #include <QLabel>
@@ -32,7 +33,7 @@ BreakRunPage::BreakRunPage(PanelContext& context, QWidget* parent) : Page(contex
     setObjectName("breakRunPage");
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(8, 8, 8, 8);
-    text_ = new QLabel(this);
+    text_ = new MeasuredLabel(this);
     text_->setObjectName("breakPoints");
     text_->setStyleSheet(QStringLiteral("font-size: 13pt;"));
     column->addWidget(text_);

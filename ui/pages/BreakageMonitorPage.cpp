@@ -1,6 +1,7 @@
 #include "ui/pages/BreakageMonitorPage.h"
 
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/WrappedLabel.h"
 
 #include <QChart>
@@ -70,8 +71,8 @@ BreakageMonitorPage::BreakageMonitorPage(PanelContext& context, QWidget* parent)
     auto* grid = new QGridLayout();
     int i = 0;
     for (const char* name : kFields) {
-        auto* caption = new QLabel(this);
-        auto* field = new QLabel(this);
+        auto* caption = new MeasuredLabel(this);
+        auto* field = new MeasuredLabel(this);
         field->setObjectName(QStringLiteral("breakage_") + QLatin1String(name));
         captions_[QLatin1String(name)] = caption;
         fields_[QLatin1String(name)] = field;

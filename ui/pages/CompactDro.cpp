@@ -24,8 +24,8 @@ CompactDro::CompactDro(QWidget* parent) : QWidget(parent) {
     grid->setContentsMargins(0, 0, 0, 0);
     grid->setHorizontalSpacing(12);
     grid->setVerticalSpacing(1);
-    machineHeader_ = new QLabel(this);
-    workHeader_ = new QLabel(this);
+    machineHeader_ = new MeasuredLabel(this);
+    workHeader_ = new MeasuredLabel(this);
     for (QLabel* header : {machineHeader_, workHeader_}) {
         header->setObjectName("droHeader");
         header->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -34,10 +34,10 @@ CompactDro::CompactDro(QWidget* parent) : QWidget(parent) {
     grid->addWidget(workHeader_, 0, 2);
     for (int axis = 0; axis < 5; ++axis) {
         const auto i = static_cast<std::size_t>(axis);
-        names_[i] = new QLabel(PanelText::axis(axis), this);
+        names_[i] = new MeasuredLabel(PanelText::axis(axis), this);
         machine_[i] = new MeasuredLabel(this);
         work_[i] = new MeasuredLabel(this);
-        units_[i] = new QLabel(this);
+        units_[i] = new MeasuredLabel(this);
         units_[i]->setProperty("droUnit", true);
         for (QLabel* value : {machine_[i], work_[i]}) {
             value->setProperty("smallDro", true);

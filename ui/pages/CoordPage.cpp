@@ -3,6 +3,7 @@
 #include "ui/i18n/PanelText.h"
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/WrappedLabel.h"
 
 #include <QHeaderView>
@@ -38,7 +39,7 @@ CoordPage::CoordPage(PanelContext& context, QWidget* parent) : Page(context, par
             table_->setItem(row, col, item);
         }
     }
-    step_ = new QLabel(this);
+    step_ = new MeasuredLabel(this);
     step_->setObjectName("coordStep");
     help_ = new WrappedLabel(this);
     help_->setObjectName("pageHelp");

@@ -1,4 +1,5 @@
 #include "ui/pages/IoPage.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/PanelTable.h"
 
 #include "core/controller/ParameterWrites.h"
@@ -23,7 +24,7 @@ namespace {
 enum Column { Lamp, Name, Enable, Pin, Polarity, ColumnCount };
 
 QLabel* lamp(QWidget* parent, const QString& text) {
-    auto* label = new QLabel(text, parent);
+    auto* label = new MeasuredLabel(text, parent);
     label->setAlignment(Qt::AlignCenter);
     label->setMinimumWidth(40);
     label->setStyleSheet(QStringLiteral("background:#1b2029;color:#9fb4d0;border:1px solid #3a4250;"));
@@ -52,8 +53,8 @@ IoPage::IoPage(PanelContext& context, QWidget* parent) : Page(context, parent) {
     column->addWidget(table_, 1);
     auto* lamps = new QGridLayout;
     lamps->setSpacing(2);
-    inputsTitle_ = new QLabel(this);
-    outputsTitle_ = new QLabel(this);
+    inputsTitle_ = new MeasuredLabel(this);
+    outputsTitle_ = new MeasuredLabel(this);
     lamps->addWidget(inputsTitle_, 0, 0, 1, 12);
     for (int pin = 1; pin <= 24; ++pin) {
         QLabel* l = lamp(this, QStringLiteral("IN%1").arg(pin, 2, 10, QLatin1Char('0')));

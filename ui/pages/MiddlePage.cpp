@@ -2,6 +2,7 @@
 
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/WrappedLabel.h"
 
 #include <QJsonObject>
@@ -25,7 +26,7 @@ MiddlePage::MiddlePage(PanelContext& context, QWidget* parent) : Page(context, p
     setObjectName("middlePage");
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(8, 8, 8, 8);
-    values_ = new QLabel(this);
+    values_ = new MeasuredLabel(this);
     values_->setObjectName("middleValues");
     values_->setStyleSheet(QStringLiteral("font-family: 'DejaVu Sans Mono', 'WenQuanYi Micro Hei Mono', monospace; font-size: 13pt;"));
     help_ = new WrappedLabel(this);

@@ -46,9 +46,9 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
     auto* dro = new QGridLayout;
     dro->setHorizontalSpacing(10);
     dro->setVerticalSpacing(2); // the rows' room goes to the digits (DroLabel), 800x480 included
-    axisHeader_ = new QLabel(this);
-    machineHeader_ = new QLabel(this);
-    workHeader_ = new QLabel(this);
+    axisHeader_ = new MeasuredLabel(this);
+    machineHeader_ = new MeasuredLabel(this);
+    workHeader_ = new MeasuredLabel(this);
     for (QLabel* header : {axisHeader_, machineHeader_, workHeader_}) {
         header->setObjectName("droHeader");
         header->setAlignment(Qt::AlignCenter);
@@ -57,7 +57,7 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
     dro->addWidget(machineHeader_, 0, 1);
     dro->addWidget(workHeader_, 0, 2);
     for (int axis = 0; axis < 5; ++axis) {
-        axisName_[axis] = new QLabel(this);
+        axisName_[axis] = new MeasuredLabel(this);
         axisName_[axis]->setObjectName(QStringLiteral("droAxis%1").arg(axis));
         machine_[axis] = new DroLabel(this);
         machine_[axis]->setObjectName(QStringLiteral("droMachine%1").arg(axis));
@@ -67,7 +67,7 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
             value->setProperty("dro", true);
             value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         }
-        unit_[axis] = new QLabel(this);
+        unit_[axis] = new MeasuredLabel(this);
         unit_[axis]->setObjectName(QStringLiteral("droUnit%1").arg(axis));
         unit_[axis]->setProperty("droUnit", true);
         axisName_[axis]->setProperty("droAxis", true);
@@ -83,7 +83,7 @@ MonitorPage::MonitorPage(PanelContext& context, QWidget* parent) : Page(context,
     info->setVerticalSpacing(1);
     int line = 0;
     for (const QString& name : infoNames()) {
-        auto* caption = new QLabel(this);
+        auto* caption = new MeasuredLabel(this);
         caption->setObjectName("infoCaption");
         info->addWidget(caption, line, 0);
         info->addWidget(infoLabel(name), line, 1);

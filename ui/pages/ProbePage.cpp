@@ -2,6 +2,7 @@
 
 #include "ui/pages/CompactDro.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/WrappedLabel.h"
 
 #include <QGridLayout>
@@ -47,8 +48,8 @@ ProbePage::ProbePage(PanelContext& context, QWidget* parent) : Page(context, par
     fields->setContentsMargins(6, 2, 6, 2);
     int row = 0;
     for (const char* name : {"coord", "tool", "thickness", "x", "y", "z"}) {
-        auto* caption = new QLabel(this);
-        auto* value = new QLabel(this);
+        auto* caption = new MeasuredLabel(this);
+        auto* value = new MeasuredLabel(this);
         value->setObjectName(QStringLiteral("probe_") + name);
         value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         value->setProperty("dro", false);
@@ -65,7 +66,7 @@ ProbePage::ProbePage(PanelContext& context, QWidget* parent) : Page(context, par
     offsets->setVerticalSpacing(0);
     offsets->setContentsMargins(6, 2, 6, 2);
     for (int tool = 1; tool <= kSelectable; ++tool) {
-        auto* label = new QLabel(this);
+        auto* label = new MeasuredLabel(this);
         label->setObjectName(QStringLiteral("probeOffsetT%1").arg(tool));
         label->setStyleSheet(QStringLiteral("font-family: 'DejaVu Sans Mono', monospace;"));
         offsets_[static_cast<std::size_t>(tool - 1)] = label;
@@ -81,7 +82,7 @@ ProbePage::ProbePage(PanelContext& context, QWidget* parent) : Page(context, par
     auto* gridLayout = new QGridLayout(gridBox_);
     gridLayout->setContentsMargins(0, 2, 0, 2);
     gridLayout->setVerticalSpacing(2);
-    gridTitle_ = new QLabel(gridBox_);
+    gridTitle_ = new MeasuredLabel(gridBox_);
     gridLayout->addWidget(gridTitle_, 0, 0, 1, 8);
     for (int tool = 1; tool <= kSelectable; ++tool) {
         auto* b = new QPushButton(QStringLiteral("T%1").arg(tool), gridBox_);

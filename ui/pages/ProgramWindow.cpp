@@ -1,6 +1,7 @@
 #include "ui/pages/ProgramWindow.h"
 
 #include "ui/program/SourceFile.h"
+#include "ui/widgets/MeasuredLabel.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -19,7 +20,7 @@ constexpr auto kMdiName = "MDI"; // what a run of MDI lines names its file (cont
 
 // Long lines are cut at the window's edge, never widen the Monitor.
 QLabel* rowLabel(QWidget* parent, const char* name) {
-    auto* label = new QLabel(parent);
+    auto* label = new MeasuredLabel(parent);
     label->setObjectName(QLatin1String(name));
     label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     label->setTextFormat(Qt::PlainText);

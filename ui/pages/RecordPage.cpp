@@ -3,6 +3,7 @@
 #include "ui/i18n/Language.h"
 #include "ui/pages/PageId.h"
 #include "ui/pages/PanelContext.h"
+#include "ui/widgets/MeasuredLabel.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -27,7 +28,7 @@ RecordPage::RecordPage(PanelContext& context, QWidget* parent) : Page(context, p
     setObjectName("recordPage");
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(8, 8, 8, 8);
-    record_ = new QLabel(this);
+    record_ = new MeasuredLabel(this);
     record_->setObjectName("workRecord");
     record_->setStyleSheet(QStringLiteral("font-size: 13pt;"));
     column->addWidget(record_);

@@ -6,6 +6,7 @@
 #include "ui/pages/LevelPrompt.h"
 #include "ui/pages/PanelContext.h"
 #include "ui/session/UserAccess.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/WrappedLabel.h"
 
 #include <QDirIterator>
@@ -33,7 +34,7 @@ SystemPage::SystemPage(PanelContext& context, QWidget* parent) : Page(context, p
     grid->setVerticalSpacing(10);
     int row = 0;
     for (const char* name : kFields) {
-        auto* caption = new QLabel(this);
+        auto* caption = new MeasuredLabel(this);
         caption->setObjectName("infoCaption");
         auto* field = new WrappedLabel(this);
         field->setObjectName(QStringLiteral("system_%1").arg(QLatin1String(name)));

@@ -1,4 +1,5 @@
 #include "ui/panel/PromptBox.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/WrappedLabel.h"
 
 #include <QFrame>
@@ -24,7 +25,7 @@ PromptBox::PromptBox(QWidget* parent) : QWidget(parent) {
     question_->setObjectName("promptQuestion");
     edit_ = new QLineEdit(frame_);
     edit_->setObjectName("promptText");
-    hint_ = new QLabel(frame_);
+    hint_ = new MeasuredLabel(frame_);
     hint_->setObjectName("promptHint");
     layout->addWidget(question_);
     layout->addWidget(edit_);

@@ -2,6 +2,7 @@
 
 #include "ui/program/GcodeHighlighter.h"
 #include "ui/program/ProgramChecker.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/WrappedLabel.h"
 
 #include <QFileInfo>
@@ -16,7 +17,7 @@ ProgramEditor::ProgramEditor(const gcode::Dialect& dialect, std::vector<config::
     : QWidget(parent) {
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(0, 0, 0, 0);
-    title_ = new QLabel(this);
+    title_ = new MeasuredLabel(this);
     title_->setObjectName("editorTitle");
     view_ = new CodeView(dialect, this);
     findings_ = new WrappedLabel(this);

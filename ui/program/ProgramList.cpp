@@ -1,4 +1,5 @@
 #include "ui/program/ProgramList.h"
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/PanelTable.h"
 
 #include <QDir>
@@ -15,14 +16,14 @@ namespace m350::ui {
 ProgramList::ProgramList(QWidget* parent) : QWidget(parent) {
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(0, 0, 0, 0);
-    header_ = new QLabel(this);
+    header_ = new MeasuredLabel(this);
     header_->setObjectName("programHeader");
     header_->setTextInteractionFlags(Qt::NoTextInteraction);
     table_ = makePanelTable(this, 3, "programFiles", 24);
     table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
-    footer_ = new QLabel(this);
+    footer_ = new MeasuredLabel(this);
     footer_->setObjectName("programFooter");
     column->addWidget(header_);
     column->addWidget(table_, 1);

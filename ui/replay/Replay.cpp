@@ -284,7 +284,14 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
             layouts->catchUp();
         }
         window.dispatcher().dispatch(action);
-        if (action.kind != OperatorAction::Kind::Wait) { // time passing asks nothing of the machine
+        if (action.kind == OperatorAction::Kind::Wait) {
+            continue; // time passing asks nothing of the machine
+        }
+        if (i + 1 < actions.size() && actions[i + 1].t > action.t + 1e-9 && session.unchangedSinceSnapshot()) {
+            // an action on the screen alone (a page, a list, a menu): the machine's snapshot stands,
+            // and the time before the next action ends in a new one, as a snapshot now would
+            QCoreApplication::processEvents();
+        } else {
             settle(session);
         }
     }

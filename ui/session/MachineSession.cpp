@@ -26,7 +26,9 @@ MachineSession::MachineSession(config::MachineConfig config, Options options, QO
             emit snapshotReady(snapshot);
         },
         Qt::QueuedConnection);
-    if (!panelThread_) {
+    if (panelThread_) {
+        connect(worker_, &SessionWorker::published, this, [this] { callsAtSnapshot_ = calls_; }, Qt::DirectConnection);
+    } else {
         worker_->moveToThread(&thread_);
         thread_.setObjectName("machine");
         thread_.start();
@@ -55,10 +57,12 @@ MachineSession::~MachineSession() {
 }
 
 void MachineSession::post(std::function<void(SessionWorker&)> call) {
+    ++calls_;
     QMetaObject::invokeMethod(worker_, [w = worker_, call = std::move(call)] { call(*w); }, Qt::QueuedConnection);
 }
 
 void MachineSession::runNow(const std::function<void(SessionWorker&)>& call) {
+    ++calls_;
     if (panelThread_) {
         QCoreApplication::sendPostedEvents(worker_, QEvent::MetaCall); // what was posted before, in order
         call(*worker_);

@@ -151,6 +151,10 @@ public:
     double advanceWhileQuiet(double seconds, bool publishAtEnd = true);
     // Waits until every call queued so far has run (replays and tests).
     void sync();
+    // With the machine in the panel's thread: whether no call has reached the machine since its
+    // last snapshot, so that a snapshot now would say the same. False with the machine in its own
+    // thread (its clock publishes on its own there).
+    bool unchangedSinceSnapshot() const { return panelThread_ && calls_ == callsAtSnapshot_; }
     // Runs `look` on the controller in its thread after every call queued so far, and waits: how a
     // training attempt's end is read for grading (core/training/FactsFromController.h).
     void examine(const std::function<void(controller::Controller&)>& look);
@@ -166,6 +170,8 @@ private:
     void runNow(const std::function<void(SessionWorker&)>& call);
     QThread thread_;
     bool panelThread_ = false;
+    std::uint64_t calls_ = 0;           // calls that reached the worker (posted or run)
+    std::uint64_t callsAtSnapshot_ = 0; // calls_ when the worker last published (panel thread only)
     SessionWorker* worker_ = nullptr;
     SnapshotPtr latest_;
     UserAccess access_;

@@ -2,6 +2,7 @@
 
 #include "ui/actions/OperatorAction.h"
 #include "ui/training/ReviewPlayback.h"
+#include "ui/widgets/MeasuredLabel.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -39,13 +40,13 @@ ReviewBar::ReviewBar(ReviewPlayback& playback, QWidget* parent) : QWidget(parent
     slower_ = reviewButton(this, "reviewSlower");
     faster_ = reviewButton(this, "reviewFaster");
     view_ = reviewButton(this, "reviewView");
-    speed_ = new QLabel(this);
+    speed_ = new MeasuredLabel(this);
     speed_->setObjectName("reviewSpeed");
     speed_->setAlignment(Qt::AlignCenter);
     speed_->setMinimumWidth(speed_->fontMetrics().horizontalAdvance(QStringLiteral("50x ")));
-    time_ = new QLabel(this);
+    time_ = new MeasuredLabel(this);
     time_->setObjectName("reviewTime");
-    next_ = new QLabel(this);
+    next_ = new MeasuredLabel(this);
     next_->setObjectName("reviewNext");
     next_->setTextFormat(Qt::PlainText);
     next_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred); // a long text is cut, never widens the window

@@ -2,6 +2,7 @@
 
 #include "ui/program/CodeView.h"
 #include "ui/program/SourceFile.h"
+#include "ui/widgets/MeasuredLabel.h"
 
 #include <QDir>
 #include <QEvent>
@@ -27,10 +28,10 @@ RunningProgramView::RunningProgramView(const gcode::Dialect& dialect, QString ma
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(4, 2, 4, 2);
     column->setSpacing(2);
-    caption_ = new QLabel(this);
+    caption_ = new MeasuredLabel(this);
     caption_->setObjectName("reviewProgramCaption");
     caption_->setTextFormat(Qt::PlainText);
-    machine_ = new QLabel(this);
+    machine_ = new MeasuredLabel(this);
     machine_->setObjectName("reviewProgramMachine");
     machine_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     auto* top = new QHBoxLayout;

@@ -13,6 +13,7 @@ constexpr QSize kNotMeasured{-1, -1};
 } // namespace
 
 MeasuredLabel::MeasuredLabel(QWidget* parent) : QLabel(parent) {}
+MeasuredLabel::MeasuredLabel(const QString& text, QWidget* parent) : QLabel(text, parent) {}
 
 MeasuredLabel::Shape MeasuredLabel::shape() const {
     return {text(), static_cast<int>(textFormat()), static_cast<int>(alignment()), wordWrap(), indent(), margin(),

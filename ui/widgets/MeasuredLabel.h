@@ -19,6 +19,7 @@ class MeasuredLabel : public QLabel {
     Q_OBJECT
 public:
     explicit MeasuredLabel(QWidget* parent = nullptr);
+    MeasuredLabel(const QString& text, QWidget* parent);
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
     int heightForWidth(int width) const override;

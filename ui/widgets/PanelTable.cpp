@@ -1,5 +1,6 @@
 #include "ui/widgets/PanelTable.h"
 
+#include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/TextSizeDelegate.h"
 
 #include <QHeaderView>
@@ -23,7 +24,7 @@ QTableWidget* makePanelTable(QWidget* parent, int columns, const char* objectNam
 }
 
 QLabel* addPanelLabel(QVBoxLayout* column, QWidget* page, const char* objectName, bool wrap) {
-    auto* label = new QLabel(page);
+    auto* label = new MeasuredLabel(page);
     label->setObjectName(objectName);
     label->setWordWrap(wrap);
     column->addWidget(label);
