@@ -1,0 +1,37 @@
+// Whether the machine could say anything new since its last snapshot: a replay skips the snapshot
+// after an action on the screen alone, so the answer must turn false at every call that reaches
+// the machine, and never be true with the machine in its own thread.
+#include "tests/ui/PanelHarness.h"
+
+namespace m350::test {
+
+TEST(SessionSnapshot, UnchangedOnlyUntilACallReachesTheMachineInThePanelsThread) {
+    ui::MachineSession::Options options;
+    options.clock = ui::MachineSession::Clock::Manual;
+    options.panelThread = true;
+    PanelHarness panel(options);
+    ui::settle(panel.session());
+    EXPECT_TRUE(panel.session().unchangedSinceSnapshot());
+    panel.page(QStringLiteral("param")); // the screen alone
+    EXPECT_TRUE(panel.session().unchangedSinceSnapshot());
+    panel.session().setJogStep(0.1); // reaches the machine: a snapshot now would say so
+    EXPECT_FALSE(panel.session().unchangedSinceSnapshot());
+    panel.session().sync();
+    EXPECT_TRUE(panel.session().unchangedSinceSnapshot());
+    panel.session().advance(1.0 / 60.0); // a frame passes and publishes
+    EXPECT_TRUE(panel.session().unchangedSinceSnapshot());
+    panel.key(QStringLiteral("FRO_UP"));
+    EXPECT_TRUE(panel.session().unchangedSinceSnapshot()) << "settled: the key's snapshot came";
+    panel.window().dispatcher().dispatch(ui::OperatorAction::key(QStringLiteral("FRO_DOWN")));
+    EXPECT_FALSE(panel.session().unchangedSinceSnapshot()) << "the key's call is queued, not yet shown";
+}
+
+TEST(SessionSnapshot, NeverUnchangedWithTheMachineInItsOwnThread) {
+    ui::MachineSession::Options options;
+    options.clock = ui::MachineSession::Clock::Manual;
+    PanelHarness panel(options);
+    ui::settle(panel.session());
+    EXPECT_FALSE(panel.session().unchangedSinceSnapshot());
+}
+
+} // namespace m350::test
