@@ -30,9 +30,10 @@ constexpr int kUnitMaxWidth = 110;
 constexpr int kFirstVariable = 50;
 constexpr int kLastVariable = 499;
 
-QString localName(const std::string& zh, const std::string& en) {
-    return QString::fromStdString(PanelText::chinese() && !zh.empty() ? zh : en);
+QString localName(const std::string& zh, const std::string& en, bool chinese) {
+    return QString::fromStdString(chinese && !zh.empty() ? zh : en);
 }
+QString localName(const std::string& zh, const std::string& en) { return localName(zh, en, PanelText::chinese()); }
 
 } // namespace
 
@@ -197,17 +198,24 @@ void ParamPage::showCategory(std::size_t category) {
     category_ = category;
     const auto& numbers = pages_->categories()[category].numbers;
     table_->clearContents();
+    const bool chinese = PanelText::chinese();
     { // the fitted columns measured once, at the end of this block
         const TableFill filling(table_);
         table_->setRowCount(static_cast<int>(numbers.size()));
         for (int row = 0; row < table_->rowCount(); ++row) {
+            // each item whole before it goes in: a change to an item in the table is one more
+            // signal to the view (a group's rows were four signals each more than needed)
             const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
+            auto* note = new QTableWidgetItem(localName(info.nameZh, info.nameEn, chinese));
+            note->setToolTip(note->text());
+            auto* value = new QTableWidgetItem;
+            value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            auto* unit = new QTableWidgetItem(QString::fromStdString(info.unit));
+            unit->setToolTip(unit->text());
             table_->setItem(row, Number, new QTableWidgetItem(QString::number(info.number)));
-            table_->setItem(row, Note, new QTableWidgetItem);
-            table_->setItem(row, Value, new QTableWidgetItem);
-            table_->setItem(row, Unit, new QTableWidgetItem(QString::fromStdString(info.unit)));
-            table_->item(row, Unit)->setToolTip(QString::fromStdString(info.unit));
-            table_->item(row, Value)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            table_->setItem(row, Note, note);
+            table_->setItem(row, Value, value);
+            table_->setItem(row, Unit, unit);
         }
     }
     // the unit column is as wide as this group's longest unit ("pulse/mm", "mm/s^2"), the name
@@ -215,7 +223,10 @@ void ParamPage::showCategory(std::size_t category) {
     table_->resizeColumnToContents(Unit);
     table_->setColumnWidth(Unit, std::clamp(table_->columnWidth(Unit), kUnitMinWidth, kUnitMaxWidth));
     table_->selectRow(0);
-    retranslate();
+    showCaptions();
+    if (auto s = context().snapshot()) {
+        render(*s);
+    }
 }
 
 void ParamPage::showVariables(bool on) {
@@ -236,9 +247,10 @@ void ParamPage::showVariables(bool on) {
         const TableFill filling(table_);
         table_->setRowCount(kLastVariable - kFirstVariable + 1);
         for (int row = 0; row < table_->rowCount(); ++row) {
+            auto* value = new QTableWidgetItem;
+            value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             table_->setItem(row, Number, new QTableWidgetItem(QStringLiteral("#%1").arg(kFirstVariable + row)));
-            table_->setItem(row, Value, new QTableWidgetItem);
-            table_->item(row, Value)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            table_->setItem(row, Value, value);
         }
     }
     table_->selectRow(0);
@@ -292,6 +304,23 @@ void ParamPage::retranslate() {
         info_->setText(catalogueError_);
         return;
     }
+    showCaptions();
+    if (!variables_) {
+        const bool chinese = PanelText::chinese();
+        const auto& numbers = pages_->categories()[category_].numbers;
+        for (int row = 0; row < table_->rowCount(); ++row) {
+            const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
+            table_->item(row, Note)->setText(localName(info.nameZh, info.nameEn, chinese));
+            table_->item(row, Note)->setToolTip(table_->item(row, Note)->text());
+        }
+    }
+    if (auto s = context().snapshot()) {
+        render(*s);
+    }
+}
+
+// The tab and the group the table shows, above it.
+void ParamPage::showCaptions() {
     const QString factory = tr("Factory(N)", "msg 949");
     const QString user = tr("User(O)", "msg 950");
     auto mark = [](const QString& text, bool on) {
@@ -311,15 +340,6 @@ void ParamPage::retranslate() {
             }
         }
         group_->setText(QStringLiteral("◀ %1 (%2/%3) ▶").arg(groupTitle(pages_->categories()[category_].group)).arg(position).arg(count));
-        const auto& numbers = pages_->categories()[category_].numbers;
-        for (int row = 0; row < table_->rowCount(); ++row) {
-            const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
-            table_->item(row, Note)->setText(localName(info.nameZh, info.nameEn));
-            table_->item(row, Note)->setToolTip(localName(info.nameZh, info.nameEn));
-        }
-    }
-    if (auto s = context().snapshot()) {
-        render(*s);
     }
 }
 

@@ -52,6 +52,7 @@ private:
     void restore();
     // ParamPage.cpp
     void showCategory(std::size_t category);
+    void showCaptions();
     void showTab(Tab tab);
     void showVariables(bool on);
     void fillValues(const PanelSnapshot& snapshot);
