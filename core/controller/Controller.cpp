@@ -19,7 +19,7 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
       interp_(*config_.dialect, config_.parameters, offsets_, tools_, scan_), store_(*config_.dialect, config_.parameters, config_.variableLayout),
       machineEvents_({config_, settings_, machine_, magazine_, status_, toolLife_, breakage_, state_, executor_,
                       [this](double t) { interruptMotion(t, false); }}),
-      magazine_({config_, settings_, machine_, interp_, fanucSpindleTool_, machineEvents_.inputSources(),
+      magazine_({config_, settings_, machine_, interp_, handTool_.pmcRegister(), machineEvents_.inputSources(),
                  [this] { return status_.source(); }}),
       toolGuard_({*config_.dialect, config_.parameters, magazine_, executor_, [this](int number) { return variable(number); }}),
       status_({config_, machine_, interp_, magazine_, executor_, program_, diagnostics_, state_, alarm_, toolGuard_.doubt()}, settings_),
@@ -35,7 +35,7 @@ Controller::Controller(config::MachineConfig config, RunSettings settings)
                          panel_.readInput(pin, level);
                          return level;
                      },
-                     [this] { return interp_.state().selectedTool; }, [this] { return fanucSpindleTool_; },
+                     [this] { return interp_.state().selectedTool; }, [this] { return handTool_.tool(); },
                      [this] { return breakage_.spindleLoad().reg(); },
                      [this] { return toolLife_.manager().toolChangeSignal(); },
                      [this] { return toolLife_.manager().newToolSignal(); }}),
@@ -161,7 +161,7 @@ void Controller::applySettings() {
         if (config_.dialect->id == gcode::DialectId::M350) {
             config_.parameters.set(param::kCurrentTool, *settings_.tool);
         } else {
-            fanucSpindleTool_ = *settings_.tool;
+            handTool_.set(*settings_.tool);
             interp_.state().selectedTool = *settings_.tool;
         }
     }
@@ -204,7 +204,7 @@ void Controller::noteStopInChange() {
         (state_ != RunState::Running && state_ != RunState::Hold && state_ != RunState::Alarm)) {
         return;
     }
-    if (auto notice = toolGuard_.stoppedInChange(fanucSpindleTool_)) {
+    if (auto notice = toolGuard_.stoppedInChange(handTool_.tool())) {
         status_.postMessage(*notice);
     }
 }
@@ -351,8 +351,8 @@ int Controller::stepOnce(int toolBefore) {
     if (executor_->blocksExecuted() != blocksBefore) {
         machine_.blockTime(settings_.blockTime);
     }
-    if (auto changed = interp_.takeToolChange()) [[unlikely]] {
-        takeToolChange(*changed);
+    if (auto changed = interp_.takeToolChange(); changed && !magazine_.device()) [[unlikely]] {
+        handTool_.take(*changed);
     }
     if (interp_.hasReloadIssues()) [[unlikely]] {
         for (std::string& issue : interp_.takeReloadIssues()) {
@@ -389,19 +389,6 @@ int Controller::stepOnce(int toolBefore) {
         }
     }
     return toolAfter;
-}
-
-// A FANUC M06 the interpreter ran (no changer: the operator's change by hand) or LinuxCNC's M61:
-// the spindle's tool is the one named. LinuxCNC's random changer puts the old tool into the new
-// one's pocket at M06.
-void Controller::takeToolChange(const interp::ModalInterpreter::ToolChange& change) {
-    if (magazine_.device()) {
-        return; // the magazine knows what the spindle holds
-    }
-    if (!change.byHand && config_.randomToolChanger) {
-        tools_.swapPockets(fanucSpindleTool_, change.tool);
-    }
-    fanucSpindleTool_ = change.tool;
 }
 
 void Controller::stopForOperator(const interp::ModalInterpreter::OperatorStop& stop) {

@@ -25,6 +25,7 @@
 #include "core/controller/MachineEventRouter.h"
 #include "core/controller/MagazineDriver.h"
 #include "core/controller/ToolBreakage.h"
+#include "core/controller/SpindleToolByHand.h"
 #include "core/controller/SpindleToolGuard.h"
 #include "core/controller/ToolLifeCounter.h"
 #include "core/controller/ToolTableEdits.h"
@@ -233,7 +234,6 @@ public:
 private:
     // A RESET, an E-stop or an alarm stops the run inside a tool change: the spindle's tool is in doubt.
     void noteStopInChange();
-    void takeToolChange(const interp::ModalInterpreter::ToolChange& change);
     bool load(const gcode::SourceText& source, gcode::FileRole role);
     void applyParameterOverrides(); // --param, before anything reads the parameters
     void applySettings();
@@ -285,7 +285,6 @@ private:
     mutable LibraryCache libraries_; // parseWithLibraries
     std::vector<gcode::Diagnostic> diagnostics_;
     std::unique_ptr<macro::Executor> executor_;
-    int fanucSpindleTool_ = 0;
     double feedOverride_ = 100.0;
     double runStartedAt_ = 0.0;
     std::uint64_t runMovesFrom_ = 0; // the machine's movesMade() when the run started
@@ -302,6 +301,7 @@ private:
     HoldMotion holdMotion_{machine_, config_.parameters}; // what a hold cut short, lifted, stopped
     ProgramStop programStop_;                        // see programStop()
     MachineEventRouter machineEvents_; // the machine's observer; before magazine_, which writes its input sources
+    SpindleToolByHand handTool_{tools_, config_.randomToolChanger}; // the spindle's tool where no magazine device knows it
     MagazineDriver magazine_; // the magazine device and its wiring (none when the folder has none)
     SpindleToolGuard toolGuard_; // the T words, the doubt after a stop in a change, unset lengths; before status_
     StatusBoard status_;      // before devices_, which writes to its trace

@@ -23,7 +23,7 @@ bool Controller::setSpindleToolNumber(int tool) {
     if (config_.dialect->id == gcode::DialectId::M350) {
         config_.parameters.set(param::kCurrentTool, tool);
     } else {
-        fanucSpindleTool_ = tool;
+        handTool_.set(tool);
     }
     syncToolLength();
     toolGuard_.confirmed();
