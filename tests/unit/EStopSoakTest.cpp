@@ -3,6 +3,7 @@
 // a multi-process machine in its own place), every output is in its safe state, RESET clears the
 // alarm, and the next change runs without an alarm; after the last stop a change runs to its end.
 #include "RunProgram.h"
+#include "Sanitized.h"
 
 #include "core/params/IoPorts.h"
 
@@ -20,19 +21,8 @@ namespace {
 using namespace m350;
 using controller::Controller;
 
-#if defined(__SANITIZE_ADDRESS__)
-#define M350_SOAK_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define M350_SOAK_UNDER_ASAN 1
-#endif
-#endif
-
-#ifdef M350_SOAK_UNDER_ASAN
-constexpr int kStops = 200; // ASan/UBSan Debug runs each stop ~13x slower: 200 stops take ~5 s for all six
-#else
-constexpr int kStops = 1000;
-#endif
+// ASan/UBSan Debug runs each stop ~13x slower: 200 stops take ~5 s for all six
+constexpr int kStops = m350::test::kSanitized ? 200 : 1000;
 constexpr unsigned kSeed = 20261124;
 constexpr double kLongestStopSeconds = 30.0; // the slowest bundled change takes about 18 s
 
