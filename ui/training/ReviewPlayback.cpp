@@ -51,6 +51,11 @@ bool ReviewPlayback::stepBlock() {
 double ReviewPlayback::run(double budget, const std::function<bool()>& stop) {
     double passed = 0.0;
     window_.holdRendering(true); // the panel shows the last frame of a call, not each of them
+    // and nothing paints before the call ends: at 50x a tick is 50 frames, each of which painted
+    // the review's views (half of a review's CPU time)
+    QWidget* screen = window_.window();
+    const bool painting = screen->updatesEnabled();
+    screen->setUpdatesEnabled(false);
     while (!finished()) {
         const OperatorAction& action = actions_[next_];
         if (now_ + 1e-9 >= action.t) {
@@ -85,6 +90,7 @@ double ReviewPlayback::run(double budget, const std::function<bool()>& stop) {
         }
     }
     window_.holdRendering(false);
+    screen->setUpdatesEnabled(painting);
     settle(session_);
     return passed;
 }
