@@ -13,26 +13,12 @@ core_layers=(common files params gcode machine macro tools interp check devices 
 ui_layers=(i18n session widgets view program pages actions panel replay training)
 app_layers=(sim hmi)
 
-rank_of() { # LIST... -- NAME: the index of NAME in LIST, or nothing
-    local name="${*: -1}" i=0
-    for layer in "${@:1:$#-2}"; do
-        [[ "$layer" == "$name" ]] && { echo "$i"; return; }
-        i=$((i + 1))
-    done
-}
-
-# part rank: core 0, ui 1, app 2; a file may include only parts at or below its own.
-part_rank() {
-    case "$1" in core) echo 0 ;; ui) echo 1 ;; app) echo 2 ;; *) echo "" ;; esac
-}
-
-layer_rank() { # PART FOLDER
-    case "$1" in
-    core) rank_of "${core_layers[@]}" -- "$2" ;;
-    ui) rank_of "${ui_layers[@]}" -- "$2" ;;
-    app) rank_of "${app_layers[@]}" -- "$2" ;;
-    esac
-}
+# Ranks by name, looked up without a subshell: the tree has thousands of include lines.
+declare -A part_rank=([core]=0 [ui]=1 [app]=2)
+declare -A layer_rank # PART/FOLDER -> its index in PART's list
+for i in "${!core_layers[@]}"; do layer_rank["core/${core_layers[$i]}"]=$i; done
+for i in "${!ui_layers[@]}"; do layer_rank["ui/${ui_layers[$i]}"]=$i; done
+for i in "${!app_layers[@]}"; do layer_rank["app/${app_layers[$i]}"]=$i; done
 
 failures=0
 complain() {
@@ -45,27 +31,30 @@ for part in core ui app; do
     for dir in "$root/$part"/*/; do
         folder=$(basename "$dir")
         [[ -n "$(find "$dir" -name '*.h' -o -name '*.cpp' | head -1)" ]] || continue
-        [[ -n "$(layer_rank "$part" "$folder")" ]] ||
+        [[ -n "${layer_rank[$part/$folder]:-}" ]] ||
             complain "$part/$folder is in no layer list of scripts/check-layers.sh: give it its place"
     done
+    include_line='^([^:]+):([0-9]+):[^"]*"([^"]+)"'
     while IFS= read -r hit; do
-        file="${hit%%:*}"
-        rest="${hit#*:}"
-        line="${rest%%:*}"
-        target=$(sed -E 's/^[^"]*"([^"]+)".*/\1/' <<<"${rest#*:}")
+        [[ "$hit" =~ $include_line ]] || continue
+        file="${BASH_REMATCH[1]}"
+        line="${BASH_REMATCH[2]}"
+        target="${BASH_REMATCH[3]}"
         relative="${file#"$root"/}"
         from_part="${relative%%/*}"
-        from_folder=$(cut -d/ -f2 <<<"$relative")
+        from_rest="${relative#*/}"
+        from_folder="${from_rest%%/*}"
         to_part="${target%%/*}"
-        to_folder=$(cut -d/ -f2 <<<"$target")
-        [[ -n "$(part_rank "$to_part")" ]] || continue
-        if (($(part_rank "$to_part") > $(part_rank "$from_part"))); then
+        to_rest="${target#*/}"
+        to_folder="${to_rest%%/*}"
+        [[ -n "${part_rank[$to_part]:-}" ]] || continue
+        if ((part_rank[$to_part] > part_rank[$from_part])); then
             complain "$relative:$line: $from_part/ includes $target: $to_part/ is above $from_part/"
             continue
         fi
         [[ "$to_part" == "$from_part" ]] || continue
-        from_rank=$(layer_rank "$from_part" "$from_folder")
-        to_rank=$(layer_rank "$to_part" "$to_folder")
+        from_rank="${layer_rank[$from_part/$from_folder]:-}"
+        to_rank="${layer_rank[$to_part/$to_folder]:-}"
         [[ -n "$from_rank" && -n "$to_rank" ]] || continue
         if ((to_rank > from_rank)); then
             complain "$relative:$line: $from_part/$from_folder includes $target: $to_part/$to_folder is above it"
