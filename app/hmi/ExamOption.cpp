@@ -9,8 +9,7 @@ namespace m350::hmi {
 std::optional<std::string> readExamOption(const std::string& file, const ui::Language& language, training::Exam* exam) {
     auto loaded = training::loadExam(file);
     if (auto* error = std::get_if<training::ExerciseError>(&loaded)) {
-        const MessageLanguage said = language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
-        return error->where() + ": " + error->words.in(said);
+        return error->where() + ": " + error->words.in(language.spoken());
     }
     *exam = std::get<training::Exam>(loaded);
     return std::nullopt;

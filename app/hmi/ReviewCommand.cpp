@@ -25,12 +25,6 @@ namespace m350::hmi {
 
 namespace {
 
-// A message of the table in the panel's language.
-QString saidIn(const ui::Language& language, const Message& words) {
-    return QString::fromStdString(
-        words.in(language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese));
-}
-
 
 int refuse(const QString& message) {
     std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
@@ -45,7 +39,7 @@ int reviewCommand(QApplication& app, const HmiOptions& o, ui::Language& language
     if (request.exerciseFolder.isEmpty()) {
         const QString named = ui::attemptHeader(QString::fromStdString(o.review)).first;
         if (named.isEmpty() || named.contains(QLatin1Char('/')) || named.contains(QStringLiteral(".."))) {
-            return refuse(saidIn(language, message("review_no_exercise", {o.review})));
+            return refuse(language.say(message("review_no_exercise", {o.review})));
         }
         request.exerciseFolder = QDir(QString::fromStdString(o.exercises.empty() ? training::bundledExercisesDirectory() : o.exercises))
                                      .filePath(named);
@@ -87,7 +81,7 @@ int reviewCommand(QApplication& app, const HmiOptions& o, ui::Language& language
         QBuffer buffer(&png);
         buffer.open(QIODevice::WriteOnly);
         if (!window->grab().save(&buffer, screenshotFormat(o.screenshot)->constData())) {
-            return refuse(saidIn(language, message("hmi_image_failed", {o.screenshot})));
+            return refuse(language.say(message("hmi_image_failed", {o.screenshot})));
         }
         if (auto failed = writeOutput(o.screenshot, png)) {
             return refuse(QStringLiteral("--screenshot: %1").arg(*failed));

@@ -30,12 +30,6 @@ namespace m350::hmi {
 
 namespace {
 
-// A message of the table in the panel's language.
-QString saidIn(const ui::Language& language, const Message& words) {
-    return QString::fromStdString(
-        words.in(language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese));
-}
-
 
 int failWith(const QString& message) {
     std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
@@ -50,7 +44,7 @@ QString playAttempt(ui::TrainingWindow& window, const HmiOptions& o, const QByte
     const auto found = std::find_if(exercises.begin(), exercises.end(),
                                     [&](const training::Exercise& e) { return QString::fromStdString(e.name) == exerciseName; });
     if (found == exercises.end()) {
-        return saidIn(language, message("training_not_an_exercise", {o.exercise, window.problems().join(QStringLiteral("; ")).toStdString()}));
+        return language.say(message("training_not_an_exercise", {o.exercise, window.problems().join(QStringLiteral("; ")).toStdString()}));
     }
     window.startPage()->select(static_cast<int>(found - exercises.begin()));
     QFile toml(QDir(QString::fromStdString(found->folder)).filePath(QString::fromLatin1(training::kExerciseFileName)));
@@ -100,7 +94,7 @@ int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& langua
                                                  : QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
                                                      QStringLiteral("/training");
     if (!QDir().mkpath(options.attemptsFolder)) {
-        return failWith(saidIn(language, message("training_attempts_folder", {options.attemptsFolder.toStdString()})));
+        return failWith(language.say(message("training_attempts_folder", {options.attemptsFolder.toStdString()})));
     }
     if (!o.exam.empty()) {
         training::Exam exam;
@@ -118,7 +112,7 @@ int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& langua
     }
     if (!o.replay.empty()) {
         if (o.exercise.empty()) {
-            return failWith(saidIn(language, message("training_replay_needs_exercise")));
+            return failWith(language.say(message("training_replay_needs_exercise")));
         }
         if (QString error = playAttempt(window, o, options.exam ? QByteArray::fromStdString(options.exam->key) : QByteArray(), language);
             !error.isEmpty()) {
@@ -134,7 +128,7 @@ int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& langua
         QBuffer buffer(&png);
         buffer.open(QIODevice::WriteOnly);
         if (!window.grab().save(&buffer, screenshotFormat(o.screenshot)->constData())) {
-            return failWith(saidIn(language, message("hmi_image_failed", {o.screenshot})));
+            return failWith(language.say(message("hmi_image_failed", {o.screenshot})));
         }
         if (auto error = writeOutput(o.screenshot, png)) {
             return failWith(QStringLiteral("--screenshot: %1").arg(*error));

@@ -1,4 +1,5 @@
 #include "app/sim/ImportCommand.h"
+#include "app/sim/ExitStatus.h"
 
 #include "app/sim/ReportJson.h"
 
@@ -11,9 +12,6 @@
 namespace m350::sim {
 
 namespace {
-
-constexpr int kExitOk = 0;
-constexpr int kExitError = 2;
 
 std::vector<std::string> english(const std::vector<Message>& messages) {
     std::vector<std::string> texts;

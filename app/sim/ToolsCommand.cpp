@@ -1,4 +1,5 @@
 #include "app/sim/ToolsCommand.h"
+#include "app/sim/ExitStatus.h"
 
 #include "app/sim/ReportJson.h"
 
@@ -14,9 +15,6 @@
 namespace m350::sim {
 
 namespace {
-
-constexpr int kExitOk = 0;
-constexpr int kExitError = 2;
 
 nlohmann::json optional(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 

@@ -1,5 +1,6 @@
 // m350-sim: the headless simulator. Exit status: 0 ok, 1 alarm, 2 error (syntax, file, config),
 // 64 usage.
+#include "app/sim/ExitStatus.h"
 #include "app/sim/HookCommand.h"
 #include "app/sim/ImportCommand.h"
 #include "app/sim/OutputPaths.h"
@@ -31,11 +32,11 @@
 
 namespace {
 
-constexpr int kExitOk = 0;
-constexpr int kExitAlarm = 1;
-constexpr int kExitError = 2;
-
 using namespace m350;
+using sim::kExitAlarm;
+using sim::kExitError;
+using sim::kExitOk;
+using sim::kExitUsage;
 
 std::string machineFolder(const sim::SimOptions& o) {
     if (!o.configDir.empty()) {
@@ -230,7 +231,7 @@ int runCommand(int argc, char** argv) {
                                                   machineConfig.nameZh.empty() ? machineConfig.name : machineConfig.nameZh)},
                                        o.language)
                           << '\n';
-                return 64;
+                return kExitUsage;
             }
         }
     }
@@ -246,7 +247,7 @@ int runCommand(int argc, char** argv) {
         }
         if (auto refused = fanucParameters ? config::rebuildCallCodes(machineConfig) : std::nullopt) {
             std::cerr << "m350-sim: --param " << refused->parameter << ": " << refused->message.in(o.language) << '\n';
-            return 64;
+            return kExitUsage;
         }
     }
     if (auto error = sim::useToolTableFile(o, machineConfig)) {
@@ -273,7 +274,7 @@ int runCommand(int argc, char** argv) {
     }
     if (auto refused = sim::outputNamingAnInput(o, machineConfig)) {
         std::cerr << "m350-sim: " << refused->in(o.language) << '\n';
-        return 64;
+        return kExitUsage;
     }
     std::unique_ptr<files::OutputFile> trace;
     if (o.traceFile) {
@@ -287,11 +288,11 @@ int runCommand(int argc, char** argv) {
     if (o.command != sim::SimOptions::Command::Check) {
         if (auto problem = checkAgainstMachine(o, machineConfig)) {
             std::cerr << "m350-sim: " << problem->in(o.language) << "\n";
-            return 64;
+            return kExitUsage;
         }
         if (auto problem = sim::missingHook(o, machineConfig)) {
             std::cerr << "m350-sim: " << problem->in(o.language) << "\n";
-            return 64;
+            return kExitUsage;
         }
     }
     const std::vector<tools::LifeFileIssue> lifeIssues = machineConfig.toolLifeIssues;
@@ -314,7 +315,7 @@ int runCommand(int argc, char** argv) {
             std::cerr << "m350-sim: "
                       << messageText("usage_confirm_refused", {"--confirm-tool " + std::to_string(*o.confirmTool)}, o.language)
                       << '\n';
-            return 64;
+            return kExitUsage;
         }
         report = controller.status().report();
     }

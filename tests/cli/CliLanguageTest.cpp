@@ -202,8 +202,8 @@ TEST_F(CliTest, CheckAndRunRefuseWrongModbusArguments) {
     write("bad.nc", "MSETDATA[1,8192,3000]\nMGETDATA[10,1,0,4,3,300]\nMGETDATA[498,1,0,4,3,300]\n"
                     "MSETDATA[200,1,0,4,3,300]\nMGETDATA[200,1,0,4,3]\nM30\n");
     const char* findings[] = {
-        "bad.nc:1:1: MSETDATA[slave, register, value] was this simulator's own form, not the firmware's: the M350 "
-        "takes six arguments, MSETDATA[first variable, slave, register, bytes, function, exception variable]",
+        ("bad.nc:1:1: MSETDATA[slave, register, value] was this simulator's own form, not the firmware's: the M350 "
+         "takes six arguments, MSETDATA[first variable, slave, register, bytes, function, exception variable]"),
         "bad.nc:2:10: MGETDATA: the first variable (X1) must be a whole number from 50 to 499, not 10",
         "bad.nc:3:18: MGETDATA: X4 = 4 bytes from #498 reach #501: the Modbus statements' variables end at #499",
         "bad.nc:4:20: MSETDATA: the Modbus function (X5) of MSETDATA is 16 (write registers) or 15 (write coils), not 3",

@@ -1,5 +1,6 @@
 // Issue 13: running out of memory ends in an exit status and a JSON error, never an abort.
 #include "tests/cli/CliFixture.h"
+#include "tests/support/Sanitized.h"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +9,9 @@
 namespace m350::clitest {
 
 TEST_F(CliTest, RunningOutOfMemoryIsAJsonErrorNotAnAbort) {
-#if defined(__SANITIZE_ADDRESS__)
-    GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: a 60 MB limit stops it at start";
-#else
+    if (test::kSanitized) {
+        GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: a 60 MB limit stops it at start";
+    }
     std::ostringstream program; // 400,000 lines, 13 MB: its parsed form needs about 100 MB
     for (int i = 0; i < 400000; ++i) {
         program << "G1 X" << i % 100 << ".123 Y" << (i * 7) % 100 << ".456 Z-" << i % 10 << ".789 F1000\n";
@@ -27,7 +28,6 @@ TEST_F(CliTest, RunningOutOfMemoryIsAJsonErrorNotAnAbort) {
 
     ProcessResult roomy = sim({"check", "big.nc"}); // the same program with the memory it needs
     EXPECT_EQ(roomy.exitStatus, kExitOk) << roomy.err;
-#endif
 }
 
 // A program above 64 MiB is kept in memory only in part (the chunks that loops, jumps and macro
@@ -35,9 +35,9 @@ TEST_F(CliTest, RunningOutOfMemoryIsAJsonErrorNotAnAbort) {
 // 70 MB program would need about 400 MB; here it runs in 150 MB of address space, the mapped file
 // included.
 TEST_F(CliTest, AProgramAbove64MiBRunsInBoundedMemory) {
-#if defined(__SANITIZE_ADDRESS__)
-    GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: an address-space limit stops it at start";
-#else
+    if (test::kSanitized) {
+        GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: an address-space limit stops it at start";
+    }
     std::string program;
     constexpr int kLines = 2'300'000;
     program.reserve(std::size_t{kLines} * 32);
@@ -59,7 +59,6 @@ TEST_F(CliTest, AProgramAbove64MiBRunsInBoundedMemory) {
     EXPECT_EQ(j["vars"].value("1", 0.0), 7.0) << r.out.substr(0, 2000);
     EXPECT_EQ(j["work"].value("X", 0.0), 12.5) << r.out.substr(0, 2000);
     EXPECT_EQ(j["work"].value("Y", 0.0), -3.25) << r.out.substr(0, 2000);
-#endif
 }
 
 } // namespace m350::clitest

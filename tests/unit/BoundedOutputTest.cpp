@@ -3,7 +3,7 @@
 // first and last entries and says how many were left out.
 #include "ParseSupport.h"
 #include "RunProgram.h"
-#include "Sanitized.h"
+#include "tests/support/Sanitized.h"
 
 #include "core/common/EchoText.h"
 #include "core/controller/TraceWriter.h"

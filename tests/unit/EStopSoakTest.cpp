@@ -3,7 +3,7 @@
 // a multi-process machine in its own place), every output is in its safe state, RESET clears the
 // alarm, and the next change runs without an alarm; after the last stop a change runs to its end.
 #include "RunProgram.h"
-#include "Sanitized.h"
+#include "tests/support/Sanitized.h"
 
 #include "core/params/IoPorts.h"
 

@@ -53,6 +53,20 @@ std::atomic<MessageLanguage>& chosenMessageLanguage() {
 
 } // namespace
 
+namespace {
+
+MessageLanguage messageLanguageOf(const QString& language) {
+    return language == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
+}
+
+} // namespace
+
+MessageLanguage Language::spoken() const { return messageLanguageOf(current_); }
+
+QString Language::say(const Message& words) const { return QString::fromStdString(words.in(spoken())); }
+
+MessageLanguage spokenBy(const Language* language) { return language ? language->spoken() : MessageLanguage::Chinese; }
+
 QString Language::panelLanguage() {
     return chosenLanguage();
 }
@@ -82,7 +96,7 @@ bool Language::set(const QString& language, QString* error) {
     QApplication::installTranslator(translator_.get()); // sends LanguageChange to every widget
     current_ = language;
     chosenLanguage() = language;
-    chosenMessageLanguage() = language == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
+    chosenMessageLanguage() = messageLanguageOf(language);
     return true;
 }
 

@@ -19,6 +19,10 @@ public:
     // Installs the translation; false (and a message) for an unknown language.
     bool set(const QString& language, QString* error = nullptr);
     const QString& current() const { return current_; }
+    // The message table's language that this one is (en: English, zh_CN: Chinese).
+    MessageLanguage spoken() const;
+    // A message of the table in this language.
+    QString say(const Message& words) const;
     // The language the panel says the core's messages in (AlarmText): the last one set, zh_CN
     // before any.
     static QString panelLanguage();
@@ -35,6 +39,9 @@ private:
     QString current_;
     QString cjkFamily_;
 };
+
+// The message table's language of `language`; Chinese, the panel's default, when there is none.
+MessageLanguage spokenBy(const Language* language);
 
 // The CJK families the panel prefers, best first (fonts-wqy-microhei is what scripts/deps.sh installs).
 QString findCjkFamily();

@@ -21,11 +21,7 @@ namespace m350::ui {
 
 namespace {
 
-MessageLanguage languageOf(const Language* language) {
-    return language && language->current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
-}
-
-QString said(const Message& words, const Language* language) { return QString::fromStdString(words.in(languageOf(language))); }
+QString said(const Message& words, const Language* language) { return QString::fromStdString(words.in(spokenBy(language))); }
 
 } // namespace
 

@@ -19,10 +19,6 @@ namespace m350::ui {
 
 namespace {
 
-MessageLanguage spoken(const Language* language) {
-    return language && language->current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
-}
-
 } // namespace
 
 AttemptRun::AttemptRun(Setup setup) : setup_(std::move(setup)), injected_(setup_.exercise.faults.size(), false) {}
@@ -37,7 +33,7 @@ AttemptRun::~AttemptRun() {
 
 std::unique_ptr<AttemptRun> AttemptRun::start(Setup setup, QString* error) {
     std::unique_ptr<AttemptRun> run(new AttemptRun(std::move(setup)));
-    const MessageLanguage language = spoken(run->setup_.language);
+    const MessageLanguage language = spokenBy(run->setup_.language);
     if (!run->folder_.isValid()) {
         *error = AttemptRun::tr("no folder for the attempt's machine: %1").arg(run->folder_.errorString());
         return nullptr;
@@ -130,7 +126,7 @@ void AttemptRun::showNote(double left) {
         return;
     }
     shownSecond_ = second;
-    const QString task = QString::fromStdString(setup_.exercise.title.in(spoken(setup_.language)));
+    const QString task = QString::fromStdString(setup_.exercise.title.in(spokenBy(setup_.language)));
     window_->setStandingNote(AttemptRun::tr("Training: %1 · time left %2:%3 · F7: task, hint, hand in")
                                  .arg(task)
                                  .arg(second / 60)
@@ -142,7 +138,7 @@ QString AttemptRun::takeHint() {
     if (!setup_.hintsAllowed || hints_ >= static_cast<int>(setup_.exercise.hints.size())) {
         return {};
     }
-    return QString::fromStdString(setup_.exercise.hints[static_cast<std::size_t>(hints_++)].in(spoken(setup_.language)));
+    return QString::fromStdString(setup_.exercise.hints[static_cast<std::size_t>(hints_++)].in(spokenBy(setup_.language)));
 }
 
 const training::Verdict& AttemptRun::handIn(bool timedOut, std::optional<double> at) {

@@ -31,10 +31,6 @@ namespace m350::ui {
 
 namespace {
 
-MessageLanguage reviewLanguageOf(const Language* language) {
-    return language && language->current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
-}
-
 bool inRun(const PanelSnapshot& snapshot) {
     using Run = controller::PanelStatus::Run;
     const controller::PanelStatus& s = snapshot.status;
@@ -68,7 +64,7 @@ std::unique_ptr<ReviewWindow> ReviewWindow::open(const Request& request, QString
     }
     std::unique_ptr<ReviewWindow> window(new ReviewWindow(std::move(found->exercise), std::move(found->attempt), request.language));
     ReviewWindow& w = *window;
-    const MessageLanguage language = reviewLanguageOf(request.language);
+    const MessageLanguage language = spokenBy(request.language);
     if (!w.folder_.isValid()) {
         *error = tr("no folder for the attempt's machine: %1").arg(w.folder_.errorString());
         return nullptr;
@@ -175,7 +171,7 @@ void ReviewWindow::follow() {
     }
 }
 
-MessageLanguage ReviewWindow::spokenLanguage() const { return reviewLanguageOf(language_); }
+MessageLanguage ReviewWindow::spokenLanguage() const { return spokenBy(language_); }
 
 QString ReviewWindow::viewName() const {
     switch (view_) {

@@ -66,8 +66,7 @@ TrainingWindow::~TrainingWindow() {
 }
 
 MessageLanguage TrainingWindow::language() const {
-    return options_.language && options_.language->current() == QLatin1String("en") ? MessageLanguage::English
-                                                                                    : MessageLanguage::Chinese;
+    return spokenBy(options_.language);
 }
 
 void TrainingWindow::loadExercises() {
