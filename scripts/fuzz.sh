@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Runs each libFuzzer target of build-fuzz (scripts/test.sh configures it) for SECONDS from its
-# seeds in tests/fuzz/corpus/<target>/ and prints the executions. New inputs go to
-# build-fuzz/corpus/<target>/ (the seeds are not touched); a crash, leak, UB report or an input
-# running over 5 s is saved in build-fuzz/findings/ and fails the run. The targets run side by
+# Runs each libFuzzer target of the sanitizer build (build-asan, which scripts/test.sh configures
+# with -DM350_FUZZ=ON; M350_FUZZ_BUILD names another) for SECONDS from its seeds in
+# tests/fuzz/corpus/<target>/ and prints the executions. New inputs go to BUILD/corpus/<target>/
+# (the seeds are not touched); a crash, leak, UB report or an input running over 5 s is saved in
+# BUILD/findings/ and fails the run. The targets run side by
 # side, as many at once as the machine has cores (M350_FUZZ_JOBS sets it), each for SECONDS.
 # Usage: scripts/fuzz.sh [SECONDS] [TARGET...]   (targets: parser evaluator machine-folder)
 set -euo pipefail
@@ -13,19 +14,20 @@ shift || true
 targets=("$@")
 [[ ${#targets[@]} -gt 0 ]] || targets=(parser evaluator machine-folder)
 
-mkdir -p build-fuzz/findings
+build=${M350_FUZZ_BUILD:-build-asan}
+mkdir -p "$build/findings"
 jobs=${M350_FUZZ_JOBS:-$(nproc)}
 
-fuzz() { # TARGET: runs it, its exit status in build-fuzz/findings/TARGET.status
+fuzz() { # TARGET: runs it, its exit status in $build/findings/TARGET.status
     local target=$1 status=0
-    local fuzzer=build-fuzz/tests/fuzz/m350-fuzz-$target
+    local fuzzer=$build/tests/fuzz/m350-fuzz-$target
     local dictionary=(-dict=tests/fuzz/gcode.dict)
     [[ "$target" != machine-folder ]] || dictionary=(-dict=tests/fuzz/toml.dict)
-    mkdir -p "build-fuzz/corpus/$target"
+    mkdir -p "$build/corpus/$target"
     UBSAN_OPTIONS=print_stacktrace=1 "$fuzzer" "${dictionary[@]}" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
-        -print_final_stats=1 -artifact_prefix="build-fuzz/findings/$target-" \
-        "build-fuzz/corpus/$target" "tests/fuzz/corpus/$target" > "build-fuzz/findings/$target.log" 2>&1 || status=$?
-    echo "$status" > "build-fuzz/findings/$target.status"
+        -print_final_stats=1 -artifact_prefix="$build/findings/$target-" \
+        "$build/corpus/$target" "tests/fuzz/corpus/$target" > "$build/findings/$target.log" 2>&1 || status=$?
+    echo "$status" > "$build/findings/$target.status"
 }
 
 running=0
@@ -34,7 +36,7 @@ for target in "${targets[@]}"; do
         wait -n
         running=$((running - 1))
     fi
-    rm -f "build-fuzz/findings/$target.status"
+    rm -f "$build/findings/$target.status"
     fuzz "$target" &
     running=$((running + 1))
 done
@@ -42,8 +44,8 @@ wait
 
 failed=0
 for target in "${targets[@]}"; do
-    log=build-fuzz/findings/$target.log
-    status=$(cat "build-fuzz/findings/$target.status" 2>/dev/null || echo "?")
+    log=$build/findings/$target.log
+    status=$(cat "$build/findings/$target.status" 2>/dev/null || echo "?")
     runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
     speed=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
     if [[ "$status" == 0 ]]; then
