@@ -3,6 +3,7 @@
 #include "app/hmi/ExamOption.h"
 
 #include "app/hmi/HmiOutputs.h"
+#include "app/hmi/Refusal.h"
 #include "ui/i18n/Language.h"
 #include "core/training/Exam.h"
 #include "core/training/ExerciseFile.h"
@@ -22,8 +23,7 @@ int classReportCommand(const HmiOptions& o, ui::Language& language) {
     if (!o.exam.empty()) {
         training::Exam exam;
         if (auto refused = readExamOption(o.exam, language, &exam)) {
-            std::fprintf(stderr, "m350-hmi: %s\n", refused->c_str());
-            return 2;
+            return refuse(QString::fromStdString(*refused));
         }
         key = exam.key;
     }
@@ -34,21 +34,19 @@ int classReportCommand(const HmiOptions& o, ui::Language& language) {
     std::fwrite(csv.constData(), 1, static_cast<std::size_t>(csv.size()), stdout);
     if (!o.reportCsv.empty()) {
         if (auto error = writeOutput(o.reportCsv, csv)) {
-            std::fprintf(stderr, "m350-hmi: --report-csv: %s\n", qPrintable(*error));
-            return 2;
+            return refuse(QStringLiteral("--report-csv: %1").arg(*error));
         }
     }
     if (!o.reportHtml.empty()) {
         const QString title = QStringLiteral("M350 Studio 训练 Training: %1").arg(QString::fromStdString(o.classReport));
         if (auto error = writeOutput(o.reportHtml, ui::classReportHtml(report, title))) {
-            std::fprintf(stderr, "m350-hmi: --report-html: %s\n", qPrintable(*error));
-            return 2;
+            return refuse(QStringLiteral("--report-html: %1").arg(*error));
         }
     }
     int failures = 0;
     for (const ui::ClassAttempt& attempt : report.attempts) {
         if (!attempt.verdict) {
-            std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(attempt.error));
+            refuse(attempt.error);
             ++failures;
         }
     }
@@ -59,8 +57,7 @@ int gradeCommand(const HmiOptions& o, ui::Language& language) {
     if (!o.verdict.empty()) {
         if (auto refused = ui::refusedVerdictOutput(QString::fromStdString(o.verdict), QString::fromStdString(o.attempt),
                                                     QString::fromStdString(o.exercise))) {
-            std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(*refused));
-            return 2;
+            return refuse(*refused);
         }
     }
     ui::GradeRequest request;
@@ -69,8 +66,7 @@ int gradeCommand(const HmiOptions& o, ui::Language& language) {
     if (!o.exam.empty()) {
         training::Exam exam;
         if (auto refused = readExamOption(o.exam, language, &exam)) {
-            std::fprintf(stderr, "m350-hmi: %s\n", refused->c_str());
-            return 2;
+            return refuse(QString::fromStdString(*refused));
         }
         request.examKey = QByteArray::fromStdString(exam.key);
         request.requireChain = true;
@@ -78,8 +74,7 @@ int gradeCommand(const HmiOptions& o, ui::Language& language) {
     request.language = &language;
     const ui::GradeOutcome outcome = ui::gradeAttemptFile(request);
     if (!outcome.verdict) {
-        std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(outcome.error));
-        return 2;
+        return refuse(outcome.error);
     }
     const training::Verdict& verdict = *outcome.verdict;
     const MessageLanguage said = language.current() == QLatin1String("en") ? MessageLanguage::English : MessageLanguage::Chinese;
@@ -91,8 +86,7 @@ int gradeCommand(const HmiOptions& o, ui::Language& language) {
                 verdict.timeUsed, verdict.timedOut ? " (time out)" : "");
     if (!o.verdict.empty()) {
         if (auto error = writeOutput(o.verdict, QByteArray::fromStdString(training::verdictJson(verdict)))) {
-            std::fprintf(stderr, "m350-hmi: --verdict: %s\n", qPrintable(*error));
-            return 2;
+            return refuse(QStringLiteral("--verdict: %1").arg(*error));
         }
     }
     return verdict.passed ? 0 : 1;

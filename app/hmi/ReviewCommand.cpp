@@ -7,6 +7,7 @@
 #include <QDir>
 
 #include "app/hmi/HmiOutputs.h"
+#include "app/hmi/Refusal.h"
 #include "core/training/Exam.h"
 #include "ui/i18n/Language.h"
 #include "ui/replay/Replay.h"
@@ -22,16 +23,6 @@
 #include <variant>
 
 namespace m350::hmi {
-
-namespace {
-
-
-int refuse(const QString& message) {
-    std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
-    return 2;
-}
-
-} // namespace
 
 int reviewCommand(QApplication& app, const HmiOptions& o, ui::Language& language) {
     ui::ReviewWindow::Request request;

@@ -3,6 +3,7 @@
 #include "app/hmi/ExamOption.h"
 
 #include "app/hmi/HmiOutputs.h"
+#include "app/hmi/Refusal.h"
 #include "core/training/Exam.h"
 #include "core/training/ExerciseFile.h"
 #include "ui/i18n/Language.h"
@@ -29,12 +30,6 @@
 namespace m350::hmi {
 
 namespace {
-
-
-int failWith(const QString& message) {
-    std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
-    return 2;
-}
 
 // Plays the attempt file through the training window: start the exercise, the actions on its
 // panel, then the hand-in when the attempt has one.
@@ -94,12 +89,12 @@ int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& langua
                                                  : QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
                                                      QStringLiteral("/training");
     if (!QDir().mkpath(options.attemptsFolder)) {
-        return failWith(language.say(message("training_attempts_folder", {options.attemptsFolder.toStdString()})));
+        return refuse(language.say(message("training_attempts_folder", {options.attemptsFolder.toStdString()})));
     }
     if (!o.exam.empty()) {
         training::Exam exam;
         if (auto refused = readExamOption(o.exam, language, &exam)) {
-            return failWith(QString::fromStdString(*refused));
+            return refuse(QString::fromStdString(*refused));
         }
         options.exam = exam;
     }
@@ -112,11 +107,11 @@ int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& langua
     }
     if (!o.replay.empty()) {
         if (o.exercise.empty()) {
-            return failWith(language.say(message("training_replay_needs_exercise")));
+            return refuse(language.say(message("training_replay_needs_exercise")));
         }
         if (QString error = playAttempt(window, o, options.exam ? QByteArray::fromStdString(options.exam->key) : QByteArray(), language);
             !error.isEmpty()) {
-            return failWith(error);
+            return refuse(error);
         }
     }
     if (window.attempt()) {
@@ -128,15 +123,15 @@ int trainingCommand(QApplication& app, const HmiOptions& o, ui::Language& langua
         QBuffer buffer(&png);
         buffer.open(QIODevice::WriteOnly);
         if (!window.grab().save(&buffer, screenshotFormat(o.screenshot)->constData())) {
-            return failWith(language.say(message("hmi_image_failed", {o.screenshot})));
+            return refuse(language.say(message("hmi_image_failed", {o.screenshot})));
         }
         if (auto error = writeOutput(o.screenshot, png)) {
-            return failWith(QStringLiteral("--screenshot: %1").arg(*error));
+            return refuse(QStringLiteral("--screenshot: %1").arg(*error));
         }
     }
     if (!o.state.empty()) {
         if (auto error = writeOutput(o.state, QJsonDocument(window.state()).toJson(QJsonDocument::Indented))) {
-            return failWith(QStringLiteral("--state: %1").arg(*error));
+            return refuse(QStringLiteral("--state: %1").arg(*error));
         }
     }
     return 0;

@@ -5,6 +5,7 @@
 #include "app/hmi/TrainingCommand.h"
 #include "app/hmi/HmiOptions.h"
 #include "app/hmi/HmiOutputs.h"
+#include "app/hmi/Refusal.h"
 #include "app/sim/BreakageOptions.h"
 #include "core/config/MachineConfig.h"
 #include "core/files/ScratchFolder.h"
@@ -36,11 +37,6 @@
 using namespace m350;
 
 namespace {
-
-int fail(const QString& message, int status = 2) {
-    std::fprintf(stderr, "m350-hmi: %s\n", qPrintable(message));
-    return status;
-}
 
 // --help and --version are answered before any Qt platform is opened: on a machine without a
 // display (an SSH session, a build server) the panel still says how to run it.
@@ -94,7 +90,7 @@ int main(int argc, char** argv) {
     const hmi::HmiOptions& o = *parsed.options;
     QString languageError;
     if (!language.set(QString::fromStdString(o.language), &languageError)) {
-        return fail(languageError);
+        return hmi::refuse(languageError);
     }
     if (o.language == "zh_CN" && !language.fontProblem().isEmpty()) {
         std::fprintf(stderr, "%s\n", qPrintable(language.fontProblem()));
@@ -121,7 +117,7 @@ int main(int argc, char** argv) {
         QString error;
         auto copy = o.headlessRun() ? ui::copyBundledMachine(scratch.path(), &error) : ui::userMachineFolder(&error);
         if (!copy) {
-            return fail(error);
+            return hmi::refuse(error);
         }
         folder = *copy;
         if (o.headlessRun() && !o.eagerReplay) {
@@ -129,11 +125,11 @@ int main(int argc, char** argv) {
         }
     }
     if (auto refused = hmi::refusedOutput(o, folder)) {
-        return fail(*refused);
+        return hmi::refuse(*refused);
     }
     auto loaded = config::loadMachineFolder(folder.toStdString());
     if (auto* error = std::get_if<config::ConfigError>(&loaded)) {
-        return fail(QString::fromStdString(error->text(ui::Language::messageLanguage())));
+        return hmi::refuse(QString::fromStdString(error->text(ui::Language::messageLanguage())));
     }
     ui::MachineSession::Options sessionOptions;
     sessionOptions.clock = o.headlessRun() ? ui::MachineSession::Clock::Manual : ui::MachineSession::Clock::RealTime;
@@ -147,7 +143,7 @@ int main(int argc, char** argv) {
             sessionOptions.toolBreaks.push_back(sim::parseToolBreak(broken));
         }
     } catch (const CLI::ValidationError& e) {
-        return fail(QString::fromStdString(e.what()), 64);
+        return hmi::refuse(QString::fromStdString(e.what()), hmi::kExitUsage);
     }
     ui::MachineSession session(std::move(std::get<config::MachineConfig>(loaded)), sessionOptions);
     app.setStyleSheet(ui::panelStyleSheet());
@@ -165,7 +161,7 @@ int main(int argc, char** argv) {
     if (!o.record.empty()) {
         QString error;
         if (!window.startRecording(QString::fromStdString(o.record), &error)) {
-            return fail(QStringLiteral("--record: %1").arg(error));
+            return hmi::refuse(QStringLiteral("--record: %1").arg(error));
         }
     }
     if (o.measure > 0.0) {
@@ -182,7 +178,7 @@ int main(int argc, char** argv) {
         window.show();
         const int status = app.exec();
         if (QString error = window.stopRecording(); !error.isEmpty()) {
-            return fail(QStringLiteral("--record: %1").arg(error));
+            return hmi::refuse(QStringLiteral("--record: %1").arg(error));
         }
         if (switchTo.isEmpty()) {
             return status;
@@ -190,7 +186,7 @@ int main(int argc, char** argv) {
         const QStringList args{QStringLiteral("--config"), switchTo, QStringLiteral("--lang"), language.current()};
         return QProcess::startDetached(QCoreApplication::applicationFilePath(), args)
                    ? 0
-                   : fail(QStringLiteral("cannot start the panel again on %1").arg(switchTo));
+                   : hmi::refuse(QStringLiteral("cannot start the panel again on %1").arg(switchTo));
     }
     window.resize(o.width, o.height);
     window.show();
@@ -201,17 +197,17 @@ int main(int argc, char** argv) {
         const QString replay = QString::fromStdString(o.replay);
         auto actions = ui::readReplay(replay, &error, &places);
         if (!actions) {
-            return fail(error);
+            return hmi::refuse(error);
         }
         if (error = ui::playReplay(window, session, *actions, replay, places,
                                     o.eagerReplay ? ui::ReplayLayout::EachAction : ui::ReplayLayout::WhenRead); !error.isEmpty()) {
-            return fail(error);
+            return hmi::refuse(error);
         }
     }
     ui::settle(session);
     if (!o.record.empty()) {
         if (QString error = window.stopRecording(); !error.isEmpty()) {
-            return fail(QStringLiteral("--record: %1").arg(error));
+            return hmi::refuse(QStringLiteral("--record: %1").arg(error));
         }
     }
     if (!o.screenshot.empty()) {
@@ -219,16 +215,16 @@ int main(int argc, char** argv) {
         QBuffer buffer(&png);
         buffer.open(QIODevice::WriteOnly);
         if (!window.grab().save(&buffer, hmi::screenshotFormat(o.screenshot)->constData())) {
-            return fail(QString::fromStdString(message("hmi_image_failed", {o.screenshot})
+            return hmi::refuse(QString::fromStdString(message("hmi_image_failed", {o.screenshot})
                                                    .in(o.language == "en" ? MessageLanguage::English : MessageLanguage::Chinese)));
         }
         if (auto error = hmi::writeOutput(o.screenshot, png)) {
-            return fail(QStringLiteral("--screenshot: %1").arg(*error));
+            return hmi::refuse(QStringLiteral("--screenshot: %1").arg(*error));
         }
     }
     if (!o.state.empty()) {
         if (auto error = hmi::writeOutput(o.state, QJsonDocument(window.state()).toJson(QJsonDocument::Indented))) {
-            return fail(QStringLiteral("--state: %1").arg(*error));
+            return hmi::refuse(QStringLiteral("--state: %1").arg(*error));
         }
     }
     return 0;
