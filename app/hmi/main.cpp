@@ -215,8 +215,7 @@ int main(int argc, char** argv) {
         QBuffer buffer(&png);
         buffer.open(QIODevice::WriteOnly);
         if (!window.grab().save(&buffer, hmi::screenshotFormat(o.screenshot)->constData())) {
-            return hmi::refuse(QString::fromStdString(message("hmi_image_failed", {o.screenshot})
-                                                   .in(o.language == "en" ? MessageLanguage::English : MessageLanguage::Chinese)));
+            return hmi::refuse(language.say(message("hmi_image_failed", {o.screenshot})));
         }
         if (auto error = hmi::writeOutput(o.screenshot, png)) {
             return hmi::refuse(QStringLiteral("--screenshot: %1").arg(*error));
