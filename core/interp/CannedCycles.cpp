@@ -21,10 +21,6 @@ namespace {
 // 0.010 inch, whatever the unit), so that the differential tests compare the same moves. A FANUC
 // takes it from parameters 5114 (G73) and 5115 (G83) instead.
 constexpr double kDefaultPeckClearance = 0.254; // mm
-// A Q so small that one hole takes more pecks than this is a slip of the pen, not a program to
-// simulate for minutes (the steps are produced one at a time, so it is not a memory limit).
-constexpr double kMaxPecksPerHole = 10000;
-constexpr int kMaxRepeats = 9999; // FANUC K0-K9999
 
 // The two positioning axes and the drilling axis of a plane, as indexes into machine::Axes.
 struct CycleAxes {
@@ -58,57 +54,12 @@ std::uint32_t ModalInterpreter::cycleColumn(const Words& words) const {
     return motionColumn(words);
 }
 
-void ModalInterpreter::rememberCycleWords(const Words& words, char drillLetter) {
-    if (const WordValue* w = words.find(drillLetter)) {
-        cycle_.bottom = w->value;
-    }
-    if (const WordValue* w = words.find('R')) {
-        cycle_.r = w->value;
-    }
-    if (const WordValue* w = words.find('Q')) {
-        cycle_.q = w->value;
-    }
-    if (const WordValue* w = words.find('P')) {
-        if (w->value < 0) {
-            invalid(*w, message("word_negative_cycle_dwell", {wordText(*w)}));
-        }
-        cycle_.p = w->value;
-    }
-}
-
-int ModalInterpreter::cycleRepeats(const Words& words) const {
-    const WordValue* k = words.find('K');
-    const WordValue* l = words.find('L');
-    if (k && l) {
-        invalid(*l, message("word_cycle_k_and_l", {wordText(*l)}));
-    }
-    const WordValue* count = k ? k : l;
-    if (!count) {
-        return 1;
-    }
-    if (count->value < 0 || count->value > kMaxRepeats || count->value != std::floor(count->value)) {
-        invalid(*count, message("word_repeat_count", {wordText(*count), std::to_string(kMaxRepeats)}));
-    }
-    return static_cast<int>(count->value);
-}
-
 // What a FANUC alarms on before the cycle moves: missing drilling data, no feed, a tap with the
 // spindle the wrong way.
 void ModalInterpreter::checkCycle(const Words& words, int code, char drillLetter) const {
     const std::string name = "G" + std::to_string(code);
     const std::uint32_t column = cycleColumn(words);
-    if (!cycle_.bottom) {
-        throw MacroError::of(AlarmCode::MissingAddress,
-                             message("cycle_needs_bottom", {name, std::string(1, drillLetter)}), column);
-    }
-    if (!cycle_.r) {
-        throw MacroError::of(AlarmCode::MissingAddress, message("cycle_needs_r", {name}), column);
-    }
-    if ((code == 73 || code == 83) && cycle_.q <= 0) {
-        const WordValue* q = words.find('Q');
-        throw MacroError::of(q ? AlarmCode::InvalidWord : AlarmCode::MissingAddress, message("cycle_needs_q", {name}),
-                             q ? q->column : column);
-    }
+    drilling_.checkComplete(words, code, drillLetter, column);
     if (state_.feed <= 0) {
         const WordValue* f = words.find('F');
         throw MacroError::of(AlarmCode::InvalidWord, message("cycle_needs_f", {name}), f ? f->column : column);
@@ -132,56 +83,23 @@ void ModalInterpreter::cannedCycle(const Words& words) {
     }
     for (char rotary : {'A', 'B'}) {
         if (const WordValue* w = words.find(rotary)) {
-            invalid(*w, message("word_cycle_rotary", {wordText(*w), std::to_string(code)}));
+            invalidWord(*w, message("word_cycle_rotary", {wordText(*w), std::to_string(code)}));
         }
     }
-    rememberCycleWords(words, drillLetter);
+    drilling_.remember(words, drillLetter);
     bool drills = words.find('R') || words.find(drillLetter) || words.find(axisLetter(axes.plane[0])) ||
                   words.find(axisLetter(axes.plane[1]));
-    int repeats = cycleRepeats(words);
+    const int repeats = DrillingData::repeats(words);
     if (!drills || repeats == 0) {
         return; // K0 keeps the drilling data and drills nothing, as on a FANUC
     }
     checkCycle(words, code, drillLetter);
-    if (!cycle_.initialLevel) {
-        cycle_.initialLevel = machine_.position()(axes.drill);
-    }
-    runCycle(resolveCycle(words, code, axes.drill), cycleHoles(words, repeats), words);
-}
-
-DrillingCycle ModalInterpreter::resolveCycle(const Words& words, int code, int drillAxis) const {
-    const std::string name = "G" + std::to_string(code);
-    const double unit = axisUnit(drillAxis);
-    DrillingCycle cycle;
-    cycle.code = code;
-    cycle.drillAxis = drillAxis;
-    cycle.initialLevel = *cycle_.initialLevel;
-    if (state_.incremental()) { // FANUC and rs274: R from the initial level, the bottom from R
-        cycle.r = cycle.initialLevel + *cycle_.r * unit;
-        cycle.bottom = cycle.r + *cycle_.bottom * unit;
-    } else {
-        double offset = workOffset()(drillAxis);
-        cycle.r = *cycle_.r * unit + offset;
-        cycle.bottom = *cycle_.bottom * unit + offset;
-    }
-    if (cycle.bottom > cycle.r + 1e-9) {
-        const WordValue* r = words.find('R');
-        std::string letter(1, axisLetter(drillAxis));
-        throw MacroError::of(AlarmCode::InvalidWord, message("cycle_bottom_above_r", {name, letter}),
-                             r ? r->column : cycleColumn(words));
-    }
-    cycle.returnToR = state_.group(10) == 99;
-    cycle.peck = cycle_.q * unit;
-    if ((code == 73 || code == 83) && (cycle.r - cycle.bottom) / cycle.peck > kMaxPecksPerHole) {
-        const WordValue* q = words.find('Q');
-        throw MacroError::of(AlarmCode::InvalidWord,
-                             message("cycle_too_many_pecks", {name, std::to_string(static_cast<int>(kMaxPecksPerHole))}),
-                             q ? q->column : cycleColumn(words));
-    }
-    double clearance = parameters_.get(param::kDrillingRetraction);
-    cycle.peckClearance = clearance > 0 ? clearance : kDefaultPeckClearance;
-    cycle.dwell = cycle_.p * dialect_.dwellPScale;
-    return cycle;
+    drilling_.startAt(machine_.position()(axes.drill));
+    const double clearance = parameters_.get(param::kDrillingRetraction);
+    const DrillingData::Frame frame{axisUnit(axes.drill),         workOffset()(axes.drill),
+                                    state_.incremental(),         state_.group(10) == 99,
+                                    clearance > 0 ? clearance : kDefaultPeckClearance, dialect_.dwellPScale};
+    runCycle(drilling_.resolve(words, code, axes.drill, frame, cycleColumn(words)), cycleHoles(words, repeats), words);
 }
 
 // Where the block drills: once at the position it names, or under G91 `repeats` steps apart.

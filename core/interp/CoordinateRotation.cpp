@@ -33,18 +33,18 @@ std::string planeName(int u, int v) { return std::string(1, letterOf(u)) + " " +
 void ModalInterpreter::startRotation(const Words& words, const WordValue& g68) {
     for (char c : {'I', 'J', 'K'}) {
         if (const WordValue* w = words.find(c)) {
-            invalid(*w, message("word_g68_ijk", {wordText(*w)}));
+            invalidWord(*w, message("word_g68_ijk", {wordText(*w)}));
         }
     }
     const PlaneAxes plane = planeAxes(state_.group(2));
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {
         const WordValue* w = words.find(letterOf(axis));
         if (w && axis != plane.u && axis != plane.v) {
-            invalid(*w, message("word_g68_centre", {wordText(*w), planeName(plane.u, plane.v)}));
+            invalidWord(*w, message("word_g68_centre", {wordText(*w), planeName(plane.u, plane.v)}));
         }
     }
     if (compensating() && compensationPlane_.plane != plane.plane) {
-        invalid(g68, message("word_g68_plane", {wordText(g68)}));
+        invalidWord(g68, message("word_g68_plane", {wordText(g68)}));
     }
     const machine::Axes work = basePosition() - workOffset();
     ModalState::Rotation r;
@@ -82,10 +82,10 @@ void ModalInterpreter::refuseUnderRotation(const Words& words) const {
         } else if (whole && code >= 27 && code <= 30) {
             why = "word_g68_reference_return";
         } else if (rotatingBefore && whole && code >= 17 && code <= 19 && code != state_.group(2)) {
-            invalid(g, message("word_g68_plane_stays", {wordText(g)}));
+            invalidWord(g, message("word_g68_plane_stays", {wordText(g)}));
         }
         if (why != nullptr) {
-            invalid(g, message(why, {wordText(g)}));
+            invalidWord(g, message(why, {wordText(g)}));
         }
     }
 }

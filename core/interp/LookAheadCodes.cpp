@@ -67,13 +67,13 @@ bool ModalInterpreter::lookAheadCode(const WordValue& g, const Words& words) {
     const std::string on = std::string(1, mode->letter) + std::to_string(mode->on);
     const WordValue* value = words.find(mode->letter);
     if (!value || (value->value != 0 && value->value != mode->on)) {
-        invalid(value ? *value : g, message("word_look_ahead_usage", {wordText(value ? *value : g), mode->name, on,
+        invalidWord(value ? *value : g, message("word_look_ahead_usage", {wordText(value ? *value : g), mode->name, on,
                                                                       bilingual(mode->what, mode->chinese),
                                                                       std::string(1, mode->letter)}));
     }
     const std::uint32_t allowed = Words::bit(mode->letter) | Words::bit('N') | (isCode(mode->code, 5.1) ? Words::bit('R') : 0);
     if ((words.present & ~allowed) != 0 || words.g.size() > 1 || !words.m.empty()) {
-        invalid(g, message("word_look_ahead_alone", {wordText(g), mode->name, on, bilingual(mode->what, mode->chinese),
+        invalidWord(g, message("word_look_ahead_alone", {wordText(g), mode->name, on, bilingual(mode->what, mode->chinese),
                                                      std::string(1, mode->letter)}));
     }
     std::string text = std::string(mode->name) + " " + mode->letter + std::to_string(roundToInt(value->value));

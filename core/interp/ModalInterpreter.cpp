@@ -15,29 +15,6 @@ using macro::BlockOutcome;
 using macro::MacroError;
 using macro::WordValue;
 
-
-namespace {
-
-std::string codeText(char letter, double value) {
-    double whole = std::round(value);
-    if (std::abs(value - whole) < 1e-9) {
-        return std::string(1, letter) + std::to_string(saturatingInt(whole));
-    }
-    std::string text = std::to_string(value);
-    text.erase(text.find_last_not_of('0') + 1);
-    return std::string(1, letter) + text;
-}
-
-} // namespace
-
-std::string ModalInterpreter::wordText(const WordValue& w) {
-    return codeText(w.letter, w.value);
-}
-
-[[noreturn]] void ModalInterpreter::invalid(const WordValue& w, const Message& words) {
-    throw MacroError::of(AlarmCode::InvalidWord, words, w.column);
-}
-
 namespace {
 
 // Which modal group a G code sets, -1 for non-modal codes handled elsewhere.
@@ -128,7 +105,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
             for (char letter : {'E', 'U', 'V', 'W'}) {
                 if (const WordValue* w = words.find(letter)) {
                     throw MacroError::of(AlarmCode::InvalidWord,
-                                         message("improper_address", {codeText(w->letter, w->value),
+                                         message("improper_address", {wordText(*w),
                                                                       std::string(1, letter)}),
                                          w->column);
                 }
@@ -140,7 +117,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
         if ((words.present & kModalLetters) != 0) {
             if (words.find('F')) {
                 if (words.find('F')->value < 0) {
-                    invalid(*words.find('F'), message("word_negative_feed", {wordText(*words.find('F'))}));
+                    invalidWord(*words.find('F'), message("word_negative_feed", {wordText(*words.find('F'))}));
                 }
                 const bool inches = words.hasG(20) || (state_.inches() && !words.hasG(21));
                 state_.feed = words.find('F')->value * (inches ? 25.4 : 1.0);
@@ -190,7 +167,7 @@ BlockOutcome ModalInterpreter::execute(const macro::EvaluatedBlock& block) {
                 [[fallthrough]];
             default:
                 if (!knowsMCode(dialect_, code)) {
-                    invalid(m, unknownMCodeWords(dialect_, code, wordText(m)));
+                    invalidWord(m, unknownMCodeWords(dialect_, code, wordText(m)));
                 }
                 machine_.auxiliary(code); // FANUC: an M code the PMC answers (magazine, clamp ...)
                 break;
@@ -331,7 +308,7 @@ void ModalInterpreter::applyGCodes(const Words& words) {
         }
         if (isAdditionalSystemCode(value)) [[unlikely]] {
             if (seen[14]) {
-                invalid(g, message("word_same_group", {wordText(g)}));
+                invalidWord(g, message("word_same_group", {wordText(g)}));
             }
             seen[14] = true;
             selectAdditionalSystem(words, g);
@@ -343,18 +320,18 @@ void ModalInterpreter::applyGCodes(const Words& words) {
         } else {
             code = roundToInt(value);
             if (std::abs(value - code) > 1e-6) {
-                invalid(g, message("word_unknown_g", {codeText(g.letter, g.value)}));
+                invalidWord(g, message("word_unknown_g", {wordText(g)}));
             }
         }
         int group = groupOf(code);
         if (group > 0) {
             if (seen[static_cast<std::size_t>(group)]) {
-                invalid(g, message("word_same_group", {wordText(g)}));
+                invalidWord(g, message("word_same_group", {wordText(g)}));
             }
             seen[static_cast<std::size_t>(group)] = true;
             if (group == 16) {
                 if (!features_.rotation) {
-                    invalid(g, message("word_unknown_g", {codeText(g.letter, g.value)}));
+                    invalidWord(g, message("word_unknown_g", {wordText(g)}));
                 }
                 if (code == 68) {
                     g68 = &g; // after the block's plane, units and distance mode
@@ -369,7 +346,7 @@ void ModalInterpreter::applyGCodes(const Words& words) {
                 parameters_.set(param::kCurrentWorkSystem, code - 53);
             }
             if ((code == 43 || code == 44) && dialect_.id == gcode::DialectId::M350) {
-                invalid(g, message("word_m350_no_h_offset", {wordText(g)}));
+                invalidWord(g, message("word_m350_no_h_offset", {wordText(g)}));
             }
             continue;
         }
@@ -382,7 +359,7 @@ void ModalInterpreter::applyGCodes(const Words& words) {
                     break;
                 }
                 if (words.find('P')->value < 0) {
-                    invalid(*words.find('P'), message(dialect_.id == gcode::DialectId::M350 ? "word_negative_dwell_m350"
+                    invalidWord(*words.find('P'), message(dialect_.id == gcode::DialectId::M350 ? "word_negative_dwell_m350"
                                                                                             : "word_negative_dwell",
                                                       {wordText(*words.find('P'))}));
                 }
@@ -390,19 +367,19 @@ void ModalInterpreter::applyGCodes(const Words& words) {
             } else if (words.find('X') && dialect_.dwellXSeconds) {
                 seconds = words.find('X')->value;
             } else {
-                invalid(g, message(dialect_.dwellXSeconds ? "word_g04_needs_p_or_x" : "word_g04_needs_p", {wordText(g)}));
+                invalidWord(g, message(dialect_.dwellXSeconds ? "word_g04_needs_p_or_x" : "word_g04_needs_p", {wordText(g)}));
             }
             machine_.dwell(seconds);
             break;
         }
         case 10: case 28: case 30: case 31: case 52: case 53: case 92: break; // with the axis words, in moveAxes
-        default: invalid(g, message("word_unknown_g", {codeText(g.letter, g.value)}));
+        default: invalidWord(g, message("word_unknown_g", {wordText(g)}));
         }
     }
     if (seen[1] && seen[9] && state_.group(9) != 80) {
         auto cycle = std::find_if(words.g.begin(), words.g.end(),
                                   [](const WordValue& w) { return groupOf(roundToInt(w.value)) == 9; });
-        invalid(*cycle, message("word_motion_cancels_cycle", {wordText(*cycle)}));
+        invalidWord(*cycle, message("word_motion_cancels_cycle", {wordText(*cycle)}));
     }
     if (seen[1] || (seen[9] && state_.group(9) == 80)) {
         cancelCycle(); // a cycle begun again starts from new drilling data and a new initial level
@@ -416,13 +393,13 @@ void ModalInterpreter::applyGCodes(const Words& words) {
 // documents it).
 void ModalInterpreter::selectAdditionalSystem(const Words& words, const WordValue& g) {
     if (features_.additionalSystems <= 0) {
-        invalid(g, message("word_unknown_g", {codeText(g.letter, g.value)}));
+        invalidWord(g, message("word_unknown_g", {wordText(g)}));
     }
     const WordValue* p = words.find('P');
     const double number = p ? p->value : 1.0;
     const int systems = features_.additionalSystems;
     if (number != std::round(number) || number < 1 || number > systems) {
-        invalid(p ? *p : g, message("word_g54_1_range", {wordText(p ? *p : g), std::to_string(systems)}));
+        invalidWord(p ? *p : g, message("word_g54_1_range", {wordText(p ? *p : g), std::to_string(systems)}));
     }
     state_.groups[14] = 54.1;
     state_.additionalSystem = static_cast<int>(number);

@@ -5,8 +5,8 @@
 #include "core/common/Message.h"
 #include "core/gcode/Dialect.h"
 #include "core/interp/CutterCompensation.h"
-#include "core/interp/DrillingCycle.h"
-#include "core/interp/LetterWords.h"
+#include "core/interp/DrillingData.h"
+#include "core/interp/BlockWords.h"
 #include "core/interp/ModalState.h"
 #include "core/interp/OffsetsInForce.h"
 #include "core/interp/WorkOffsets.h"
@@ -144,61 +144,7 @@ public:
     std::vector<std::string> takeReloadIssues() { return std::exchange(reloadIssues_, {}); }
 
 private:
-    // The words of one block by letter, as the executor indexed them (EvaluatedBlock, which
-    // outlives execute()). `present` holds the letters other than G and M.
-    struct Words {
-        const macro::WordValue* words = nullptr;
-        const std::uint32_t* firstOf = nullptr; // EvaluatedBlock::firstOf
-        std::uint32_t present = 0;
-        LetterWords g;
-        LetterWords m;
-        // Bit c: a G word within 1e-6 of the whole code c (0-127), so hasG() of a whole code is one
-        // test; moveAxes asks about a dozen codes for every block.
-        std::array<std::uint64_t, 2> gCodes{};
-
-        void reset(const macro::EvaluatedBlock& evaluated) {
-            words = evaluated.words.data();
-            firstOf = evaluated.firstOf.data();
-            present = evaluated.letters & ~(bit('G') | bit('M'));
-            g = LetterWords(evaluated, 'G', evaluated.gCount);
-            m = LetterWords(evaluated, 'M', evaluated.mCount);
-            if (!evaluated.otherCodes) {
-                gCodes = evaluated.gCodes.bits; // every G word a whole code 0-127 exactly
-                return;
-            }
-            gCodes = {};
-            for (const macro::WordValue& w : g) {
-                if (w.value > -0.5 && w.value < 127.5) {
-                    const auto code = static_cast<unsigned>(w.value + 0.5); // the nearest whole code
-                    if (std::abs(w.value - code) < 1e-6) {
-                        gCodes[code >> 6] |= std::uint64_t{1} << (code & 63u);
-                    }
-                }
-            }
-        }
-        static constexpr std::uint32_t bit(char c) { return 1u << static_cast<unsigned>(c - 'A'); }
-        bool has(char c) const { return (present & bit(c)) != 0; }
-        const macro::WordValue& operator[](char c) const { return words[firstOf[static_cast<std::size_t>(c - 'A')]]; }
-        const macro::WordValue* find(char c) const { return has(c) ? &(*this)[c] : nullptr; }
-        bool hasG(int code) const {
-            if (code >= 0 && code < 128) {
-                return (gCodes[static_cast<unsigned>(code) >> 6] >> (static_cast<unsigned>(code) & 63u) & 1u) != 0;
-            }
-            for (const macro::WordValue& w : g) {
-                if (std::abs(w.value - code) < 1e-6) {
-                    return true;
-                }
-            }
-            return false;
-        }
-        // Whether any of `codes` (bits as gCodes holds them) was written.
-        bool hasAnyG(const std::array<std::uint64_t, 2>& codes) const {
-            return ((gCodes[0] & codes[0]) | (gCodes[1] & codes[1])) != 0;
-        }
-        bool hasAxis() const {
-            return (present & (bit('X') | bit('Y') | bit('Z') | bit('A') | bit('B'))) != 0;
-        }
-    };
+    using Words = BlockWords;
 
     void applyGCodes(const Words& words);
     bool lookAheadCode(const macro::WordValue& g, const Words& words);
@@ -265,9 +211,6 @@ private:
         return state_.group(5) != 95 || dialect_.id == gcode::DialectId::M350 ? state_.feed
                                                                                : feedRate(motionColumn(words));
     }
-    [[noreturn]] static void invalid(const macro::WordValue& w, const Message& words);
-    // "G5.1", "X-1.5": a word as invalid()'s messages name it (their %1).
-    static std::string wordText(const macro::WordValue& w);
     void stopForOperator(OperatorStop::Kind kind, std::string what);
     std::optional<OperatorStop> takeMadeStop();
     bool compensating() const { // asked for every move
@@ -288,13 +231,10 @@ private:
     void flushCompensation();
     void cancelCycle() { // every plain move ends any cycle
         state_.groups[9] = 80;
-        cycle_ = CycleData{};
+        drilling_.clear();
     }
     void cannedCycle(const Words& words);
-    void rememberCycleWords(const Words& words, char drillLetter);
     void checkCycle(const Words& words, int code, char drillLetter) const;
-    int cycleRepeats(const Words& words) const;
-    DrillingCycle resolveCycle(const Words& words, int code, int drillAxis) const;
     std::vector<machine::Axes> cycleHoles(const Words& words, int repeats) const;
     void runCycle(const DrillingCycle& cycle, const std::vector<machine::Axes>& holes, const Words& words);
     std::uint32_t cycleColumn(const Words& words) const;
@@ -324,16 +264,7 @@ private:
     int pendingMode_ = 1;                                  // its motion mode (0 rapid, 1 feed)
     PlaneAxes compensationPlane_;                          // fixed from G41/G42 entry to G40 exit
 
-    // The canned cycle's data (FANUC's drilling data), kept as written from block to block until
-    // G80, a group-1 code or the program end.
-    struct CycleData {
-        std::optional<double> bottom; // the drilling-axis word: Z under G17
-        std::optional<double> r;
-        double q = 0.0;
-        double p = 0.0;
-        std::optional<double> initialLevel; // machine position on the drilling axis when drilling began
-    };
-    CycleData cycle_;
+    DrillingData drilling_; // the canned cycles' data, from block to block
 };
 
 } // namespace m350::interp

@@ -241,11 +241,11 @@ void ModalInterpreter::probeMove(const Words& words) {
         level = setter->activeLevel;
     }
     if (port < 1 || port > machine::kInputCount) {
-        invalid(g31, message(dialect_.id == gcode::DialectId::M350 ? "word_g31_needs_port" : "word_g31_no_skip",
+        invalidWord(g31, message(dialect_.id == gcode::DialectId::M350 ? "word_g31_needs_port" : "word_g31_no_skip",
                              {wordText(g31)}));
     }
     if (state_.feed <= 0) {
-        invalid(g31, message("word_g31_no_feed", {wordText(g31)}));
+        invalidWord(g31, message("word_g31_no_feed", {wordText(g31)}));
     }
     machine::Axes target = targetFor(words, false);
     checkSoftLimits(target, words);
@@ -331,7 +331,7 @@ void ModalInterpreter::setOffsets(const Words& words) {
         return std::abs(w.value - 10) < 1e-9;
     });
     if (dialect_.id == gcode::DialectId::M350) {
-        invalid(g10, message("word_m350_no_g10", {wordText(g10)}));
+        invalidWord(g10, message("word_m350_no_g10", {wordText(g10)}));
     }
     const WordValue* l = words.find('L');
     const WordValue* p = words.find('P');
@@ -340,7 +340,7 @@ void ModalInterpreter::setOffsets(const Words& words) {
         return;
     }
     if (!l || !p) {
-        invalid(g10, message("word_g10_needs_l_p", {wordText(g10)}));
+        invalidWord(g10, message("word_g10_needs_l_p", {wordText(g10)}));
     }
     int kind = roundToInt(l->value);
     int number = roundToInt(p->value);
@@ -354,11 +354,11 @@ void ModalInterpreter::setOffsets(const Words& words) {
     }
     const int systems = features_.additionalSystems;
     if (kind == 20 && (number < 1 || number > systems)) {
-        invalid(g10, systems > 0 ? message("word_g10_l20_range", {wordText(g10), std::to_string(systems)})
+        invalidWord(g10, systems > 0 ? message("word_g10_l20_range", {wordText(g10), std::to_string(systems)})
                                  : message("word_g10_l20_none", {wordText(g10)}));
     }
     if (kind != 20 && (kind != 2 || number < 0 || number > 6)) {
-        invalid(g10, message("word_g10_supported", {wordText(g10)}));
+        invalidWord(g10, message("word_g10_supported", {wordText(g10)}));
     }
     const int slot = kind == 20 ? WorkOffsets::additionalSlot(number) : number == 0 ? WorkOffsets::kCommon : number;
     for (int axis = 0; axis < machine::kAxisCount; ++axis) {

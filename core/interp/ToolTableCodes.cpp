@@ -27,7 +27,7 @@ using macro::WordValue;
 // belong to a machine that keeps a LinuxCNC tool.tbl; elsewhere they would be guesses.
 void ModalInterpreter::needLinuxCncTable(const WordValue& w, const std::string& what) const {
     if (!tools_.keepsToolTable()) {
-        invalid(w, message("word_linuxcnc_table", {wordText(w), what}));
+        invalidWord(w, message("word_linuxcnc_table", {wordText(w), what}));
     }
 }
 
@@ -35,11 +35,11 @@ void ModalInterpreter::needLinuxCncTable(const WordValue& w, const std::string& 
 void ModalInterpreter::reloadToolTable(const WordValue& g10) {
     needLinuxCncTable(g10, bilingual("G10 L0 (reload the tool table)", "G10 L0（重新读入刀具表）"));
     if (const int loaded = spindleTool_ ? spindleTool_() : 0; loaded != 0) {
-        invalid(g10, message("word_g10_l0_loaded", {wordText(g10), std::to_string(loaded)}));
+        invalidWord(g10, message("word_g10_l0_loaded", {wordText(g10), std::to_string(loaded)}));
     }
     std::vector<std::string> skipped;
     if (auto why = tools_.reload(skipped)) {
-        invalid(g10, message("word_g10_l0_failed", {wordText(g10), bilingual(*why)}));
+        invalidWord(g10, message("word_g10_l0_failed", {wordText(g10), bilingual(*why)}));
     }
     reloadIssues_ = std::move(skipped);
 }
@@ -50,11 +50,11 @@ void ModalInterpreter::setDynamicLength(const WordValue& g, const Words& words) 
     needLinuxCncTable(g, bilingual("G43.1 (dynamic tool length)", "G43.1（动态刀具长度）"));
     for (char letter : {'X', 'Y', 'A', 'B', 'H'}) {
         if (words.has(letter)) {
-            invalid(words[letter], message("word_g43_1_z_only", {wordText(words[letter]), std::string(1, letter)}));
+            invalidWord(words[letter], message("word_g43_1_z_only", {wordText(words[letter]), std::string(1, letter)}));
         }
     }
     if (!words.has('Z')) {
-        invalid(g, message("word_g43_1_needs_z", {wordText(g)}));
+        invalidWord(g, message("word_g43_1_needs_z", {wordText(g)}));
     }
     state_.groups[8] = 43.1;
     state_.lengthOffset = 0;
@@ -68,7 +68,7 @@ void ModalInterpreter::setToolNumber(const WordValue& m, const Words& words) {
     const WordValue* q = words.find('Q');
     const int tool = q ? roundToInt(q->value) : -1;
     if (!q || std::abs(q->value - tool) > 1e-9 || tool < 0) {
-        invalid(q ? *q : m, message("word_m61_needs_q", {wordText(q ? *q : m)}));
+        invalidWord(q ? *q : m, message("word_m61_needs_q", {wordText(q ? *q : m)}));
     }
     state_.selectedTool = tool;
     toolChange_ = ToolChange{tool, true};
@@ -80,13 +80,13 @@ void ModalInterpreter::setToolOffsets(const Words& words, const WordValue& g10, 
     const WordValue& l = words['L'];
     if (linuxCnc) {
         if (kind == 12 || kind == 13) {
-            invalid(l, message("word_g10_d_offset_axes", {wordText(l), std::to_string(kind)}));
+            invalidWord(l, message("word_g10_d_offset_axes", {wordText(l), std::to_string(kind)}));
         }
         setToolTable(words, g10, kind);
         return;
     }
     if (!words.has('R')) {
-        invalid(g10, message("word_g10_needs_r", {wordText(g10), std::to_string(kind)}));
+        invalidWord(g10, message("word_g10_needs_r", {wordText(g10), std::to_string(kind)}));
     }
     setOffsetRegister(words, kind);
 }
@@ -98,11 +98,11 @@ void ModalInterpreter::setOffsetRegister(const Words& words, int kind) {
     tools::OffsetRegister which = tools::OffsetRegister::LengthGeometry;
     if (tools_.offsetMemory() == tools::OffsetMemory::A) {
         if (kind != 1 && kind != 11) {
-            invalid(l, message("word_g10_memory_a", {wordText(l)}));
+            invalidWord(l, message("word_g10_memory_a", {wordText(l)}));
         }
     } else {
         if (kind == 1) {
-            invalid(l, message("word_g10_memory_c", {wordText(l)}));
+            invalidWord(l, message("word_g10_memory_c", {wordText(l)}));
         }
         which = kind == 10   ? tools::OffsetRegister::LengthGeometry
                 : kind == 11 ? tools::OffsetRegister::LengthWear
@@ -111,11 +111,11 @@ void ModalInterpreter::setOffsetRegister(const Words& words, int kind) {
     }
     const int number = roundToInt(p.value);
     if (std::abs(p.value - number) > 1e-9 || !tools_.validOffsetNumber(number)) {
-        invalid(p, message("word_g10_offset_number", {wordText(p), std::to_string(kind), std::to_string(tools_.offsetCount())}));
+        invalidWord(p, message("word_g10_offset_number", {wordText(p), std::to_string(kind), std::to_string(tools_.offsetCount())}));
     }
     const double value = (state_.incremental() ? tools_.registerValue(which, number) : 0.0) + r.value;
     if (auto why = tools_.setRegister(which, number, value)) {
-        invalid(l, message("word_refused", {wordText(l), bilingual(*why)}));
+        invalidWord(l, message("word_refused", {wordText(l), bilingual(*why)}));
     }
 }
 
@@ -123,15 +123,15 @@ void ModalInterpreter::setToolTable(const Words& words, const WordValue& g10, in
     const WordValue& p = *words.find('P');
     const int tool = roundToInt(p.value);
     if (std::abs(p.value - tool) > 1e-9 || tool < 1) {
-        invalid(p, message("word_g10_tool_number", {wordText(p), std::to_string(kind)}));
+        invalidWord(p, message("word_g10_tool_number", {wordText(p), std::to_string(kind)}));
     }
     std::optional<tools::ToolEntry> row = tools_.find(tool);
     if (!row) {
-        invalid(p, message("word_tool_not_in_table", {wordText(p), std::to_string(tool)}));
+        invalidWord(p, message("word_tool_not_in_table", {wordText(p), std::to_string(tool)}));
     }
     for (char letter : {'C', 'U', 'V', 'W'}) {
         if (words.has(letter)) {
-            invalid(words[letter], message("word_g10_no_axis", {wordText(words[letter]), std::string(1, letter)}));
+            invalidWord(words[letter], message("word_g10_no_axis", {wordText(words[letter]), std::string(1, letter)}));
         }
     }
     tools::ToolEntry entry = *row;
@@ -168,16 +168,16 @@ void ModalInterpreter::setToolTable(const Words& words, const WordValue& g10, in
     if (const WordValue* q = words.find('Q')) {
         const int orientation = roundToInt(q->value);
         if (std::abs(q->value - orientation) > 1e-9 || orientation < 0 || orientation > 9) {
-            invalid(*q, message("word_orientation_range", {wordText(*q)}));
+            invalidWord(*q, message("word_orientation_range", {wordText(*q)}));
         }
         entry.orientation = orientation;
         any = true;
     }
     if (!any) {
-        invalid(g10, message("word_g10_no_effect", {wordText(g10), std::to_string(kind)}));
+        invalidWord(g10, message("word_g10_no_effect", {wordText(g10), std::to_string(kind)}));
     }
     if (auto why = tools_.put(entry)) {
-        invalid(g10, message("word_refused", {wordText(g10), bilingual(*why)}));
+        invalidWord(g10, message("word_refused", {wordText(g10), bilingual(*why)}));
     }
 }
 
