@@ -15,8 +15,9 @@
 
 #include "core/common/Numeric.h"
 
+#include <array>
 #include <cmath>
-#include <numbers>
+#include <optional>
 
 namespace m350::interp {
 
@@ -47,22 +48,14 @@ void ModalInterpreter::startRotation(const Words& words, const WordValue& g68) {
         invalidWord(g68, message("word_g68_plane", {wordText(g68)}));
     }
     const machine::Axes work = basePosition() - workOffset();
-    ModalState::Rotation r;
-    r.u = plane.u;
-    r.v = plane.v;
     const WordValue* cu = words.find(letterOf(plane.u));
     const WordValue* cv = words.find(letterOf(plane.v));
-    r.center[0] = cu ? cu->value * axisUnit(plane.u) : work(plane.u);
-    r.center[1] = cv ? cv->value * axisUnit(plane.v) : work(plane.v);
-    r.toolAtStart[0] = work(plane.u);
-    r.toolAtStart[1] = work(plane.v);
+    const std::array<double, 2> centre{cu ? cu->value * axisUnit(plane.u) : work(plane.u),
+                                       cv ? cv->value * axisUnit(plane.v) : work(plane.v)};
     // R is absolute (FANUC parameter 5400 bit 0 RIN = 0, its default); without R parameter 5410,
     // whose default is 0
     const WordValue* angle = words.find('R');
-    r.degrees = angle ? angle->value : 0.0;
-    r.cosine = std::cos(r.degrees * std::numbers::pi / 180.0);
-    r.sine = std::sin(r.degrees * std::numbers::pi / 180.0);
-    state_.rotation = r;
+    state_.rotation = PlaneRotation(plane.u, plane.v, centre, {work(plane.u), work(plane.v)}, angle ? angle->value : 0.0);
     state_.groups[16] = 68;
 }
 
@@ -93,66 +86,31 @@ void ModalInterpreter::refuseUnderRotation(const Words& words) const {
 machine::Axes ModalInterpreter::rotatedTarget(const Words& words) const {
     machine::Axes target = plainTarget(words, false);
     const machine::Axes turned = turnedInPlane(basePosition(), words);
-    const ModalState::Rotation& r = state_.rotation;
-    target(r.u) = turned(r.u);
-    target(r.v) = turned(r.v);
+    const PlaneRotation& r = state_.rotation;
+    target(r.u()) = turned(r.u());
+    target(r.v()) = turned(r.v());
     return target;
 }
 
 machine::Axes ModalInterpreter::turnedInPlane(const machine::Axes& from, const Words& words) const {
-    const ModalState::Rotation& r = state_.rotation;
-    const WordValue* wu = words.find(letterOf(r.u));
-    const WordValue* wv = words.find(letterOf(r.v));
-    machine::Axes to = from;
-    if (!wu && !wv) {
-        return to;
-    }
-    const double du = wu ? wu->value * axisUnit(r.u) : 0.0;
-    const double dv = wv ? wv->value * axisUnit(r.v) : 0.0;
-    if (state_.incremental()) {
-        to(r.u) += r.cosine * du - r.sine * dv;
-        to(r.v) += r.sine * du + r.cosine * dv;
-        return to;
-    }
-    const machine::Axes offset = workOffset();
-    // where `from` is in the program's own (turned) coordinates: turned back about the point the
-    // program turns about so far
-    const double* pivot = r.absoluteSeen ? r.center : r.toolAtStart;
-    const double eu = from(r.u) - offset(r.u) - pivot[0];
-    const double ev = from(r.v) - offset(r.v) - pivot[1];
-    double pu = pivot[0] + r.cosine * eu + r.sine * ev;
-    double pv = pivot[1] - r.sine * eu + r.cosine * ev;
-    if (wu) {
-        pu = du;
-    }
-    if (wv) {
-        pv = dv;
-    }
-    const double qu = pu - r.center[0];
-    const double qv = pv - r.center[1];
-    to(r.u) = r.center[0] + r.cosine * qu - r.sine * qv + offset(r.u);
-    to(r.v) = r.center[1] + r.sine * qu + r.cosine * qv + offset(r.v);
-    return to;
-}
-
-void ModalInterpreter::turnVector(Eigen::Vector3d& vector) const {
-    const ModalState::Rotation& r = state_.rotation;
-    const double a = vector(r.u);
-    const double b = vector(r.v);
-    vector(r.u) = r.cosine * a - r.sine * b;
-    vector(r.v) = r.sine * a + r.cosine * b;
+    const PlaneRotation& r = state_.rotation;
+    auto inMillimetres = [&](int axis) -> std::optional<double> {
+        const WordValue* w = words.find(letterOf(axis));
+        return w ? std::optional<double>(w->value * axisUnit(axis)) : std::nullopt;
+    };
+    return r.turned(from, inMillimetres(r.u()), inMillimetres(r.v()), state_.incremental(), workOffset());
 }
 
 // From the first absolute command that names an axis of the plane on, the program turns about
 // G68's centre.
 void ModalInterpreter::noteAbsoluteCommand(const Words& words) {
-    ModalState::Rotation& r = state_.rotation;
-    if (r.absoluteSeen || state_.incremental() || words.hasG(4) || words.hasG(10) || words.hasG(53) ||
+    PlaneRotation& r = state_.rotation;
+    if (r.absoluteSeen() || state_.incremental() || words.hasG(4) || words.hasG(10) || words.hasG(53) ||
         words.hasG(68)) {
         return;
     }
-    if (words.find(letterOf(r.u)) || words.find(letterOf(r.v))) {
-        r.absoluteSeen = true;
+    if (words.find(letterOf(r.u())) || words.find(letterOf(r.v()))) {
+        r.absoluteCommandSeen();
     }
 }
 

@@ -51,7 +51,7 @@ void ModalInterpreter::compensatedMove(const machine::Axes& target, const Words&
             toCenter(v) = c->value * axisUnit(v);
         }
         if (state_.rotating()) {
-            turnVector(toCenter); // G68 turns the plane's I J K with the path
+            state_.rotation.turn(toCenter); // G68 turns the plane's I J K with the path
         }
         const Eigen::Vector2d center = from + Eigen::Vector2d(toCenter(u), toCenter(v));
         if (words.find('R')) {

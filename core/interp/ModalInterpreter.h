@@ -178,7 +178,6 @@ private:
     // coordinates) with the plane's words, as the program turned counts them, applied.
     machine::Axes rotatedTarget(const Words& words) const;
     machine::Axes turnedInPlane(const machine::Axes& from, const Words& words) const;
-    void turnVector(Eigen::Vector3d& vector) const; // an arc's I J K
     void startRotation(const Words& words, const macro::WordValue& g68);
     void refuseUnderRotation(const Words& words) const;
     void noteAbsoluteCommand(const Words& words);

@@ -159,7 +159,7 @@ void ModalInterpreter::moveTo(const machine::Axes& target, const Words& words) {
             }
         }
         if (state_.rotating()) {
-            turnVector(center);
+            state_.rotation.turn(center);
         }
         spec.centerOffset = center;
     }

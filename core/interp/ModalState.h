@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/interp/PlaneRotation.h"
+
 #include <array>
 
 namespace m350::interp {
@@ -10,21 +12,6 @@ namespace m350::interp {
 // 10 return level (98 99), 14 work system (54..59, 54.1 with `additionalSystem` its P), 16 coordinate
 // rotation (68 69).
 struct ModalState {
-    // G68's rotation of the program in the plane of axes u, v (G17: X Y, G18: Z X, G19: Y Z), about
-    // `center` (work coordinates) by `degrees`, counter-clockwise seen from the plane's normal.
-    struct Rotation {
-        int u = 0;
-        int v = 1;
-        double center[2] = {0.0, 0.0};
-        // FANUC: until an absolute command names a plane axis, the program turns about where the
-        // tool stood at G68 (its incremental moves), so that is where omitted plane axes read from
-        double toolAtStart[2] = {0.0, 0.0};
-        bool absoluteSeen = false;
-        double degrees = 0.0;
-        double cosine = 1.0;
-        double sine = 0.0;
-    };
-
     std::array<double, 23> groups{};
     double feed = 0.0;        // F, mm/min
     double spindleSpeed = 0.0; // S
@@ -34,7 +21,7 @@ struct ModalState {
     int radiusOffset = 0;      // D
     double lastM = 0.0;
     int additionalSystem = 0; // G54.1 P: 1.. while group 14 is 54.1 (#4130), else 0
-    Rotation rotation;        // while group 16 is 68
+    PlaneRotation rotation;   // while group 16 is 68
 
     ModalState() {
         groups[1] = 0;
