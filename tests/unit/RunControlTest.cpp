@@ -10,7 +10,7 @@ using namespace m350;
 using namespace m350::test;
 using RunState = controller::Controller::RunState;
 
-config::MachineConfig machine() {
+config::MachineConfig rampedMachine() {
     auto cfg = m350Machine();
     cfg.parameters.set(62, 500); // G01 acceleration: at 10 mm/s the ramps take 0.02 s and 0.1 mm
     return cfg;
@@ -24,7 +24,7 @@ std::unique_ptr<controller::Controller> loaded(config::MachineConfig cfg, const 
 }
 
 TEST(RunControl, HoldDeceleratesAndResumeFinishesTheMove) {
-    auto c = loaded(machine(), lines({"G01 X100 F600", "M30"}));
+    auto c = loaded(rampedMachine(), lines({"G01 X100 F600", "M30"}));
     EXPECT_EQ(c->advance(5.0), RunState::Running);
     EXPECT_NEAR(c->displayPosition()(0), 49.9, 1e-9); // 0.1 mm ramp + 4.98 s at 10 mm/s
     c->hold();
@@ -43,7 +43,7 @@ TEST(RunControl, HoldDeceleratesAndResumeFinishesTheMove) {
 }
 
 TEST(RunControl, HoldLiftsZByParam70WhenParam91SaysSo) {
-    auto cfg = machine();
+    auto cfg = rampedMachine();
     cfg.parameters.set(91, 1);
     cfg.parameters.set(70, 3);
     auto c = loaded(std::move(cfg), lines({"G01 X100 F600", "M30"}));
@@ -58,7 +58,7 @@ TEST(RunControl, HoldLiftsZByParam70WhenParam91SaysSo) {
 }
 
 TEST(RunControl, ResetStopsAtOnceSwitchesOutputsOffAndRewinds) {
-    auto c = loaded(machine(), lines({"#1552 = 1", "M03 S1000", "G01 X100 F600", "M30"}));
+    auto c = loaded(rampedMachine(), lines({"#1552 = 1", "M03 S1000", "G01 X100 F600", "M30"}));
     c->advance(3.0);
     EXPECT_EQ(c->status().report().outputs[0], 1);
     c->reset();
@@ -73,7 +73,7 @@ TEST(RunControl, ResetStopsAtOnceSwitchesOutputsOffAndRewinds) {
 }
 
 TEST(RunControl, EmergencyStopIsAnAlarmWithEverythingOff) {
-    auto c = loaded(machine(), lines({"#1552 = 1", "M03 S1000", "G01 X100 F600", "M30"}));
+    auto c = loaded(rampedMachine(), lines({"#1552 = 1", "M03 S1000", "G01 X100 F600", "M30"}));
     c->advance(3.0);
     c->emergencyStop();
     EXPECT_EQ(c->runState(), RunState::EStop);

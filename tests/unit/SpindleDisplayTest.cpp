@@ -11,7 +11,7 @@ using namespace m350;
 using namespace m350::test;
 using machine::SpindleState;
 
-config::MachineConfig machine() {
+config::MachineConfig spindleMachine() {
     auto cfg = m350Machine();
     cfg.parameters.set(85, 12000); // default rpm
     cfg.parameters.set(82, 24000);
@@ -23,7 +23,7 @@ TEST(SpindleDisplay, M3WithoutSRunsAtTheDefaultSpeed) {
     controller::RunSettings settings;
     settings.trace = &trace;
     settings.parameters[85] = 9000; // --param 85=9000 counts too
-    controller::Controller c(machine(), settings);
+    controller::Controller c(spindleMachine(), settings);
     ASSERT_TRUE(c.loadMdi({"M03"}));
     c.run();
     EXPECT_EQ(c.status().spindleDisplay(), SpindleState::Forward);
@@ -31,7 +31,7 @@ TEST(SpindleDisplay, M3WithoutSRunsAtTheDefaultSpeed) {
 }
 
 TEST(SpindleDisplay, TapWhileATappingCycleTurnsTheSpindle) {
-    controller::Controller c(machine(), controller::RunSettings{});
+    controller::Controller c(spindleMachine(), controller::RunSettings{});
     ASSERT_TRUE(c.loadMdi({"G90 G00 X0 Y0 Z10", "M03 S500", "G99 G84 X5 Y5 Z-6 R2 F500", "G80", "M05"}));
     ASSERT_TRUE(c.start());
     bool sawTap = false;
@@ -44,7 +44,7 @@ TEST(SpindleDisplay, TapWhileATappingCycleTurnsTheSpindle) {
 }
 
 TEST(SpindleDisplay, TheJogKeyTurnsTheSpindleOnlyWhileNoProgramRuns) {
-    controller::Controller c(machine(), controller::RunSettings{});
+    controller::Controller c(spindleMachine(), controller::RunSettings{});
     EXPECT_TRUE(c.manual().spindleJog(true));
     EXPECT_EQ(c.status().spindleDisplay(), SpindleState::Jog);
     EXPECT_TRUE(c.manual().spindleJog(false));
@@ -57,7 +57,7 @@ TEST(SpindleDisplay, TheJogKeyTurnsTheSpindleOnlyWhileNoProgramRuns) {
 }
 
 TEST(SpindleDisplay, OrientShowsOrient) {
-    controller::Controller c(machine(), controller::RunSettings{});
+    controller::Controller c(spindleMachine(), controller::RunSettings{});
     ASSERT_TRUE(c.loadMdi({"M19"}));
     c.run();
     EXPECT_EQ(c.status().spindleDisplay(), SpindleState::Orient);
