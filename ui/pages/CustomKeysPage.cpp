@@ -135,12 +135,11 @@ bool CustomKeysPage::folderHasHook() const {
     return QFileInfo::exists(QDir(context().machineFolder()).filePath(hookFileName()));
 }
 
-// the folder may get its ext_button.nc while the panel runs (the Program page's system disk)
+// the folder may get its ext_button.nc while the panel runs (the Program page's system disk); the
+// panel renders the page it is on alone
 void CustomKeysPage::render(const PanelSnapshot& snapshot) {
     (void)snapshot;
-    if (isVisible()) {
-        updateRuns();
-    }
+    updateRuns();
 }
 
 QJsonObject CustomKeysPage::state() const {

@@ -23,6 +23,7 @@ public:
     bool key(const QString& name) override;
     void render(const PanelSnapshot& snapshot) override;
     bool rendersEverySnapshot() const override { return true; }
+    bool readsLayout() const override { return true; } // the view fits a new path to its size
     QJsonObject state() const override;
 
     MachineView* view() const { return view_; }

@@ -120,7 +120,7 @@ bool MdiPage::typed(const QString& text) {
     return true;
 }
 
-bool MdiPage::editing() const { return editor_->isVisible(); }
+bool MdiPage::editing() const { return !editor_->isHidden(); }
 
 void MdiPage::startEdit(bool keepText) {
     editor_->setText(keepText ? lines_[selected_] : QString());

@@ -44,6 +44,13 @@ public:
     // follows the run it saw start): such a page is rendered at every snapshot even where the
     // panel may skip the snapshots nobody reads (a headless replay).
     virtual bool rendersEverySnapshot() const { return false; }
+    // Whether what the page shows after a key depends on the height and width the layout gave it
+    // then, not only on its state (a text editor scrolled to its cursor, a machine view fitted to
+    // a path): a headless replay lays such a page out before each action on it. A page of
+    // PanelTables need not: a table shows the current row's page whatever way the cursor came.
+    virtual bool readsLayout() const { return false; }
+    // The operator came to the page (its key, a softkey, a replay's "page").
+    virtual void opened() {}
     virtual void retranslate() {}
     virtual QJsonObject state() const { return {}; } // page-specific part of --state
 

@@ -31,6 +31,8 @@ public:
     bool typed(const QString& text) override;
     void render(const PanelSnapshot& snapshot) override;
     bool rendersEverySnapshot() const override { return true; }
+    // the editor scrolls to its cursor, the simulation's view fits its path: the file list does not
+    bool readsLayout() const override { return mode_ != Mode::List; }
     void retranslate() override;
     QJsonObject state() const override;
 

@@ -91,10 +91,9 @@ void SystemPage::countPrograms() {
     }
 }
 
-void SystemPage::showEvent(QShowEvent* event) {
+void SystemPage::opened() {
     countPrograms();
     retranslate();
-    Page::showEvent(event);
 }
 
 void SystemPage::retranslate() {

@@ -27,7 +27,7 @@ public:
     QString fieldText(const QString& name) const; // "name" "version" "machine" "folder" "params" "programs" "level"
 
 protected:
-    void showEvent(QShowEvent* event) override;
+    void opened() override;
 
 private:
     void countPrograms();

@@ -109,13 +109,18 @@ bool MainWindow::showPage(const QString& id) {
     if (!page) {
         return false; // every id of PageTable has its page: only a caller's typo lands here
     }
-    stack_->setCurrentWidget(page);
+    current_ = page;
+    if (!holdRendering_ || page->readsLayout()) {
+        stack_->setCurrentWidget(page);
+    }
     refreshSoftkeys();
+    page->opened();
     if (snapshot_) {
-        page->render(*snapshot_);
-        status_->render(*snapshot_, page->id(), page->title());
-        renderHeld_ = false;
-        statusHeld_ = false;
+        renderHeld_ = true;
+        statusHeld_ = true;
+        if (!holdRendering_ || page->rendersEverySnapshot()) {
+            renderHeld();
+        }
     }
     return true;
 }
@@ -123,9 +128,12 @@ bool MainWindow::showPage(const QString& id) {
 void MainWindow::holdRendering(bool hold) {
     holdRendering_ = hold;
     if (!hold) {
+        showHeldPage();
         renderHeld();
     }
 }
+
+void MainWindow::showHeldPage() { stack_->setCurrentWidget(current_); }
 
 void MainWindow::renderHeld() {
     if ((renderHeld_ || statusHeld_) && snapshot_) {
@@ -138,7 +146,7 @@ void MainWindow::renderHeld() {
     statusHeld_ = false;
 }
 
-Page* MainWindow::currentPage() const { return static_cast<Page*>(stack_->currentWidget()); }
+Page* MainWindow::currentPage() const { return current_; }
 
 void MainWindow::refreshSoftkeys() { softkeys_->show(currentPage()->softkeys()); }
 

@@ -64,8 +64,13 @@ public:
     QJsonObject state() const;
     // A headless replay: the page and status line render a snapshot only when something is about
     // to read them (renderHeld), a page that keeps what each snapshot showed still renders them all.
+    // A page switch makes the page the one keys reach and snapshots render (currentPage), but the
+    // stack shows it (and lays it out) only when the hold ends, unless the page reads its layout.
     void holdRendering(bool hold);
     void renderHeld();
+    // The stack shows the current page now, while held too (before an action on a page that reads
+    // its layout).
+    void showHeldPage();
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -89,6 +94,7 @@ private:
     ActionDispatcher* dispatcher_;
     StatusLine* status_;
     PageStack* stack_;
+    Page* current_ = nullptr; // the page the operator is on; the stack shows it but while held
     QLabel* message_;
     QLabel* alarm_;
     SoftkeyBar* softkeys_;

@@ -101,11 +101,11 @@ bool onProgramDisk(MainWindow& window, const QString& file, QStringList* disks) 
     return shown;
 }
 
-// Whether the action may read what the layout decides: anything that reaches the screen (a page,
-// a softkey, a cursor key moving a list, typed text, a question). The machine's own keys (cycle,
+// Whether the action may read what the page shows: anything that reaches the screen (a page, a
+// softkey, a cursor key moving a list, typed text, a question). The machine's own keys (cycle,
 // jog, overrides, the handwheel's switches), the wheel, a forced input, a load and time passing
 // go to the machine alone.
-bool readsLayout(const OperatorAction& action) {
+bool readsScreen(const OperatorAction& action) {
     using Kind = OperatorAction::Kind;
     switch (action.kind) {
     case Kind::Wait:
@@ -279,9 +279,12 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
             !refused.isEmpty()) {
             return refused;
         }
-        if (layouts && readsLayout(action)) {
+        if (layouts && readsScreen(action)) {
             window.renderHeld();
-            layouts->catchUp();
+            if (window.currentPage()->readsLayout()) {
+                window.showHeldPage();
+                layouts->catchUp();
+            }
         }
         window.dispatcher().dispatch(action);
         if (action.kind == OperatorAction::Kind::Wait) {

@@ -46,9 +46,10 @@ std::optional<std::vector<OperatorAction>> readReplay(const QString& path, QStri
                                                       std::vector<ReplayPlace>* places = nullptr);
 
 // When a replay lays the panel out. EachAction: after every action, as the live panel does.
-// WhenRead: only before an action that may read what the layout decides (a list's scroll
-// position, the width of a question: any action on the screen rather than the machine) and at
-// the end; the end state and the screenshot are the same, the layout work a fraction.
+// WhenRead: only before an action on the screen of a page that reads its layout (Page::readsLayout:
+// the program editor, a machine view) and at the end. A page switch only changes the page keys
+// reach; the stack shows the last one at the end. The end state and the screenshot are the same,
+// the layout work a fraction.
 enum class ReplayLayout { EachAction, WhenRead };
 
 // Plays the actions against the panel in virtual time: time passes in display frames up to each

@@ -5,22 +5,53 @@
 
 #include <QHeaderView>
 #include <QLabel>
-#include <QTableWidget>
+#include <QScrollBar>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace m350::ui {
 
+PanelTable::PanelTable(QWidget* parent, int columns, const char* objectName, int rowHeight)
+    : QTableWidget(0, columns, parent), rowHeight_(rowHeight) {
+    setObjectName(objectName);
+    setFocusPolicy(Qt::NoFocus);
+    setSelectionBehavior(QAbstractItemView::SelectRows);
+    setSelectionMode(QAbstractItemView::SingleSelection);
+    setEditTriggers(QAbstractItemView::NoEditTriggers);
+    setVerticalScrollMode(QAbstractItemView::ScrollPerItem); // the scroll bar counts rows
+    verticalHeader()->hide();
+    verticalHeader()->setDefaultSectionSize(rowHeight);
+    new TextSizeDelegate(this);
+}
+
+int PanelTable::pageTop(int current, int rows, int pageRows) {
+    if (current < 0 || rows <= 0) {
+        return 0;
+    }
+    pageRows = std::max(pageRows, 1);
+    return std::min(current / pageRows * pageRows, std::max(rows - pageRows, 0));
+}
+
+void PanelTable::scrollTo(const QModelIndex&, ScrollHint) { showCurrentPage(); }
+
+void PanelTable::currentChanged(const QModelIndex& current, const QModelIndex& previous) {
+    QTableWidget::currentChanged(current, previous);
+    showCurrentPage(); // Qt scrolls a shown table only; a hidden one keeps its page ready too
+}
+
+void PanelTable::updateGeometries() {
+    QTableWidget::updateGeometries(); // the scroll bar's range for the height the layout gave
+    showCurrentPage();
+}
+
+void PanelTable::showCurrentPage() {
+    const int pageRows = viewport()->height() / rowHeight_;
+    verticalScrollBar()->setValue(pageTop(currentRow(), rowCount(), pageRows));
+}
+
 QTableWidget* makePanelTable(QWidget* parent, int columns, const char* objectName, int rowHeight) {
-    auto* table = new QTableWidget(0, columns, parent);
-    table->setObjectName(objectName);
-    table->setFocusPolicy(Qt::NoFocus);
-    table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table->setSelectionMode(QAbstractItemView::SingleSelection);
-    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    table->verticalHeader()->hide();
-    table->verticalHeader()->setDefaultSectionSize(rowHeight);
-    new TextSizeDelegate(table);
-    return table;
+    return new PanelTable(parent, columns, objectName, rowHeight);
 }
 
 QLabel* addPanelLabel(QVBoxLayout* column, QWidget* page, const char* objectName, bool wrap) {
