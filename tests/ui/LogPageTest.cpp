@@ -2,6 +2,7 @@
 // language, and stops saying it once an entry is written again.
 #include "tests/ui/PanelHarness.h"
 #include "ui/pages/LogPage.h"
+#include "ui/session/SessionLog.h"
 
 #include <QDir>
 #include <QLabel>
@@ -41,6 +42,36 @@ TEST(LogPage, AnUnwritableSystemLogIsSaidOnThePageInThePanelsLanguage) {
     PanelHarness again(*folder);
     again.key(QStringLiteral("RESET"));
     EXPECT_EQ(logProblemShown(again), QString());
+}
+
+// The page shows the newest SessionLog::kOffered entries, newest first; the file keeps them all
+// (snapshots carry only what the page shows: a copy of the whole log at every entry made a long
+// session slow).
+TEST(LogPage, ShowsTheNewestEntriesWhileTheFileKeepsThemAll) {
+    QTemporaryDir dir;
+    const std::string folder = dir.path().toStdString();
+    const int count = static_cast<int>(ui::SessionLog::kOffered) + 40;
+    {
+        ui::SessionLog log(folder);
+        for (int i = 1; i <= count; ++i) {
+            log.record("mdi", QStringLiteral("G0 X%1").arg(i));
+        }
+        ASSERT_EQ(log.entries()->size(), ui::SessionLog::kOffered);
+        EXPECT_EQ(log.entries()->back().detail, "G0 X" + std::to_string(count));
+        EXPECT_EQ(log.entries()->front().detail, "G0 X41");
+    }
+    ui::SessionLog again(folder); // the file has every entry, the snapshot the newest
+    EXPECT_EQ(again.entries()->size(), ui::SessionLog::kOffered);
+    EXPECT_EQ(fileText(dir.filePath(QStringLiteral("system-log.tsv"))).count(QStringLiteral("G0 X")), count);
+
+    PanelHarness panel;
+    for (int i = 1; i <= count; ++i) {
+        panel.key(QStringLiteral("RESET"));
+    }
+    panel.page(QStringLiteral("log"));
+    auto* page = panel.page<ui::LogPage>();
+    ASSERT_NE(page, nullptr);
+    EXPECT_EQ(page->rows(), static_cast<int>(ui::SessionLog::kOffered));
 }
 
 } // namespace m350::test

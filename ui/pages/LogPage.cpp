@@ -11,12 +11,6 @@
 
 namespace m350::ui {
 
-namespace {
-
-constexpr int kShownRows = 500; // the newest; the file keeps more
-
-} // namespace
-
 LogPage::LogPage(PanelContext& context, QWidget* parent) : Page(context, parent) {
     setObjectName("logPage");
     auto* column = new QVBoxLayout(this);
@@ -131,7 +125,7 @@ void LogPage::fill(const PanelSnapshot& snapshot) {
     shown_ = snapshot.log.get();
     const auto& entries = *snapshot.log;
     const QHash<QString, QString> words = eventTable();
-    int count = std::min<int>(kShownRows, static_cast<int>(entries.size()));
+    const int count = static_cast<int>(entries.size()); // the newest (SessionLog::kOffered): the file keeps more
     { // the fitted columns measured once, at the end of this block
         const TableFill filling(table_);
         table_->setRowCount(count);

@@ -130,6 +130,9 @@ void MainWindow::holdRendering(bool hold) {
     if (!hold) {
         showHeldPage();
         renderHeld();
+        if (softkeysHeld_) {
+            refreshSoftkeys();
+        }
     }
 }
 
@@ -148,7 +151,12 @@ void MainWindow::renderHeld() {
 
 Page* MainWindow::currentPage() const { return current_; }
 
-void MainWindow::refreshSoftkeys() { softkeys_->show(currentPage()->softkeys()); }
+void MainWindow::refreshSoftkeys() {
+    softkeysHeld_ = holdRendering_; // nothing reads the bar's buttons: a softkey asks the page
+    if (!softkeysHeld_) {
+        softkeys_->show(currentPage()->softkeys());
+    }
+}
 
 void MainWindow::pressSoftkey(int number) {
     QVector<Page::Softkey> keys = currentPage()->softkeys();

@@ -65,7 +65,8 @@ public:
     // A headless replay: the page and status line render a snapshot only when something is about
     // to read them (renderHeld), a page that keeps what each snapshot showed still renders them all.
     // A page switch makes the page the one keys reach and snapshots render (currentPage), but the
-    // stack shows it (and lays it out) only when the hold ends, unless the page reads its layout.
+    // stack shows it (and lays it out) only when the hold ends, unless the page reads its layout;
+    // the softkey bar shows the keys of the page then too.
     void holdRendering(bool hold);
     void renderHeld();
     // The stack shows the current page now, while held too (before an action on a page that reads
@@ -109,6 +110,7 @@ private:
     bool holdRendering_ = false;
     bool renderHeld_ = false; // a snapshot the page and status line have not rendered
     bool statusHeld_ = false; // a snapshot the status line has not rendered (the page has)
+    bool softkeysHeld_ = false; // the softkey bar does not show the current page's keys
     std::string toolPromptAlarm_; // the alarm the tool number prompt was last asked at
     std::string rightsPromptAlarm_; // the parameter write refused that the password was last asked at
     QMenu* panelMenu_ = nullptr;

@@ -5,9 +5,9 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QStorageInfo>
 
 #include <algorithm>
+#include <filesystem>
 
 namespace m350::ui {
 
@@ -85,7 +85,13 @@ ProgramFiles::NameProblem ProgramFiles::checkName(const QString& folder, const Q
     return NameProblem::None;
 }
 
-qint64 ProgramFiles::freeBytes(const QString& folder) { return QStorageInfo(folder).bytesAvailable(); }
+// std::filesystem::space asks the file system alone (statvfs); QStorageInfo read the whole mount
+// table first, at every disk switch of the Program page
+qint64 ProgramFiles::freeBytes(const QString& folder) {
+    std::error_code error;
+    const std::filesystem::space_info space = std::filesystem::space(folder.toStdString(), error);
+    return error ? -1 : static_cast<qint64>(space.available);
+}
 
 bool ProgramFiles::create(const QString& path, QString* error) {
     QFile file(path);

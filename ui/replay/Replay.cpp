@@ -101,23 +101,25 @@ bool onProgramDisk(MainWindow& window, const QString& file, QStringList* disks) 
     return shown;
 }
 
-// Whether the action may read what the page shows: anything that reaches the screen (a page, a
-// softkey, a cursor key moving a list, typed text, a question). The machine's own keys (cycle,
-// jog, overrides, the handwheel's switches), the wheel, a forced input, a load and time passing
-// go to the machine alone.
+// Whether the action may read what the page shows: a softkey, a key for the page or a question
+// (a cursor key moving a list, ENTER), typed text, the language. A page switch renders the page
+// it opens; the machine's own keys (cycle, jog, overrides, the handwheel's switches), the wheel,
+// a forced input, a load and time passing go to the machine alone.
 bool readsScreen(const OperatorAction& action) {
     using Kind = OperatorAction::Kind;
+    using Role = PanelKey::Role;
     switch (action.kind) {
     case Kind::Wait:
     case Kind::Wheel:
     case Kind::Force:
-    case Kind::Load: return false;
+    case Kind::Load:
+    case Kind::Page: return false;
     case Kind::Key:
     case Kind::KeyDown:
     case Kind::KeyUp: {
         const PanelKey* key = PanelKey::named(action.name);
-        return !key || !(key->role == PanelKey::Role::Machine || key->role == PanelKey::Role::Jog ||
-                         key->role == PanelKey::Role::Wheel);
+        return !key || !(key->role == Role::Machine || key->role == Role::Jog || key->role == Role::Wheel ||
+                         key->role == Role::Page);
     }
     default: return true;
     }

@@ -13,7 +13,13 @@ SessionLog::SessionLog(const std::string& machineFolder)
     if (!log_.load(&error)) {
         loadProblem_ = error;
     }
-    entries_ = std::make_shared<const std::vector<files::LogEntry>>(log_.entries());
+    offerNewest();
+}
+
+void SessionLog::offerNewest() {
+    const std::vector<files::LogEntry>& all = log_.entries();
+    const std::size_t first = all.size() > kOffered ? all.size() - kOffered : 0;
+    entries_ = std::make_shared<const std::vector<files::LogEntry>>(all.begin() + static_cast<std::ptrdiff_t>(first), all.end());
 }
 
 void SessionLog::record(const char* event, const QString& detail) {
@@ -25,7 +31,7 @@ void SessionLog::record(const char* event, const QString& detail) {
     } else {
         appendProblem_ = error;
     }
-    entries_ = std::make_shared<const std::vector<files::LogEntry>>(log_.entries());
+    offerNewest();
 }
 
 QString SessionLog::problem() const {

@@ -13,10 +13,13 @@ namespace m350::ui {
 using LogEntries = std::shared_ptr<const std::vector<files::LogEntry>>;
 
 // The session's side of the 系统日志: every operation and alarm, stamped with the wall clock,
-// appended to the machine folder's log, and offered to snapshots as an immutable list that is
-// replaced (not changed) when an entry arrives.
+// appended to the machine folder's log, and offered to snapshots as an immutable list of the
+// newest kOffered entries (what the System Log page shows), replaced (not changed) when an entry
+// arrives: the file keeps more, and copying all of them at every entry cost a long session dearly.
 class SessionLog {
 public:
+    static constexpr std::size_t kOffered = 500;
+
     explicit SessionLog(const std::string& machineFolder);
     // Event keys: see LogPage for their words (start_work, resume, pause, mdi, home_all ...).
     void record(const char* event, const QString& detail = {});
@@ -26,6 +29,8 @@ public:
     QString problem() const;
 
 private:
+    void offerNewest();
+
     files::SystemLog log_;
     LogEntries entries_;
     std::optional<Message> loadProblem_;
