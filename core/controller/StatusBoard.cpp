@@ -11,6 +11,7 @@
 #include "core/params/ParameterLimits.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -19,15 +20,19 @@ namespace m350::controller {
 namespace {
 
 // One modal group as the panel's modal line prints it: G00, G17, G80 ...
-std::string gWord(double code) {
-    char text[16];
-    double whole = std::floor(code);
-    if (code == whole) {
-        std::snprintf(text, sizeof text, "G%02d", static_cast<int>(whole));
-    } else {
-        std::snprintf(text, sizeof text, "G%.1f", code);
+// to_chars, not snprintf: the modal line is written at every snapshot, ten numbers each time
+void appendNumber(std::string& line, double value, int decimals) {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, decimals).ptr;
+    line.append(text, end);
+}
+
+void appendGWord(std::string& line, double code) {
+    line += 'G';
+    if (code == std::floor(code) && code >= 0.0 && code < 10.0) {
+        line += '0'; // G00 .. G09, as the panel shows them
     }
-    return text;
+    appendNumber(line, code, code == std::floor(code) ? 0 : 1);
 }
 
 } // namespace
@@ -133,16 +138,18 @@ std::string StatusBoard::modalLine() const {
     const interp::ModalState& s = context_.interp.state();
     std::string line;
     for (int group : {1, 2, 3, 5, 6, 7, 8, 9}) {
-        line += gWord(s.groups[static_cast<std::size_t>(group)]);
+        appendGWord(line, s.groups[static_cast<std::size_t>(group)]);
         line += ' ';
     }
     line += workSystemName(context_.interp.activeSlot());
     if (s.rotating()) {
         line += " G68";
     }
-    char words[64];
-    std::snprintf(words, sizeof words, " F%.0f S%.0f", s.feed, s.spindleSpeed);
-    return line + words;
+    line += " F";
+    appendNumber(line, s.feed, 0);
+    line += " S";
+    appendNumber(line, s.spindleSpeed, 0);
+    return line;
 }
 
 machine::SpindleState StatusBoard::spindleDisplay() const {

@@ -225,6 +225,29 @@ TEST(ProbePage, MultiToolSelectionGridTakesArrowsAndEnter) {
     EXPECT_FALSE(probe->selecting());
 }
 
+// 系统信息 counts the machine folder's programs each time it opens: every .nc (or .NC) file, in
+// subfolders too; hidden folders and files, other files and a dangling link are not programs.
+TEST(SystemPage, CountsTheMachineFoldersProgramsWhenItOpens) {
+    PanelHarness panel;
+    auto count = [&panel] {
+        panel.page(QStringLiteral("system"));
+        return panel.window().currentPage()->state().value("system_programs").toInt(-1);
+    };
+    const int before = count();
+    ASSERT_GE(before, 0);
+    const QDir folder(panel.folder());
+    ASSERT_TRUE(folder.mkpath(QStringLiteral("mine/deeper")));
+    ASSERT_TRUE(folder.mkpath(QStringLiteral(".hidden")));
+    putFile(folder.filePath(QStringLiteral("mine/a.nc")), "G0 X0\n");
+    putFile(folder.filePath(QStringLiteral("mine/deeper/B.NC")), "G0 X0\n");
+    putFile(folder.filePath(QStringLiteral("mine/notes.txt")), "not a program\n");
+    putFile(folder.filePath(QStringLiteral(".hidden/c.nc")), "G0 X0\n");
+    putFile(folder.filePath(QStringLiteral(".d.nc")), "G0 X0\n");
+    ASSERT_TRUE(QFile::link(folder.filePath(QStringLiteral("gone.nc")), folder.filePath(QStringLiteral("mine/dangling.nc"))));
+    panel.page(QStringLiteral("monitor"));
+    EXPECT_EQ(count(), before + 2);
+}
+
 TEST(Panel, SwitchingLanguageChangesTheWords) {
     PanelHarness panel;
     EXPECT_EQ(panel.window().statusLine()->modeText(), QStringLiteral("连续"));

@@ -34,4 +34,20 @@ TEST(SessionSnapshot, NeverUnchangedWithTheMachineInItsOwnThread) {
     EXPECT_FALSE(panel.session().unchangedSinceSnapshot());
 }
 
+// The machine's scene (the 图形显示 view's drawing of it) is built for the snapshots only while the
+// page shown draws the machine: built at every snapshot for nobody, it cost a replay a tenth of its
+// time.
+TEST(SessionSnapshot, CarriesTheMachinesSceneOnlyWhileAPageDrawsTheMachine) {
+    PanelHarness panel;
+    ui::settle(panel.session());
+    EXPECT_FALSE(panel.session().latest()->scene) << "the Monitor draws no machine";
+    panel.page(QStringLiteral("graphics"));
+    ASSERT_TRUE(panel.session().latest()->scene);
+    EXPECT_FALSE(panel.session().latest()->scene->magazine.pockets.empty());
+    panel.page(QStringLiteral("program")); // its simulation draws the machine beside the program
+    EXPECT_TRUE(panel.session().latest()->scene);
+    panel.page(QStringLiteral("param"));
+    EXPECT_FALSE(panel.session().latest()->scene);
+}
+
 } // namespace m350::test

@@ -24,6 +24,7 @@ public:
     void render(const PanelSnapshot& snapshot) override;
     bool rendersEverySnapshot() const override { return true; }
     bool readsLayout() const override { return true; } // the view fits a new path to its size
+    bool drawsMachine() const override { return true; }
     QJsonObject state() const override;
 
     MachineView* view() const { return view_; }

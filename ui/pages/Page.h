@@ -51,6 +51,8 @@ public:
     virtual bool readsLayout() const { return false; }
     // The operator came to the page (its key, a softkey, a replay's "page").
     virtual void opened() {}
+    // Whether the page draws the machine (snapshots then carry its scene).
+    virtual bool drawsMachine() const { return false; }
     virtual void retranslate() {}
     virtual QJsonObject state() const { return {}; } // page-specific part of --state
 

@@ -29,6 +29,7 @@ constexpr int kUnitMinWidth = 62;
 constexpr int kUnitMaxWidth = 110;
 constexpr int kFirstVariable = 50;
 constexpr int kLastVariable = 499;
+constexpr int kShownValue = Qt::UserRole; // the value an item's text was written for
 
 QString localName(const std::string& zh, const std::string& en, bool chinese) {
     return QString::fromStdString(chinese && !zh.empty() ? zh : en);
@@ -298,6 +299,7 @@ QString ParamPage::groupTitle(int group) const {
 }
 
 void ParamPage::retranslate() {
+    infoFor_.reset(); // the words again, in the language now in force
     table_->setHorizontalHeaderLabels({tr("No.", "msg 83"), tr("Note", "msg 84"), tr("Value", "msg 85"),
                                        tr("Unit", "msg 86")});
     if (!pages_) {
@@ -312,6 +314,7 @@ void ParamPage::retranslate() {
             const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
             table_->item(row, Note)->setText(localName(info.nameZh, info.nameEn, chinese));
             table_->item(row, Note)->setToolTip(table_->item(row, Note)->text());
+            table_->item(row, Value)->setData(kShownValue, QVariant()); // its words again too
         }
     }
     if (auto s = context().snapshot()) {
@@ -378,17 +381,30 @@ void ParamPage::render(const PanelSnapshot& snapshot) {
     fillInfo();
 }
 
+// A value's text is written again only when the value changed (the item keeps the value it shows):
+// the parameters seldom change, and their words cost translations at every snapshot.
 void ParamPage::fillValues(const PanelSnapshot& snapshot) {
     const auto& numbers = pages_->categories()[category_].numbers;
     for (int row = 0; row < table_->rowCount(); ++row) {
-        int number = numbers[static_cast<std::size_t>(row)];
-        table_->item(row, Value)->setText(formatValue(*catalogue_->find(number), snapshot.status.parameters.get(number)));
+        const int number = numbers[static_cast<std::size_t>(row)];
+        const double value = snapshot.status.parameters.get(number);
+        QTableWidgetItem* item = table_->item(row, Value);
+        if (const QVariant shown = item->data(kShownValue); shown.isValid() && shown.toDouble() == value) {
+            continue;
+        }
+        item->setData(kShownValue, value);
+        item->setText(formatValue(*catalogue_->find(number), value));
     }
 }
 
 void ParamPage::fillInfo() {
     int number = selectedNumber();
     const params::UserLevel level = context().session().userLevel();
+    const InfoFor infoFor{number, variables_, level, category_};
+    if (infoFor_ == infoFor) {
+        return;
+    }
+    infoFor_ = infoFor;
     const QString current = tr("(now: %1)").arg(UserAccess::levelName(level));
     if (variables_ || number < 0 || !pages_) {
         if (variables_) {

@@ -71,6 +71,16 @@ private:
     QTableWidget* table_;
     QLabel* info_;
     SnapshotPtr shown_; // the snapshot the values come from
+    // What the info lines below the table were written for: the same again writes nothing (their
+    // words cost a dozen translations, at every snapshot and every cursor move).
+    struct InfoFor {
+        int number = -1;
+        bool variables = false;
+        params::UserLevel level = params::UserLevel::Guest;
+        std::size_t category = 0;
+        friend bool operator==(const InfoFor&, const InfoFor&) = default;
+    };
+    std::optional<InfoFor> infoFor_;
 };
 
 } // namespace m350::ui

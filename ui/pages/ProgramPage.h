@@ -33,6 +33,7 @@ public:
     bool rendersEverySnapshot() const override { return true; }
     // the editor scrolls to its cursor, the simulation's view fits its path: the file list does not
     bool readsLayout() const override { return mode_ != Mode::List; }
+    bool drawsMachine() const override { return true; } // the simulation's view, beside the machine
     void retranslate() override;
     QJsonObject state() const override;
 

@@ -9,12 +9,12 @@
 #include "ui/widgets/MeasuredLabel.h"
 #include "ui/widgets/WrappedLabel.h"
 
-#include <QDirIterator>
 #include <QGridLayout>
 #include <QJsonObject>
 #include <QLabel>
 #include <QVBoxLayout>
 
+#include <filesystem>
 #include <variant>
 
 namespace m350::ui {
@@ -80,14 +80,23 @@ void SystemPage::softkey(int number) {
 }
 
 // The programs a trainee keeps with the machine: every .nc file in the machine folder and below
-// (its macro libraries included).
+// (its macro libraries included), hidden ones left out. std::filesystem, not QDirIterator: its name
+// filters compiled a regular expression at every opening of the page.
 void SystemPage::countPrograms() {
+    namespace fs = std::filesystem;
     programs_ = 0;
-    QDirIterator it(context().machineFolder(), {QStringLiteral("*.nc"), QStringLiteral("*.NC")}, QDir::Files,
-                    QDirIterator::Subdirectories);
-    while (it.hasNext()) {
-        it.next();
-        ++programs_;
+    std::error_code error;
+    for (fs::recursive_directory_iterator it(context().machineFolder().toStdString(), error), end; !error && it != end;
+         it.increment(error)) {
+        if (it->path().filename().string().starts_with('.')) { // hidden, as QDir leaves them out
+            it.disable_recursion_pending();
+            continue;
+        }
+        const std::string extension = it->path().extension().string();
+        std::error_code unreadable; // a dangling link: not a program, the count goes on
+        if ((extension == ".nc" || extension == ".NC") && it->is_regular_file(unreadable)) {
+            ++programs_;
+        }
     }
 }
 

@@ -110,6 +110,10 @@ bool MainWindow::showPage(const QString& id) {
         return false; // every id of PageTable has its page: only a caller's typo lands here
     }
     current_ = page;
+    if (page->drawsMachine() != sceneWatched_) {
+        sceneWatched_ = page->drawsMachine();
+        session_.watchScene(sceneWatched_);
+    }
     if (!holdRendering_ || page->readsLayout()) {
         stack_->setCurrentWidget(page);
     }

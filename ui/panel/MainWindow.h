@@ -96,6 +96,7 @@ private:
     StatusLine* status_;
     PageStack* stack_;
     Page* current_ = nullptr; // the page the operator is on; the stack shows it but while held
+    bool sceneWatched_ = false; // snapshots carry the machine's scene (the current page draws it)
     QLabel* message_;
     QLabel* alarm_;
     SoftkeyBar* softkeys_;

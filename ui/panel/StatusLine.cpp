@@ -61,7 +61,11 @@ void StatusLine::render(const PanelSnapshot& snapshot, const QString& pageId, co
     file_->setText(file);
     page_->setText(pageTitle);
     level_->setText(UserAccess::levelName(snapshot.userLevel));
-    clock_->setText(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
+    // the local time once a second: its conversion asks the time zone file each time
+    if (const qint64 second = QDateTime::currentSecsSinceEpoch(); second != clockSecond_) {
+        clockSecond_ = second;
+        clock_->setText(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
+    }
 }
 
 QString StatusLine::modeText() const { return mode_->text(); }

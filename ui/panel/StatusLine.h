@@ -27,6 +27,7 @@ private:
     QLabel* page_;
     QLabel* level_; // 访客 / 操作员 / 管理员 / 超级管理
     QLabel* clock_;
+    qint64 clockSecond_ = -1; // the second the clock shows
 };
 
 } // namespace m350::ui

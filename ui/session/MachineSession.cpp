@@ -142,6 +142,7 @@ void MachineSession::replaceToolTable(const tools::ToolTable& table, const QStri
 void MachineSession::touchOffTool(double workZ) { post([workZ](SessionWorker& w) { w.touchOffTool(workZ); }); }
 void MachineSession::resetToolLife(int group) { post([group](SessionWorker& w) { w.resetToolLife(group); }); }
 void MachineSession::watchVariables(bool on) { post([on](SessionWorker& w) { w.watchVariables(on); }); }
+void MachineSession::watchScene(bool on) { post([on](SessionWorker& w) { w.watchScene(on); }); }
 bool MachineSession::login(params::UserLevel level, const QString& password) {
     const bool opened = access_.login(level, password);
     logPasswordsProblem();

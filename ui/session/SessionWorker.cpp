@@ -190,8 +190,10 @@ void SessionWorker::publish() {
     snapshot->tWordChangesTool = controller_->dialect().tCodeProgram >= 0;
     spindleLoad_ = spindleLoadSince(std::move(spindleLoad_), *controller_, snapshot->status.tool);
     snapshot->spindleLoad = spindleLoad_;
-    scene_ = preview::sceneSince(std::move(scene_), *controller_);
-    snapshot->scene = scene_;
+    if (watchScene_) {
+        scene_ = preview::sceneSince(std::move(scene_), *controller_);
+        snapshot->scene = scene_;
+    }
     snapshot->userLevel = userLevel_;
     if (watchVariables_) {
         snapshot->userVariables = userVariables();

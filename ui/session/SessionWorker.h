@@ -91,9 +91,11 @@ public:
     void spindleKey(int code);
     void setOutput(int port, int level);
     void forceInput(int pin, MachineSession::Fault fault, int level, double seconds);
-    // SessionWorkerSettings.cpp: the Param page's batch, the #50-#499 view, the user level
+    // SessionWorkerSettings.cpp: the Param page's batch, the #50-#499 view, the machine's scene,
+    // the user level
     void setParameters(const std::map<int, double>& values);
     void watchVariables(bool on);
+    void watchScene(bool on);
     void setUserLevel(params::UserLevel level);
     void recordLog(const char* event, const QString& detail) { log_->record(event, detail); }
     // SessionWorkerTools.cpp: the tool table page's edits, import and touch off. Every change of
@@ -161,6 +163,7 @@ private:
     config::MachineFolder folder_{std::filesystem::path()}; // the machine folder: every file the session writes there
     params::ParameterTable kept_; // the parameters as params.toml holds them
     bool watchVariables_ = false;
+    bool watchScene_ = false;
     params::UserLevel userLevel_ = params::UserLevel::Guest;
 };
 

@@ -67,6 +67,17 @@ void SessionWorker::watchVariables(bool on) {
     publish();
 }
 
+void SessionWorker::watchScene(bool on) {
+    if (on == watchScene_) {
+        return;
+    }
+    watchScene_ = on;
+    if (!on) {
+        scene_.reset();
+    }
+    publish();
+}
+
 QVector<double> SessionWorker::userVariables() {
     QVector<double> values;
     values.reserve(kLastUserVariable - kFirstUserVariable + 1);
