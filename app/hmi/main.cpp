@@ -79,6 +79,12 @@ int main(int argc, char** argv) {
     }
     const qint64 startNs = ui::steadyNowNs();
     std::signal(SIGPIPE, SIG_IGN); // a FIFO whose reader went away is a write error, said, not a silent death
+    // With TZ unset, glibc looks at /etc/localtime again (a stat) at every local-time conversion Qt
+    // asks for (the clock, the log's stamps, the file list's dates); naming that same file reads it
+    // once. Same zone, same rules; a TZ the user set (even empty: UTC) is left as it is.
+    if (!qEnvironmentVariableIsSet("TZ") && QFile::exists(QStringLiteral("/etc/localtime"))) {
+        qputenv("TZ", ":/etc/localtime");
+    }
     QApplication app(argc, argv); // takes Qt's own options (-platform ...) out of argv first
     QApplication::setApplicationName(QStringLiteral("m350-studio"));
     ui::installQuietOffscreen();

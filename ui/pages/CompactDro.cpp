@@ -62,13 +62,19 @@ void CompactDro::changeEvent(QEvent* event) {
 void CompactDro::retranslate() {
     machineHeader_->setText(tr("Mach", "msg 34"));
     workHeader_->setText(tr("Abs", "msg 35"));
+    rows_.fill(std::nullopt); // the units' words again
 }
 
 void CompactDro::render(const PanelSnapshot& snapshot) {
     const controller::PanelStatus& s = snapshot.status;
     for (int axis = 0; axis < 5; ++axis) {
         const auto i = static_cast<std::size_t>(axis);
-        bool shown = s.axisShown[i];
+        const bool shown = s.axisShown[i];
+        const Row row{shown, s.axisName[i], s.axisRotary[i], s.machine(axis), s.work(axis)};
+        if (rows_[i] == row) {
+            continue;
+        }
+        rows_[i] = row;
         for (QLabel* label : {names_[i], machine_[i], work_[i], units_[i]}) {
             label->setVisible(shown);
         }

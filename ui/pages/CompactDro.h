@@ -5,6 +5,7 @@
 #include <QWidget>
 
 #include <array>
+#include <optional>
 
 class QLabel;
 
@@ -33,6 +34,17 @@ private:
     std::array<QLabel*, 5> machine_{};
     std::array<QLabel*, 5> work_{};
     std::array<QLabel*, 5> units_{};
+    // What each row shows now: a row the same again is not written (its words and numbers cost
+    // more than the comparison, at every snapshot).
+    struct Row {
+        bool shown = false;
+        char name = 0;
+        bool rotary = false;
+        double machine = 0.0;
+        double work = 0.0;
+        friend bool operator==(const Row&, const Row&) = default;
+    };
+    std::array<std::optional<Row>, 5> rows_{};
 };
 
 // A coordinate as the panel shows it: three decimals, fixed width, no "-0.000", so digits never jump.

@@ -239,6 +239,8 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
                    const QString& path, const std::vector<ReplayPlace>& places, ReplayLayout layout) {
     constexpr double kFrame = 1.0 / 60.0;
     double now = 0.0;
+    const bool fast = layout == ReplayLayout::WhenRead;
+    auto deliver = [fast] { fast ? QCoreApplication::sendPostedEvents() : QCoreApplication::processEvents(); };
     // nobody watches a replay's frames: the pages render each snapshot as always, but no widget
     // paints until the replay ends (a page switch cost 3.5 ms of painting)
     const bool painting = window.updatesEnabled();
@@ -275,7 +277,7 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
                 session.advance(step);
                 now += step;
             }
-            QCoreApplication::processEvents();
+            deliver();
         }
         if (QString refused = refusedReplayLoad(window, action, path, i < places.size() ? places[i] : ReplayPlace{});
             !refused.isEmpty()) {
@@ -295,9 +297,11 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
         if (i + 1 < actions.size() && actions[i + 1].t > action.t + 1e-9 && session.unchangedSinceSnapshot()) {
             // an action on the screen alone (a page, a list, a menu): the machine's snapshot stands,
             // and the time before the next action ends in a new one, as a snapshot now would
-            QCoreApplication::processEvents();
+            deliver();
         } else {
-            settle(session);
+            session.sync();
+            deliver();
+            deliver();
         }
     }
     settle(session);
