@@ -101,28 +101,38 @@ bool onProgramDisk(MainWindow& window, const QString& file, QStringList* disks) 
     return shown;
 }
 
-// Whether the action may read what the page shows: a softkey, a key for the page or a question
-// (a cursor key moving a list, ENTER), typed text, the language. A page switch renders the page
-// it opens; the machine's own keys (cycle, jog, overrides, the handwheel's switches), the wheel,
-// a forced input, a load and time passing go to the machine alone.
-bool readsScreen(const OperatorAction& action) {
+// Whether the action goes to the machine alone: the machine's own keys (cycle, jog, overrides, the
+// handwheel's switches), the wheel, a forced input, a load. Each ends in a snapshot of its own.
+bool goesToMachineAlone(const OperatorAction& action) {
     using Kind = OperatorAction::Kind;
     using Role = PanelKey::Role;
     switch (action.kind) {
-    case Kind::Wait:
     case Kind::Wheel:
     case Kind::Force:
-    case Kind::Load:
-    case Kind::Page: return false;
+    case Kind::Load: return true;
     case Kind::Key:
     case Kind::KeyDown:
     case Kind::KeyUp: {
         const PanelKey* key = PanelKey::named(action.name);
-        return !key || !(key->role == Role::Machine || key->role == Role::Jog || key->role == Role::Wheel ||
-                         key->role == Role::Page);
+        return key && (key->role == Role::Machine || key->role == Role::Jog || key->role == Role::Wheel);
     }
-    default: return true;
+    default: return false;
     }
+}
+
+// Whether the action may read what the page shows: a softkey, a key for the page or a question
+// (a cursor key moving a list, ENTER), typed text, the language. A page switch renders the page
+// it opens; the machine alone and time passing read nothing of the screen.
+bool readsScreen(const OperatorAction& action) {
+    using Kind = OperatorAction::Kind;
+    if (action.kind == Kind::Wait || action.kind == Kind::Page || goesToMachineAlone(action)) {
+        return false;
+    }
+    if (action.kind == Kind::Key || action.kind == Kind::KeyDown || action.kind == Kind::KeyUp) {
+        const PanelKey* key = PanelKey::named(action.name);
+        return !key || key->role != PanelKey::Role::Page;
+    }
+    return true;
 }
 
 } // namespace
@@ -266,10 +276,12 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
         // recorded with it), the next action's frames end in a snapshot
         const bool mark = action.kind == OperatorAction::Kind::Wait && i + 1 < actions.size() &&
                           actions[i + 1].t > action.t + 1e-9 && !window.recording();
+        // an action for the machine alone needs no snapshot before it: its own shows the time too
+        const bool unseen = mark || (goesToMachineAlone(action) && !window.recording());
         while (now + 1e-9 < action.t) {
-            if (const double passed = session.advanceWhileQuiet(action.t - now, !mark); passed > 0.0) {
+            if (const double passed = session.advanceWhileQuiet(action.t - now, !unseen); passed > 0.0) {
                 now += passed;
-                if (mark && now + 1e-9 >= action.t) {
+                if (unseen && now + 1e-9 >= action.t) {
                     break; // no snapshot came: nothing to show
                 }
             } else {
