@@ -274,7 +274,10 @@ std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path
         return SourceReadError::of(path, message("file_too_big_program", {std::to_string(info.st_size / (1024 * 1024)),
                                                                           std::to_string(kMostProgramBytes / (1024 * 1024))}));
     }
-    if (auto mapped = MappedFile::map(path)) {
+    // a small file (a hook, an MDI line, a macro) is read: mapping and unmapping it cost more than
+    // the copy, at every MDI line the panel runs
+    constexpr std::uintmax_t kMappedFromBytes = std::uintmax_t{256} << 10;
+    if (auto mapped = static_cast<std::uintmax_t>(info.st_size) >= kMappedFromBytes ? MappedFile::map(path) : nullptr) {
         std::string_view bytes = mapped->bytes();
         auto decoded = decodeOwned(path, bytes, mapped, mapped);
         if (mapped->truncated()) {
