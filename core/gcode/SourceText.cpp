@@ -161,6 +161,21 @@ struct FileCloser {
     void operator()(std::FILE* f) const { std::fclose(f); }
 };
 
+#if M350_HAVE_MMAP
+// A file descriptor, closed when it goes.
+struct Descriptor {
+    explicit Descriptor(int descriptor) : fd(descriptor) {}
+    Descriptor(const Descriptor&) = delete;
+    Descriptor& operator=(const Descriptor&) = delete;
+    ~Descriptor() {
+        if (fd >= 0) {
+            ::close(fd);
+        }
+    }
+    int fd;
+};
+#endif
+
 }  // namespace
 
 std::string_view encodingName(TextEncoding encoding) {
@@ -257,12 +272,11 @@ Diagnostic diagnosticOf(const SourceReadError& error) {
 std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path) {
 #if M350_HAVE_MMAP
     // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below anyway.
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    const Descriptor checked(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
+    const int fd = checked.fd;
     if (fd < 0) return SourceReadError::of(path, message("file_cannot_open", {errnoWords(errno)}));
     struct stat info {};
-    const bool statted = ::fstat(fd, &info) == 0;
-    ::close(fd);
-    if (!statted) return SourceReadError::of(path, message("file_cannot_read", {errnoWords(errno)}));
+    if (::fstat(fd, &info) != 0) return SourceReadError::of(path, message("file_cannot_read", {errnoWords(errno)}));
     if (!S_ISREG(info.st_mode)) {
         // /dev/zero or a FIFO never ends: reading one allocated until memory ran out
         return SourceReadError::of(path, message(S_ISDIR(info.st_mode)    ? "file_is_folder"
@@ -274,10 +288,27 @@ std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path
         return SourceReadError::of(path, message("file_too_big_program", {std::to_string(info.st_size / (1024 * 1024)),
                                                                           std::to_string(kMostProgramBytes / (1024 * 1024))}));
     }
-    // a small file (a hook, an MDI line, a macro) is read: mapping and unmapping it cost more than
-    // the copy, at every MDI line the panel runs
+    // a small file (a hook, an MDI line, a macro) is read from the descriptor it was checked on:
+    // mapping and unmapping it, or opening it again, cost more than the copy, at every MDI line
     constexpr std::uintmax_t kMappedFromBytes = std::uintmax_t{256} << 10;
-    if (auto mapped = static_cast<std::uintmax_t>(info.st_size) >= kMappedFromBytes ? MappedFile::map(path) : nullptr) {
+    if (static_cast<std::uintmax_t>(info.st_size) < kMappedFromBytes) {
+        auto bytes = std::make_shared<std::string>();
+        char buffer[16384];
+        ssize_t n = 0;
+        while ((n = ::read(fd, buffer, sizeof buffer)) > 0 || (n < 0 && errno == EINTR)) {
+            if (n < 0) {
+                continue;
+            }
+            if (bytes->size() + static_cast<std::size_t>(n) > kMostSourceBytes) {
+                return SourceReadError::of(path, message("file_longer_than", {std::to_string(kMostSourceBytes / (1024 * 1024))}));
+            }
+            bytes->append(buffer, static_cast<std::size_t>(n));
+        }
+        if (n < 0) return SourceReadError::of(path, message("file_cannot_read", {errnoWords(errno)}));
+        std::string_view view = *bytes;
+        return decodeOwned(path, view, std::move(bytes));
+    }
+    if (auto mapped = MappedFile::map(path)) {
         std::string_view bytes = mapped->bytes();
         auto decoded = decodeOwned(path, bytes, mapped, mapped);
         if (mapped->truncated()) {
