@@ -200,17 +200,23 @@ void ParamPage::showCategory(std::size_t category) {
     const auto& numbers = pages_->categories()[category].numbers;
     table_->clearContents();
     const bool chinese = PanelText::chinese();
+    const SnapshotPtr snapshot = context().snapshot();
     { // the fitted columns measured once, at the end of this block
         const TableFill filling(table_);
         table_->setRowCount(static_cast<int>(numbers.size()));
         for (int row = 0; row < table_->rowCount(); ++row) {
-            // each item whole before it goes in: a change to an item in the table is one more
-            // signal to the view (a group's rows were four signals each more than needed)
+            // each item whole before it goes in, its value too: a change to an item in the table is
+            // one more signal to the view (a group's rows were four signals each more than needed)
             const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
             auto* note = new QTableWidgetItem(localName(info.nameZh, info.nameEn, chinese));
             note->setToolTip(note->text());
             auto* value = new QTableWidgetItem;
             value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            if (snapshot) {
+                const double shown = snapshot->status.parameters.get(info.number);
+                value->setData(kShownValue, shown);
+                value->setText(formatValue(info, shown));
+            }
             auto* unit = new QTableWidgetItem(QString::fromStdString(info.unit));
             unit->setToolTip(unit->text());
             table_->setItem(row, Number, new QTableWidgetItem(QString::number(info.number)));
@@ -225,8 +231,8 @@ void ParamPage::showCategory(std::size_t category) {
     table_->setColumnWidth(Unit, std::clamp(table_->columnWidth(Unit), kUnitMinWidth, kUnitMaxWidth));
     table_->selectRow(0);
     showCaptions();
-    if (auto s = context().snapshot()) {
-        render(*s);
+    if (snapshot) {
+        render(*snapshot);
     }
 }
 
