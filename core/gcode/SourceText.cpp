@@ -7,6 +7,7 @@
 
 #if defined(__unix__)
 #define M350_HAVE_MMAP 1
+#include "core/files/FileDescriptor.h"
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -161,21 +162,6 @@ struct FileCloser {
     void operator()(std::FILE* f) const { std::fclose(f); }
 };
 
-#if M350_HAVE_MMAP
-// A file descriptor, closed when it goes.
-struct Descriptor {
-    explicit Descriptor(int descriptor) : fd(descriptor) {}
-    Descriptor(const Descriptor&) = delete;
-    Descriptor& operator=(const Descriptor&) = delete;
-    ~Descriptor() {
-        if (fd >= 0) {
-            ::close(fd);
-        }
-    }
-    int fd;
-};
-#endif
-
 }  // namespace
 
 std::string_view encodingName(TextEncoding encoding) {
@@ -272,8 +258,8 @@ Diagnostic diagnosticOf(const SourceReadError& error) {
 std::variant<SourceText, SourceReadError> readSourceFile(const std::string& path) {
 #if M350_HAVE_MMAP
     // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below anyway.
-    const Descriptor checked(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
-    const int fd = checked.fd;
+    const files::FileDescriptor checked(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
+    const int fd = checked.get();
     if (fd < 0) return SourceReadError::of(path, message("file_cannot_open", {errnoWords(errno)}));
     struct stat info {};
     if (::fstat(fd, &info) != 0) return SourceReadError::of(path, message("file_cannot_read", {errnoWords(errno)}));
