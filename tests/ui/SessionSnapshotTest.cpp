@@ -26,6 +26,26 @@ TEST(SessionSnapshot, UnchangedOnlyUntilACallReachesTheMachineInThePanelsThread)
     EXPECT_FALSE(panel.session().unchangedSinceSnapshot()) << "the key's call is queued, not yet shown";
 }
 
+// In the panel's thread a call that ends in a snapshot of its own needs no second one from sync()
+// (a replay syncs after every action on the machine); a sync with nothing run still publishes.
+TEST(SessionSnapshot, SyncAfterACallThatPublishedPublishesNothingMore) {
+    ui::MachineSession::Options options;
+    options.clock = ui::MachineSession::Clock::Manual;
+    options.panelThread = true;
+    PanelHarness panel(options);
+    ui::settle(panel.session());
+    int published = 0;
+    QObject::connect(&panel.session(), &ui::MachineSession::snapshotReady, [&published] { ++published; });
+    panel.session().setJogStep(0.1); // publishes when it runs
+    panel.session().sync();
+    QCoreApplication::sendPostedEvents();
+    EXPECT_EQ(published, 1);
+    EXPECT_TRUE(panel.session().unchangedSinceSnapshot());
+    panel.session().sync(); // nothing ran: a snapshot all the same
+    QCoreApplication::sendPostedEvents();
+    EXPECT_EQ(published, 2);
+}
+
 TEST(SessionSnapshot, NeverUnchangedWithTheMachineInItsOwnThread) {
     ui::MachineSession::Options options;
     options.clock = ui::MachineSession::Clock::Manual;

@@ -181,7 +181,13 @@ double MachineSession::advanceWhileQuiet(double seconds, bool publishAtEnd) {
 }
 
 void MachineSession::sync() {
-    runNow([](SessionWorker& w) { w.publish(); });
+    runNow([this](SessionWorker& w) {
+        // in the panel's thread, calls that ended in a snapshot of their own need no second one
+        // (panelThread_ first: in the worker's thread the counters are the panel thread's)
+        if (!panelThread_ || callsAtSnapshot_ != calls_) {
+            w.publish();
+        }
+    });
 }
 
 void MachineSession::examine(const std::function<void(controller::Controller&)>& look) {
