@@ -5,11 +5,20 @@
 
 namespace m350::test {
 
-TEST(SessionSnapshot, UnchangedOnlyUntilACallReachesTheMachineInThePanelsThread) {
+namespace {
+
+// The machine in the panel's thread on a manual clock, as a headless replay runs it.
+ui::MachineSession::Options inThePanelsThread() {
     ui::MachineSession::Options options;
     options.clock = ui::MachineSession::Clock::Manual;
     options.panelThread = true;
-    PanelHarness panel(options);
+    return options;
+}
+
+} // namespace
+
+TEST(SessionSnapshot, UnchangedOnlyUntilACallReachesTheMachineInThePanelsThread) {
+    PanelHarness panel(inThePanelsThread());
     ui::settle(panel.session());
     EXPECT_TRUE(panel.session().unchangedSinceSnapshot());
     panel.page(QStringLiteral("param")); // the screen alone
@@ -29,10 +38,7 @@ TEST(SessionSnapshot, UnchangedOnlyUntilACallReachesTheMachineInThePanelsThread)
 // In the panel's thread a call that ends in a snapshot of its own needs no second one from sync()
 // (a replay syncs after every action on the machine); a sync with nothing run still publishes.
 TEST(SessionSnapshot, SyncAfterACallThatPublishedPublishesNothingMore) {
-    ui::MachineSession::Options options;
-    options.clock = ui::MachineSession::Clock::Manual;
-    options.panelThread = true;
-    PanelHarness panel(options);
+    PanelHarness panel(inThePanelsThread());
     ui::settle(panel.session());
     int published = 0;
     QObject::connect(&panel.session(), &ui::MachineSession::snapshotReady, [&published] { ++published; });
