@@ -1,12 +1,10 @@
 #include "ui/panel/MainWindow.h"
 
-#include "core/controller/ParameterWrites.h"
 #include "core/files/OutputGuard.h"
 #include "ui/actions/ActionRecorder.h"
 #include "ui/actions/KeyboardMap.h"
 #include "ui/i18n/AlarmText.h"
 #include "ui/i18n/Language.h"
-#include "ui/pages/LevelPrompt.h"
 #include "ui/pages/Page.h"
 #include "ui/pages/PageId.h"
 #include "ui/pages/PageTable.h"
@@ -14,6 +12,7 @@
 #include "ui/panel/BackupImportFlow.h"
 #include "ui/panel/HandwheelWidget.h"
 #include "ui/panel/KeyPad.h"
+#include "ui/panel/MachineQuestions.h"
 #include "ui/panel/PageStack.h"
 #include "ui/panel/PanelBody.h"
 #include "ui/panel/PanelMode.h"
@@ -62,6 +61,7 @@ MainWindow::MainWindow(MachineSession& session, QString machineFolder, Language*
     keys_->setFixedWidth(348);
     setCentralWidget(new PanelBody(screen, keys_, this));
     prompt_ = new PromptBox(this);
+    questions_ = std::make_unique<MachineQuestions>(session_, context_, *prompt_);
     context_.attach(prompt_, [this](const QString& text) { notify(text); });
     recorder_ = new ActionRecorder([this] { return snapshot_ ? snapshot_->sessionTime : 0.0; }, this);
     connect(dispatcher_, &ActionDispatcher::dispatched, recorder_, &ActionRecorder::record);
@@ -253,70 +253,7 @@ void MainWindow::onSnapshot(const SnapshotPtr& snapshot) {
     }
     alarm_->setText(alarm);
     alarm_->setVisible(!alarm.isEmpty());
-    showMacroDialog(s);
-    askToolNumber(s);
-    askRights(s);
-    if (s.homingPrompt && !bootPromptAsked_) {
-        bootPromptAsked_ = true;
-        context_.ask(tr("Go to home?", "msg 140"), [this](bool yes) {
-            if (yes) {
-                session_.home({});
-            }
-        });
-    }
-}
-
-// After a stop in a change the controller does not know the spindle's tool: at the E-stop, and
-// again at each change it refuses, the operator is asked to enter it (the firmware's msg 883).
-void MainWindow::askToolNumber(const PanelSnapshot& s) {
-    if (!s.status.toolUnsure || !s.status.alarm) {
-        toolPromptAlarm_.clear();
-        return;
-    }
-    const std::string at = s.status.alarm->message + ":" + std::to_string(s.status.alarm->line);
-    if (at == toolPromptAlarm_ || prompt_->active()) {
-        return;
-    }
-    toolPromptAlarm_ = at;
-    const QString question = AlarmText::message(*s.status.toolUnsure) + QStringLiteral("\n") +
-                             tr("Set target tool No.:", "msg 883");
-    prompt_->ask(question, true, QString::number(s.status.tool), [this](std::optional<QString> answer) {
-        bool number = false;
-        const int tool = answer ? answer->trimmed().toInt(&number) : -1;
-        if (number && tool >= 0) {
-            session_.setSpindleToolNumber(tool);
-        }
-    });
-}
-
-// The operator's MDI line or program wrote a parameter above the user level: the run stopped with
-// the refusal, and the password of the level it needs is asked as the Param page asks it.
-void MainWindow::askRights(const PanelSnapshot& s) {
-    if (!s.status.alarm || s.status.alarm->code != AlarmCode::RightsLimited || s.status.alarm->messageArguments.empty()) {
-        rightsPromptAlarm_.clear();
-        return;
-    }
-    const std::string at = s.status.alarm->message + ":" + std::to_string(s.status.alarm->line);
-    if (at == rightsPromptAlarm_ || prompt_->active()) {
-        return;
-    }
-    rightsPromptAlarm_ = at;
-    const int parameter = QString::fromStdString(s.status.alarm->messageArguments.front()).toInt();
-    LevelPrompt::require(context_, controller::ParameterWrites::required(parameter), {});
-}
-
-// A macro's #1505 dialog: the run waits until the operator answers it.
-void MainWindow::showMacroDialog(const PanelSnapshot& s) {
-    if (!s.status.dialog) {
-        dialogShown_.clear();
-        return;
-    }
-    if (*s.status.dialog == dialogShown_ && prompt_->active()) {
-        return;
-    }
-    dialogShown_ = *s.status.dialog;
-    prompt_->ask(QString::fromStdString(*s.status.dialog), false, {},
-                 [this](std::optional<QString> answer) { session_.answerDialog(answer.has_value()); });
+    questions_->ask(s);
 }
 
 QJsonObject MainWindow::state() const {

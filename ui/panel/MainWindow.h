@@ -12,12 +12,15 @@
 #include <QMainWindow>
 #include <QMap>
 
+#include <memory>
+
 class QLabel;
 
 namespace m350::ui {
 
 class BackupImportFlow;
 class KeyPad;
+class MachineQuestions;
 class Language;
 class Page;
 class PageStack;
@@ -82,9 +85,6 @@ private:
     void addPage(Page* page);
     void onSnapshot(const SnapshotPtr& snapshot);
     void refreshSoftkeys();
-    void showMacroDialog(const PanelSnapshot& snapshot);
-    void askToolNumber(const PanelSnapshot& snapshot);
-    void askRights(const PanelSnapshot& snapshot);
     void buildMenu();
     void retranslate();
     static QString unwritableText(const QString& path, files::Unwritable why);
@@ -102,18 +102,15 @@ private:
     SoftkeyBar* softkeys_;
     KeyPad* keys_;
     PromptBox* prompt_;
+    std::unique_ptr<MachineQuestions> questions_; // what the machine asks through prompt_
     QMap<QString, Page*> pages_;
     SnapshotPtr snapshot_;
     QString notice_;
     QString standingNote_;
-    std::string dialogShown_;
-    bool bootPromptAsked_ = false;
     bool holdRendering_ = false;
     bool renderHeld_ = false; // a snapshot the page and status line have not rendered
     bool statusHeld_ = false; // a snapshot the status line has not rendered (the page has)
     bool softkeysHeld_ = false; // the softkey bar does not show the current page's keys
-    std::string toolPromptAlarm_; // the alarm the tool number prompt was last asked at
-    std::string rightsPromptAlarm_; // the parameter write refused that the password was last asked at
     QMenu* panelMenu_ = nullptr;
     class ActionRecorder* recorder_ = nullptr;
     BackupImportFlow* backupImport_ = nullptr;
