@@ -101,23 +101,24 @@ bool onProgramDisk(MainWindow& window, const QString& file, QStringList* disks) 
     return shown;
 }
 
+// The role of the panel key the action presses (a key, a key down or up of a known key), else none.
+std::optional<PanelKey::Role> keyRole(const OperatorAction& action) {
+    using Kind = OperatorAction::Kind;
+    if (action.kind != Kind::Key && action.kind != Kind::KeyDown && action.kind != Kind::KeyUp) {
+        return std::nullopt;
+    }
+    const PanelKey* key = PanelKey::named(action.name);
+    return key ? std::optional(key->role) : std::nullopt;
+}
+
 // Whether the action goes to the machine alone: the machine's own keys (cycle, jog, overrides, the
 // handwheel's switches), the wheel, a forced input, a load. Each ends in a snapshot of its own.
 bool goesToMachineAlone(const OperatorAction& action) {
     using Kind = OperatorAction::Kind;
     using Role = PanelKey::Role;
-    switch (action.kind) {
-    case Kind::Wheel:
-    case Kind::Force:
-    case Kind::Load: return true;
-    case Kind::Key:
-    case Kind::KeyDown:
-    case Kind::KeyUp: {
-        const PanelKey* key = PanelKey::named(action.name);
-        return key && (key->role == Role::Machine || key->role == Role::Jog || key->role == Role::Wheel);
-    }
-    default: return false;
-    }
+    const std::optional<Role> role = keyRole(action);
+    return action.kind == Kind::Wheel || action.kind == Kind::Force || action.kind == Kind::Load ||
+           role == Role::Machine || role == Role::Jog || role == Role::Wheel;
 }
 
 // Whether the action may read what the page shows: a softkey, a key for the page or a question
@@ -125,14 +126,15 @@ bool goesToMachineAlone(const OperatorAction& action) {
 // it opens; the machine alone and time passing read nothing of the screen.
 bool readsScreen(const OperatorAction& action) {
     using Kind = OperatorAction::Kind;
-    if (action.kind == Kind::Wait || action.kind == Kind::Page || goesToMachineAlone(action)) {
-        return false;
-    }
-    if (action.kind == Kind::Key || action.kind == Kind::KeyDown || action.kind == Kind::KeyUp) {
-        const PanelKey* key = PanelKey::named(action.name);
-        return !key || key->role != PanelKey::Role::Page;
-    }
-    return true;
+    return action.kind != Kind::Wait && action.kind != Kind::Page && !goesToMachineAlone(action) &&
+           keyRole(action) != PanelKey::Role::Page;
+}
+
+// The session's queued calls run and their snapshots delivered (twice: a snapshot's render may post more).
+template <class Deliver> void settleWith(MachineSession& session, Deliver deliver) {
+    session.sync();
+    deliver();
+    deliver();
 }
 
 } // namespace
@@ -240,9 +242,7 @@ QString refusedReplayLoad(MainWindow& window, const OperatorAction& action, cons
 }
 
 void settle(MachineSession& session) {
-    session.sync();
-    QCoreApplication::processEvents();
-    QCoreApplication::processEvents();
+    settleWith(session, [] { QCoreApplication::processEvents(); });
 }
 
 QString playReplay(MainWindow& window, MachineSession& session, const std::vector<OperatorAction>& actions,
@@ -250,7 +250,9 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
     constexpr double kFrame = 1.0 / 60.0;
     double now = 0.0;
     const bool fast = layout == ReplayLayout::WhenRead;
+    // a fast replay delivers what was posted without polling the system (widget timers wait)
     auto deliver = [fast] { fast ? QCoreApplication::sendPostedEvents() : QCoreApplication::processEvents(); };
+
     // nobody watches a replay's frames: the pages render each snapshot as always, but no widget
     // paints until the replay ends (a page switch cost 3.5 ms of painting)
     const bool painting = window.updatesEnabled();
@@ -311,9 +313,7 @@ QString playReplay(MainWindow& window, MachineSession& session, const std::vecto
             // and the time before the next action ends in a new one, as a snapshot now would
             deliver();
         } else {
-            session.sync();
-            deliver();
-            deliver();
+            settleWith(session, deliver);
         }
     }
     settle(session);
