@@ -18,6 +18,17 @@ void MachineQuestions::ask(const PanelSnapshot& s) {
     homing(s);
 }
 
+// Whether a question not yet asked at `alarm` (its message and line, kept in `askedAt`) may be
+// asked now, the question box being free; it counts as asked from here on.
+bool MachineQuestions::firstAskedAt(const Alarm& alarm, std::string& askedAt) const {
+    const std::string at = alarm.message + ":" + std::to_string(alarm.line);
+    if (at == askedAt || prompt_.active()) {
+        return false;
+    }
+    askedAt = at;
+    return true;
+}
+
 // A macro's #1505 dialog: the run waits until the operator answers it.
 void MachineQuestions::macroDialog(const PanelSnapshot& s) {
     if (!s.status.dialog) {
@@ -39,11 +50,9 @@ void MachineQuestions::toolNumber(const PanelSnapshot& s) {
         toolPromptAlarm_.clear();
         return;
     }
-    const std::string at = s.status.alarm->message + ":" + std::to_string(s.status.alarm->line);
-    if (at == toolPromptAlarm_ || prompt_.active()) {
+    if (!firstAskedAt(*s.status.alarm, toolPromptAlarm_)) {
         return;
     }
-    toolPromptAlarm_ = at;
     const QString question = AlarmText::message(*s.status.toolUnsure) + QStringLiteral("\n") +
                              QCoreApplication::translate("m350::ui::MainWindow", "Set target tool No.:", "msg 883");
     prompt_.ask(question, true, QString::number(s.status.tool), [this](std::optional<QString> answer) {
@@ -62,11 +71,9 @@ void MachineQuestions::rights(const PanelSnapshot& s) {
         rightsPromptAlarm_.clear();
         return;
     }
-    const std::string at = s.status.alarm->message + ":" + std::to_string(s.status.alarm->line);
-    if (at == rightsPromptAlarm_ || prompt_.active()) {
+    if (!firstAskedAt(*s.status.alarm, rightsPromptAlarm_)) {
         return;
     }
-    rightsPromptAlarm_ = at;
     const int parameter = QString::fromStdString(s.status.alarm->messageArguments.front()).toInt();
     LevelPrompt::require(context_, controller::ParameterWrites::required(parameter), {});
 }

@@ -26,6 +26,7 @@ private:
     void toolNumber(const PanelSnapshot& s);
     void rights(const PanelSnapshot& s);
     void homing(const PanelSnapshot& s);
+    bool firstAskedAt(const Alarm& alarm, std::string& askedAt) const;
 
     MachineSession& session_;
     PanelContext& context_;
