@@ -1,4 +1,5 @@
 #include "ui/pages/ParamPage.h"
+#include "ui/pages/ParameterText.h"
 #include "ui/widgets/PanelTable.h"
 
 #include "ui/i18n/PanelText.h"
@@ -31,10 +32,6 @@ constexpr int kFirstVariable = 50;
 constexpr int kLastVariable = 499;
 constexpr int kShownValue = Qt::UserRole; // the value an item's text was written for
 
-QString localName(const std::string& zh, const std::string& en, bool chinese) {
-    return QString::fromStdString(chinese && !zh.empty() ? zh : en);
-}
-QString localName(const std::string& zh, const std::string& en) { return localName(zh, en, PanelText::chinese()); }
 
 } // namespace
 
@@ -208,14 +205,14 @@ void ParamPage::showCategory(std::size_t category) {
             // each item whole before it goes in, its value too: a change to an item in the table is
             // one more signal to the view (a group's rows were four signals each more than needed)
             const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
-            auto* note = new QTableWidgetItem(localName(info.nameZh, info.nameEn, chinese));
+            auto* note = new QTableWidgetItem(ParameterText::localName(info.nameZh, info.nameEn, chinese));
             note->setToolTip(note->text());
             auto* value = new QTableWidgetItem;
             value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             if (snapshot) {
                 const double shown = snapshot->status.parameters.get(info.number);
                 value->setData(kShownValue, shown);
-                value->setText(formatValue(info, shown));
+                value->setText(ParameterText::value(info, shown));
             }
             auto* unit = new QTableWidgetItem(QString::fromStdString(info.unit));
             unit->setToolTip(unit->text());
@@ -276,33 +273,6 @@ int ParamPage::selectedNumber() const {
     return pages_ ? pages_->categories()[category_].numbers[static_cast<std::size_t>(row)] : -1;
 }
 
-QString ParamPage::groupTitle(int group) const {
-    switch (group) {
-    case 1: return tr("Machine", "msg 64");
-    case 2: return tr("Manual", "msg 65");
-    case 3: return tr("Process", "msg 66");
-    case 4: return tr("Coordinate", "msg 67");
-    case 5: return tr("Spindle", "msg 68");
-    case 6: return tr("IO", "msg 69");
-    case 7: return tr("Home", "msg 70");
-    case 8: return tr("Probe", "msg 71");
-    case 9: return tr("Hard Limit", "msg 72");
-    case 10: return tr("Software limit", "msg 73");
-    case 11: return tr("MPG", "msg 74");
-    case 12: return tr("External", "msg 75");
-    case 13: return tr("Backlash", "msg 76");
-    case 14: return tr("Tools", "msg 77");
-    case 15: return tr("System", "msg 78");
-    default: break;
-    }
-    if (group == 16) {
-        return tr("Input ports");
-    }
-    if (group == 17) {
-        return tr("Output ports");
-    }
-    return tr("Not on the firmware's pages");
-}
 
 void ParamPage::retranslate() {
     infoFor_.reset(); // the words again, in the language now in force
@@ -318,7 +288,7 @@ void ParamPage::retranslate() {
         const auto& numbers = pages_->categories()[category_].numbers;
         for (int row = 0; row < table_->rowCount(); ++row) {
             const params::ParameterInfo& info = *catalogue_->find(numbers[static_cast<std::size_t>(row)]);
-            table_->item(row, Note)->setText(localName(info.nameZh, info.nameEn, chinese));
+            table_->item(row, Note)->setText(ParameterText::localName(info.nameZh, info.nameEn, chinese));
             table_->item(row, Note)->setToolTip(table_->item(row, Note)->text());
             table_->item(row, Value)->setData(kShownValue, QVariant()); // its words again too
         }
@@ -348,31 +318,11 @@ void ParamPage::showCaptions() {
                 position = c == category_ ? count : position;
             }
         }
-        group_->setText(QStringLiteral("◀ %1 (%2/%3) ▶").arg(groupTitle(pages_->categories()[category_].group)).arg(position).arg(count));
+        group_->setText(QStringLiteral("◀ %1 (%2/%3) ▶").arg(ParameterText::groupTitle(pages_->categories()[category_].group)).arg(position).arg(count));
     }
 }
 
-QString ParamPage::formatValue(const params::ParameterInfo& info, double value) const {
-    if (info.type == params::ParameterInfo::Type::Select) {
-        for (const params::ParameterOption& option : info.options) {
-            if (option.value == value) {
-                return QStringLiteral("%1 %2").arg(value).arg(localName(option.zh, option.en));
-            }
-        }
-    }
-    return info.type == params::ParameterInfo::Type::Real ? QString::number(value, 'f', 3) : QString::number(value);
-}
 
-QString ParamPage::rangeText(const params::ParameterInfo& info) const {
-    if (info.type != params::ParameterInfo::Type::Select) {
-        return QStringLiteral("%1 ~ %2").arg(info.min).arg(info.max);
-    }
-    QStringList options;
-    for (const params::ParameterOption& option : info.options) {
-        options << QStringLiteral("%1 = %2").arg(option.value).arg(localName(option.zh, option.en));
-    }
-    return QStringLiteral("\n  ") + options.join(QStringLiteral("\n  "));
-}
 
 void ParamPage::render(const PanelSnapshot& snapshot) {
     shown_ = context().snapshot();
@@ -399,7 +349,7 @@ void ParamPage::fillValues(const PanelSnapshot& snapshot) {
             continue;
         }
         item->setData(kShownValue, value);
-        item->setText(formatValue(*catalogue_->find(number), value));
+        item->setText(ParameterText::value(*catalogue_->find(number), value));
     }
 }
 
@@ -425,12 +375,12 @@ void ParamPage::fillInfo() {
     QStringList lines;
     lines << tr("User:", "msg 940") + QStringLiteral(" ") +
                  UserAccess::levelName(params::ParameterPages::requiredLevel(group)) + QStringLiteral(" ") + current;
-    lines << tr("Param List:", "msg 941") + QStringLiteral(" ") + groupTitle(group);
-    lines << tr("Details:", "msg 946") + QStringLiteral(" ") + localName(info.nameZh, info.nameEn) + QStringLiteral(" (") +
-                 localName(info.nameEn, info.nameZh) + QStringLiteral(")");
+    lines << tr("Param List:", "msg 941") + QStringLiteral(" ") + ParameterText::groupTitle(group);
+    lines << tr("Details:", "msg 946") + QStringLiteral(" ") + ParameterText::localName(info.nameZh, info.nameEn) + QStringLiteral(" (") +
+                 ParameterText::localName(info.nameEn, info.nameZh) + QStringLiteral(")");
     lines << QStringLiteral("  ") + tr("macro #%1, factory value %2").arg(number + 500).arg(info.defaultValue);
     lines << tr("Active:", "msg 947") + QStringLiteral(" ") + tr("Immediately", "msg 913");
-    lines << tr("Range:", "msg 948") + QStringLiteral(" ") + rangeText(info);
+    lines << tr("Range:", "msg 948") + QStringLiteral(" ") + ParameterText::range(info);
     info_->setText(lines.join(QLatin1Char('\n')));
 }
 

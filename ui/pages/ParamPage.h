@@ -57,9 +57,6 @@ private:
     void showVariables(bool on);
     void fillValues(const PanelSnapshot& snapshot);
     void fillInfo();
-    QString groupTitle(int group) const;
-    QString formatValue(const params::ParameterInfo& info, double value) const;
-    QString rangeText(const params::ParameterInfo& info) const;
 
     std::optional<params::ParameterCatalogue> catalogue_;
     std::optional<params::ParameterPages> pages_;

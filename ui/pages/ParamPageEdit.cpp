@@ -1,6 +1,7 @@
 // What the Param page's keys change: a parameter or a #50-#499 variable through the prompt, the
 // search by number, and 参数备份 / 参数恢复.
 #include "ui/pages/ParamPage.h"
+#include "ui/pages/ParameterText.h"
 
 #include "core/config/MachineFolder.h"
 #include "core/params/ParameterBackup.h"
@@ -49,7 +50,7 @@ void ParamPage::editParameter(int number) {
     QString question = QStringLiteral("[%1] %2").arg(number).arg(
         QString::fromStdString(PanelText::chinese() ? info.nameZh : info.nameEn));
     if (info.type == params::ParameterInfo::Type::Select) {
-        question += QStringLiteral(" (") + rangeText(info).trimmed().replace(QStringLiteral("\n  "), QStringLiteral(", ")) +
+        question += QStringLiteral(" (") + ParameterText::range(info).trimmed().replace(QStringLiteral("\n  "), QStringLiteral(", ")) +
                     QStringLiteral(")");
     }
     context().askText(question + QStringLiteral(":"), {}, [this, number](std::optional<QString> text) {
