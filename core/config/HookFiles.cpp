@@ -7,6 +7,8 @@
 #include <cctype>
 #include <filesystem>
 
+#include <dirent.h>
+
 namespace m350::config {
 
 namespace {
@@ -126,12 +128,24 @@ std::optional<std::string> hookPath(const std::string& folder, Hook hook) {
     if (fs::is_regular_file(exact, ec)) {
         return exact.string();
     }
-    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        if (sameIgnoringCase(it->path().filename().string(), fileName) && it->is_regular_file(ec)) {
-            return it->path().string();
+    // A hook in another case ("FNDZERO.NC" from a backup): the names are compared as readdir gives
+    // them, since a program load and an MDI line ask for the hooks a folder lacks every time.
+    DIR* dir = ::opendir(folder.c_str());
+    if (dir == nullptr) {
+        return std::nullopt;
+    }
+    std::optional<std::string> found;
+    while (const dirent* entry = ::readdir(dir)) {
+        if (sameIgnoringCase(entry->d_name, fileName)) {
+            const fs::path candidate = fs::path(folder) / entry->d_name;
+            if (fs::is_regular_file(candidate, ec)) {
+                found = candidate.string();
+                break;
+            }
         }
     }
-    return std::nullopt;
+    ::closedir(dir);
+    return found;
 }
 
 std::optional<Hook> homeAxisHook(int axis) { return offset(Hook::HomeX, axis, 5); }

@@ -106,7 +106,10 @@ std::optional<Message> MachineFolder::write(FolderFile file, std::string_view co
     if (folder_.empty()) {
         return message("folder_none", {std::string(info.name)});
     }
-    if (auto error = finishInterruptedChange()) {
+    // A change a crash interrupted is finished first; pending files left without a journal are
+    // harmless to this write (loading the folder and the next change of several files remove
+    // them), so one stat does here, as the MDI page writes mdi.nc and mdiblock at every line.
+    if (auto error = files::finishInterruptedChange(folder_ / kChangeJournal, {})) {
         return error;
     }
     const fs::path target = pathOf(file);

@@ -87,7 +87,8 @@ public:
     std::optional<Message> exportToolTable(const std::filesystem::path& target, const tools::ToolTable& table) const;
 
     // A save of several files that a crash interrupted (kChangeJournal) finished or dropped, so
-    // that the folder holds one whole state; loadMachineFolder and every write call it first.
+    // that the folder holds one whole state; loadMachineFolder and every save of several files
+    // call it first (a write of one file finishes a journaled change but leaves stray pending files).
     // nullopt when the folder is whole, else why (naming the file).
     std::optional<Message> finishInterruptedChange() const;
     static constexpr std::string_view kChangeJournal = "save.journal";

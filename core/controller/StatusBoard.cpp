@@ -136,8 +136,21 @@ RunReport StatusBoard::report() const {
 
 std::string StatusBoard::modalLine() const {
     const interp::ModalState& s = context_.interp.state();
+    constexpr std::array<int, 8> kGroups{1, 2, 3, 5, 6, 7, 8, 9};
+    ModalLineKey key{};
+    for (std::size_t i = 0; i < kGroups.size(); ++i) {
+        key[i] = s.groups[static_cast<std::size_t>(kGroups[i])];
+    }
+    key[8] = context_.interp.activeSlot();
+    key[9] = s.rotating() ? 1.0 : 0.0;
+    key[10] = s.feed;
+    key[11] = s.spindleSpeed;
+    // asked at every snapshot; the modes change at a few blocks of a run
+    if (!modalLine_.empty() && key == modalKey_) {
+        return modalLine_;
+    }
     std::string line;
-    for (int group : {1, 2, 3, 5, 6, 7, 8, 9}) {
+    for (int group : kGroups) {
         appendGWord(line, s.groups[static_cast<std::size_t>(group)]);
         line += ' ';
     }
@@ -149,6 +162,8 @@ std::string StatusBoard::modalLine() const {
     appendNumber(line, s.feed, 0);
     line += " S";
     appendNumber(line, s.spindleSpeed, 0);
+    modalKey_ = key;
+    modalLine_ = line;
     return line;
 }
 

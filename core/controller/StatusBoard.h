@@ -11,6 +11,7 @@
 #include "core/gcode/Diagnostic.h"
 #include "core/machine/MachineTypes.h"
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -110,6 +111,9 @@ private:
     std::optional<Alarm> notice_;  // the last warning, while the status line shows it
     std::vector<Alarm> warnings_;  // every warning, for the report
     std::unique_ptr<TraceWriter> trace_;
+    using ModalLineKey = std::array<double, 12>; // the groups shown, the work system, G68, F, S
+    mutable ModalLineKey modalKey_{};
+    mutable std::string modalLine_; // what modalLine gave for modalKey_
 };
 
 } // namespace m350::controller

@@ -2,6 +2,7 @@
 
 #include "core/gcode/Block.h"
 #include "core/gcode/BlockStorage.h"
+#include "core/common/IndexIterator.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -89,31 +90,7 @@ public:
     // Whether the chunk, re-parsed, no longer read as it did when the program was loaded.
     bool changedOnDisk(std::size_t index) const;
 
-    class const_iterator {
-    public:
-        using iterator_category = std::forward_iterator_tag;
-        using value_type = Block;
-        using difference_type = std::ptrdiff_t;
-        using pointer = const Block*;
-        using reference = const Block&;
-        const_iterator(const BlockList* list, std::size_t index) : list_(list), index_(index) {}
-        reference operator*() const { return (*list_)[index_]; }
-        pointer operator->() const { return &(*list_)[index_]; }
-        const_iterator& operator++() {
-            ++index_;
-            return *this;
-        }
-        const_iterator operator++(int) {
-            const_iterator before = *this;
-            ++index_;
-            return before;
-        }
-        bool operator==(const const_iterator& other) const { return index_ == other.index_; }
-
-    private:
-        const BlockList* list_;
-        std::size_t index_;
-    };
+    using const_iterator = IndexIterator<BlockList, Block>;
     const_iterator begin() const { return {this, 0}; }
     const_iterator end() const { return {this, size_}; }
 

@@ -2,10 +2,15 @@
 // language, and stops saying it once an entry is written again.
 #include "tests/ui/PanelHarness.h"
 #include "ui/pages/LogPage.h"
+#include "ui/session/LogTail.h"
 #include "ui/session/SessionLog.h"
 
 #include <QDir>
 #include <QLabel>
+#include <QTableWidget>
+
+#include <string>
+#include <vector>
 
 namespace m350::test {
 
@@ -72,6 +77,69 @@ TEST(LogPage, ShowsTheNewestEntriesWhileTheFileKeepsThemAll) {
     auto* page = panel.page<ui::LogPage>();
     ASSERT_NE(page, nullptr);
     EXPECT_EQ(page->rows(), static_cast<int>(ui::SessionLog::kOffered));
+}
+
+
+// A list after each new entry is the newest `most` of everything added, oldest first, and the
+// list before it is left as it was (snapshots already sent keep showing what they showed).
+TEST(LogTail, HoldsTheNewestEntriesInOrderAndLeavesTheListBeforeAsItWas) {
+    for (std::size_t most : {std::size_t{1}, std::size_t{63}, std::size_t{64}, std::size_t{65}, std::size_t{500}}) {
+        std::vector<files::LogEntry> all;
+        ui::LogTail tail(all, most);
+        for (int i = 1; i <= 700; ++i) {
+            const ui::LogTail before = tail;
+            all.push_back({"2026-11-29 02:00:00", "mdi", "G0 X" + std::to_string(i)});
+            tail = tail.with(all.back(), most);
+            const std::size_t size = std::min(all.size(), most);
+            ASSERT_EQ(tail.size(), size) << most << " " << i;
+            ASSERT_EQ(tail.added(), all.size());
+            for (std::size_t k = 0; k < size; ++k) {
+                ASSERT_EQ(tail[k].detail, all[all.size() - size + k].detail) << most << " " << i << " " << k;
+            }
+            ASSERT_EQ(before.size(), std::min(all.size() - 1, most));
+            if (!before.empty()) {
+                ASSERT_EQ(before.back().detail, all[all.size() - 2].detail);
+            }
+        }
+        const ui::LogTail again(all, most); // a log read from its file: the same list
+        ASSERT_EQ(again.size(), tail.size());
+        std::size_t k = 0;
+        for (const files::LogEntry& entry : again) {
+            EXPECT_EQ(entry.detail, tail[k++].detail);
+        }
+    }
+}
+
+// While the page is shown, new entries come in on top and the oldest leave at the bottom: the
+// rows read as a list filled anew would, and the cursor stays on its row.
+TEST(LogPage, NewEntriesComeInOnTopWhileThePageIsShown) {
+    PanelHarness panel;
+    for (int i = 0; i < 10; ++i) {
+        panel.key(QStringLiteral("RESET"));
+    }
+    panel.page(QStringLiteral("log"));
+    auto* page = panel.page<ui::LogPage>();
+    ASSERT_NE(page, nullptr);
+    auto* table = page->findChild<QTableWidget*>();
+    ASSERT_NE(table, nullptr);
+    for (int i = 0; i < 3; ++i) {
+        panel.key(QStringLiteral("DOWN"));
+    }
+    const int cursor = table->currentRow();
+    ASSERT_GT(cursor, 0);
+    for (int i = 1; i <= static_cast<int>(ui::SessionLog::kOffered) + 20; ++i) {
+        panel.key(QStringLiteral("RESET"));
+        if (i % 97 != 0 && i < static_cast<int>(ui::SessionLog::kOffered) + 15) {
+            continue;
+        }
+        const ui::LogEntries log = panel.session().latest()->log;
+        ASSERT_EQ(page->rows(), static_cast<int>(log->size()));
+        for (int row = 0; row < page->rows(); ++row) {
+            const files::LogEntry& entry = (*log)[log->size() - 1 - static_cast<std::size_t>(row)];
+            ASSERT_TRUE(page->eventText(row).startsWith(ui::LogPage::eventWords(entry.event))) << i << " " << row;
+        }
+        EXPECT_EQ(table->currentRow(), cursor);
+    }
 }
 
 } // namespace m350::test

@@ -111,7 +111,7 @@ bool LogPage::key(const QString& name) {
 }
 
 void LogPage::render(const PanelSnapshot& snapshot) {
-    if (snapshot.log && snapshot.log.get() != shown_) {
+    if (snapshot.log && (snapshot.log.get() != shown_ || snapshot.log->added() != shownAdded_)) {
         fill(snapshot);
     }
     const QString problem = snapshot.logProblem.isEmpty() ? QString() : tr("The System Log is not saved: %1").arg(snapshot.logProblem);
@@ -122,28 +122,43 @@ void LogPage::render(const PanelSnapshot& snapshot) {
 }
 
 void LogPage::fill(const PanelSnapshot& snapshot) {
-    shown_ = snapshot.log.get();
-    const auto& entries = *snapshot.log;
+    const LogTail& entries = *snapshot.log; // the newest (SessionLog::kOffered): the file keeps more
     const QHash<QString, QString> words = eventTable();
-    const int count = static_cast<int>(entries.size()); // the newest (SessionLog::kOffered): the file keeps more
-    { // the fitted columns measured once, at the end of this block
-        const TableFill filling(table_);
-        table_->setRowCount(count);
-        for (int row = 0; row < count; ++row) {
-            const files::LogEntry& e = entries[entries.size() - 1 - static_cast<std::size_t>(row)];
-            QString key = QString::fromStdString(e.event);
-            QString text = words.value(key, key);
-            if (!e.detail.empty()) {
-                text += QStringLiteral(": ") + QString::fromStdString(e.detail);
-            }
-            auto* time = new QTableWidgetItem(QString::fromStdString(e.time));
-            auto* event = new QTableWidgetItem(text);
-            if (e.event == "alarm" || e.event == "estop") {
-                event->setForeground(QColor(255, 120, 120));
-            }
-            table_->setItem(row, 0, time);
-            table_->setItem(row, 1, event);
+    const int count = static_cast<int>(entries.size());
+    // The entries since the list shown go on top and the oldest beyond the list leave at the
+    // bottom; the rows between keep their items. The cursor keeps its row, as a refill kept it.
+    const std::uint64_t newer = entries.added() - shownAdded_;
+    const bool onTop = shown_ != nullptr && entries.added() >= shownAdded_ && newer < entries.size() &&
+                       table_->rowCount() == shownRows_;
+    shown_ = snapshot.log.get();
+    shownAdded_ = entries.added();
+    shownRows_ = count;
+    const TableFill filling(table_); // the fitted columns measured once, when it goes
+    const int current = table_->currentRow();
+    int fresh = count;
+    if (onTop) {
+        fresh = static_cast<int>(newer);
+        for (int row = 0; row < fresh; ++row) {
+            table_->insertRow(0);
         }
+    }
+    table_->setRowCount(count);
+    for (int row = 0; row < fresh; ++row) {
+        const files::LogEntry& e = entries[entries.size() - 1 - static_cast<std::size_t>(row)];
+        QString key = QString::fromStdString(e.event);
+        QString text = words.value(key, key);
+        if (!e.detail.empty()) {
+            text += QStringLiteral(": ") + QString::fromStdString(e.detail);
+        }
+        auto* event = new QTableWidgetItem(text);
+        if (e.event == "alarm" || e.event == "estop") {
+            event->setForeground(QColor(255, 120, 120));
+        }
+        table_->setItem(row, 0, new QTableWidgetItem(QString::fromStdString(e.time)));
+        table_->setItem(row, 1, event);
+    }
+    if (onTop && current >= 0 && current < count && table_->currentRow() != current) {
+        table_->selectRow(current);
     }
 }
 

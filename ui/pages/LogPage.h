@@ -5,6 +5,8 @@
 
 #include <QHash>
 
+#include <cstdint>
+
 class QLabel;
 class QTableWidget;
 
@@ -37,6 +39,8 @@ private:
     QTableWidget* table_;
     QLabel* problem_; // why system-log.tsv is not saved, when it is not
     const void* shown_ = nullptr; // the log list last shown (lists are replaced, never changed)
+    std::uint64_t shownAdded_ = 0; // its LogTail::added()
+    int shownRows_ = 0;
 };
 
 } // namespace m350::ui

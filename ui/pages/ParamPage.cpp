@@ -224,8 +224,13 @@ void ParamPage::showCategory(std::size_t category) {
     }
     // the unit column is as wide as this group's longest unit ("pulse/mm", "mm/s^2"), the name
     // column takes the rest and shows a cut name in full as its tooltip
-    table_->resizeColumnToContents(Unit);
-    table_->setColumnWidth(Unit, std::clamp(table_->columnWidth(Unit), kUnitMinWidth, kUnitMaxWidth));
+    // (measured at a group's first showing: F7 / F8 go through the groups again and again)
+    unitWidths_.resize(pages_->categories().size(), 0);
+    if (unitWidths_[category] == 0) {
+        table_->resizeColumnToContents(Unit);
+        unitWidths_[category] = std::clamp(table_->columnWidth(Unit), kUnitMinWidth, kUnitMaxWidth);
+    }
+    table_->setColumnWidth(Unit, unitWidths_[category]);
     table_->selectRow(0);
     showCaptions();
     if (snapshot) {
@@ -276,6 +281,7 @@ int ParamPage::selectedNumber() const {
 
 void ParamPage::retranslate() {
     infoFor_.reset(); // the words again, in the language now in force
+    unitWidths_.clear(); // and the units measured again in its font
     table_->setHorizontalHeaderLabels({tr("No.", "msg 83"), tr("Note", "msg 84"), tr("Value", "msg 85"),
                                        tr("Unit", "msg 86")});
     if (!pages_) {

@@ -6,6 +6,7 @@
 #include "ui/pages/PageId.h"
 
 #include <optional>
+#include <vector>
 
 class QLabel;
 class QTableWidget;
@@ -62,6 +63,7 @@ private:
     std::optional<params::ParameterPages> pages_;
     QString catalogueError_;
     std::size_t category_ = 0;
+    std::vector<int> unitWidths_; // by group: its unit column's width, 0 until measured
     bool variables_ = false;
     QLabel* tabs_;
     QLabel* group_;

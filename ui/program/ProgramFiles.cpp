@@ -8,6 +8,13 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <string_view>
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace m350::ui {
 
@@ -41,14 +48,32 @@ QString ProgramFiles::localFolder(const QString& machineFolder, QString* error) 
 }
 
 QVector<ProgramFiles::Entry> ProgramFiles::list(const QString& folder, Disk disk, Sort sort) {
-    QStringList filters;
-    if (disk == Disk::System) {
-        filters << QStringLiteral("*.nc"); // the libraries, not machine.toml and the rest
-    }
+    // What QDir's Files | Readable listing gave (hidden files left out, links followed, "*.nc" in
+    // any case on the system disk), read with one stat a file: the disks are listed again at
+    // each F1, and QDir matched every name with a regular expression and asked each file twice.
     QVector<Entry> out;
-    for (const QFileInfo& info : QDir(folder).entryInfoList(filters, QDir::Files | QDir::Readable)) {
-        out.append({info.fileName(), info.size(), info.lastModified()});
+    DIR* dir = ::opendir(QFile::encodeName(folder).constData());
+    if (dir == nullptr) {
+        return out;
     }
+    const int fd = ::dirfd(dir);
+    while (const dirent* entry = ::readdir(dir)) {
+        const std::string_view name(entry->d_name);
+        if (name.empty() || name.front() == '.') {
+            continue;
+        }
+        if (disk == Disk::System && // the libraries, not machine.toml and the rest
+            (name.size() < 3 || ::strncasecmp(name.data() + name.size() - 3, ".nc", 3) != 0)) {
+            continue;
+        }
+        struct stat info {};
+        if (::fstatat(fd, entry->d_name, &info, 0) != 0 || !S_ISREG(info.st_mode) || ::faccessat(fd, entry->d_name, R_OK, 0) != 0) {
+            continue;
+        }
+        const qint64 modified = static_cast<qint64>(info.st_mtim.tv_sec) * 1000 + info.st_mtim.tv_nsec / 1000000;
+        out.append({QFile::decodeName(entry->d_name), static_cast<qint64>(info.st_size), QDateTime::fromMSecsSinceEpoch(modified)});
+    }
+    ::closedir(dir);
     auto byName = [](const Entry& a, const Entry& b) { return a.name.compare(b.name, Qt::CaseInsensitive) < 0; };
     switch (sort) {
     case Sort::Name: std::sort(out.begin(), out.end(), byName); break;

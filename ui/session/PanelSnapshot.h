@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ui/session/LogTail.h"
 #include "ui/session/PreviewShown.h"
 #include "ui/session/SimulationView.h"
 
@@ -70,7 +71,7 @@ struct PanelSnapshot {
     PreviewShown simulationPreview;
     params::UserLevel userLevel = params::UserLevel::Guest; // 访客 / 操作员 / 管理员 / 超级管理
     QVector<double> userVariables; // #50-#499 while the Param page watches them (NaN: vacant), else empty
-    std::shared_ptr<const std::vector<files::LogEntry>> log; // 系统日志, oldest first (shared, never changed)
+    std::shared_ptr<const LogTail> log; // 系统日志, its newest entries, oldest first (shared, never changed)
     WorkRecord workRecord;
     BreakPoints breakPoints;
     // The tool table as it stands (a new object only when it changed), and why the last save of

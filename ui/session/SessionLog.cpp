@@ -13,13 +13,7 @@ SessionLog::SessionLog(const std::string& machineFolder)
     if (!log_.load(&error)) {
         loadProblem_ = error;
     }
-    offerNewest();
-}
-
-void SessionLog::offerNewest() {
-    const std::vector<files::LogEntry>& all = log_.entries();
-    const std::size_t first = all.size() > kOffered ? all.size() - kOffered : 0;
-    entries_ = std::make_shared<const std::vector<files::LogEntry>>(all.begin() + static_cast<std::ptrdiff_t>(first), all.end());
+    entries_ = std::make_shared<const LogTail>(log_.entries(), kOffered);
 }
 
 void SessionLog::record(const char* event, const QString& detail) {
@@ -31,7 +25,7 @@ void SessionLog::record(const char* event, const QString& detail) {
     } else {
         appendProblem_ = error;
     }
-    offerNewest();
+    entries_ = std::make_shared<const LogTail>(entries_->with(log_.entries().back(), kOffered));
 }
 
 QString SessionLog::problem() const {

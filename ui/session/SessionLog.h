@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/files/SystemLog.h"
+#include "ui/session/LogTail.h"
 
 #include <QString>
 
@@ -10,12 +11,13 @@
 
 namespace m350::ui {
 
-using LogEntries = std::shared_ptr<const std::vector<files::LogEntry>>;
+using LogEntries = std::shared_ptr<const LogTail>;
 
 // The session's side of the 系统日志: every operation and alarm, stamped with the wall clock,
 // appended to the machine folder's log, and offered to snapshots as an immutable list of the
 // newest kOffered entries (what the System Log page shows), replaced (not changed) when an entry
-// arrives: the file keeps more, and copying all of them at every entry cost a long session dearly.
+// arrives: the file keeps more. The list shares its blocks with the one before (LogTail): copying
+// the whole list at every entry cost a session of many MDI lines dearly.
 class SessionLog {
 public:
     static constexpr std::size_t kOffered = 500;
@@ -29,8 +31,6 @@ public:
     QString problem() const;
 
 private:
-    void offerNewest();
-
     files::SystemLog log_;
     LogEntries entries_;
     std::optional<Message> loadProblem_;
