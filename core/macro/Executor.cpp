@@ -28,17 +28,18 @@ void Executor::indexHandlers() {
     constexpr int kIndexed = 1000;
     gHandlers_.assign(kIndexed, -1);
     mHandlers_.assign(kIndexed, -1);
-    for (int code = 0; code < kIndexed; ++code) {
-        if (dialect_.gHandlerBase >= 0) {
-            if (auto unit = program_.findHandler(dialect_.gHandlerBase + code, gcode::FileRole::GLibrary)) {
-                gHandlers_[static_cast<std::size_t>(code)] = static_cast<std::int32_t>(*unit);
-            }
+    // by the program's units rather than by the 2,000 codes: an executor is made for each MDI line
+    auto index = [this](std::vector<std::int32_t>& handlers, int base, std::int32_t number, gcode::FileRole role) {
+        if (base < 0 || number < base || number >= base + kIndexed) {
+            return;
         }
-        if (dialect_.mHandlerBase >= 0) {
-            if (auto unit = program_.findHandler(dialect_.mHandlerBase + code, gcode::FileRole::MLibrary)) {
-                mHandlers_[static_cast<std::size_t>(code)] = static_cast<std::int32_t>(*unit);
-            }
+        if (auto unit = program_.findHandler(number, role)) {
+            handlers[static_cast<std::size_t>(number - base)] = static_cast<std::int32_t>(*unit);
         }
+    };
+    for (const gcode::ProgramUnit& unit : program_.units) {
+        index(gHandlers_, dialect_.gHandlerBase, unit.number, gcode::FileRole::GLibrary);
+        index(mHandlers_, dialect_.mHandlerBase, unit.number, gcode::FileRole::MLibrary);
     }
     if (dialect_.tCodeProgram >= 0) {
         tCodeUnit_ = program_.findUnit(dialect_.tCodeProgram);

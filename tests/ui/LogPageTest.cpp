@@ -111,7 +111,8 @@ TEST(LogTail, HoldsTheNewestEntriesInOrderAndLeavesTheListBeforeAsItWas) {
 }
 
 // While the page is shown, new entries come in on top and the oldest leave at the bottom: the
-// rows read as a list filled anew would, and the cursor stays on its row.
+// rows read as a list filled anew would, the cursor stays on its row and the time column is as
+// wide as Qt would fit it.
 TEST(LogPage, NewEntriesComeInOnTopWhileThePageIsShown) {
     PanelHarness panel;
     for (int i = 0; i < 10; ++i) {
@@ -139,6 +140,10 @@ TEST(LogPage, NewEntriesComeInOnTopWhileThePageIsShown) {
             ASSERT_TRUE(page->eventText(row).startsWith(ui::LogPage::eventWords(entry.event))) << i << " " << row;
         }
         EXPECT_EQ(table->currentRow(), cursor);
+        const int fitted = table->columnWidth(0); // as Qt fits it to its contents
+        table->resizeColumnToContents(0);
+        EXPECT_EQ(table->columnWidth(0), fitted);
+        EXPECT_GT(fitted, table->fontMetrics().horizontalAdvance(QStringLiteral("2026-11-29 02:00:00")) / 2);
     }
 }
 

@@ -83,70 +83,65 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
         return std::nullopt;
     };
     OperatorAction a;
-    if (!object.contains("t") || !object.value("t").isDouble() || object.value("t").toDouble() < 0.0) {
+    if (!object.contains(QLatin1String("t")) || !object.value(QLatin1String("t")).isDouble() || object.value(QLatin1String("t")).toDouble() < 0.0) {
         return fail(QCoreApplication::translate("m350::ui::OperatorAction", "\"t\" (virtual time in seconds, >= 0) is missing or not a number"));
     }
-    a.t = object.value("t").toDouble();
-    int kinds = 0;
-    for (const QString& key : object.keys()) {
-        if (key != QLatin1String("t")) {
-            ++kinds;
-        }
-    }
+    a.t = object.value(QLatin1String("t")).toDouble();
+    const auto kinds = object.size() - 1; // besides "t" (a replay reads a million of these: no list of keys)
     if (kinds > 1) {
         return fail(QCoreApplication::translate("m350::ui::OperatorAction", "one action per line: found %1 besides \"t\"").arg(kinds));
     }
     for (Kind kind : {Kind::Key, Kind::KeyDown, Kind::KeyUp}) {
-        if (object.contains(kindKey(kind))) {
+        if (object.contains(QLatin1String(kindKey(kind)))) {
             a.kind = kind;
-            a.name = object.value(kindKey(kind)).toString();
+            a.name = object.value(QLatin1String(kindKey(kind))).toString();
             if (!PanelKey::named(a.name)) {
                 return fail(QCoreApplication::translate("m350::ui::OperatorAction", "unknown key \"%1\"").arg(a.name));
             }
             return a;
         }
     }
-    if (object.contains("softkey")) {
+    if (object.contains(QLatin1String("softkey"))) {
         a.kind = Kind::Softkey;
-        a.softkey = object.value("softkey").toInt();
+        a.softkey = object.value(QLatin1String("softkey")).toInt();
         if (a.softkey < 1 || a.softkey > 12) {
             return fail(QCoreApplication::translate("m350::ui::OperatorAction", "softkey must be 1-6 (F1-F6) or 7-12 (second row)"));
         }
         return a;
     }
-    if (object.contains("text")) {
+    if (object.contains(QLatin1String("text"))) {
         a.kind = Kind::Text;
-        a.text = object.value("text").toString();
+        a.text = object.value(QLatin1String("text")).toString();
         return a;
     }
-    if (object.contains("page")) {
+    if (object.contains(QLatin1String("page"))) {
         a.kind = Kind::Page;
-        a.name = object.value("page").toString();
+        a.name = object.value(QLatin1String("page")).toString();
         if (!PageTable::ids().contains(a.name)) {
             return fail(QCoreApplication::translate("m350::ui::OperatorAction", "unknown page \"%1\" (one of: %2)").arg(a.name, PageTable::ids().join(", ")));
         }
         return a;
     }
-    if (object.contains("lang")) {
+    if (object.contains(QLatin1String("lang"))) {
         a.kind = Kind::Language;
-        a.name = object.value("lang").toString();
+        a.name = object.value(QLatin1String("lang")).toString();
         if (a.name != QLatin1String("zh_CN") && a.name != QLatin1String("en")) {
             return fail(QCoreApplication::translate("m350::ui::OperatorAction", "lang must be zh_CN or en"));
         }
         return a;
     }
-    if (object.contains("load")) {
+    if (object.contains(QLatin1String("load"))) {
         a.kind = Kind::Load;
-        a.name = object.value("load").toString();
+        a.name = object.value(QLatin1String("load")).toString();
         return a;
     }
-    if (object.contains("wheel")) {
-        QJsonObject w = object.value("wheel").toObject();
+    if (object.contains(QLatin1String("wheel"))) {
+        QJsonObject w = object.value(QLatin1String("wheel")).toObject();
         a.kind = Kind::Wheel;
-        a.wheel.axis = axisIndex(w.value("axis").toString());
-        a.wheel.step = w.value("step").toInt(1);
-        a.wheel.detents = w.value("detents").toInt();
-        a.wheel.seconds = w.value("seconds").toDouble(0.0);
+        a.wheel.axis = axisIndex(w.value(QLatin1String("axis")).toString());
+        a.wheel.step = w.value(QLatin1String("step")).toInt(1);
+        a.wheel.detents = w.value(QLatin1String("detents")).toInt();
+        a.wheel.seconds = w.value(QLatin1String("seconds")).toDouble(0.0);
         if (a.wheel.axis < 0) {
             return fail(QCoreApplication::translate("m350::ui::OperatorAction", "wheel axis must be X, Y, Z, A or B"));
         }
@@ -158,13 +153,13 @@ std::optional<OperatorAction> OperatorAction::fromJson(const QJsonObject& object
         }
         return a;
     }
-    if (object.contains("force")) {
-        QJsonObject f = object.value("force").toObject();
+    if (object.contains(QLatin1String("force"))) {
+        QJsonObject f = object.value(QLatin1String("force")).toObject();
         a.kind = Kind::Force;
-        a.force.input = f.value("input").toInt();
-        a.force.fault = f.value("fault").toString(QStringLiteral("stuck"));
-        a.force.level = f.value("level").toInt();
-        a.force.seconds = f.value("seconds").toDouble(0.0);
+        a.force.input = f.value(QLatin1String("input")).toInt();
+        a.force.fault = f.value(QLatin1String("fault")).toString(QStringLiteral("stuck"));
+        a.force.level = f.value(QLatin1String("level")).toInt();
+        a.force.seconds = f.value(QLatin1String("seconds")).toDouble(0.0);
         if (a.force.input < 1 || a.force.input > 24) {
             return fail(QCoreApplication::translate("m350::ui::OperatorAction", "force input must be 1-24 (IN01-IN24)"));
         }

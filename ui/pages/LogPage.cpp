@@ -16,7 +16,9 @@ LogPage::LogPage(PanelContext& context, QWidget* parent) : Page(context, parent)
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(4, 4, 4, 4);
     table_ = makePanelTable(this, 2, "systemLog");
-    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    // the time column is fitted by fill (as ResizeToContents fits it), from the rows it adds: Qt
+    // measured all 500 rows again after every entry
+    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Fixed);
     table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
     column->addWidget(table_);
     problem_ = new WrappedLabel(this);
@@ -157,8 +159,22 @@ void LogPage::fill(const PanelSnapshot& snapshot) {
         table_->setItem(row, 0, new QTableWidgetItem(QString::fromStdString(e.time)));
         table_->setItem(row, 1, event);
     }
+    fitTimeColumn(onTop ? table_->columnWidth(0) : 0, fresh);
     if (onTop && current >= 0 && current < count && table_->currentRow() != current) {
         table_->selectRow(current);
+    }
+}
+
+// As wide as ResizeToContents makes it: its header and its widest time, one pixel more for the
+// grid, within the header's bounds. `width`: what the rows kept need; the first `fresh` rows are new.
+void LogPage::fitTimeColumn(int width, int fresh) {
+    for (int row = 0; row < fresh; ++row) {
+        width = std::max(width, table_->sizeHintForIndex(table_->model()->index(row, 0)).width() + (table_->showGrid() ? 1 : 0));
+    }
+    const QHeaderView* header = table_->horizontalHeader();
+    width = std::clamp(std::max(width, header->sectionSizeHint(0)), header->minimumSectionSize(), header->maximumSectionSize());
+    if (table_->columnWidth(0) != width) {
+        table_->setColumnWidth(0, width);
     }
 }
 

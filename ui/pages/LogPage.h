@@ -36,6 +36,7 @@ public:
 
 private:
     void fill(const PanelSnapshot& snapshot);
+    void fitTimeColumn(int width, int fresh);
     QTableWidget* table_;
     QLabel* problem_; // why system-log.tsv is not saved, when it is not
     const void* shown_ = nullptr; // the log list last shown (lists are replaced, never changed)

@@ -44,11 +44,14 @@ const QList<PageTable::Entry>& PageTable::entries() {
     return pages;
 }
 
-QStringList PageTable::ids() {
-    QStringList ids;
-    for (const Entry& entry : entries()) {
-        ids << entry.id;
-    }
+const QStringList& PageTable::ids() {
+    static const QStringList ids = [] {
+        QStringList all;
+        for (const Entry& entry : entries()) {
+            all << entry.id;
+        }
+        return all;
+    }();
     return ids;
 }
 

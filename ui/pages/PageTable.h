@@ -20,7 +20,7 @@ public:
         Page* (*make)(PanelContext& context, QWidget* parent);
     };
     static const QList<Entry>& entries();
-    static QStringList ids();
+    static const QStringList& ids();
 };
 
 } // namespace m350::ui

@@ -166,21 +166,24 @@ std::optional<OperatorAction> readReplayAction(const QJsonObject& object, const 
     const int indent = line.isEmpty() ? 0 : static_cast<int>(raw.indexOf(line.at(0)));
     QString why;
     auto action = OperatorAction::fromJson(object, &why);
-    const QString key = why.startsWith(QLatin1String("\"t\"")) ? QStringLiteral("t") : actionKey(object);
-    *column = indent + keyColumn(line, key);
     if (!action) {
+        const QString key = why.startsWith(QLatin1String("\"t\"")) ? QStringLiteral("t") : actionKey(object);
+        *column = indent + keyColumn(line, key);
         *problem = {*column, why};
         return std::nullopt;
     }
-    const int timeColumn = indent + keyColumn(line, QStringLiteral("t"));
+    // the action's column is for the messages of a load refused as the replay plays; the others
+    // start at the line's first column (a replay reads a million lines: no key looked for twice)
+    *column = action->kind == OperatorAction::Kind::Load ? indent + keyColumn(line, QStringLiteral("load")) : indent + 1;
+    const auto timeColumn = [&] { return indent + keyColumn(line, QStringLiteral("t")); };
     if (!(action->t <= kMostReplaySeconds)) {
-        *problem = {timeColumn, QCoreApplication::translate("m350::ui::Replay", "t = %1 s is beyond the longest replay, %2 s (24 h) of virtual time")
+        *problem = {timeColumn(), QCoreApplication::translate("m350::ui::Replay", "t = %1 s is beyond the longest replay, %2 s (24 h) of virtual time")
                                     .arg(action->t)
                                     .arg(kMostReplaySeconds)};
         return std::nullopt;
     }
     if (action->t < previous) {
-        *problem = {timeColumn, QCoreApplication::translate("m350::ui::Replay", "t = %1 comes before the previous action's %2 (actions must be in "
+        *problem = {timeColumn(), QCoreApplication::translate("m350::ui::Replay", "t = %1 comes before the previous action's %2 (actions must be in "
                                                "time order)")
                                     .arg(action->t)
                                     .arg(previous)};

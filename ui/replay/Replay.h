@@ -18,8 +18,8 @@ class MachineSession;
 // is read, naming its line: `{"t":1e9}` would otherwise keep the panel busy for weeks.
 constexpr double kMostReplaySeconds = 24.0 * 3600.0;
 
-// Where each action of a replay file stands: its line, and the column of its action's name (of
-// "t" for a time passing), for the messages of playReplay.
+// Where each action of a replay file stands: its line, and for a load the column of "load" (what
+// playReplay's refusal points at); the line's first column for the others.
 struct ReplayPlace {
     int line = 0;
     int column = 1;
@@ -35,7 +35,7 @@ struct ReplayLineProblem {
 // nullopt with `problem` filled when it is not one JSON object.
 std::optional<QJsonObject> readReplayObject(const QByteArray& raw, ReplayLineProblem* problem);
 // The action the object of line `raw` says, in time order after `previous` and within the longest
-// replay; `column` is that of the action's name (what playReplay's messages point at).
+// replay; `column` as ReplayPlace has it (a problem's own column is in `problem`).
 std::optional<OperatorAction> readReplayAction(const QJsonObject& object, const QByteArray& raw, double previous,
                                                ReplayLineProblem* problem, int* column);
 
