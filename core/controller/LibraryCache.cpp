@@ -7,6 +7,18 @@ namespace m350::controller {
 
 std::shared_ptr<const gcode::ParsedLibraries> LibraryCache::get(const gcode::Dialect& dialect,
                                                                  const std::vector<File>& files) {
+    const std::chrono::system_clock::time_point now = now_();
+    std::vector<files::FileStamp> stamps;
+    stamps.reserve(files.size());
+    bool unchanged = parsed_ && dialect == dialect_ && files == files_ && stamps_.size() == files.size();
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        stamps.push_back(files::FileStamp::of(files[i].path, now));
+        unchanged = unchanged && stamps_[i].settled && stamps[i].sameFile(stamps_[i]);
+    }
+    if (unchanged) { // an MDI line joins the libraries without reading them
+        return parsed_;
+    }
+    ++reads_;
     std::vector<gcode::SourceText> sources;
     sources.reserve(files.size());
     for (const File& file : files) {
@@ -23,6 +35,7 @@ std::shared_ptr<const gcode::ParsedLibraries> LibraryCache::get(const gcode::Dia
     if (!same) {
         parsed_ = parse(dialect, files, sources);
     }
+    stamps_ = std::move(stamps);
     return parsed_;
 }
 

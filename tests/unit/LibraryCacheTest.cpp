@@ -300,3 +300,49 @@ TEST(LibraryReuseBundled, MdiLinesRunAsWhenEveryLoadParsedTheLibraries) {
 }
 
 } // namespace
+
+namespace {
+
+std::chrono::system_clock::time_point anHourOn() { return std::chrono::system_clock::now() + std::chrono::hours(1); }
+
+} // namespace
+
+// A library is not read again while its stat is what it was at the read that matched and it was
+// settled then (changed well before); an edit that keeps its size and time stamp, a file renamed
+// over it, or a file changed just before the read is read again.
+TEST_F(LibraryReuse, SettledFilesAreNotReadAgainUntilTheirStatChanges) {
+    const fs::path library = folder_ / "stamped.nc";
+    const std::string text = "O9010\n#100 = 1\nM99\n";
+    writeText(library, text);
+    const std::vector<controller::LibraryCache::File> files{{library.string(), gcode::FileRole::GLibrary, -1}};
+
+    controller::LibraryCache later(&anHourOn); // the file's change is an hour old at every read
+    const auto first = later.get(gcode::Dialect::m350(), files);
+    ASSERT_TRUE(first);
+    EXPECT_EQ(later.reads(), 1u);
+    EXPECT_EQ(later.get(gcode::Dialect::m350(), files), first);
+    EXPECT_EQ(later.reads(), 1u) << "settled and unchanged: not read";
+
+    const auto stamp = fs::last_write_time(library);
+    writeText(library, "O9010\n#100 = 2\nM99\n"); // the same size, the time stamp put back
+    fs::last_write_time(library, stamp);
+    const auto edited = later.get(gcode::Dialect::m350(), files);
+    EXPECT_EQ(later.reads(), 2u);
+    EXPECT_EQ(later.parses(), 2u);
+    EXPECT_NE(edited, first);
+
+    const fs::path copy = folder_ / "copy.nc"; // the same text renamed over it: another file
+    writeText(copy, "O9010\n#100 = 2\nM99\n");
+    fs::rename(copy, library);
+    EXPECT_EQ(later.get(gcode::Dialect::m350(), files), edited);
+    EXPECT_EQ(later.reads(), 3u);
+    EXPECT_EQ(later.parses(), 2u) << "read the same: not parsed again";
+    EXPECT_EQ(later.get(gcode::Dialect::m350(), files), edited);
+    EXPECT_EQ(later.reads(), 3u);
+
+    controller::LibraryCache now; // the file changed a moment ago: read at every use
+    ASSERT_TRUE(now.get(gcode::Dialect::m350(), files));
+    ASSERT_TRUE(now.get(gcode::Dialect::m350(), files));
+    EXPECT_EQ(now.reads(), 2u);
+    EXPECT_EQ(now.parses(), 1u);
+}
