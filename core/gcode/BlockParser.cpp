@@ -12,8 +12,8 @@ namespace m350::gcode {
 
 BlockParser::BlockParser(const Dialect& dialect, BlockStorage& storage, std::vector<Diagnostic>& diagnostics,
                          std::string fileName, std::uint32_t fileIndex)
-    : dialect_(dialect), storage_(storage), pool_(storage.expressions), diagnostics_(diagnostics),
-      fileName_(std::move(fileName)), fileIndex_(fileIndex) {}
+    : dialect_(dialect), storage_(storage), pool_(storage.expressions), findings_(diagnostics, std::move(fileName)),
+      fileIndex_(fileIndex) {}
 
 bool BlockParser::parse(std::string_view line, std::uint32_t lineNumber, Block& out, LineEnd lineEnd) {
     if (plainPath_ && !comment_.open) {
@@ -49,16 +49,15 @@ constexpr std::size_t kMostLineBytes = std::size_t{1024} * 1024;
 } // namespace
 
 std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint32_t lineNumber) {
+    findings_.startLine(lineNumber);
     if (line.size() > kMostLineBytes) {
-        diagnostics_.push_back({Severity::Error, DiagnosticKind::Syntax, fileName_, lineNumber, 1,
-                                "the line is " + std::to_string(line.size()) + " bytes long, more than the " +
-                                    std::to_string(kMostLineBytes) + " a program line may have: not read"});
+        findings_.refuse(1, "the line is " + std::to_string(line.size()) + " bytes long, more than the " +
+                                std::to_string(kMostLineBytes) + " a program line may have: not read");
         return std::nullopt;
     }
     line_ = line;
     columnCacheOffset_ = 0;
     columnCacheColumn_ = 1;
-    lineNumber_ = lineNumber;
     Lexer(dialect_).tokenize(line, tokens_, comment_);
     if (comment_.openedOnThisLine) {
         commentStart_ = {fileIndex_, lineNumber, comment_.column};
@@ -67,17 +66,16 @@ std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint3
     tokens_.insert(tokens_.end(), kLookahead, end);
     pos_ = 0;
     depth_ = 0;
-    lastLint_ = {};
     assignments_.clear();
     lintNestedComments();
     Block block;
     block.location = {fileIndex_, lineNumber, tokens_.front().column};
     try {
         parseStatement(block);
-    } catch (const Failure&) {
+    } catch (const LineFindings::Failure&) {
         return brokenLoopBlock(block);
     }
-    block.suspect = !lastLint_.message.empty();
+    block.suspect = findings_.linted();
     bool empty = block.label < 0 && block.programNumber < 0 && block.control == Control::None &&
                  assignments_.empty() && block.words.empty();
     if (empty) {
@@ -101,46 +99,6 @@ const Token& BlockParser::next() {
 
 bool BlockParser::atKeyword(Keyword k) const {
     return peek().kind == TokenKind::Keyword && peek().keyword == k;
-}
-
-void BlockParser::fail(const Token& at, std::string message) {
-    fail(at.column, std::move(message));
-}
-
-void BlockParser::fail(std::uint32_t column, std::string message) {
-    diagnostics_.push_back(
-        {Severity::Error, DiagnosticKind::Syntax, fileName_, lineNumber_, column, clipEcho(std::move(message))});
-    throw Failure{};
-}
-
-void BlockParser::lint(std::uint32_t column, std::string message) {
-    diagnostics_.push_back(
-        {Severity::Error, DiagnosticKind::Lint, fileName_, lineNumber_, column, clipEcho(std::move(message))});
-    lastLint_ = diagnostics_.back();
-}
-
-// A finding that changes nothing: the line runs as written.
-void BlockParser::note(std::uint32_t column, std::string message) {
-    diagnostics_.push_back(
-        {Severity::Warning, DiagnosticKind::Lint, fileName_, lineNumber_, column, clipEcho(std::move(message))});
-}
-
-void BlockParser::fail(const Token& at, const Message& words) {
-    fail(at.column, words);
-}
-
-void BlockParser::fail(std::uint32_t column, const Message& words) {
-    diagnostics_.push_back(diagnostic(Severity::Error, DiagnosticKind::Syntax, fileName_, lineNumber_, column, words));
-    throw Failure{};
-}
-
-void BlockParser::lint(std::uint32_t column, const Message& words) {
-    diagnostics_.push_back(diagnostic(Severity::Error, DiagnosticKind::Lint, fileName_, lineNumber_, column, words));
-    lastLint_ = diagnostics_.back();
-}
-
-void BlockParser::note(std::uint32_t column, const Message& words) {
-    diagnostics_.push_back(diagnostic(Severity::Warning, DiagnosticKind::Lint, fileName_, lineNumber_, column, words));
 }
 
 bool BlockParser::lastLineLabelled() const {
@@ -181,9 +139,9 @@ void BlockParser::parseStatement(Block& block) {
             break; // its text is read from the line itself (parsePrintItems), not as tokens
         }
         if (isNote(t.issue)) {
-            note(t.column, Lexer(dialect_).issueWords(t, line_));
+            findings_.note(t.column, Lexer(dialect_).issueWords(t, line_));
         } else if (t.issue != TokenIssue::None) {
-            fail(t, Lexer(dialect_).issueWords(t, line_));
+            findings_.fail(t, Lexer(dialect_).issueWords(t, line_));
         }
         if (t.kind == TokenKind::Comment && t.issue == TokenIssue::None && block.comment.empty()) {
             block.comment = storage_.text.store(commentText(t, line_));
@@ -200,7 +158,7 @@ void BlockParser::parseStatement(Block& block) {
         next();
         skipComments();
         if (peek().kind != TokenKind::End) {
-            fail(peek(), message("parse_after_percent"));
+            findings_.fail(peek(), message("parse_after_percent"));
         }
         return;
     }
@@ -211,15 +169,15 @@ void BlockParser::parseStatement(Block& block) {
     if (peek().kind == TokenKind::Letter && peek().letter == 'O') {
         const Token& o = next();
         if (peek().kind != TokenKind::Number || peek().number != std::floor(peek().number)) {
-            fail(o, message("parse_o_number"));
+            findings_.fail(o, message("parse_o_number"));
         }
         if (peek().number > kMaxLabel) { // would be rounded into another program's number
-            fail(peek(), message("parse_o_range", {source(peek()), std::to_string(kMaxLabel)}));
+            findings_.fail(peek(), message("parse_o_range", {source(peek()), std::to_string(kMaxLabel)}));
         }
         block.programNumber = static_cast<std::int32_t>(next().number);
         skipComments();
         if (peek().kind != TokenKind::End) {
-            fail(peek(), message("parse_after_o", {describeWords(peek()), std::to_string(block.programNumber)}));
+            findings_.fail(peek(), message("parse_after_o", {describeWords(peek()), std::to_string(block.programNumber)}));
         }
         return;
     }
@@ -264,7 +222,7 @@ void BlockParser::parseStatement(Block& block) {
         if (block.control != Control::None) {
             skipComments();
             if (peek().kind != TokenKind::End) {
-                fail(peek(), message("parse_unexpected_after", {describeWords(peek()), std::string(keywordSpelling(k.keyword))}));
+                findings_.fail(peek(), message("parse_unexpected_after", {describeWords(peek()), std::string(keywordSpelling(k.keyword))}));
             }
             return;
         }
@@ -274,7 +232,7 @@ void BlockParser::parseStatement(Block& block) {
 
 ExprId BlockParser::parseCondition(const char* statement) {
     if (!dialect_.unbracketedConditions && peek().kind != TokenKind::LBracket) {
-        fail(peek(), message("parse_condition_brackets", {statement}));
+        findings_.fail(peek(), message("parse_condition_brackets", {statement}));
     }
     return parseExpression();
 }
@@ -292,17 +250,17 @@ void BlockParser::parseIf(Block& block) {
         next();
         block.control = Control::IfThen;
         if (peek().kind != TokenKind::Hash) {
-            fail(peek(), message("parse_then_assignment", {describeWords(peek())}));
+            findings_.fail(peek(), message("parse_then_assignment", {describeWords(peek())}));
         }
         assignments_.push_back(parseAssignment());
     } else {
-        fail(peek(), message("parse_if_goto_then", {describeWords(peek())}));
+        findings_.fail(peek(), message("parse_if_goto_then", {describeWords(peek())}));
     }
     while (peek().kind == TokenKind::Comment) {
         next();
     }
     if (peek().kind != TokenKind::End) {
-        fail(peek(), message("parse_after_if", {describeWords(peek())}));
+        findings_.fail(peek(), message("parse_after_if", {describeWords(peek())}));
     }
 }
 
@@ -313,7 +271,7 @@ void BlockParser::parseWhile(Block& block) {
         failStrayBracket(peek(), "WHILE condition");
     }
     if (!atKeyword(Keyword::Do)) {
-        fail(peek(), message("parse_while_do", {describeWords(peek())}));
+        findings_.fail(peek(), message("parse_while_do", {describeWords(peek())}));
     }
     next();
     block.loopId = parseLoopId("DO");
@@ -321,7 +279,7 @@ void BlockParser::parseWhile(Block& block) {
         next();
     }
     if (peek().kind != TokenKind::End) {
-        fail(peek(), message("parse_after_while", {describeWords(peek()), std::to_string(block.loopId)}));
+        findings_.fail(peek(), message("parse_after_while", {describeWords(peek()), std::to_string(block.loopId)}));
     }
 }
 
@@ -329,10 +287,10 @@ void BlockParser::parseWhile(Block& block) {
 // another label.
 std::int32_t BlockParser::labelNumber(const Token& number, const char* what) {
     if (number.number != std::floor(number.number)) {
-        fail(number, message("parse_n_whole"));
+        findings_.fail(number, message("parse_n_whole"));
     }
     if (number.number > kMaxLabel) {
-        fail(number, message("parse_n_range", {what + source(number), std::to_string(kMaxLabel)}));
+        findings_.fail(number, message("parse_n_range", {what + source(number), std::to_string(kMaxLabel)}));
     }
     return static_cast<std::int32_t>(number.number);
 }
@@ -343,7 +301,7 @@ ExprId BlockParser::parseGotoTarget() {
     const ExprNode& value = pool_[target];
     if (value.kind == ExprKind::Number && (value.number < 0 || value.number > kMaxLabel)) {
         const Token& last = tokens_[pos_ - 1];
-        fail(first, message("parse_n_range", {"GOTO" + std::string(line_.substr(first.offset, last.offset + last.length - first.offset)),
+        findings_.fail(first, message("parse_n_range", {"GOTO" + std::string(line_.substr(first.offset, last.offset + last.length - first.offset)),
                                              std::to_string(kMaxLabel)}));
     }
     return target;
@@ -352,12 +310,12 @@ ExprId BlockParser::parseGotoTarget() {
 int BlockParser::parseLoopId(const char* keyword) {
     const Token& t = peek();
     if (t.kind != TokenKind::Number || t.number != std::floor(t.number)) {
-        fail(t, message("parse_loop_number", {keyword, std::to_string(dialect_.maxLoopId), describeWords(t)}));
+        findings_.fail(t, message("parse_loop_number", {keyword, std::to_string(dialect_.maxLoopId), describeWords(t)}));
     }
     next();
     int id = saturatingInt(t.number);
     if (id < 1 || id > dialect_.maxLoopId) {
-        fail(t, message("parse_loop_range", {std::string(keyword) + std::to_string(id), std::to_string(dialect_.maxLoopId),
+        findings_.fail(t, message("parse_loop_range", {std::string(keyword) + std::to_string(id), std::to_string(dialect_.maxLoopId),
                                       std::string(dialect_.name)}));
     }
     return id;
@@ -388,8 +346,8 @@ void BlockParser::parseItems(Block& block) {
         }
         case TokenKind::RBracket: failStrayBracket(t, "this block");
         case TokenKind::Keyword:
-            fail(t, message("parse_keyword_first", {std::string(keywordSpelling(t.keyword))}));
-        default: fail(t, message("parse_expected_word", {describeWords(t)}));
+            findings_.fail(t, message("parse_keyword_first", {std::string(keywordSpelling(t.keyword))}));
+        default: findings_.fail(t, message("parse_expected_word", {describeWords(t)}));
         }
     }
 }
@@ -404,15 +362,15 @@ Assignment BlockParser::parseAssignment() {
             if (tokens_[i].kind == TokenKind::RBracket) {
                 pos_ = i;
                 std::string hint = hashBracketHint(hashToken, i);
-                fail(tokens_[i], hint.empty() ? message("parse_bracket_assigned")
+                findings_.fail(tokens_[i], hint.empty() ? message("parse_bracket_assigned")
                                              : message("parse_bracket_assigned_hint", {hint}));
             }
         }
-        fail(peek(), message("parse_expected_assign", {describeWords(peek())}));
+        findings_.fail(peek(), message("parse_expected_assign", {describeWords(peek())}));
     }
     next();
     if (peek().kind == TokenKind::End || peek().kind == TokenKind::Comment) {
-        fail(peek(), message("parse_expected_assigned_value", {describeWords(peek())}));
+        findings_.fail(peek(), message("parse_expected_assigned_value", {describeWords(peek())}));
     }
     a.value = parseExpression();
     if (peek().kind == TokenKind::Comment) {
@@ -433,7 +391,7 @@ Word BlockParser::parseWord() {
     TokenKind k = peek().kind;
     if (k != TokenKind::Number && k != TokenKind::Hash && k != TokenKind::LBracket && k != TokenKind::Minus &&
         k != TokenKind::Plus) {
-        fail(letter, message("parse_address_value", {std::string(1, letter.letter), describeWords(peek())}));
+        findings_.fail(letter, message("parse_address_value", {std::string(1, letter.letter), describeWords(peek())}));
     }
     auto arithmeticAhead = [this] {
         TokenKind k = peek().kind;
@@ -447,7 +405,7 @@ Word BlockParser::parseWord() {
         w.value = parseAdditive();
     }
     if (arithmeticAhead()) {
-        fail(peek(), message("parse_address_arithmetic", {std::string(1, letter.letter)}));
+        findings_.fail(peek(), message("parse_address_arithmetic", {std::string(1, letter.letter)}));
     }
     return w;
 }

@@ -6,6 +6,7 @@
 #include "core/gcode/Diagnostic.h"
 #include "core/gcode/Expression.h"
 #include "core/gcode/Lexer.h"
+#include "core/gcode/LineFindings.h"
 #include "core/gcode/PlainBlockParser.h"
 #include "core/gcode/Token.h"
 
@@ -54,7 +55,7 @@ public:
     bool plainPath() const { return plainPath_; }
 
     // The lint finding of the block just parsed (empty when none).
-    const Diagnostic& lastLint() const { return lastLint_; }
+    const Diagnostic& lastLint() const { return findings_.lastLint(); }
 
     // Whether the line just parsed, when it had an error, begins with an N or O number (a line a
     // jump or a call may reach).
@@ -65,24 +66,14 @@ public:
     SourceLocation commentStart() const { return commentStart_; }
 
 private:
-    struct Failure {};
-
     std::optional<Block> parseGeneral(std::string_view line, std::uint32_t lineNumber);
 
     static constexpr int kLookahead = 2; // peek(1) and peek(2) are the farthest the grammar looks
     const Token& peek(std::size_t ahead = 0) const;
     const Token& next();
     bool atKeyword(Keyword k) const;
-    [[noreturn]] void fail(const Token& at, std::string message);
-    [[noreturn]] void fail(std::uint32_t column, std::string message);
-    void lint(std::uint32_t column, std::string message);
-    void note(std::uint32_t column, std::string message);
     // describe() as a message's argument: the words in both languages.
     std::string describeWords(const Token& token) const;
-    [[noreturn]] void fail(const Token& at, const Message& words);
-    [[noreturn]] void fail(std::uint32_t column, const Message& words);
-    void lint(std::uint32_t column, const Message& words);
-    void note(std::uint32_t column, const Message& words);
 
     void parseStatement(Block& block);
     void parseIf(Block& block);
@@ -134,8 +125,7 @@ private:
     const Dialect& dialect_;
     BlockStorage& storage_;
     ExpressionPool& pool_; // storage_.expressions
-    std::vector<Diagnostic>& diagnostics_;
-    std::string fileName_;
+    LineFindings findings_;
     std::uint32_t fileIndex_;
 
     std::string_view line_;
@@ -143,14 +133,12 @@ private:
     // counts on from the last instead of from the line's start (a 100,000-item DPRNT was quadratic)
     mutable std::size_t columnCacheOffset_ = 0;
     mutable std::uint32_t columnCacheColumn_ = 1;
-    std::uint32_t lineNumber_ = 0;
     std::vector<Token> tokens_;
     std::vector<Assignment> assignments_; // of the block being parsed, stored when it parses
     std::size_t pos_ = 0;
     BlockCommentState comment_;
     SourceLocation commentStart_;
     int depth_ = 0; // nesting of brackets, signs and indirections in the current expression
-    Diagnostic lastLint_; // its message empty when the line has no lint finding
     bool plainPath_ = true;
 };
 

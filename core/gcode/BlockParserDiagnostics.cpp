@@ -96,7 +96,7 @@ void BlockParser::checkExponents() {
         }
         const Token& end = tokens_[exponent];
         std::string written(line_.substr(tokens_[i].offset, end.offset + end.length - tokens_[i].offset));
-        fail(tokens_[i], message("parse_exponent", {written}));
+        findings_.fail(tokens_[i], message("parse_exponent", {written}));
     }
 }
 
@@ -133,7 +133,7 @@ void BlockParser::failStrayBracket(const Token& at, const char* context) {
     }
     std::string hint = hashBracketHint(open, stray);
     const std::string where = bracketContext(context);
-    fail(at, hint.empty() ? message("parse_bracket", {where}) : message("parse_bracket_hint", {where, hint}));
+    findings_.fail(at, hint.empty() ? message("parse_bracket", {where}) : message("parse_bracket_hint", {where, hint}));
 }
 
 // For `#1552+#20-1]` or `[#1520+#13-1] NE 0]`: the indirect reference the author most likely meant,
@@ -181,7 +181,7 @@ void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, 
                 meant = meant.substr(0, 2) + "[" + meant.substr(2) + "]";
             }
             std::string b = std::to_string(table.base);
-            lint(word.column, message("lint_table_added", {written, b, bilingual(table.what, table.chinese), meant}));
+            findings_.lint(word.column, message("lint_table_added", {written, b, bilingual(table.what, table.chinese), meant}));
             return;
         }
     }
@@ -199,7 +199,7 @@ void BlockParser::lintNestedComments() {
         for (std::uint32_t i = t.offset + 1; i + 1 < t.offset + t.length; ++i) {
             const auto byte = static_cast<unsigned char>(line_[i]);
             if (byte == '(') {
-                note(column, message("lint_comment_nested"));
+                findings_.note(column, message("lint_comment_nested"));
                 break;
             }
             column += (byte & 0xC0) != 0x80 ? 1 : 0; // one per character, not per UTF-8 byte

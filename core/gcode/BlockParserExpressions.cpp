@@ -37,7 +37,7 @@ std::optional<BinaryOp> BlockParser::comparisonAhead() {
     if (t.kind == TokenKind::Compare) {
         if (!dialect_.cStyleComparisons) {
             const char* word[] = {"EQ", "NE", "LT", "GT", "LE", "GE"};
-            fail(t, message("parse_comparison_spelling",
+            findings_.fail(t, message("parse_comparison_spelling",
                             {source(t), std::string(dialect_.name),
                              word[static_cast<int>(t.compare) - static_cast<int>(BinaryOp::Eq)]}));
         }
@@ -60,7 +60,7 @@ std::optional<BinaryOp> BlockParser::additiveAhead() {
     }
     if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::Or || t.keyword == Keyword::Xor)) {
         if (!dialect_.bitwiseKeywords) {
-            fail(t, message(t.keyword == Keyword::Or ? "parse_no_or" : "parse_no_xor",
+            findings_.fail(t, message(t.keyword == Keyword::Or ? "parse_no_or" : "parse_no_xor",
                             {std::string(keywordSpelling(t.keyword)), std::string(dialect_.name)}));
         }
         return t.keyword == Keyword::Or ? BinaryOp::Or : BinaryOp::Xor;
@@ -78,7 +78,7 @@ std::optional<BinaryOp> BlockParser::termAhead() {
     }
     if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::And || t.keyword == Keyword::Mod)) {
         if (!dialect_.bitwiseKeywords) {
-            fail(t, message(t.keyword == Keyword::And ? "parse_no_and" : "parse_no_mod",
+            findings_.fail(t, message(t.keyword == Keyword::And ? "parse_no_and" : "parse_no_mod",
                             {std::string(keywordSpelling(t.keyword)), std::string(dialect_.name)}));
         }
         return t.keyword == Keyword::And ? BinaryOp::And : BinaryOp::Mod;
@@ -117,7 +117,7 @@ ExprId BlockParser::parseTerm() {
 BlockParser::Nesting BlockParser::enterNesting(const Token& at) {
     constexpr int kMaxNesting = 64;
     if (++depth_ > kMaxNesting) {
-        fail(at, message("parse_nesting", {std::to_string(kMaxNesting)}));
+        findings_.fail(at, message("parse_nesting", {std::to_string(kMaxNesting)}));
     }
     return Nesting{depth_};
 }
@@ -167,14 +167,14 @@ ExprId BlockParser::parsePrimary() {
     case TokenKind::RBracket: failStrayBracket(t, "this expression");
     default: break;
     }
-    fail(t, message("parse_expected_value", {describeWords(t)}));
+    findings_.fail(t, message("parse_expected_value", {describeWords(t)}));
 }
 
 ExprId BlockParser::parseBracketed() {
     const Token& open = next();
     ExprId inner = parseExpression();
     if (peek().kind != TokenKind::RBracket) {
-        fail(peek(), message("parse_missing_bracket", {std::to_string(open.column), describeWords(peek())}));
+        findings_.fail(peek(), message("parse_missing_bracket", {std::to_string(open.column), describeWords(peek())}));
     }
     next();
     return inner;
@@ -190,7 +190,7 @@ ExprId BlockParser::parseVariable() {
     if (t.kind == TokenKind::Number) {
         next();
         if (t.number != std::floor(t.number)) {
-            fail(t, message("parse_variable_whole", {source(t)}));
+            findings_.fail(t, message("parse_variable_whole", {source(t)}));
         }
         n.number = t.number;
     } else if (t.kind == TokenKind::LBracket) {
@@ -198,7 +198,7 @@ ExprId BlockParser::parseVariable() {
     } else if (t.kind == TokenKind::Hash) {
         n.lhs = parseVariable();
     } else {
-        fail(t, message("parse_hash_value", {describeWords(t)}));
+        findings_.fail(t, message("parse_hash_value", {describeWords(t)}));
     }
     return pool_.add(n);
 }
@@ -209,10 +209,10 @@ ExprId BlockParser::parseFunction() {
     bool extended = f == Function::Asin || f == Function::Acos || f == Function::Ln || f == Function::Exp ||
                     f == Function::Bin || f == Function::Bcd;
     if (extended && !dialect_.extendedFunctions) {
-        fail(name, message("parse_no_function", {std::string(keywordSpelling(name.keyword)), std::string(dialect_.name)}));
+        findings_.fail(name, message("parse_no_function", {std::string(keywordSpelling(name.keyword)), std::string(dialect_.name)}));
     }
     if (peek().kind != TokenKind::LBracket) {
-        fail(peek(), message("parse_function_argument", {std::string(keywordSpelling(name.keyword))}));
+        findings_.fail(peek(), message("parse_function_argument", {std::string(keywordSpelling(name.keyword))}));
     }
     ExprNode n;
     n.kind = ExprKind::Function;
@@ -225,7 +225,7 @@ ExprId BlockParser::parseFunction() {
         n.rhs = parseExpression();
     }
     if (peek().kind != TokenKind::RBracket) {
-        fail(peek(), message("parse_missing_bracket_of", {std::string(keywordSpelling(name.keyword)),
+        findings_.fail(peek(), message("parse_missing_bracket_of", {std::string(keywordSpelling(name.keyword)),
                                                           std::to_string(open.column), describeWords(peek())}));
     }
     next();
@@ -234,7 +234,7 @@ ExprId BlockParser::parseFunction() {
     if (f == Function::Atan && n.rhs == kNoExpr && peek().kind == TokenKind::Slash &&
         peek(1).kind == TokenKind::LBracket) {
         if (!dialect_.atanSlash) {
-            fail(peek(), message("parse_atan_slash", {std::string(dialect_.name)}));
+            findings_.fail(peek(), message("parse_atan_slash", {std::string(dialect_.name)}));
         }
         next();
         n.rhs = parseBracketed();

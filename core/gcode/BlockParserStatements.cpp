@@ -52,10 +52,10 @@ void BlockParser::parseDeviceStatement(Block& block, const Token& keyword) {
     const std::string name = keywordSpelling(keyword.keyword);
     const bool output = keyword.keyword >= Keyword::Popen && keyword.keyword <= Keyword::Bprnt;
     if (output && !dialect_.externalOutput) {
-        fail(keyword, message("parse_no_external_output", {name, std::string(dialect_.name)}));
+        findings_.fail(keyword, message("parse_no_external_output", {name, std::string(dialect_.name)}));
     }
     if (!output && !dialect_.modbusStatements) {
-        fail(keyword, message("parse_no_modbus", {name, std::string(dialect_.name)}));
+        findings_.fail(keyword, message("parse_no_modbus", {name, std::string(dialect_.name)}));
     }
     switch (keyword.keyword) {
     case Keyword::Popen:
@@ -65,7 +65,7 @@ void BlockParser::parseDeviceStatement(Block& block, const Token& keyword) {
             next();
         }
         if (peek().kind != TokenKind::End) {
-            fail(peek(), message("parse_after_alone", {describeWords(peek()), name}));
+            findings_.fail(peek(), message("parse_after_alone", {describeWords(peek()), name}));
         }
         return;
     case Keyword::Dprnt:
@@ -83,7 +83,7 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
                                           : bilingual("#100[53] (5 integer digits, 3 decimals)", "#100[53]（5位整数，3位小数）");
     const std::size_t size = line_.size();
     std::size_t i = keyword.offset + keyword.length;
-    auto failAt = [&](std::size_t offset, const Message& words) { fail(columnAt(offset), words); };
+    auto failAt = [&](std::size_t offset, const Message& words) { findings_.fail(columnAt(offset), words); };
     auto skipBlanks = [&] {
         while (i < size && isBlank(line_[i])) {
             ++i;
@@ -206,7 +206,7 @@ void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
     const bool transfer = keyword.keyword == Keyword::MSetData || keyword.keyword == Keyword::MGetData;
     const bool write = keyword.keyword == Keyword::MSetData;
     if (peek().kind != TokenKind::LBracket) {
-        fail(peek(), !transfer ? message("modbus_needs_brackets", {name, describeWords(peek())})
+        findings_.fail(peek(), !transfer ? message("modbus_needs_brackets", {name, describeWords(peek())})
                      : message(write ? "msetdata_needs_brackets" : "mgetdata_needs_brackets", {describeWords(peek())}));
     }
     const Token& open = next();
@@ -222,21 +222,21 @@ void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
         next();
     }
     if (peek().kind != TokenKind::RBracket) {
-        fail(peek(), message("parse_missing_bracket_of", {name, std::to_string(open.column), describeWords(peek())}));
+        findings_.fail(peek(), message("parse_missing_bracket_of", {name, std::to_string(open.column), describeWords(peek())}));
     }
     next();
     while (peek().kind == TokenKind::Comment) {
         next();
     }
     if (peek().kind != TokenKind::End) {
-        fail(peek(), message("parse_after_statement", {describeWords(peek()), name}));
+        findings_.fail(peek(), message("parse_after_statement", {describeWords(peek()), name}));
     }
     if (transfer) {
         checkModbusTransfer(keyword, write, arguments);
         block.control = write ? Control::MSetData : Control::MGetData;
     } else {
         block.control = Control::ModbusConversion;
-        lint(keyword.column, message("lint_modbus_conversion", {name}));
+        findings_.lint(keyword.column, message("lint_modbus_conversion", {name}));
     }
     block.statement = storeStatement(arguments);
 }
@@ -245,10 +245,10 @@ void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
 void BlockParser::checkModbusTransfer(const Token& keyword, bool write, const std::vector<StatementItem>& arguments) {
     const std::string name = ModbusStatement::name(write);
     if (arguments.size() == 3) {
-        fail(keyword, message(write ? "msetdata_old_form" : "mgetdata_old_form"));
+        findings_.fail(keyword, message(write ? "msetdata_old_form" : "mgetdata_old_form"));
     }
     if (arguments.size() != ModbusStatement::kCount) {
-        fail(keyword, message(write ? "msetdata_argument_count" : "mgetdata_argument_count",
+        findings_.fail(keyword, message(write ? "msetdata_argument_count" : "mgetdata_argument_count",
                               {std::to_string(arguments.size())}));
     }
     // A number as written (-5 included); nothing for an expression, checked when the line runs.
@@ -267,7 +267,7 @@ void BlockParser::checkModbusTransfer(const Token& keyword, bool write, const st
         const StatementItem& item = arguments[static_cast<std::size_t>(k)];
         if (auto v = literal(item)) {
             if (auto problem = ModbusStatement::argumentProblem(write, k, *v)) {
-                fail(item.column, *problem);
+                findings_.fail(item.column, *problem);
             }
         }
     }
@@ -275,7 +275,7 @@ void BlockParser::checkModbusTransfer(const Token& keyword, bool write, const st
     const auto bytes = literal(arguments[ModbusStatement::Bytes]);
     if (first && bytes) {
         if (auto problem = ModbusStatement::spanProblem(write, static_cast<int>(*first), static_cast<int>(*bytes))) {
-            fail(arguments[ModbusStatement::Bytes].column, *problem);
+            findings_.fail(arguments[ModbusStatement::Bytes].column, *problem);
         }
     }
     for (int k : {ModbusStatement::FirstVariable, ModbusStatement::ExceptionVariable}) {
@@ -283,7 +283,7 @@ void BlockParser::checkModbusTransfer(const Token& keyword, bool write, const st
         const ExprNode& node = pool_[item.value];
         if (node.kind == ExprKind::Variable && node.lhs == kNoExpr) {
             const std::string n = std::to_string(static_cast<long long>(node.number));
-            note(item.column, message("note_modbus_variable_number", {name, std::to_string(k + 1), n}));
+            findings_.note(item.column, message("note_modbus_variable_number", {name, std::to_string(k + 1), n}));
         }
     }
 }
