@@ -55,21 +55,15 @@ std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint3
                                 std::to_string(kMostLineBytes) + " a program line may have: not read");
         return std::nullopt;
     }
-    line_ = line;
-    columnCacheOffset_ = 0;
-    columnCacheColumn_ = 1;
-    Lexer(dialect_).tokenize(line, tokens_, comment_);
+    tokens_.read(Lexer(dialect_), line, comment_);
     if (comment_.openedOnThisLine) {
         commentStart_ = {fileIndex_, lineNumber, comment_.column};
     }
-    const Token end = tokens_.back();
-    tokens_.insert(tokens_.end(), kLookahead, end);
-    pos_ = 0;
     depth_ = 0;
     assignments_.clear();
     lintNestedComments();
     Block block;
-    block.location = {fileIndex_, lineNumber, tokens_.front().column};
+    block.location = {fileIndex_, lineNumber, tokens_[0].column};
     try {
         parseStatement(block);
     } catch (const LineFindings::Failure&) {
@@ -85,112 +79,64 @@ std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint3
     return block;
 }
 
-// The token list ends with kLookahead End tokens (see parse()), so peeking never runs past it and
-// next() never moves beyond the first End.
-const Token& BlockParser::peek(std::size_t ahead) const {
-    return tokens_[pos_ + ahead];
-}
-
-const Token& BlockParser::next() {
-    const Token& t = tokens_[pos_];
-    pos_ += t.kind != TokenKind::End ? 1 : 0;
-    return t;
-}
-
-bool BlockParser::atKeyword(Keyword k) const {
-    return peek().kind == TokenKind::Keyword && peek().keyword == k;
-}
-
-bool BlockParser::lastLineLabelled() const {
-    if (tokens_.empty()) {
-        return false;
-    }
-    std::size_t i = 0;
-    while (tokens_[i].kind == TokenKind::Comment) {
-        ++i;
-    }
-    i += tokens_[i].kind == TokenKind::Slash ? 1 : 0;
-    return tokens_[i].kind == TokenKind::Letter && (tokens_[i].letter == 'N' || tokens_[i].letter == 'O');
-}
-
-std::string BlockParser::source(const Token& token) const {
-    return std::string(line_.substr(token.offset, token.length));
-}
-
-std::string BlockParser::describeWords(const Token& token) const {
-    switch (token.kind) {
-    case TokenKind::End: return bilingual("the end of the line", "行尾");
-    case TokenKind::Comment: return bilingual("a comment", "注释");
-    default: return "'" + source(token) + "'";
-    }
-}
-
-std::string BlockParser::describe(const Token& token) const {
-    switch (token.kind) {
-    case TokenKind::End: return "the end of the line";
-    case TokenKind::Comment: return "a comment";
-    default: return "'" + source(token) + "'";
-    }
-}
-
 void BlockParser::parseStatement(Block& block) {
     for (const Token& t : tokens_) {
         if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::Dprnt || t.keyword == Keyword::Bprnt)) {
             break; // its text is read from the line itself (parsePrintItems), not as tokens
         }
         if (isNote(t.issue)) {
-            findings_.note(t.column, Lexer(dialect_).issueWords(t, line_));
+            findings_.note(t.column, Lexer(dialect_).issueWords(t, tokens_.line()));
         } else if (t.issue != TokenIssue::None) {
-            findings_.fail(t, Lexer(dialect_).issueWords(t, line_));
+            findings_.fail(t, Lexer(dialect_).issueWords(t, tokens_.line()));
         }
         if (t.kind == TokenKind::Comment && t.issue == TokenIssue::None && block.comment.empty()) {
-            block.comment = storage_.text.store(commentText(t, line_));
+            block.comment = storage_.text.store(commentText(t, tokens_.line()));
         }
     }
     checkExponents();
     auto skipComments = [&] {
-        while (peek().kind == TokenKind::Comment) {
-            next();
+        while (tokens_.peek().kind == TokenKind::Comment) {
+            tokens_.next();
         }
     };
     skipComments();
-    if (peek().kind == TokenKind::Percent) {
-        next();
+    if (tokens_.peek().kind == TokenKind::Percent) {
+        tokens_.next();
         skipComments();
-        if (peek().kind != TokenKind::End) {
-            findings_.fail(peek(), message("parse_after_percent"));
+        if (tokens_.peek().kind != TokenKind::End) {
+            findings_.fail(tokens_.peek(), message("parse_after_percent"));
         }
         return;
     }
-    if (peek().kind == TokenKind::Slash) {
-        next();
+    if (tokens_.peek().kind == TokenKind::Slash) {
+        tokens_.next();
         block.blockDelete = true;
     }
-    if (peek().kind == TokenKind::Letter && peek().letter == 'O') {
-        const Token& o = next();
-        if (peek().kind != TokenKind::Number || peek().number != std::floor(peek().number)) {
+    if (tokens_.peek().kind == TokenKind::Letter && tokens_.peek().letter == 'O') {
+        const Token& o = tokens_.next();
+        if (tokens_.peek().kind != TokenKind::Number || tokens_.peek().number != std::floor(tokens_.peek().number)) {
             findings_.fail(o, message("parse_o_number"));
         }
-        if (peek().number > kMaxLabel) { // would be rounded into another program's number
-            findings_.fail(peek(), message("parse_o_range", {source(peek()), std::to_string(kMaxLabel)}));
+        if (tokens_.peek().number > kMaxLabel) { // would be rounded into another program's number
+            findings_.fail(tokens_.peek(), message("parse_o_range", {tokens_.source(tokens_.peek()), std::to_string(kMaxLabel)}));
         }
-        block.programNumber = static_cast<std::int32_t>(next().number);
+        block.programNumber = static_cast<std::int32_t>(tokens_.next().number);
         skipComments();
-        if (peek().kind != TokenKind::End) {
-            findings_.fail(peek(), message("parse_after_o", {describeWords(peek()), std::to_string(block.programNumber)}));
+        if (tokens_.peek().kind != TokenKind::End) {
+            findings_.fail(tokens_.peek(), message("parse_after_o", {tokens_.describeWords(tokens_.peek()), std::to_string(block.programNumber)}));
         }
         return;
     }
-    if (peek().kind == TokenKind::Letter && peek().letter == 'N' && peek(1).kind == TokenKind::Number) {
-        next();
-        block.label = labelNumber(next(), "N");
+    if (tokens_.peek().kind == TokenKind::Letter && tokens_.peek().letter == 'N' && tokens_.peek(1).kind == TokenKind::Number) {
+        tokens_.next();
+        block.label = labelNumber(tokens_.next(), "N");
     }
     skipComments();
-    if (peek().kind == TokenKind::Keyword) {
-        const Token& k = peek();
+    if (tokens_.peek().kind == TokenKind::Keyword) {
+        const Token& k = tokens_.peek();
         block.controlColumn = k.column;
         switch (k.keyword) {
-        case Keyword::If: next(); parseIf(block); return;
+        case Keyword::If: tokens_.next(); parseIf(block); return;
         case Keyword::Popen:
         case Keyword::Pclos:
         case Keyword::Dprnt:
@@ -198,22 +144,22 @@ void BlockParser::parseStatement(Block& block) {
         case Keyword::MSetData:
         case Keyword::MGetData:
         case Keyword::MByte2Data:
-        case Keyword::MData2Byte: next(); parseDeviceStatement(block, k); return;
-        case Keyword::While: next(); parseWhile(block); return;
+        case Keyword::MData2Byte: tokens_.next(); parseDeviceStatement(block, k); return;
+        case Keyword::While: tokens_.next(); parseWhile(block); return;
         case Keyword::Goto:
-            next();
+            tokens_.next();
             block.control = Control::Goto;
             block.target = parseGotoTarget();
             break;
         case Keyword::End:
-            next();
+            tokens_.next();
             block.control = Control::End;
             block.loopId = parseLoopId("END");
             break;
         case Keyword::Do:
             // `DOm ... ENDm` without WHILE: an endless loop, left by a GOTO (or stopped by the
             // runaway guard)
-            next();
+            tokens_.next();
             block.control = Control::While;
             block.loopId = parseLoopId("DO");
             break;
@@ -221,8 +167,8 @@ void BlockParser::parseStatement(Block& block) {
         }
         if (block.control != Control::None) {
             skipComments();
-            if (peek().kind != TokenKind::End) {
-                findings_.fail(peek(), message("parse_unexpected_after", {describeWords(peek()), std::string(keywordSpelling(k.keyword))}));
+            if (tokens_.peek().kind != TokenKind::End) {
+                findings_.fail(tokens_.peek(), message("parse_unexpected_after", {tokens_.describeWords(tokens_.peek()), std::string(keywordSpelling(k.keyword))}));
             }
             return;
         }
@@ -231,55 +177,55 @@ void BlockParser::parseStatement(Block& block) {
 }
 
 ExprId BlockParser::parseCondition(const char* statement) {
-    if (!dialect_.unbracketedConditions && peek().kind != TokenKind::LBracket) {
-        findings_.fail(peek(), message("parse_condition_brackets", {statement}));
+    if (!dialect_.unbracketedConditions && tokens_.peek().kind != TokenKind::LBracket) {
+        findings_.fail(tokens_.peek(), message("parse_condition_brackets", {statement}));
     }
     return parseExpression();
 }
 
 void BlockParser::parseIf(Block& block) {
     block.condition = parseCondition("IF");
-    if (peek().kind == TokenKind::RBracket) {
-        failStrayBracket(peek(), "IF condition");
+    if (tokens_.peek().kind == TokenKind::RBracket) {
+        failStrayBracket(tokens_.peek(), "IF condition");
     }
-    if (atKeyword(Keyword::Goto)) {
-        next();
+    if (tokens_.atKeyword(Keyword::Goto)) {
+        tokens_.next();
         block.control = Control::IfGoto;
         block.target = parseGotoTarget();
-    } else if (atKeyword(Keyword::Then)) {
-        next();
+    } else if (tokens_.atKeyword(Keyword::Then)) {
+        tokens_.next();
         block.control = Control::IfThen;
-        if (peek().kind != TokenKind::Hash) {
-            findings_.fail(peek(), message("parse_then_assignment", {describeWords(peek())}));
+        if (tokens_.peek().kind != TokenKind::Hash) {
+            findings_.fail(tokens_.peek(), message("parse_then_assignment", {tokens_.describeWords(tokens_.peek())}));
         }
         assignments_.push_back(parseAssignment());
     } else {
-        findings_.fail(peek(), message("parse_if_goto_then", {describeWords(peek())}));
+        findings_.fail(tokens_.peek(), message("parse_if_goto_then", {tokens_.describeWords(tokens_.peek())}));
     }
-    while (peek().kind == TokenKind::Comment) {
-        next();
+    while (tokens_.peek().kind == TokenKind::Comment) {
+        tokens_.next();
     }
-    if (peek().kind != TokenKind::End) {
-        findings_.fail(peek(), message("parse_after_if", {describeWords(peek())}));
+    if (tokens_.peek().kind != TokenKind::End) {
+        findings_.fail(tokens_.peek(), message("parse_after_if", {tokens_.describeWords(tokens_.peek())}));
     }
 }
 
 void BlockParser::parseWhile(Block& block) {
     block.control = Control::While;
     block.condition = parseCondition("WHILE");
-    if (peek().kind == TokenKind::RBracket) {
-        failStrayBracket(peek(), "WHILE condition");
+    if (tokens_.peek().kind == TokenKind::RBracket) {
+        failStrayBracket(tokens_.peek(), "WHILE condition");
     }
-    if (!atKeyword(Keyword::Do)) {
-        findings_.fail(peek(), message("parse_while_do", {describeWords(peek())}));
+    if (!tokens_.atKeyword(Keyword::Do)) {
+        findings_.fail(tokens_.peek(), message("parse_while_do", {tokens_.describeWords(tokens_.peek())}));
     }
-    next();
+    tokens_.next();
     block.loopId = parseLoopId("DO");
-    while (peek().kind == TokenKind::Comment) {
-        next();
+    while (tokens_.peek().kind == TokenKind::Comment) {
+        tokens_.next();
     }
-    if (peek().kind != TokenKind::End) {
-        findings_.fail(peek(), message("parse_after_while", {describeWords(peek()), std::to_string(block.loopId)}));
+    if (tokens_.peek().kind != TokenKind::End) {
+        findings_.fail(tokens_.peek(), message("parse_after_while", {tokens_.describeWords(tokens_.peek()), std::to_string(block.loopId)}));
     }
 }
 
@@ -290,29 +236,29 @@ std::int32_t BlockParser::labelNumber(const Token& number, const char* what) {
         findings_.fail(number, message("parse_n_whole"));
     }
     if (number.number > kMaxLabel) {
-        findings_.fail(number, message("parse_n_range", {what + source(number), std::to_string(kMaxLabel)}));
+        findings_.fail(number, message("parse_n_range", {what + tokens_.source(number), std::to_string(kMaxLabel)}));
     }
     return static_cast<std::int32_t>(number.number);
 }
 
 ExprId BlockParser::parseGotoTarget() {
-    const Token& first = peek();
+    const Token& first = tokens_.peek();
     ExprId target = parseUnary();
     const ExprNode& value = pool_[target];
     if (value.kind == ExprKind::Number && (value.number < 0 || value.number > kMaxLabel)) {
-        const Token& last = tokens_[pos_ - 1];
-        findings_.fail(first, message("parse_n_range", {"GOTO" + std::string(line_.substr(first.offset, last.offset + last.length - first.offset)),
+        const Token& last = tokens_[tokens_.position() - 1];
+        findings_.fail(first, message("parse_n_range", {"GOTO" + std::string(tokens_.line().substr(first.offset, last.offset + last.length - first.offset)),
                                              std::to_string(kMaxLabel)}));
     }
     return target;
 }
 
 int BlockParser::parseLoopId(const char* keyword) {
-    const Token& t = peek();
+    const Token& t = tokens_.peek();
     if (t.kind != TokenKind::Number || t.number != std::floor(t.number)) {
-        findings_.fail(t, message("parse_loop_number", {keyword, std::to_string(dialect_.maxLoopId), describeWords(t)}));
+        findings_.fail(t, message("parse_loop_number", {keyword, std::to_string(dialect_.maxLoopId), tokens_.describeWords(t)}));
     }
-    next();
+    tokens_.next();
     int id = saturatingInt(t.number);
     if (id < 1 || id > dialect_.maxLoopId) {
         findings_.fail(t, message("parse_loop_range", {std::string(keyword) + std::to_string(id), std::to_string(dialect_.maxLoopId),
@@ -323,20 +269,20 @@ int BlockParser::parseLoopId(const char* keyword) {
 
 void BlockParser::parseItems(Block& block) {
     std::size_t letters = 0;
-    for (std::size_t i = pos_; i < tokens_.size(); ++i) {
+    for (std::size_t i = tokens_.position(); i < tokens_.size(); ++i) {
         letters += tokens_[i].kind == TokenKind::Letter ? 1 : 0;
     }
     std::span<Word> room = storage_.words.allocate(letters);
     std::size_t count = 0;
-    while (peek().kind != TokenKind::End) {
-        const Token& t = peek();
+    while (tokens_.peek().kind != TokenKind::End) {
+        const Token& t = tokens_.peek();
         switch (t.kind) {
-        case TokenKind::Comment: next(); break;
+        case TokenKind::Comment: tokens_.next(); break;
         case TokenKind::Hash: assignments_.push_back(parseAssignment()); break;
         case TokenKind::Letter: {
-            std::size_t first = pos_;
+            std::size_t first = tokens_.position();
             Word w = parseWord();
-            lintTableArithmetic(w, first, pos_);
+            lintTableArithmetic(w, first, tokens_.position());
             if (w.letter == 'M' && w.isNumber() && (w.number == 30 || w.number == 2)) {
                 block.programEnd = true;
             }
@@ -347,65 +293,65 @@ void BlockParser::parseItems(Block& block) {
         case TokenKind::RBracket: failStrayBracket(t, "this block");
         case TokenKind::Keyword:
             findings_.fail(t, message("parse_keyword_first", {std::string(keywordSpelling(t.keyword))}));
-        default: findings_.fail(t, message("parse_expected_word", {describeWords(t)}));
+        default: findings_.fail(t, message("parse_expected_word", {tokens_.describeWords(t)}));
         }
     }
 }
 
 Assignment BlockParser::parseAssignment() {
     Assignment a;
-    a.column = peek().column;
-    std::size_t hashToken = pos_;
+    a.column = tokens_.peek().column;
+    std::size_t hashToken = tokens_.position();
     a.index = parseVariable();
-    if (peek().kind != TokenKind::Assign) {
-        for (std::size_t i = pos_; i < tokens_.size() && tokens_[i].kind != TokenKind::Assign; ++i) {
+    if (tokens_.peek().kind != TokenKind::Assign) {
+        for (std::size_t i = tokens_.position(); i < tokens_.size() && tokens_[i].kind != TokenKind::Assign; ++i) {
             if (tokens_[i].kind == TokenKind::RBracket) {
-                pos_ = i;
+                tokens_.moveTo(i);
                 std::string hint = hashBracketHint(hashToken, i);
                 findings_.fail(tokens_[i], hint.empty() ? message("parse_bracket_assigned")
                                              : message("parse_bracket_assigned_hint", {hint}));
             }
         }
-        findings_.fail(peek(), message("parse_expected_assign", {describeWords(peek())}));
+        findings_.fail(tokens_.peek(), message("parse_expected_assign", {tokens_.describeWords(tokens_.peek())}));
     }
-    next();
-    if (peek().kind == TokenKind::End || peek().kind == TokenKind::Comment) {
-        findings_.fail(peek(), message("parse_expected_assigned_value", {describeWords(peek())}));
+    tokens_.next();
+    if (tokens_.peek().kind == TokenKind::End || tokens_.peek().kind == TokenKind::Comment) {
+        findings_.fail(tokens_.peek(), message("parse_expected_assigned_value", {tokens_.describeWords(tokens_.peek())}));
     }
     a.value = parseExpression();
-    if (peek().kind == TokenKind::Comment) {
-        a.text = storage_.text.store(commentText(next(), line_));
+    if (tokens_.peek().kind == TokenKind::Comment) {
+        a.text = storage_.text.store(commentText(tokens_.next(), tokens_.line()));
         a.hasText = true;
     }
-    if (peek().kind == TokenKind::RBracket) {
-        failStrayBracket(peek(), "this assignment");
+    if (tokens_.peek().kind == TokenKind::RBracket) {
+        failStrayBracket(tokens_.peek(), "this assignment");
     }
     return a;
 }
 
 Word BlockParser::parseWord() {
-    const Token& letter = next();
+    const Token& letter = tokens_.next();
     Word w;
     w.letter = letter.letter;
     w.column = wordColumn(letter.column);
-    TokenKind k = peek().kind;
+    TokenKind k = tokens_.peek().kind;
     if (k != TokenKind::Number && k != TokenKind::Hash && k != TokenKind::LBracket && k != TokenKind::Minus &&
         k != TokenKind::Plus) {
-        findings_.fail(letter, message("parse_address_value", {std::string(1, letter.letter), describeWords(peek())}));
+        findings_.fail(letter, message("parse_address_value", {std::string(1, letter.letter), tokens_.describeWords(tokens_.peek())}));
     }
     auto arithmeticAhead = [this] {
-        TokenKind k = peek().kind;
+        TokenKind k = tokens_.peek().kind;
         return k == TokenKind::Plus || k == TokenKind::Minus || k == TokenKind::Star || k == TokenKind::Slash;
     };
-    const std::size_t valueStart = pos_;
+    const std::size_t valueStart = tokens_.position();
     if (!plainNumber(w)) {
         w.value = dialect_.unbracketedAddressValues ? parseAdditive() : parseUnary();
     } else if (dialect_.unbracketedAddressValues && arithmeticAhead()) {
-        pos_ = valueStart; // `Z10+#5`: the value runs up to the next address letter
+        tokens_.moveTo(valueStart); // `Z10+#5`: the value runs up to the next address letter
         w.value = parseAdditive();
     }
     if (arithmeticAhead()) {
-        findings_.fail(peek(), message("parse_address_arithmetic", {std::string(1, letter.letter)}));
+        findings_.fail(tokens_.peek(), message("parse_address_arithmetic", {std::string(1, letter.letter)}));
     }
     return w;
 }

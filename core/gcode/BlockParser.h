@@ -7,6 +7,7 @@
 #include "core/gcode/Expression.h"
 #include "core/gcode/Lexer.h"
 #include "core/gcode/LineFindings.h"
+#include "core/gcode/LineTokens.h"
 #include "core/gcode/PlainBlockParser.h"
 #include "core/gcode/Token.h"
 
@@ -59,7 +60,7 @@ public:
 
     // Whether the line just parsed, when it had an error, begins with an N or O number (a line a
     // jump or a call may reach).
-    bool lastLineLabelled() const;
+    bool lastLineLabelled() const { return tokens_.startsLabelled(); }
 
     // A `/* */` comment still open after the last line parsed, and where its `/*` is.
     bool commentOpen() const { return comment_.open; }
@@ -68,12 +69,6 @@ public:
 private:
     std::optional<Block> parseGeneral(std::string_view line, std::uint32_t lineNumber);
 
-    static constexpr int kLookahead = 2; // peek(1) and peek(2) are the farthest the grammar looks
-    const Token& peek(std::size_t ahead = 0) const;
-    const Token& next();
-    bool atKeyword(Keyword k) const;
-    // describe() as a message's argument: the words in both languages.
-    std::string describeWords(const Token& token) const;
 
     void parseStatement(Block& block);
     void parseIf(Block& block);
@@ -91,7 +86,6 @@ private:
     void parseModbusArguments(Block& block, const Token& keyword);
     void checkModbusTransfer(const Token& keyword, bool write, const std::vector<StatementItem>& arguments);
     std::uint32_t storeStatement(const std::vector<StatementItem>& items);
-    std::uint32_t columnAt(std::size_t offset) const;
 
     bool plainNumber(Word& word); // a signed number alone: kept in the word
     ExprId parseExpression();
@@ -119,8 +113,6 @@ private:
     void lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken);
     void lintNestedComments();
     std::optional<Block> brokenLoopBlock(Block block) const;
-    std::string describe(const Token& token) const;
-    std::string source(const Token& token) const;
 
     const Dialect& dialect_;
     BlockStorage& storage_;
@@ -128,14 +120,8 @@ private:
     LineFindings findings_;
     std::uint32_t fileIndex_;
 
-    std::string_view line_;
-    // columnAt's last answer: DPRNT asks for one column per item, left to right, so each call
-    // counts on from the last instead of from the line's start (a 100,000-item DPRNT was quadratic)
-    mutable std::size_t columnCacheOffset_ = 0;
-    mutable std::uint32_t columnCacheColumn_ = 1;
-    std::vector<Token> tokens_;
+    LineTokens tokens_;
     std::vector<Assignment> assignments_; // of the block being parsed, stored when it parses
-    std::size_t pos_ = 0;
     BlockCommentState comment_;
     SourceLocation commentStart_;
     int depth_ = 0; // nesting of brackets, signs and indirections in the current expression

@@ -95,7 +95,7 @@ void BlockParser::checkExponents() {
             continue;
         }
         const Token& end = tokens_[exponent];
-        std::string written(line_.substr(tokens_[i].offset, end.offset + end.length - tokens_[i].offset));
+        std::string written(tokens_.line().substr(tokens_[i].offset, end.offset + end.length - tokens_[i].offset));
         findings_.fail(tokens_[i], message("parse_exponent", {written}));
     }
 }
@@ -119,7 +119,7 @@ std::string bracketContext(std::string_view context) {
 } // namespace
 
 void BlockParser::failStrayBracket(const Token& at, const char* context) {
-    std::size_t stray = pos_;
+    std::size_t stray = tokens_.position();
     std::size_t open = 0;
     for (std::size_t i = 0; i + 1 < stray; ++i) {
         if (tokens_[i].kind == TokenKind::LBracket && tokens_[i + 1].kind == TokenKind::Hash) {
@@ -152,7 +152,7 @@ std::string BlockParser::hashBracketHint(std::size_t hashToken, std::size_t stra
     if (to <= from) {
         return {};
     }
-    return "#[" + std::string(line_.substr(from, to - from)) + "]";
+    return "#[" + std::string(tokens_.line().substr(from, to - from)) + "]";
 }
 
 // `X[#1330+#1300-1]` adds a pocket coordinate to a tool number: never what anyone means, and exactly
@@ -173,7 +173,7 @@ void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, 
         if (base.number == table.base) {
             std::uint32_t from = tokens_[firstToken].offset;
             std::uint32_t to = tokens_[endToken - 1].offset + tokens_[endToken - 1].length;
-            std::string written(line_.substr(from, to - from));
+            std::string written(tokens_.line().substr(from, to - from));
             std::string meant = written;
             if (auto at = meant.find("[#"); at != std::string::npos) {
                 meant.replace(at, 2, "#[");
@@ -192,12 +192,12 @@ void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, 
 // as words; said at the inner '(' so the alarm that follows makes sense.
 void BlockParser::lintNestedComments() {
     for (const Token& t : tokens_) {
-        if (t.kind != TokenKind::Comment || t.length < 2 || line_[t.offset] != '(') {
+        if (t.kind != TokenKind::Comment || t.length < 2 || tokens_.line()[t.offset] != '(') {
             continue;
         }
         std::uint32_t column = t.column + 1;
         for (std::uint32_t i = t.offset + 1; i + 1 < t.offset + t.length; ++i) {
-            const auto byte = static_cast<unsigned char>(line_[i]);
+            const auto byte = static_cast<unsigned char>(tokens_.line()[i]);
             if (byte == '(') {
                 findings_.note(column, message("lint_comment_nested"));
                 break;

@@ -7,17 +7,17 @@ namespace m350::gcode {
 
 // `X12.5` and `X-3`, most of any real program, without the precedence chain.
 bool BlockParser::plainNumber(Word& word) {
-    bool negative = peek().kind == TokenKind::Minus;
-    bool signed_ = negative || peek().kind == TokenKind::Plus;
-    const Token& number = peek(signed_ ? 1 : 0);
+    bool negative = tokens_.peek().kind == TokenKind::Minus;
+    bool signed_ = negative || tokens_.peek().kind == TokenKind::Plus;
+    const Token& number = tokens_.peek(signed_ ? 1 : 0);
     if (number.kind != TokenKind::Number) {
         return false;
     }
     word.number = negative ? -number.number : number.number;
     word.value = kNoExpr;
-    next();
+    tokens_.next();
     if (signed_) {
-        next();
+        tokens_.next();
     }
     return true;
 }
@@ -33,12 +33,12 @@ ExprId BlockParser::binary(BinaryOp op, ExprId lhs, ExprId rhs, std::uint32_t co
 }
 
 std::optional<BinaryOp> BlockParser::comparisonAhead() {
-    const Token& t = peek();
+    const Token& t = tokens_.peek();
     if (t.kind == TokenKind::Compare) {
         if (!dialect_.cStyleComparisons) {
             const char* word[] = {"EQ", "NE", "LT", "GT", "LE", "GE"};
             findings_.fail(t, message("parse_comparison_spelling",
-                            {source(t), std::string(dialect_.name),
+                            {tokens_.source(t), std::string(dialect_.name),
                              word[static_cast<int>(t.compare) - static_cast<int>(BinaryOp::Eq)]}));
         }
         return t.compare;
@@ -51,7 +51,7 @@ std::optional<BinaryOp> BlockParser::comparisonAhead() {
 }
 
 std::optional<BinaryOp> BlockParser::additiveAhead() {
-    const Token& t = peek();
+    const Token& t = tokens_.peek();
     if (t.kind == TokenKind::Plus) {
         return BinaryOp::Add;
     }
@@ -69,7 +69,7 @@ std::optional<BinaryOp> BlockParser::additiveAhead() {
 }
 
 std::optional<BinaryOp> BlockParser::termAhead() {
-    const Token& t = peek();
+    const Token& t = tokens_.peek();
     if (t.kind == TokenKind::Star) {
         return BinaryOp::Mul;
     }
@@ -89,7 +89,7 @@ std::optional<BinaryOp> BlockParser::termAhead() {
 ExprId BlockParser::parseExpression() {
     ExprId lhs = parseAdditive();
     while (auto op = comparisonAhead()) {
-        std::uint32_t column = next().column;
+        std::uint32_t column = tokens_.next().column;
         lhs = binary(*op, lhs, parseAdditive(), column);
     }
     return lhs;
@@ -98,7 +98,7 @@ ExprId BlockParser::parseExpression() {
 ExprId BlockParser::parseAdditive() {
     ExprId lhs = parseTerm();
     while (auto op = additiveAhead()) {
-        std::uint32_t column = next().column;
+        std::uint32_t column = tokens_.next().column;
         lhs = binary(*op, lhs, parseTerm(), column);
     }
     return lhs;
@@ -107,7 +107,7 @@ ExprId BlockParser::parseAdditive() {
 ExprId BlockParser::parseTerm() {
     ExprId lhs = parseUnary();
     while (auto op = termAhead()) {
-        std::uint32_t column = next().column;
+        std::uint32_t column = tokens_.next().column;
         lhs = binary(*op, lhs, parseUnary(), column);
     }
     return lhs;
@@ -123,9 +123,9 @@ BlockParser::Nesting BlockParser::enterNesting(const Token& at) {
 }
 
 ExprId BlockParser::parseUnary() {
-    Nesting nesting = enterNesting(peek());
-    if (peek().kind == TokenKind::Minus || peek().kind == TokenKind::Plus) {
-        const Token& sign = next();
+    Nesting nesting = enterNesting(tokens_.peek());
+    if (tokens_.peek().kind == TokenKind::Minus || tokens_.peek().kind == TokenKind::Plus) {
+        const Token& sign = tokens_.next();
         ExprId operand = parseUnary();
         if (pool_[operand].kind == ExprKind::Number) {
             if (sign.kind == TokenKind::Plus) {
@@ -147,10 +147,10 @@ ExprId BlockParser::parseUnary() {
 }
 
 ExprId BlockParser::parsePrimary() {
-    const Token& t = peek();
+    const Token& t = tokens_.peek();
     switch (t.kind) {
     case TokenKind::Number: {
-        next();
+        tokens_.next();
         ExprNode n;
         n.kind = ExprKind::Number;
         n.number = t.number;
@@ -167,30 +167,30 @@ ExprId BlockParser::parsePrimary() {
     case TokenKind::RBracket: failStrayBracket(t, "this expression");
     default: break;
     }
-    findings_.fail(t, message("parse_expected_value", {describeWords(t)}));
+    findings_.fail(t, message("parse_expected_value", {tokens_.describeWords(t)}));
 }
 
 ExprId BlockParser::parseBracketed() {
-    const Token& open = next();
+    const Token& open = tokens_.next();
     ExprId inner = parseExpression();
-    if (peek().kind != TokenKind::RBracket) {
-        findings_.fail(peek(), message("parse_missing_bracket", {std::to_string(open.column), describeWords(peek())}));
+    if (tokens_.peek().kind != TokenKind::RBracket) {
+        findings_.fail(tokens_.peek(), message("parse_missing_bracket", {std::to_string(open.column), tokens_.describeWords(tokens_.peek())}));
     }
-    next();
+    tokens_.next();
     return inner;
 }
 
 ExprId BlockParser::parseVariable() {
-    Nesting nesting = enterNesting(peek());
-    const Token& hash = next();
+    Nesting nesting = enterNesting(tokens_.peek());
+    const Token& hash = tokens_.next();
     ExprNode n;
     n.kind = ExprKind::Variable;
     n.column = hash.column;
-    const Token& t = peek();
+    const Token& t = tokens_.peek();
     if (t.kind == TokenKind::Number) {
-        next();
+        tokens_.next();
         if (t.number != std::floor(t.number)) {
-            findings_.fail(t, message("parse_variable_whole", {source(t)}));
+            findings_.fail(t, message("parse_variable_whole", {tokens_.source(t)}));
         }
         n.number = t.number;
     } else if (t.kind == TokenKind::LBracket) {
@@ -198,45 +198,45 @@ ExprId BlockParser::parseVariable() {
     } else if (t.kind == TokenKind::Hash) {
         n.lhs = parseVariable();
     } else {
-        findings_.fail(t, message("parse_hash_value", {describeWords(t)}));
+        findings_.fail(t, message("parse_hash_value", {tokens_.describeWords(t)}));
     }
     return pool_.add(n);
 }
 
 ExprId BlockParser::parseFunction() {
-    const Token& name = next();
+    const Token& name = tokens_.next();
     Function f = functionOf(name.keyword);
     bool extended = f == Function::Asin || f == Function::Acos || f == Function::Ln || f == Function::Exp ||
                     f == Function::Bin || f == Function::Bcd;
     if (extended && !dialect_.extendedFunctions) {
         findings_.fail(name, message("parse_no_function", {std::string(keywordSpelling(name.keyword)), std::string(dialect_.name)}));
     }
-    if (peek().kind != TokenKind::LBracket) {
-        findings_.fail(peek(), message("parse_function_argument", {std::string(keywordSpelling(name.keyword))}));
+    if (tokens_.peek().kind != TokenKind::LBracket) {
+        findings_.fail(tokens_.peek(), message("parse_function_argument", {std::string(keywordSpelling(name.keyword))}));
     }
     ExprNode n;
     n.kind = ExprKind::Function;
     n.op = static_cast<std::uint8_t>(f);
     n.column = name.column;
-    const Token& open = next();
+    const Token& open = tokens_.next();
     n.lhs = parseExpression();
-    if (peek().kind == TokenKind::Comma && f == Function::Atan && dialect_.atanComma) {
-        next();
+    if (tokens_.peek().kind == TokenKind::Comma && f == Function::Atan && dialect_.atanComma) {
+        tokens_.next();
         n.rhs = parseExpression();
     }
-    if (peek().kind != TokenKind::RBracket) {
-        findings_.fail(peek(), message("parse_missing_bracket_of", {std::string(keywordSpelling(name.keyword)),
-                                                          std::to_string(open.column), describeWords(peek())}));
+    if (tokens_.peek().kind != TokenKind::RBracket) {
+        findings_.fail(tokens_.peek(), message("parse_missing_bracket_of", {std::string(keywordSpelling(name.keyword)),
+                                                          std::to_string(open.column), tokens_.describeWords(tokens_.peek())}));
     }
-    next();
+    tokens_.next();
     // ATAN[a]/[b] where the dialect has it; otherwise ATAN[x] has one argument (the evaluator
     // answers it as ATAN[x]/[1])
-    if (f == Function::Atan && n.rhs == kNoExpr && peek().kind == TokenKind::Slash &&
-        peek(1).kind == TokenKind::LBracket) {
+    if (f == Function::Atan && n.rhs == kNoExpr && tokens_.peek().kind == TokenKind::Slash &&
+        tokens_.peek(1).kind == TokenKind::LBracket) {
         if (!dialect_.atanSlash) {
-            findings_.fail(peek(), message("parse_atan_slash", {std::string(dialect_.name)}));
+            findings_.fail(tokens_.peek(), message("parse_atan_slash", {std::string(dialect_.name)}));
         }
-        next();
+        tokens_.next();
         n.rhs = parseBracketed();
     }
     return pool_.add(n);

@@ -29,20 +29,6 @@ constexpr int kMaxPrintDigits = 8; // FANUC: c + d <= 8
 
 } // namespace
 
-// Columns count characters: comments before the statement may hold multi-byte ones.
-std::uint32_t BlockParser::columnAt(std::size_t offset) const {
-    offset = std::min(offset, line_.size());
-    if (offset < columnCacheOffset_) {
-        columnCacheOffset_ = 0;
-        columnCacheColumn_ = 1;
-    }
-    for (std::size_t i = columnCacheOffset_; i < offset; ++i) {
-        columnCacheColumn_ += (static_cast<unsigned char>(line_[i]) & 0xC0) != 0x80 ? 1 : 0;
-    }
-    columnCacheOffset_ = offset;
-    return columnCacheColumn_;
-}
-
 std::uint32_t BlockParser::storeStatement(const std::vector<StatementItem>& items) {
     storage_.statements.push_back(storage_.statementItems.copy(items));
     return static_cast<std::uint32_t>(storage_.statements.size() - 1);
@@ -61,11 +47,11 @@ void BlockParser::parseDeviceStatement(Block& block, const Token& keyword) {
     case Keyword::Popen:
     case Keyword::Pclos:
         block.control = keyword.keyword == Keyword::Popen ? Control::Popen : Control::Pclos;
-        while (peek().kind == TokenKind::Comment) {
-            next();
+        while (tokens_.peek().kind == TokenKind::Comment) {
+            tokens_.next();
         }
-        if (peek().kind != TokenKind::End) {
-            findings_.fail(peek(), message("parse_after_alone", {describeWords(peek()), name}));
+        if (tokens_.peek().kind != TokenKind::End) {
+            findings_.fail(tokens_.peek(), message("parse_after_alone", {tokens_.describeWords(tokens_.peek()), name}));
         }
         return;
     case Keyword::Dprnt:
@@ -81,16 +67,16 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
     const std::string name = binary ? "BPRNT" : "DPRNT";
     const std::string formatHint = binary ? bilingual("#100[3] (3 decimals)", "#100[3]（3位小数）")
                                           : bilingual("#100[53] (5 integer digits, 3 decimals)", "#100[53]（5位整数，3位小数）");
-    const std::size_t size = line_.size();
+    const std::size_t size = tokens_.line().size();
     std::size_t i = keyword.offset + keyword.length;
-    auto failAt = [&](std::size_t offset, const Message& words) { findings_.fail(columnAt(offset), words); };
+    auto failAt = [&](std::size_t offset, const Message& words) { findings_.fail(tokens_.columnAt(offset), words); };
     auto skipBlanks = [&] {
-        while (i < size && isBlank(line_[i])) {
+        while (i < size && isBlank(tokens_.line()[i])) {
             ++i;
         }
     };
     skipBlanks();
-    if (i >= size || line_[i] != '[') {
+    if (i >= size || tokens_.line()[i] != '[') {
         failAt(i, message("print_needs_brackets", {name, binary ? "#100[3]" : "#100[53]"}));
     }
     const std::size_t open = i++;
@@ -99,16 +85,16 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
     std::size_t textStart = 0;
     auto flushText = [&] {
         if (!text.empty()) {
-            items.push_back({storage_.text.store(text), kNoExpr, 0, 0, columnAt(textStart)});
+            items.push_back({storage_.text.store(text), kNoExpr, 0, 0, tokens_.columnAt(textStart)});
             text.clear();
         }
     };
     while (true) {
         skipBlanks();
         if (i >= size) {
-            failAt(i, message("print_missing_bracket", {name, std::to_string(columnAt(open))}));
+            failAt(i, message("print_missing_bracket", {name, std::to_string(tokens_.columnAt(open))}));
         }
-        const char c = line_[i];
+        const char c = tokens_.line()[i];
         if (c == ']') {
             ++i;
             break;
@@ -119,9 +105,9 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
             skipBlanks();
             int number = 0;
             std::size_t digits = 0;
-            while (i < size && (isDigit(line_[i]) || (digits > 0 && isBlank(line_[i])))) {
-                if (isDigit(line_[i])) {
-                    number = number * 10 + (line_[i] - '0');
+            while (i < size && (isDigit(tokens_.line()[i]) || (digits > 0 && isBlank(tokens_.line()[i])))) {
+                if (isDigit(tokens_.line()[i])) {
+                    number = number * 10 + (tokens_.line()[i] - '0');
                     if (++digits > 5) {
                         failAt(hash, message("print_variable_digits", {name}));
                     }
@@ -131,7 +117,7 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
             if (digits == 0) {
                 failAt(i, message("print_hash_digits", {name, formatHint}));
             }
-            if (i >= size || line_[i] != '[') {
+            if (i >= size || tokens_.line()[i] != '[') {
                 failAt(i, message("print_format_brackets", {std::to_string(number), formatHint}));
             }
             const std::size_t formatOpen = i++;
@@ -139,14 +125,14 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
             const int wanted = binary ? 1 : 2;
             for (int k = 0; k < wanted; ++k) {
                 skipBlanks();
-                if (i >= size || !isDigit(line_[i])) {
+                if (i >= size || !isDigit(tokens_.line()[i])) {
                     failAt(i, message(binary ? "print_format_bprnt" : "print_format_dprnt", {std::to_string(number)}));
                 }
-                format[k] = line_[i++] - '0';
+                format[k] = tokens_.line()[i++] - '0';
             }
             skipBlanks();
-            if (i >= size || line_[i] != ']') {
-                failAt(i, message("print_format_missing_bracket", {std::to_string(number), std::to_string(columnAt(formatOpen))}));
+            if (i >= size || tokens_.line()[i] != ']') {
+                failAt(i, message("print_format_missing_bracket", {std::to_string(number), std::to_string(tokens_.columnAt(formatOpen))}));
             }
             ++i;
             const int integerDigits = binary ? 0 : format[0];
@@ -159,17 +145,17 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
             ExprNode variable;
             variable.kind = ExprKind::Variable;
             variable.number = number;
-            variable.column = columnAt(hash);
+            variable.column = tokens_.columnAt(hash);
             items.push_back({{}, pool_.add(variable), static_cast<std::uint8_t>(integerDigits),
-                             static_cast<std::uint8_t>(fractionDigits), columnAt(hash)});
+                             static_cast<std::uint8_t>(fractionDigits), tokens_.columnAt(hash)});
             continue;
         }
         if (!isPrintText(c)) {
             std::size_t end = i + 1;
-            while (end < size && (static_cast<unsigned char>(line_[end]) & 0xC0) == 0x80) {
+            while (end < size && (static_cast<unsigned char>(tokens_.line()[end]) & 0xC0) == 0x80) {
                 ++end;
             }
-            failAt(i, message("print_text_character", {name, std::string(line_.substr(i, end - i))}));
+            failAt(i, message("print_text_character", {name, std::string(tokens_.line().substr(i, end - i))}));
         }
         if (text.empty()) {
             textStart = i;
@@ -179,19 +165,19 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
     }
     flushText();
     skipBlanks();
-    if (i < size && line_[i] == '(') {
-        const std::size_t close = line_.find(')', i);
+    if (i < size && tokens_.line()[i] == '(') {
+        const std::size_t close = tokens_.line().find(')', i);
         if (close == std::string_view::npos) {
             failAt(i, message("lex_unclosed_comment"));
         }
         if (block.comment.empty()) {
-            block.comment = storage_.text.store(line_.substr(i + 1, close - i - 1));
+            block.comment = storage_.text.store(tokens_.line().substr(i + 1, close - i - 1));
         }
         i = close + 1;
         skipBlanks();
     }
-    if (i < size && line_[i] != ';') {
-        failAt(i, message("print_after", {std::string(1, line_[i]), name}));
+    if (i < size && tokens_.line()[i] != ';') {
+        failAt(i, message("print_after", {std::string(1, tokens_.line()[i]), name}));
     }
     block.control = binary ? Control::Bprnt : Control::Dprnt;
     block.statement = storeStatement(items);
@@ -205,31 +191,31 @@ void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
     const std::string name = keywordSpelling(keyword.keyword);
     const bool transfer = keyword.keyword == Keyword::MSetData || keyword.keyword == Keyword::MGetData;
     const bool write = keyword.keyword == Keyword::MSetData;
-    if (peek().kind != TokenKind::LBracket) {
-        findings_.fail(peek(), !transfer ? message("modbus_needs_brackets", {name, describeWords(peek())})
-                     : message(write ? "msetdata_needs_brackets" : "mgetdata_needs_brackets", {describeWords(peek())}));
+    if (tokens_.peek().kind != TokenKind::LBracket) {
+        findings_.fail(tokens_.peek(), !transfer ? message("modbus_needs_brackets", {name, tokens_.describeWords(tokens_.peek())})
+                     : message(write ? "msetdata_needs_brackets" : "mgetdata_needs_brackets", {tokens_.describeWords(tokens_.peek())}));
     }
-    const Token& open = next();
+    const Token& open = tokens_.next();
     std::vector<StatementItem> arguments;
     while (true) {
         StatementItem argument;
-        argument.column = peek().column;
+        argument.column = tokens_.peek().column;
         argument.value = parseExpression();
         arguments.push_back(argument);
-        if (peek().kind != TokenKind::Comma) {
+        if (tokens_.peek().kind != TokenKind::Comma) {
             break;
         }
-        next();
+        tokens_.next();
     }
-    if (peek().kind != TokenKind::RBracket) {
-        findings_.fail(peek(), message("parse_missing_bracket_of", {name, std::to_string(open.column), describeWords(peek())}));
+    if (tokens_.peek().kind != TokenKind::RBracket) {
+        findings_.fail(tokens_.peek(), message("parse_missing_bracket_of", {name, std::to_string(open.column), tokens_.describeWords(tokens_.peek())}));
     }
-    next();
-    while (peek().kind == TokenKind::Comment) {
-        next();
+    tokens_.next();
+    while (tokens_.peek().kind == TokenKind::Comment) {
+        tokens_.next();
     }
-    if (peek().kind != TokenKind::End) {
-        findings_.fail(peek(), message("parse_after_statement", {describeWords(peek()), name}));
+    if (tokens_.peek().kind != TokenKind::End) {
+        findings_.fail(tokens_.peek(), message("parse_after_statement", {tokens_.describeWords(tokens_.peek()), name}));
     }
     if (transfer) {
         checkModbusTransfer(keyword, write, arguments);
