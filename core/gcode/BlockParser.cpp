@@ -4,6 +4,7 @@
 
 #include "core/gcode/Lexer.h"
 #include "core/gcode/PlainBlockParser.h"
+#include "core/gcode/StrayBracket.h"
 
 #include <cmath>
 #include <memory>
@@ -13,7 +14,7 @@ namespace m350::gcode {
 BlockParser::BlockParser(const Dialect& dialect, BlockStorage& storage, std::vector<Diagnostic>& diagnostics,
                          std::string fileName, std::uint32_t fileIndex)
     : dialect_(dialect), storage_(storage), pool_(storage.expressions), findings_(diagnostics, std::move(fileName)),
-      fileIndex_(fileIndex) {}
+      fileIndex_(fileIndex), expressions_(dialect, storage.expressions, tokens_, findings_) {}
 
 bool BlockParser::parse(std::string_view line, std::uint32_t lineNumber, Block& out, LineEnd lineEnd) {
     if (plainPath_ && !comment_.open) {
@@ -59,7 +60,7 @@ std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint3
     if (comment_.openedOnThisLine) {
         commentStart_ = {fileIndex_, lineNumber, comment_.column};
     }
-    depth_ = 0;
+    expressions_.startLine();
     assignments_.clear();
     lintNestedComments();
     Block block;
@@ -180,13 +181,13 @@ ExprId BlockParser::parseCondition(const char* statement) {
     if (!dialect_.unbracketedConditions && tokens_.peek().kind != TokenKind::LBracket) {
         findings_.fail(tokens_.peek(), message("parse_condition_brackets", {statement}));
     }
-    return parseExpression();
+    return expressions_.parseExpression();
 }
 
 void BlockParser::parseIf(Block& block) {
     block.condition = parseCondition("IF");
     if (tokens_.peek().kind == TokenKind::RBracket) {
-        failStrayBracket(tokens_.peek(), "IF condition");
+        failStrayBracket(tokens_, findings_, tokens_.peek(), "IF condition");
     }
     if (tokens_.atKeyword(Keyword::Goto)) {
         tokens_.next();
@@ -214,7 +215,7 @@ void BlockParser::parseWhile(Block& block) {
     block.control = Control::While;
     block.condition = parseCondition("WHILE");
     if (tokens_.peek().kind == TokenKind::RBracket) {
-        failStrayBracket(tokens_.peek(), "WHILE condition");
+        failStrayBracket(tokens_, findings_, tokens_.peek(), "WHILE condition");
     }
     if (!tokens_.atKeyword(Keyword::Do)) {
         findings_.fail(tokens_.peek(), message("parse_while_do", {tokens_.describeWords(tokens_.peek())}));
@@ -243,7 +244,7 @@ std::int32_t BlockParser::labelNumber(const Token& number, const char* what) {
 
 ExprId BlockParser::parseGotoTarget() {
     const Token& first = tokens_.peek();
-    ExprId target = parseUnary();
+    ExprId target = expressions_.parseUnary();
     const ExprNode& value = pool_[target];
     if (value.kind == ExprKind::Number && (value.number < 0 || value.number > kMaxLabel)) {
         const Token& last = tokens_[tokens_.position() - 1];
@@ -290,7 +291,7 @@ void BlockParser::parseItems(Block& block) {
             block.words = room.first(count);
             break;
         }
-        case TokenKind::RBracket: failStrayBracket(t, "this block");
+        case TokenKind::RBracket: failStrayBracket(tokens_, findings_, t, "this block");
         case TokenKind::Keyword:
             findings_.fail(t, message("parse_keyword_first", {std::string(keywordSpelling(t.keyword))}));
         default: findings_.fail(t, message("parse_expected_word", {tokens_.describeWords(t)}));
@@ -302,12 +303,12 @@ Assignment BlockParser::parseAssignment() {
     Assignment a;
     a.column = tokens_.peek().column;
     std::size_t hashToken = tokens_.position();
-    a.index = parseVariable();
+    a.index = expressions_.parseVariable();
     if (tokens_.peek().kind != TokenKind::Assign) {
         for (std::size_t i = tokens_.position(); i < tokens_.size() && tokens_[i].kind != TokenKind::Assign; ++i) {
             if (tokens_[i].kind == TokenKind::RBracket) {
                 tokens_.moveTo(i);
-                std::string hint = hashBracketHint(hashToken, i);
+                std::string hint = hashBracketHint(tokens_, hashToken, i);
                 findings_.fail(tokens_[i], hint.empty() ? message("parse_bracket_assigned")
                                              : message("parse_bracket_assigned_hint", {hint}));
             }
@@ -318,13 +319,13 @@ Assignment BlockParser::parseAssignment() {
     if (tokens_.peek().kind == TokenKind::End || tokens_.peek().kind == TokenKind::Comment) {
         findings_.fail(tokens_.peek(), message("parse_expected_assigned_value", {tokens_.describeWords(tokens_.peek())}));
     }
-    a.value = parseExpression();
+    a.value = expressions_.parseExpression();
     if (tokens_.peek().kind == TokenKind::Comment) {
         a.text = storage_.text.store(commentText(tokens_.next(), tokens_.line()));
         a.hasText = true;
     }
     if (tokens_.peek().kind == TokenKind::RBracket) {
-        failStrayBracket(tokens_.peek(), "this assignment");
+        failStrayBracket(tokens_, findings_, tokens_.peek(), "this assignment");
     }
     return a;
 }
@@ -344,11 +345,11 @@ Word BlockParser::parseWord() {
         return k == TokenKind::Plus || k == TokenKind::Minus || k == TokenKind::Star || k == TokenKind::Slash;
     };
     const std::size_t valueStart = tokens_.position();
-    if (!plainNumber(w)) {
-        w.value = dialect_.unbracketedAddressValues ? parseAdditive() : parseUnary();
+    if (!expressions_.plainNumber(w)) {
+        w.value = dialect_.unbracketedAddressValues ? expressions_.parseAdditive() : expressions_.parseUnary();
     } else if (dialect_.unbracketedAddressValues && arithmeticAhead()) {
         tokens_.moveTo(valueStart); // `Z10+#5`: the value runs up to the next address letter
-        w.value = parseAdditive();
+        w.value = expressions_.parseAdditive();
     }
     if (arithmeticAhead()) {
         findings_.fail(tokens_.peek(), message("parse_address_arithmetic", {std::string(1, letter.letter)}));

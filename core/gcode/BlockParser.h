@@ -5,6 +5,7 @@
 #include "core/gcode/Dialect.h"
 #include "core/gcode/Diagnostic.h"
 #include "core/gcode/Expression.h"
+#include "core/gcode/ExpressionParser.h"
 #include "core/gcode/Lexer.h"
 #include "core/gcode/LineFindings.h"
 #include "core/gcode/LineTokens.h"
@@ -18,13 +19,8 @@
 
 namespace m350::gcode {
 
-// Parses the tokens of one line into a Block. One method per precedence level:
-//   comparison  (== != < > <= >= EQ NE LT GT LE GE)
-//   additive    (+ - OR XOR)
-//   term        (* / AND MOD)
-//   unary       (- +)
-//   primary     (number, #var, #[expr], [expr], FUNC[...])
-// On the first error the line is abandoned (recovery is per block), so `check` still reports the
+// Parses the tokens of one line into a Block: labels, statements, assignments and words, their
+// expressions read by an ExpressionParser. On the first error the line is abandoned (recovery is per block), so `check` still reports the
 // errors of every other line.
 class BlockParser {
 public:
@@ -87,29 +83,7 @@ private:
     void checkModbusTransfer(const Token& keyword, bool write, const std::vector<StatementItem>& arguments);
     std::uint32_t storeStatement(const std::vector<StatementItem>& items);
 
-    bool plainNumber(Word& word); // a signed number alone: kept in the word
-    ExprId parseExpression();
-    ExprId parseAdditive();
-    ExprId parseTerm();
-    ExprId parseUnary();
-    ExprId parsePrimary();
-    ExprId parseVariable();
-    ExprId parseFunction();
-    ExprId parseBracketed();
-    ExprId binary(BinaryOp op, ExprId lhs, ExprId rhs, std::uint32_t column);
-    struct Nesting {
-        int& depth;
-        ~Nesting() { --depth; }
-    };
-    [[nodiscard]] Nesting enterNesting(const Token& at);
-
-    std::optional<BinaryOp> comparisonAhead();
-    std::optional<BinaryOp> additiveAhead();
-    std::optional<BinaryOp> termAhead();
-
-    [[noreturn]] void failStrayBracket(const Token& at, const char* context);
     void checkExponents();
-    std::string hashBracketHint(std::size_t fromToken, std::size_t toToken) const;
     void lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken);
     void lintNestedComments();
     std::optional<Block> brokenLoopBlock(Block block) const;
@@ -121,10 +95,10 @@ private:
     std::uint32_t fileIndex_;
 
     LineTokens tokens_;
+    ExpressionParser expressions_; // over tokens_ and findings_
     std::vector<Assignment> assignments_; // of the block being parsed, stored when it parses
     BlockCommentState comment_;
     SourceLocation commentStart_;
-    int depth_ = 0; // nesting of brackets, signs and indirections in the current expression
     bool plainPath_ = true;
 };
 

@@ -100,61 +100,6 @@ void BlockParser::checkExponents() {
     }
 }
 
-namespace {
-
-// Where a stray ']' stands, in both languages (failStrayBracket's context).
-std::string bracketContext(std::string_view context) {
-    static const std::pair<std::string_view, std::string_view> words[] = {
-        {"IF condition", "IF条件"},        {"WHILE condition", "WHILE条件"}, {"this block", "本程序段"},
-        {"this assignment", "本赋值语句"}, {"this expression", "本表达式"},
-    };
-    for (const auto& [english, chinese] : words) {
-        if (english == context) {
-            return bilingual(english, chinese);
-        }
-    }
-    return std::string(context);
-}
-
-} // namespace
-
-void BlockParser::failStrayBracket(const Token& at, const char* context) {
-    std::size_t stray = tokens_.position();
-    std::size_t open = 0;
-    for (std::size_t i = 0; i + 1 < stray; ++i) {
-        if (tokens_[i].kind == TokenKind::LBracket && tokens_[i + 1].kind == TokenKind::Hash) {
-            open = i + 1;
-            break;
-        }
-        if (tokens_[i].kind == TokenKind::Hash && tokens_[i + 1].kind == TokenKind::Number) {
-            open = i;
-            break;
-        }
-    }
-    std::string hint = hashBracketHint(open, stray);
-    const std::string where = bracketContext(context);
-    findings_.fail(at, hint.empty() ? message("parse_bracket", {where}) : message("parse_bracket_hint", {where, hint}));
-}
-
-// For `#1552+#20-1]` or `[#1520+#13-1] NE 0]`: the indirect reference the author most likely meant,
-// `#[1552+#20-1]`, built from the text between the '#' and the first ']' after it.
-std::string BlockParser::hashBracketHint(std::size_t hashToken, std::size_t strayToken) const {
-    if (hashToken + 1 >= tokens_.size() || tokens_[hashToken].kind != TokenKind::Hash ||
-        tokens_[hashToken + 1].kind == TokenKind::LBracket) {
-        return {}; // no hint when the reference is already written #[...]
-    }
-    std::size_t close = hashToken;
-    while (close < strayToken && tokens_[close].kind != TokenKind::RBracket) {
-        ++close;
-    }
-    std::uint32_t from = tokens_[hashToken].offset + 1;
-    std::uint32_t to = tokens_[close].offset;
-    if (to <= from) {
-        return {};
-    }
-    return "#[" + std::string(tokens_.line().substr(from, to - from)) + "]";
-}
-
 // `X[#1330+#1300-1]` adds a pocket coordinate to a tool number: never what anyone means, and exactly
 // what the M350 manual's damaged listing reads. The author wanted `X#[1330+#1300-1]`.
 void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken) {

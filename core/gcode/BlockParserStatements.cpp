@@ -200,7 +200,7 @@ void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
     while (true) {
         StatementItem argument;
         argument.column = tokens_.peek().column;
-        argument.value = parseExpression();
+        argument.value = expressions_.parseExpression();
         arguments.push_back(argument);
         if (tokens_.peek().kind != TokenKind::Comma) {
             break;

@@ -1,12 +1,13 @@
-// BlockParser: expressions, one method per precedence level (see BlockParser.h).
-#include "core/gcode/BlockParser.h"
+#include "core/gcode/ExpressionParser.h"
+
+#include "core/gcode/StrayBracket.h"
 
 #include <cmath>
 
 namespace m350::gcode {
 
 // `X12.5` and `X-3`, most of any real program, without the precedence chain.
-bool BlockParser::plainNumber(Word& word) {
+bool ExpressionParser::plainNumber(Word& word) {
     bool negative = tokens_.peek().kind == TokenKind::Minus;
     bool signed_ = negative || tokens_.peek().kind == TokenKind::Plus;
     const Token& number = tokens_.peek(signed_ ? 1 : 0);
@@ -22,7 +23,7 @@ bool BlockParser::plainNumber(Word& word) {
     return true;
 }
 
-ExprId BlockParser::binary(BinaryOp op, ExprId lhs, ExprId rhs, std::uint32_t column) {
+ExprId ExpressionParser::binary(BinaryOp op, ExprId lhs, ExprId rhs, std::uint32_t column) {
     ExprNode n;
     n.kind = ExprKind::Binary;
     n.op = static_cast<std::uint8_t>(op);
@@ -32,7 +33,7 @@ ExprId BlockParser::binary(BinaryOp op, ExprId lhs, ExprId rhs, std::uint32_t co
     return pool_.add(n);
 }
 
-std::optional<BinaryOp> BlockParser::comparisonAhead() {
+std::optional<BinaryOp> ExpressionParser::comparisonAhead() {
     const Token& t = tokens_.peek();
     if (t.kind == TokenKind::Compare) {
         if (!dialect_.cStyleComparisons) {
@@ -50,71 +51,64 @@ std::optional<BinaryOp> BlockParser::comparisonAhead() {
     return std::nullopt;
 }
 
-std::optional<BinaryOp> BlockParser::additiveAhead() {
+// The operator of one precedence level at the cursor: two symbols and two keywords (the FANUC
+// bitwise ones, which a dialect without them refuses by name).
+struct ExpressionParser::Level {
+    TokenKind symbols[2];
+    BinaryOp symbolOps[2];
+    Keyword keywords[2];
+    BinaryOp keywordOps[2];
+    const char* refusals[2]; // message ids
+};
+
+std::optional<BinaryOp> ExpressionParser::operatorAhead(const Level& level) {
     const Token& t = tokens_.peek();
-    if (t.kind == TokenKind::Plus) {
-        return BinaryOp::Add;
-    }
-    if (t.kind == TokenKind::Minus) {
-        return BinaryOp::Sub;
-    }
-    if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::Or || t.keyword == Keyword::Xor)) {
-        if (!dialect_.bitwiseKeywords) {
-            findings_.fail(t, message(t.keyword == Keyword::Or ? "parse_no_or" : "parse_no_xor",
-                            {std::string(keywordSpelling(t.keyword)), std::string(dialect_.name)}));
+    for (int i = 0; i < 2; ++i) {
+        if (t.kind == level.symbols[i]) {
+            return level.symbolOps[i];
         }
-        return t.keyword == Keyword::Or ? BinaryOp::Or : BinaryOp::Xor;
+    }
+    for (int i = 0; i < 2; ++i) {
+        if (t.kind == TokenKind::Keyword && t.keyword == level.keywords[i]) {
+            if (!dialect_.bitwiseKeywords) {
+                findings_.fail(t, message(level.refusals[i], {std::string(keywordSpelling(t.keyword)), std::string(dialect_.name)}));
+            }
+            return level.keywordOps[i];
+        }
     }
     return std::nullopt;
 }
 
-std::optional<BinaryOp> BlockParser::termAhead() {
-    const Token& t = tokens_.peek();
-    if (t.kind == TokenKind::Star) {
-        return BinaryOp::Mul;
-    }
-    if (t.kind == TokenKind::Slash) {
-        return BinaryOp::Div;
-    }
-    if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::And || t.keyword == Keyword::Mod)) {
-        if (!dialect_.bitwiseKeywords) {
-            findings_.fail(t, message(t.keyword == Keyword::And ? "parse_no_and" : "parse_no_mod",
-                            {std::string(keywordSpelling(t.keyword)), std::string(dialect_.name)}));
-        }
-        return t.keyword == Keyword::And ? BinaryOp::And : BinaryOp::Mod;
-    }
-    return std::nullopt;
+std::optional<BinaryOp> ExpressionParser::additiveAhead() {
+    static constexpr Level kAdditive{{TokenKind::Plus, TokenKind::Minus}, {BinaryOp::Add, BinaryOp::Sub},
+                                     {Keyword::Or, Keyword::Xor}, {BinaryOp::Or, BinaryOp::Xor},
+                                     {"parse_no_or", "parse_no_xor"}};
+    return operatorAhead(kAdditive);
 }
 
-ExprId BlockParser::parseExpression() {
-    ExprId lhs = parseAdditive();
-    while (auto op = comparisonAhead()) {
-        std::uint32_t column = tokens_.next().column;
-        lhs = binary(*op, lhs, parseAdditive(), column);
+std::optional<BinaryOp> ExpressionParser::termAhead() {
+    static constexpr Level kTerm{{TokenKind::Star, TokenKind::Slash}, {BinaryOp::Mul, BinaryOp::Div},
+                                 {Keyword::And, Keyword::Mod}, {BinaryOp::And, BinaryOp::Mod},
+                                 {"parse_no_and", "parse_no_mod"}};
+    return operatorAhead(kTerm);
+}
+
+// One precedence level: operands of the next level, joined left to right by this level's operators.
+ExprId ExpressionParser::leftToRight(ExprId (ExpressionParser::*operand)(), std::optional<BinaryOp> (ExpressionParser::*ahead)()) {
+    ExprId lhs = (this->*operand)();
+    while (auto op = (this->*ahead)()) {
+        const std::uint32_t column = tokens_.next().column;
+        lhs = binary(*op, lhs, (this->*operand)(), column);
     }
     return lhs;
 }
 
-ExprId BlockParser::parseAdditive() {
-    ExprId lhs = parseTerm();
-    while (auto op = additiveAhead()) {
-        std::uint32_t column = tokens_.next().column;
-        lhs = binary(*op, lhs, parseTerm(), column);
-    }
-    return lhs;
-}
-
-ExprId BlockParser::parseTerm() {
-    ExprId lhs = parseUnary();
-    while (auto op = termAhead()) {
-        std::uint32_t column = tokens_.next().column;
-        lhs = binary(*op, lhs, parseUnary(), column);
-    }
-    return lhs;
-}
+ExprId ExpressionParser::parseExpression() { return leftToRight(&ExpressionParser::parseAdditive, &ExpressionParser::comparisonAhead); }
+ExprId ExpressionParser::parseAdditive() { return leftToRight(&ExpressionParser::parseTerm, &ExpressionParser::additiveAhead); }
+ExprId ExpressionParser::parseTerm() { return leftToRight(&ExpressionParser::parseUnary, &ExpressionParser::termAhead); }
 
 // Deeper nesting than any real program uses would exhaust the stack; refuse it as an error.
-BlockParser::Nesting BlockParser::enterNesting(const Token& at) {
+ExpressionParser::Nesting ExpressionParser::enterNesting(const Token& at) {
     constexpr int kMaxNesting = 64;
     if (++depth_ > kMaxNesting) {
         findings_.fail(at, message("parse_nesting", {std::to_string(kMaxNesting)}));
@@ -122,7 +116,7 @@ BlockParser::Nesting BlockParser::enterNesting(const Token& at) {
     return Nesting{depth_};
 }
 
-ExprId BlockParser::parseUnary() {
+ExprId ExpressionParser::parseUnary() {
     Nesting nesting = enterNesting(tokens_.peek());
     if (tokens_.peek().kind == TokenKind::Minus || tokens_.peek().kind == TokenKind::Plus) {
         const Token& sign = tokens_.next();
@@ -146,7 +140,7 @@ ExprId BlockParser::parseUnary() {
     return parsePrimary();
 }
 
-ExprId BlockParser::parsePrimary() {
+ExprId ExpressionParser::parsePrimary() {
     const Token& t = tokens_.peek();
     switch (t.kind) {
     case TokenKind::Number: {
@@ -164,13 +158,13 @@ ExprId BlockParser::parsePrimary() {
             return parseFunction();
         }
         break;
-    case TokenKind::RBracket: failStrayBracket(t, "this expression");
+    case TokenKind::RBracket: failStrayBracket(tokens_, findings_, t, "this expression");
     default: break;
     }
     findings_.fail(t, message("parse_expected_value", {tokens_.describeWords(t)}));
 }
 
-ExprId BlockParser::parseBracketed() {
+ExprId ExpressionParser::parseBracketed() {
     const Token& open = tokens_.next();
     ExprId inner = parseExpression();
     if (tokens_.peek().kind != TokenKind::RBracket) {
@@ -180,7 +174,7 @@ ExprId BlockParser::parseBracketed() {
     return inner;
 }
 
-ExprId BlockParser::parseVariable() {
+ExprId ExpressionParser::parseVariable() {
     Nesting nesting = enterNesting(tokens_.peek());
     const Token& hash = tokens_.next();
     ExprNode n;
@@ -203,7 +197,7 @@ ExprId BlockParser::parseVariable() {
     return pool_.add(n);
 }
 
-ExprId BlockParser::parseFunction() {
+ExprId ExpressionParser::parseFunction() {
     const Token& name = tokens_.next();
     Function f = functionOf(name.keyword);
     bool extended = f == Function::Asin || f == Function::Acos || f == Function::Ln || f == Function::Exp ||
