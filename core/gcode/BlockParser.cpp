@@ -14,7 +14,8 @@ namespace m350::gcode {
 BlockParser::BlockParser(const Dialect& dialect, BlockStorage& storage, std::vector<Diagnostic>& diagnostics,
                          std::string fileName, std::uint32_t fileIndex)
     : dialect_(dialect), storage_(storage), pool_(storage.expressions), findings_(diagnostics, std::move(fileName)),
-      fileIndex_(fileIndex), expressions_(dialect, storage.expressions, tokens_, findings_) {}
+      fileIndex_(fileIndex), expressions_(dialect, storage.expressions, tokens_, findings_),
+      statements_(dialect, storage, tokens_, findings_, expressions_) {}
 
 bool BlockParser::parse(std::string_view line, std::uint32_t lineNumber, Block& out, LineEnd lineEnd) {
     if (plainPath_ && !comment_.open) {
@@ -83,7 +84,7 @@ std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint3
 void BlockParser::parseStatement(Block& block) {
     for (const Token& t : tokens_) {
         if (t.kind == TokenKind::Keyword && (t.keyword == Keyword::Dprnt || t.keyword == Keyword::Bprnt)) {
-            break; // its text is read from the line itself (parsePrintItems), not as tokens
+            break; // its text is read from the line itself (StatementParser), not as tokens
         }
         if (isNote(t.issue)) {
             findings_.note(t.column, Lexer(dialect_).issueWords(t, tokens_.line()));
@@ -145,7 +146,7 @@ void BlockParser::parseStatement(Block& block) {
         case Keyword::MSetData:
         case Keyword::MGetData:
         case Keyword::MByte2Data:
-        case Keyword::MData2Byte: tokens_.next(); parseDeviceStatement(block, k); return;
+        case Keyword::MData2Byte: tokens_.next(); statements_.parse(block, k); return;
         case Keyword::While: tokens_.next(); parseWhile(block); return;
         case Keyword::Goto:
             tokens_.next();

@@ -10,6 +10,7 @@
 #include "core/gcode/LineFindings.h"
 #include "core/gcode/LineTokens.h"
 #include "core/gcode/PlainBlockParser.h"
+#include "core/gcode/StatementParser.h"
 #include "core/gcode/Token.h"
 
 #include <optional>
@@ -76,12 +77,6 @@ private:
     int parseLoopId(const char* keyword);
     ExprId parseGotoTarget();
     std::int32_t labelNumber(const Token& number, const char* what);
-    // POPEN PCLOS DPRNT BPRNT and the Modbus statements (BlockParserStatements.cpp)
-    void parseDeviceStatement(Block& block, const Token& keyword);
-    void parsePrintItems(Block& block, const Token& keyword);
-    void parseModbusArguments(Block& block, const Token& keyword);
-    void checkModbusTransfer(const Token& keyword, bool write, const std::vector<StatementItem>& arguments);
-    std::uint32_t storeStatement(const std::vector<StatementItem>& items);
 
     void checkExponents();
     void lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken);
@@ -96,6 +91,7 @@ private:
 
     LineTokens tokens_;
     ExpressionParser expressions_; // over tokens_ and findings_
+    StatementParser statements_;   // POPEN PCLOS DPRNT BPRNT and the Modbus statements
     std::vector<Assignment> assignments_; // of the block being parsed, stored when it parses
     BlockCommentState comment_;
     SourceLocation commentStart_;

@@ -1,8 +1,5 @@
-// BlockParser: the statements that talk to devices beside the CNC. FANUC's external output (POPEN,
-// DPRNT[...], BPRNT[...], PCLOS) and the M350's Modbus statements (MSETDATA[...], MGETDATA[...],
-// MBYTE2DATA[...], MDATA2BYTE[...]). A DPRNT's text is no G-code (`DPRNT[TOOL*LENGTH#100[53]]`), so
-// it is read from the line's characters; the Modbus arguments are expressions.
-#include "core/gcode/BlockParser.h"
+#include "core/gcode/StatementParser.h"
+
 #include "core/gcode/ModbusStatement.h"
 
 #include <algorithm>
@@ -29,12 +26,12 @@ constexpr int kMaxPrintDigits = 8; // FANUC: c + d <= 8
 
 } // namespace
 
-std::uint32_t BlockParser::storeStatement(const std::vector<StatementItem>& items) {
+std::uint32_t StatementParser::storeStatement(const std::vector<StatementItem>& items) {
     storage_.statements.push_back(storage_.statementItems.copy(items));
     return static_cast<std::uint32_t>(storage_.statements.size() - 1);
 }
 
-void BlockParser::parseDeviceStatement(Block& block, const Token& keyword) {
+void StatementParser::parse(Block& block, const Token& keyword) {
     const std::string name = keywordSpelling(keyword.keyword);
     const bool output = keyword.keyword >= Keyword::Popen && keyword.keyword <= Keyword::Bprnt;
     if (output && !dialect_.externalOutput) {
@@ -62,7 +59,7 @@ void BlockParser::parseDeviceStatement(Block& block, const Token& keyword) {
 
 // DPRNT[a #b[cd] ...] and BPRNT[a #b[c] ...]: text a, variable b (by number), its digit format.
 // FANUC ignores spaces in a block, so they are skipped here too (a space is written `*`).
-void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
+void StatementParser::parsePrintItems(Block& block, const Token& keyword) {
     const bool binary = keyword.keyword == Keyword::Bprnt;
     const std::string name = binary ? "BPRNT" : "DPRNT";
     const std::string formatHint = binary ? bilingual("#100[3] (3 decimals)", "#100[3]（3位小数）")
@@ -187,7 +184,7 @@ void BlockParser::parsePrintItems(Block& block, const Token& keyword) {
 // arguments, those written as numbers checked here, the others when the line runs. MBYTE2DATA and
 // MDATA2BYTE parse, but no public document gives what their arguments mean: `check` flags them and
 // a run alarms when it reaches one, instead of guessing.
-void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
+void StatementParser::parseModbusArguments(Block& block, const Token& keyword) {
     const std::string name = keywordSpelling(keyword.keyword);
     const bool transfer = keyword.keyword == Keyword::MSetData || keyword.keyword == Keyword::MGetData;
     const bool write = keyword.keyword == Keyword::MSetData;
@@ -228,7 +225,7 @@ void BlockParser::parseModbusArguments(Block& block, const Token& keyword) {
 }
 
 // The six arguments of MSETDATA or MGETDATA: their count, and the values written as numbers.
-void BlockParser::checkModbusTransfer(const Token& keyword, bool write, const std::vector<StatementItem>& arguments) {
+void StatementParser::checkModbusTransfer(const Token& keyword, bool write, const std::vector<StatementItem>& arguments) {
     const std::string name = ModbusStatement::name(write);
     if (arguments.size() == 3) {
         findings_.fail(keyword, message(write ? "msetdata_old_form" : "mgetdata_old_form"));
