@@ -15,7 +15,8 @@ BlockParser::BlockParser(const Dialect& dialect, BlockStorage& storage, std::vec
                          std::string fileName, std::uint32_t fileIndex)
     : dialect_(dialect), storage_(storage), pool_(storage.expressions), findings_(diagnostics, std::move(fileName)),
       fileIndex_(fileIndex), expressions_(dialect, storage.expressions, tokens_, findings_),
-      statements_(dialect, storage, tokens_, findings_, expressions_) {}
+      statements_(dialect, storage, tokens_, findings_, expressions_),
+      checks_(dialect, storage.expressions, tokens_, findings_) {}
 
 bool BlockParser::parse(std::string_view line, std::uint32_t lineNumber, Block& out, LineEnd lineEnd) {
     if (plainPath_ && !comment_.open) {
@@ -63,13 +64,13 @@ std::optional<Block> BlockParser::parseGeneral(std::string_view line, std::uint3
     }
     expressions_.startLine();
     assignments_.clear();
-    lintNestedComments();
+    checks_.lintNestedComments();
     Block block;
     block.location = {fileIndex_, lineNumber, tokens_[0].column};
     try {
         parseStatement(block);
     } catch (const LineFindings::Failure&) {
-        return brokenLoopBlock(block);
+        return checks_.brokenLoopBlock(block);
     }
     block.suspect = findings_.linted();
     bool empty = block.label < 0 && block.programNumber < 0 && block.control == Control::None &&
@@ -95,7 +96,7 @@ void BlockParser::parseStatement(Block& block) {
             block.comment = storage_.text.store(commentText(t, tokens_.line()));
         }
     }
-    checkExponents();
+    checks_.checkExponents();
     auto skipComments = [&] {
         while (tokens_.peek().kind == TokenKind::Comment) {
             tokens_.next();
@@ -284,7 +285,7 @@ void BlockParser::parseItems(Block& block) {
         case TokenKind::Letter: {
             std::size_t first = tokens_.position();
             Word w = parseWord();
-            lintTableArithmetic(w, first, tokens_.position());
+            checks_.lintTableArithmetic(w, first, tokens_.position());
             if (w.letter == 'M' && w.isNumber() && (w.number == 30 || w.number == 2)) {
                 block.programEnd = true;
             }

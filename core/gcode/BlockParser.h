@@ -7,6 +7,7 @@
 #include "core/gcode/Expression.h"
 #include "core/gcode/ExpressionParser.h"
 #include "core/gcode/Lexer.h"
+#include "core/gcode/LineChecks.h"
 #include "core/gcode/LineFindings.h"
 #include "core/gcode/LineTokens.h"
 #include "core/gcode/PlainBlockParser.h"
@@ -78,10 +79,6 @@ private:
     ExprId parseGotoTarget();
     std::int32_t labelNumber(const Token& number, const char* what);
 
-    void checkExponents();
-    void lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken);
-    void lintNestedComments();
-    std::optional<Block> brokenLoopBlock(Block block) const;
 
     const Dialect& dialect_;
     BlockStorage& storage_;
@@ -92,6 +89,7 @@ private:
     LineTokens tokens_;
     ExpressionParser expressions_; // over tokens_ and findings_
     StatementParser statements_;   // POPEN PCLOS DPRNT BPRNT and the Modbus statements
+    LineChecks checks_;
     std::vector<Assignment> assignments_; // of the block being parsed, stored when it parses
     BlockCommentState comment_;
     SourceLocation commentStart_;

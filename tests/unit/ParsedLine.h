@@ -1,7 +1,8 @@
 #pragma once
 
 // One program line and the parts of the parser that read it (tokens, findings, expressions,
-// statements), for the tests of those parts. Not to be copied: the tokens point into `text`.
+// statements, checks), for the tests of those parts. Not to be copied: the tokens point into `text`.
+#include "core/gcode/LineChecks.h"
 #include "core/gcode/StatementParser.h"
 
 #include <string>
@@ -18,11 +19,13 @@ struct ParsedLine {
     gcode::LineFindings findings{found, "part.nc"};
     gcode::ExpressionParser expressions;
     gcode::StatementParser statements;
+    gcode::LineChecks checks;
     gcode::BlockCommentState comment;
 
     ParsedLine(const gcode::Dialect& dialect, std::string line)
         : text(std::move(line)), expressions(dialect, storage.expressions, tokens, findings),
-          statements(dialect, storage, tokens, findings, expressions) {
+          statements(dialect, storage, tokens, findings, expressions),
+          checks(dialect, storage.expressions, tokens, findings) {
         findings.startLine(1);
         tokens.read(gcode::Lexer(dialect), text, comment);
         expressions.startLine();

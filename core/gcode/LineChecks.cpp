@@ -1,6 +1,4 @@
-// BlockParser: the hints and findings that make an error message useful to an operator: the
-// #[...] a stray ']' was meant to be, the table added instead of indexed, a broken loop line.
-#include "core/gcode/BlockParser.h"
+#include "core/gcode/LineChecks.h"
 
 #include "core/common/Numeric.h"
 
@@ -12,7 +10,7 @@ namespace m350::gcode {
 
 // A WHILE, DO or END line with a syntax error still opens or closes its loop, so the error is
 // reported once and not again as an unpaired END. The program cannot run with it anyway.
-std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
+std::optional<Block> LineChecks::brokenLoopBlock(Block block) const {
     std::size_t first = 0;
     while (first < tokens_.size() && (tokens_[first].kind == TokenKind::Comment ||
                                       tokens_[first].kind == TokenKind::Letter ||
@@ -46,7 +44,7 @@ std::optional<Block> BlockParser::brokenLoopBlock(Block block) const {
 // the argument E (#8), as FANUC reads it; so is a line of a code that calls a macro
 // (Dialect::argumentCodes). A variable's number is never a mantissa: `Y#32E2.` is
 // the words Y#32 and E2. in both dialects (a probing package's `G65P9730...Y#32E2.`).
-void BlockParser::checkExponents() {
+void LineChecks::checkExponents() const {
     auto adjacent = [this](std::size_t a, std::size_t b) {
         return tokens_[a].offset + tokens_[a].length == tokens_[b].offset;
     };
@@ -102,7 +100,7 @@ void BlockParser::checkExponents() {
 
 // `X[#1330+#1300-1]` adds a pocket coordinate to a tool number: never what anyone means, and exactly
 // what the M350 manual's damaged listing reads. The author wanted `X#[1330+#1300-1]`.
-void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken) {
+void LineChecks::lintTableArithmetic(const Word& word, std::size_t firstToken, std::size_t endToken) const {
     if (word.isNumber() || pool_[word.value].kind != ExprKind::Binary || dialect_.indexedTables.empty()) {
         return;
     }
@@ -135,7 +133,7 @@ void BlockParser::lintTableArithmetic(const Word& word, std::size_t firstToken, 
 // `(rough (T1) pass)`: comments do not nest, on the M350 ("nested parentheses inside comments
 // fail", community test reports) as on FANUC. The comment ends at the first ')' and `pass)` is read
 // as words; said at the inner '(' so the alarm that follows makes sense.
-void BlockParser::lintNestedComments() {
+void LineChecks::lintNestedComments() const {
     for (const Token& t : tokens_) {
         if (t.kind != TokenKind::Comment || t.length < 2 || tokens_.line()[t.offset] != '(') {
             continue;
