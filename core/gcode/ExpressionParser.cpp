@@ -63,13 +63,17 @@ struct ExpressionParser::Level {
 
 std::optional<BinaryOp> ExpressionParser::operatorAhead(const Level& level) {
     const Token& t = tokens_.peek();
-    for (int i = 0; i < 2; ++i) {
-        if (t.kind == level.symbols[i]) {
-            return level.symbolOps[i];
-        }
+    if (t.kind == level.symbols[0]) {
+        return level.symbolOps[0];
+    }
+    if (t.kind == level.symbols[1]) {
+        return level.symbolOps[1];
+    }
+    if (t.kind != TokenKind::Keyword) { // most often: a letter, the end, a ']'
+        return std::nullopt;
     }
     for (int i = 0; i < 2; ++i) {
-        if (t.kind == TokenKind::Keyword && t.keyword == level.keywords[i]) {
+        if (t.keyword == level.keywords[i]) {
             if (!dialect_.bitwiseKeywords) {
                 findings_.fail(t, message(level.refusals[i], {std::string(keywordSpelling(t.keyword)), std::string(dialect_.name)}));
             }
@@ -93,19 +97,23 @@ std::optional<BinaryOp> ExpressionParser::termAhead() {
     return operatorAhead(kTerm);
 }
 
-// One precedence level: operands of the next level, joined left to right by this level's operators.
-ExprId ExpressionParser::leftToRight(ExprId (ExpressionParser::*operand)(), std::optional<BinaryOp> (ExpressionParser::*ahead)()) {
-    ExprId lhs = (this->*operand)();
-    while (auto op = (this->*ahead)()) {
+// One precedence level: operands of the next level, joined left to right by this level's operators
+// (the levels as template arguments, so that each is the loop it was when written out).
+template <ExprId (ExpressionParser::*Operand)(), std::optional<BinaryOp> (ExpressionParser::*Ahead)()>
+ExprId ExpressionParser::leftToRight() {
+    ExprId lhs = (this->*Operand)();
+    while (auto op = (this->*Ahead)()) {
         const std::uint32_t column = tokens_.next().column;
-        lhs = binary(*op, lhs, (this->*operand)(), column);
+        lhs = binary(*op, lhs, (this->*Operand)(), column);
     }
     return lhs;
 }
 
-ExprId ExpressionParser::parseExpression() { return leftToRight(&ExpressionParser::parseAdditive, &ExpressionParser::comparisonAhead); }
-ExprId ExpressionParser::parseAdditive() { return leftToRight(&ExpressionParser::parseTerm, &ExpressionParser::additiveAhead); }
-ExprId ExpressionParser::parseTerm() { return leftToRight(&ExpressionParser::parseUnary, &ExpressionParser::termAhead); }
+ExprId ExpressionParser::parseExpression() {
+    return leftToRight<&ExpressionParser::parseAdditive, &ExpressionParser::comparisonAhead>();
+}
+ExprId ExpressionParser::parseAdditive() { return leftToRight<&ExpressionParser::parseTerm, &ExpressionParser::additiveAhead>(); }
+ExprId ExpressionParser::parseTerm() { return leftToRight<&ExpressionParser::parseUnary, &ExpressionParser::termAhead>(); }
 
 // Deeper nesting than any real program uses would exhaust the stack; refuse it as an error.
 ExpressionParser::Nesting ExpressionParser::enterNesting(const Token& at) {

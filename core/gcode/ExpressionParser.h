@@ -49,7 +49,8 @@ private:
     std::optional<BinaryOp> termAhead();
     struct Level;
     std::optional<BinaryOp> operatorAhead(const Level& level);
-    ExprId leftToRight(ExprId (ExpressionParser::*operand)(), std::optional<BinaryOp> (ExpressionParser::*ahead)());
+    template <ExprId (ExpressionParser::*Operand)(), std::optional<BinaryOp> (ExpressionParser::*Ahead)()>
+    ExprId leftToRight();
 
     struct Nesting {
         int& depth;

@@ -24,7 +24,9 @@ public:
     // A new line: its number for the findings; no lint finding yet.
     void startLine(std::uint32_t lineNumber) {
         lineNumber_ = lineNumber;
-        lastLint_ = {};
+        if (!lastLint_.message.empty()) { // few lines have one: no empty finding assigned to each
+            lastLint_ = {};
+        }
     }
 
     [[noreturn]] void fail(const Token& at, std::string message) { fail(at.column, std::move(message)); }
